@@ -1,0 +1,21 @@
+//! Forward dynamics at a given state: `q̈_i` from `(q_i, q̇_i)`.
+//!
+//! Both routes end in the same dense solves (spec §2): an open (or
+//! penalty-closed) chain solves `M_i q̈_i = Q_i` by Cholesky; a loop closed by
+//! a constraint solves the multiplier form
+//!
+//! ```text
+//! [ M_i  C_qᵀ ] [ q̈_i ]   [ Q_i ]
+//! [ C_q   0   ] [  λ  ] = [ γ_c ]
+//! ```
+//!
+//! by the range-space method: with `y = M_i⁻¹ Q_i` and `X = M_i⁻¹ C_qᵀ`,
+//! `(C_q X) λ = C_q y − γ_c` and `q̈_i = y − X λ`. Both are O(n³) in the
+//! number of links; they are the dense cross-check.
+
+mod dense;
+mod generated;
+
+pub use dense::Accelerations;
+pub(crate) use dense::{solve_closed, solve_open};
+pub use generated::{forward_dynamics, open_dynamics};

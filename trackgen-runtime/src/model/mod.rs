@@ -1,0 +1,12 @@
+//! What a compiled model is: the traits generated code implements, and the
+//! run-time description of the same body tree.
+
+mod description;
+mod load;
+mod traits;
+
+pub use description::{
+    BodyDescription, ChassisPart, Closure, LoopJoint, PartKind, TreeDescription,
+};
+pub use load::BodyLoad;
+pub use traits::{ChassisModel, RecursiveModel, TrackModel};

@@ -1,0 +1,137 @@
+use nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
+
+use super::{BodyLoad, ChassisPart, Closure, TreeDescription};
+
+/// A body tree in recursive coordinates, compiled to code (spec §1, §3).
+///
+/// `DOF` is the number of recursive coordinates: the root's centroid `R`
+/// (2) plus the absolute angle of each of the [`BODIES`](Self::BODIES)
+/// bodies, `q_i = [R_x, R_y, θ_0 … θ_{n−1}]`. Absolute coordinates are
+/// `q = [R_0 … R_{n−1}, θ_0 … θ_{n−1}]` (3n), as in the paper's eq. (6).
+///
+/// The fixed-size matrices live on the stack: `M_i` is `8 · DOF²` bytes,
+/// 34.8 KB at 64 links (DOF 66) and 135 KB at 128 links (DOF 130), well
+/// inside a 2 MiB thread stack; a Cholesky factorisation copies it once.
+///
+/// Slices passed to or filled by these methods have one entry per body; the
+/// methods panic on a wrong length (a programming error, not a state).
+pub trait RecursiveModel<const DOF: usize> {
+    /// Number of bodies, `DOF − 2`.
+    const BODIES: usize;
+
+    /// The model's parameters as data, for the reference route and for
+    /// inspection.
+    fn description(&self) -> TreeDescription;
+
+    /// Centroid positions `Rᵇ` from `q_i` (eq. (4); eq. (8) for the
+    /// chassis).
+    fn body_positions(&self, q: &SVector<f64, DOF>, out: &mut [Vector2<f64>]);
+
+    /// Centroid velocities `Ṙᵇ = (H̄₁ H̄ₙ q̇_i)ᵇ`, evaluated as the
+    /// structured product of eq. (7): a running sum over the bidiagonal
+    /// blocks, O(n). The angular velocities are `q̇_i[2..]` (`H_θ`).
+    fn body_velocities(
+        &self,
+        q: &SVector<f64, DOF>,
+        qd: &SVector<f64, DOF>,
+        out: &mut [Vector2<f64>],
+    );
+
+    /// Quadratic velocity terms `γ_Rᵇ` (eq. (14)); `γ_θ = 0`.
+    fn velocity_terms(
+        &self,
+        q: &SVector<f64, DOF>,
+        qd: &SVector<f64, DOF>,
+        out: &mut [Vector2<f64>],
+    );
+
+    /// The mass matrix `M_i = Hᵀ M H` (eq. (15)), from the closed forms of
+    /// spec §1.
+    fn mass_matrix(&self, q: &SVector<f64, DOF>, out: &mut SMatrix<f64, DOF, DOF>);
+
+    /// The generalised forces `Q_i = Hᵀ (Q − M γ)` (eq. (16)) of gravity,
+    /// the given loads (one per body, or an empty slice for none) and, for a
+    /// penalty-closed track, the secondary joint's spring-damper; O(n) by
+    /// running sums (spec §1).
+    fn generalized_forces(
+        &self,
+        q: &SVector<f64, DOF>,
+        qd: &SVector<f64, DOF>,
+        loads: &[BodyLoad],
+        out: &mut SVector<f64, DOF>,
+    );
+
+    /// `M_i` and `Q_i` together, sharing the trigonometry.
+    fn equations_of_motion(
+        &self,
+        q: &SVector<f64, DOF>,
+        qd: &SVector<f64, DOF>,
+        loads: &[BodyLoad],
+        mass: &mut SMatrix<f64, DOF, DOF>,
+        forces: &mut SVector<f64, DOF>,
+    ) {
+        self.mass_matrix(q, mass);
+        self.generalized_forces(q, qd, loads, forces);
+    }
+
+    /// Kinetic energy `Σ ½ mᵇ |Ṙᵇ|² + ½ Jᵇ ωᵇ²`, J, summed from the
+    /// absolute velocities.
+    fn kinetic_energy(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> f64;
+
+    /// Potential energy, J: gravity `−Σ mᵇ g·Rᵇ` (zero at `R = 0`), plus
+    /// `½ k |C|²` of a penalty closing joint.
+    fn potential_energy(&self, q: &SVector<f64, DOF>) -> f64;
+
+    /// The dense velocity transform `H` (3n × DOF) of eq. (6), for
+    /// inspection: column `k` is `q̇` for `q̇_i = e_k`, from
+    /// [`body_velocities`](Self::body_velocities). Rows follow
+    /// `q = [R_0 … R_{n−1}, θ_0 … θ_{n−1}]`.
+    fn velocity_transform(&self, q: &SVector<f64, DOF>) -> DMatrix<f64> {
+        let n = Self::BODIES;
+        let mut h = DMatrix::zeros(3 * n, DOF);
+        let mut v = vec![Vector2::zeros(); n];
+        for k in 0..DOF {
+            let e = SVector::<f64, DOF>::from_fn(|r, _| if r == k { 1.0 } else { 0.0 });
+            self.body_velocities(q, &e, &mut v);
+            for (b, vb) in v.iter().enumerate() {
+                h[(2 * b, k)] = vb.x;
+                h[(2 * b + 1, k)] = vb.y;
+            }
+            if k >= 2 {
+                h[(2 * n + k - 2, k)] = 1.0;
+            }
+        }
+        h
+    }
+
+    /// `γ` (3n) in the row order of [`velocity_transform`](Self::velocity_transform).
+    fn gamma(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> DVector<f64> {
+        let n = Self::BODIES;
+        let mut g = vec![Vector2::zeros(); n];
+        self.velocity_terms(q, qd, &mut g);
+        DVector::from_fn(3 * n, |r, _| if r < 2 * n { g[r / 2][r % 2] } else { 0.0 })
+    }
+}
+
+/// A track: a chain of links with a loop-closing joint between link `n` and
+/// link 1 (spec §2).
+pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
+    /// How the loop is closed.
+    const CLOSURE: Closure;
+
+    /// `C(q_i) = Σ Aʲ d̄ʲ = P_n − P_1`, the gap at the closing joint, m.
+    fn closure(&self, q: &SVector<f64, DOF>) -> Vector2<f64>;
+
+    /// `C_q = [0₂ₓ₂ | A_θʲ d̄ʲ …]`.
+    fn closure_jacobian(&self, q: &SVector<f64, DOF>) -> SMatrix<f64, 2, DOF>;
+
+    /// `γ_c = Σ Aʲ d̄ʲ ωʲ²`, so that `C_q q̈_i = γ_c`.
+    fn closure_gamma(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> Vector2<f64>;
+}
+
+/// A chassis: a frame with named parts (sprocket, idler, road wheels,
+/// rollers) pinned to it (spec §3).
+pub trait ChassisModel<const DOF: usize>: RecursiveModel<DOF> {
+    /// The parts, in declaration order.
+    const PARTS: &'static [ChassisPart];
+}
