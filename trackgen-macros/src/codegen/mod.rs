@@ -1,0 +1,41 @@
+//! Code generation: thin, from the validated [IR](crate::ir).
+//!
+//! Generated code names runtime items only through
+//! `::trackgen::__private`, never a bare `nalgebra::`, so a user needs
+//! nothing but the `trackgen` dependency.
+
+mod lin;
+mod tree;
+mod recursive;
+mod track;
+mod chassis;
+mod stub;
+
+use proc_macro2::TokenStream;
+use quote::quote;
+
+use crate::ir::{Item, ItemKind, Model};
+
+pub use stub::stubs;
+
+/// The path generated code reaches the runtime by.
+fn runtime() -> TokenStream {
+    quote!(::trackgen::__private)
+}
+
+/// All items one invocation generates.
+pub fn generate(model: &Model) -> TokenStream {
+    model.items.iter().map(item).collect()
+}
+
+fn item(item: &Item) -> TokenStream {
+    let checks = item.checks.iter().map(|c| {
+        let (cond, msg) = (&c.condition, &c.message);
+        quote::quote_spanned! {c.span=> const _: () = ::core::assert!(#cond, #msg); }
+    });
+    let body = match &item.kind {
+        ItemKind::Track(t) => track::track(item, t),
+        ItemKind::Vehicle(v) => chassis::vehicle(item, v),
+    };
+    quote! { #(#checks)* #body }
+}

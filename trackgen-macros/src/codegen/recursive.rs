@@ -1,0 +1,134 @@
+//! The `RecursiveModel` impl of a tree: the method shells around the
+//! statements [`Tree`] generates.
+
+use proc_macro2::{Ident, TokenStream};
+use quote::quote;
+
+use super::runtime;
+use super::tree::Tree;
+
+/// `impl RecursiveModel<DOF> for name`. `extra_potential` adds to the
+/// gravity potential (the penalty spring's energy), with the trig bound.
+pub fn recursive_impl(name: &Ident, tree: &Tree, loop_joint: TokenStream, extra_potential: Option<TokenStream>) -> TokenStream {
+    let rt = runtime();
+    let n = tree.len();
+    let dof = n + 2;
+    let trig = tree.trig_prelude();
+    let rates = tree.rate_prelude(false);
+    let positions = tree.positions();
+    let velocities = tree.velocities();
+    let terms = tree.velocity_terms();
+    let rates_squared = tree.rate_prelude(true);
+    let mass = tree.mass_matrix();
+    let forces = tree.generalized_forces();
+    let kinetic = tree.kinetic_energy();
+    let potential = tree.gravity_potential();
+    let extra_potential = extra_potential.map(|e| quote!(+ #e));
+    let description = tree.description(&rt, loop_joint);
+    let store_r = tree.store("r", &rt);
+    let store_v = tree.store("v", &rt);
+    let store_g = tree.store("g", &rt);
+    let q = quote!(q: &#rt::nalgebra::SVector<f64, #dof>);
+    let qd = quote!(qd: &#rt::nalgebra::SVector<f64, #dof>);
+    let vec_out = quote!(out: &mut [#rt::nalgebra::Vector2<f64>]);
+    let check_out = quote!(::core::assert_eq!(out.len(), #n, "one entry per body"););
+    // Missing loads are zero loads; a slice of the wrong length is a bug.
+    let loads = quote! {
+        let no_loads = [#rt::runtime::BodyLoad::ZERO; #n];
+        let loads: &[#rt::runtime::BodyLoad] = if loads.is_empty() {
+            &no_loads
+        } else {
+            ::core::assert_eq!(loads.len(), #n, "one load per body, or none");
+            loads
+        };
+    };
+    quote! {
+        #[allow(unused_variables, clippy::all, clippy::pedantic)]
+        impl #rt::runtime::RecursiveModel<#dof> for #name {
+            const BODIES: usize = #n;
+
+            fn description(&self) -> #rt::runtime::TreeDescription {
+                #description
+            }
+
+            #[inline]
+            fn body_positions(&self, #q, #vec_out) {
+                #check_out
+                #trig
+                #positions
+                #store_r
+            }
+
+            #[inline]
+            fn body_velocities(&self, #q, #qd, #vec_out) {
+                #check_out
+                #trig
+                #rates
+                #velocities
+                #store_v
+            }
+
+            #[inline]
+            fn velocity_terms(&self, #q, #qd, #vec_out) {
+                #check_out
+                #trig
+                #rates_squared
+                #terms
+                #store_g
+            }
+
+            #[inline]
+            fn mass_matrix(&self, #q, out: &mut #rt::nalgebra::SMatrix<f64, #dof, #dof>) {
+                #trig
+                #mass
+            }
+
+            #[inline]
+            fn generalized_forces(
+                &self,
+                #q,
+                #qd,
+                loads: &[#rt::runtime::BodyLoad],
+                out: &mut #rt::nalgebra::SVector<f64, #dof>,
+            ) {
+                #loads
+                #trig
+                #forces
+            }
+
+            #[inline]
+            fn equations_of_motion(
+                &self,
+                #q,
+                #qd,
+                loads: &[#rt::runtime::BodyLoad],
+                mass: &mut #rt::nalgebra::SMatrix<f64, #dof, #dof>,
+                forces: &mut #rt::nalgebra::SVector<f64, #dof>,
+            ) {
+                #loads
+                #trig
+                {
+                    let out = mass;
+                    #mass
+                }
+                {
+                    let out = forces;
+                    #forces
+                }
+            }
+
+            fn kinetic_energy(&self, #q, #qd) -> f64 {
+                #trig
+                #rates
+                #velocities
+                #kinetic
+            }
+
+            fn potential_energy(&self, #q) -> f64 {
+                #trig
+                #positions
+                #potential #extra_potential
+            }
+        }
+    }
+}

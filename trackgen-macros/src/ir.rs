@@ -1,0 +1,107 @@
+//! The validated model: what [`crate::lower`] produces and
+//! [`crate::codegen`] consumes. Numbers are [`Num`]s, already checked where
+//! the macro can evaluate them; checks it cannot do are [`ConstCheck`]s that
+//! rustc performs at compile time.
+
+use proc_macro2::{Span, TokenStream};
+use syn::{Attribute, Ident, Visibility};
+
+use crate::num::{Num, Vec2};
+
+/// Everything one invocation declares.
+pub struct Model {
+    pub items: Vec<Item>,
+}
+
+/// A declared type.
+pub struct Item {
+    pub attrs: Vec<Attribute>,
+    pub vis: Visibility,
+    pub name: Ident,
+    pub kind: ItemKind,
+    /// Checks of constant expressions, for rustc.
+    pub checks: Vec<ConstCheck>,
+}
+
+pub enum ItemKind {
+    Track(Track),
+    Vehicle(Vehicle),
+}
+
+/// A chain of links, possibly closed (spec §1, §2).
+pub struct Track {
+    pub links: Vec<Link>,
+    pub closure: Closure,
+    pub gravity: Vec2,
+}
+
+/// One track link (spec §1).
+#[derive(Clone)]
+pub struct Link {
+    pub mass: Num,
+    pub inertia: Num,
+    /// `ū1`: the joint to the previous link, link frame, m.
+    pub u1: Vec2,
+    /// `ū2`: the joint to the next link, link frame, m.
+    pub u2: Vec2,
+}
+
+pub enum Closure {
+    Open,
+    Partitioned,
+    Penalty { stiffness: Num, damping: Num },
+}
+
+/// A chassis with its parts, and its track.
+pub struct Vehicle {
+    pub gravity: Vec2,
+    pub chassis_mass: Num,
+    pub chassis_inertia: Num,
+    pub parts: Vec<Part>,
+    pub track: Track,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub enum PartKind {
+    Sprocket,
+    Idler,
+    RoadWheel,
+    Roller,
+}
+
+impl PartKind {
+    pub fn keyword(self) -> &'static str {
+        match self {
+            PartKind::Sprocket => "sprocket",
+            PartKind::Idler => "idler",
+            PartKind::RoadWheel => "road_wheel",
+            PartKind::Roller => "roller",
+        }
+    }
+
+    pub fn from_keyword(s: &str) -> Option<PartKind> {
+        [PartKind::Sprocket, PartKind::Idler, PartKind::RoadWheel, PartKind::Roller]
+            .into_iter()
+            .find(|k| k.keyword() == s)
+    }
+}
+
+/// A body pinned to the chassis at its own centre.
+pub struct Part {
+    pub name: Ident,
+    pub kind: PartKind,
+    /// Pin position relative to the chassis centroid, chassis frame, m.
+    pub at: Vec2,
+    pub mass: Num,
+    pub inertia: Num,
+    pub radius: Num,
+    pub teeth: u32,
+}
+
+/// A property of constant expressions that the macro cannot evaluate, for
+/// rustc to assert at compile time; the error points at `span`.
+pub struct ConstCheck {
+    pub span: Span,
+    pub condition: TokenStream,
+    pub message: String,
+}

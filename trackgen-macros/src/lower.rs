@@ -1,0 +1,568 @@
+//! Validation: the syntax tree becomes the [IR](crate::ir), and every
+//! problem is reported, each at the token that causes it, all at once.
+
+use std::collections::BTreeMap;
+
+use proc_macro2::Span;
+use quote::{quote, quote_spanned, ToTokens};
+use syn::spanned::Spanned;
+use syn::{BinOp, Expr, Ident, Lit, Member, UnOp};
+
+use crate::ir::{Closure, ConstCheck, Item, ItemKind, Link, Model, Part, PartKind, Track, Vehicle};
+use crate::num::{Num, Vec2};
+use crate::parse::{Block, Entry, Input, ItemAst, Selector};
+
+/// The most links a track may have: beyond this the unrolled code stops
+/// being a good trade (see README, compile times).
+pub const MAX_LINKS: usize = 1024;
+
+/// Collects errors, like serde_derive's `Ctxt`.
+#[derive(Default)]
+pub struct Errors {
+    first: Option<syn::Error>,
+}
+
+impl Errors {
+    pub fn push(&mut self, error: syn::Error) {
+        match &mut self.first {
+            Some(first) => first.combine(error),
+            None => self.first = Some(error),
+        }
+    }
+
+    pub fn at(&mut self, span: Span, message: impl std::fmt::Display) {
+        self.push(syn::Error::new(span, message));
+    }
+
+    pub fn finish(self) -> Result<(), syn::Error> {
+        self.first.map_or(Ok(()), Err)
+    }
+}
+
+/// Lowers a parsed input. On error, also returns the names that did parse,
+/// so stubs can be emitted for them.
+pub fn lower(input: Input) -> Result<Model, (syn::Error, Vec<(syn::Visibility, Ident)>)> {
+    let mut errors = Errors::default();
+    let mut items = Vec::new();
+    let mut names: BTreeMap<String, Ident> = BTreeMap::new();
+    for ast in input.items {
+        if let Some(prev) = names.insert(ast.name.to_string(), ast.name.clone()) {
+            errors.at(ast.name.span(), format!("`{prev}` is declared twice"));
+        }
+        items.push(lower_item(ast, &mut errors));
+    }
+    match errors.finish() {
+        Ok(()) => Ok(Model { items }),
+        Err(e) => Err((e, items.into_iter().map(|i| (i.vis, i.name)).collect())),
+    }
+}
+
+fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
+    let mut cx = Cx { errors, checks: Vec::new() };
+    let kind = if ast.kind == "track" {
+        ItemKind::Track(cx.track(&ast.body, true))
+    } else {
+        ItemKind::Vehicle(cx.vehicle(&ast.body))
+    };
+    Item { attrs: ast.attrs, vis: ast.vis, name: ast.name, kind, checks: cx.checks }
+}
+
+struct Cx<'e> {
+    errors: &'e mut Errors,
+    checks: Vec<ConstCheck>,
+}
+
+/// The fields of one block by key, after unknown and duplicate keys were
+/// reported.
+struct Fields<'a> {
+    what: &'static str,
+    span: Span,
+    map: BTreeMap<String, &'a Expr>,
+}
+
+const DEFAULT_GRAVITY: f64 = -9.81;
+
+impl Cx<'_> {
+    fn fields<'a>(&mut self, what: &'static str, block: &'a Block, allowed: &[&str]) -> Fields<'a> {
+        let mut map = BTreeMap::new();
+        for entry in &block.entries {
+            if let Entry::Field { key, value } = entry {
+                let name = key.to_string();
+                if !allowed.contains(&name.as_str()) {
+                    self.errors.at(
+                        key.span(),
+                        format!("unknown key `{name}` in {what}; expected one of: {}", allowed.join(", ")),
+                    );
+                } else if map.insert(name.clone(), value).is_some() {
+                    self.errors.at(key.span(), format!("duplicate key `{name}` in {what}"));
+                }
+            }
+        }
+        Fields { what, span: block.span, map }
+    }
+
+    fn sections<'a>(&mut self, what: &'static str, block: &'a Block, allowed: &[&str]) -> Vec<&'a Entry> {
+        let mut out = Vec::new();
+        for entry in &block.entries {
+            if let Entry::Section { kind, .. } = entry {
+                if allowed.contains(&kind.to_string().as_str()) {
+                    out.push(entry);
+                } else if allowed.is_empty() {
+                    self.errors.at(kind.span(), format!("unexpected section `{kind}` in {what}"));
+                } else {
+                    self.errors.at(
+                        kind.span(),
+                        format!("unknown section `{kind}` in {what}; expected one of: {}", allowed.join(", ")),
+                    );
+                }
+            }
+        }
+        out
+    }
+
+    fn missing(&mut self, fields: &Fields, key: &str) {
+        self.errors.at(fields.span, format!("missing key `{key}` in {}", fields.what));
+    }
+
+    /// A required or optional number.
+    fn number(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Num> {
+        match fields.map.get(key) {
+            Some(expr) => self.eval(expr, key).ok(),
+            None => {
+                if required {
+                    self.missing(fields, key);
+                }
+                None
+            }
+        }
+    }
+
+    /// A required strictly positive, finite number (mass, inertia, radius).
+    fn positive(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Num> {
+        let expr = fields.map.get(key).copied();
+        let value = self.number(fields, key, required)?;
+        self.check_positive(&value, expr?, key);
+        Some(value)
+    }
+
+    fn check_positive(&mut self, value: &Num, expr: &Expr, key: &str) {
+        match value {
+            Num::Known(v) if !(v.is_finite() && *v > 0.0) => {
+                self.errors.at(expr.span(), format!("`{key}` must be positive and finite, found {v}"));
+            }
+            Num::Known(_) => {}
+            Num::Expr(t) => self.checks.push(ConstCheck {
+                span: expr.span(),
+                condition: quote!((#t) > 0.0 && (#t) <= f64::MAX),
+                message: format!("`{key}` must be positive and finite"),
+            }),
+        }
+    }
+
+    /// A non-negative finite number (damping, stiffness).
+    fn non_negative(&mut self, fields: &Fields, key: &str) -> Option<Num> {
+        let expr = fields.map.get(key).copied();
+        let value = self.number(fields, key, true)?;
+        match &value {
+            Num::Known(v) if !(v.is_finite() && *v >= 0.0) => {
+                self.errors.at(expr?.span(), format!("`{key}` must be non-negative and finite, found {v}"));
+            }
+            Num::Known(_) => {}
+            Num::Expr(t) => self.checks.push(ConstCheck {
+                span: expr?.span(),
+                condition: quote!((#t) >= 0.0 && (#t) <= f64::MAX),
+                message: format!("`{key}` must be non-negative and finite"),
+            }),
+        }
+        Some(value)
+    }
+
+    fn point(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Vec2> {
+        match fields.map.get(key) {
+            Some(expr) => self.eval_point(expr, key).ok(),
+            None => {
+                if required {
+                    self.missing(fields, key);
+                }
+                None
+            }
+        }
+    }
+
+    /// Evaluates a number: literals and arithmetic on them are folded here,
+    /// anything else that can be a constant expression is left to rustc.
+    fn eval(&mut self, expr: &Expr, key: &str) -> Result<Num, ()> {
+        let result = eval_number(expr);
+        match result {
+            Ok(Num::Known(v)) if !v.is_finite() => {
+                self.errors.at(expr.span(), format!("`{key}` must be finite, found {v}"));
+                Err(())
+            }
+            Ok(n) => Ok(n),
+            Err(e) => {
+                self.errors.push(e);
+                Err(())
+            }
+        }
+    }
+
+    fn eval_point(&mut self, expr: &Expr, key: &str) -> Result<Vec2, ()> {
+        match strip(expr) {
+            Expr::Tuple(t) if t.elems.len() == 2 => {
+                let x = self.eval(&t.elems[0], key);
+                let y = self.eval(&t.elems[1], key);
+                Ok(Vec2 { x: x?, y: y? })
+            }
+            other => {
+                self.errors.at(other.span(), format!("`{key}` must be a point `(x, y)` in metres"));
+                Err(())
+            }
+        }
+    }
+
+    fn gravity(&mut self, fields: &Fields) -> Vec2 {
+        self.point(fields, "gravity", false)
+            .unwrap_or(Vec2 { x: Num::ZERO, y: Num::Known(DEFAULT_GRAVITY) })
+    }
+
+    fn track(&mut self, block: &Block, standalone: bool) -> Track {
+        let allowed: &[&str] = if standalone { &["links", "closure", "gravity"] } else { &["links", "closure"] };
+        let fields = self.fields("track", block, allowed);
+        let closure = self.closure(&fields);
+        let count = self.link_count(&fields, &closure);
+        let gravity = if standalone { self.gravity(&fields) } else { Vec2::zero() };
+        let sections = self.sections("track", block, &["link"]);
+        let links = self.links(&sections, count, block.span);
+        Track { links, closure, gravity }
+    }
+
+    fn link_count(&mut self, fields: &Fields, closure: &Closure) -> Option<usize> {
+        let Some(expr) = fields.map.get("links") else {
+            self.missing(fields, "links");
+            return None;
+        };
+        let Expr::Lit(syn::ExprLit { lit: Lit::Int(lit), .. }) = strip(expr) else {
+            self.errors.at(expr.span(), "`links` must be an integer literal: it fixes the shape of the generated code");
+            return None;
+        };
+        let Ok(n) = lit.base10_parse::<usize>() else {
+            self.errors.at(lit.span(), "`links` must be a non-negative integer");
+            return None;
+        };
+        let closed = !matches!(closure, Closure::Open);
+        if n == 0 {
+            self.errors.at(lit.span(), "a track needs at least one link");
+            None
+        } else if closed && n < 3 {
+            self.errors.at(lit.span(), format!("a closed track needs at least 3 links, found {n}"));
+            None
+        } else if n > MAX_LINKS {
+            self.errors.at(lit.span(), format!("at most {MAX_LINKS} links are supported, found {n}"));
+            None
+        } else {
+            Some(n)
+        }
+    }
+
+    fn closure(&mut self, fields: &Fields) -> Closure {
+        const EXPECTED: &str = "expected `open`, `partitioned` or `penalty { stiffness: …, damping: … }`";
+        let Some(expr) = fields.map.get("closure") else { return Closure::Partitioned };
+        match strip(expr) {
+            Expr::Path(p) if p.path.is_ident("open") => Closure::Open,
+            Expr::Path(p) if p.path.is_ident("partitioned") => Closure::Partitioned,
+            Expr::Struct(s) if s.path.is_ident("penalty") => {
+                let mut map = BTreeMap::new();
+                for f in &s.fields {
+                    let Member::Named(key) = &f.member else {
+                        self.errors.at(f.member.span(), "expected `stiffness` or `damping`");
+                        continue;
+                    };
+                    let name = key.to_string();
+                    if name != "stiffness" && name != "damping" {
+                        self.errors.at(key.span(), format!("unknown key `{name}` in penalty; expected one of: stiffness, damping"));
+                    } else if map.insert(name.clone(), &f.expr).is_some() {
+                        self.errors.at(key.span(), format!("duplicate key `{name}` in penalty"));
+                    }
+                }
+                let pf = Fields { what: "penalty", span: s.brace_token.span.join(), map };
+                let stiffness = self.positive(&pf, "stiffness", true);
+                let damping = self.non_negative(&pf, "damping");
+                Closure::Penalty {
+                    stiffness: stiffness.unwrap_or(Num::ZERO),
+                    damping: damping.unwrap_or(Num::ZERO),
+                }
+            }
+            other => {
+                self.errors.at(other.span(), EXPECTED);
+                Closure::Partitioned
+            }
+        }
+    }
+
+    /// The template `link { … }` filled in by the overrides `link[…] { … }`,
+    /// in order.
+    fn links(&mut self, sections: &[&Entry], count: Option<usize>, span: Span) -> Vec<Link> {
+        let mut template: Option<Link> = None;
+        let mut overrides = Vec::new();
+        for entry in sections {
+            let Entry::Section { kind, selector, name, body } = entry else { continue };
+            if let Some(name) = name {
+                self.errors.at(name.span(), "a link section takes no name");
+            }
+            const KEYS: &[&str] = &["mass", "inertia", "u1", "u2"];
+            let fields = self.fields("link", body, KEYS);
+            self.sections("link", body, &[]);
+            match selector {
+                None => {
+                    if template.is_some() {
+                        self.errors.at(kind.span(), "duplicate `link` template; use `link[i] { … }` to change some links");
+                    }
+                    let mass = self.positive(&fields, "mass", true);
+                    let inertia = self.positive(&fields, "inertia", true);
+                    let u1 = self.point(&fields, "u1", true);
+                    let u2 = self.point(&fields, "u2", true);
+                    if let (Some(mass), Some(inertia), Some(u1), Some(u2)) = (mass, inertia, u1, u2) {
+                        template.get_or_insert(Link { mass, inertia, u1, u2 });
+                    }
+                }
+                Some(sel) => {
+                    let indices = count.map(|n| self.select(sel, n)).unwrap_or_default();
+                    let mass = self.positive(&fields, "mass", false);
+                    let inertia = self.positive(&fields, "inertia", false);
+                    let u1 = self.point(&fields, "u1", false);
+                    let u2 = self.point(&fields, "u2", false);
+                    overrides.push((indices, mass, inertia, u1, u2, body.span));
+                }
+            }
+        }
+        let (Some(template), Some(n)) = (template, count) else {
+            if count.is_some() && !sections.iter().any(|e| matches!(e, Entry::Section { selector: None, .. })) {
+                self.errors.at(span, "missing `link { mass: …, inertia: …, u1: (…), u2: (…) }` template in track");
+            }
+            return Vec::new();
+        };
+        let mut links = vec![template; n];
+        let mut touched = vec![span; n];
+        for (indices, mass, inertia, u1, u2, body_span) in overrides {
+            for i in indices {
+                let link = &mut links[i];
+                mass.clone().map(|v| link.mass = v);
+                inertia.clone().map(|v| link.inertia = v);
+                u1.clone().map(|v| link.u1 = v);
+                u2.clone().map(|v| link.u2 = v);
+                touched[i] = body_span;
+            }
+        }
+        for (i, link) in links.iter().enumerate() {
+            self.check_distinct_joints(link, i + 1, touched[i]);
+        }
+        links
+    }
+
+    fn check_distinct_joints(&mut self, link: &Link, number: usize, span: Span) {
+        let d = link.u2.clone() - link.u1.clone();
+        match (d.x.known(), d.y.known()) {
+            (Some(x), Some(y)) => {
+                if x == 0.0 && y == 0.0 {
+                    self.errors.at(span, format!("link {number}: its joint points `u1` and `u2` coincide"));
+                }
+            }
+            _ => {
+                let (x, y) = (d.x.to_token_stream(), d.y.to_token_stream());
+                self.checks.push(ConstCheck {
+                    span,
+                    condition: quote!(!(#x == 0.0 && #y == 0.0)),
+                    message: format!("link {number}: its joint points `u1` and `u2` coincide"),
+                });
+            }
+        }
+    }
+
+    /// The 0-based link indices a selector names (it names 1-based links).
+    fn select(&mut self, sel: &Selector, n: usize) -> Vec<usize> {
+        let mut out = Vec::new();
+        for range in &sel.ranges {
+            let parse = |lit: &syn::LitInt| lit.base10_parse::<usize>().map_err(|e| syn::Error::new(lit.span(), e));
+            let start = parse(&range.start);
+            let end = range.end.as_ref().map(|(inclusive, lit)| parse(lit).map(|e| if *inclusive { e } else { e.saturating_sub(1) }));
+            let step = range.step.as_ref().map(parse);
+            let (start, end, step) = match (start, end.transpose(), step.transpose()) {
+                (Ok(s), Ok(e), Ok(st)) => (s, e.unwrap_or(s), st.unwrap_or(1)),
+                (a, b, c) => {
+                    for e in [a.err(), b.err(), c.err()].into_iter().flatten() {
+                        self.errors.push(e);
+                    }
+                    continue;
+                }
+            };
+            if start == 0 {
+                self.errors.at(range.start.span(), "links are numbered from 1");
+                continue;
+            }
+            if end > n {
+                let lit = range.end.as_ref().map_or(&range.start, |(_, l)| l);
+                self.errors.at(lit.span(), format!("the track has {n} links; link {end} does not exist"));
+                continue;
+            }
+            if step == 0 {
+                self.errors.at(range.step.as_ref().map_or(sel.span, |s| s.span()), "the step must be at least 1");
+                continue;
+            }
+            out.extend((start..=end).step_by(step).map(|i| i - 1));
+        }
+        out
+    }
+
+    fn vehicle(&mut self, block: &Block) -> Vehicle {
+        let fields = self.fields("vehicle", block, &["gravity"]);
+        let gravity = self.gravity(&fields);
+        let mut kinds = vec!["chassis", "track"];
+        kinds.extend(["sprocket", "idler", "road_wheel", "roller"]);
+        let sections = self.sections("vehicle", block, &kinds);
+        let mut chassis = None;
+        let mut track = None;
+        let mut parts = Vec::new();
+        let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
+        for entry in sections {
+            let Entry::Section { kind, selector, name, body } = entry else { continue };
+            if let Some(sel) = selector {
+                self.errors.at(sel.span, format!("`{kind}` takes no link selector"));
+            }
+            let k = kind.to_string();
+            match k.as_str() {
+                "chassis" | "track" => {
+                    if let Some(name) = name {
+                        self.errors.at(name.span(), format!("`{k}` takes no name"));
+                    }
+                    let slot_taken = if k == "chassis" { chassis.is_some() } else { track.is_some() };
+                    if slot_taken {
+                        self.errors.at(kind.span(), format!("duplicate `{k}` section"));
+                        continue;
+                    }
+                    if k == "chassis" {
+                        chassis = Some(self.chassis(body));
+                    } else {
+                        track = Some(self.track(body, false));
+                    }
+                }
+                _ => {
+                    let kind_ir = PartKind::from_keyword(&k).expect("filtered by sections()");
+                    let Some(name) = name else {
+                        self.errors.at(kind.span(), format!("`{k}` needs a name, e.g. `{k} front {{ … }}`"));
+                        continue;
+                    };
+                    if part_names.insert(name.to_string(), name.clone()).is_some() {
+                        self.errors.at(name.span(), format!("duplicate part name `{name}`"));
+                    }
+                    if let Some(part) = self.part(kind_ir, name, body) {
+                        parts.push(part);
+                    }
+                }
+            }
+        }
+        if chassis.is_none() {
+            self.errors.at(block.span, "missing `chassis { mass: …, inertia: … }` section in vehicle");
+        }
+        if track.is_none() {
+            self.errors.at(block.span, "missing `track { … }` section in vehicle");
+        }
+        let (chassis_mass, chassis_inertia, centroid) = chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
+        for part in &mut parts {
+            part.at = part.at.clone() - centroid.clone();
+        }
+        let mut track = track.unwrap_or(Track { links: Vec::new(), closure: Closure::Open, gravity: Vec2::zero() });
+        track.gravity = gravity.clone();
+        Vehicle { gravity, chassis_mass, chassis_inertia, parts, track }
+    }
+
+    fn chassis(&mut self, block: &Block) -> (Num, Num, Vec2) {
+        let fields = self.fields("chassis", block, &["mass", "inertia", "centroid"]);
+        self.sections("chassis", block, &[]);
+        let mass = self.positive(&fields, "mass", true).unwrap_or(Num::ZERO);
+        let inertia = self.positive(&fields, "inertia", true).unwrap_or(Num::ZERO);
+        let centroid = self.point(&fields, "centroid", false).unwrap_or(Vec2::zero());
+        (mass, inertia, centroid)
+    }
+
+    fn part(&mut self, kind: PartKind, name: &Ident, block: &Block) -> Option<Part> {
+        let what = kind.keyword();
+        let mut keys = vec!["at", "mass", "inertia", "radius"];
+        if kind == PartKind::Sprocket {
+            keys.push("teeth");
+        }
+        let fields = self.fields(what, block, &keys);
+        self.sections(what, block, &[]);
+        let at = self.point(&fields, "at", true);
+        let mass = self.positive(&fields, "mass", true);
+        let inertia = self.positive(&fields, "inertia", true);
+        let radius = self.positive(&fields, "radius", true);
+        let teeth = if kind == PartKind::Sprocket { self.teeth(&fields) } else { Some(0) };
+        Some(Part { name: name.clone(), kind, at: at?, mass: mass?, inertia: inertia?, radius: radius?, teeth: teeth? })
+    }
+
+    fn teeth(&mut self, fields: &Fields) -> Option<u32> {
+        let Some(expr) = fields.map.get("teeth") else {
+            self.missing(fields, "teeth");
+            return None;
+        };
+        match strip(expr) {
+            Expr::Lit(syn::ExprLit { lit: Lit::Int(lit), .. }) => match lit.base10_parse::<u32>() {
+                Ok(t) if t >= 3 => Some(t),
+                _ => {
+                    self.errors.at(lit.span(), "a sprocket needs at least 3 teeth");
+                    None
+                }
+            },
+            other => {
+                self.errors.at(other.span(), "`teeth` must be an integer literal");
+                None
+            }
+        }
+    }
+}
+
+fn strip(expr: &Expr) -> &Expr {
+    match expr {
+        Expr::Paren(p) => strip(&p.expr),
+        Expr::Group(g) => strip(&g.expr),
+        e => e,
+    }
+}
+
+/// A number: folded when built from literals, otherwise a constant
+/// expression for rustc. Rejects what cannot be an `f64` at all.
+fn eval_number(expr: &Expr) -> syn::Result<Num> {
+    match strip(expr) {
+        Expr::Lit(l) => match &l.lit {
+            Lit::Float(f) if matches!(f.suffix(), "" | "f64") => f.base10_parse::<f64>().map(Num::Known),
+            Lit::Int(i) if matches!(i.suffix(), "" | "f64") => i.base10_digits().parse::<f64>().map(Num::Known).map_err(|e| syn::Error::new(i.span(), e)),
+            Lit::Float(_) | Lit::Int(_) => Err(syn::Error::new(l.span(), "expected an `f64`; remove the suffix")),
+            _ => Err(syn::Error::new(l.span(), "expected a number")),
+        },
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval_number(&u.expr)?),
+        Expr::Binary(b) => {
+            let (l, r) = (eval_number(&b.left), eval_number(&b.right));
+            let (l, r) = match (l, r) {
+                (Ok(l), Ok(r)) => (l, r),
+                (Err(mut a), Err(b)) => {
+                    a.combine(b);
+                    return Err(a);
+                }
+                (Err(e), _) | (_, Err(e)) => return Err(e),
+            };
+            match b.op {
+                BinOp::Add(_) => Ok(l + r),
+                BinOp::Sub(_) => Ok(l - r),
+                BinOp::Mul(_) => Ok(l * r),
+                BinOp::Div(_) => Ok(l / r),
+                _ => Err(syn::Error::new(b.op.span(), "only `+ - * /` may combine numbers")),
+            }
+        }
+        e @ (Expr::Path(_) | Expr::Call(_) | Expr::MethodCall(_) | Expr::Field(_) | Expr::Index(_) | Expr::Const(_) | Expr::Block(_)) => {
+            let tokens = e.to_token_stream();
+            let span = e.span();
+            Ok(Num::Expr(quote_spanned!(span=> (#tokens) as f64)))
+        }
+        e => Err(syn::Error::new(e.span(), "expected a number (a literal or a constant expression)")),
+    }
+}
