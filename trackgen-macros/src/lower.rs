@@ -34,6 +34,11 @@ impl Errors {
         self.push(syn::Error::new(span, message));
     }
 
+    /// An error covering all of `tokens` (first to last token).
+    pub fn spanned(&mut self, tokens: impl ToTokens, message: impl std::fmt::Display) {
+        self.push(syn::Error::new_spanned(tokens, message));
+    }
+
     pub fn finish(self) -> Result<(), syn::Error> {
         self.first.map_or(Ok(()), Err)
     }
@@ -62,7 +67,7 @@ fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
     let kind = if ast.kind == "track" {
         ItemKind::Track(cx.track(&ast.body, true))
     } else {
-        ItemKind::Vehicle(cx.vehicle(&ast.body))
+        ItemKind::Vehicle(cx.vehicle(&ast.body, &ast.name))
     };
     Item { attrs: ast.attrs, vis: ast.vis, name: ast.name, kind, checks: cx.checks }
 }
@@ -148,7 +153,7 @@ impl Cx<'_> {
     fn check_positive(&mut self, value: &Num, expr: &Expr, key: &str) {
         match value {
             Num::Known(v) if !(v.is_finite() && *v > 0.0) => {
-                self.errors.at(expr.span(), format!("`{key}` must be positive and finite, found {v}"));
+                self.errors.spanned(expr, format!("`{key}` must be positive and finite, found {v}"));
             }
             Num::Known(_) => {}
             Num::Expr(t) => self.checks.push(ConstCheck {
@@ -165,7 +170,7 @@ impl Cx<'_> {
         let value = self.number(fields, key, true)?;
         match &value {
             Num::Known(v) if !(v.is_finite() && *v >= 0.0) => {
-                self.errors.at(expr?.span(), format!("`{key}` must be non-negative and finite, found {v}"));
+                self.errors.spanned(expr?, format!("`{key}` must be non-negative and finite, found {v}"));
             }
             Num::Known(_) => {}
             Num::Expr(t) => self.checks.push(ConstCheck {
@@ -195,7 +200,7 @@ impl Cx<'_> {
         let result = eval_number(expr);
         match result {
             Ok(Num::Known(v)) if !v.is_finite() => {
-                self.errors.at(expr.span(), format!("`{key}` must be finite, found {v}"));
+                self.errors.spanned(expr, format!("`{key}` must be finite, found {v}"));
                 Err(())
             }
             Ok(n) => Ok(n),
@@ -214,7 +219,7 @@ impl Cx<'_> {
                 Ok(Vec2 { x: x?, y: y? })
             }
             other => {
-                self.errors.at(other.span(), format!("`{key}` must be a point `(x, y)` in metres"));
+                self.errors.spanned(other, format!("`{key}` must be a point `(x, y)` in metres"));
                 Err(())
             }
         }
@@ -242,11 +247,11 @@ impl Cx<'_> {
             return None;
         };
         let Expr::Lit(syn::ExprLit { lit: Lit::Int(lit), .. }) = strip(expr) else {
-            self.errors.at(expr.span(), "`links` must be an integer literal: it fixes the shape of the generated code");
+            self.errors.spanned(expr, "`links` must be an integer literal: it fixes the shape of the generated code");
             return None;
         };
         let Ok(n) = lit.base10_parse::<usize>() else {
-            self.errors.at(lit.span(), "`links` must be a non-negative integer");
+            self.errors.spanned(lit, "`links` must be a non-negative integer");
             return None;
         };
         let closed = !matches!(closure, Closure::Open);
@@ -293,7 +298,7 @@ impl Cx<'_> {
                 }
             }
             other => {
-                self.errors.at(other.span(), EXPECTED);
+                self.errors.spanned(other, EXPECTED);
                 Closure::Partitioned
             }
         }
@@ -346,10 +351,18 @@ impl Cx<'_> {
         for (indices, mass, inertia, u1, u2, body_span) in overrides {
             for i in indices {
                 let link = &mut links[i];
-                mass.clone().map(|v| link.mass = v);
-                inertia.clone().map(|v| link.inertia = v);
-                u1.clone().map(|v| link.u1 = v);
-                u2.clone().map(|v| link.u2 = v);
+                if let Some(v) = &mass {
+                    link.mass = v.clone();
+                }
+                if let Some(v) = &inertia {
+                    link.inertia = v.clone();
+                }
+                if let Some(v) = &u1 {
+                    link.u1 = v.clone();
+                }
+                if let Some(v) = &u2 {
+                    link.u2 = v.clone();
+                }
                 touched[i] = body_span;
             }
         }
@@ -413,7 +426,7 @@ impl Cx<'_> {
         out
     }
 
-    fn vehicle(&mut self, block: &Block) -> Vehicle {
+    fn vehicle(&mut self, block: &Block, name: &Ident) -> Vehicle {
         let fields = self.fields("vehicle", block, &["gravity"]);
         let gravity = self.gravity(&fields);
         let mut kinds = vec!["chassis", "track"];
@@ -423,6 +436,7 @@ impl Cx<'_> {
         let mut track = None;
         let mut parts = Vec::new();
         let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
+        let vehicle_name = name;
         for entry in sections {
             let Entry::Section { kind, selector, name, body } = entry else { continue };
             if let Some(sel) = selector {
@@ -451,7 +465,12 @@ impl Cx<'_> {
                         self.errors.at(kind.span(), format!("`{k}` needs a name, e.g. `{k} front {{ … }}`"));
                         continue;
                     };
-                    if part_names.insert(name.to_string(), name.clone()).is_some() {
+                    // Part names become body-index constants (`RW1`) and
+                    // local names beside the frame's (`chassis`).
+                    let upper = name.to_string().to_uppercase();
+                    if upper == "FRAME" || upper == "CHASSIS" {
+                        self.errors.at(name.span(), format!("`{name}` is reserved for the chassis frame; choose another part name"));
+                    } else if part_names.insert(upper, name.clone()).is_some() {
                         self.errors.at(name.span(), format!("duplicate part name `{name}`"));
                     }
                     if let Some(part) = self.part(kind_ir, name, body) {
@@ -461,10 +480,10 @@ impl Cx<'_> {
             }
         }
         if chassis.is_none() {
-            self.errors.at(block.span, "missing `chassis { mass: …, inertia: … }` section in vehicle");
+            self.errors.at(vehicle_name.span(), format!("vehicle `{vehicle_name}` has no `chassis {{ mass: …, inertia: … }}` section"));
         }
         if track.is_none() {
-            self.errors.at(block.span, "missing `track { … }` section in vehicle");
+            self.errors.at(vehicle_name.span(), format!("vehicle `{vehicle_name}` has no `track {{ … }}` section"));
         }
         let (chassis_mass, chassis_inertia, centroid) = chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
         for part in &mut parts {
@@ -514,7 +533,7 @@ impl Cx<'_> {
                 }
             },
             other => {
-                self.errors.at(other.span(), "`teeth` must be an integer literal");
+                self.errors.spanned(other, "`teeth` must be an integer literal");
                 None
             }
         }

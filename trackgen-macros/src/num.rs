@@ -65,7 +65,8 @@ impl ToTokens for Num {
     fn to_tokens(&self, tokens: &mut TokenStream) {
         match self {
             Num::Known(v) => literal(*v).to_tokens(tokens),
-            Num::Expr(t) => quote_spanned!(Span::mixed_site()=> const { #t }).to_tokens(tokens),
+            // Parenthesised: a bare `const { … }` would start a statement.
+            Num::Expr(t) => quote_spanned!(Span::mixed_site()=> (const { #t })).to_tokens(tokens),
         }
     }
 }

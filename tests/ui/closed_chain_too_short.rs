@@ -1,0 +1,9 @@
+trackgen::model! {
+    pub track Chain {
+        links: 2,
+        link { mass: 18.02, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
+        closure: partitioned,
+    }
+}
+
+fn main() {}

@@ -1,0 +1,10 @@
+trackgen::model! {
+    pub track Chain {
+        links: 4,
+        link { mass: 18.02, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
+        link[0] { mass: 20.0 },
+        link[2..=9 by 2] { mass: 20.0 },
+    }
+}
+
+fn main() {}

@@ -1,0 +1,8 @@
+trackgen::model! {
+    pub track Chain {
+        links: 4,
+        link { mass: 1e400, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
+    }
+}
+
+fn main() {}
