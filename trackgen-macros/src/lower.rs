@@ -327,7 +327,9 @@ impl Cx<'_> {
                     let u1 = self.point(&fields, "u1", true);
                     let u2 = self.point(&fields, "u2", true);
                     if let (Some(mass), Some(inertia), Some(u1), Some(u2)) = (mass, inertia, u1, u2) {
-                        template.get_or_insert(Link { mass, inertia, u1, u2 });
+                        let link = Link { mass, inertia, u1, u2 };
+                        self.check_distinct_joints(&link, "the link template", body.span);
+                        template.get_or_insert(link);
                     }
                 }
                 Some(sel) => {
@@ -347,7 +349,8 @@ impl Cx<'_> {
             return Vec::new();
         };
         let mut links = vec![template; n];
-        let mut touched = vec![span; n];
+        // Links an override changed: the template was checked already.
+        let mut touched = vec![None; n];
         for (indices, mass, inertia, u1, u2, body_span) in overrides {
             for i in indices {
                 let link = &mut links[i];
@@ -363,21 +366,23 @@ impl Cx<'_> {
                 if let Some(v) = &u2 {
                     link.u2 = v.clone();
                 }
-                touched[i] = body_span;
+                touched[i] = Some(body_span);
             }
         }
         for (i, link) in links.iter().enumerate() {
-            self.check_distinct_joints(link, i + 1, touched[i]);
+            if let Some(span) = touched[i] {
+                self.check_distinct_joints(link, &format!("link {}", i + 1), span);
+            }
         }
         links
     }
 
-    fn check_distinct_joints(&mut self, link: &Link, number: usize, span: Span) {
+    fn check_distinct_joints(&mut self, link: &Link, which: &str, span: Span) {
         let d = link.u2.clone() - link.u1.clone();
         match (d.x.known(), d.y.known()) {
             (Some(x), Some(y)) => {
                 if x == 0.0 && y == 0.0 {
-                    self.errors.at(span, format!("link {number}: its joint points `u1` and `u2` coincide"));
+                    self.errors.at(span, format!("{which}: its joint points `u1` and `u2` coincide"));
                 }
             }
             _ => {
@@ -385,7 +390,7 @@ impl Cx<'_> {
                 self.checks.push(ConstCheck {
                     span,
                     condition: quote!(!(#x == 0.0 && #y == 0.0)),
-                    message: format!("link {number}: its joint points `u1` and `u2` coincide"),
+                    message: format!("{which}: its joint points `u1` and `u2` coincide"),
                 });
             }
         }
