@@ -268,6 +268,10 @@ impl Tree {
             let d = &self.diagonal[k];
             out.extend(quote! { out[(#col, #col)] = #d; });
         }
+        if self.is_chain() && n > 1 {
+            out.extend(self.chain_coupling());
+            return out;
+        }
         for k in 0..n {
             for j in 0..k {
                 let (r, c) = (2 + j, 2 + k);
@@ -282,6 +286,39 @@ impl Tree {
             }
         }
         out
+    }
+
+    /// Whether body `b` hangs from body `b − 1`, for every `b`.
+    fn is_chain(&self) -> bool {
+        self.bodies.iter().enumerate().all(|(b, body)| body.parent == b.checked_sub(1))
+    }
+
+    /// A chain's `M_θjθk = b_j · e_k` (j < k) is an outer product of two
+    /// O(n) lists in which every constant is already folded. The O(n²) fill
+    /// is therefore a loop: unrolling it would fold nothing more, and would
+    /// cost n²/2 statements of compile time (8 256 at 128 links).
+    fn chain_coupling(&self) -> TokenStream {
+        let n = self.len();
+        let vars = |v: Option<(Ident, Ident)>| match v {
+            Some((x, y)) => quote!((#x, #y)),
+            None => quote!((0.0, 0.0)),
+        };
+        let levers = (0..n - 1).map(|j| vars(self.lever_var(j, j + 1).map(|_| self.lever_names(j, j + 1))));
+        let moments =
+            (1..n).map(|k| vars((!self.moment[k].is_zero()).then(|| pair("e", &self.bodies[k].tag))));
+        quote! {
+            let levers: [(f64, f64); #n - 1] = [#(#levers),*];
+            let moments: [(f64, f64); #n - 1] = [#(#moments),*];
+            for k in 1..#n {
+                let (ex, ey) = moments[k - 1];
+                for j in 0..k {
+                    let (bx, by) = levers[j];
+                    let coupling = bx * ex + by * ey;
+                    out[(2 + j, 2 + k)] = coupling;
+                    out[(2 + k, 2 + j)] = coupling;
+                }
+            }
+        }
     }
 
     /// Fills `out` (`Q_i`) in O(n): `γ` top-down, `F̃ = F − m γ`, subtree
