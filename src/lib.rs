@@ -74,6 +74,11 @@
 
 #![warn(missing_docs)]
 
+// Generated code names `::trackgen`; this lets the crate declare vehicles too.
+extern crate self as trackgen;
+
+pub mod vehicles;
+
 pub use trackgen_macros::model;
 pub use trackgen_runtime::*;
 

@@ -1,0 +1,4 @@
+//! Vehicles shipped with trackgen, declared with [`model!`](crate::model)
+//! like any user's: start from one.
+
+pub mod m113;
