@@ -3,12 +3,12 @@
 //!
 //! `cargo bench --bench mass_and_forces`; the ratios are in README.md.
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
+use trackgen::RecursiveModel;
 use trackgen::nalgebra::{DVector, SMatrix, SVector};
 use trackgen::reference::ReferenceModel;
-use trackgen::RecursiveModel;
 
 macro_rules! tracks {
     ($($name:ident = $n:literal),*) => {
@@ -25,12 +25,24 @@ macro_rules! tracks {
     };
 }
 
-tracks!(Track8 = 8, Track16 = 16, Track32 = 32, Track64 = 64, Track128 = 128);
+tracks!(
+    Track8 = 8,
+    Track16 = 16,
+    Track32 = 32,
+    Track64 = 64,
+    Track128 = 128
+);
 
 /// A state with every angle distinct (a ring: the loop closes).
 fn state<const D: usize>() -> (SVector<f64, D>, SVector<f64, D>) {
     let n = (D - 2) as f64;
-    let q = SVector::from_fn(|i, _| if i < 2 { 0.3 } else { 2.0 * std::f64::consts::PI * (i - 2) as f64 / n });
+    let q = SVector::from_fn(|i, _| {
+        if i < 2 {
+            0.3
+        } else {
+            2.0 * std::f64::consts::PI * (i - 2) as f64 / n
+        }
+    });
     let qd = SVector::from_fn(|i, _| if i < 2 { 1.0 } else { 0.5 });
     (q, qd)
 }
@@ -48,7 +60,10 @@ fn bench_one<M: RecursiveModel<D>, const D: usize>(c: &mut Criterion, model: M) 
         })
     });
     let reference = ReferenceModel::new(model.description());
-    let (dq, dqd) = (DVector::from_column_slice(q.as_slice()), DVector::from_column_slice(qd.as_slice()));
+    let (dq, dqd) = (
+        DVector::from_column_slice(q.as_slice()),
+        DVector::from_column_slice(qd.as_slice()),
+    );
     group.bench_with_input(BenchmarkId::new("reference", n), &n, |b, _| {
         b.iter(|| {
             let m = reference.mass_matrix(black_box(&dq));

@@ -37,7 +37,10 @@ fn time(mut f: impl FnMut()) -> f64 {
 fn main() {
     let track = M113Track;
     let n = M113Track::LINKS;
-    println!("M113 (one side): {n} shoes, {} chassis parts", <M113Chassis as ChassisModel<CHASSIS_DOF>>::PARTS.len());
+    println!(
+        "M113 (one side): {n} shoes, {} chassis parts",
+        <M113Chassis as ChassisModel<CHASSIS_DOF>>::PARTS.len()
+    );
 
     // The track as a regular polygon, turning at 0.5 rad/s about its centre
     // while the whole loop translates at 2 m/s: a state on the closure.
@@ -54,15 +57,29 @@ fn main() {
     let omega = 0.5;
     qd[0] = 2.0 - omega * q[1];
     qd[1] = omega * q[0];
-    println!("closure |C| = {:.2e} m, |C_q q̇| = {:.2e} m/s", track.closure(&q).norm(), (track.closure_jacobian(&q) * qd).norm());
+    println!(
+        "closure |C| = {:.2e} m, |C_q q̇| = {:.2e} m/s",
+        track.closure(&q).norm(),
+        (track.closure_jacobian(&q) * qd).norm()
+    );
 
     let acc = trackgen::dynamics::forward_dynamics(&track, &q, &qd, &[]).expect("track dynamics");
     let reference = ReferenceModel::new(track.description());
-    let (dq, dqd) = (DVector::from_column_slice(q.as_slice()), DVector::from_column_slice(qd.as_slice()));
-    let want = reference.forward_dynamics(&dq, &dqd, &[]).expect("reference dynamics");
-    let diff = (DVector::from_column_slice(acc.qdd.as_slice()) - &want.qdd).amax() / want.qdd.amax();
+    let (dq, dqd) = (
+        DVector::from_column_slice(q.as_slice()),
+        DVector::from_column_slice(qd.as_slice()),
+    );
+    let want = reference
+        .forward_dynamics(&dq, &dqd, &[])
+        .expect("reference dynamics");
+    let diff =
+        (DVector::from_column_slice(acc.qdd.as_slice()) - &want.qdd).amax() / want.qdd.amax();
     println!("track q̈_i: generated vs reference route, max relative difference {diff:.1e}");
-    println!("  closing-joint multipliers λ = ({:.1}, {:.1}) N", acc.multipliers.unwrap().x, acc.multipliers.unwrap().y);
+    println!(
+        "  closing-joint multipliers λ = ({:.1}, {:.1}) N",
+        acc.multipliers.unwrap().x,
+        acc.multipliers.unwrap().y
+    );
 
     let mut m = trackgen::nalgebra::SMatrix::<f64, TRACK_DOF, TRACK_DOF>::zeros();
     let mut f = SVector::<f64, TRACK_DOF>::zeros();
@@ -71,16 +88,34 @@ fn main() {
         track.equations_of_motion(std::hint::black_box(&q), &qd, &[], m, f);
     });
     let textbook = time(|| {
-        std::hint::black_box((reference.mass_matrix(&dq), reference.generalized_forces(&dq, &dqd, &[])));
+        std::hint::black_box((
+            reference.mass_matrix(&dq),
+            reference.generalized_forces(&dq, &dqd, &[]),
+        ));
     });
     let forward = time(|| {
-        std::hint::black_box(trackgen::dynamics::forward_dynamics(&track, std::hint::black_box(&q), &qd, &[]).unwrap());
+        std::hint::black_box(
+            trackgen::dynamics::forward_dynamics(&track, std::hint::black_box(&q), &qd, &[])
+                .unwrap(),
+        );
     });
-    println!("M_i + Q_i: generated {:.2} µs, reference route {:.1} µs ({:.0}x)", generated * 1e6, textbook * 1e6, textbook / generated);
-    println!("closed-track forward dynamics (dense multiplier form): {:.1} µs", forward * 1e6);
+    println!(
+        "M_i + Q_i: generated {:.2} µs, reference route {:.1} µs ({:.0}x)",
+        generated * 1e6,
+        textbook * 1e6,
+        textbook / generated
+    );
+    println!(
+        "closed-track forward dynamics (dense multiplier form): {:.1} µs",
+        forward * 1e6
+    );
 
     let chassis = M113Chassis;
     let qc = SVector::<f64, CHASSIS_DOF>::zeros();
-    let ac = trackgen::dynamics::open_dynamics(&chassis, &qc, &SVector::zeros(), &[]).expect("chassis dynamics");
-    println!("chassis alone under gravity: ÿ = {:.3} m/s², θ̈ = {:.2e} rad/s²", ac.qdd[1], ac.qdd[2]);
+    let ac = trackgen::dynamics::open_dynamics(&chassis, &qc, &SVector::zeros(), &[])
+        .expect("chassis dynamics");
+    println!(
+        "chassis alone under gravity: ÿ = {:.3} m/s², θ̈ = {:.2e} rad/s²",
+        ac.qdd[1], ac.qdd[2]
+    );
 }

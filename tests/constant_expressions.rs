@@ -2,8 +2,8 @@
 //! on them, `const` blocks. The macro cannot evaluate these; rustc folds
 //! them, and the result must equal the same track declared with literals.
 
-use trackgen::nalgebra::{SMatrix, SVector};
 use trackgen::RecursiveModel;
+use trackgen::nalgebra::{SMatrix, SVector};
 
 const PITCH: f64 = 0.154;
 const SHOE_MASS: f64 = 18.02;
@@ -44,6 +44,14 @@ fn constant_expressions_fold_to_the_literal_model() {
     // The same constants reach the same arithmetic: agreement to rounding
     // of the constants themselves (the macro folds literal arithmetic in
     // its own order).
-    assert!((m1 - m2).amax() <= 1e-13 * m2.amax(), "{}", (m1 - m2).amax());
-    assert!((f1 - f2).amax() <= 1e-13 * f2.amax(), "{}", (f1 - f2).amax());
+    assert!(
+        (m1 - m2).amax() <= 1e-13 * m2.amax(),
+        "{}",
+        (m1 - m2).amax()
+    );
+    assert!(
+        (f1 - f2).amax() <= 1e-13 * f2.amax(),
+        "{}",
+        (f1 - f2).amax()
+    );
 }

@@ -14,23 +14,32 @@ mod support;
 include!("support/chains.rs");
 
 use proptest::prelude::*;
+use support::{assert_close, dmat, dvec};
 use trackgen::nalgebra::{SMatrix, SVector, Vector2};
 use trackgen::reference::ReferenceModel;
 use trackgen::{BodyLoad, RecursiveModel, TrackModel};
-use support::{assert_close, dmat, dvec};
 
 const REL: f64 = 1e-12;
 const REL_SOLVE: f64 = 1e-10;
 
 fn state<const D: usize>(values: &[f64]) -> (SVector<f64, D>, SVector<f64, D>) {
-    let q = SVector::from_fn(|i, _| if i < 2 { 2.0 * values[i] } else { std::f64::consts::PI * values[i] });
+    let q = SVector::from_fn(|i, _| {
+        if i < 2 {
+            2.0 * values[i]
+        } else {
+            std::f64::consts::PI * values[i]
+        }
+    });
     let qd = SVector::from_fn(|i, _| 3.0 * values[D + i]);
     (q, qd)
 }
 
 fn loads(n: usize, values: &[f64]) -> Vec<BodyLoad> {
     (0..n)
-        .map(|b| BodyLoad { force: Vector2::new(100.0 * values[3 * b], 100.0 * values[3 * b + 1]), moment: 10.0 * values[3 * b + 2] })
+        .map(|b| BodyLoad {
+            force: Vector2::new(100.0 * values[3 * b], 100.0 * values[3 * b + 1]),
+            moment: 10.0 * values[3 * b + 2],
+        })
         .collect()
 }
 
@@ -47,17 +56,41 @@ fn compare<M: TrackModel<D>, const D: usize>(model: &M, values: &[f64]) {
     let want_pos: Vec<f64> = flat(&reference.positions(&dq));
     assert_close("positions", &flat(&pos), &want_pos, REL, 1.0);
 
-    assert_close("H", model.velocity_transform(&q).as_slice(), reference.velocity_transform(&dq).as_slice(), REL, 0.0);
-    assert_close("γ", model.gamma(&q, &qd).as_slice(), reference.gamma(&dq, &dqd).as_slice(), REL, 0.0);
+    assert_close(
+        "H",
+        model.velocity_transform(&q).as_slice(),
+        reference.velocity_transform(&dq).as_slice(),
+        REL,
+        0.0,
+    );
+    assert_close(
+        "γ",
+        model.gamma(&q, &qd).as_slice(),
+        reference.gamma(&dq, &dqd).as_slice(),
+        REL,
+        0.0,
+    );
 
     let mut mass = SMatrix::<f64, D, D>::zeros();
     model.mass_matrix(&q, &mut mass);
-    assert_close("M_i", dmat(&mass).as_slice(), reference.mass_matrix(&dq).as_slice(), REL, 0.0);
+    assert_close(
+        "M_i",
+        dmat(&mass).as_slice(),
+        reference.mass_matrix(&dq).as_slice(),
+        REL,
+        0.0,
+    );
 
     for loads in [&[][..], &applied[..]] {
         let mut forces = SVector::<f64, D>::zeros();
         model.generalized_forces(&q, &qd, loads, &mut forces);
-        assert_close("Q_i", forces.as_slice(), reference.generalized_forces(&dq, &dqd, loads).as_slice(), REL, 0.0);
+        assert_close(
+            "Q_i",
+            forces.as_slice(),
+            reference.generalized_forces(&dq, &dqd, loads).as_slice(),
+            REL,
+            0.0,
+        );
         let (mut m2, mut f2) = (SMatrix::<f64, D, D>::zeros(), SVector::<f64, D>::zeros());
         model.equations_of_motion(&q, &qd, loads, &mut m2, &mut f2);
         assert_eq!(m2, mass, "equations_of_motion: M_i");
@@ -65,17 +98,47 @@ fn compare<M: TrackModel<D>, const D: usize>(model: &M, values: &[f64]) {
 
         let got = trackgen::dynamics::forward_dynamics(model, &q, &qd, loads).unwrap();
         let want = reference.forward_dynamics(&dq, &dqd, loads).unwrap();
-        assert_close("q̈_i", got.qdd.as_slice(), want.qdd.as_slice(), REL_SOLVE, 0.0);
+        assert_close(
+            "q̈_i",
+            got.qdd.as_slice(),
+            want.qdd.as_slice(),
+            REL_SOLVE,
+            0.0,
+        );
         assert_eq!(got.multipliers.is_some(), want.multipliers.is_some());
         if let (Some(a), Some(b)) = (got.multipliers, want.multipliers) {
             assert_close("λ", a.as_slice(), b.as_slice(), REL_SOLVE, 0.0);
         }
     }
 
-    assert_close("T", &[model.kinetic_energy(&q, &qd)], &[reference.kinetic_energy(&dq, &dqd)], REL, 0.0);
-    assert_close("C", model.closure(&q).as_slice(), reference.closure(&dq).as_slice(), REL, 1.0);
-    assert_close("C_q", model.closure_jacobian(&q).as_slice(), reference.closure_jacobian(&dq).as_slice(), REL, 0.0);
-    assert_close("γ_c", model.closure_gamma(&q, &qd).as_slice(), reference.closure_gamma(&dq, &dqd).as_slice(), REL, 0.0);
+    assert_close(
+        "T",
+        &[model.kinetic_energy(&q, &qd)],
+        &[reference.kinetic_energy(&dq, &dqd)],
+        REL,
+        0.0,
+    );
+    assert_close(
+        "C",
+        model.closure(&q).as_slice(),
+        reference.closure(&dq).as_slice(),
+        REL,
+        1.0,
+    );
+    assert_close(
+        "C_q",
+        model.closure_jacobian(&q).as_slice(),
+        reference.closure_jacobian(&dq).as_slice(),
+        REL,
+        0.0,
+    );
+    assert_close(
+        "γ_c",
+        model.closure_gamma(&q, &qd).as_slice(),
+        reference.closure_gamma(&dq, &dqd).as_slice(),
+        REL,
+        0.0,
+    );
 }
 
 /// `2 DOF` state values and `3 n` load values, each in [-1, 1].
@@ -112,6 +175,9 @@ fn description_of_a_penalty_track_carries_its_spring() {
     let desc = Hetero10Penalty.description();
     assert_eq!(
         desc.loop_joint.unwrap().closure,
-        trackgen::Closure::Penalty { stiffness: 2.5e5, damping: 40.0 }
+        trackgen::Closure::Penalty {
+            stiffness: 2.5e5,
+            damping: 40.0
+        }
     );
 }

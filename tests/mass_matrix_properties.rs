@@ -15,9 +15,9 @@
 mod support;
 include!("support/chains.rs");
 
-use trackgen::nalgebra::{SMatrix, SVector};
+use support::{Lcg, assert_close, dmat};
 use trackgen::TrackModel;
-use support::{assert_close, dmat, Lcg};
+use trackgen::nalgebra::{SMatrix, SVector};
 
 fn check<M: TrackModel<D>, const D: usize>(m: &M, seed: u64) {
     let mut rng = Lcg::new(seed);
@@ -27,10 +27,20 @@ fn check<M: TrackModel<D>, const D: usize>(m: &M, seed: u64) {
         m.mass_matrix(&q, &mut mass);
         assert_eq!(mass, mass.transpose(), "M_i symmetric");
         let eigen = dmat(&mass).symmetric_eigenvalues();
-        assert!(eigen.min() > 0.0, "M_i positive definite, smallest eigenvalue {}", eigen.min());
+        assert!(
+            eigen.min() > 0.0,
+            "M_i positive definite, smallest eigenvalue {}",
+            eigen.min()
+        );
 
         let quadratic = 0.5 * qd.dot(&(mass * qd));
-        assert_close("½ q̇ᵀ M_i q̇ vs T", &[quadratic], &[m.kinetic_energy(&q, &qd)], 1e-12, 0.0);
+        assert_close(
+            "½ q̇ᵀ M_i q̇ vs T",
+            &[quadratic],
+            &[m.kinetic_energy(&q, &qd)],
+            1e-12,
+            0.0,
+        );
 
         if M::CLOSURE.is_constrained() {
             let acc = trackgen::dynamics::forward_dynamics(m, &q, &qd, &[]).unwrap();
@@ -38,7 +48,10 @@ fn check<M: TrackModel<D>, const D: usize>(m: &M, seed: u64) {
             let gamma = m.closure_gamma(&q, &qd);
             let residual = cq * acc.qdd - gamma;
             let scale = cq.norm() * acc.qdd.norm() + gamma.norm();
-            assert!(residual.norm() <= 1e-10 * scale, "C_q q̈ − γ_c = {residual:?} (scale {scale})");
+            assert!(
+                residual.norm() <= 1e-10 * scale,
+                "C_q q̈ − γ_c = {residual:?} (scale {scale})"
+            );
         }
     }
 }

@@ -12,38 +12,63 @@ mod support;
 include!("support/chains.rs");
 
 use serde_json::Value;
+use support::assert_close;
 use trackgen::nalgebra::{SMatrix, SVector};
 use trackgen::{RecursiveModel, TrackModel};
-use support::assert_close;
 
 const REL: f64 = 1e-12;
 
 fn cases() -> Vec<Value> {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/pinocchio_chains.json"))
-        .expect("reference data");
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/pinocchio_chains.json"
+    ))
+    .expect("reference data");
     let data: Value = serde_json::from_str(&text).expect("valid JSON");
     assert_eq!(data["source"], "Pinocchio 4.1.0");
     data["cases"].as_array().unwrap().clone()
 }
 
 fn floats(v: &Value) -> Vec<f64> {
-    v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
 }
 
 fn check<M: TrackModel<D>, const D: usize>(model: M, name: &str) {
-    let case = cases().into_iter().find(|c| c["name"] == name).expect("case present");
+    let case = cases()
+        .into_iter()
+        .find(|c| c["name"] == name)
+        .expect("case present");
     // The declaration was transcribed from the JSON: check it link by link.
     let desc = model.description();
     let links = case["links"].as_array().unwrap();
     assert_eq!(links.len(), M::BODIES);
     let spans = desc.link_spans().unwrap();
     for (i, link) in links.iter().enumerate() {
-        assert_eq!(desc.bodies[i].mass, link["m"].as_f64().unwrap(), "{name} link {i} mass");
-        assert_eq!(desc.bodies[i].inertia, link["J"].as_f64().unwrap(), "{name} link {i} inertia");
+        assert_eq!(
+            desc.bodies[i].mass,
+            link["m"].as_f64().unwrap(),
+            "{name} link {i} mass"
+        );
+        assert_eq!(
+            desc.bodies[i].inertia,
+            link["J"].as_f64().unwrap(),
+            "{name} link {i} inertia"
+        );
         let (u1, u2) = (floats(&link["u1"]), floats(&link["u2"]));
-        assert_eq!(spans[i].as_slice(), &[u2[0] - u1[0], u2[1] - u1[1]], "{name} link {i} span");
+        assert_eq!(
+            spans[i].as_slice(),
+            &[u2[0] - u1[0], u2[1] - u1[1]],
+            "{name} link {i} span"
+        );
     }
-    assert_eq!(M::CLOSURE.is_constrained(), case["closed"].as_bool().unwrap());
+    assert_eq!(
+        M::CLOSURE.is_constrained(),
+        case["closed"].as_bool().unwrap()
+    );
     assert_eq!(desc.gravity.as_slice(), floats(&case["gravity"]).as_slice());
 
     for (k, state) in case["states"].as_array().unwrap().iter().enumerate() {
@@ -51,11 +76,28 @@ fn check<M: TrackModel<D>, const D: usize>(model: M, name: &str) {
         let qd = SVector::<f64, D>::from_column_slice(&floats(&state["qd"]));
         let mut mass = SMatrix::<f64, D, D>::zeros();
         model.mass_matrix(&q, &mut mass);
-        let want: Vec<f64> = state["mass"].as_array().unwrap().iter().flat_map(floats).collect();
+        let want: Vec<f64> = state["mass"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .flat_map(floats)
+            .collect();
         // Row-major JSON against column-major storage: M_i is symmetric.
-        assert_close(&format!("{name} state {k}: M_i"), mass.as_slice(), &want, REL, 0.0);
+        assert_close(
+            &format!("{name} state {k}: M_i"),
+            mass.as_slice(),
+            &want,
+            REL,
+            0.0,
+        );
         let acc = trackgen::dynamics::forward_dynamics(&model, &q, &qd, &[]).unwrap();
-        assert_close(&format!("{name} state {k}: q̈_i"), acc.qdd.as_slice(), &floats(&state["qdd"]), REL, 0.0);
+        assert_close(
+            &format!("{name} state {k}: q̈_i"),
+            acc.qdd.as_slice(),
+            &floats(&state["qdd"]),
+            REL,
+            0.0,
+        );
     }
 }
 
@@ -97,10 +139,27 @@ fn reference_route_matches_pinocchio() {
         for state in case["states"].as_array().unwrap() {
             let q = DVector::from_vec(floats(&state["q"]));
             let qd = DVector::from_vec(floats(&state["qd"]));
-            let want: Vec<f64> = state["mass"].as_array().unwrap().iter().flat_map(floats).collect();
-            assert_close(&format!("{name}: reference M_i"), reference.mass_matrix(&q).as_slice(), &want, REL, 0.0);
+            let want: Vec<f64> = state["mass"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .flat_map(floats)
+                .collect();
+            assert_close(
+                &format!("{name}: reference M_i"),
+                reference.mass_matrix(&q).as_slice(),
+                &want,
+                REL,
+                0.0,
+            );
             let acc = reference.forward_dynamics(&q, &qd, &[]).unwrap();
-            assert_close(&format!("{name}: reference q̈_i"), acc.qdd.as_slice(), &floats(&state["qdd"]), REL, 0.0);
+            assert_close(
+                &format!("{name}: reference q̈_i"),
+                acc.qdd.as_slice(),
+                &floats(&state["qdd"]),
+                REL,
+                0.0,
+            );
         }
     }
 }

@@ -6,10 +6,10 @@
 
 mod support;
 
+use support::{Lcg, assert_close, dmat, dvec};
 use trackgen::nalgebra::{DMatrix, SMatrix, SVector, Vector2};
 use trackgen::reference::ReferenceModel;
 use trackgen::{BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
-use support::{assert_close, dmat, dvec, Lcg};
 
 trackgen::model! {
     /// A small vehicle: three road wheels, a sprocket, an idler, a roller.
@@ -40,12 +40,35 @@ fn chassis_matches_reference_route() {
         let (dq, dqd) = (dvec(&q), dvec(&qd));
         let mut mass = SMatrix::<f64, DOF, DOF>::zeros();
         CarrierChassis.mass_matrix(&q, &mut mass);
-        assert_close("(M_i)_c", dmat(&mass).as_slice(), reference.mass_matrix(&dq).as_slice(), 1e-12, 0.0);
-        let loads: Vec<BodyLoad> = (0..7).map(|_| BodyLoad { force: Vector2::new(rng.uniform(-1e3, 1e3), rng.uniform(-1e3, 1e3)), moment: rng.uniform(-1e3, 1e3) }).collect();
+        assert_close(
+            "(M_i)_c",
+            dmat(&mass).as_slice(),
+            reference.mass_matrix(&dq).as_slice(),
+            1e-12,
+            0.0,
+        );
+        let loads: Vec<BodyLoad> = (0..7)
+            .map(|_| BodyLoad {
+                force: Vector2::new(rng.uniform(-1e3, 1e3), rng.uniform(-1e3, 1e3)),
+                moment: rng.uniform(-1e3, 1e3),
+            })
+            .collect();
         let mut forces = SVector::<f64, DOF>::zeros();
         CarrierChassis.generalized_forces(&q, &qd, &loads, &mut forces);
-        assert_close("(Q_i)_c", forces.as_slice(), reference.generalized_forces(&dq, &dqd, &loads).as_slice(), 1e-12, 0.0);
-        assert_close("H_c", CarrierChassis.velocity_transform(&q).as_slice(), reference.velocity_transform(&dq).as_slice(), 1e-12, 0.0);
+        assert_close(
+            "(Q_i)_c",
+            forces.as_slice(),
+            reference.generalized_forces(&dq, &dqd, &loads).as_slice(),
+            1e-12,
+            0.0,
+        );
+        assert_close(
+            "H_c",
+            CarrierChassis.velocity_transform(&q).as_slice(),
+            reference.velocity_transform(&dq).as_slice(),
+            1e-12,
+            0.0,
+        );
         let got = trackgen::dynamics::open_dynamics(&CarrierChassis, &q, &qd, &loads).unwrap();
         let want = reference.forward_dynamics(&dq, &dqd, &loads).unwrap();
         assert_close("q̈_c", got.qdd.as_slice(), want.qdd.as_slice(), 1e-10, 0.0);
@@ -57,8 +80,15 @@ fn chassis_matches_reference_route() {
 #[test]
 fn chassis_follows_eq_11() {
     let centroid = Vector2::new(-2.006, 0.406);
-    let at = [(0.0, 0.0), (-0.74, -0.215), (-2.074, -0.215), (-3.407, -0.215), (-3.95, -0.12), (-2.0, 0.25)]
-        .map(|(x, y)| Vector2::new(x, y) - centroid);
+    let at = [
+        (0.0, 0.0),
+        (-0.74, -0.215),
+        (-2.074, -0.215),
+        (-3.407, -0.215),
+        (-3.95, -0.12),
+        (-2.0, 0.25),
+    ]
+    .map(|(x, y)| Vector2::new(x, y) - centroid);
     let masses = [3909.62, 27.68, 35.56, 35.56, 35.56, 25.76, 10.0];
     let inertias = [13643.8, 0.883, 2.16, 2.16, 2.16, 1.12, 0.1];
     let mut rng = Lcg::new(22);
@@ -76,12 +106,30 @@ fn chassis_follows_eq_11() {
         }
         h[(14 + b, 2 + b)] = 1.0;
     }
-    assert_close("H_c", CarrierChassis.velocity_transform(&q).as_slice(), h.as_slice(), 1e-12, 0.0);
-    let m = DMatrix::from_diagonal(&trackgen::nalgebra::DVector::from_fn(21, |r, _| if r < 14 { masses[r / 2] } else { inertias[r - 14] }));
+    assert_close(
+        "H_c",
+        CarrierChassis.velocity_transform(&q).as_slice(),
+        h.as_slice(),
+        1e-12,
+        0.0,
+    );
+    let m = DMatrix::from_diagonal(&trackgen::nalgebra::DVector::from_fn(21, |r, _| {
+        if r < 14 {
+            masses[r / 2]
+        } else {
+            inertias[r - 14]
+        }
+    }));
     let want = h.transpose() * m * &h;
     let mut mass = SMatrix::<f64, DOF, DOF>::zeros();
     CarrierChassis.mass_matrix(&q, &mut mass);
-    assert_close("(M_i)_c", dmat(&mass).as_slice(), want.as_slice(), 1e-12, 0.0);
+    assert_close(
+        "(M_i)_c",
+        dmat(&mass).as_slice(),
+        want.as_slice(),
+        1e-12,
+        0.0,
+    );
     // The parts spin independently of the frame: no frame–part coupling.
     for b in 1..7 {
         assert_eq!(mass[(2, 2 + b)], 0.0);

@@ -38,17 +38,28 @@ pub struct Lcg(u64);
 
 impl Lcg {
     pub fn new(seed: u64) -> Self {
-        Lcg(seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407))
+        Lcg(seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407))
     }
 
     /// Uniform in `[lo, hi)`.
     pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         lo + (hi - lo) * ((self.0 >> 11) as f64 / (1u64 << 53) as f64)
     }
 
     pub fn state<const D: usize>(&mut self) -> (SVector<f64, D>, SVector<f64, D>) {
-        let q = SVector::from_fn(|i, _| if i < 2 { self.uniform(-2.0, 2.0) } else { self.uniform(-3.2, 3.2) });
+        let q = SVector::from_fn(|i, _| {
+            if i < 2 {
+                self.uniform(-2.0, 2.0)
+            } else {
+                self.uniform(-3.2, 3.2)
+            }
+        });
         let qd = SVector::from_fn(|_, _| self.uniform(-3.0, 3.0));
         (q, qd)
     }

@@ -80,9 +80,14 @@ impl PartKind {
     }
 
     pub fn from_keyword(s: &str) -> Option<PartKind> {
-        [PartKind::Sprocket, PartKind::Idler, PartKind::RoadWheel, PartKind::Roller]
-            .into_iter()
-            .find(|k| k.keyword() == s)
+        [
+            PartKind::Sprocket,
+            PartKind::Idler,
+            PartKind::RoadWheel,
+            PartKind::Roller,
+        ]
+        .into_iter()
+        .find(|k| k.keyword() == s)
     }
 }
 

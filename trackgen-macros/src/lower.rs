@@ -4,7 +4,7 @@
 use std::collections::BTreeMap;
 
 use proc_macro2::Span;
-use quote::{quote, quote_spanned, ToTokens};
+use quote::{ToTokens, quote, quote_spanned};
 use syn::spanned::Spanned;
 use syn::{BinOp, Expr, Ident, Lit, Member, UnOp};
 
@@ -63,13 +63,22 @@ pub fn lower(input: Input) -> Result<Model, (syn::Error, Vec<(syn::Visibility, I
 }
 
 fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
-    let mut cx = Cx { errors, checks: Vec::new() };
+    let mut cx = Cx {
+        errors,
+        checks: Vec::new(),
+    };
     let kind = if ast.kind == "track" {
         ItemKind::Track(cx.track(&ast.body, true))
     } else {
         ItemKind::Vehicle(cx.vehicle(&ast.body, &ast.name))
     };
-    Item { attrs: ast.attrs, vis: ast.vis, name: ast.name, kind, checks: cx.checks }
+    Item {
+        attrs: ast.attrs,
+        vis: ast.vis,
+        name: ast.name,
+        kind,
+        checks: cx.checks,
+    }
 }
 
 struct Cx<'e> {
@@ -96,28 +105,47 @@ impl Cx<'_> {
                 if !allowed.contains(&name.as_str()) {
                     self.errors.at(
                         key.span(),
-                        format!("unknown key `{name}` in {what}; expected one of: {}", allowed.join(", ")),
+                        format!(
+                            "unknown key `{name}` in {what}; expected one of: {}",
+                            allowed.join(", ")
+                        ),
                     );
                 } else if map.insert(name.clone(), value).is_some() {
-                    self.errors.at(key.span(), format!("duplicate key `{name}` in {what}"));
+                    self.errors
+                        .at(key.span(), format!("duplicate key `{name}` in {what}"));
                 }
             }
         }
-        Fields { what, span: block.span, map }
+        Fields {
+            what,
+            span: block.span,
+            map,
+        }
     }
 
-    fn sections<'a>(&mut self, what: &'static str, block: &'a Block, allowed: &[&str]) -> Vec<&'a Entry> {
+    fn sections<'a>(
+        &mut self,
+        what: &'static str,
+        block: &'a Block,
+        allowed: &[&str],
+    ) -> Vec<&'a Entry> {
         let mut out = Vec::new();
         for entry in &block.entries {
             if let Entry::Section { kind, .. } = entry {
                 if allowed.contains(&kind.to_string().as_str()) {
                     out.push(entry);
                 } else if allowed.is_empty() {
-                    self.errors.at(kind.span(), format!("unexpected section `{kind}` in {what}"));
+                    self.errors.at(
+                        kind.span(),
+                        format!("unexpected section `{kind}` in {what}"),
+                    );
                 } else {
                     self.errors.at(
                         kind.span(),
-                        format!("unknown section `{kind}` in {what}; expected one of: {}", allowed.join(", ")),
+                        format!(
+                            "unknown section `{kind}` in {what}; expected one of: {}",
+                            allowed.join(", ")
+                        ),
                     );
                 }
             }
@@ -126,7 +154,10 @@ impl Cx<'_> {
     }
 
     fn missing(&mut self, fields: &Fields, key: &str) {
-        self.errors.at(fields.span, format!("missing key `{key}` in {}", fields.what));
+        self.errors.at(
+            fields.span,
+            format!("missing key `{key}` in {}", fields.what),
+        );
     }
 
     /// A required or optional number.
@@ -153,7 +184,10 @@ impl Cx<'_> {
     fn check_positive(&mut self, value: &Num, expr: &Expr, key: &str) {
         match value {
             Num::Known(v) if !(v.is_finite() && *v > 0.0) => {
-                self.errors.spanned(expr, format!("`{key}` must be positive and finite, found {v}"));
+                self.errors.spanned(
+                    expr,
+                    format!("`{key}` must be positive and finite, found {v}"),
+                );
             }
             Num::Known(_) => {}
             Num::Expr(t) => self.checks.push(ConstCheck {
@@ -170,7 +204,10 @@ impl Cx<'_> {
         let value = self.number(fields, key, true)?;
         match &value {
             Num::Known(v) if !(v.is_finite() && *v >= 0.0) => {
-                self.errors.spanned(expr?, format!("`{key}` must be non-negative and finite, found {v}"));
+                self.errors.spanned(
+                    expr?,
+                    format!("`{key}` must be non-negative and finite, found {v}"),
+                );
             }
             Num::Known(_) => {}
             Num::Expr(t) => self.checks.push(ConstCheck {
@@ -200,7 +237,8 @@ impl Cx<'_> {
         let result = eval_number(expr);
         match result {
             Ok(Num::Known(v)) if !v.is_finite() => {
-                self.errors.spanned(expr, format!("`{key}` must be finite, found {v}"));
+                self.errors
+                    .spanned(expr, format!("`{key}` must be finite, found {v}"));
                 Err(())
             }
             Ok(n) => Ok(n),
@@ -219,26 +257,41 @@ impl Cx<'_> {
                 Ok(Vec2 { x: x?, y: y? })
             }
             other => {
-                self.errors.spanned(other, format!("`{key}` must be a point `(x, y)` in metres"));
+                self.errors
+                    .spanned(other, format!("`{key}` must be a point `(x, y)` in metres"));
                 Err(())
             }
         }
     }
 
     fn gravity(&mut self, fields: &Fields) -> Vec2 {
-        self.point(fields, "gravity", false)
-            .unwrap_or(Vec2 { x: Num::ZERO, y: Num::Known(DEFAULT_GRAVITY) })
+        self.point(fields, "gravity", false).unwrap_or(Vec2 {
+            x: Num::ZERO,
+            y: Num::Known(DEFAULT_GRAVITY),
+        })
     }
 
     fn track(&mut self, block: &Block, standalone: bool) -> Track {
-        let allowed: &[&str] = if standalone { &["links", "closure", "gravity"] } else { &["links", "closure"] };
+        let allowed: &[&str] = if standalone {
+            &["links", "closure", "gravity"]
+        } else {
+            &["links", "closure"]
+        };
         let fields = self.fields("track", block, allowed);
         let closure = self.closure(&fields);
         let count = self.link_count(&fields, &closure);
-        let gravity = if standalone { self.gravity(&fields) } else { Vec2::zero() };
+        let gravity = if standalone {
+            self.gravity(&fields)
+        } else {
+            Vec2::zero()
+        };
         let sections = self.sections("track", block, &["link"]);
         let links = self.links(&sections, count, block.span);
-        Track { links, closure, gravity }
+        Track {
+            links,
+            closure,
+            gravity,
+        }
     }
 
     fn link_count(&mut self, fields: &Fields, closure: &Closure) -> Option<usize> {
@@ -246,23 +299,37 @@ impl Cx<'_> {
             self.missing(fields, "links");
             return None;
         };
-        let Expr::Lit(syn::ExprLit { lit: Lit::Int(lit), .. }) = strip(expr) else {
-            self.errors.spanned(expr, "`links` must be an integer literal: it fixes the shape of the generated code");
+        let Expr::Lit(syn::ExprLit {
+            lit: Lit::Int(lit), ..
+        }) = strip(expr)
+        else {
+            self.errors.spanned(
+                expr,
+                "`links` must be an integer literal: it fixes the shape of the generated code",
+            );
             return None;
         };
         let Ok(n) = lit.base10_parse::<usize>() else {
-            self.errors.spanned(lit, "`links` must be a non-negative integer");
+            self.errors
+                .spanned(lit, "`links` must be a non-negative integer");
             return None;
         };
         let closed = !matches!(closure, Closure::Open);
         if n == 0 {
-            self.errors.at(lit.span(), "a track needs at least one link");
+            self.errors
+                .at(lit.span(), "a track needs at least one link");
             None
         } else if closed && n < 3 {
-            self.errors.at(lit.span(), format!("a closed track needs at least 3 links, found {n}"));
+            self.errors.at(
+                lit.span(),
+                format!("a closed track needs at least 3 links, found {n}"),
+            );
             None
         } else if n > MAX_LINKS {
-            self.errors.at(lit.span(), format!("at most {MAX_LINKS} links are supported, found {n}"));
+            self.errors.at(
+                lit.span(),
+                format!("at most {MAX_LINKS} links are supported, found {n}"),
+            );
             None
         } else {
             Some(n)
@@ -270,8 +337,11 @@ impl Cx<'_> {
     }
 
     fn closure(&mut self, fields: &Fields) -> Closure {
-        const EXPECTED: &str = "expected `open`, `partitioned` or `penalty { stiffness: …, damping: … }`";
-        let Some(expr) = fields.map.get("closure") else { return Closure::Partitioned };
+        const EXPECTED: &str =
+            "expected `open`, `partitioned` or `penalty { stiffness: …, damping: … }`";
+        let Some(expr) = fields.map.get("closure") else {
+            return Closure::Partitioned;
+        };
         match strip(expr) {
             Expr::Path(p) if p.path.is_ident("open") => Closure::Open,
             Expr::Path(p) if p.path.is_ident("partitioned") => Closure::Partitioned,
@@ -279,17 +349,23 @@ impl Cx<'_> {
                 let mut map = BTreeMap::new();
                 for f in &s.fields {
                     let Member::Named(key) = &f.member else {
-                        self.errors.at(f.member.span(), "expected `stiffness` or `damping`");
+                        self.errors
+                            .at(f.member.span(), "expected `stiffness` or `damping`");
                         continue;
                     };
                     let name = key.to_string();
                     if name != "stiffness" && name != "damping" {
                         self.errors.at(key.span(), format!("unknown key `{name}` in penalty; expected one of: stiffness, damping"));
                     } else if map.insert(name.clone(), &f.expr).is_some() {
-                        self.errors.at(key.span(), format!("duplicate key `{name}` in penalty"));
+                        self.errors
+                            .at(key.span(), format!("duplicate key `{name}` in penalty"));
                     }
                 }
-                let pf = Fields { what: "penalty", span: s.brace_token.span.join(), map };
+                let pf = Fields {
+                    what: "penalty",
+                    span: s.brace_token.span.join(),
+                    map,
+                };
                 let stiffness = self.positive(&pf, "stiffness", true);
                 let damping = self.non_negative(&pf, "damping");
                 Closure::Penalty {
@@ -310,7 +386,15 @@ impl Cx<'_> {
         let mut template: Option<Link> = None;
         let mut overrides = Vec::new();
         for entry in sections {
-            let Entry::Section { kind, selector, name, body } = entry else { continue };
+            let Entry::Section {
+                kind,
+                selector,
+                name,
+                body,
+            } = entry
+            else {
+                continue;
+            };
             if let Some(name) = name {
                 self.errors.at(name.span(), "a link section takes no name");
             }
@@ -320,14 +404,23 @@ impl Cx<'_> {
             match selector {
                 None => {
                     if template.is_some() {
-                        self.errors.at(kind.span(), "duplicate `link` template; use `link[i] { … }` to change some links");
+                        self.errors.at(
+                            kind.span(),
+                            "duplicate `link` template; use `link[i] { … }` to change some links",
+                        );
                     }
                     let mass = self.positive(&fields, "mass", true);
                     let inertia = self.positive(&fields, "inertia", true);
                     let u1 = self.point(&fields, "u1", true);
                     let u2 = self.point(&fields, "u2", true);
-                    if let (Some(mass), Some(inertia), Some(u1), Some(u2)) = (mass, inertia, u1, u2) {
-                        let link = Link { mass, inertia, u1, u2 };
+                    if let (Some(mass), Some(inertia), Some(u1), Some(u2)) = (mass, inertia, u1, u2)
+                    {
+                        let link = Link {
+                            mass,
+                            inertia,
+                            u1,
+                            u2,
+                        };
                         self.check_distinct_joints(&link, "the link template", body.span);
                         template.get_or_insert(link);
                     }
@@ -343,8 +436,15 @@ impl Cx<'_> {
             }
         }
         let (Some(template), Some(n)) = (template, count) else {
-            if count.is_some() && !sections.iter().any(|e| matches!(e, Entry::Section { selector: None, .. })) {
-                self.errors.at(span, "missing `link { mass: …, inertia: …, u1: (…), u2: (…) }` template in track");
+            if count.is_some()
+                && !sections
+                    .iter()
+                    .any(|e| matches!(e, Entry::Section { selector: None, .. }))
+            {
+                self.errors.at(
+                    span,
+                    "missing `link { mass: …, inertia: …, u1: (…), u2: (…) }` template in track",
+                );
             }
             return Vec::new();
         };
@@ -382,7 +482,10 @@ impl Cx<'_> {
         match (d.x.known(), d.y.known()) {
             (Some(x), Some(y)) => {
                 if x == 0.0 && y == 0.0 {
-                    self.errors.at(span, format!("{which}: its joint points `u1` and `u2` coincide"));
+                    self.errors.at(
+                        span,
+                        format!("{which}: its joint points `u1` and `u2` coincide"),
+                    );
                 }
             }
             _ => {
@@ -400,9 +503,14 @@ impl Cx<'_> {
     fn select(&mut self, sel: &Selector, n: usize) -> Vec<usize> {
         let mut out = Vec::new();
         for range in &sel.ranges {
-            let parse = |lit: &syn::LitInt| lit.base10_parse::<usize>().map_err(|e| syn::Error::new(lit.span(), e));
+            let parse = |lit: &syn::LitInt| {
+                lit.base10_parse::<usize>()
+                    .map_err(|e| syn::Error::new(lit.span(), e))
+            };
             let start = parse(&range.start);
-            let end = range.end.as_ref().map(|(inclusive, lit)| parse(lit).map(|e| if *inclusive { e } else { e.saturating_sub(1) }));
+            let end = range.end.as_ref().map(|(inclusive, lit)| {
+                parse(lit).map(|e| if *inclusive { e } else { e.saturating_sub(1) })
+            });
             let step = range.step.as_ref().map(parse);
             let (start, end, step) = match (start, end.transpose(), step.transpose()) {
                 (Ok(s), Ok(e), Ok(st)) => (s, e.unwrap_or(s), st.unwrap_or(1)),
@@ -414,16 +522,23 @@ impl Cx<'_> {
                 }
             };
             if start == 0 {
-                self.errors.at(range.start.span(), "links are numbered from 1");
+                self.errors
+                    .at(range.start.span(), "links are numbered from 1");
                 continue;
             }
             if end > n {
                 let lit = range.end.as_ref().map_or(&range.start, |(_, l)| l);
-                self.errors.at(lit.span(), format!("the track has {n} links; link {end} does not exist"));
+                self.errors.at(
+                    lit.span(),
+                    format!("the track has {n} links; link {end} does not exist"),
+                );
                 continue;
             }
             if step == 0 {
-                self.errors.at(range.step.as_ref().map_or(sel.span, |s| s.span()), "the step must be at least 1");
+                self.errors.at(
+                    range.step.as_ref().map_or(sel.span, |s| s.span()),
+                    "the step must be at least 1",
+                );
                 continue;
             }
             out.extend((start..=end).step_by(step).map(|i| i - 1));
@@ -443,9 +558,18 @@ impl Cx<'_> {
         let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
         let vehicle_name = name;
         for entry in sections {
-            let Entry::Section { kind, selector, name, body } = entry else { continue };
+            let Entry::Section {
+                kind,
+                selector,
+                name,
+                body,
+            } = entry
+            else {
+                continue;
+            };
             if let Some(sel) = selector {
-                self.errors.at(sel.span, format!("`{kind}` takes no link selector"));
+                self.errors
+                    .at(sel.span, format!("`{kind}` takes no link selector"));
             }
             let k = kind.to_string();
             match k.as_str() {
@@ -453,9 +577,14 @@ impl Cx<'_> {
                     if let Some(name) = name {
                         self.errors.at(name.span(), format!("`{k}` takes no name"));
                     }
-                    let slot_taken = if k == "chassis" { chassis.is_some() } else { track.is_some() };
+                    let slot_taken = if k == "chassis" {
+                        chassis.is_some()
+                    } else {
+                        track.is_some()
+                    };
                     if slot_taken {
-                        self.errors.at(kind.span(), format!("duplicate `{k}` section"));
+                        self.errors
+                            .at(kind.span(), format!("duplicate `{k}` section"));
                         continue;
                     }
                     if k == "chassis" {
@@ -467,7 +596,10 @@ impl Cx<'_> {
                 _ => {
                     let kind_ir = PartKind::from_keyword(&k).expect("filtered by sections()");
                     let Some(name) = name else {
-                        self.errors.at(kind.span(), format!("`{k}` needs a name, e.g. `{k} front {{ … }}`"));
+                        self.errors.at(
+                            kind.span(),
+                            format!("`{k}` needs a name, e.g. `{k} front {{ … }}`"),
+                        );
                         continue;
                     };
                     // Part names become body-index constants (`RW1`) and
@@ -476,7 +608,8 @@ impl Cx<'_> {
                     if upper == "FRAME" || upper == "CHASSIS" {
                         self.errors.at(name.span(), format!("`{name}` is reserved for the chassis frame; choose another part name"));
                     } else if part_names.insert(upper, name.clone()).is_some() {
-                        self.errors.at(name.span(), format!("duplicate part name `{name}`"));
+                        self.errors
+                            .at(name.span(), format!("duplicate part name `{name}`"));
                     }
                     if let Some(part) = self.part(kind_ir, name, body) {
                         parts.push(part);
@@ -485,18 +618,37 @@ impl Cx<'_> {
             }
         }
         if chassis.is_none() {
-            self.errors.at(vehicle_name.span(), format!("vehicle `{vehicle_name}` has no `chassis {{ mass: …, inertia: … }}` section"));
+            self.errors.at(
+                vehicle_name.span(),
+                format!(
+                    "vehicle `{vehicle_name}` has no `chassis {{ mass: …, inertia: … }}` section"
+                ),
+            );
         }
         if track.is_none() {
-            self.errors.at(vehicle_name.span(), format!("vehicle `{vehicle_name}` has no `track {{ … }}` section"));
+            self.errors.at(
+                vehicle_name.span(),
+                format!("vehicle `{vehicle_name}` has no `track {{ … }}` section"),
+            );
         }
-        let (chassis_mass, chassis_inertia, centroid) = chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
+        let (chassis_mass, chassis_inertia, centroid) =
+            chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
         for part in &mut parts {
             part.at = part.at.clone() - centroid.clone();
         }
-        let mut track = track.unwrap_or(Track { links: Vec::new(), closure: Closure::Open, gravity: Vec2::zero() });
+        let mut track = track.unwrap_or(Track {
+            links: Vec::new(),
+            closure: Closure::Open,
+            gravity: Vec2::zero(),
+        });
         track.gravity = gravity.clone();
-        Vehicle { gravity, chassis_mass, chassis_inertia, parts, track }
+        Vehicle {
+            gravity,
+            chassis_mass,
+            chassis_inertia,
+            parts,
+            track,
+        }
     }
 
     fn chassis(&mut self, block: &Block) -> (Num, Num, Vec2) {
@@ -504,7 +656,9 @@ impl Cx<'_> {
         self.sections("chassis", block, &[]);
         let mass = self.positive(&fields, "mass", true).unwrap_or(Num::ZERO);
         let inertia = self.positive(&fields, "inertia", true).unwrap_or(Num::ZERO);
-        let centroid = self.point(&fields, "centroid", false).unwrap_or(Vec2::zero());
+        let centroid = self
+            .point(&fields, "centroid", false)
+            .unwrap_or(Vec2::zero());
         (mass, inertia, centroid)
     }
 
@@ -520,8 +674,20 @@ impl Cx<'_> {
         let mass = self.positive(&fields, "mass", true);
         let inertia = self.positive(&fields, "inertia", true);
         let radius = self.positive(&fields, "radius", true);
-        let teeth = if kind == PartKind::Sprocket { self.teeth(&fields) } else { Some(0) };
-        Some(Part { name: name.clone(), kind, at: at?, mass: mass?, inertia: inertia?, radius: radius?, teeth: teeth? })
+        let teeth = if kind == PartKind::Sprocket {
+            self.teeth(&fields)
+        } else {
+            Some(0)
+        };
+        Some(Part {
+            name: name.clone(),
+            kind,
+            at: at?,
+            mass: mass?,
+            inertia: inertia?,
+            radius: radius?,
+            teeth: teeth?,
+        })
     }
 
     fn teeth(&mut self, fields: &Fields) -> Option<u32> {
@@ -530,15 +696,19 @@ impl Cx<'_> {
             return None;
         };
         match strip(expr) {
-            Expr::Lit(syn::ExprLit { lit: Lit::Int(lit), .. }) => match lit.base10_parse::<u32>() {
+            Expr::Lit(syn::ExprLit {
+                lit: Lit::Int(lit), ..
+            }) => match lit.base10_parse::<u32>() {
                 Ok(t) if t >= 3 => Some(t),
                 _ => {
-                    self.errors.at(lit.span(), "a sprocket needs at least 3 teeth");
+                    self.errors
+                        .at(lit.span(), "a sprocket needs at least 3 teeth");
                     None
                 }
             },
             other => {
-                self.errors.spanned(other, "`teeth` must be an integer literal");
+                self.errors
+                    .spanned(other, "`teeth` must be an integer literal");
                 None
             }
         }
@@ -558,9 +728,18 @@ fn strip(expr: &Expr) -> &Expr {
 fn eval_number(expr: &Expr) -> syn::Result<Num> {
     match strip(expr) {
         Expr::Lit(l) => match &l.lit {
-            Lit::Float(f) if matches!(f.suffix(), "" | "f64") => f.base10_parse::<f64>().map(Num::Known),
-            Lit::Int(i) if matches!(i.suffix(), "" | "f64") => i.base10_digits().parse::<f64>().map(Num::Known).map_err(|e| syn::Error::new(i.span(), e)),
-            Lit::Float(_) | Lit::Int(_) => Err(syn::Error::new(l.span(), "expected an `f64`; remove the suffix")),
+            Lit::Float(f) if matches!(f.suffix(), "" | "f64") => {
+                f.base10_parse::<f64>().map(Num::Known)
+            }
+            Lit::Int(i) if matches!(i.suffix(), "" | "f64") => i
+                .base10_digits()
+                .parse::<f64>()
+                .map(Num::Known)
+                .map_err(|e| syn::Error::new(i.span(), e)),
+            Lit::Float(_) | Lit::Int(_) => Err(syn::Error::new(
+                l.span(),
+                "expected an `f64`; remove the suffix",
+            )),
             _ => Err(syn::Error::new(l.span(), "expected a number")),
         },
         Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval_number(&u.expr)?),
@@ -579,14 +758,26 @@ fn eval_number(expr: &Expr) -> syn::Result<Num> {
                 BinOp::Sub(_) => Ok(l - r),
                 BinOp::Mul(_) => Ok(l * r),
                 BinOp::Div(_) => Ok(l / r),
-                _ => Err(syn::Error::new(b.op.span(), "only `+ - * /` may combine numbers")),
+                _ => Err(syn::Error::new(
+                    b.op.span(),
+                    "only `+ - * /` may combine numbers",
+                )),
             }
         }
-        e @ (Expr::Path(_) | Expr::Call(_) | Expr::MethodCall(_) | Expr::Field(_) | Expr::Index(_) | Expr::Const(_) | Expr::Block(_)) => {
+        e @ (Expr::Path(_)
+        | Expr::Call(_)
+        | Expr::MethodCall(_)
+        | Expr::Field(_)
+        | Expr::Index(_)
+        | Expr::Const(_)
+        | Expr::Block(_)) => {
             let tokens = e.to_token_stream();
             let span = e.span();
-            Ok(Num::Expr(quote_spanned!(span=> (#tokens) as f64)))
+            Ok(Num::Expr(quote_spanned!(span=> #tokens)))
         }
-        e => Err(syn::Error::new(e.span(), "expected a number (a literal or a constant expression)")),
+        e => Err(syn::Error::new(
+            e.span(),
+            "expected a number (a literal or a constant expression)",
+        )),
     }
 }

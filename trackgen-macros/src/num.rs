@@ -10,7 +10,7 @@
 use std::ops::{Add, Mul, Neg, Sub};
 
 use proc_macro2::{Literal, Span, TokenStream};
-use quote::{quote, quote_spanned, ToTokens};
+use quote::{ToTokens, quote, quote_spanned};
 
 /// A compile-time `f64`.
 #[derive(Clone, Debug)]
@@ -58,7 +58,11 @@ impl Num {
 /// An `f64` literal that reads back to exactly `v`.
 pub fn literal(v: f64) -> TokenStream {
     let lit = Literal::f64_unsuffixed(v.abs());
-    if v.is_sign_negative() { quote!(-#lit) } else { quote!(#lit) }
+    if v.is_sign_negative() {
+        quote!(-#lit)
+    } else {
+        quote!(#lit)
+    }
 }
 
 impl ToTokens for Num {
@@ -123,7 +127,10 @@ pub struct Vec2 {
 
 impl Vec2 {
     pub fn zero() -> Vec2 {
-        Vec2 { x: Num::ZERO, y: Num::ZERO }
+        Vec2 {
+            x: Num::ZERO,
+            y: Num::ZERO,
+        }
     }
 
     pub fn is_zero(&self) -> bool {
@@ -131,7 +138,10 @@ impl Vec2 {
     }
 
     pub fn scale(&self, k: &Num) -> Vec2 {
-        Vec2 { x: self.x.clone() * k.clone(), y: self.y.clone() * k.clone() }
+        Vec2 {
+            x: self.x.clone() * k.clone(),
+            y: self.y.clone() * k.clone(),
+        }
     }
 
     pub fn dot(&self, other: &Vec2) -> Num {
@@ -146,21 +156,30 @@ impl Vec2 {
 impl Add for Vec2 {
     type Output = Vec2;
     fn add(self, rhs: Vec2) -> Vec2 {
-        Vec2 { x: self.x + rhs.x, y: self.y + rhs.y }
+        Vec2 {
+            x: self.x + rhs.x,
+            y: self.y + rhs.y,
+        }
     }
 }
 
 impl Sub for Vec2 {
     type Output = Vec2;
     fn sub(self, rhs: Vec2) -> Vec2 {
-        Vec2 { x: self.x - rhs.x, y: self.y - rhs.y }
+        Vec2 {
+            x: self.x - rhs.x,
+            y: self.y - rhs.y,
+        }
     }
 }
 
 impl Neg for Vec2 {
     type Output = Vec2;
     fn neg(self) -> Vec2 {
-        Vec2 { x: -self.x, y: -self.y }
+        Vec2 {
+            x: -self.x,
+            y: -self.y,
+        }
     }
 }
 

@@ -19,9 +19,18 @@ pub fn vehicle(item: &Item, vehicle: &Vehicle) -> TokenStream {
     let attrs = &item.attrs;
     let track_name = format_ident!("{}Track", name);
     let chassis_name = format_ident!("{}Chassis", name);
-    let docs = default_docs(attrs, &format!("The vehicle `{name}`, compiled by `trackgen::model!`."));
+    let docs = default_docs(
+        attrs,
+        &format!("The vehicle `{name}`, compiled by `trackgen::model!`."),
+    );
     let track_doc = format!("The track of [`{name}`].");
-    let track = track_type(&[], quote!(#[doc = #track_doc]), vis, &track_name, &vehicle.track);
+    let track = track_type(
+        &[],
+        quote!(#[doc = #track_doc]),
+        vis,
+        &track_name,
+        &vehicle.track,
+    );
     let chassis = chassis_type(vis, name, &chassis_name, vehicle);
     quote! {
         #(#attrs)*
@@ -58,15 +67,27 @@ fn chassis_tree(vehicle: &Vehicle) -> Tree {
         at_parent: p.at.clone(),
         at_self: Vec2::zero(),
     });
-    Tree::new(std::iter::once(frame).chain(parts).collect(), vehicle.gravity.clone(), None)
+    Tree::new(
+        std::iter::once(frame).chain(parts).collect(),
+        vehicle.gravity.clone(),
+        None,
+    )
 }
 
-fn chassis_type(vis: &syn::Visibility, vehicle_name: &Ident, name: &Ident, vehicle: &Vehicle) -> TokenStream {
+fn chassis_type(
+    vis: &syn::Visibility,
+    vehicle_name: &Ident,
+    name: &Ident,
+    vehicle: &Vehicle,
+) -> TokenStream {
     let rt = runtime();
     let tree = chassis_tree(vehicle);
     let dof = tree.len() + 2;
-    let recursive = super::recursive::recursive_impl(name, &tree, quote!(::core::option::Option::None), None);
-    let doc = format!("The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it.");
+    let recursive =
+        super::recursive::recursive_impl(name, &tree, quote!(::core::option::Option::None), None);
+    let doc = format!(
+        "The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it."
+    );
     let parts = vehicle.parts.iter().enumerate().map(|(i, p)| {
         let label = p.name.to_string();
         let kind = match p.kind {
@@ -86,7 +107,11 @@ fn chassis_type(vis: &syn::Visibility, vehicle_name: &Ident, name: &Ident, vehic
     });
     let indices = vehicle.parts.iter().enumerate().map(|(i, p)| {
         let konst = format_ident!("{}", p.name.to_string().to_uppercase());
-        let doc = format!("Body index of the {} `{}`.", p.kind.keyword().replace('_', " "), p.name);
+        let doc = format!(
+            "Body index of the {} `{}`.",
+            p.kind.keyword().replace('_', " "),
+            p.name
+        );
         let body = i + 1;
         quote! { #[doc = #doc] pub const #konst: usize = #body; }
     });

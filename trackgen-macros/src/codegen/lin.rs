@@ -21,7 +21,9 @@ impl Lin {
 
     /// A run-time value, with coefficient 1.
     pub fn var(var: TokenStream) -> Lin {
-        Lin { terms: vec![(Num::Known(1.0), var)] }
+        Lin {
+            terms: vec![(Num::Known(1.0), var)],
+        }
     }
 
     /// A compile-time constant.
@@ -66,7 +68,13 @@ impl Lin {
             terms: self
                 .terms
                 .into_iter()
-                .map(|(c, v)| if v.is_empty() { (c, factor.clone()) } else { (c, quote!(#v * #factor)) })
+                .map(|(c, v)| {
+                    if v.is_empty() {
+                        (c, factor.clone())
+                    } else {
+                        (c, quote!(#v * #factor))
+                    }
+                })
                 .collect(),
         }
     }
@@ -75,10 +83,14 @@ impl Lin {
         let mut out = TokenStream::new();
         for (i, (coef, var)) in self.terms.iter().enumerate() {
             let negative = coef.known().is_some_and(|c| c.is_sign_negative());
-            let magnitude = if negative { -coef.clone() } else { coef.clone() };
+            let magnitude = if negative {
+                -coef.clone()
+            } else {
+                coef.clone()
+            };
             let body = match (magnitude.known(), var.is_empty()) {
                 (_, true) => quote!(#magnitude),
-                (Some(m), false) if m == 1.0 => var.clone(),
+                (Some(1.0), false) => var.clone(),
                 _ => quote!(#magnitude * #var),
             };
             out.extend(match (i, negative) {
@@ -108,27 +120,45 @@ impl LinVec {
     /// `{prefix}y_{tag}`.
     pub fn vars(names: &(Ident, Ident)) -> LinVec {
         let (x, y) = names;
-        LinVec { x: Lin::var(quote!(#x)), y: Lin::var(quote!(#y)) }
+        LinVec {
+            x: Lin::var(quote!(#x)),
+            y: Lin::var(quote!(#y)),
+        }
     }
 
     pub fn constant(v: &Vec2) -> LinVec {
-        LinVec { x: Lin::constant(v.x.clone()), y: Lin::constant(v.y.clone()) }
+        LinVec {
+            x: Lin::constant(v.x.clone()),
+            y: Lin::constant(v.y.clone()),
+        }
     }
 
     pub fn plus(self, o: LinVec) -> LinVec {
-        LinVec { x: self.x.plus(o.x), y: self.y.plus(o.y) }
+        LinVec {
+            x: self.x.plus(o.x),
+            y: self.y.plus(o.y),
+        }
     }
 
     pub fn minus(self, o: LinVec) -> LinVec {
-        LinVec { x: self.x.minus(o.x), y: self.y.minus(o.y) }
+        LinVec {
+            x: self.x.minus(o.x),
+            y: self.y.minus(o.y),
+        }
     }
 
     pub fn scaled(self, k: &Num) -> LinVec {
-        LinVec { x: self.x.scaled(k), y: self.y.scaled(k) }
+        LinVec {
+            x: self.x.scaled(k),
+            y: self.y.scaled(k),
+        }
     }
 
     pub fn times(self, factor: &TokenStream) -> LinVec {
-        LinVec { x: self.x.times(factor), y: self.y.times(factor) }
+        LinVec {
+            x: self.x.times(factor),
+            y: self.y.times(factor),
+        }
     }
 
     /// `let px_tag = …; let py_tag = …;`
@@ -148,7 +178,10 @@ pub struct Trig {
 
 impl Trig {
     pub fn new(tag: &str) -> Trig {
-        Trig { s: format_ident!("s_{}", tag), c: format_ident!("c_{}", tag) }
+        Trig {
+            s: format_ident!("s_{}", tag),
+            c: format_ident!("c_{}", tag),
+        }
     }
 
     /// `A(θ) v` (spec §0).
@@ -172,5 +205,8 @@ impl Trig {
 
 /// The pair of locals `{prefix}x_{tag}`, `{prefix}y_{tag}`.
 pub fn pair(prefix: &str, tag: &str) -> (Ident, Ident) {
-    (format_ident!("{}x_{}", prefix, tag), format_ident!("{}y_{}", prefix, tag))
+    (
+        format_ident!("{}x_{}", prefix, tag),
+        format_ident!("{}y_{}", prefix, tag),
+    )
 }

@@ -4,12 +4,12 @@
 //! `::trackgen::__private`, never a bare `nalgebra::`, so a user needs
 //! nothing but the `trackgen` dependency.
 
-mod lin;
-mod tree;
-mod recursive;
-mod track;
 mod chassis;
+mod lin;
+mod recursive;
 mod stub;
+mod track;
+mod tree;
 
 use proc_macro2::TokenStream;
 use quote::quote;

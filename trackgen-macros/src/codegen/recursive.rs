@@ -9,7 +9,12 @@ use super::tree::Tree;
 
 /// `impl RecursiveModel<DOF> for name`. `extra_potential` adds to the
 /// gravity potential (the penalty spring's energy), with the trig bound.
-pub fn recursive_impl(name: &Ident, tree: &Tree, loop_joint: TokenStream, extra_potential: Option<TokenStream>) -> TokenStream {
+pub fn recursive_impl(
+    name: &Ident,
+    tree: &Tree,
+    loop_joint: TokenStream,
+    extra_potential: Option<TokenStream>,
+) -> TokenStream {
     let rt = runtime();
     let n = tree.len();
     let dof = n + 2;

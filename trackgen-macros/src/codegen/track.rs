@@ -13,19 +13,33 @@ use crate::num::Vec2;
 
 /// The standalone track item.
 pub fn track(item: &Item, track: &Track) -> TokenStream {
-    let docs = default_docs(&item.attrs, &format!("A {}-link track, compiled by `trackgen::model!`.", track.links.len()));
+    let docs = default_docs(
+        &item.attrs,
+        &format!(
+            "A {}-link track, compiled by `trackgen::model!`.",
+            track.links.len()
+        ),
+    );
     track_type(&item.attrs, docs, &item.vis, &item.name, track)
 }
 
 /// Outer attributes, plus a doc line if the user gave none (generated
 /// public items are documented).
 pub fn default_docs(attrs: &[Attribute], doc: &str) -> TokenStream {
-    if attrs.iter().any(|a| a.path().is_ident("doc")) { TokenStream::new() } else { quote!(#[doc = #doc]) }
+    if attrs.iter().any(|a| a.path().is_ident("doc")) {
+        TokenStream::new()
+    } else {
+        quote!(#[doc = #doc])
+    }
 }
 
 /// `d̄ʲ = ū2ʲ − ū1ʲ` for every link.
 fn spans(track: &Track) -> Vec<Vec2> {
-    track.links.iter().map(|l| l.u2.clone() - l.u1.clone()).collect()
+    track
+        .links
+        .iter()
+        .map(|l| l.u2.clone() - l.u1.clone())
+        .collect()
 }
 
 /// The chain as a tree: link `i` hangs from link `i − 1` by `ū1ⁱ` at
@@ -40,20 +54,36 @@ fn chain(track: &Track) -> Tree {
             mass: link.mass.clone(),
             inertia: link.inertia.clone(),
             parent: i.checked_sub(1),
-            at_parent: if i == 0 { Vec2::zero() } else { track.links[i - 1].u2.clone() },
-            at_self: if i == 0 { Vec2::zero() } else { link.u1.clone() },
+            at_parent: if i == 0 {
+                Vec2::zero()
+            } else {
+                track.links[i - 1].u2.clone()
+            },
+            at_self: if i == 0 {
+                Vec2::zero()
+            } else {
+                link.u1.clone()
+            },
         })
         .collect();
     let penalty = match &track.closure {
-        Closure::Penalty { stiffness, damping } => {
-            Some(Penalty { stiffness: stiffness.clone(), damping: damping.clone(), spans: spans(track) })
-        }
+        Closure::Penalty { stiffness, damping } => Some(Penalty {
+            stiffness: stiffness.clone(),
+            damping: damping.clone(),
+            spans: spans(track),
+        }),
         _ => None,
     };
     Tree::new(bodies, track.gravity.clone(), penalty)
 }
 
-pub fn track_type(attrs: &[Attribute], docs: TokenStream, vis: &Visibility, name: &Ident, track: &Track) -> TokenStream {
+pub fn track_type(
+    attrs: &[Attribute],
+    docs: TokenStream,
+    vis: &Visibility,
+    name: &Ident,
+    track: &Track,
+) -> TokenStream {
     let rt = runtime();
     let tree = chain(track);
     let n = tree.len();
@@ -74,7 +104,8 @@ pub fn track_type(attrs: &[Attribute], docs: TokenStream, vis: &Visibility, name
             last_u2: #rt::nalgebra::Vector2::new(#lx, #ly),
         })
     };
-    let recursive = super::recursive::recursive_impl(name, &tree, loop_joint, penalty_energy(track, &tree));
+    let recursive =
+        super::recursive::recursive_impl(name, &tree, loop_joint, penalty_energy(track, &tree));
     let closure_fns = closure_impl(&tree, track);
     let links_doc = format!("Number of links, `{n}`.");
     quote! {
@@ -100,10 +131,14 @@ pub fn track_type(attrs: &[Attribute], docs: TokenStream, vis: &Visibility, name
 
 /// `½ k |C|²` for a penalty-closed track, with positions' trig bound.
 fn penalty_energy(track: &Track, tree: &Tree) -> Option<TokenStream> {
-    let Closure::Penalty { stiffness, .. } = &track.closure else { return None };
+    let Closure::Penalty { stiffness, .. } = &track.closure else {
+        return None;
+    };
     let gap = gap(tree, track);
     let (x, y) = (gap.x.tokens(), gap.y.tokens());
-    Some(quote! {{ let gap_x = #x; let gap_y = #y; 0.5 * #stiffness * (gap_x * gap_x + gap_y * gap_y) }})
+    Some(
+        quote! {{ let gap_x = #x; let gap_y = #y; 0.5 * #stiffness * (gap_x * gap_x + gap_y * gap_y) }},
+    )
 }
 
 /// `C = Σ Aʲ d̄ʲ` (spec §2).
@@ -111,7 +146,9 @@ fn gap(tree: &Tree, track: &Track) -> LinVec {
     spans(track)
         .iter()
         .enumerate()
-        .fold(LinVec::zero(), |acc, (j, d)| acc.plus(Trig::new(&tree.bodies[j].tag).rotate(d)))
+        .fold(LinVec::zero(), |acc, (j, d)| {
+            acc.plus(Trig::new(&tree.bodies[j].tag).rotate(d))
+        })
 }
 
 fn closure_impl(tree: &Tree, track: &Track) -> TokenStream {

@@ -22,7 +22,7 @@
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
-use super::lin::{pair, Lin, LinVec, Trig};
+use super::lin::{Lin, LinVec, Trig, pair};
 use crate::num::{Num, Vec2};
 
 /// One body of a tree to generate.
@@ -70,7 +70,15 @@ impl Tree {
         let mut subtree_mass = vec![Num::ZERO; n];
         let mut moment = vec![Vec2::zero(); n];
         let mut diagonal = vec![Num::ZERO; n];
-        let mut tree = Tree { bodies, gravity, penalty, children, subtree_mass: Vec::new(), moment: Vec::new(), diagonal: Vec::new() };
+        let mut tree = Tree {
+            bodies,
+            gravity,
+            penalty,
+            children,
+            subtree_mass: Vec::new(),
+            moment: Vec::new(),
+            diagonal: Vec::new(),
+        };
         for b in (0..n).rev() {
             let body = &tree.bodies[b];
             let mut s = body.mass.clone();
@@ -149,14 +157,23 @@ impl Tree {
 
     /// A top-down recursion `xᵇ = xᵖ + step(p, b)`, root value given; binds
     /// `{prefix}x_b`, `{prefix}y_b`.
-    fn top_down(&self, prefix: &str, root: LinVec, step: impl Fn(usize, usize) -> LinVec) -> TokenStream {
+    fn top_down(
+        &self,
+        prefix: &str,
+        root: LinVec,
+        step: impl Fn(usize, usize) -> LinVec,
+    ) -> TokenStream {
         let mut out = TokenStream::new();
         for (b, body) in self.bodies.iter().enumerate() {
             let value = match body.parent {
                 None => root.clone(),
                 Some(p) => {
                     let parent = LinVec::vars(&pair(prefix, &self.bodies[p].tag));
-                    let parent = if self.is_zero_var(prefix, p) { LinVec::zero() } else { parent };
+                    let parent = if self.is_zero_var(prefix, p) {
+                        LinVec::zero()
+                    } else {
+                        parent
+                    };
                     parent.plus(step(p, b))
                 }
             };
@@ -172,27 +189,55 @@ impl Tree {
 
     /// Positions, eq. (4) / (8): binds `rx_b`, `ry_b`.
     pub fn positions(&self) -> TokenStream {
-        self.top_down("r", LinVec { x: Lin::var(quote!(q[0])), y: Lin::var(quote!(q[1])) }, |p, b| {
-            self.trig(p).rotate(&self.bodies[b].at_parent).minus(self.trig(b).rotate(&self.bodies[b].at_self))
-        })
+        self.top_down(
+            "r",
+            LinVec {
+                x: Lin::var(quote!(q[0])),
+                y: Lin::var(quote!(q[1])),
+            },
+            |p, b| {
+                self.trig(p)
+                    .rotate(&self.bodies[b].at_parent)
+                    .minus(self.trig(b).rotate(&self.bodies[b].at_self))
+            },
+        )
     }
 
     /// Velocities, the structured product `H̄₁ H̄ₙ q̇_i` of eq. (7): binds
     /// `vx_b`, `vy_b`.
     pub fn velocities(&self) -> TokenStream {
-        self.top_down("v", LinVec { x: Lin::var(quote!(qd[0])), y: Lin::var(quote!(qd[1])) }, |p, b| {
-            let from_parent = self.trig(p).rotate_derivative(&self.bodies[b].at_parent).times(&self.w(p));
-            let own = self.trig(b).rotate_derivative(&self.bodies[b].at_self).times(&self.w(b));
-            from_parent.minus(own)
-        })
+        self.top_down(
+            "v",
+            LinVec {
+                x: Lin::var(quote!(qd[0])),
+                y: Lin::var(quote!(qd[1])),
+            },
+            |p, b| {
+                let from_parent = self
+                    .trig(p)
+                    .rotate_derivative(&self.bodies[b].at_parent)
+                    .times(&self.w(p));
+                let own = self
+                    .trig(b)
+                    .rotate_derivative(&self.bodies[b].at_self)
+                    .times(&self.w(b));
+                from_parent.minus(own)
+            },
+        )
     }
 
     /// `γ_R`, eq. (14): `γᵇ = γᵖ − Aᵖ ū_p ωₚ² + Aᵇ ū_b ωᵇ²`; binds `gx_b`,
     /// `gy_b` (the root's is zero).
     pub fn velocity_terms(&self) -> TokenStream {
         self.top_down("g", LinVec::zero(), |p, b| {
-            let from_parent = self.trig(p).rotate(&self.bodies[b].at_parent).times(&self.ww(p));
-            let own = self.trig(b).rotate(&self.bodies[b].at_self).times(&self.ww(b));
+            let from_parent = self
+                .trig(p)
+                .rotate(&self.bodies[b].at_parent)
+                .times(&self.ww(p));
+            let own = self
+                .trig(b)
+                .rotate(&self.bodies[b].at_self)
+                .times(&self.ww(b));
             own.minus(from_parent)
         })
     }
@@ -207,7 +252,10 @@ impl Tree {
         if self.children[b].len() == 1 {
             pair("b", &self.bodies[b].tag)
         } else {
-            pair("b", &format!("{}_{}", self.bodies[b].tag, self.bodies[c].tag))
+            pair(
+                "b",
+                &format!("{}_{}", self.bodies[b].tag, self.bodies[c].tag),
+            )
         }
     }
 
@@ -219,11 +267,19 @@ impl Tree {
             for &c in &self.children[b] {
                 let lever = self.lever(b, c);
                 if !lever.is_zero() {
-                    out.extend(self.trig(b).rotate_derivative(&lever).bind(&self.lever_names(b, c)));
+                    out.extend(
+                        self.trig(b)
+                            .rotate_derivative(&lever)
+                            .bind(&self.lever_names(b, c)),
+                    );
                 }
             }
             if with_moments && !self.moment[b].is_zero() {
-                out.extend(self.trig(b).rotate_derivative(&self.moment[b]).bind(&pair("e", &self.bodies[b].tag)));
+                out.extend(
+                    self.trig(b)
+                        .rotate_derivative(&self.moment[b])
+                        .bind(&pair("e", &self.bodies[b].tag)),
+                );
             }
         }
         out
@@ -290,7 +346,10 @@ impl Tree {
 
     /// Whether body `b` hangs from body `b − 1`, for every `b`.
     fn is_chain(&self) -> bool {
-        self.bodies.iter().enumerate().all(|(b, body)| body.parent == b.checked_sub(1))
+        self.bodies
+            .iter()
+            .enumerate()
+            .all(|(b, body)| body.parent == b.checked_sub(1))
     }
 
     /// A chain's `M_θjθk = b_j · e_k` (j < k) is an outer product of two
@@ -303,9 +362,10 @@ impl Tree {
             Some((x, y)) => quote!((#x, #y)),
             None => quote!((0.0, 0.0)),
         };
-        let levers = (0..n - 1).map(|j| vars(self.lever_var(j, j + 1).map(|_| self.lever_names(j, j + 1))));
-        let moments =
-            (1..n).map(|k| vars((!self.moment[k].is_zero()).then(|| pair("e", &self.bodies[k].tag))));
+        let levers =
+            (0..n - 1).map(|j| vars(self.lever_var(j, j + 1).map(|_| self.lever_names(j, j + 1))));
+        let moments = (1..n)
+            .map(|k| vars((!self.moment[k].is_zero()).then(|| pair("e", &self.bodies[k].tag))));
         quote! {
             let levers: [(f64, f64); #n - 1] = [#(#levers),*];
             let moments: [(f64, f64); #n - 1] = [#(#moments),*];
@@ -331,10 +391,19 @@ impl Tree {
         out.extend(self.lever_bindings(false));
         for (b, body) in self.bodies.iter().enumerate() {
             let (gx, gy) = pair("g", &body.tag);
-            let g = if body.parent.is_none() { LinVec::zero() } else { LinVec::vars(&(gx, gy)) };
+            let g = if body.parent.is_none() {
+                LinVec::zero()
+            } else {
+                LinVec::vars(&(gx, gy))
+            };
             let i = b;
-            let applied = LinVec { x: Lin::var(quote!(loads[#i].force.x)), y: Lin::var(quote!(loads[#i].force.y)) };
-            let f = LinVec::constant(&self.gravity.scale(&body.mass)).minus(g.scaled(&body.mass)).plus(applied);
+            let applied = LinVec {
+                x: Lin::var(quote!(loads[#i].force.x)),
+                y: Lin::var(quote!(loads[#i].force.y)),
+            };
+            let f = LinVec::constant(&self.gravity.scale(&body.mass))
+                .minus(g.scaled(&body.mass))
+                .plus(applied);
             out.extend(f.bind(&pair("f", &body.tag)));
         }
         for b in (0..n).rev() {
@@ -414,8 +483,14 @@ impl Tree {
         for body in &self.bodies {
             let (rx, ry) = pair("r", &body.tag);
             lin = lin
-                .minus(Lin::term(body.mass.clone() * self.gravity.x.clone(), quote!(#rx)))
-                .minus(Lin::term(body.mass.clone() * self.gravity.y.clone(), quote!(#ry)));
+                .minus(Lin::term(
+                    body.mass.clone() * self.gravity.x.clone(),
+                    quote!(#rx),
+                ))
+                .minus(Lin::term(
+                    body.mass.clone() * self.gravity.y.clone(),
+                    quote!(#ry),
+                ));
         }
         lin.tokens()
     }

@@ -15,7 +15,7 @@
 use proc_macro2::Span;
 use syn::parse::{Parse, ParseStream};
 use syn::punctuated::Punctuated;
-use syn::{braced, bracketed, Attribute, Expr, Ident, LitInt, Token, Visibility};
+use syn::{Attribute, Expr, Ident, LitInt, Token, Visibility, braced, bracketed};
 
 mod kw {
     syn::custom_keyword!(by);
@@ -46,7 +46,12 @@ pub enum Entry {
     /// `key: value`.
     Field { key: Ident, value: Expr },
     /// `kind[selector] name { … }`.
-    Section { kind: Ident, selector: Option<Selector>, name: Option<Ident>, body: Block },
+    Section {
+        kind: Ident,
+        selector: Option<Selector>,
+        name: Option<Ident>,
+        body: Block,
+    },
 }
 
 /// `[1, 3..=9 by 2]`: 1-based indices.
@@ -78,11 +83,20 @@ impl Parse for ItemAst {
         let vis = input.parse()?;
         let kind: Ident = input.parse()?;
         if kind != "track" && kind != "vehicle" {
-            return Err(syn::Error::new(kind.span(), "expected `track` or `vehicle`"));
+            return Err(syn::Error::new(
+                kind.span(),
+                "expected `track` or `vehicle`",
+            ));
         }
         let name = input.parse()?;
         let body = input.parse()?;
-        Ok(ItemAst { attrs, vis, kind, name, body })
+        Ok(ItemAst {
+            attrs,
+            vis,
+            kind,
+            name,
+            body,
+        })
     }
 }
 
@@ -102,7 +116,10 @@ impl Parse for Block {
                 }
             }
         }
-        Ok(Block { span: brace.span.join(), entries })
+        Ok(Block {
+            span: brace.span.join(),
+            entries,
+        })
     }
 }
 
@@ -111,14 +128,30 @@ impl Parse for Entry {
         let head: Ident = input.parse()?;
         if input.peek(Token![:]) && !input.peek(Token![::]) {
             input.parse::<Token![:]>()?;
-            return Ok(Entry::Field { key: head, value: input.parse()? });
+            return Ok(Entry::Field {
+                key: head,
+                value: input.parse()?,
+            });
         }
-        let selector = if input.peek(syn::token::Bracket) { Some(input.parse()?) } else { None };
-        let name = if input.peek(Ident) { Some(input.parse()?) } else { None };
+        let selector = if input.peek(syn::token::Bracket) {
+            Some(input.parse()?)
+        } else {
+            None
+        };
+        let name = if input.peek(Ident) {
+            Some(input.parse()?)
+        } else {
+            None
+        };
         if !input.peek(syn::token::Brace) {
             return Err(input.error(format!("expected `:` or `{{ … }}` after `{head}`")));
         }
-        Ok(Entry::Section { kind: head, selector, name, body: input.parse()? })
+        Ok(Entry::Section {
+            kind: head,
+            selector,
+            name,
+            body: input.parse()?,
+        })
     }
 }
 
@@ -128,9 +161,15 @@ impl Parse for Selector {
         let bracket = bracketed!(content in input);
         let ranges = Punctuated::<IndexRange, Token![,]>::parse_terminated(&content)?;
         if ranges.is_empty() {
-            return Err(syn::Error::new(bracket.span.join(), "expected link numbers, e.g. `[3]` or `[2..=64 by 2]`"));
+            return Err(syn::Error::new(
+                bracket.span.join(),
+                "expected link numbers, e.g. `[3]` or `[2..=64 by 2]`",
+            ));
         }
-        Ok(Selector { span: bracket.span.join(), ranges: ranges.into_iter().collect() })
+        Ok(Selector {
+            span: bracket.span.join(),
+            ranges: ranges.into_iter().collect(),
+        })
     }
 }
 

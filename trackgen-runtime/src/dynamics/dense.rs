@@ -1,5 +1,7 @@
 use nalgebra::allocator::Allocator;
-use nalgebra::{Cholesky, DefaultAllocator, Dim, Matrix, OMatrix, OVector, Storage, U1, U2, Vector2};
+use nalgebra::{
+    Cholesky, DefaultAllocator, Dim, Matrix, OMatrix, OVector, Storage, U1, U2, Vector2,
+};
 
 use crate::DynamicsError;
 
@@ -21,7 +23,10 @@ where
     DefaultAllocator: Allocator<D, D> + Allocator<D>,
 {
     let chol = Cholesky::new(mass).ok_or(DynamicsError::MassMatrixNotPositiveDefinite)?;
-    Ok(Accelerations { qdd: chol.solve(forces), multipliers: None })
+    Ok(Accelerations {
+        qdd: chol.solve(forces),
+        multipliers: None,
+    })
 }
 
 pub(crate) fn solve_closed<D: Dim, S: Storage<f64, U2, D>>(
@@ -31,7 +36,8 @@ pub(crate) fn solve_closed<D: Dim, S: Storage<f64, U2, D>>(
     gamma_c: &Vector2<f64>,
 ) -> Result<Accelerations<OVector<f64, D>>, DynamicsError>
 where
-    DefaultAllocator: Allocator<D, D> + Allocator<D> + Allocator<D, U2> + Allocator<U2, D> + Allocator<U1, D>,
+    DefaultAllocator:
+        Allocator<D, D> + Allocator<D> + Allocator<D, U2> + Allocator<U2, D> + Allocator<U1, D>,
 {
     let chol = Cholesky::new(mass).ok_or(DynamicsError::MassMatrixNotPositiveDefinite)?;
     let y = chol.solve(forces);
@@ -42,5 +48,8 @@ where
         .cholesky()
         .map(|c| c.solve(&rhs))
         .ok_or(DynamicsError::SingularClosure)?;
-    Ok(Accelerations { qdd: y - x * lambda, multipliers: Some(lambda) })
+    Ok(Accelerations {
+        qdd: y - x * lambda,
+        multipliers: Some(lambda),
+    })
 }

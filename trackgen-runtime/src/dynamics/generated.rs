@@ -1,8 +1,8 @@
 use nalgebra::{SMatrix, SVector};
 
-use super::dense::{solve_closed, solve_open, Accelerations};
-use crate::model::{BodyLoad, RecursiveModel, TrackModel};
+use super::dense::{Accelerations, solve_closed, solve_open};
 use crate::DynamicsError;
+use crate::model::{BodyLoad, RecursiveModel, TrackModel};
 
 /// Forward dynamics of a body tree with no constraints (an open chain, a
 /// penalty-closed track, a chassis): solves `M_i q̈_i = Q_i`.
@@ -27,7 +27,12 @@ pub fn forward_dynamics<M: TrackModel<D>, const D: usize>(
 ) -> Result<Accelerations<SVector<f64, D>>, DynamicsError> {
     let (mass, forces) = equations(model, q, qd, loads)?;
     if M::CLOSURE.is_constrained() {
-        solve_closed(mass, &forces, &model.closure_jacobian(q), &model.closure_gamma(q, qd))
+        solve_closed(
+            mass,
+            &forces,
+            &model.closure_jacobian(q),
+            &model.closure_gamma(q, qd),
+        )
     } else {
         solve_open(mass, &forces)
     }
@@ -41,7 +46,11 @@ fn equations<M: RecursiveModel<D>, const D: usize>(
     loads: &[BodyLoad],
 ) -> Result<(SMatrix<f64, D, D>, SVector<f64, D>), DynamicsError> {
     if !loads.is_empty() && loads.len() != M::BODIES {
-        return Err(DynamicsError::WrongLength { what: "loads", expected: M::BODIES, got: loads.len() });
+        return Err(DynamicsError::WrongLength {
+            what: "loads",
+            expected: M::BODIES,
+            got: loads.len(),
+        });
     }
     let mut mass = SMatrix::<f64, D, D>::zeros();
     let mut forces = SVector::<f64, D>::zeros();

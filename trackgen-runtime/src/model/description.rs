@@ -89,17 +89,27 @@ impl TreeDescription {
                 mass,
                 inertia,
                 parent: i.checked_sub(1),
-                at_parent: if i == 0 { Vector2::zeros() } else { links[i - 1].3 },
+                at_parent: if i == 0 {
+                    Vector2::zeros()
+                } else {
+                    links[i - 1].3
+                },
                 at_self: if i == 0 { Vector2::zeros() } else { u1 },
             })
             .collect();
         let loop_joint = match (links.first(), links.last()) {
-            (Some(first), Some(last)) => {
-                Some(LoopJoint { closure, first_u1: first.2, last_u2: last.3 })
-            }
+            (Some(first), Some(last)) => Some(LoopJoint {
+                closure,
+                first_u1: first.2,
+                last_u2: last.3,
+            }),
             _ => None,
         };
-        TreeDescription { bodies, gravity, loop_joint }
+        TreeDescription {
+            bodies,
+            gravity,
+            loop_joint,
+        }
     }
 
     /// Number of bodies.
@@ -126,8 +136,16 @@ impl TreeDescription {
         Some(
             (0..n)
                 .map(|j| {
-                    let u1 = if j == 0 { joint.first_u1 } else { self.bodies[j].at_self };
-                    let u2 = if j + 1 == n { joint.last_u2 } else { self.bodies[j + 1].at_parent };
+                    let u1 = if j == 0 {
+                        joint.first_u1
+                    } else {
+                        self.bodies[j].at_self
+                    };
+                    let u2 = if j + 1 == n {
+                        joint.last_u2
+                    } else {
+                        self.bodies[j + 1].at_parent
+                    };
                     u2 - u1
                 })
                 .collect(),

@@ -15,7 +15,10 @@ pub struct BodyLoad {
 
 impl BodyLoad {
     /// No load.
-    pub const ZERO: BodyLoad = BodyLoad { force: Vector2::new(0.0, 0.0), moment: 0.0 };
+    pub const ZERO: BodyLoad = BodyLoad {
+        force: Vector2::new(0.0, 0.0),
+        moment: 0.0,
+    };
 
     /// A force at the centroid.
     pub fn force(force: Vector2<f64>) -> Self {
@@ -24,18 +27,27 @@ impl BodyLoad {
 
     /// A pure moment.
     pub fn moment(moment: f64) -> Self {
-        BodyLoad { force: Vector2::zeros(), moment }
+        BodyLoad {
+            force: Vector2::zeros(),
+            moment,
+        }
     }
 
     /// A force applied at a point of the body whose offset from the centroid,
     /// in the global frame, is `arm` (`A ū` for a body point `ū`). Adds the
     /// moment `arm × F` (spec §0).
     pub fn force_at(force: Vector2<f64>, arm: Vector2<f64>) -> Self {
-        BodyLoad { force, moment: cross(arm, force) }
+        BodyLoad {
+            force,
+            moment: cross(arm, force),
+        }
     }
 
     /// The sum of two loads on the same body.
     pub fn plus(self, other: BodyLoad) -> Self {
-        BodyLoad { force: self.force + other.force, moment: self.moment + other.moment }
+        BodyLoad {
+            force: self.force + other.force,
+            moment: self.moment + other.moment,
+        }
     }
 }

@@ -1,9 +1,9 @@
 use nalgebra::{DMatrix, DVector, Matrix2xX, Vector2};
 
-use crate::dynamics::{solve_closed, solve_open, Accelerations};
+use crate::DynamicsError;
+use crate::dynamics::{Accelerations, solve_closed, solve_open};
 use crate::model::{BodyLoad, Closure, TreeDescription};
 use crate::planar::{rotate, rotate_derivative};
-use crate::DynamicsError;
 
 /// A body tree evaluated by the textbook route (see the [module
 /// docs](crate::reference)).
@@ -124,7 +124,11 @@ impl ReferenceModel {
     fn mass_diagonal(&self) -> DVector<f64> {
         let n = self.bodies();
         DVector::from_fn(3 * n, |r, _| {
-            if r < 2 * n { self.tree.bodies[r / 2].mass } else { self.tree.bodies[r - 2 * n].inertia }
+            if r < 2 * n {
+                self.tree.bodies[r / 2].mass
+            } else {
+                self.tree.bodies[r - 2 * n].inertia
+            }
         })
     }
 
@@ -138,7 +142,12 @@ impl ReferenceModel {
     /// Absolute applied forces `Q` (3n): gravity, the loads, and the penalty
     /// spring-damper of a penalty-closed track applied at its two joint
     /// points.
-    pub fn applied_forces(&self, q: &DVector<f64>, qd: &DVector<f64>, loads: &[BodyLoad]) -> DVector<f64> {
+    pub fn applied_forces(
+        &self,
+        q: &DVector<f64>,
+        qd: &DVector<f64>,
+        loads: &[BodyLoad],
+    ) -> DVector<f64> {
         let n = self.bodies();
         check_loads(loads, n);
         let mut f = DVector::zeros(3 * n);
@@ -151,34 +160,39 @@ impl ReferenceModel {
             f[2 * b + 1] += load.force.y;
             f[2 * n + b] += load.moment;
         }
-        if let Some(joint) = self.tree.loop_joint {
-            if let Closure::Penalty { stiffness, damping } = joint.closure {
-                let last = n - 1;
-                let (arm_n, arm_1) = (
-                    rotate(Self::angle(q, last), joint.last_u2),
-                    rotate(Self::angle(q, 0), joint.first_u1),
-                );
-                let r = self.positions(q);
-                let v = &self.velocity_transform(q) * qd;
-                let point_velocity = |b: usize, arm: Vector2<f64>| {
-                    Vector2::new(v[2 * b], v[2 * b + 1]) + Vector2::new(-arm.y, arm.x) * qd[2 + b]
-                };
-                let gap = (r[last] + arm_n) - (r[0] + arm_1);
-                let rate = point_velocity(last, arm_n) - point_velocity(0, arm_1);
-                let force = -gap * stiffness - rate * damping;
-                for (b, arm, sign) in [(last, arm_n, 1.0), (0, arm_1, -1.0)] {
-                    let l = BodyLoad::force_at(force * sign, arm);
-                    f[2 * b] += l.force.x;
-                    f[2 * b + 1] += l.force.y;
-                    f[2 * n + b] += l.moment;
-                }
+        if let Some(joint) = self.tree.loop_joint
+            && let Closure::Penalty { stiffness, damping } = joint.closure
+        {
+            let last = n - 1;
+            let (arm_n, arm_1) = (
+                rotate(Self::angle(q, last), joint.last_u2),
+                rotate(Self::angle(q, 0), joint.first_u1),
+            );
+            let r = self.positions(q);
+            let v = &self.velocity_transform(q) * qd;
+            let point_velocity = |b: usize, arm: Vector2<f64>| {
+                Vector2::new(v[2 * b], v[2 * b + 1]) + Vector2::new(-arm.y, arm.x) * qd[2 + b]
+            };
+            let gap = (r[last] + arm_n) - (r[0] + arm_1);
+            let rate = point_velocity(last, arm_n) - point_velocity(0, arm_1);
+            let force = -gap * stiffness - rate * damping;
+            for (b, arm, sign) in [(last, arm_n, 1.0), (0, arm_1, -1.0)] {
+                let l = BodyLoad::force_at(force * sign, arm);
+                f[2 * b] += l.force.x;
+                f[2 * b + 1] += l.force.y;
+                f[2 * n + b] += l.moment;
             }
         }
         f
     }
 
     /// `Q_i = Hᵀ (Q − M γ)` (eq. (16)).
-    pub fn generalized_forces(&self, q: &DVector<f64>, qd: &DVector<f64>, loads: &[BodyLoad]) -> DVector<f64> {
+    pub fn generalized_forces(
+        &self,
+        q: &DVector<f64>,
+        qd: &DVector<f64>,
+        loads: &[BodyLoad],
+    ) -> DVector<f64> {
         let h = self.velocity_transform(q);
         let mg = self.mass_diagonal().component_mul(&self.gamma(q, qd));
         h.transpose() * (self.applied_forces(q, qd, loads) - mg)
@@ -195,16 +209,23 @@ impl ReferenceModel {
     /// # Panics
     /// If the tree has no loop joint.
     pub fn closure(&self, q: &DVector<f64>) -> Vector2<f64> {
-        let joint = self.tree.loop_joint.expect("closure of a tree without a loop joint");
+        let joint = self
+            .tree
+            .loop_joint
+            .expect("closure of a tree without a loop joint");
         let n = self.bodies();
         let r = self.positions(q);
-        (r[n - 1] + rotate(Self::angle(q, n - 1), joint.last_u2)) - (r[0] + rotate(Self::angle(q, 0), joint.first_u1))
+        (r[n - 1] + rotate(Self::angle(q, n - 1), joint.last_u2))
+            - (r[0] + rotate(Self::angle(q, 0), joint.first_u1))
     }
 
     /// `C_q` (2 × (n + 2)), as the difference of the two joint points' rows
     /// of the point Jacobians.
     pub fn closure_jacobian(&self, q: &DVector<f64>) -> Matrix2xX<f64> {
-        let joint = self.tree.loop_joint.expect("closure of a tree without a loop joint");
+        let joint = self
+            .tree
+            .loop_joint
+            .expect("closure of a tree without a loop joint");
         let n = self.bodies();
         let h = self.velocity_transform(q);
         let mut cq = Matrix2xX::zeros(n + 2);
@@ -223,7 +244,10 @@ impl ReferenceModel {
     /// `γ_c = −(d/dt C_q) q̇_i`, so that `C_q q̈_i = γ_c`: minus the
     /// quadratic velocity terms of the two joint points.
     pub fn closure_gamma(&self, q: &DVector<f64>, qd: &DVector<f64>) -> Vector2<f64> {
-        let joint = self.tree.loop_joint.expect("closure of a tree without a loop joint");
+        let joint = self
+            .tree
+            .loop_joint
+            .expect("closure of a tree without a loop joint");
         let n = self.bodies();
         let g = self.gamma(q, qd);
         let point = |b: usize, u: Vector2<f64>| {
@@ -254,6 +278,9 @@ impl ReferenceModel {
 }
 
 fn check_loads(loads: &[BodyLoad], n: usize) {
-    assert!(loads.is_empty() || loads.len() == n, "expected {n} body loads or none, got {}", loads.len());
+    assert!(
+        loads.is_empty() || loads.len() == n,
+        "expected {n} body loads or none, got {}",
+        loads.len()
+    );
 }
-
