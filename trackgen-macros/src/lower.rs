@@ -16,6 +16,12 @@ use crate::parse::{Block, Entry, Input, ItemAst, Selector};
 /// being a good trade (see README, compile times).
 pub const MAX_LINKS: usize = 1024;
 
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Bound {
+    Positive,
+    NonNegative,
+}
+
 /// Collects errors, like serde_derive's `Ctxt`.
 #[derive(Default)]
 pub struct Errors {
@@ -173,47 +179,44 @@ impl Cx<'_> {
         }
     }
 
-    /// A required strictly positive, finite number (mass, inertia, radius).
+    /// A strictly positive, finite number (mass, inertia, radius, stiffness).
     fn positive(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Num> {
+        self.bounded(fields, key, required, Bound::Positive)
+    }
+
+    /// A non-negative, finite number (damping).
+    fn non_negative(&mut self, fields: &Fields, key: &str) -> Option<Num> {
+        self.bounded(fields, key, true, Bound::NonNegative)
+    }
+
+    /// A number with a lower bound, checked here when the macro can
+    /// evaluate it and by a compile-time assertion otherwise.
+    fn bounded(&mut self, fields: &Fields, key: &str, required: bool, bound: Bound) -> Option<Num> {
         let expr = fields.map.get(key).copied();
         let value = self.number(fields, key, required)?;
-        self.check_positive(&value, expr?, key);
-        Some(value)
-    }
-
-    fn check_positive(&mut self, value: &Num, expr: &Expr, key: &str) {
-        match value {
-            Num::Known(v) if !(v.is_finite() && *v > 0.0) => {
-                self.errors.spanned(
-                    expr,
-                    format!("`{key}` must be positive and finite, found {v}"),
-                );
-            }
-            Num::Known(_) => {}
-            Num::Expr(t) => self.checks.push(ConstCheck {
-                span: expr.span(),
-                condition: quote!((#t) > 0.0 && (#t) <= f64::MAX),
-                message: format!("`{key}` must be positive and finite"),
-            }),
-        }
-    }
-
-    /// A non-negative finite number (damping, stiffness).
-    fn non_negative(&mut self, fields: &Fields, key: &str) -> Option<Num> {
-        let expr = fields.map.get(key).copied();
-        let value = self.number(fields, key, true)?;
+        let (what, holds) = match bound {
+            Bound::Positive => ("positive", quote!(> 0.0)),
+            Bound::NonNegative => ("non-negative", quote!(>= 0.0)),
+        };
         match &value {
-            Num::Known(v) if !(v.is_finite() && *v >= 0.0) => {
-                self.errors.spanned(
-                    expr?,
-                    format!("`{key}` must be non-negative and finite, found {v}"),
-                );
+            Num::Known(v) => {
+                let ok = v.is_finite()
+                    && if bound == Bound::Positive {
+                        *v > 0.0
+                    } else {
+                        *v >= 0.0
+                    };
+                if !ok {
+                    self.errors.spanned(
+                        expr?,
+                        format!("`{key}` must be {what} and finite, found {v}"),
+                    );
+                }
             }
-            Num::Known(_) => {}
             Num::Expr(t) => self.checks.push(ConstCheck {
                 span: expr?.span(),
-                condition: quote!((#t) >= 0.0 && (#t) <= f64::MAX),
-                message: format!("`{key}` must be non-negative and finite"),
+                condition: quote!((#t) #holds && (#t) <= f64::MAX),
+                message: format!("`{key}` must be {what} and finite"),
             }),
         }
         Some(value)
