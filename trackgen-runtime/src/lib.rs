@@ -11,6 +11,11 @@
 //! * [`dynamics`]: forward dynamics at a given state, for generated models
 //!   and for the reference route: open chains (solve `M_i q̈_i = Q_i`) and
 //!   closed chains (the multiplier form of spec §2).
+//! * [`closure`]: the three ways of closing the track loop in time
+//!   (partitioning with switching, multipliers, penalty).
+//! * [`integrate`]: RK4, Dormand-Prince 5(4) and Rosenbrock ROS2.
+//! * [`simulate`]: systems of subsystems integrated into [`simulate::Results`],
+//!   with typed errors that keep the results.
 //!
 //! Conventions follow `shared/spec/recursive-formulation.md` §0: planar, SI
 //! units, `A(θ)` the rotation matrix, body frames at the centroid, recursive
@@ -19,9 +24,12 @@
 
 #![warn(missing_docs)]
 
+pub mod closure;
 pub mod dynamics;
+pub mod integrate;
 pub mod model;
 pub mod reference;
+pub mod simulate;
 
 mod error;
 mod planar;

@@ -1,0 +1,116 @@
+//! Time integrators for the first-order systems `y' = f(t, y)` that a
+//! simulation assembles.
+//!
+//! Three methods, each a [`Stepper`] driven one step at a time, because a
+//! simulation must act between steps: re-partition the closed track and
+//! restart ([`Stepper::restart`]), write dense output, and stop with the
+//! results kept when something fails.
+//!
+//! * [`Rk4`]: classical fourth-order Runge-Kutta, fixed step.
+//! * [`Dopri5`]: Dormand-Prince 5(4), adaptive with `rtol`/`atol`, FSAL,
+//!   and its fourth-order continuous extension for dense output.
+//! * [`Rosenbrock2`]: the linearly implicit ROS2 of Verwer et al. (1999),
+//!   L-stable and second order for any Jacobian (a W-method), fixed step:
+//!   for the stiff contact and penalty forces, where explicit methods need
+//!   steps of the order of the stiffest period.
+//!
+//! Why not a crate: `ode_solvers` 0.6 builds on nalgebra 0.34 (ours is
+//! 0.35), integrates a whole interval per call with an infallible `&self`
+//! right-hand side, and has no stiff method; `diffsol` brings faer and a
+//! problem-builder API sized for large sparse systems. Neither gives a
+//! fallible right-hand side that rejects a step (a Newton-Raphson failure
+//! of the closure must shrink the step, not abort) together with a restart
+//! after re-partitioning; the methods themselves are a page each.
+
+mod dopri5;
+mod hermite;
+mod rk4;
+mod rosenbrock;
+
+pub use dopri5::Dopri5;
+pub use rk4::Rk4;
+pub use rosenbrock::Rosenbrock2;
+
+use nalgebra::DVector;
+
+use crate::simulate::SimulationError;
+
+/// A first-order system `y' = f(t, y)` whose evaluation may fail (a
+/// failed Newton-Raphson recovery, a singular matrix, a non-finite value).
+pub trait OdeSystem {
+    /// Length of `y`.
+    fn dimension(&self) -> usize;
+
+    /// Writes `f(t, y)` into `dy`. An error rejects the step in an adaptive
+    /// integrator (which retries a shorter one) and ends the run in a
+    /// fixed-step one.
+    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError>;
+}
+
+/// Counters of an integration.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Evaluations of `f`.
+    pub evaluations: u64,
+    /// Accepted steps.
+    pub accepted: u64,
+    /// Rejected steps (error too large, or `f` failed).
+    pub rejected: u64,
+    /// Restarts after the state was changed between steps.
+    pub restarts: u64,
+}
+
+/// A one-step method driven step by step.
+pub trait Stepper {
+    /// Advances `(t, y)` by one accepted step, never past `t_limit`.
+    fn step(&mut self, system: &mut dyn OdeSystem, t: &mut f64, y: &mut DVector<f64>, t_limit: f64) -> Result<(), SimulationError>;
+
+    /// `y(t)` for `t` within the last accepted step (dense output).
+    fn interpolate(&self, t: f64) -> DVector<f64>;
+
+    /// Forgets cached derivatives: the state was changed between steps.
+    fn restart(&mut self);
+
+    /// Counters so far.
+    fn stats(&self) -> Stats;
+}
+
+/// Which integrator, with its settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Integrator {
+    /// [`Rk4`] with a fixed step, s.
+    Rk4 {
+        /// Step, s.
+        step: f64,
+    },
+    /// [`Dopri5`], adaptive.
+    Dopri5 {
+        /// Relative tolerance per component.
+        rtol: f64,
+        /// Absolute tolerance per component.
+        atol: f64,
+        /// Largest step, s (`f64::INFINITY` for none).
+        max_step: f64,
+    },
+    /// [`Rosenbrock2`] with a fixed step, s.
+    Rosenbrock2 {
+        /// Step, s.
+        step: f64,
+    },
+}
+
+impl Integrator {
+    /// Dormand-Prince with `rtol = atol = tol` and no step limit.
+    pub fn dopri5(tol: f64) -> Self {
+        Integrator::Dopri5 { rtol: tol, atol: tol, max_step: f64::INFINITY }
+    }
+
+    /// A stepper for a system of `dimension` components.
+    pub fn stepper(self, dimension: usize) -> Box<dyn Stepper> {
+        match self {
+            Integrator::Rk4 { step } => Box::new(Rk4::new(step, dimension)),
+            Integrator::Dopri5 { rtol, atol, max_step } => Box::new(Dopri5::new(rtol, atol, max_step, dimension)),
+            Integrator::Rosenbrock2 { step } => Box::new(Rosenbrock2::new(step, dimension)),
+        }
+    }
+}

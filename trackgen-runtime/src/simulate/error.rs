@@ -1,0 +1,107 @@
+use std::fmt;
+
+use thiserror::Error;
+
+use super::Results;
+use crate::DynamicsError;
+
+/// Why a simulation stopped early. Every variant carries the simulation
+/// time `t` (s) at which it happened.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SimulationError {
+    /// A state or derivative component became NaN or infinite.
+    #[error("non-finite value in {what} at t = {t} s")]
+    NonFinite {
+        /// Time, s.
+        t: f64,
+        /// Which quantity.
+        what: &'static str,
+    },
+    /// Newton-Raphson on the loop closure `C(z, d) = 0` did not converge.
+    #[error("Newton-Raphson on the loop closure failed at t = {t} s: |C| = {residual:e} m after {iterations} iterations")]
+    NewtonFailed {
+        /// Time, s.
+        t: f64,
+        /// Iterations taken.
+        iterations: usize,
+        /// `|C|` at the last iterate, m.
+        residual: f64,
+    },
+    /// The adaptive integrator's step fell below what `t` can resolve.
+    #[error("step size underflow at t = {t} s (step {step:e} s){}", cause.as_ref().map(|c| format!(": {c}")).unwrap_or_default())]
+    StepSizeUnderflow {
+        /// Time, s.
+        t: f64,
+        /// The step that was too small, s.
+        step: f64,
+        /// The failure that kept shrinking the step, if any.
+        cause: Option<Box<SimulationError>>,
+    },
+    /// The dependent pair's block `C_d` became singular while switching was
+    /// off (paper eq. (21): the two links nearly parallel).
+    #[error("singular partition at t = {t} s: links {} and {} are nearly parallel (|sin| = {conditioning:e}) and switching is off", pair[0], pair[1])]
+    SingularPartition {
+        /// Time, s.
+        t: f64,
+        /// The dependent links (numbered from 1).
+        pair: [usize; 2],
+        /// `|sin|` of the angle between the two columns of `C_d`.
+        conditioning: f64,
+    },
+    /// A linear system of the method was singular.
+    #[error("singular matrix ({what}) at t = {t} s")]
+    SingularMatrix {
+        /// Time, s.
+        t: f64,
+        /// Which matrix.
+        what: &'static str,
+    },
+    /// Forward dynamics failed.
+    #[error("dynamics failed at t = {t} s: {source}")]
+    Dynamics {
+        /// Time, s.
+        t: f64,
+        /// The failure.
+        source: DynamicsError,
+    },
+    /// The simulation was set up wrongly (before any step).
+    #[error("invalid simulation set-up: {0}")]
+    Setup(String),
+}
+
+impl SimulationError {
+    /// The simulation time at which the error happened (`None` for a set-up
+    /// error).
+    pub fn time(&self) -> Option<f64> {
+        match self {
+            SimulationError::NonFinite { t, .. }
+            | SimulationError::NewtonFailed { t, .. }
+            | SimulationError::StepSizeUnderflow { t, .. }
+            | SimulationError::SingularPartition { t, .. }
+            | SimulationError::SingularMatrix { t, .. }
+            | SimulationError::Dynamics { t, .. } => Some(*t),
+            SimulationError::Setup(_) => None,
+        }
+    }
+}
+
+/// A run that stopped early: the error, and everything computed until then.
+#[derive(Debug, Clone)]
+pub struct SimulationFailure {
+    /// Why it stopped.
+    pub error: SimulationError,
+    /// The results up to the failure.
+    pub results: Results,
+}
+
+impl fmt::Display for SimulationFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} ({} samples kept)", self.error, self.results.len())
+    }
+}
+
+impl std::error::Error for SimulationFailure {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&self.error)
+    }
+}

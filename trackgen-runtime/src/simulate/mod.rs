@@ -1,0 +1,29 @@
+//! Simulation: a system of subsystems (a closed track, a chassis),
+//! integrated in time, recorded into [`Results`].
+//!
+//! A run never panics on a bad state: it stops with a typed
+//! [`SimulationError`] carrying the time and the cause, and returns the
+//! results computed up to then in a [`SimulationFailure`].
+
+mod error;
+mod observe;
+mod output;
+mod pair;
+mod results;
+mod run;
+mod track;
+mod tree;
+
+pub use error::{SimulationError, SimulationFailure};
+pub use observe::{momentum, Momentum};
+pub use output::Output;
+pub use pair::Pair;
+pub use results::{Results, Sample, Switch};
+pub use run::{simulate, Simulated};
+pub use track::TrackSystem;
+pub use tree::TreeSystem;
+
+/// Applied loads as a function of time and state: `(t, q_i, q̇_i, loads)`,
+/// one [`BodyLoad`](crate::BodyLoad) per body, zeroed before each call.
+pub type LoadFn<const D: usize> =
+    Box<dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad])>;

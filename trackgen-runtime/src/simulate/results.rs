@@ -1,0 +1,123 @@
+use std::io;
+use std::path::Path;
+
+use crate::integrate::Stats;
+
+/// A change of the dependent coordinates of a partitioned track (spec §2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Switch {
+    /// Time, s.
+    pub t: f64,
+    /// The dependent links before (numbered from 1).
+    pub from: [usize; 2],
+    /// The dependent links after.
+    pub to: [usize; 2],
+    /// `|sin|` between the columns of `C_d` of the old pair, which fell
+    /// below the switching threshold.
+    pub conditioning: f64,
+    /// The same for the new pair.
+    pub new_conditioning: f64,
+}
+
+/// The time series of a run: one row of named quantities per output time,
+/// the partition switches, and the integrator's counters. Kept whole when a
+/// run fails.
+#[derive(Debug, Clone, Default)]
+pub struct Results {
+    columns: Vec<String>,
+    times: Vec<f64>,
+    values: Vec<f64>,
+    /// Every re-partitioning, in order.
+    pub switches: Vec<Switch>,
+    /// Integrator counters.
+    pub stats: Stats,
+}
+
+/// One output time of [`Results`].
+#[derive(Debug, Clone, Copy)]
+pub struct Sample<'a> {
+    /// Time, s.
+    pub t: f64,
+    /// The values, in the order of [`Results::columns`].
+    pub values: &'a [f64],
+    columns: &'a [String],
+}
+
+impl Sample<'_> {
+    /// The value of a named column.
+    pub fn get(&self, column: &str) -> Option<f64> {
+        self.columns.iter().position(|c| c == column).map(|i| self.values[i])
+    }
+}
+
+impl Results {
+    /// Empty results with these columns (time excluded).
+    pub fn new(columns: Vec<String>) -> Self {
+        Results { columns, ..Default::default() }
+    }
+
+    pub(crate) fn push(&mut self, t: f64, row: &[f64]) {
+        debug_assert_eq!(row.len(), self.columns.len());
+        self.times.push(t);
+        self.values.extend_from_slice(row);
+    }
+
+    /// Column names (time excluded).
+    pub fn columns(&self) -> &[String] {
+        &self.columns
+    }
+
+    /// Output times, s.
+    pub fn times(&self) -> &[f64] {
+        &self.times
+    }
+
+    /// Number of output times.
+    pub fn len(&self) -> usize {
+        self.times.len()
+    }
+
+    /// Whether nothing was output.
+    pub fn is_empty(&self) -> bool {
+        self.times.is_empty()
+    }
+
+    /// Sample `i`.
+    pub fn sample(&self, i: usize) -> Sample<'_> {
+        let w = self.columns.len();
+        Sample { t: self.times[i], values: &self.values[i * w..(i + 1) * w], columns: &self.columns }
+    }
+
+    /// The samples in time order.
+    pub fn iter(&self) -> impl Iterator<Item = Sample<'_>> + '_ {
+        (0..self.len()).map(|i| self.sample(i))
+    }
+
+    /// The last sample.
+    pub fn last(&self) -> Option<Sample<'_>> {
+        self.len().checked_sub(1).map(|i| self.sample(i))
+    }
+
+    /// A column's time series.
+    pub fn column(&self, name: &str) -> Option<Vec<f64>> {
+        let i = self.columns.iter().position(|c| c == name)?;
+        let w = self.columns.len();
+        Some((0..self.len()).map(|r| self.values[r * w + i]).collect())
+    }
+
+    /// Writes CSV: a header `t,<columns>`, then one row per sample.
+    pub fn write_csv<W: io::Write>(&self, writer: W) -> csv::Result<()> {
+        let mut w = csv::Writer::from_writer(writer);
+        w.write_record(std::iter::once("t").chain(self.columns.iter().map(String::as_str)))?;
+        for s in self.iter() {
+            w.write_record(std::iter::once(s.t).chain(s.values.iter().copied()).map(|v| v.to_string()))?;
+        }
+        w.flush()?;
+        Ok(())
+    }
+
+    /// Writes CSV to a file.
+    pub fn save_csv(&self, path: impl AsRef<Path>) -> csv::Result<()> {
+        self.write_csv(std::fs::File::create(path)?)
+    }
+}

@@ -1,0 +1,374 @@
+use nalgebra::{DVector, SMatrix, SVector};
+
+use super::observe::{coordinate_columns, masses};
+use super::{momentum, LoadFn, SimulationError, Simulated, Switch};
+use crate::closure::{multipliers, partitioning, penalty, ClosureMethod, MultiplierOptions, PartitionOptions};
+use crate::dynamics::{solve_closed, solve_open};
+use crate::integrate::OdeSystem;
+use crate::model::{BodyLoad, Closure, TrackModel};
+
+/// How this track is closed, resolved from the declaration and the chosen
+/// [`ClosureMethod`].
+#[derive(Debug, Clone)]
+enum Mode {
+    /// The declared dynamics as they are: an open chain, or a chain closed
+    /// by its declared penalty joint.
+    AsDeclared,
+    Partitioned {
+        options: PartitionOptions,
+        /// The dependent links, 0-based.
+        pair: [usize; 2],
+        independent: Vec<usize>,
+        /// The dependent angles last recovered: Newton-Raphson's start.
+        guess: [f64; 2],
+    },
+    Multipliers(MultiplierOptions),
+    Penalty {
+        stiffness: f64,
+        damping: f64,
+    },
+}
+
+/// A track in motion, its loop closed by one of the methods of
+/// [`crate::closure`].
+///
+/// The state is `y = [z, ż]` (the `n` independent coordinates) under
+/// partitioning, and `y = [q_i, q̇_i]` otherwise.
+pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
+    model: M,
+    mode: Mode,
+    y0: DVector<f64>,
+    loads: Option<LoadFn<D>>,
+    buffer: Vec<BodyLoad>,
+    masses: Vec<(f64, f64)>,
+    /// `Σ |d̄ʲ|`, m: the scale of closure tolerances.
+    loop_length: f64,
+    switches: Vec<Switch>,
+}
+
+impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
+    /// The track starting at `(q_i, q̇_i)`, closed by `method`.
+    ///
+    /// The start is made consistent with the closure: under partitioning
+    /// the dependent angles and their rates are recovered from the others;
+    /// under multipliers or a run-time penalty, `(q_i, q̇_i)` is projected
+    /// onto `C = 0`, `C_q q̇ = 0`.
+    pub fn new(model: M, q: SVector<f64, D>, qd: SVector<f64, D>, method: ClosureMethod) -> Result<Self, SimulationError> {
+        let declared = M::CLOSURE;
+        let mode = match (method, declared) {
+            (ClosureMethod::Declared, Closure::Partitioned) => Self::partitioned(PartitionOptions::default()),
+            (ClosureMethod::Declared, _) => Mode::AsDeclared,
+            (_, Closure::Open) => {
+                return Err(SimulationError::Setup(
+                    "the track is declared `closure: open`; declare it `partitioned` to close its loop".into(),
+                ));
+            }
+            (_, Closure::Penalty { .. }) => {
+                return Err(SimulationError::Setup(
+                    "the track is declared with a penalty joint; declare it `partitioned` to choose the closure method at run time".into(),
+                ));
+            }
+            (ClosureMethod::Partitioning(options), Closure::Partitioned) => Self::partitioned(options),
+            (ClosureMethod::Multipliers(options), Closure::Partitioned) => Mode::Multipliers(options),
+            (ClosureMethod::Penalty { stiffness, damping }, Closure::Partitioned) => {
+                if !(stiffness > 0.0 && stiffness.is_finite() && damping >= 0.0 && damping.is_finite()) {
+                    return Err(SimulationError::Setup(format!(
+                        "penalty stiffness must be positive and damping non-negative, got k = {stiffness}, c = {damping}"
+                    )));
+                }
+                Mode::Penalty { stiffness, damping }
+            }
+        };
+        let description = model.description();
+        let loop_length = description.link_spans().map_or(1.0, |s| s.iter().map(|d| d.norm()).sum());
+        let mut system = TrackSystem {
+            masses: masses(&model),
+            model,
+            mode,
+            y0: DVector::zeros(0),
+            loads: None,
+            buffer: vec![BodyLoad::ZERO; M::BODIES],
+            loop_length,
+            switches: Vec::new(),
+        };
+        system.y0 = system.start(q, qd)?;
+        Ok(system)
+    }
+
+    fn partitioned(options: PartitionOptions) -> Mode {
+        Mode::Partitioned { options, pair: [0, 1], independent: Vec::new(), guess: [0.0; 2] }
+    }
+
+    /// Applied loads besides gravity (a sprocket torque, say).
+    pub fn with_loads(
+        mut self,
+        loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + 'static,
+    ) -> Self {
+        self.loads = Some(Box::new(loads));
+        self
+    }
+
+    /// The compiled model.
+    pub fn model(&self) -> &M {
+        &self.model
+    }
+
+    /// The dependent links now (numbered from 1), under partitioning.
+    pub fn dependent_pair(&self) -> Option<[usize; 2]> {
+        match &self.mode {
+            Mode::Partitioned { pair, .. } => Some([pair[0] + 1, pair[1] + 1]),
+            _ => None,
+        }
+    }
+
+    /// `(q_i, q̇_i)` of the state `y`, the closure recovered under
+    /// partitioning.
+    pub fn coordinates(&mut self, t: f64, y: &DVector<f64>) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        match &self.mode {
+            Mode::Partitioned { .. } => self.expand(t, y),
+            _ => Ok((SVector::from_fn(|i, _| y[i]), SVector::from_fn(|i, _| y[D + i]))),
+        }
+    }
+
+    fn tolerance(&self, fraction: f64) -> f64 {
+        fraction * self.loop_length
+    }
+
+    /// Makes the start consistent and returns the initial state.
+    fn start(&mut self, mut q: SVector<f64, D>, mut qd: SVector<f64, D>) -> Result<DVector<f64>, SimulationError> {
+        let singular = |what| SimulationError::SingularMatrix { t: 0.0, what };
+        let tolerance = match &self.mode {
+            Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
+            Mode::Multipliers(options) => self.tolerance(options.tolerance),
+            Mode::Penalty { .. } => self.tolerance(MultiplierOptions::default().tolerance),
+            Mode::AsDeclared => 0.0,
+        };
+        match &mut self.mode {
+            Mode::Partitioned { options, pair, independent, guess } => {
+                let cq = self.model.closure_jacobian(&q);
+                *pair = match options.initial_pair {
+                    Some([a, b]) if a != b && (1..=D - 2).contains(&a) && (1..=D - 2).contains(&b) => [a - 1, b - 1],
+                    Some(p) => return Err(SimulationError::Setup(format!("initial_pair {p:?}: two different links from 1 to {}", D - 2))),
+                    None => partitioning::best_pair(&cq).0,
+                };
+                *independent = partitioning::independent_coordinates(D, *pair);
+                partitioning::recover_positions(&self.model, &mut q, *pair, tolerance, options.newton_max_iterations)
+                    .map_err(|(iterations, residual)| SimulationError::NewtonFailed { t: 0.0, iterations, residual })?;
+                *guess = [q[2 + pair[0]], q[2 + pair[1]]];
+                let cq = self.model.closure_jacobian(&q);
+                partitioning::recover_velocities(&cq, &mut qd, *pair).ok_or_else(|| singular("C_d at the start"))?;
+                Ok(Self::pack(independent, &q, &qd))
+            }
+            Mode::Multipliers(_) | Mode::Penalty { .. } => {
+                if !multipliers::project(&self.model, &mut q, &mut qd, tolerance) {
+                    return Err(SimulationError::Setup("the initial state cannot be projected onto the loop closure".into()));
+                }
+                Ok(DVector::from_iterator(2 * D, q.iter().chain(qd.iter()).copied()))
+            }
+            Mode::AsDeclared => Ok(DVector::from_iterator(2 * D, q.iter().chain(qd.iter()).copied())),
+        }
+    }
+
+    fn pack(independent: &[usize], q: &SVector<f64, D>, qd: &SVector<f64, D>) -> DVector<f64> {
+        let n = independent.len();
+        DVector::from_fn(2 * n, |i, _| if i < n { q[independent[i]] } else { qd[independent[i - n]] })
+    }
+
+    /// Partitioning: `(q_i, q̇_i)` from `[z, ż]`.
+    fn expand(&mut self, t: f64, y: &DVector<f64>) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        let tolerance = match &self.mode {
+            Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
+            _ => unreachable!("expand is for partitioned states"),
+        };
+        let Mode::Partitioned { options, pair, independent, guess } = &mut self.mode else { unreachable!() };
+        let n = independent.len();
+        let mut q = SVector::<f64, D>::zeros();
+        let mut qd = SVector::<f64, D>::zeros();
+        for (i, &c) in independent.iter().enumerate() {
+            q[c] = y[i];
+            qd[c] = y[n + i];
+        }
+        q[2 + pair[0]] = guess[0];
+        q[2 + pair[1]] = guess[1];
+        partitioning::recover_positions(&self.model, &mut q, *pair, tolerance, options.newton_max_iterations)
+            .map_err(|(iterations, residual)| SimulationError::NewtonFailed { t, iterations, residual })?;
+        *guess = [q[2 + pair[0]], q[2 + pair[1]]];
+        let cq = self.model.closure_jacobian(&q);
+        partitioning::recover_velocities(&cq, &mut qd, *pair).ok_or(SimulationError::SingularMatrix { t, what: "C_d" })?;
+        Ok((q, qd))
+    }
+
+    fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
+        self.buffer.fill(BodyLoad::ZERO);
+        if let Some(f) = &mut self.loads {
+            f(t, q, qd, &mut self.buffer);
+        }
+    }
+
+    /// `q̈_i` at `(q_i, q̇_i)` under the current method.
+    fn accelerations(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> Result<SVector<f64, D>, SimulationError> {
+        self.fill_loads(t, q, qd);
+        let mut mass = SMatrix::<f64, D, D>::zeros();
+        let mut forces = SVector::<f64, D>::zeros();
+        self.model.equations_of_motion(q, qd, &self.buffer, &mut mass, &mut forces);
+        let dynamics = |source| SimulationError::Dynamics { t, source };
+        match &self.mode {
+            Mode::AsDeclared => Ok(solve_open(mass, &forces).map_err(dynamics)?.qdd),
+            Mode::Penalty { stiffness, damping } => {
+                let cq = self.model.closure_jacobian(q);
+                forces += penalty::forces(&cq, self.model.closure(q), qd, *stiffness, *damping);
+                Ok(solve_open(mass, &forces).map_err(dynamics)?.qdd)
+            }
+            Mode::Multipliers(options) => {
+                let cq = self.model.closure_jacobian(q);
+                let gamma = multipliers::stabilised_gamma(self.model.closure_gamma(q, qd), self.model.closure(q), cq * qd, options.baumgarte);
+                Ok(solve_closed(mass, &forces, &cq, &gamma).map_err(dynamics)?.qdd)
+            }
+            Mode::Partitioned { pair, independent, .. } => {
+                let cq = self.model.closure_jacobian(q);
+                partitioning::accelerations(&mass, &forces, &cq, &self.model.closure_gamma(q, qd), *pair, independent)
+                    .ok_or(SimulationError::SingularMatrix { t, what: "the partitioned mass matrix Bᵀ M_i B" })
+            }
+        }
+    }
+}
+
+impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
+    fn dimension(&self) -> usize {
+        self.y0.len()
+    }
+
+    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+        let (q, qd) = self.coordinates(t, y)?;
+        let qdd = self.accelerations(t, &q, &qd)?;
+        match &self.mode {
+            Mode::Partitioned { independent, .. } => {
+                let n = independent.len();
+                for (i, &c) in independent.iter().enumerate() {
+                    dy[i] = qd[c];
+                    dy[n + i] = qdd[c];
+                }
+            }
+            _ => {
+                for i in 0..D {
+                    dy[i] = qd[i];
+                    dy[D + i] = qdd[i];
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
+    fn initial_state(&self) -> DVector<f64> {
+        self.y0.clone()
+    }
+
+    fn columns(&self) -> Vec<String> {
+        let n = M::BODIES;
+        let mut c = coordinate_columns(n, false, |b| (b + 1).to_string());
+        c.extend(coordinate_columns(n, true, |b| (b + 1).to_string()));
+        c.extend(
+            [
+                "kinetic",
+                "potential",
+                "energy",
+                "momentum_x",
+                "momentum_y",
+                "angular_momentum",
+                "closure_error",
+                "closure_rate_error",
+                "conditioning",
+            ]
+            .map(String::from),
+        );
+        c
+    }
+
+    fn observe(&mut self, t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+        let (q, qd) = self.coordinates(t, y)?;
+        row.extend(q.iter().chain(qd.iter()));
+        let kinetic = self.model.kinetic_energy(&q, &qd);
+        let gap = self.model.closure(&q);
+        let cq = self.model.closure_jacobian(&q);
+        let spring = match &self.mode {
+            Mode::Penalty { stiffness, .. } => penalty::energy(gap, *stiffness),
+            _ => 0.0,
+        };
+        let potential = self.model.potential_energy(&q) + spring;
+        let p = momentum(&self.model, &self.masses, &q, &qd);
+        let conditioning = match &self.mode {
+            Mode::Partitioned { pair, .. } => partitioning::conditioning(&cq, *pair),
+            _ => partitioning::best_pair(&cq).1,
+        };
+        row.extend([
+            kinetic,
+            potential,
+            kinetic + potential,
+            p.linear.x,
+            p.linear.y,
+            p.angular,
+            gap.norm(),
+            (cq * qd).norm(),
+            conditioning,
+        ]);
+        Ok(())
+    }
+
+    fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
+        match &self.mode {
+            Mode::AsDeclared | Mode::Penalty { .. } => Ok(false),
+            Mode::Multipliers(options) => {
+                if !options.projection {
+                    return Ok(false);
+                }
+                let tolerance = self.tolerance(options.tolerance);
+                let (mut q, mut qd) = self.coordinates(t, y)?;
+                if !multipliers::project(&self.model, &mut q, &mut qd, tolerance) {
+                    return Err(SimulationError::SingularMatrix { t, what: "C_q C_qᵀ of the projection" });
+                }
+                for i in 0..D {
+                    y[i] = q[i];
+                    y[D + i] = qd[i];
+                }
+                Ok(true)
+            }
+            Mode::Partitioned { .. } => {
+                let (q, qd) = self.expand(t, y)?;
+                let cq = self.model.closure_jacobian(&q);
+                let Mode::Partitioned { options, pair, independent, guess } = &mut self.mode else { unreachable!() };
+                let now = partitioning::conditioning(&cq, *pair);
+                if !options.switching {
+                    if now < options.singular_below {
+                        return Err(SimulationError::SingularPartition { t, pair: [pair[0] + 1, pair[1] + 1], conditioning: now });
+                    }
+                    return Ok(false);
+                }
+                if now >= options.switch_below {
+                    return Ok(false);
+                }
+                let (best, better) = partitioning::best_pair(&cq);
+                if best == *pair {
+                    return Ok(false);
+                }
+                self.switches.push(Switch {
+                    t,
+                    from: [pair[0] + 1, pair[1] + 1],
+                    to: [best[0] + 1, best[1] + 1],
+                    conditioning: now,
+                    new_conditioning: better,
+                });
+                *pair = best;
+                *independent = partitioning::independent_coordinates(D, best);
+                *guess = [q[2 + best[0]], q[2 + best[1]]];
+                *y = Self::pack(independent, &q, &qd);
+                Ok(true)
+            }
+        }
+    }
+
+    fn switches(&self) -> Vec<Switch> {
+        self.switches.clone()
+    }
+}

@@ -1,0 +1,102 @@
+use nalgebra::{DVector, SVector};
+
+use super::observe::{coordinate_columns, masses};
+use super::{momentum, LoadFn, SimulationError, Simulated};
+use crate::dynamics::open_dynamics;
+use crate::integrate::OdeSystem;
+use crate::model::{BodyLoad, RecursiveModel};
+
+/// A body tree without constraints in motion: a chassis (spec §3), an open
+/// chain, or a track closed by its declared penalty joint. The state is
+/// `y = [q_i, q̇_i]`.
+pub struct TreeSystem<M: RecursiveModel<D>, const D: usize> {
+    model: M,
+    y0: DVector<f64>,
+    loads: Option<LoadFn<D>>,
+    buffer: Vec<BodyLoad>,
+    masses: Vec<(f64, f64)>,
+    names: Vec<String>,
+}
+
+impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
+    /// The tree starting at `(q_i, q̇_i)`.
+    pub fn new(model: M, q: SVector<f64, D>, qd: SVector<f64, D>) -> Self {
+        let y0 = DVector::from_iterator(2 * D, q.iter().chain(qd.iter()).copied());
+        let masses = masses(&model);
+        let names = (0..M::BODIES).map(|b| b.to_string()).collect();
+        TreeSystem { model, y0, loads: None, buffer: vec![BodyLoad::ZERO; M::BODIES], masses, names }
+    }
+
+    /// Names bodies in column names (`theta_<name>`), instead of their
+    /// index.
+    pub fn with_body_names(mut self, names: Vec<String>) -> Self {
+        assert_eq!(names.len(), M::BODIES, "one name per body");
+        self.names = names;
+        self
+    }
+
+    /// Applied loads besides gravity.
+    pub fn with_loads(
+        mut self,
+        loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + 'static,
+    ) -> Self {
+        self.loads = Some(Box::new(loads));
+        self
+    }
+
+    /// The compiled model.
+    pub fn model(&self) -> &M {
+        &self.model
+    }
+
+    fn split(y: &DVector<f64>) -> (SVector<f64, D>, SVector<f64, D>) {
+        (SVector::from_fn(|i, _| y[i]), SVector::from_fn(|i, _| y[D + i]))
+    }
+
+    fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
+        self.buffer.fill(BodyLoad::ZERO);
+        if let Some(f) = &mut self.loads {
+            f(t, q, qd, &mut self.buffer);
+        }
+    }
+}
+
+impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
+    fn dimension(&self) -> usize {
+        2 * D
+    }
+
+    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+        let (q, qd) = Self::split(y);
+        self.fill_loads(t, &q, &qd);
+        let acc = open_dynamics(&self.model, &q, &qd, &self.buffer).map_err(|source| SimulationError::Dynamics { t, source })?;
+        for i in 0..D {
+            dy[i] = qd[i];
+            dy[D + i] = acc.qdd[i];
+        }
+        Ok(())
+    }
+}
+
+impl<M: RecursiveModel<D>, const D: usize> Simulated for TreeSystem<M, D> {
+    fn initial_state(&self) -> DVector<f64> {
+        self.y0.clone()
+    }
+
+    fn columns(&self) -> Vec<String> {
+        let n = M::BODIES;
+        let mut c = coordinate_columns(n, false, |b| self.names[b].clone());
+        c.extend(coordinate_columns(n, true, |b| self.names[b].clone()));
+        c.extend(["kinetic", "potential", "energy", "momentum_x", "momentum_y", "angular_momentum"].map(String::from));
+        c
+    }
+
+    fn observe(&mut self, _t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+        let (q, qd) = Self::split(y);
+        row.extend(q.iter().chain(qd.iter()));
+        let (kinetic, potential) = (self.model.kinetic_energy(&q, &qd), self.model.potential_energy(&q));
+        let p = momentum(&self.model, &self.masses, &q, &qd);
+        row.extend([kinetic, potential, kinetic + potential, p.linear.x, p.linear.y, p.angular]);
+        Ok(())
+    }
+}
