@@ -239,6 +239,9 @@ impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
     }
 
     fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+        if !y.iter().all(|v| v.is_finite()) {
+            return Err(SimulationError::NonFinite { t, what: "the state" });
+        }
         let (q, qd) = self.coordinates(t, y)?;
         let qdd = self.accelerations(t, &q, &qd)?;
         match &self.mode {

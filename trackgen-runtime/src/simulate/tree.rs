@@ -67,6 +67,9 @@ impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
     }
 
     fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+        if !y.iter().all(|v| v.is_finite()) {
+            return Err(SimulationError::NonFinite { t, what: "the state" });
+        }
         let (q, qd) = Self::split(y);
         self.fill_loads(t, &q, &qd);
         let acc = open_dynamics(&self.model, &q, &qd, &self.buffer).map_err(|source| SimulationError::Dynamics { t, source })?;
