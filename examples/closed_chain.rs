@@ -10,11 +10,11 @@ use std::error::Error;
 use std::path::Path;
 
 use plotters::prelude::*;
-use trackgen::closure::{multipliers, ClosureMethod, PartitionOptions};
+use trackgen::RecursiveModel;
+use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::{SVector, Vector2};
-use trackgen::simulate::{simulate, Output, Results, TrackSystem};
-use trackgen::RecursiveModel;
+use trackgen::simulate::{Output, Results, TrackSystem, simulate};
 
 trackgen::model! {
     /// 32 M113 shoes, free in the plane.
@@ -39,19 +39,37 @@ fn start() -> (SVector<f64, DOF>, SVector<f64, DOF>) {
         q[2 + i] = s + 0.35 * (2.0 * s).sin();
         qd[2 + i] = 1.0 + 1.5 * (2.0 * s).cos();
     }
-    assert!(multipliers::project(&Loop32, &mut q, &mut qd, 1e-14), "a consistent start");
+    assert!(
+        multipliers::project(&Loop32, &mut q, &mut qd, 1e-14),
+        "a consistent start"
+    );
     (q, qd)
 }
 
 fn main() -> Result<(), Box<dyn Error>> {
     let switching = !std::env::args().any(|a| a == "--no-switching");
     let (q, qd) = start();
-    let options = PartitionOptions { switching, ..Default::default() };
+    let options = PartitionOptions {
+        switching,
+        ..Default::default()
+    };
     let mut system = TrackSystem::new(Loop32, q, qd, ClosureMethod::Partitioning(options))?;
-    println!("32-link loop, zero gravity, {DURATION} s, Dormand-Prince rtol = atol = 1e-11, switching {}", if switching { "on" } else { "off" });
-    println!("initial dependent pair: links {:?}", system.dependent_pair().unwrap());
+    println!(
+        "32-link loop, zero gravity, {DURATION} s, Dormand-Prince rtol = atol = 1e-11, switching {}",
+        if switching { "on" } else { "off" }
+    );
+    println!(
+        "initial dependent pair: links {:?}",
+        system.dependent_pair().unwrap()
+    );
     let started = std::time::Instant::now();
-    let outcome = simulate(&mut system, Integrator::dopri5(1e-11), 0.0, DURATION, Output::Every(0.01));
+    let outcome = simulate(
+        &mut system,
+        Integrator::dopri5(1e-11),
+        0.0,
+        DURATION,
+        Output::Every(0.01),
+    );
     let wall = started.elapsed().as_secs_f64();
     let (results, error) = match outcome {
         Ok(r) => (r, None),
@@ -65,19 +83,36 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     let column = |name: &str| results.column(name).unwrap();
     let energy = column("energy");
-    let drift = energy.iter().map(|e| (e - energy[0]).abs()).fold(0.0, f64::max) / energy[0];
+    let drift = energy
+        .iter()
+        .map(|e| (e - energy[0]).abs())
+        .fold(0.0, f64::max)
+        / energy[0];
     let closure = column("closure_error").into_iter().fold(0.0, f64::max);
     let angular = column("angular_momentum");
-    let angular_drift = angular.iter().map(|l| (l - angular[0]).abs()).fold(0.0, f64::max) / angular[0].abs();
-    println!("{} switches; energy drift {drift:.1e} (relative), angular momentum drift {angular_drift:.1e}", results.switches.len());
-    println!("max closure error |C| = {closure:.1e} m; {} steps ({} rejected), {:.2} s wall", results.stats.accepted, results.stats.rejected, wall);
+    let angular_drift = angular
+        .iter()
+        .map(|l| (l - angular[0]).abs())
+        .fold(0.0, f64::max)
+        / angular[0].abs();
+    println!(
+        "{} switches; energy drift {drift:.1e} (relative), angular momentum drift {angular_drift:.1e}",
+        results.switches.len()
+    );
+    println!(
+        "max closure error |C| = {closure:.1e} m; {} steps ({} rejected), {:.2} s wall",
+        results.stats.accepted, results.stats.rejected, wall
+    );
 
     let dir = Path::new("out/closed_chain");
     std::fs::create_dir_all(dir)?;
     results.save_csv(dir.join("results.csv"))?;
     plot_shapes(&results, &dir.join("shape.svg"))?;
     plot_history(&results, &dir.join("history.svg"))?;
-    println!("wrote {}/{{results.csv, shape.svg, history.svg}}", dir.display());
+    println!(
+        "wrote {}/{{results.csv, shape.svg, history.svg}}",
+        dir.display()
+    );
     if let Some(error) = error {
         println!("stopped early: {error}");
         std::process::exit(1);
@@ -106,17 +141,28 @@ fn plot_shapes(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
     root.fill(&WHITE)?;
     let frames: Vec<usize> = (0..6).map(|k| k * (results.len() - 1) / 5).collect();
     let all: Vec<(f64, f64)> = frames.iter().flat_map(|&i| outline(results, i)).collect();
-    let (xmin, xmax) = all.iter().fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.0), b.max(p.0)));
-    let (ymin, ymax) = all.iter().fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+    let (xmin, xmax) = all
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.0), b.max(p.0)));
+    let (ymin, ymax) = all
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
     let span = (xmax - xmin).max(ymax - ymin) * 0.55;
     let (cx, cy) = ((xmin + xmax) / 2.0, (ymin + ymax) / 2.0);
     let mut chart = ChartBuilder::on(&root)
-        .caption("32-link loop: shape every 2 s (partitioning with switching)", ("sans-serif", 20))
+        .caption(
+            "32-link loop: shape every 2 s (partitioning with switching)",
+            ("sans-serif", 20),
+        )
         .margin(15)
         .x_label_area_size(35)
         .y_label_area_size(45)
         .build_cartesian_2d(cx - span..cx + span, cy - span..cy + span)?;
-    chart.configure_mesh().x_desc("x (m)").y_desc("y (m)").draw()?;
+    chart
+        .configure_mesh()
+        .x_desc("x (m)")
+        .y_desc("y (m)")
+        .draw()?;
     for (k, &i) in frames.iter().enumerate() {
         let color = Palette99::pick(k).to_rgba();
         chart
@@ -124,7 +170,11 @@ fn plot_shapes(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
             .label(format!("t = {:.0} s", results.sample(i).t))
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
     }
-    chart.configure_series_labels().border_style(BLACK).background_style(WHITE.mix(0.8)).draw()?;
+    chart
+        .configure_series_labels()
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.8))
+        .draw()?;
     root.present()?;
     Ok(())
 }
@@ -135,17 +185,28 @@ fn plot_history(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
     let (top, bottom) = root.split_vertically(360);
     let t = results.times();
     let energy = results.column("energy").unwrap();
-    let drift: Vec<(f64, f64)> =
-        t.iter().zip(&energy).map(|(&t, e)| (t, ((e - energy[0]) / energy[0]).abs().max(1e-17))).collect();
-    let closure: Vec<(f64, f64)> =
-        t.iter().zip(results.column("closure_error").unwrap()).map(|(&t, c)| (t, c.max(1e-17))).collect();
+    let drift: Vec<(f64, f64)> = t
+        .iter()
+        .zip(&energy)
+        .map(|(&t, e)| (t, ((e - energy[0]) / energy[0]).abs().max(1e-17)))
+        .collect();
+    let closure: Vec<(f64, f64)> = t
+        .iter()
+        .zip(results.column("closure_error").unwrap())
+        .map(|(&t, c)| (t, c.max(1e-17)))
+        .collect();
     let mut chart = ChartBuilder::on(&top)
         .caption("energy drift and closure error", ("sans-serif", 20))
         .margin(15)
         .x_label_area_size(35)
         .y_label_area_size(60)
         .build_cartesian_2d(0.0..DURATION, (1e-17..1e-8).log_scale())?;
-    chart.configure_mesh().x_desc("t (s)").y_desc("relative, or m").y_label_formatter(&|v| format!("{v:.0e}")).draw()?;
+    chart
+        .configure_mesh()
+        .x_desc("t (s)")
+        .y_desc("relative, or m")
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()?;
     chart
         .draw_series(LineSeries::new(drift, BLUE.stroke_width(2)))?
         .label("|E − E₀| / E₀")
@@ -161,17 +222,36 @@ fn plot_history(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
         .background_style(WHITE.mix(0.9))
         .draw()?;
 
-    let conditioning: Vec<(f64, f64)> = t.iter().copied().zip(results.column("conditioning").unwrap()).collect();
+    let conditioning: Vec<(f64, f64)> = t
+        .iter()
+        .copied()
+        .zip(results.column("conditioning").unwrap())
+        .collect();
     let mut chart = ChartBuilder::on(&bottom)
-        .caption("conditioning |sin| of the dependent pair's C_d; switches marked", ("sans-serif", 20))
+        .caption(
+            "conditioning |sin| of the dependent pair's C_d; switches marked",
+            ("sans-serif", 20),
+        )
         .margin(15)
         .x_label_area_size(35)
         .y_label_area_size(60)
         .build_cartesian_2d(0.0..DURATION, 0.0..1.05)?;
-    chart.configure_mesh().x_desc("t (s)").y_desc("|sin|").draw()?;
+    chart
+        .configure_mesh()
+        .x_desc("t (s)")
+        .y_desc("|sin|")
+        .draw()?;
     chart.draw_series(LineSeries::new(conditioning, GREEN.stroke_width(2)))?;
-    chart.draw_series(LineSeries::new(vec![(0.0, 0.5), (DURATION, 0.5)], BLACK.mix(0.4)))?;
-    chart.draw_series(results.switches.iter().map(|s| Circle::new((s.t, s.conditioning), 4, RED.filled())))?;
+    chart.draw_series(LineSeries::new(
+        vec![(0.0, 0.5), (DURATION, 0.5)],
+        BLACK.mix(0.4),
+    ))?;
+    chart.draw_series(
+        results
+            .switches
+            .iter()
+            .map(|s| Circle::new((s.t, s.conditioning), 4, RED.filled())),
+    )?;
     root.present()?;
     Ok(())
 }

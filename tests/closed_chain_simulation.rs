@@ -3,12 +3,12 @@
 
 mod support;
 
-use trackgen::closure::{multipliers, ClosureMethod, MultiplierOptions, PartitionOptions};
+use support::Lcg;
+use trackgen::TrackModel;
+use trackgen::closure::{ClosureMethod, MultiplierOptions, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
-use trackgen::simulate::{simulate, Output, Results, SimulationError, TrackSystem};
-use trackgen::TrackModel;
-use support::Lcg;
+use trackgen::simulate::{Output, Results, SimulationError, TrackSystem, simulate};
 
 trackgen::model! {
     /// 20 M113 shoes in zero gravity.
@@ -36,7 +36,11 @@ trackgen::model! {
 
 /// A regular polygon (closed) with random velocities projected onto the
 /// closure, `C_q q̇ = 0`.
-fn start<M: TrackModel<D>, const D: usize>(model: &M, seed: u64, speed: f64) -> (SVector<f64, D>, SVector<f64, D>) {
+fn start<M: TrackModel<D>, const D: usize>(
+    model: &M,
+    seed: u64,
+    speed: f64,
+) -> (SVector<f64, D>, SVector<f64, D>) {
     let n = D - 2;
     let mut rng = Lcg::new(seed);
     let mut q = SVector::<f64, D>::zeros();
@@ -54,7 +58,11 @@ fn relative_drift(results: &Results, column: &str, scale: f64) -> f64 {
 }
 
 fn max(results: &Results, column: &str) -> f64 {
-    results.column(column).unwrap().into_iter().fold(0.0, f64::max)
+    results
+        .column(column)
+        .unwrap()
+        .into_iter()
+        .fold(0.0, f64::max)
 }
 
 /// Test 1: a 20-link loop in zero gravity conserves energy, linear and
@@ -66,22 +74,44 @@ fn max(results: &Results, column: &str) -> f64 {
 fn free_loop_conserves_energy_and_momentum() {
     let (q, qd) = start(&Free20, 1, 2.0);
     let mut system = TrackSystem::new(Free20, q, qd, ClosureMethod::Declared).unwrap();
-    let results = simulate(&mut system, Integrator::dopri5(1e-12), 0.0, 10.0, Output::Every(0.05)).unwrap();
+    let results = simulate(
+        &mut system,
+        Integrator::dopri5(1e-12),
+        0.0,
+        10.0,
+        Output::Every(0.05),
+    )
+    .unwrap();
     assert_eq!(results.len(), 201);
     let energy = results.column("energy").unwrap()[0];
     assert!(energy > 1.0, "a moving loop: T = {energy}");
     let p = results.sample(0);
-    let momentum = p.get("momentum_x").unwrap().hypot(p.get("momentum_y").unwrap());
+    let momentum = p
+        .get("momentum_x")
+        .unwrap()
+        .hypot(p.get("momentum_y").unwrap());
     let angular = p.get("angular_momentum").unwrap().abs();
-    assert!(relative_drift(&results, "energy", energy) < 1e-8, "energy drift {:e}", relative_drift(&results, "energy", energy));
+    assert!(
+        relative_drift(&results, "energy", energy) < 1e-8,
+        "energy drift {:e}",
+        relative_drift(&results, "energy", energy)
+    );
     // Momenta are compared against their own size, or the energy's scale
     // (m·v, with v from T) where they are near zero.
     let scale_p = (2.0 * 20.0 * 18.02 * energy).sqrt();
-    for (col, size) in [("momentum_x", momentum.max(scale_p)), ("momentum_y", momentum.max(scale_p)), ("angular_momentum", angular.max(scale_p))] {
+    for (col, size) in [
+        ("momentum_x", momentum.max(scale_p)),
+        ("momentum_y", momentum.max(scale_p)),
+        ("angular_momentum", angular.max(scale_p)),
+    ] {
         let drift = relative_drift(&results, col, size);
         assert!(drift < 1e-8, "{col} drift {drift:e}");
     }
-    assert!(max(&results, "closure_error") < 1e-10, "|C| up to {:e}", max(&results, "closure_error"));
+    assert!(
+        max(&results, "closure_error") < 1e-10,
+        "|C| up to {:e}",
+        max(&results, "closure_error")
+    );
     assert!(max(&results, "closure_rate_error") < 1e-10);
 }
 
@@ -91,7 +121,14 @@ fn free_loop_conserves_energy_and_momentum() {
 fn loop_under_gravity_conserves_energy() {
     let (q, qd) = start(&Heavy20, 2, 2.0);
     let mut system = TrackSystem::new(Heavy20, q, qd, ClosureMethod::Declared).unwrap();
-    let results = simulate(&mut system, Integrator::dopri5(1e-12), 0.0, 10.0, Output::Every(0.05)).unwrap();
+    let results = simulate(
+        &mut system,
+        Integrator::dopri5(1e-12),
+        0.0,
+        10.0,
+        Output::Every(0.05),
+    )
+    .unwrap();
     let t0 = results.column("kinetic").unwrap()[0];
     let v_span = {
         let v = results.column("potential").unwrap();
@@ -106,7 +143,11 @@ fn loop_under_gravity_conserves_energy() {
 }
 
 fn partitioned(switching: bool) -> ClosureMethod {
-    ClosureMethod::Partitioning(PartitionOptions { switching, initial_pair: Some([1, 3]), ..Default::default() })
+    ClosureMethod::Partitioning(PartitionOptions {
+        switching,
+        initial_pair: Some([1, 3]),
+        ..Default::default()
+    })
 }
 
 /// Test 3: the loop's motion drives the initial dependent pair (links 1
@@ -117,8 +158,20 @@ fn partitioned(switching: bool) -> ClosureMethod {
 fn switching_avoids_singular_partitions() {
     let (q, qd) = start(&Loop8, 3, 3.0);
     let mut fixed = TrackSystem::new(Loop8, q, qd, partitioned(false)).unwrap();
-    let failure = simulate(&mut fixed, Integrator::dopri5(1e-11), 0.0, 5.0, Output::Every(0.01)).unwrap_err();
-    let SimulationError::SingularPartition { t, pair, conditioning } = failure.error else {
+    let failure = simulate(
+        &mut fixed,
+        Integrator::dopri5(1e-11),
+        0.0,
+        5.0,
+        Output::Every(0.01),
+    )
+    .unwrap_err();
+    let SimulationError::SingularPartition {
+        t,
+        pair,
+        conditioning,
+    } = failure.error
+    else {
         panic!("expected a singular partition, got {}", failure.error);
     };
     assert_eq!(pair, [1, 3]);
@@ -127,17 +180,32 @@ fn switching_avoids_singular_partitions() {
     assert!(!failure.results.is_empty() && failure.results.last().unwrap().t <= t);
 
     let mut switching = TrackSystem::new(Loop8, q, qd, partitioned(true)).unwrap();
-    let results = simulate(&mut switching, Integrator::dopri5(1e-11), 0.0, 5.0, Output::Every(0.01)).unwrap();
+    let results = simulate(
+        &mut switching,
+        Integrator::dopri5(1e-11),
+        0.0,
+        5.0,
+        Output::Every(0.01),
+    )
+    .unwrap();
     assert!(!results.switches.is_empty());
     let first = results.switches[0];
     assert_eq!(first.from, [1, 3]);
-    assert!(first.t < t, "switched at {} before the singularity at {t}", first.t);
+    assert!(
+        first.t < t,
+        "switched at {} before the singularity at {t}",
+        first.t
+    );
     assert!(first.conditioning < 0.5 && first.new_conditioning > first.conditioning);
     let energy = results.column("energy").unwrap()[0];
     assert!(relative_drift(&results, "energy", energy) < 1e-8);
     assert!(max(&results, "closure_error") < 1e-10);
     // Switching keeps the pair well conditioned all along.
-    let worst = results.column("conditioning").unwrap().into_iter().fold(1.0, f64::min);
+    let worst = results
+        .column("conditioning")
+        .unwrap()
+        .into_iter()
+        .fold(1.0, f64::min);
     assert!(worst > 0.3, "conditioning fell to {worst}");
 }
 
@@ -150,15 +218,28 @@ fn penalty_gap_falls_with_stiffness() {
     let (q, qd) = start(&Heavy20, 4, 1.0);
     let mut gaps = Vec::new();
     for stiffness in [1e4, 1e5, 1e6] {
-        let method = ClosureMethod::Penalty { stiffness, damping: 0.0 };
+        let method = ClosureMethod::Penalty {
+            stiffness,
+            damping: 0.0,
+        };
         let mut system = TrackSystem::new(Heavy20, q, qd, method).unwrap();
-        let results = simulate(&mut system, Integrator::dopri5(1e-9), 0.0, 1.0, Output::Every(0.01)).unwrap();
+        let results = simulate(
+            &mut system,
+            Integrator::dopri5(1e-9),
+            0.0,
+            1.0,
+            Output::Every(0.01),
+        )
+        .unwrap();
         let energy_scale = results.column("kinetic").unwrap()[0].max(1.0);
         let drift = relative_drift(&results, "energy", energy_scale);
         assert!(drift < 1e-5, "k = {stiffness}: energy drift {drift:e}");
         gaps.push(max(&results, "closure_error"));
     }
-    assert!(gaps[0] > 5.0 * gaps[1] && gaps[1] > 5.0 * gaps[2], "gaps {gaps:?}");
+    assert!(
+        gaps[0] > 5.0 * gaps[1] && gaps[1] > 5.0 * gaps[2],
+        "gaps {gaps:?}"
+    );
 }
 
 /// Test 5: the three methods agree on a 1 s trajectory. Partitioning and
@@ -171,15 +252,30 @@ fn three_closure_methods_agree() {
     let (q, qd) = start(&Heavy20, 5, 1.0);
     let run = |method| {
         let mut system = TrackSystem::new(Heavy20, q, qd, method).unwrap();
-        simulate(&mut system, Integrator::dopri5(1e-11), 0.0, 1.0, Output::Times(vec![0.5, 1.0])).unwrap()
+        simulate(
+            &mut system,
+            Integrator::dopri5(1e-11),
+            0.0,
+            1.0,
+            Output::Times(vec![0.5, 1.0]),
+        )
+        .unwrap()
     };
     let partition = run(ClosureMethod::Partitioning(PartitionOptions::default()));
     let multiplier = run(ClosureMethod::Multipliers(MultiplierOptions::default()));
-    let penalty = run(ClosureMethod::Penalty { stiffness: 1e8, damping: 0.0 });
+    let penalty = run(ClosureMethod::Penalty {
+        stiffness: 1e8,
+        damping: 0.0,
+    });
     let coords = |r: &Results, i: usize| r.sample(i).values[..22].to_vec();
     for i in 0..2 {
         let a = coords(&partition, i);
-        let worst = |b: Vec<f64>| a.iter().zip(&b).map(|(x, y)| (x - y).abs()).fold(0.0, f64::max);
+        let worst = |b: Vec<f64>| {
+            a.iter()
+                .zip(&b)
+                .map(|(x, y)| (x - y).abs())
+                .fold(0.0, f64::max)
+        };
         let (dm, dp) = (worst(coords(&multiplier, i)), worst(coords(&penalty, i)));
         assert!(dm < 1e-8, "multipliers differ by {dm:e}");
         assert!(dp < 1e-5, "penalty differs by {dp:e}");

@@ -3,10 +3,10 @@
 
 mod support;
 
-use trackgen::closure::{multipliers, ClosureMethod, PartitionOptions};
+use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
-use trackgen::simulate::{simulate, Output, Results, SimulationError, TrackSystem, TreeSystem};
+use trackgen::simulate::{Output, Results, SimulationError, TrackSystem, TreeSystem, simulate};
 use trackgen::{BodyLoad, TrackModel};
 
 trackgen::model! {
@@ -26,7 +26,10 @@ trackgen::model! {
 }
 
 fn tumbler_start() -> (SVector<f64, 5>, SVector<f64, 5>) {
-    (SVector::from([0.0, 0.0, 0.3, 1.2, -0.4]), SVector::from([0.5, 2.0, 3.0, -2.0, 4.0]))
+    (
+        SVector::from([0.0, 0.0, 0.3, 1.2, -0.4]),
+        SVector::from([0.5, 2.0, 3.0, -2.0, 4.0]),
+    )
 }
 
 fn final_state(results: &Results) -> Vec<f64> {
@@ -34,7 +37,11 @@ fn final_state(results: &Results) -> Vec<f64> {
 }
 
 fn distance(a: &[f64], b: &[f64]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (x - y).powi(2)).sum::<f64>().sqrt()
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).powi(2))
+        .sum::<f64>()
+        .sqrt()
 }
 
 fn tumble(integrator: Integrator) -> Vec<f64> {
@@ -47,7 +54,10 @@ fn tumble(integrator: Integrator) -> Vec<f64> {
 /// reference is Dormand-Prince at 1e-13, far below the coarsest errors.
 fn ratios(steps: [f64; 3], make: impl Fn(f64) -> Integrator) -> Vec<f64> {
     let exact = tumble(Integrator::dopri5(1e-13));
-    let errors: Vec<f64> = steps.iter().map(|&h| distance(&tumble(make(h)), &exact)).collect();
+    let errors: Vec<f64> = steps
+        .iter()
+        .map(|&h| distance(&tumble(make(h)), &exact))
+        .collect();
     errors.windows(2).map(|w| w[0] / w[1]).collect()
 }
 
@@ -65,7 +75,9 @@ fn rk4_converges_at_fourth_order() {
 /// (measured 3.6, 3.8: it approaches 4 from below).
 #[test]
 fn rosenbrock_converges_at_second_order() {
-    for r in ratios([0.0025, 0.00125, 0.000625], |step| Integrator::Rosenbrock2 { step }) {
+    for r in ratios([0.0025, 0.00125, 0.000625], |step| {
+        Integrator::Rosenbrock2 { step }
+    }) {
         assert!((r - 4.0).abs() < 0.15 * 4.0, "ratio {r}");
     }
 }
@@ -79,14 +91,29 @@ fn dopri5_dense_output_is_accurate() {
     let (q, qd) = tumbler_start();
     let run = |tol| {
         let mut system = TreeSystem::new(Tumbler, q, qd);
-        simulate(&mut system, Integrator::dopri5(tol), 0.0, 1.0, Output::Every(0.01)).unwrap()
+        simulate(
+            &mut system,
+            Integrator::dopri5(tol),
+            0.0,
+            1.0,
+            Output::Every(0.01),
+        )
+        .unwrap()
     };
     let (coarse, fine) = (run(1e-8), run(1e-13));
     assert_eq!(coarse.len(), 101);
-    assert!(coarse.stats.accepted < 60, "steps longer than the output spacing: {} steps", coarse.stats.accepted);
+    assert!(
+        coarse.stats.accepted < 60,
+        "steps longer than the output spacing: {} steps",
+        coarse.stats.accepted
+    );
     for (a, b) in coarse.iter().zip(fine.iter()) {
         assert_eq!(a.t, b.t);
-        assert!(distance(&a.values[..10], &b.values[..10]) < 1e-6, "t = {}", a.t);
+        assert!(
+            distance(&a.values[..10], &b.values[..10]) < 1e-6,
+            "t = {}",
+            a.t
+        );
     }
 }
 
@@ -108,17 +135,47 @@ fn loop6_start() -> (SVector<f64, 8>, SVector<f64, 8>) {
 #[test]
 fn stiff_penalty_needs_the_implicit_method() {
     let (q, qd) = loop6_start();
-    let method = ClosureMethod::Penalty { stiffness: 1e9, damping: 0.0 };
+    let method = ClosureMethod::Penalty {
+        stiffness: 1e9,
+        damping: 0.0,
+    };
     let mut explicit = TrackSystem::new(Loop6, q, qd, method).unwrap();
-    let failure = simulate(&mut explicit, Integrator::Rk4 { step: 2e-3 }, 0.0, 1.0, Output::Every(0.01)).unwrap_err();
-    assert!(matches!(failure.error, SimulationError::NonFinite { .. }), "{}", failure.error);
+    let failure = simulate(
+        &mut explicit,
+        Integrator::Rk4 { step: 2e-3 },
+        0.0,
+        1.0,
+        Output::Every(0.01),
+    )
+    .unwrap_err();
+    assert!(
+        matches!(failure.error, SimulationError::NonFinite { .. }),
+        "{}",
+        failure.error
+    );
     assert!(failure.error.time().unwrap() < 1.0);
 
     let mut implicit = TrackSystem::new(Loop6, q, qd, method).unwrap();
-    let results = simulate(&mut implicit, Integrator::Rosenbrock2 { step: 2e-3 }, 0.0, 1.0, Output::Every(0.01)).unwrap();
+    let results = simulate(
+        &mut implicit,
+        Integrator::Rosenbrock2 { step: 2e-3 },
+        0.0,
+        1.0,
+        Output::Every(0.01),
+    )
+    .unwrap();
     let energy = results.column("energy").unwrap();
-    let gap = results.column("closure_error").unwrap().into_iter().fold(0.0, f64::max);
-    assert!(energy.iter().all(|e| (e - energy[0]).abs() < 0.1 * energy[0].abs().max(1.0)), "energy {energy:?}");
+    let gap = results
+        .column("closure_error")
+        .unwrap()
+        .into_iter()
+        .fold(0.0, f64::max);
+    assert!(
+        energy
+            .iter()
+            .all(|e| (e - energy[0]).abs() < 0.1 * energy[0].abs().max(1.0)),
+        "energy {energy:?}"
+    );
     assert!(gap < 1e-6, "gap {gap}");
 }
 
@@ -135,17 +192,38 @@ fn non_finite_loads_stop_the_run_and_keep_results() {
             });
         let failure = simulate(&mut system, integrator, 0.0, 1.0, Output::Every(0.01)).unwrap_err();
         let t = failure.error.time().unwrap();
-        assert!((0.299..0.302).contains(&t), "{integrator:?}: stopped at {t}: {}", failure.error);
+        assert!(
+            (0.299..0.302).contains(&t),
+            "{integrator:?}: stopped at {t}: {}",
+            failure.error
+        );
         let root = match &failure.error {
-            SimulationError::StepSizeUnderflow { cause: Some(cause), .. } => cause.as_ref(),
+            SimulationError::StepSizeUnderflow {
+                cause: Some(cause), ..
+            } => cause.as_ref(),
             e => e,
         };
-        assert!(matches!(root, SimulationError::NonFinite { .. } | SimulationError::NewtonFailed { .. }), "{}", failure.error);
+        assert!(
+            matches!(
+                root,
+                SimulationError::NonFinite { .. } | SimulationError::NewtonFailed { .. }
+            ),
+            "{}",
+            failure.error
+        );
         // Every sample up to 0.29 is kept (0.30 too when a step could end
         // within rounding of it), none past the failure.
         let n = failure.results.len();
-        assert!((30..=31).contains(&n) && failure.results.last().unwrap().t <= t, "{n} samples");
-        assert!(failure.results.iter().all(|s| s.values.iter().all(|v| v.is_finite())));
+        assert!(
+            (30..=31).contains(&n) && failure.results.last().unwrap().t <= t,
+            "{n} samples"
+        );
+        assert!(
+            failure
+                .results
+                .iter()
+                .all(|s| s.values.iter().all(|v| v.is_finite()))
+        );
     }
 }
 
@@ -154,9 +232,24 @@ fn non_finite_loads_stop_the_run_and_keep_results() {
 #[test]
 fn newton_failure_is_a_typed_error() {
     let q = SVector::<f64, 8>::from_fn(|i, _| if i < 2 { 0.0 } else { 0.1 * i as f64 });
-    let options = PartitionOptions { newton_max_iterations: 1, ..Default::default() };
-    let result = TrackSystem::new(Loop6, q, SVector::zeros(), ClosureMethod::Partitioning(options));
-    assert!(matches!(result, Err(SimulationError::NewtonFailed { t: 0.0, iterations: 1, .. })));
+    let options = PartitionOptions {
+        newton_max_iterations: 1,
+        ..Default::default()
+    };
+    let result = TrackSystem::new(
+        Loop6,
+        q,
+        SVector::zeros(),
+        ClosureMethod::Partitioning(options),
+    );
+    assert!(matches!(
+        result,
+        Err(SimulationError::NewtonFailed {
+            t: 0.0,
+            iterations: 1,
+            ..
+        })
+    ));
 }
 
 /// Results write a CSV with a header and one row per sample.
@@ -164,7 +257,14 @@ fn newton_failure_is_a_typed_error() {
 fn results_write_csv() {
     let (q, qd) = loop6_start();
     let mut system = TrackSystem::new(Loop6, q, qd, ClosureMethod::Declared).unwrap();
-    let results = simulate(&mut system, Integrator::dopri5(1e-9), 0.0, 0.1, Output::Every(0.05)).unwrap();
+    let results = simulate(
+        &mut system,
+        Integrator::dopri5(1e-9),
+        0.0,
+        0.1,
+        Output::Every(0.05),
+    )
+    .unwrap();
     let mut bytes = Vec::new();
     results.write_csv(&mut bytes).unwrap();
     let text = String::from_utf8(bytes).unwrap();

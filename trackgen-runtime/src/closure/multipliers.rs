@@ -24,12 +24,21 @@ pub struct MultiplierOptions {
 
 impl Default for MultiplierOptions {
     fn default() -> Self {
-        MultiplierOptions { baumgarte: 10.0, projection: true, tolerance: 1e-13 }
+        MultiplierOptions {
+            baumgarte: 10.0,
+            projection: true,
+            tolerance: 1e-13,
+        }
     }
 }
 
 /// `γ_c − 2ω Ċ − ω² C` (Baumgarte).
-pub fn stabilised_gamma(gamma_c: Vector2<f64>, c: Vector2<f64>, c_rate: Vector2<f64>, omega: f64) -> Vector2<f64> {
+pub fn stabilised_gamma(
+    gamma_c: Vector2<f64>,
+    c: Vector2<f64>,
+    c_rate: Vector2<f64>,
+    omega: f64,
+) -> Vector2<f64> {
     gamma_c - c_rate * (2.0 * omega) - c * (omega * omega)
 }
 

@@ -59,7 +59,11 @@ pub fn conditioning<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -
     let (a, b) = (column(cq, pair[0]), column(cq, pair[1]));
     let det = a.x * b.y - a.y * b.x;
     let norms = a.norm() * b.norm();
-    if norms > 0.0 { (det / norms).abs() } else { 0.0 }
+    if norms > 0.0 {
+        (det / norms).abs()
+    } else {
+        0.0
+    }
 }
 
 /// The best-conditioned pair of links (0-based) and its conditioning.
@@ -169,5 +173,7 @@ fn column_any<const D: usize>(cq: &SMatrix<f64, 2, D>, c: usize) -> Vector2<f64>
 /// The coordinates of `q_i` that are integrated for dependent links
 /// `pair` (0-based): `R_x, R_y` and every other angle.
 pub fn independent_coordinates(dof: usize, pair: [usize; 2]) -> Vec<usize> {
-    (0..dof).filter(|&c| c != 2 + pair[0] && c != 2 + pair[1]).collect()
+    (0..dof)
+        .filter(|&c| c != 2 + pair[0] && c != 2 + pair[1])
+        .collect()
 }

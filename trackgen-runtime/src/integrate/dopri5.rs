@@ -11,9 +11,30 @@ const A: [[f64; 6]; 7] = [
     [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
     [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
     [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
-    [19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0, 0.0, 0.0],
-    [9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0, 0.0],
-    [35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0],
+    [
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+        0.0,
+        0.0,
+    ],
+    [
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+        0.0,
+    ],
+    [
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+    ],
 ];
 /// `b − b̂`: fifth-order weights minus the embedded fourth-order ones.
 const E: [f64; 7] = [
@@ -76,14 +97,22 @@ impl Dopri5 {
         }
     }
 
-    fn eval(&mut self, system: &mut dyn OdeSystem, t: f64, y: &DVector<f64>) -> Result<DVector<f64>, SimulationError> {
+    fn eval(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: f64,
+        y: &DVector<f64>,
+    ) -> Result<DVector<f64>, SimulationError> {
         let mut dy = DVector::zeros(y.len());
         self.stats.evaluations += 1;
         system.derivative(t, y, &mut dy)?;
         if dy.iter().all(|v| v.is_finite()) {
             Ok(dy)
         } else {
-            Err(SimulationError::NonFinite { t, what: "the derivative" })
+            Err(SimulationError::NonFinite {
+                t,
+                what: "the derivative",
+            })
         }
     }
 
@@ -99,16 +128,30 @@ impl Dopri5 {
     }
 
     /// Hairer's starting-step heuristic.
-    fn initial_step(&mut self, system: &mut dyn OdeSystem, t: f64, y: &DVector<f64>, f0: &DVector<f64>) -> f64 {
+    fn initial_step(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: f64,
+        y: &DVector<f64>,
+        f0: &DVector<f64>,
+    ) -> f64 {
         let d0 = self.norm(y, y, y);
         let d1 = self.norm(f0, y, y);
-        let h0 = if d0 < 1e-5 || d1 < 1e-5 { 1e-6 } else { 0.01 * d0 / d1 };
+        let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+            1e-6
+        } else {
+            0.01 * d0 / d1
+        };
         let h0 = h0.min(self.max_step);
         let d2 = match self.eval(system, t + h0, &(y + f0 * h0)) {
             Ok(f1) => self.norm(&(f1 - f0), y, y) / h0,
             Err(_) => return h0 * 0.1,
         };
-        let h1 = if d1.max(d2) <= 1e-15 { (h0 * 1e-3).max(1e-6) } else { (0.01 / d1.max(d2)).powf(0.2) };
+        let h1 = if d1.max(d2) <= 1e-15 {
+            (h0 * 1e-3).max(1e-6)
+        } else {
+            (0.01 / d1.max(d2)).powf(0.2)
+        };
         (100.0 * h0).min(h1).min(self.max_step)
     }
 
@@ -149,7 +192,13 @@ impl Dopri5 {
 }
 
 impl Stepper for Dopri5 {
-    fn step(&mut self, system: &mut dyn OdeSystem, t: &mut f64, y: &mut DVector<f64>, t_limit: f64) -> Result<(), SimulationError> {
+    fn step(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: &mut f64,
+        y: &mut DVector<f64>,
+        t_limit: f64,
+    ) -> Result<(), SimulationError> {
         let f0 = match self.f_now.take() {
             Some(f) => f,
             None => self.eval(system, *t, y)?,
@@ -161,7 +210,11 @@ impl Stepper for Dopri5 {
         loop {
             let h = self.h.min(self.max_step).min(t_limit - *t);
             if h <= 1e-14 * t.abs().max(1.0) {
-                return Err(SimulationError::StepSizeUnderflow { t: *t, step: h, cause: None });
+                return Err(SimulationError::StepSizeUnderflow {
+                    t: *t,
+                    step: h,
+                    cause: None,
+                });
             }
             match self.attempt(system, *t, y, &f0, h) {
                 Ok((y1, k, err)) if err <= 1.0 => {
@@ -178,7 +231,11 @@ impl Stepper for Dopri5 {
                     self.span = (*t, *t + h);
                     let factor = (SAFETY * err.max(1e-10).powf(-0.2)).clamp(MIN_FACTOR, MAX_FACTOR);
                     // After a rejection, do not grow the step at once.
-                    self.h = h * if rejected_last { factor.min(1.0) } else { factor };
+                    self.h = h * if rejected_last {
+                        factor.min(1.0)
+                    } else {
+                        factor
+                    };
                     self.f_now = Some(k[6].clone());
                     *t += h;
                     *y = y1;
@@ -188,7 +245,11 @@ impl Stepper for Dopri5 {
                 Ok((_, _, err)) => {
                     self.stats.rejected += 1;
                     rejected_last = true;
-                    let factor = if err.is_finite() { (SAFETY * err.powf(-0.2)).clamp(MIN_FACTOR, 1.0) } else { MIN_FACTOR };
+                    let factor = if err.is_finite() {
+                        (SAFETY * err.powf(-0.2)).clamp(MIN_FACTOR, 1.0)
+                    } else {
+                        MIN_FACTOR
+                    };
                     self.h = h * factor;
                 }
                 Err(cause) => {
@@ -196,7 +257,11 @@ impl Stepper for Dopri5 {
                     rejected_last = true;
                     self.h = h * 0.25;
                     if self.h <= 1e-14 * t.abs().max(1.0) {
-                        return Err(SimulationError::StepSizeUnderflow { t: *t, step: self.h, cause: Some(Box::new(cause)) });
+                        return Err(SimulationError::StepSizeUnderflow {
+                            t: *t,
+                            step: self.h,
+                            cause: Some(Box::new(cause)),
+                        });
                     }
                 }
             }

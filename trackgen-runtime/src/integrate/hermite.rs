@@ -15,7 +15,14 @@ pub(crate) struct HermiteStep {
 impl HermiteStep {
     pub fn empty(n: usize) -> Self {
         let z = DVector::zeros(n);
-        HermiteStep { t0: 0.0, t1: 0.0, y0: z.clone(), y1: z.clone(), f0: z.clone(), f1: z }
+        HermiteStep {
+            t0: 0.0,
+            t1: 0.0,
+            y0: z.clone(),
+            y1: z.clone(),
+            f0: z.clone(),
+            f1: z,
+        }
     }
 
     pub fn evaluate(&self, t: f64) -> DVector<f64> {

@@ -44,7 +44,12 @@ pub trait OdeSystem {
     /// Writes `f(t, y)` into `dy`. An error rejects the step in an adaptive
     /// integrator (which retries a shorter one) and ends the run in a
     /// fixed-step one.
-    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError>;
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError>;
 }
 
 /// Counters of an integration.
@@ -63,7 +68,13 @@ pub struct Stats {
 /// A one-step method driven step by step.
 pub trait Stepper {
     /// Advances `(t, y)` by one accepted step, never past `t_limit`.
-    fn step(&mut self, system: &mut dyn OdeSystem, t: &mut f64, y: &mut DVector<f64>, t_limit: f64) -> Result<(), SimulationError>;
+    fn step(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: &mut f64,
+        y: &mut DVector<f64>,
+        t_limit: f64,
+    ) -> Result<(), SimulationError>;
 
     /// `y(t)` for `t` within the last accepted step (dense output).
     fn interpolate(&self, t: f64) -> DVector<f64>;
@@ -102,14 +113,22 @@ pub enum Integrator {
 impl Integrator {
     /// Dormand-Prince with `rtol = atol = tol` and no step limit.
     pub fn dopri5(tol: f64) -> Self {
-        Integrator::Dopri5 { rtol: tol, atol: tol, max_step: f64::INFINITY }
+        Integrator::Dopri5 {
+            rtol: tol,
+            atol: tol,
+            max_step: f64::INFINITY,
+        }
     }
 
     /// A stepper for a system of `dimension` components.
     pub fn stepper(self, dimension: usize) -> Box<dyn Stepper> {
         match self {
             Integrator::Rk4 { step } => Box::new(Rk4::new(step, dimension)),
-            Integrator::Dopri5 { rtol, atol, max_step } => Box::new(Dopri5::new(rtol, atol, max_step, dimension)),
+            Integrator::Dopri5 {
+                rtol,
+                atol,
+                max_step,
+            } => Box::new(Dopri5::new(rtol, atol, max_step, dimension)),
             Integrator::Rosenbrock2 { step } => Box::new(Rosenbrock2::new(step, dimension)),
         }
     }

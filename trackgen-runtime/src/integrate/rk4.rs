@@ -19,10 +19,20 @@ pub struct Rk4 {
 impl Rk4 {
     /// A stepper with step `h` (s) for `dimension` components.
     pub fn new(h: f64, dimension: usize) -> Self {
-        Rk4 { h, f_now: None, last: HermiteStep::empty(dimension), stats: Stats::default() }
+        Rk4 {
+            h,
+            f_now: None,
+            last: HermiteStep::empty(dimension),
+            stats: Stats::default(),
+        }
     }
 
-    fn eval(&mut self, system: &mut dyn OdeSystem, t: f64, y: &DVector<f64>) -> Result<DVector<f64>, SimulationError> {
+    fn eval(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: f64,
+        y: &DVector<f64>,
+    ) -> Result<DVector<f64>, SimulationError> {
         let mut dy = DVector::zeros(y.len());
         self.stats.evaluations += 1;
         system.derivative(t, y, &mut dy)?;
@@ -31,7 +41,13 @@ impl Rk4 {
 }
 
 impl Stepper for Rk4 {
-    fn step(&mut self, system: &mut dyn OdeSystem, t: &mut f64, y: &mut DVector<f64>, t_limit: f64) -> Result<(), SimulationError> {
+    fn step(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: &mut f64,
+        y: &mut DVector<f64>,
+        t_limit: f64,
+    ) -> Result<(), SimulationError> {
         // A last step shorter than h lands exactly on t_limit.
         let h = self.h.min(t_limit - *t);
         let k1 = match self.f_now.take() {
@@ -43,7 +59,14 @@ impl Stepper for Rk4 {
         let k4 = self.eval(system, *t + h, &(&*y + &k3 * h))?;
         let y1 = &*y + (&k1 + &k2 * 2.0 + &k3 * 2.0 + &k4) * (h / 6.0);
         let f1 = self.eval(system, *t + h, &y1)?;
-        self.last = HermiteStep { t0: *t, t1: *t + h, y0: y.clone(), y1: y1.clone(), f0: k1, f1: f1.clone() };
+        self.last = HermiteStep {
+            t0: *t,
+            t1: *t + h,
+            y0: y.clone(),
+            y1: y1.clone(),
+            f0: k1,
+            f1: f1.clone(),
+        };
         self.f_now = Some(f1);
         *t += h;
         *y = y1;

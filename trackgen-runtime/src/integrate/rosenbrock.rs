@@ -32,10 +32,20 @@ pub struct Rosenbrock2 {
 impl Rosenbrock2 {
     /// A stepper with step `h` (s) for `dimension` components.
     pub fn new(h: f64, dimension: usize) -> Self {
-        Rosenbrock2 { h, f_now: None, last: HermiteStep::empty(dimension), stats: Stats::default() }
+        Rosenbrock2 {
+            h,
+            f_now: None,
+            last: HermiteStep::empty(dimension),
+            stats: Stats::default(),
+        }
     }
 
-    fn eval(&mut self, system: &mut dyn OdeSystem, t: f64, y: &DVector<f64>) -> Result<DVector<f64>, SimulationError> {
+    fn eval(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: f64,
+        y: &DVector<f64>,
+    ) -> Result<DVector<f64>, SimulationError> {
         let mut dy = DVector::zeros(y.len());
         self.stats.evaluations += 1;
         system.derivative(t, y, &mut dy)?;
@@ -43,7 +53,13 @@ impl Rosenbrock2 {
     }
 
     /// `∂f/∂y` by forward differences, step `√ε · max(|yᵢ|, 1)`.
-    fn jacobian(&mut self, system: &mut dyn OdeSystem, t: f64, y: &DVector<f64>, f0: &DVector<f64>) -> Result<DMatrix<f64>, SimulationError> {
+    fn jacobian(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: f64,
+        y: &DVector<f64>,
+        f0: &DVector<f64>,
+    ) -> Result<DMatrix<f64>, SimulationError> {
         let n = y.len();
         let mut jac = DMatrix::zeros(n, n);
         let mut yp = y.clone();
@@ -59,7 +75,13 @@ impl Rosenbrock2 {
 }
 
 impl Stepper for Rosenbrock2 {
-    fn step(&mut self, system: &mut dyn OdeSystem, t: &mut f64, y: &mut DVector<f64>, t_limit: f64) -> Result<(), SimulationError> {
+    fn step(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: &mut f64,
+        y: &mut DVector<f64>,
+        t_limit: f64,
+    ) -> Result<(), SimulationError> {
         let h = self.h.min(t_limit - *t);
         let f0 = match self.f_now.take() {
             Some(f) => f,
@@ -69,13 +91,23 @@ impl Stepper for Rosenbrock2 {
         let n = y.len();
         let w = DMatrix::<f64>::identity(n, n) - jac * (GAMMA * h);
         let lu = w.lu();
-        let singular = || SimulationError::SingularMatrix { t: *t, what: "I − γhJ of the Rosenbrock step" };
+        let singular = || SimulationError::SingularMatrix {
+            t: *t,
+            what: "I − γhJ of the Rosenbrock step",
+        };
         let k1 = lu.solve(&f0).ok_or_else(singular)?;
         let f1 = self.eval(system, *t + h, &(&*y + &k1 * h))?;
         let k2 = lu.solve(&(f1 - &k1 * 2.0)).ok_or_else(singular)?;
         let y1 = &*y + (&k1 * 1.5 + &k2 * 0.5) * h;
         let f_end = self.eval(system, *t + h, &y1)?;
-        self.last = HermiteStep { t0: *t, t1: *t + h, y0: y.clone(), y1: y1.clone(), f0, f1: f_end.clone() };
+        self.last = HermiteStep {
+            t0: *t,
+            t1: *t + h,
+            y0: y.clone(),
+            y1: y1.clone(),
+            f0,
+            f1: f_end.clone(),
+        };
         self.f_now = Some(f_end);
         *t += h;
         *y = y1;

@@ -18,7 +18,9 @@ pub enum SimulationError {
         what: &'static str,
     },
     /// Newton-Raphson on the loop closure `C(z, d) = 0` did not converge.
-    #[error("Newton-Raphson on the loop closure failed at t = {t} s: |C| = {residual:e} m after {iterations} iterations")]
+    #[error(
+        "Newton-Raphson on the loop closure failed at t = {t} s: |C| = {residual:e} m after {iterations} iterations"
+    )]
     NewtonFailed {
         /// Time, s.
         t: f64,

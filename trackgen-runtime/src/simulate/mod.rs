@@ -15,15 +15,16 @@ mod track;
 mod tree;
 
 pub use error::{SimulationError, SimulationFailure};
-pub use observe::{momentum, Momentum};
+pub use observe::{Momentum, momentum};
 pub use output::Output;
 pub use pair::Pair;
 pub use results::{Results, Sample, Switch};
-pub use run::{simulate, Simulated};
+pub use run::{Simulated, simulate};
 pub use track::TrackSystem;
 pub use tree::TreeSystem;
 
 /// Applied loads as a function of time and state: `(t, q_i, q̇_i, loads)`,
 /// one [`BodyLoad`](crate::BodyLoad) per body, zeroed before each call.
-pub type LoadFn<const D: usize> =
-    Box<dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad])>;
+pub type LoadFn<const D: usize> = Box<
+    dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad]),
+>;

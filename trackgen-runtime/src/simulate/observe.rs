@@ -37,15 +37,30 @@ pub fn momentum<M: RecursiveModel<D>, const D: usize>(
 
 /// `(m, J)` of every body, from the model's description.
 pub(crate) fn masses<M: RecursiveModel<D>, const D: usize>(model: &M) -> Vec<(f64, f64)> {
-    model.description().bodies.iter().map(|b| (b.mass, b.inertia)).collect()
+    model
+        .description()
+        .bodies
+        .iter()
+        .map(|b| (b.mass, b.inertia))
+        .collect()
 }
 
 /// Column names `prefix_0 …` for a coordinate vector: `R_x, R_y`, then one
 /// angle per body named by `angle(b)`.
-pub(crate) fn coordinate_columns(n: usize, rate: bool, angle: impl Fn(usize) -> String) -> Vec<String> {
+pub(crate) fn coordinate_columns(
+    n: usize,
+    rate: bool,
+    angle: impl Fn(usize) -> String,
+) -> Vec<String> {
     let (rx, ry) = if rate { ("vx", "vy") } else { ("x", "y") };
     [rx.to_string(), ry.to_string()]
         .into_iter()
-        .chain((0..n).map(|b| if rate { format!("omega_{}", angle(b)) } else { format!("theta_{}", angle(b)) }))
+        .chain((0..n).map(|b| {
+            if rate {
+                format!("omega_{}", angle(b))
+            } else {
+                format!("theta_{}", angle(b))
+            }
+        }))
         .collect()
 }

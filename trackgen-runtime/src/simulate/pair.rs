@@ -1,6 +1,6 @@
 use nalgebra::DVector;
 
-use super::{SimulationError, Simulated, Switch};
+use super::{Simulated, SimulationError, Switch};
 use crate::integrate::OdeSystem;
 
 /// Two subsystems integrated together, their states concatenated: the
@@ -16,7 +16,11 @@ pub struct Pair<A, B> {
 impl<A: Simulated, B: Simulated> Pair<A, B> {
     /// `first` and `second`, named for their columns (`track.energy`).
     pub fn new(first: A, first_name: &str, second: B, second_name: &str) -> Self {
-        Pair { first, second, names: (first_name.to_string(), second_name.to_string()) }
+        Pair {
+            first,
+            second,
+            names: (first_name.to_string(), second_name.to_string()),
+        }
     }
 
     /// The first subsystem.
@@ -31,7 +35,10 @@ impl<A: Simulated, B: Simulated> Pair<A, B> {
 
     fn split(&self, y: &DVector<f64>) -> (DVector<f64>, DVector<f64>) {
         let n = self.first.dimension();
-        (y.rows(0, n).into_owned(), y.rows(n, y.len() - n).into_owned())
+        (
+            y.rows(0, n).into_owned(),
+            y.rows(n, y.len() - n).into_owned(),
+        )
     }
 }
 
@@ -40,7 +47,12 @@ impl<A: Simulated, B: Simulated> OdeSystem for Pair<A, B> {
         self.first.dimension() + self.second.dimension()
     }
 
-    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
         let (ya, yb) = self.split(y);
         let (mut da, mut db) = (DVector::zeros(ya.len()), DVector::zeros(yb.len()));
         self.first.derivative(t, &ya, &mut da)?;
@@ -60,11 +72,20 @@ impl<A: Simulated, B: Simulated> Simulated for Pair<A, B> {
     fn columns(&self) -> Vec<String> {
         let (a, b) = &self.names;
         let first = self.first.columns().into_iter().map(|c| format!("{a}.{c}"));
-        let second = self.second.columns().into_iter().map(|c| format!("{b}.{c}"));
+        let second = self
+            .second
+            .columns()
+            .into_iter()
+            .map(|c| format!("{b}.{c}"));
         first.chain(second).collect()
     }
 
-    fn observe(&mut self, t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+    fn observe(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
         let (ya, yb) = self.split(y);
         self.first.observe(t, &ya, row)?;
         self.second.observe(t, &yb, row)

@@ -46,14 +46,20 @@ pub struct Sample<'a> {
 impl Sample<'_> {
     /// The value of a named column.
     pub fn get(&self, column: &str) -> Option<f64> {
-        self.columns.iter().position(|c| c == column).map(|i| self.values[i])
+        self.columns
+            .iter()
+            .position(|c| c == column)
+            .map(|i| self.values[i])
     }
 }
 
 impl Results {
     /// Empty results with these columns (time excluded).
     pub fn new(columns: Vec<String>) -> Self {
-        Results { columns, ..Default::default() }
+        Results {
+            columns,
+            ..Default::default()
+        }
     }
 
     pub(crate) fn push(&mut self, t: f64, row: &[f64]) {
@@ -85,7 +91,11 @@ impl Results {
     /// Sample `i`.
     pub fn sample(&self, i: usize) -> Sample<'_> {
         let w = self.columns.len();
-        Sample { t: self.times[i], values: &self.values[i * w..(i + 1) * w], columns: &self.columns }
+        Sample {
+            t: self.times[i],
+            values: &self.values[i * w..(i + 1) * w],
+            columns: &self.columns,
+        }
     }
 
     /// The samples in time order.
@@ -110,7 +120,11 @@ impl Results {
         let mut w = csv::Writer::from_writer(writer);
         w.write_record(std::iter::once("t").chain(self.columns.iter().map(String::as_str)))?;
         for s in self.iter() {
-            w.write_record(std::iter::once(s.t).chain(s.values.iter().copied()).map(|v| v.to_string()))?;
+            w.write_record(
+                std::iter::once(s.t)
+                    .chain(s.values.iter().copied())
+                    .map(|v| v.to_string()),
+            )?;
         }
         w.flush()?;
         Ok(())

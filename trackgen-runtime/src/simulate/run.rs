@@ -13,7 +13,12 @@ pub trait Simulated: OdeSystem {
     fn columns(&self) -> Vec<String>;
 
     /// Appends the recorded quantities at `(t, y)` to `row`.
-    fn observe(&mut self, t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError>;
+    fn observe(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError>;
 
     /// Called after every accepted step; may change the coordinates of the
     /// state (re-partitioning, projection). Returns whether it did, so the
@@ -58,16 +63,20 @@ fn run(
     results: &mut Results,
 ) -> Result<(), SimulationError> {
     let mut row = Vec::new();
-    let mut record = |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, results: &mut Results| {
-        row.clear();
-        system.observe(t, y, &mut row)?;
-        results.push(t, &row);
-        Ok::<(), SimulationError>(())
-    };
+    let mut record =
+        |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, results: &mut Results| {
+            row.clear();
+            system.observe(t, y, &mut row)?;
+            results.push(t, &row);
+            Ok::<(), SimulationError>(())
+        };
     let mut t = t0;
     let mut y = system.initial_state();
     if !y.iter().all(|v| v.is_finite()) {
-        return Err(SimulationError::NonFinite { t, what: "the initial state" });
+        return Err(SimulationError::NonFinite {
+            t,
+            what: "the initial state",
+        });
     }
     let mut next = 0;
     if matches!(output, Output::Steps) {
@@ -83,14 +92,21 @@ fn run(
         let t_old = t;
         stepper.step(system, &mut t, &mut y, t_end)?;
         if !y.iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite { t, what: "the state" });
+            return Err(SimulationError::NonFinite {
+                t,
+                what: "the state",
+            });
         }
         if t >= t_end - eps {
             t = t_end;
         }
         while let Some(to) = output.time(t0, next).filter(|&to| to <= t + eps) {
             if to > t_old {
-                let yo = if (to - t).abs() <= eps { y.clone() } else { stepper.interpolate(to) };
+                let yo = if (to - t).abs() <= eps {
+                    y.clone()
+                } else {
+                    stepper.interpolate(to)
+                };
                 record(system, to.min(t), &yo, results)?;
             }
             next += 1;

@@ -1,8 +1,10 @@
 use nalgebra::{DVector, SMatrix, SVector};
 
 use super::observe::{coordinate_columns, masses};
-use super::{momentum, LoadFn, SimulationError, Simulated, Switch};
-use crate::closure::{multipliers, partitioning, penalty, ClosureMethod, MultiplierOptions, PartitionOptions};
+use super::{LoadFn, Simulated, SimulationError, Switch, momentum};
+use crate::closure::{
+    ClosureMethod, MultiplierOptions, PartitionOptions, multipliers, partitioning, penalty,
+};
 use crate::dynamics::{solve_closed, solve_open};
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, Closure, TrackModel};
@@ -53,10 +55,17 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// the dependent angles and their rates are recovered from the others;
     /// under multipliers or a run-time penalty, `(q_i, q̇_i)` is projected
     /// onto `C = 0`, `C_q q̇ = 0`.
-    pub fn new(model: M, q: SVector<f64, D>, qd: SVector<f64, D>, method: ClosureMethod) -> Result<Self, SimulationError> {
+    pub fn new(
+        model: M,
+        q: SVector<f64, D>,
+        qd: SVector<f64, D>,
+        method: ClosureMethod,
+    ) -> Result<Self, SimulationError> {
         let declared = M::CLOSURE;
         let mode = match (method, declared) {
-            (ClosureMethod::Declared, Closure::Partitioned) => Self::partitioned(PartitionOptions::default()),
+            (ClosureMethod::Declared, Closure::Partitioned) => {
+                Self::partitioned(PartitionOptions::default())
+            }
             (ClosureMethod::Declared, _) => Mode::AsDeclared,
             (_, Closure::Open) => {
                 return Err(SimulationError::Setup(
@@ -68,10 +77,18 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                     "the track is declared with a penalty joint; declare it `partitioned` to choose the closure method at run time".into(),
                 ));
             }
-            (ClosureMethod::Partitioning(options), Closure::Partitioned) => Self::partitioned(options),
-            (ClosureMethod::Multipliers(options), Closure::Partitioned) => Mode::Multipliers(options),
+            (ClosureMethod::Partitioning(options), Closure::Partitioned) => {
+                Self::partitioned(options)
+            }
+            (ClosureMethod::Multipliers(options), Closure::Partitioned) => {
+                Mode::Multipliers(options)
+            }
             (ClosureMethod::Penalty { stiffness, damping }, Closure::Partitioned) => {
-                if !(stiffness > 0.0 && stiffness.is_finite() && damping >= 0.0 && damping.is_finite()) {
+                if !(stiffness > 0.0
+                    && stiffness.is_finite()
+                    && damping >= 0.0
+                    && damping.is_finite())
+                {
                     return Err(SimulationError::Setup(format!(
                         "penalty stiffness must be positive and damping non-negative, got k = {stiffness}, c = {damping}"
                     )));
@@ -80,7 +97,9 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             }
         };
         let description = model.description();
-        let loop_length = description.link_spans().map_or(1.0, |s| s.iter().map(|d| d.norm()).sum());
+        let loop_length = description
+            .link_spans()
+            .map_or(1.0, |s| s.iter().map(|d| d.norm()).sum());
         let mut system = TrackSystem {
             masses: masses(&model),
             model,
@@ -96,7 +115,12 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     }
 
     fn partitioned(options: PartitionOptions) -> Mode {
-        Mode::Partitioned { options, pair: [0, 1], independent: Vec::new(), guess: [0.0; 2] }
+        Mode::Partitioned {
+            options,
+            pair: [0, 1],
+            independent: Vec::new(),
+            guess: [0.0; 2],
+        }
     }
 
     /// Applied loads besides gravity (a sprocket torque, say).
@@ -123,10 +147,17 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
 
     /// `(q_i, q̇_i)` of the state `y`, the closure recovered under
     /// partitioning.
-    pub fn coordinates(&mut self, t: f64, y: &DVector<f64>) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+    pub fn coordinates(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
         match &self.mode {
             Mode::Partitioned { .. } => self.expand(t, y),
-            _ => Ok((SVector::from_fn(|i, _| y[i]), SVector::from_fn(|i, _| y[D + i]))),
+            _ => Ok((
+                SVector::from_fn(|i, _| y[i]),
+                SVector::from_fn(|i, _| y[D + i]),
+            )),
         }
     }
 
@@ -135,7 +166,11 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     }
 
     /// Makes the start consistent and returns the initial state.
-    fn start(&mut self, mut q: SVector<f64, D>, mut qd: SVector<f64, D>) -> Result<DVector<f64>, SimulationError> {
+    fn start(
+        &mut self,
+        mut q: SVector<f64, D>,
+        mut qd: SVector<f64, D>,
+    ) -> Result<DVector<f64>, SimulationError> {
         let singular = |what| SimulationError::SingularMatrix { t: 0.0, what };
         let tolerance = match &self.mode {
             Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
@@ -144,43 +179,96 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             Mode::AsDeclared => 0.0,
         };
         match &mut self.mode {
-            Mode::Partitioned { options, pair, independent, guess } => {
+            Mode::Partitioned {
+                options,
+                pair,
+                independent,
+                guess,
+            } => {
                 let cq = self.model.closure_jacobian(&q);
                 *pair = match options.initial_pair {
-                    Some([a, b]) if a != b && (1..=D - 2).contains(&a) && (1..=D - 2).contains(&b) => [a - 1, b - 1],
-                    Some(p) => return Err(SimulationError::Setup(format!("initial_pair {p:?}: two different links from 1 to {}", D - 2))),
+                    Some([a, b])
+                        if a != b && (1..=D - 2).contains(&a) && (1..=D - 2).contains(&b) =>
+                    {
+                        [a - 1, b - 1]
+                    }
+                    Some(p) => {
+                        return Err(SimulationError::Setup(format!(
+                            "initial_pair {p:?}: two different links from 1 to {}",
+                            D - 2
+                        )));
+                    }
                     None => partitioning::best_pair(&cq).0,
                 };
                 *independent = partitioning::independent_coordinates(D, *pair);
-                partitioning::recover_positions(&self.model, &mut q, *pair, tolerance, options.newton_max_iterations)
-                    .map_err(|(iterations, residual)| SimulationError::NewtonFailed { t: 0.0, iterations, residual })?;
+                partitioning::recover_positions(
+                    &self.model,
+                    &mut q,
+                    *pair,
+                    tolerance,
+                    options.newton_max_iterations,
+                )
+                .map_err(|(iterations, residual)| {
+                    SimulationError::NewtonFailed {
+                        t: 0.0,
+                        iterations,
+                        residual,
+                    }
+                })?;
                 *guess = [q[2 + pair[0]], q[2 + pair[1]]];
                 let cq = self.model.closure_jacobian(&q);
-                partitioning::recover_velocities(&cq, &mut qd, *pair).ok_or_else(|| singular("C_d at the start"))?;
+                partitioning::recover_velocities(&cq, &mut qd, *pair)
+                    .ok_or_else(|| singular("C_d at the start"))?;
                 Ok(Self::pack(independent, &q, &qd))
             }
             Mode::Multipliers(_) | Mode::Penalty { .. } => {
                 if !multipliers::project(&self.model, &mut q, &mut qd, tolerance) {
-                    return Err(SimulationError::Setup("the initial state cannot be projected onto the loop closure".into()));
+                    return Err(SimulationError::Setup(
+                        "the initial state cannot be projected onto the loop closure".into(),
+                    ));
                 }
-                Ok(DVector::from_iterator(2 * D, q.iter().chain(qd.iter()).copied()))
+                Ok(DVector::from_iterator(
+                    2 * D,
+                    q.iter().chain(qd.iter()).copied(),
+                ))
             }
-            Mode::AsDeclared => Ok(DVector::from_iterator(2 * D, q.iter().chain(qd.iter()).copied())),
+            Mode::AsDeclared => Ok(DVector::from_iterator(
+                2 * D,
+                q.iter().chain(qd.iter()).copied(),
+            )),
         }
     }
 
     fn pack(independent: &[usize], q: &SVector<f64, D>, qd: &SVector<f64, D>) -> DVector<f64> {
         let n = independent.len();
-        DVector::from_fn(2 * n, |i, _| if i < n { q[independent[i]] } else { qd[independent[i - n]] })
+        DVector::from_fn(2 * n, |i, _| {
+            if i < n {
+                q[independent[i]]
+            } else {
+                qd[independent[i - n]]
+            }
+        })
     }
 
     /// Partitioning: `(q_i, q̇_i)` from `[z, ż]`.
-    fn expand(&mut self, t: f64, y: &DVector<f64>) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+    fn expand(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
         let tolerance = match &self.mode {
             Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
             _ => unreachable!("expand is for partitioned states"),
         };
-        let Mode::Partitioned { options, pair, independent, guess } = &mut self.mode else { unreachable!() };
+        let Mode::Partitioned {
+            options,
+            pair,
+            independent,
+            guess,
+        } = &mut self.mode
+        else {
+            unreachable!()
+        };
         let n = independent.len();
         let mut q = SVector::<f64, D>::zeros();
         let mut qd = SVector::<f64, D>::zeros();
@@ -190,11 +278,22 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         }
         q[2 + pair[0]] = guess[0];
         q[2 + pair[1]] = guess[1];
-        partitioning::recover_positions(&self.model, &mut q, *pair, tolerance, options.newton_max_iterations)
-            .map_err(|(iterations, residual)| SimulationError::NewtonFailed { t, iterations, residual })?;
+        partitioning::recover_positions(
+            &self.model,
+            &mut q,
+            *pair,
+            tolerance,
+            options.newton_max_iterations,
+        )
+        .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
+            t,
+            iterations,
+            residual,
+        })?;
         *guess = [q[2 + pair[0]], q[2 + pair[1]]];
         let cq = self.model.closure_jacobian(&q);
-        partitioning::recover_velocities(&cq, &mut qd, *pair).ok_or(SimulationError::SingularMatrix { t, what: "C_d" })?;
+        partitioning::recover_velocities(&cq, &mut qd, *pair)
+            .ok_or(SimulationError::SingularMatrix { t, what: "C_d" })?;
         Ok((q, qd))
     }
 
@@ -206,11 +305,17 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     }
 
     /// `q̈_i` at `(q_i, q̇_i)` under the current method.
-    fn accelerations(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> Result<SVector<f64, D>, SimulationError> {
+    fn accelerations(
+        &mut self,
+        t: f64,
+        q: &SVector<f64, D>,
+        qd: &SVector<f64, D>,
+    ) -> Result<SVector<f64, D>, SimulationError> {
         self.fill_loads(t, q, qd);
         let mut mass = SMatrix::<f64, D, D>::zeros();
         let mut forces = SVector::<f64, D>::zeros();
-        self.model.equations_of_motion(q, qd, &self.buffer, &mut mass, &mut forces);
+        self.model
+            .equations_of_motion(q, qd, &self.buffer, &mut mass, &mut forces);
         let dynamics = |source| SimulationError::Dynamics { t, source };
         match &self.mode {
             Mode::AsDeclared => Ok(solve_open(mass, &forces).map_err(dynamics)?.qdd),
@@ -221,13 +326,32 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             }
             Mode::Multipliers(options) => {
                 let cq = self.model.closure_jacobian(q);
-                let gamma = multipliers::stabilised_gamma(self.model.closure_gamma(q, qd), self.model.closure(q), cq * qd, options.baumgarte);
-                Ok(solve_closed(mass, &forces, &cq, &gamma).map_err(dynamics)?.qdd)
+                let gamma = multipliers::stabilised_gamma(
+                    self.model.closure_gamma(q, qd),
+                    self.model.closure(q),
+                    cq * qd,
+                    options.baumgarte,
+                );
+                Ok(solve_closed(mass, &forces, &cq, &gamma)
+                    .map_err(dynamics)?
+                    .qdd)
             }
-            Mode::Partitioned { pair, independent, .. } => {
+            Mode::Partitioned {
+                pair, independent, ..
+            } => {
                 let cq = self.model.closure_jacobian(q);
-                partitioning::accelerations(&mass, &forces, &cq, &self.model.closure_gamma(q, qd), *pair, independent)
-                    .ok_or(SimulationError::SingularMatrix { t, what: "the partitioned mass matrix Bᵀ M_i B" })
+                partitioning::accelerations(
+                    &mass,
+                    &forces,
+                    &cq,
+                    &self.model.closure_gamma(q, qd),
+                    *pair,
+                    independent,
+                )
+                .ok_or(SimulationError::SingularMatrix {
+                    t,
+                    what: "the partitioned mass matrix Bᵀ M_i B",
+                })
             }
         }
     }
@@ -238,9 +362,17 @@ impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
         self.y0.len()
     }
 
-    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
         if !y.iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite { t, what: "the state" });
+            return Err(SimulationError::NonFinite {
+                t,
+                what: "the state",
+            });
         }
         let (q, qd) = self.coordinates(t, y)?;
         let qdd = self.accelerations(t, &q, &qd)?;
@@ -289,7 +421,12 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
         c
     }
 
-    fn observe(&mut self, t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+    fn observe(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
         let (q, qd) = self.coordinates(t, y)?;
         row.extend(q.iter().chain(qd.iter()));
         let kinetic = self.model.kinetic_energy(&q, &qd);
@@ -329,7 +466,10 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                 let tolerance = self.tolerance(options.tolerance);
                 let (mut q, mut qd) = self.coordinates(t, y)?;
                 if !multipliers::project(&self.model, &mut q, &mut qd, tolerance) {
-                    return Err(SimulationError::SingularMatrix { t, what: "C_q C_qᵀ of the projection" });
+                    return Err(SimulationError::SingularMatrix {
+                        t,
+                        what: "C_q C_qᵀ of the projection",
+                    });
                 }
                 for i in 0..D {
                     y[i] = q[i];
@@ -340,11 +480,23 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
             Mode::Partitioned { .. } => {
                 let (q, qd) = self.expand(t, y)?;
                 let cq = self.model.closure_jacobian(&q);
-                let Mode::Partitioned { options, pair, independent, guess } = &mut self.mode else { unreachable!() };
+                let Mode::Partitioned {
+                    options,
+                    pair,
+                    independent,
+                    guess,
+                } = &mut self.mode
+                else {
+                    unreachable!()
+                };
                 let now = partitioning::conditioning(&cq, *pair);
                 if !options.switching {
                     if now < options.singular_below {
-                        return Err(SimulationError::SingularPartition { t, pair: [pair[0] + 1, pair[1] + 1], conditioning: now });
+                        return Err(SimulationError::SingularPartition {
+                            t,
+                            pair: [pair[0] + 1, pair[1] + 1],
+                            conditioning: now,
+                        });
                     }
                     return Ok(false);
                 }

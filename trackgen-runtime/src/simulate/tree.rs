@@ -1,10 +1,10 @@
 use nalgebra::{DVector, SVector};
 
 use super::observe::{coordinate_columns, masses};
-use super::{momentum, LoadFn, SimulationError, Simulated};
+use super::{LoadFn, Simulated, SimulationError, momentum};
 use crate::dynamics::open_dynamics;
 use crate::integrate::OdeSystem;
-use crate::model::{BodyLoad, RecursiveModel};
+use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
 
 /// A body tree without constraints in motion: a chassis (spec §3), an open
 /// chain, or a track closed by its declared penalty joint. The state is
@@ -24,7 +24,14 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         let y0 = DVector::from_iterator(2 * D, q.iter().chain(qd.iter()).copied());
         let masses = masses(&model);
         let names = (0..M::BODIES).map(|b| b.to_string()).collect();
-        TreeSystem { model, y0, loads: None, buffer: vec![BodyLoad::ZERO; M::BODIES], masses, names }
+        TreeSystem {
+            model,
+            y0,
+            loads: None,
+            buffer: vec![BodyLoad::ZERO; M::BODIES],
+            masses,
+            names,
+        }
     }
 
     /// Names bodies in column names (`theta_<name>`), instead of their
@@ -50,7 +57,10 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     }
 
     fn split(y: &DVector<f64>) -> (SVector<f64, D>, SVector<f64, D>) {
-        (SVector::from_fn(|i, _| y[i]), SVector::from_fn(|i, _| y[D + i]))
+        (
+            SVector::from_fn(|i, _| y[i]),
+            SVector::from_fn(|i, _| y[D + i]),
+        )
     }
 
     fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
@@ -61,18 +71,38 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     }
 }
 
+impl<M: ChassisModel<D>, const D: usize> TreeSystem<M, D> {
+    /// A chassis starting at `(q_i, q̇_i)`, its columns named after the
+    /// frame (`chassis`) and the declared parts (`theta_sprocket`, …).
+    pub fn chassis(model: M, q: SVector<f64, D>, qd: SVector<f64, D>) -> Self {
+        let names = std::iter::once("chassis".to_string())
+            .chain(M::PARTS.iter().map(|p| p.name.to_string()))
+            .collect();
+        Self::new(model, q, qd).with_body_names(names)
+    }
+}
+
 impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
     fn dimension(&self) -> usize {
         2 * D
     }
 
-    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
         if !y.iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite { t, what: "the state" });
+            return Err(SimulationError::NonFinite {
+                t,
+                what: "the state",
+            });
         }
         let (q, qd) = Self::split(y);
         self.fill_loads(t, &q, &qd);
-        let acc = open_dynamics(&self.model, &q, &qd, &self.buffer).map_err(|source| SimulationError::Dynamics { t, source })?;
+        let acc = open_dynamics(&self.model, &q, &qd, &self.buffer)
+            .map_err(|source| SimulationError::Dynamics { t, source })?;
         for i in 0..D {
             dy[i] = qd[i];
             dy[D + i] = acc.qdd[i];
@@ -90,16 +120,41 @@ impl<M: RecursiveModel<D>, const D: usize> Simulated for TreeSystem<M, D> {
         let n = M::BODIES;
         let mut c = coordinate_columns(n, false, |b| self.names[b].clone());
         c.extend(coordinate_columns(n, true, |b| self.names[b].clone()));
-        c.extend(["kinetic", "potential", "energy", "momentum_x", "momentum_y", "angular_momentum"].map(String::from));
+        c.extend(
+            [
+                "kinetic",
+                "potential",
+                "energy",
+                "momentum_x",
+                "momentum_y",
+                "angular_momentum",
+            ]
+            .map(String::from),
+        );
         c
     }
 
-    fn observe(&mut self, _t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+    fn observe(
+        &mut self,
+        _t: f64,
+        y: &DVector<f64>,
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
         let (q, qd) = Self::split(y);
         row.extend(q.iter().chain(qd.iter()));
-        let (kinetic, potential) = (self.model.kinetic_energy(&q, &qd), self.model.potential_energy(&q));
+        let (kinetic, potential) = (
+            self.model.kinetic_energy(&q, &qd),
+            self.model.potential_energy(&q),
+        );
         let p = momentum(&self.model, &self.masses, &q, &qd);
-        row.extend([kinetic, potential, kinetic + potential, p.linear.x, p.linear.y, p.angular]);
+        row.extend([
+            kinetic,
+            potential,
+            kinetic + potential,
+            p.linear.x,
+            p.linear.y,
+            p.angular,
+        ]);
         Ok(())
     }
 }
