@@ -72,7 +72,7 @@ pub fn project<M: TrackModel<D>, const D: usize>(
         return false;
     }
     let cq = model.closure_jacobian(q);
-    match correction(&cq, cq * &*qd) {
+    match correction(&cq, cq * *qd) {
         Some(dqd) => {
             *qd -= dqd;
             true

@@ -124,7 +124,7 @@ pub fn recover_velocities<const D: usize>(
 ) -> Option<()> {
     qd[2 + pair[0]] = 0.0;
     qd[2 + pair[1]] = 0.0;
-    let rate = block(cq, pair).try_inverse()? * (cq * &*qd);
+    let rate = block(cq, pair).try_inverse()? * (cq * *qd);
     qd[2 + pair[0]] = -rate.x;
     qd[2 + pair[1]] = -rate.y;
     Some(())

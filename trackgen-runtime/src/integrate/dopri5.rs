@@ -57,6 +57,14 @@ const D: [f64; 7] = [
     69997945.0 / 29380423.0,
 ];
 
+/// A step tried: the fifth-order solution, the seven stages (the last is
+/// the slope at the solution), and the error norm.
+struct Trial {
+    y: DVector<f64>,
+    stages: Vec<DVector<f64>>,
+    error: f64,
+}
+
 const SAFETY: f64 = 0.9;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 5.0;
@@ -155,8 +163,7 @@ impl Dopri5 {
         (100.0 * h0).min(h1).min(self.max_step)
     }
 
-    /// Tries one step of length `h`: the new state, its slope, the stages,
-    /// and the error norm.
+    /// Tries one step of length `h`.
     fn attempt(
         &mut self,
         system: &mut dyn OdeSystem,
@@ -164,7 +171,7 @@ impl Dopri5 {
         y: &DVector<f64>,
         f0: &DVector<f64>,
         h: f64,
-    ) -> Result<(DVector<f64>, Vec<DVector<f64>>, f64), SimulationError> {
+    ) -> Result<Trial, SimulationError> {
         let mut k: Vec<DVector<f64>> = vec![f0.clone()];
         for s in 1..7 {
             let mut ys = y.clone();
@@ -183,8 +190,12 @@ impl Dopri5 {
                         err.axpy(h * E[j], kj, 1.0);
                     }
                 }
-                let e = self.norm(&err, y, &ys);
-                return Ok((ys, k, e));
+                let error = self.norm(&err, y, &ys);
+                return Ok(Trial {
+                    y: ys,
+                    stages: k,
+                    error,
+                });
             }
         }
         unreachable!("the loop returns at stage 7")
@@ -217,7 +228,11 @@ impl Stepper for Dopri5 {
                 });
             }
             match self.attempt(system, *t, y, &f0, h) {
-                Ok((y1, k, err)) if err <= 1.0 => {
+                Ok(Trial {
+                    y: y1,
+                    stages: k,
+                    error: err,
+                }) if err <= 1.0 => {
                     let ydiff = &y1 - &*y;
                     let bspl = &k[0] * h - &ydiff;
                     let mut d5 = DVector::zeros(y.len());
@@ -242,7 +257,7 @@ impl Stepper for Dopri5 {
                     self.stats.accepted += 1;
                     return Ok(());
                 }
-                Ok((_, _, err)) => {
+                Ok(Trial { error: err, .. }) => {
                     self.stats.rejected += 1;
                     rejected_last = true;
                     let factor = if err.is_finite() {
