@@ -39,10 +39,7 @@ fn start() -> (SVector<f64, DOF>, SVector<f64, DOF>) {
         q[2 + i] = s + 0.35 * (2.0 * s).sin();
         qd[2 + i] = 1.0 + 1.5 * (2.0 * s).cos();
     }
-    assert!(
-        multipliers::project(&Loop32, &mut q, &mut qd, 1e-14),
-        "a consistent start"
-    );
+    multipliers::project(&Loop32, &mut q, &mut qd, 1e-14).expect("a consistent start");
     (q, qd)
 }
 

@@ -48,7 +48,7 @@ fn start<M: TrackModel<D>, const D: usize>(
         q[2 + i] = 2.0 * std::f64::consts::PI * i as f64 / n as f64;
     }
     let mut qd = SVector::<f64, D>::from_fn(|_, _| speed * rng.uniform(-1.0, 1.0));
-    assert!(multipliers::project(model, &mut q, &mut qd, 1e-14));
+    multipliers::project(model, &mut q, &mut qd, 1e-14).unwrap();
     (q, qd)
 }
 

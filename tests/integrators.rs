@@ -123,7 +123,7 @@ fn loop6_start() -> (SVector<f64, 8>, SVector<f64, 8>) {
         q[2 + i] = std::f64::consts::PI * i as f64 / 3.0;
     }
     let mut qd = SVector::<f64, 8>::from_fn(|i, _| [0.0, 0.0, 1.0, -2.0, 0.5, 1.5, -1.0, 0.3][i]);
-    assert!(multipliers::project(&Loop6, &mut q, &mut qd, 1e-14));
+    multipliers::project(&Loop6, &mut q, &mut qd, 1e-14).unwrap();
     (q, qd)
 }
 
@@ -274,4 +274,26 @@ fn results_write_csv() {
     assert_eq!(lines[0].split(',').count(), 1 + results.columns().len());
     assert!(lines[3].starts_with("0.1,"));
     let _ = <Loop6 as TrackModel<8>>::CLOSURE;
+}
+
+/// Settings that would hang a run or make it meaningless are set-up
+/// errors, before any step.
+#[test]
+fn bad_settings_are_setup_errors() {
+    let (q, qd) = loop6_start();
+    let cases = [
+        (Integrator::Rk4 { step: 0.0 }, 0.0, 1.0, Output::Every(0.01)),
+        (Integrator::Rk4 { step: f64::NAN }, 0.0, 1.0, Output::Every(0.01)),
+        (Integrator::dopri5(0.0), 0.0, 1.0, Output::Every(0.01)),
+        (Integrator::dopri5(1e-9), 0.0, 1.0, Output::Every(-0.01)),
+        (Integrator::dopri5(1e-9), 1.0, 0.0, Output::Steps),
+        (Integrator::dopri5(1e-9), 0.0, f64::INFINITY, Output::Steps),
+        (Integrator::dopri5(1e-9), 0.0, 1.0, Output::Times(vec![0.5, 0.2])),
+    ];
+    for (integrator, t0, t_end, output) in cases {
+        let mut system = TrackSystem::new(Loop6, q, qd, ClosureMethod::Declared).unwrap();
+        let failure = simulate(&mut system, integrator, t0, t_end, output).unwrap_err();
+        assert!(matches!(failure.error, SimulationError::Setup(_)), "{integrator:?}: {}", failure.error);
+        assert!(failure.results.is_empty());
+    }
 }

@@ -17,7 +17,7 @@ pub mod multipliers;
 pub mod partitioning;
 pub mod penalty;
 
-pub use multipliers::MultiplierOptions;
+pub use multipliers::{MultiplierOptions, ProjectionFailure};
 pub use partitioning::PartitionOptions;
 
 /// How a simulation closes a track's loop.

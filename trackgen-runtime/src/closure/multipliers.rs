@@ -42,41 +42,53 @@ pub fn stabilised_gamma(
     gamma_c - c_rate * (2.0 * omega) - c * (omega * omega)
 }
 
+/// Why a projection onto the closure failed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ProjectionFailure {
+    /// `C_q C_qᵀ` is singular (every link of the loop parallel).
+    Singular,
+    /// Gauss-Newton did not reach the tolerance.
+    NotConverged {
+        /// Iterations taken.
+        iterations: usize,
+        /// `|C|` at the last iterate, m.
+        residual: f64,
+    },
+}
+
+/// Gauss-Newton iterations of [`project`] before giving up.
+const PROJECTION_ITERATIONS: usize = 20;
+
 /// Projects `(q_i, q̇_i)` onto the closure manifold: Gauss-Newton steps
 /// `q ← q − C_qᵀ (C_q C_qᵀ)⁻¹ C` until `|C| ≤ tolerance` (m), then
-/// `q̇ ← q̇ − C_qᵀ (C_q C_qᵀ)⁻¹ C_q q̇`. Returns `false` if `C_q C_qᵀ` is
-/// singular or 20 steps do not converge.
+/// `q̇ ← q̇ − C_qᵀ (C_q C_qᵀ)⁻¹ C_q q̇`.
 pub fn project<M: TrackModel<D>, const D: usize>(
     model: &M,
     q: &mut SVector<f64, D>,
     qd: &mut SVector<f64, D>,
     tolerance: f64,
-) -> bool {
-    let correction = |cq: &SMatrix<f64, 2, D>, v: Vector2<f64>| -> Option<SVector<f64, D>> {
-        let gram: Matrix2<f64> = cq * cq.transpose();
-        Some(cq.transpose() * (gram.try_inverse()? * v))
-    };
-    let mut converged = false;
-    for _ in 0..20 {
+) -> Result<(), ProjectionFailure> {
+    let correction =
+        |cq: &SMatrix<f64, 2, D>, v: Vector2<f64>| -> Result<SVector<f64, D>, ProjectionFailure> {
+            let gram: Matrix2<f64> = cq * cq.transpose();
+            Ok(cq.transpose() * (gram.try_inverse().ok_or(ProjectionFailure::Singular)? * v))
+        };
+    let mut iterations = 0;
+    loop {
         let c = model.closure(q);
         if c.norm() <= tolerance {
-            converged = true;
             break;
         }
-        match correction(&model.closure_jacobian(q), c) {
-            Some(dq) => *q -= dq,
-            None => return false,
+        if iterations == PROJECTION_ITERATIONS || !c.norm().is_finite() {
+            return Err(ProjectionFailure::NotConverged {
+                iterations,
+                residual: c.norm(),
+            });
         }
-    }
-    if !converged {
-        return false;
+        *q -= correction(&model.closure_jacobian(q), c)?;
+        iterations += 1;
     }
     let cq = model.closure_jacobian(q);
-    match correction(&cq, cq * *qd) {
-        Some(dqd) => {
-            *qd -= dqd;
-            true
-        }
-        None => false,
-    }
+    *qd -= correction(&cq, cq * *qd)?;
+    Ok(())
 }

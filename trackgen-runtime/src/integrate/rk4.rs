@@ -36,7 +36,14 @@ impl Rk4 {
         let mut dy = DVector::zeros(y.len());
         self.stats.evaluations += 1;
         system.derivative(t, y, &mut dy)?;
-        Ok(dy)
+        if dy.iter().all(|v| v.is_finite()) {
+            Ok(dy)
+        } else {
+            Err(SimulationError::NonFinite {
+                t,
+                what: "the derivative",
+            })
+        }
     }
 }
 

@@ -49,7 +49,14 @@ impl Rosenbrock2 {
         let mut dy = DVector::zeros(y.len());
         self.stats.evaluations += 1;
         system.derivative(t, y, &mut dy)?;
-        Ok(dy)
+        if dy.iter().all(|v| v.is_finite()) {
+            Ok(dy)
+        } else {
+            Err(SimulationError::NonFinite {
+                t,
+                what: "the derivative",
+            })
+        }
     }
 
     /// `∂f/∂y` by forward differences, step `√ε · max(|yᵢ|, 1)`.

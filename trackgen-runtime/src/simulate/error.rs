@@ -29,6 +29,19 @@ pub enum SimulationError {
         /// `|C|` at the last iterate, m.
         residual: f64,
     },
+    /// Newton-Raphson converged, but to the mirror configuration of the
+    /// dependent pair (the closure has two solutions for two angles): the
+    /// step was too long.
+    #[error("the dependent links {} and {} jumped by {jump:.2} rad at t = {t} s (mirror solution of the closure)", pair[0], pair[1])]
+    BranchJump {
+        /// Time, s.
+        t: f64,
+        /// The dependent links (numbered from 1).
+        pair: [usize; 2],
+        /// The larger change of the two angles from the last accepted
+        /// step, rad.
+        jump: f64,
+    },
     /// The adaptive integrator's step fell below what `t` can resolve.
     #[error("step size underflow at t = {t} s (step {step:e} s){}", cause.as_ref().map(|c| format!(": {c}")).unwrap_or_default())]
     StepSizeUnderflow {
@@ -78,6 +91,7 @@ impl SimulationError {
         match self {
             SimulationError::NonFinite { t, .. }
             | SimulationError::NewtonFailed { t, .. }
+            | SimulationError::BranchJump { t, .. }
             | SimulationError::StepSizeUnderflow { t, .. }
             | SimulationError::SingularPartition { t, .. }
             | SimulationError::SingularMatrix { t, .. }

@@ -93,13 +93,18 @@ impl<A: Simulated, B: Simulated> Simulated for Pair<A, B> {
 
     fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
         let (mut ya, mut yb) = self.split(y);
-        let changed = self.first.after_step(t, &mut ya)? | self.second.after_step(t, &mut yb)?;
-        if changed {
-            y.rows_mut(0, ya.len()).copy_from(&ya);
-            let n = ya.len();
+        let n = ya.len();
+        // Each subsystem's change is written back at once, so a failure of
+        // the second leaves the first's (recorded) change in the state.
+        let first = self.first.after_step(t, &mut ya)?;
+        if first {
+            y.rows_mut(0, n).copy_from(&ya);
+        }
+        let second = self.second.after_step(t, &mut yb)?;
+        if second {
             y.rows_mut(n, yb.len()).copy_from(&yb);
         }
-        Ok(changed)
+        Ok(first || second)
     }
 
     fn switches(&self) -> Vec<Switch> {

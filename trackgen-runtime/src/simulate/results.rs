@@ -63,7 +63,11 @@ impl Results {
     }
 
     pub(crate) fn push(&mut self, t: f64, row: &[f64]) {
-        debug_assert_eq!(row.len(), self.columns.len());
+        assert_eq!(
+            row.len(),
+            self.columns.len(),
+            "a row has one value per column"
+        );
         self.times.push(t);
         self.values.extend_from_slice(row);
     }
@@ -88,7 +92,15 @@ impl Results {
         self.times.is_empty()
     }
 
+    /// Sample `i`, if there is one.
+    pub fn get(&self, i: usize) -> Option<Sample<'_>> {
+        (i < self.len()).then(|| self.sample(i))
+    }
+
     /// Sample `i`.
+    ///
+    /// # Panics
+    /// If `i` is not below [`len`](Self::len); see [`get`](Self::get).
     pub fn sample(&self, i: usize) -> Sample<'_> {
         let w = self.columns.len();
         Sample {

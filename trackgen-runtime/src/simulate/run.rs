@@ -46,6 +46,9 @@ pub fn simulate(
     output: Output,
 ) -> Result<Results, SimulationFailure> {
     let mut results = Results::new(system.columns());
+    if let Err(error) = validate(integrator, t0, t_end, &output) {
+        return Err(SimulationFailure { error, results });
+    }
     let mut stepper = integrator.stepper(system.dimension());
     let outcome = run(system, stepper.as_mut(), t0, t_end, &output, &mut results);
     results.switches = system.switches();
@@ -80,16 +83,20 @@ fn run(
             what: "the initial state",
         });
     }
+    // Times closer than this are the same time.
+    let eps = 1e-12 * t_end.abs().max(t0.abs()).max(1.0);
     let mut next = 0;
     if matches!(output, Output::Steps) {
         record(system, t, &y, results)?;
     }
-    while output.time(t0, next).is_some_and(|to| to <= t0) {
-        record(system, t, &y, results)?;
+    // Requested times before the start are skipped; one at the start is
+    // the initial state.
+    while let Some(to) = output.time(t0, next).filter(|&to| to <= t0 + eps) {
+        if to >= t0 - eps {
+            record(system, t, &y, results)?;
+        }
         next += 1;
     }
-    // Times closer to the end than this are the end.
-    let eps = 1e-12 * t_end.abs().max(1.0);
     while t < t_end - eps {
         let t_old = t;
         stepper.step(system, &mut t, &mut y, t_end)?;
@@ -113,12 +120,65 @@ fn run(
             }
             next += 1;
         }
-        if matches!(output, Output::Steps) {
-            record(system, t, &y, results)?;
-        }
         if system.after_step(t, &mut y)? {
             stepper.restart();
         }
+        // After `after_step`: a projection shows in the step's row.
+        if matches!(output, Output::Steps) {
+            record(system, t, &y, results)?;
+        }
     }
     Ok(())
+}
+
+/// Settings that would hang a run or make it meaningless are set-up errors.
+fn validate(
+    integrator: Integrator,
+    t0: f64,
+    t_end: f64,
+    output: &Output,
+) -> Result<(), SimulationError> {
+    let setup = |m: String| Err(SimulationError::Setup(m));
+    if !(t0.is_finite() && t_end.is_finite() && t0 < t_end) {
+        return setup(format!(
+            "the run must go from a finite t0 to a later finite t_end, got {t0} to {t_end}"
+        ));
+    }
+    match integrator {
+        Integrator::Rk4 { step } | Integrator::Rosenbrock2 { step } => {
+            if !(step.is_finite() && step > 0.0 && t0 + step > t0) {
+                return setup(format!("the step must be finite and positive, got {step}"));
+            }
+        }
+        Integrator::Dopri5 {
+            rtol,
+            atol,
+            max_step,
+        } => {
+            if !(rtol >= 0.0
+                && atol >= 0.0
+                && rtol + atol > 0.0
+                && rtol.is_finite()
+                && atol.is_finite())
+            {
+                return setup(format!(
+                    "tolerances must be non-negative, finite and not both zero, got rtol {rtol}, atol {atol}"
+                ));
+            }
+            if max_step.is_nan() || max_step <= 0.0 {
+                return setup(format!("max_step must be positive, got {max_step}"));
+            }
+        }
+    }
+    match output {
+        Output::Every(dt) if !(dt.is_finite() && *dt > 0.0 && t0 + dt > t0) => setup(format!(
+            "the output interval must be finite and positive, got {dt}"
+        )),
+        Output::Times(times)
+            if !times.iter().all(|t| t.is_finite()) || times.windows(2).any(|w| w[1] < w[0]) =>
+        {
+            setup("output times must be finite and non-decreasing".to_string())
+        }
+        _ => Ok(()),
+    }
 }

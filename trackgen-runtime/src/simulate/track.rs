@@ -3,7 +3,8 @@ use nalgebra::{DVector, SMatrix, SVector};
 use super::observe::{coordinate_columns, masses};
 use super::{LoadFn, Simulated, SimulationError, Switch, momentum};
 use crate::closure::{
-    ClosureMethod, MultiplierOptions, PartitionOptions, multipliers, partitioning, penalty,
+    ClosureMethod, MultiplierOptions, PartitionOptions, ProjectionFailure, multipliers,
+    partitioning, penalty,
 };
 use crate::dynamics::{solve_closed, solve_open};
 use crate::integrate::OdeSystem;
@@ -152,6 +153,13 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         t: f64,
         y: &DVector<f64>,
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        if y.len() != self.y0.len() {
+            return Err(SimulationError::Setup(format!(
+                "a state of {} values for a system of {}",
+                y.len(),
+                self.y0.len()
+            )));
+        }
         match &self.mode {
             Mode::Partitioned { .. } => self.expand(t, y),
             _ => Ok((
@@ -222,11 +230,11 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 Ok(Self::pack(independent, &q, &qd))
             }
             Mode::Multipliers(_) | Mode::Penalty { .. } => {
-                if !multipliers::project(&self.model, &mut q, &mut qd, tolerance) {
-                    return Err(SimulationError::Setup(
-                        "the initial state cannot be projected onto the loop closure".into(),
-                    ));
-                }
+                multipliers::project(&self.model, &mut q, &mut qd, tolerance).map_err(|failure| {
+                    SimulationError::Setup(format!(
+                        "the initial state cannot be projected onto the loop closure: {failure:?}"
+                    ))
+                })?;
                 Ok(DVector::from_iterator(
                     2 * D,
                     q.iter().chain(qd.iter()).copied(),
@@ -290,7 +298,19 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             iterations,
             residual,
         })?;
-        *guess = [q[2 + pair[0]], q[2 + pair[1]]];
+        // The start is the last accepted state's pair (never a rejected
+        // trial's), so the result does not depend on the call history; a
+        // jump of more than π/2 is the closure's mirror solution.
+        let jump = (q[2 + pair[0]] - guess[0])
+            .abs()
+            .max((q[2 + pair[1]] - guess[1]).abs());
+        if jump > std::f64::consts::FRAC_PI_2 {
+            return Err(SimulationError::BranchJump {
+                t,
+                pair: [pair[0] + 1, pair[1] + 1],
+                jump,
+            });
+        }
         let cq = self.model.closure_jacobian(&q);
         partitioning::recover_velocities(&cq, &mut qd, *pair)
             .ok_or(SimulationError::SingularMatrix { t, what: "C_d" })?;
@@ -465,12 +485,22 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                 }
                 let tolerance = self.tolerance(options.tolerance);
                 let (mut q, mut qd) = self.coordinates(t, y)?;
-                if !multipliers::project(&self.model, &mut q, &mut qd, tolerance) {
-                    return Err(SimulationError::SingularMatrix {
-                        t,
-                        what: "C_q C_qᵀ of the projection",
-                    });
-                }
+                multipliers::project(&self.model, &mut q, &mut qd, tolerance).map_err(
+                    |failure| match failure {
+                        ProjectionFailure::Singular => SimulationError::SingularMatrix {
+                            t,
+                            what: "C_q C_qᵀ of the projection",
+                        },
+                        ProjectionFailure::NotConverged {
+                            iterations,
+                            residual,
+                        } => SimulationError::NewtonFailed {
+                            t,
+                            iterations,
+                            residual,
+                        },
+                    },
+                )?;
                 for i in 0..D {
                     y[i] = q[i];
                     y[D + i] = qd[i];
@@ -489,6 +519,7 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                 else {
                     unreachable!()
                 };
+                *guess = [q[2 + pair[0]], q[2 + pair[1]]];
                 let now = partitioning::conditioning(&cq, *pair);
                 if !options.switching {
                     if now < options.singular_below {

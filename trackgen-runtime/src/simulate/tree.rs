@@ -36,6 +36,9 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
 
     /// Names bodies in column names (`theta_<name>`), instead of their
     /// index.
+    ///
+    /// # Panics
+    /// If there is not one name per body (a programming error).
     pub fn with_body_names(mut self, names: Vec<String>) -> Self {
         assert_eq!(names.len(), M::BODIES, "one name per body");
         self.names = names;
