@@ -16,7 +16,7 @@ use trackgen::vehicles::m113::{M113Chassis, M113Track};
 use trackgen::{ChassisModel, RecursiveModel, TrackModel};
 
 const TRACK_DOF: usize = 66;
-const CHASSIS_DOF: usize = 10;
+const CHASSIS_DOF: usize = 16;
 
 /// Mean wall time of `f` over enough calls to take about 0.2 s.
 fn time(mut f: impl FnMut()) -> f64 {

@@ -283,17 +283,31 @@ fn bad_settings_are_setup_errors() {
     let (q, qd) = loop6_start();
     let cases = [
         (Integrator::Rk4 { step: 0.0 }, 0.0, 1.0, Output::Every(0.01)),
-        (Integrator::Rk4 { step: f64::NAN }, 0.0, 1.0, Output::Every(0.01)),
+        (
+            Integrator::Rk4 { step: f64::NAN },
+            0.0,
+            1.0,
+            Output::Every(0.01),
+        ),
         (Integrator::dopri5(0.0), 0.0, 1.0, Output::Every(0.01)),
         (Integrator::dopri5(1e-9), 0.0, 1.0, Output::Every(-0.01)),
         (Integrator::dopri5(1e-9), 1.0, 0.0, Output::Steps),
         (Integrator::dopri5(1e-9), 0.0, f64::INFINITY, Output::Steps),
-        (Integrator::dopri5(1e-9), 0.0, 1.0, Output::Times(vec![0.5, 0.2])),
+        (
+            Integrator::dopri5(1e-9),
+            0.0,
+            1.0,
+            Output::Times(vec![0.5, 0.2]),
+        ),
     ];
     for (integrator, t0, t_end, output) in cases {
         let mut system = TrackSystem::new(Loop6, q, qd, ClosureMethod::Declared).unwrap();
         let failure = simulate(&mut system, integrator, t0, t_end, output).unwrap_err();
-        assert!(matches!(failure.error, SimulationError::Setup(_)), "{integrator:?}: {}", failure.error);
+        assert!(
+            matches!(failure.error, SimulationError::Setup(_)),
+            "{integrator:?}: {}",
+            failure.error
+        );
         assert!(failure.results.is_empty());
     }
 }

@@ -155,3 +155,88 @@ fn vehicle_items_describe_the_declaration() {
     // The vehicle's gravity reaches the track.
     assert_eq!(CarrierTrack.description().gravity, Vector2::new(0.0, -9.81));
 }
+
+/// The M113 chassis is a two-level tree (frame → trailing arm → road
+/// wheel): generated against the reference route at random states.
+#[test]
+fn sprung_chassis_matches_reference_route() {
+    use trackgen::vehicles::m113::M113Chassis;
+    const D: usize = 16;
+    let reference = ReferenceModel::new(M113Chassis.description());
+    let depth_two = M113Chassis
+        .description()
+        .bodies
+        .iter()
+        .filter(|b| b.parent.is_some_and(|p| p > 0))
+        .count();
+    assert_eq!(
+        depth_two, 6,
+        "five road wheels and the idler hang from arms"
+    );
+    let mut rng = Lcg::new(23);
+    for _ in 0..16 {
+        let (q, qd) = rng.state::<D>();
+        let (dq, dqd) = (dvec(&q), dvec(&qd));
+        let mut mass = SMatrix::<f64, D, D>::zeros();
+        M113Chassis.mass_matrix(&q, &mut mass);
+        assert_close(
+            "(M_i)_c",
+            dmat(&mass).as_slice(),
+            reference.mass_matrix(&dq).as_slice(),
+            1e-12,
+            0.0,
+        );
+        let mut forces = SVector::<f64, D>::zeros();
+        M113Chassis.generalized_forces(&q, &qd, &[], &mut forces);
+        assert_close(
+            "(Q_i)_c",
+            forces.as_slice(),
+            reference.generalized_forces(&dq, &dqd, &[]).as_slice(),
+            1e-12,
+            0.0,
+        );
+        assert_close(
+            "H_c",
+            M113Chassis.velocity_transform(&q).as_slice(),
+            reference.velocity_transform(&dq).as_slice(),
+            1e-12,
+            0.0,
+        );
+    }
+}
+
+/// The arm torques are the negative gradient of the springs' energy (with
+/// the dampers at rest): central differences, h = 1e-6, 1e-7 relative.
+#[test]
+fn arm_torques_derive_from_the_spring_energy() {
+    use trackgen::suspension::{add_arm_torques, arm_energy};
+    use trackgen::vehicles::m113::M113Chassis;
+    const D: usize = 16;
+    let mut rng = Lcg::new(24);
+    let (q, _) = rng.state::<D>();
+    let mut loads = vec![BodyLoad::ZERO; 14];
+    add_arm_torques::<M113Chassis, D>(&q, &SVector::zeros(), &mut loads);
+    for b in 0..14 {
+        let mut e = SVector::<f64, D>::zeros();
+        e[2 + b] = 1e-6;
+        let grad = (arm_energy::<M113Chassis, D>(&(q + e))
+            - arm_energy::<M113Chassis, D>(&(q - e)))
+            / 2e-6;
+        assert!(
+            (loads[b].moment + grad).abs() < 1e-7 * 2.5e4,
+            "body {b}: torque {} vs −∂V/∂θ {}",
+            loads[b].moment,
+            -grad
+        );
+    }
+    // Every arm is sprung, and the frame takes the reactions.
+    let total: f64 = loads.iter().map(|l| l.moment).sum();
+    assert!(total.abs() < 1e-9, "internal torques sum to zero: {total}");
+    assert!(
+        <M113Chassis as ChassisModel<D>>::PARTS
+            .iter()
+            .filter(|p| p.arm.is_some())
+            .count()
+            == 6
+    );
+}

@@ -6,10 +6,12 @@
 //! Chrono's track-assembly frame (x forward, y up, origin at the sprocket
 //! centre) and the chassis centroid is declared in the same frame.
 //!
-//! What is not here yet: the road wheels' trailing arms and torsion
-//! springs, the idler's tensioner, and contact (so the track and chassis do
-//! not yet interact); the wheels are pinned to the chassis as in the paper's
-//! part I.
+//! The arms' centroids are taken midway between pivot and wheel (the source
+//! does not give them), and the idler's tensioner arm (mass 5 kg, 0.05 kg
+//! m²) is an assumption of this model; see [`TENSIONER_ARM`].
+//!
+//! What is not here yet: contact, so the track and chassis do not yet
+//! interact.
 
 /// Shoe pitch (pin to pin), m.
 pub const SHOE_PITCH: f64 = 0.154;
@@ -23,20 +25,55 @@ pub const CHASSIS_MASS: f64 = 7819.24;
 pub const CHASSIS_INERTIA: f64 = 27287.61;
 /// Sprocket gear inertia plus its axle's, kg m²: the axle spins with it.
 pub const SPROCKET_INERTIA: f64 = 0.883 + 0.4;
+/// Road-wheel trailing arm mass, kg.
+pub const ARM_MASS: f64 = 75.26;
+/// Road-wheel trailing arm inertia, kg m².
+pub const ARM_INERTIA: f64 = 0.77;
+/// Torsion bar stiffness, N m/rad.
+pub const TORSION_STIFFNESS: f64 = 2.5e4;
+/// Torsion bar damping, N m s/rad. (Chrono adds 100 N s/m shock dampers on
+/// arms 1, 2 and 5; at the arm's 0.3 m lever that is under 10 N m s/rad,
+/// left out.)
+pub const TORSION_DAMPING: f64 = 500.0;
+/// Torsion bar preload, N m, counter-clockwise in our x-forward, y-up
+/// plane: it presses the wheel down. (Chrono's −1e4 N m is about its
+/// lateral axis, which points the other way.)
+pub const TORSION_PRELOAD: f64 = 1.0e4;
+/// Length of the idler's tensioner arm, m. Chrono's tensioner is a
+/// translational spring-damper (1e6 N/m, 1.4e4 N s/m, 2e4 N preload); here
+/// the idler swings on a vertical arm of this length from a pivot above
+/// it, whose torsion spring is the equivalent (`k L²`, `c L²`, `F L`): for
+/// small swings the idler moves fore and aft as on the slide.
+pub const TENSIONER_ARM: f64 = 0.2;
 
 crate::model! {
     /// A planar M113, right side: 64 shoes, a 10-tooth front sprocket,
-    /// five road wheels and a rear idler. See the [module docs](self).
+    /// five road wheels on torsion-sprung trailing arms and a rear idler on
+    /// a tensioner arm. See the [module docs](self).
     pub vehicle M113 {
         gravity: (0.0, -9.81),
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.006, 0.406) },
         sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.245, teeth: 10 },
-        road_wheel rw1 { at: (-0.740, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305 },
-        road_wheel rw2 { at: (-1.407, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305 },
-        road_wheel rw3 { at: (-2.074, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305 },
-        road_wheel rw4 { at: (-2.740, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305 },
-        road_wheel rw5 { at: (-3.407, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305 },
-        idler idler { at: (-3.95, -0.12), mass: 25.76, inertia: 1.12, radius: 0.255 },
+        road_wheel rw1 { at: (-0.740, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
+            arm { pivot: (-0.740 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
+        road_wheel rw2 { at: (-1.407, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
+            arm { pivot: (-1.407 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
+        road_wheel rw3 { at: (-2.074, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
+            arm { pivot: (-2.074 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
+        road_wheel rw4 { at: (-2.740, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
+            arm { pivot: (-2.740 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
+        road_wheel rw5 { at: (-3.407, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
+            arm { pivot: (-3.407 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
+        idler idler { at: (-3.95, -0.12), mass: 25.76, inertia: 1.12, radius: 0.255,
+            arm { pivot: (-3.95, -0.12 + TENSIONER_ARM), mass: 5.0, inertia: 0.05,
+                  stiffness: 1.0e6 * TENSIONER_ARM * TENSIONER_ARM,
+                  damping: 1.4e4 * TENSIONER_ARM * TENSIONER_ARM,
+                  preload: -2.0e4 * TENSIONER_ARM } },
         track {
             links: 64,
             link {

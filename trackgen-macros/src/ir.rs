@@ -101,6 +101,25 @@ pub struct Part {
     pub inertia: Num,
     pub radius: Num,
     pub teeth: u32,
+    /// The trailing arm or swing arm carrying the part, if any.
+    pub arm: Option<Arm>,
+}
+
+/// An arm pinned to the chassis at `pivot`, carrying a part at its other
+/// end, sprung by a torsion spring-damper about the pivot. Its centroid is
+/// taken midway between pivot and part.
+#[derive(Clone)]
+pub struct Arm {
+    /// Pivot relative to the chassis centroid, chassis frame, m.
+    pub pivot: Vec2,
+    pub mass: Num,
+    pub inertia: Num,
+    /// N m/rad.
+    pub stiffness: Num,
+    /// N m s/rad.
+    pub damping: Num,
+    /// N m, counter-clockwise on the arm at its design angle.
+    pub preload: Num,
 }
 
 /// A property of constant expressions that the macro cannot evaluate, for

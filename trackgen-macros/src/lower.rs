@@ -8,7 +8,9 @@ use quote::{ToTokens, quote, quote_spanned};
 use syn::spanned::Spanned;
 use syn::{BinOp, Expr, Ident, Lit, Member, UnOp};
 
-use crate::ir::{Closure, ConstCheck, Item, ItemKind, Link, Model, Part, PartKind, Track, Vehicle};
+use crate::ir::{
+    Arm, Closure, ConstCheck, Item, ItemKind, Link, Model, Part, PartKind, Track, Vehicle,
+};
 use crate::num::{Num, Vec2};
 use crate::parse::{Block, Entry, Input, ItemAst, Selector};
 
@@ -638,6 +640,9 @@ impl Cx<'_> {
             chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
         for part in &mut parts {
             part.at = part.at.clone() - centroid.clone();
+            if let Some(arm) = &mut part.arm {
+                arm.pivot = arm.pivot.clone() - centroid.clone();
+            }
         }
         let mut track = track.unwrap_or(Track {
             links: Vec::new(),
@@ -672,7 +677,27 @@ impl Cx<'_> {
             keys.push("teeth");
         }
         let fields = self.fields(what, block, &keys);
-        self.sections(what, block, &[]);
+        let arms: &[&str] = match kind {
+            PartKind::RoadWheel | PartKind::Idler => &["arm"],
+            PartKind::Sprocket | PartKind::Roller => &[],
+        };
+        let mut arm = None;
+        for section in self.sections(what, block, arms) {
+            let Entry::Section {
+                kind: keyword,
+                body,
+                ..
+            } = section
+            else {
+                continue;
+            };
+            if arm.is_some() {
+                self.errors
+                    .at(keyword.span(), format!("duplicate `arm` in {what}"));
+                continue;
+            }
+            arm = Some(self.arm(body));
+        }
         let at = self.point(&fields, "at", true);
         let mass = self.positive(&fields, "mass", true);
         let inertia = self.positive(&fields, "inertia", true);
@@ -690,6 +715,38 @@ impl Cx<'_> {
             inertia: inertia?,
             radius: radius?,
             teeth: teeth?,
+            arm: match arm {
+                Some(a) => Some(a?),
+                None => None,
+            },
+        })
+    }
+
+    /// `arm { pivot, mass, inertia, stiffness, damping, preload }`.
+    fn arm(&mut self, block: &Block) -> Option<Arm> {
+        let keys = [
+            "pivot",
+            "mass",
+            "inertia",
+            "stiffness",
+            "damping",
+            "preload",
+        ];
+        let fields = self.fields("arm", block, &keys);
+        self.sections("arm", block, &[]);
+        let pivot = self.point(&fields, "pivot", true);
+        let mass = self.positive(&fields, "mass", true);
+        let inertia = self.positive(&fields, "inertia", true);
+        let stiffness = self.non_negative(&fields, "stiffness");
+        let damping = self.non_negative(&fields, "damping");
+        let preload = self.number(&fields, "preload", false).unwrap_or(Num::ZERO);
+        Some(Arm {
+            pivot: pivot?,
+            mass: mass?,
+            inertia: inertia?,
+            stiffness: stiffness?,
+            damping: damping?,
+            preload,
         })
     }
 

@@ -67,6 +67,24 @@ fn small_vehicle() {
 }
 
 #[test]
+fn vehicle_with_a_sprung_road_wheel() {
+    insta::assert_snapshot!(pretty(expand(quote! {
+        /// A road wheel on a trailing arm: a two-level chassis tree.
+        pub vehicle Sprung {
+            chassis { mass: 1000.0, inertia: 500.0 },
+            road_wheel rw1 { at: (-1.0, -0.2), mass: 35.56, inertia: 2.16, radius: 0.305,
+                arm { pivot: (-0.712, -0.066), mass: 75.26, inertia: 0.77,
+                      stiffness: 2.5e4, damping: 500.0, preload: 1e4 } },
+            track {
+                links: 3,
+                link { mass: 18.02, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
+                closure: open,
+            },
+        }
+    })));
+}
+
+#[test]
 fn errors_expand_to_compile_errors_and_stubs() {
     let out = expand(quote! {
         pub track Broken {

@@ -14,6 +14,7 @@
 //! * [`closure`]: the three ways of closing the track loop in time
 //!   (partitioning with switching, multipliers, penalty).
 //! * [`integrate`]: RK4, Dormand-Prince 5(4) and Rosenbrock ROS2.
+//! * [`suspension`]: torsion-sprung arms of road wheels and idlers.
 //! * [`simulate`]: systems of subsystems integrated into [`simulate::Results`],
 //!   with typed errors that keep the results.
 //!
@@ -30,6 +31,7 @@ pub mod integrate;
 pub mod model;
 pub mod reference;
 pub mod simulate;
+pub mod suspension;
 
 mod error;
 mod planar;
@@ -37,7 +39,7 @@ mod planar;
 pub use dynamics::Accelerations;
 pub use error::DynamicsError;
 pub use model::{
-    BodyDescription, BodyLoad, ChassisModel, ChassisPart, Closure, LoopJoint, PartKind,
+    ArmSpring, BodyDescription, BodyLoad, ChassisModel, ChassisPart, Closure, LoopJoint, PartKind,
     RecursiveModel, TrackModel, TreeDescription,
 };
 pub use planar::{rotate, rotate_derivative};

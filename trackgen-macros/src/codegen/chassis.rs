@@ -50,28 +50,63 @@ pub fn vehicle(item: &Item, vehicle: &Vehicle) -> TokenStream {
     }
 }
 
+/// The frame (body 0), then each part, preceded by its arm if it has one:
+/// a two-level tree. An arm's centroid is midway between its pivot and the
+/// part, and its frame is aligned with the chassis at the design position.
 fn chassis_tree(vehicle: &Vehicle) -> Tree {
-    let frame = Body {
+    let mut bodies = vec![Body {
         tag: FRAME.to_string(),
         mass: vehicle.chassis_mass.clone(),
         inertia: vehicle.chassis_inertia.clone(),
         parent: None,
         at_parent: Vec2::zero(),
         at_self: Vec2::zero(),
-    };
-    let parts = vehicle.parts.iter().map(|p| Body {
-        tag: p.name.to_string(),
-        mass: p.mass.clone(),
-        inertia: p.inertia.clone(),
-        parent: Some(0),
-        at_parent: p.at.clone(),
-        at_self: Vec2::zero(),
-    });
-    Tree::new(
-        std::iter::once(frame).chain(parts).collect(),
-        vehicle.gravity.clone(),
-        None,
-    )
+    }];
+    for part in &vehicle.parts {
+        let (parent, at_parent) = match &part.arm {
+            Some(arm) => {
+                let half = Num::Known(0.5);
+                // From the arm's centroid (midway) to the pivot and the part.
+                let to_pivot = (arm.pivot.clone() - part.at.clone()).scale(&half);
+                bodies.push(Body {
+                    tag: format!("{}_arm", part.name),
+                    mass: arm.mass.clone(),
+                    inertia: arm.inertia.clone(),
+                    parent: Some(0),
+                    at_parent: arm.pivot.clone(),
+                    at_self: to_pivot.clone(),
+                });
+                (bodies.len() - 1, -to_pivot)
+            }
+            None => (0, part.at.clone()),
+        };
+        bodies.push(Body {
+            tag: part.name.to_string(),
+            mass: part.mass.clone(),
+            inertia: part.inertia.clone(),
+            parent: Some(parent),
+            at_parent,
+            at_self: Vec2::zero(),
+        });
+    }
+    Tree::new(bodies, vehicle.gravity.clone(), None)
+}
+
+/// Body indices of each part and its arm, in [`chassis_tree`]'s order.
+fn body_indices(vehicle: &Vehicle) -> Vec<(usize, Option<usize>)> {
+    let mut next = 1;
+    vehicle
+        .parts
+        .iter()
+        .map(|p| {
+            let arm = p.arm.as_ref().map(|_| {
+                next += 1;
+                next - 1
+            });
+            next += 1;
+            (next - 1, arm)
+        })
+        .collect()
 }
 
 fn chassis_type(
@@ -88,7 +123,8 @@ fn chassis_type(
     let doc = format!(
         "The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it."
     );
-    let parts = vehicle.parts.iter().enumerate().map(|(i, p)| {
+    let indices = body_indices(vehicle);
+    let parts = vehicle.parts.iter().zip(&indices).map(|(p, &(body, arm_body))| {
         let label = p.name.to_string();
         let kind = match p.kind {
             PartKind::Sprocket => quote!(Sprocket),
@@ -98,23 +134,42 @@ fn chassis_type(
         };
         let radius: &Num = &p.radius;
         let teeth = p.teeth;
-        let body = i + 1;
+        let arm = match (&p.arm, arm_body) {
+            (Some(a), Some(arm_body)) => {
+                let (k, c, t) = (&a.stiffness, &a.damping, &a.preload);
+                quote! {
+                    ::core::option::Option::Some(#rt::runtime::ArmSpring {
+                        body: #arm_body, stiffness: #k, damping: #c, preload: #t,
+                    })
+                }
+            }
+            _ => quote!(::core::option::Option::None),
+        };
         quote! {
             #rt::runtime::ChassisPart {
                 name: #label, kind: #rt::runtime::PartKind::#kind, body: #body, radius: #radius, teeth: #teeth,
+                arm: #arm,
             }
         }
     });
-    let indices = vehicle.parts.iter().enumerate().map(|(i, p)| {
-        let konst = format_ident!("{}", p.name.to_string().to_uppercase());
-        let doc = format!(
-            "Body index of the {} `{}`.",
-            p.kind.keyword().replace('_', " "),
-            p.name
-        );
-        let body = i + 1;
-        quote! { #[doc = #doc] pub const #konst: usize = #body; }
-    });
+    let index_consts = vehicle
+        .parts
+        .iter()
+        .zip(&indices)
+        .map(|(p, &(body, arm_body))| {
+            let konst = format_ident!("{}", p.name.to_string().to_uppercase());
+            let doc = format!(
+                "Body index of the {} `{}`.",
+                p.kind.keyword().replace('_', " "),
+                p.name
+            );
+            let arm = arm_body.map(|arm| {
+                let konst = format_ident!("{}_ARM", p.name.to_string().to_uppercase());
+                let doc = format!("Body index of the arm carrying `{}`.", p.name);
+                quote! { #[doc = #doc] pub const #konst: usize = #arm; }
+            });
+            quote! { #[doc = #doc] pub const #konst: usize = #body; #arm }
+        });
     quote! {
         #[doc = #doc]
         #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
@@ -123,7 +178,7 @@ fn chassis_type(
         impl #name {
             /// Body index of the chassis frame.
             pub const FRAME: usize = 0;
-            #(#indices)*
+            #(#index_consts)*
         }
 
         #recursive

@@ -179,4 +179,23 @@ pub struct ChassisPart {
     pub radius: f64,
     /// Number of sprocket teeth; 0 for other parts.
     pub teeth: u32,
+    /// The sprung arm carrying the part, if any.
+    pub arm: Option<ArmSpring>,
+}
+
+/// An arm between the chassis and a part (a road wheel's trailing arm, an
+/// idler's tensioner arm) with a torsion spring-damper about its pivot:
+/// the torque on the arm is `τ = preload − k φ − c φ̇`, with `φ` the arm's
+/// angle relative to the chassis from its design position (counter-clockwise
+/// positive); the chassis takes `−τ`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ArmSpring {
+    /// Index of the arm's body in the chassis tree.
+    pub body: usize,
+    /// `k`, N m/rad.
+    pub stiffness: f64,
+    /// `c`, N m s/rad.
+    pub damping: f64,
+    /// Torque at the design position, N m.
+    pub preload: f64,
 }

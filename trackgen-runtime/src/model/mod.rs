@@ -6,7 +6,7 @@ mod load;
 mod traits;
 
 pub use description::{
-    BodyDescription, ChassisPart, Closure, LoopJoint, PartKind, TreeDescription,
+    ArmSpring, BodyDescription, ChassisPart, Closure, LoopJoint, PartKind, TreeDescription,
 };
 pub use load::BodyLoad;
 pub use traits::{ChassisModel, RecursiveModel, TrackModel};

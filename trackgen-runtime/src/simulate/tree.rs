@@ -76,11 +76,17 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
 
 impl<M: ChassisModel<D>, const D: usize> TreeSystem<M, D> {
     /// A chassis starting at `(q_i, q̇_i)`, its columns named after the
-    /// frame (`chassis`) and the declared parts (`theta_sprocket`, …).
+    /// frame (`chassis`), the declared parts (`theta_sprocket`, …) and
+    /// their arms (`theta_rw1_arm`).
     pub fn chassis(model: M, q: SVector<f64, D>, qd: SVector<f64, D>) -> Self {
-        let names = std::iter::once("chassis".to_string())
-            .chain(M::PARTS.iter().map(|p| p.name.to_string()))
-            .collect();
+        let mut names: Vec<String> = (0..M::BODIES).map(|b| b.to_string()).collect();
+        names[0] = "chassis".to_string();
+        for part in M::PARTS {
+            names[part.body] = part.name.to_string();
+            if let Some(arm) = &part.arm {
+                names[arm.body] = format!("{}_arm", part.name);
+            }
+        }
         Self::new(model, q, qd).with_body_names(names)
     }
 }

@@ -1,0 +1,49 @@
+//! Sprung arms of a chassis: road wheels on trailing arms with torsion
+//! springs and dampers, an idler on a tensioner arm (see [`ArmSpring`]).
+
+use nalgebra::SVector;
+
+use crate::model::{ArmSpring, BodyLoad, ChassisModel};
+
+/// The arm's angle `φ` from its design position relative to the chassis,
+/// rad, and its rate, rad/s.
+fn deflection<const D: usize>(
+    arm: &ArmSpring,
+    q: &SVector<f64, D>,
+    qd: &SVector<f64, D>,
+) -> (f64, f64) {
+    (q[2 + arm.body] - q[2], qd[2 + arm.body] - qd[2])
+}
+
+/// Adds every arm's torque `τ = preload − k φ − c φ̇` to its load, and `−τ`
+/// to the chassis frame's.
+///
+/// # Panics
+/// If `loads` does not have one entry per body (a programming error).
+pub fn add_arm_torques<M: ChassisModel<D>, const D: usize>(
+    q: &SVector<f64, D>,
+    qd: &SVector<f64, D>,
+    loads: &mut [BodyLoad],
+) {
+    assert_eq!(loads.len(), M::BODIES, "one load per body");
+    for arm in M::PARTS.iter().filter_map(|p| p.arm.as_ref()) {
+        let (phi, rate) = deflection(arm, q, qd);
+        let torque = arm.preload - arm.stiffness * phi - arm.damping * rate;
+        loads[arm.body].moment += torque;
+        loads[0].moment -= torque;
+    }
+}
+
+/// The springs' potential energy `Σ ½ k φ² − preload φ`, J (zero at the
+/// design position), so that the spring torques are its negative gradient.
+pub fn arm_energy<M: ChassisModel<D>, const D: usize>(q: &SVector<f64, D>) -> f64 {
+    let zero = SVector::<f64, D>::zeros();
+    M::PARTS
+        .iter()
+        .filter_map(|p| p.arm.as_ref())
+        .map(|arm| {
+            let (phi, _) = deflection(arm, q, &zero);
+            0.5 * arm.stiffness * phi * phi - arm.preload * phi
+        })
+        .sum()
+}
