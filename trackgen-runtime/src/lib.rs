@@ -14,7 +14,12 @@
 //! * [`closure`]: the three ways of closing the track loop in time
 //!   (partitioning with switching, multipliers, penalty).
 //! * [`integrate`]: RK4, Dormand-Prince 5(4) and Rosenbrock ROS2.
+//! * [`assembly`]: wrapping a track round its wheels at t = 0.
+//! * [`contact`]: terrain, contact laws, and the link-ground, link-wheel
+//!   and sprocket contact pairs.
 //! * [`suspension`]: torsion-sprung arms of road wheels and idlers.
+//! * [`vehicle`]: a vehicle in motion — track and chassis coupled by
+//!   contact, sprung arms, drive, initial assembly.
 //! * [`simulate`]: systems of subsystems integrated into [`simulate::Results`],
 //!   with typed errors that keep the results.
 //!
@@ -25,13 +30,16 @@
 
 #![warn(missing_docs)]
 
+pub mod assembly;
 pub mod closure;
+pub mod contact;
 pub mod dynamics;
 pub mod integrate;
 pub mod model;
 pub mod reference;
 pub mod simulate;
 pub mod suspension;
+pub mod vehicle;
 
 mod error;
 mod planar;

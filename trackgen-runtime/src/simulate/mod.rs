@@ -24,7 +24,8 @@ pub use track::TrackSystem;
 pub use tree::TreeSystem;
 
 /// Applied loads as a function of time and state: `(t, q_i, q̇_i, loads)`,
-/// one [`BodyLoad`](crate::BodyLoad) per body, zeroed before each call.
+/// one [`BodyLoad`](crate::BodyLoad) per body. The slice holds the loads
+/// already acting (contact, in a vehicle): add to it (`+=`).
 pub type LoadFn<const D: usize> = Box<
     dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad]),
 >;

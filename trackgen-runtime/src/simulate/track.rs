@@ -43,6 +43,8 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     y0: DVector<f64>,
     loads: Option<LoadFn<D>>,
     buffer: Vec<BodyLoad>,
+    /// Loads set by an enclosing system (contact), added to `loads`.
+    external: Vec<BodyLoad>,
     masses: Vec<(f64, f64)>,
     /// `Σ |d̄ʲ|`, m: the scale of closure tolerances.
     loop_length: f64,
@@ -108,6 +110,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             y0: DVector::zeros(0),
             loads: None,
             buffer: vec![BodyLoad::ZERO; M::BODIES],
+            external: vec![BodyLoad::ZERO; M::BODIES],
             loop_length,
             switches: Vec::new(),
         };
@@ -318,14 +321,20 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     }
 
     fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
-        self.buffer.fill(BodyLoad::ZERO);
+        self.buffer.copy_from_slice(&self.external);
         if let Some(f) = &mut self.loads {
             f(t, q, qd, &mut self.buffer);
         }
     }
 
+    /// Loads from outside the subsystem (contact with another), added to
+    /// gravity and the load function until set again.
+    pub(crate) fn set_external(&mut self, loads: &[BodyLoad]) {
+        self.external.copy_from_slice(loads);
+    }
+
     /// `q̈_i` at `(q_i, q̇_i)` under the current method.
-    fn accelerations(
+    pub(crate) fn accelerations(
         &mut self,
         t: f64,
         q: &SVector<f64, D>,

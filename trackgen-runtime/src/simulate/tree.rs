@@ -14,6 +14,8 @@ pub struct TreeSystem<M: RecursiveModel<D>, const D: usize> {
     y0: DVector<f64>,
     loads: Option<LoadFn<D>>,
     buffer: Vec<BodyLoad>,
+    /// Loads set by an enclosing system (contact), added to `loads`.
+    external: Vec<BodyLoad>,
     masses: Vec<(f64, f64)>,
     names: Vec<String>,
 }
@@ -29,6 +31,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
             y0,
             loads: None,
             buffer: vec![BodyLoad::ZERO; M::BODIES],
+            external: vec![BodyLoad::ZERO; M::BODIES],
             masses,
             names,
         }
@@ -59,7 +62,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         &self.model
     }
 
-    fn split(y: &DVector<f64>) -> (SVector<f64, D>, SVector<f64, D>) {
+    pub(crate) fn split(y: &DVector<f64>) -> (SVector<f64, D>, SVector<f64, D>) {
         (
             SVector::from_fn(|i, _| y[i]),
             SVector::from_fn(|i, _| y[D + i]),
@@ -67,10 +70,16 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     }
 
     fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
-        self.buffer.fill(BodyLoad::ZERO);
+        self.buffer.copy_from_slice(&self.external);
         if let Some(f) = &mut self.loads {
             f(t, q, qd, &mut self.buffer);
         }
+    }
+
+    /// Loads from outside the subsystem (contact with another), added to
+    /// gravity and the load function until set again.
+    pub(crate) fn set_external(&mut self, loads: &[BodyLoad]) {
+        self.external.copy_from_slice(loads);
     }
 }
 

@@ -1,0 +1,100 @@
+//! Contact between the track and the world (paper part II, which we design
+//! here; spec §4): the normal and friction laws, the terrain, and the three
+//! contact pairs — link and ground, link and wheel (road wheels, idler,
+//! rollers), link pins and sprocket teeth.
+//!
+//! Every pair evaluates forces from positions and velocities only, and
+//! returns them as [`BodyLoad`](crate::BodyLoad)s on both bodies, so the
+//! subsystems stay decoupled everywhere else (spec §3).
+
+pub mod ground;
+pub mod law;
+pub mod shoe;
+pub mod sprocket;
+pub mod terrain;
+pub mod wheel;
+
+pub use law::{Friction, NormalLaw};
+pub use shoe::ShoeGeometry;
+pub use terrain::{Terrain, TerrainError};
+
+use nalgebra::Vector2;
+
+/// A point of a body in motion: where it is and how fast it moves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BodyState {
+    /// Centroid, m.
+    pub position: Vector2<f64>,
+    /// Angle, rad.
+    pub angle: f64,
+    /// Centroid velocity, m/s.
+    pub velocity: Vector2<f64>,
+    /// Angular velocity, rad/s.
+    pub omega: f64,
+}
+
+impl BodyState {
+    /// The global offset `A ū` of body point `ū` from the centroid.
+    pub fn arm(&self, local: Vector2<f64>) -> Vector2<f64> {
+        crate::planar::rotate(self.angle, local)
+    }
+
+    /// Global position of body point `ū`.
+    pub fn point(&self, local: Vector2<f64>) -> Vector2<f64> {
+        self.position + self.arm(local)
+    }
+
+    /// Velocity of the material point at global offset `arm` from the
+    /// centroid: `Ṙ + ω × arm`.
+    pub fn velocity_at(&self, arm: Vector2<f64>) -> Vector2<f64> {
+        self.velocity + Vector2::new(-arm.y, arm.x) * self.omega
+    }
+}
+
+/// One contact's force on the first body of the pair, at a global point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactForce {
+    /// Contact point, m.
+    pub point: Vector2<f64>,
+    /// Force on the first body (the track link), N.
+    pub force: Vector2<f64>,
+    /// Normal component (≥ 0), N.
+    pub normal: f64,
+    /// Penetration, m.
+    pub penetration: f64,
+    /// Power the contact dissipates (damping and friction), W.
+    pub dissipation: f64,
+    /// Elastic energy stored in the contact, J.
+    pub potential: f64,
+}
+
+impl ContactForce {
+    /// A contact's force from its laws: normal `n` (unit, on the first
+    /// body), relative velocity `v` of the first body's point against the
+    /// second's.
+    pub(crate) fn evaluate(
+        normal_law: &NormalLaw,
+        friction: &Friction,
+        point: Vector2<f64>,
+        n: Vector2<f64>,
+        penetration: f64,
+        v: Vector2<f64>,
+    ) -> ContactForce {
+        let rate = -v.dot(&n);
+        let fn_ = normal_law.force(penetration, rate);
+        let t = Vector2::new(-n.y, n.x);
+        let slip = v.dot(&t);
+        let ft = friction.force(fn_, slip);
+        // Power lost: the normal force beyond its elastic part times the
+        // closing rate, and friction against slip.
+        let dissipation = (fn_ - normal_law.elastic_force(penetration)) * rate - ft * slip;
+        ContactForce {
+            point,
+            force: n * fn_ + t * ft,
+            normal: fn_,
+            penetration,
+            dissipation,
+            potential: normal_law.potential(penetration),
+        }
+    }
+}

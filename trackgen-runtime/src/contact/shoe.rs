@@ -1,0 +1,55 @@
+//! Where a track shoe touches the world, in link coordinates.
+//!
+//! Link frames follow the declaration: x from the joint `ū1` to `ū2`, y to
+//! the left. Links are numbered so that the loop runs counter-clockwise
+//! (seen with x forward and y up): the left of every link is the inside
+//! of the loop, where the wheels run, and the right is the ground side.
+
+use nalgebra::Vector2;
+
+/// The contact features of a track shoe, link frame, m.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ShoeGeometry {
+    /// Points of the ground face (grouser tips, pad corners).
+    pub ground_points: Vec<Vector2<f64>>,
+    /// The inner running face, a segment: road wheels, idler and rollers
+    /// roll on it.
+    pub inner_face: [Vector2<f64>; 2],
+    /// Centres of the cylinders the sprocket teeth engage.
+    pub pins: Vec<Vector2<f64>>,
+    /// Radius of those cylinders, m.
+    pub pin_radius: f64,
+}
+
+impl ShoeGeometry {
+    /// The M113 single-pin shoe (`shared/spec/m113.md`): pitch 0.154 m,
+    /// height 0.06 m with the pin axis at mid-height (so the faces are
+    /// 0.03 m either side of the pitch line), sprocket cylinders of radius
+    /// 0.015 m at x = +0.0535 and −0.061 m. The ground face touches at two
+    /// points 0.12 m apart.
+    pub fn m113() -> ShoeGeometry {
+        ShoeGeometry {
+            ground_points: vec![Vector2::new(-0.06, -0.03), Vector2::new(0.06, -0.03)],
+            inner_face: [Vector2::new(-0.077, 0.03), Vector2::new(0.077, 0.03)],
+            pins: vec![Vector2::new(0.0535, 0.0), Vector2::new(-0.061, 0.0)],
+            pin_radius: 0.015,
+        }
+    }
+
+    /// Distance from the pitch line to the inner face, m: how far the
+    /// track's pitch line runs outside a wheel's rim.
+    pub fn inner_offset(&self) -> f64 {
+        0.5 * (self.inner_face[0].y + self.inner_face[1].y)
+    }
+
+    /// The largest distance of any feature from the link centroid, m: the
+    /// radius of the link's bounding circle for culling.
+    pub fn extent(&self) -> f64 {
+        self.ground_points
+            .iter()
+            .chain(self.inner_face.iter())
+            .map(|p| p.norm())
+            .chain(self.pins.iter().map(|p| p.norm() + self.pin_radius))
+            .fold(0.0, f64::max)
+    }
+}

@@ -1,0 +1,107 @@
+//! Sprocket engagement: the shoes' pins against an arc tooth profile (the
+//! M113's), so that drive torque becomes track tension.
+//!
+//! The profile is a circle of radius `addendum` with a circular gap cut
+//! between every two teeth: gap `k` is the arc of radius `arc_radius`
+//! centred at `arc_centre_radius` from the sprocket centre, at angle
+//! `θ_s + (k + ½)·2π/teeth`. Tooth material is what lies inside the
+//! addendum circle and outside every gap. A pin (a cylinder) inside the
+//! addendum circle that reaches beyond its gap's arc penetrates a tooth by
+//! `|p − g| + r_pin − r_arc` and is pushed back toward the arc centre `g`.
+
+use nalgebra::Vector2;
+
+use super::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry};
+use crate::model::BodyLoad;
+
+/// An arc tooth profile, m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ToothProfile {
+    /// Number of teeth.
+    pub teeth: u32,
+    /// Tip circle radius.
+    pub addendum: f64,
+    /// Distance of each gap arc's centre from the sprocket centre.
+    pub arc_centre_radius: f64,
+    /// Radius of each gap arc.
+    pub arc_radius: f64,
+}
+
+impl ToothProfile {
+    /// The M113 sprocket (`shared/spec/m113.md`): 10 teeth, addendum
+    /// 0.2605 m, arcs of 0.089 m centred 0.3 m out.
+    pub fn m113() -> ToothProfile {
+        ToothProfile { teeth: 10, addendum: 0.2605, arc_centre_radius: 0.3, arc_radius: 0.089 }
+    }
+
+    /// The angular pitch of the teeth, rad.
+    pub fn pitch_angle(&self) -> f64 {
+        2.0 * std::f64::consts::PI / self.teeth as f64
+    }
+
+    /// The centre of the gap nearest to global point `p`.
+    pub fn nearest_gap(&self, sprocket: &BodyState, p: Vector2<f64>) -> Vector2<f64> {
+        let r = p - sprocket.position;
+        let beta = self.pitch_angle();
+        let alpha = r.y.atan2(r.x) - sprocket.angle;
+        let k = (alpha / beta - 0.5).round();
+        let phi = sprocket.angle + (k + 0.5) * beta;
+        sprocket.position + Vector2::new(phi.cos(), phi.sin()) * self.arc_centre_radius
+    }
+}
+
+/// The sprocket's contact laws and profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SprocketContact {
+    /// The teeth.
+    pub profile: ToothProfile,
+    /// Normal law.
+    pub normal: NormalLaw,
+    /// Friction.
+    pub friction: Friction,
+}
+
+impl SprocketContact {
+    /// Forces between the sprocket and the pins of every link near it: on
+    /// the links into `link_loads`, the reactions into `sprocket_load`.
+    pub fn apply(
+        &self,
+        sprocket: &BodyState,
+        links: &[BodyState],
+        shoe: &ShoeGeometry,
+        link_loads: &mut [BodyLoad],
+        sprocket_load: &mut BodyLoad,
+        mut each: impl FnMut(usize, &ContactForce),
+    ) {
+        let reach = self.profile.addendum + shoe.extent();
+        let pin_reach = self.profile.addendum + shoe.pin_radius;
+        for (i, link) in links.iter().enumerate() {
+            if (link.position - sprocket.position).norm_squared() > reach * reach {
+                continue;
+            }
+            for local in &shoe.pins {
+                let pin_arm = link.arm(*local);
+                let pin = link.position + pin_arm;
+                if (pin - sprocket.position).norm_squared() > pin_reach * pin_reach {
+                    continue;
+                }
+                let gap = self.profile.nearest_gap(sprocket, pin);
+                let out = pin - gap;
+                let distance = out.norm();
+                let penetration = distance + shoe.pin_radius - self.profile.arc_radius;
+                if penetration <= 0.0 || distance == 0.0 {
+                    continue;
+                }
+                let normal = -out / distance;
+                let point = gap + out / distance * self.profile.arc_radius;
+                let link_arm = point - link.position;
+                let wheel_arm = point - sprocket.position;
+                let relative = link.velocity_at(link_arm) - sprocket.velocity_at(wheel_arm);
+                let contact = ContactForce::evaluate(&self.normal, &self.friction, point, normal, penetration, relative);
+                link_loads[i] = link_loads[i].plus(BodyLoad::force_at(contact.force, link_arm));
+                *sprocket_load = sprocket_load.plus(BodyLoad::force_at(-contact.force, wheel_arm));
+                each(i, &contact);
+            }
+        }
+    }
+}

@@ -1,0 +1,143 @@
+//! The ground under the vehicle: a height profile `y = h(x)`.
+
+use thiserror::Error;
+
+/// A terrain profile. Heights in m, positions along x in m.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Terrain {
+    /// `h = height`.
+    Flat {
+        /// m.
+        height: f64,
+    },
+    /// Flat at `height` up to `start`, then rising with `slope` (rise over
+    /// run; negative for a descent).
+    Ramp {
+        /// m.
+        height: f64,
+        /// m.
+        start: f64,
+        /// Rise over run.
+        slope: f64,
+    },
+    /// A cosine bump `h = height/2 (1 + cos(2π (x − centre)/width))` for
+    /// `|x − centre| < width/2`, flat (0) elsewhere.
+    Bump {
+        /// m.
+        centre: f64,
+        /// Base width, m.
+        width: f64,
+        /// Peak height, m.
+        height: f64,
+    },
+    /// `h = amplitude sin(2π x / wavelength)`.
+    Sine {
+        /// m.
+        amplitude: f64,
+        /// m.
+        wavelength: f64,
+    },
+    /// Piecewise linear through points of strictly increasing x, flat
+    /// beyond the ends. Build it with [`Terrain::table`].
+    Table(Vec<(f64, f64)>),
+}
+
+/// A terrain that cannot be built.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum TerrainError {
+    /// A table needs two points at least.
+    #[error("a terrain table needs at least 2 points, got {0}")]
+    TooFewPoints(usize),
+    /// Table x values must increase strictly.
+    #[error("terrain table out of order: point {index} has x = {x} m, not after the previous x = {previous} m")]
+    OutOfOrder {
+        /// Index of the offending point.
+        index: usize,
+        /// Its x, m.
+        x: f64,
+        /// The previous point's x, m.
+        previous: f64,
+    },
+    /// A value is NaN or infinite.
+    #[error("terrain: non-finite value at point {0}")]
+    NonFinite(usize),
+}
+
+impl Terrain {
+    /// A table terrain, checked: finite points in strictly increasing x.
+    pub fn table(points: Vec<(f64, f64)>) -> Result<Terrain, TerrainError> {
+        if points.len() < 2 {
+            return Err(TerrainError::TooFewPoints(points.len()));
+        }
+        for (i, &(x, y)) in points.iter().enumerate() {
+            if !(x.is_finite() && y.is_finite()) {
+                return Err(TerrainError::NonFinite(i));
+            }
+            if i > 0 && x <= points[i - 1].0 {
+                return Err(TerrainError::OutOfOrder { index: i, x, previous: points[i - 1].0 });
+            }
+        }
+        Ok(Terrain::Table(points))
+    }
+
+    /// `h(x)`, m.
+    pub fn height(&self, x: f64) -> f64 {
+        self.height_and_slope(x).0
+    }
+
+    /// `(h(x), h'(x))`.
+    pub fn height_and_slope(&self, x: f64) -> (f64, f64) {
+        match self {
+            Terrain::Flat { height } => (*height, 0.0),
+            Terrain::Ramp { height, start, slope } => {
+                if x <= *start { (*height, 0.0) } else { (height + slope * (x - start), *slope) }
+            }
+            Terrain::Bump { centre, width, height } => {
+                let u = x - centre;
+                if u.abs() >= width / 2.0 {
+                    (0.0, 0.0)
+                } else {
+                    let k = 2.0 * std::f64::consts::PI / width;
+                    (height / 2.0 * (1.0 + (k * u).cos()), -height / 2.0 * k * (k * u).sin())
+                }
+            }
+            Terrain::Sine { amplitude, wavelength } => {
+                let k = 2.0 * std::f64::consts::PI / wavelength;
+                (amplitude * (k * x).sin(), amplitude * k * (k * x).cos())
+            }
+            Terrain::Table(points) => {
+                let (first, last) = (points[0], points[points.len() - 1]);
+                if x <= first.0 {
+                    return (first.1, 0.0);
+                }
+                if x >= last.0 {
+                    return (last.1, 0.0);
+                }
+                let i = points.partition_point(|p| p.0 <= x);
+                let (a, b) = (points[i - 1], points[i]);
+                let slope = (b.1 - a.1) / (b.0 - a.0);
+                (a.1 + slope * (x - a.0), slope)
+            }
+        }
+    }
+
+    /// The highest point of the terrain over `[x0, x1]`, m: for culling.
+    pub fn max_height(&self, x0: f64, x1: f64) -> f64 {
+        match self {
+            Terrain::Flat { height } => *height,
+            Terrain::Ramp { .. } => self.height(x0).max(self.height(x1)),
+            Terrain::Bump { centre, width, height } => {
+                if x1 > centre - width / 2.0 && x0 < centre + width / 2.0 {
+                    if (x0..=x1).contains(centre) { *height } else { self.height(x0).max(self.height(x1)) }
+                } else {
+                    0.0
+                }
+            }
+            Terrain::Sine { amplitude, .. } => amplitude.abs(),
+            Terrain::Table(points) => {
+                let inside = points.iter().filter(|p| p.0 > x0 && p.0 < x1).map(|p| p.1);
+                inside.fold(self.height(x0).max(self.height(x1)), f64::max)
+            }
+        }
+    }
+}

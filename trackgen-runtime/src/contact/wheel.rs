@@ -1,0 +1,64 @@
+//! Link-wheel contact: a wheel's rim (a circle) against the shoes' inner
+//! running faces (segments). Road wheels, idler and rollers.
+
+use nalgebra::Vector2;
+
+use super::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry};
+use crate::model::BodyLoad;
+
+/// The contact laws between rims and shoes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct WheelContact {
+    /// Normal law.
+    pub normal: NormalLaw,
+    /// Friction.
+    pub friction: Friction,
+}
+
+impl WheelContact {
+    /// Forces between the wheel (`radius`, m) and every link near it: on
+    /// the links into `link_loads`, the reactions into `wheel_load`.
+    ///
+    /// Only links whose bounding circle reaches the rim are examined.
+    pub fn apply(
+        &self,
+        wheel: &BodyState,
+        radius: f64,
+        links: &[BodyState],
+        shoe: &ShoeGeometry,
+        link_loads: &mut [BodyLoad],
+        wheel_load: &mut BodyLoad,
+        mut each: impl FnMut(usize, &ContactForce),
+    ) {
+        let reach = radius + shoe.extent();
+        for (i, link) in links.iter().enumerate() {
+            let offset = link.position - wheel.position;
+            if offset.norm_squared() > reach * reach {
+                continue;
+            }
+            let (a, b) = (link.point(shoe.inner_face[0]), link.point(shoe.inner_face[1]));
+            // The rim must be on the face's inner side (the link's left).
+            let inward = link.arm(Vector2::new(0.0, 1.0));
+            if (wheel.position - a).dot(&inward) <= 0.0 {
+                continue;
+            }
+            let ab = b - a;
+            let s = ((wheel.position - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
+            let point = a + ab * s;
+            let to_face = point - wheel.position;
+            let distance = to_face.norm();
+            let penetration = radius - distance;
+            if penetration <= 0.0 || distance == 0.0 {
+                continue;
+            }
+            let normal = to_face / distance;
+            let link_arm = point - link.position;
+            let wheel_arm = point - wheel.position;
+            let relative = link.velocity_at(link_arm) - wheel.velocity_at(wheel_arm);
+            let contact = ContactForce::evaluate(&self.normal, &self.friction, point, normal, penetration, relative);
+            link_loads[i] = link_loads[i].plus(BodyLoad::force_at(contact.force, link_arm));
+            *wheel_load = wheel_load.plus(BodyLoad::force_at(-contact.force, wheel_arm));
+            each(i, &contact);
+        }
+    }
+}

@@ -1,0 +1,117 @@
+//! Placing a declared vehicle at t = 0: chassis on the ground at its design
+//! position, idler tensioner set to take up the track's slack, track
+//! wrapped round its wheels, sprocket turned so that a gap holds a joint.
+
+use nalgebra::{SVector, Vector2};
+
+use crate::assembly::{excess, wrap, AssemblyError, PitchCircle};
+use crate::contact::sprocket::ToothProfile;
+use crate::contact::{ShoeGeometry, Terrain};
+use crate::model::{ChassisModel, PartKind, TrackModel};
+
+/// Initial coordinates of a vehicle.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Assembled<const DT: usize, const DC: usize> {
+    /// Track `q_i`.
+    pub track: SVector<f64, DT>,
+    /// Chassis `q_i`.
+    pub chassis: SVector<f64, DC>,
+}
+
+/// The sag left in the top span when a tensioner takes up the rest, as a
+/// fraction of the span.
+const TENSIONED_SAG: f64 = 0.005;
+
+/// The wheels' pitch circles in wrap order (counter-clockwise), each with
+/// its index in `C::PARTS`.
+fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
+    chassis: &C,
+    qc: &SVector<f64, DC>,
+    pitch: f64,
+    shoe: &ShoeGeometry,
+    profile: &ToothProfile,
+) -> Vec<(usize, PitchCircle)> {
+    let mut centres = vec![Vector2::zeros(); C::BODIES];
+    chassis.body_positions(qc, &mut centres);
+    let mut circles: Vec<(usize, PitchCircle)> = C::PARTS
+        .iter()
+        .enumerate()
+        .map(|(i, part)| {
+            let radius = match part.kind {
+                // The joints sit in the gaps: a regular polygon of the pitch.
+                PartKind::Sprocket => pitch / (2.0 * (std::f64::consts::PI / profile.teeth as f64).sin()),
+                // The shoes' inner faces (chords) rest on the rim.
+                _ => (part.radius + shoe.inner_offset()).hypot(pitch / 2.0),
+            };
+            (i, PitchCircle { centre: centres[part.body], radius })
+        })
+        .collect();
+    let middle = circles.iter().map(|c| c.1.centre).sum::<Vector2<f64>>() / circles.len().max(1) as f64;
+    let angle = |c: &PitchCircle| (c.centre - middle).y.atan2((c.centre - middle).x);
+    circles.sort_by(|a, b| angle(&a.1).total_cmp(&angle(&b.1)));
+    circles
+}
+
+/// Assembles the vehicle with its chassis centroid at `x` (m), the track
+/// resting `clearance` (m) above the terrain. If the idler is on an arm,
+/// the arm is swung so that the track fits with a nearly straight top span
+/// (the tensioner takes up the slack); otherwise the top span sags.
+pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
+    track: &T,
+    chassis: &C,
+    shoe: &ShoeGeometry,
+    profile: &ToothProfile,
+    terrain: &Terrain,
+    x: f64,
+    clearance: f64,
+) -> Result<Assembled<DT, DC>, AssemblyError> {
+    let pitch = track.description().link_spans().map_or(0.0, |s| s[0].norm());
+    let mut qc = SVector::<f64, DC>::zeros();
+    qc[0] = x;
+    let sprocket_index = |circles: &[(usize, PitchCircle)]| {
+        circles.iter().position(|(i, _)| C::PARTS[*i].kind == PartKind::Sprocket)
+    };
+    let tensioner = C::PARTS.iter().find(|p| p.kind == PartKind::Idler).and_then(|p| p.arm);
+    if let Some(arm) = tensioner {
+        let fits = |phi: f64| {
+            let mut q = qc;
+            q[2 + arm.body] = phi;
+            let circles = pitch_circles(chassis, &q, pitch, shoe, profile);
+            let wheels: Vec<PitchCircle> = circles.iter().map(|c| c.1).collect();
+            let span = sprocket_index(&circles).unwrap_or(0);
+            let length = (wheels[(span + 1) % wheels.len()].centre - wheels[span].centre).norm();
+            excess(track, &wheels, span, TENSIONED_SAG * length)
+        };
+        let (mut lo, mut hi) = (-0.6, 0.6);
+        if fits(lo).signum() != fits(hi).signum() {
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if fits(mid).signum() == fits(lo).signum() { lo = mid } else { hi = mid }
+            }
+            qc[2 + arm.body] = 0.5 * (lo + hi);
+        }
+    }
+    let mut circles = pitch_circles(chassis, &qc, pitch, shoe, profile);
+    // Down onto the ground: the lowest wheel's shoes touch it.
+    let depth = -shoe.ground_points.iter().map(|p| p.y).fold(0.0, f64::min);
+    let drop = circles
+        .iter()
+        .map(|(_, c)| c.centre.y - c.radius - depth - terrain.height(c.centre.x) - clearance)
+        .fold(f64::INFINITY, f64::min);
+    qc[1] -= drop;
+    for (_, c) in &mut circles {
+        c.centre.y -= drop;
+    }
+    let wheels: Vec<PitchCircle> = circles.iter().map(|c| c.1).collect();
+    let sprocket = sprocket_index(&circles);
+    let (qt, joints) = wrap(track, &wheels, sprocket)?;
+    if let Some(s) = sprocket {
+        let part = &C::PARTS[circles[s].0];
+        let (centre, radius) = (wheels[s].centre, wheels[s].radius);
+        let off = |p: &Vector2<f64>| ((p - centre).norm() - radius).abs();
+        let nearest = joints.iter().min_by(|a, b| off(a).total_cmp(&off(b))).expect("joints");
+        let psi = (nearest - centre).y.atan2((nearest - centre).x);
+        qc[2 + part.body] = psi - 0.5 * profile.pitch_angle();
+    }
+    Ok(Assembled { track: qt, chassis: qc })
+}

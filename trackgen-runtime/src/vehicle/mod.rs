@@ -1,0 +1,12 @@
+//! A vehicle in motion: track and chassis coupled by contact (spec §3-4),
+//! sprung arms, a sprocket drive, on a terrain.
+
+mod assemble;
+mod drive;
+mod system;
+mod tension;
+
+pub use assemble::{assemble, Assembled};
+pub use drive::Drive;
+pub use system::{VehicleConfig, VehicleSystem};
+pub use tension::tensions;

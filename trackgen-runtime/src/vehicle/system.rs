@@ -1,0 +1,332 @@
+use nalgebra::{DVector, SVector, Vector2};
+
+use super::{tensions, Drive};
+use crate::closure::ClosureMethod;
+use crate::contact::ground::GroundContact;
+use crate::contact::sprocket::{SprocketContact, ToothProfile};
+use crate::contact::wheel::WheelContact;
+use crate::contact::{BodyState, Friction, NormalLaw, ShoeGeometry, Terrain};
+use crate::integrate::OdeSystem;
+use crate::model::{BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
+use crate::simulate::{SimulationError, Simulated, Switch, TrackSystem, TreeSystem};
+use crate::suspension::{add_arm_torques, arm_energy};
+
+/// How a vehicle meets the world: shoe geometry, the three contact pairs,
+/// and the drive.
+#[derive(Debug)]
+pub struct VehicleConfig {
+    /// The shoes' contact features.
+    pub shoe: ShoeGeometry,
+    /// Track on terrain.
+    pub ground: GroundContact,
+    /// Track on road wheels, idler and rollers.
+    pub wheels: WheelContact,
+    /// Track on sprocket teeth.
+    pub sprocket: SprocketContact,
+    /// The sprocket drive.
+    pub drive: Drive,
+    /// The link (numbered from 1) whose joint to the next is recorded as
+    /// `tension`.
+    pub tension_link: usize,
+}
+
+impl VehicleConfig {
+    /// The M113's contact (shoes and sprocket of `shared/spec/m113.md`,
+    /// friction 0.8 on the ground and 0.4 on wheels and sprocket) on
+    /// `terrain`, driven by `drive`.
+    ///
+    /// Stiffnesses: ground 2e6 N/m per shoe point, rims and teeth 1e7 N/m:
+    /// static penetrations under a millimetre, and contact periods of
+    /// 10-15 ms on an 18 kg shoe. Dampings give the shoe's contact modes a
+    /// damping ratio of about 0.3-0.5. Friction is regularised over
+    /// 0.05 m/s of slip.
+    pub fn m113(terrain: Terrain, drive: Drive) -> VehicleConfig {
+        let slip = 0.05;
+        VehicleConfig {
+            shoe: ShoeGeometry::m113(),
+            ground: GroundContact {
+                terrain,
+                normal: NormalLaw::KelvinVoigt { stiffness: 2e6, damping: 4e3 },
+                friction: Friction { mu: 0.8, slip },
+            },
+            wheels: WheelContact {
+                normal: NormalLaw::KelvinVoigt { stiffness: 1e7, damping: 1e4 },
+                friction: Friction { mu: 0.4, slip },
+            },
+            sprocket: SprocketContact {
+                profile: ToothProfile::m113(),
+                normal: NormalLaw::KelvinVoigt { stiffness: 1e7, damping: 1e4 },
+                friction: Friction { mu: 0.4, slip },
+            },
+            drive,
+            tension_link: 1,
+        }
+    }
+}
+
+/// What the contacts did at one evaluation.
+#[derive(Debug, Clone, Copy, Default)]
+struct ContactSummary {
+    ground_normal: f64,
+    ground_penetration: f64,
+    wheel_penetration: f64,
+    sprocket_penetration: f64,
+    potential: f64,
+    dissipation: f64,
+    torque: f64,
+    integral_rate: f64,
+}
+
+/// A vehicle: its track and chassis integrated together, coupled by the
+/// contact forces, with sprung arms and a drive.
+///
+/// State: the track's, the chassis' `[q_i, q̇_i]`, then the drive
+/// controller's integral (rad), the motor's work and the dissipated work
+/// (J, integrated alongside so the energy balance is exact to the
+/// integration tolerance).
+pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> {
+    track: TrackSystem<T, DT>,
+    chassis: TreeSystem<C, DC>,
+    config: VehicleConfig,
+    /// Index of the sprocket in `C::PARTS`.
+    sprocket: Option<usize>,
+    sprocket_radius: f64,
+    track_loads: Vec<BodyLoad>,
+    chassis_loads: Vec<BodyLoad>,
+    y0: DVector<f64>,
+}
+
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> VehicleSystem<T, DT, C, DC> {
+    /// The vehicle starting at rest at the given coordinates (see
+    /// [`assemble`](super::assemble)), its loop closed by `closure`.
+    pub fn new(
+        track: T,
+        chassis: C,
+        q_track: SVector<f64, DT>,
+        q_chassis: SVector<f64, DC>,
+        closure: ClosureMethod,
+        config: VehicleConfig,
+    ) -> Result<Self, SimulationError> {
+        if config.tension_link == 0 || config.tension_link > T::BODIES {
+            return Err(SimulationError::Setup(format!(
+                "tension_link {} is not a link (1 to {})",
+                config.tension_link,
+                T::BODIES
+            )));
+        }
+        let track = TrackSystem::new(track, q_track, SVector::zeros(), closure)?;
+        let chassis = TreeSystem::chassis(chassis, q_chassis, SVector::zeros());
+        let sprocket = C::PARTS.iter().position(|p| p.kind == PartKind::Sprocket);
+        let pitch = track.model().description().link_spans().map_or(0.0, |s| s[0].norm());
+        let sprocket_radius = pitch / (2.0 * (std::f64::consts::PI / config.sprocket.profile.teeth as f64).sin());
+        let (a, b) = (track.initial_state(), chassis.initial_state());
+        let y0 = DVector::from_iterator(a.len() + b.len() + 3, a.iter().chain(b.iter()).copied().chain([0.0; 3]));
+        Ok(VehicleSystem {
+            track,
+            chassis,
+            config,
+            sprocket,
+            sprocket_radius,
+            track_loads: vec![BodyLoad::ZERO; T::BODIES],
+            chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
+            y0,
+        })
+    }
+
+    /// The configuration.
+    pub fn config(&self) -> &VehicleConfig {
+        &self.config
+    }
+
+    /// The track subsystem.
+    pub fn track(&self) -> &TrackSystem<T, DT> {
+        &self.track
+    }
+
+    /// The sprocket's pitch radius, m: track speed over sprocket speed.
+    pub fn sprocket_radius(&self) -> f64 {
+        self.sprocket_radius
+    }
+
+    fn split(&self, y: &DVector<f64>) -> (DVector<f64>, DVector<f64>, [f64; 3]) {
+        let (nt, nc) = (self.track.dimension(), 2 * DC);
+        (
+            y.rows(0, nt).into_owned(),
+            y.rows(nt, nc).into_owned(),
+            [y[nt + nc], y[nt + nc + 1], y[nt + nc + 2]],
+        )
+    }
+
+    fn states<M: RecursiveModel<D>, const D: usize>(model: &M, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> Vec<BodyState> {
+        let n = M::BODIES;
+        let (mut r, mut v) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
+        model.body_positions(q, &mut r);
+        model.body_velocities(q, qd, &mut v);
+        (0..n).map(|b| BodyState { position: r[b], angle: q[2 + b], velocity: v[b], omega: qd[2 + b] }).collect()
+    }
+
+    /// Contact, suspension and drive loads at a state, into the load
+    /// buffers.
+    fn loads(
+        &mut self,
+        t: f64,
+        (qt, qdt): (&SVector<f64, DT>, &SVector<f64, DT>),
+        (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
+        integral: f64,
+    ) -> ContactSummary {
+        let links = Self::states(self.track.model(), qt, qdt);
+        let bodies = Self::states(self.chassis.model(), qc, qdc);
+        self.track_loads.fill(BodyLoad::ZERO);
+        self.chassis_loads.fill(BodyLoad::ZERO);
+        let mut s = ContactSummary::default();
+        let config = &self.config;
+        config.ground.apply(&links, &config.shoe, &mut self.track_loads, |_, c| {
+            s.ground_normal += c.normal;
+            s.ground_penetration = s.ground_penetration.max(c.penetration);
+            s.potential += c.potential;
+            s.dissipation += c.dissipation;
+        });
+        for part in C::PARTS {
+            let body = &bodies[part.body];
+            let load = &mut self.chassis_loads[part.body];
+            if part.kind == PartKind::Sprocket {
+                config.sprocket.apply(body, &links, &config.shoe, &mut self.track_loads, load, |_, c| {
+                    s.sprocket_penetration = s.sprocket_penetration.max(c.penetration);
+                    s.potential += c.potential;
+                    s.dissipation += c.dissipation;
+                });
+            } else {
+                config.wheels.apply(body, part.radius, &links, &config.shoe, &mut self.track_loads, load, |_, c| {
+                    s.wheel_penetration = s.wheel_penetration.max(c.penetration);
+                    s.potential += c.potential;
+                    s.dissipation += c.dissipation;
+                });
+            }
+            if let Some(arm) = &part.arm {
+                let rate = qdc[2 + arm.body] - qdc[2];
+                s.dissipation += arm.damping * rate * rate;
+            }
+        }
+        add_arm_torques::<C, DC>(qc, qdc, &mut self.chassis_loads);
+        if let Some(i) = self.sprocket {
+            let body = C::PARTS[i].body;
+            let omega = qdc[2 + body] - qdc[2];
+            let (torque, rate) = config.drive.torque(t, omega, self.sprocket_radius, integral);
+            self.chassis_loads[body].moment += torque;
+            self.chassis_loads[0].moment -= torque;
+            s.torque = torque;
+            s.integral_rate = rate;
+        }
+        s
+    }
+
+    fn sprocket_omega(&self, qdc: &SVector<f64, DC>) -> f64 {
+        self.sprocket.map_or(0.0, |i| qdc[2 + C::PARTS[i].body] - qdc[2])
+    }
+}
+
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> OdeSystem for VehicleSystem<T, DT, C, DC> {
+    fn dimension(&self) -> usize {
+        self.y0.len()
+    }
+
+    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+        let (yt, yc, [integral, _, _]) = self.split(y);
+        let (qt, qdt) = self.track.coordinates(t, &yt)?;
+        let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
+        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
+        self.track.set_external(&self.track_loads);
+        self.chassis.set_external(&self.chassis_loads);
+        let (mut dt, mut dc) = (DVector::zeros(yt.len()), DVector::zeros(yc.len()));
+        self.track.derivative(t, &yt, &mut dt)?;
+        self.chassis.derivative(t, &yc, &mut dc)?;
+        let (nt, nc) = (yt.len(), yc.len());
+        dy.rows_mut(0, nt).copy_from(&dt);
+        dy.rows_mut(nt, nc).copy_from(&dc);
+        dy[nt + nc] = s.integral_rate;
+        dy[nt + nc + 1] = s.torque * self.sprocket_omega(&qdc);
+        dy[nt + nc + 2] = s.dissipation;
+        Ok(())
+    }
+}
+
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> Simulated for VehicleSystem<T, DT, C, DC> {
+    fn initial_state(&self) -> DVector<f64> {
+        self.y0.clone()
+    }
+
+    fn columns(&self) -> Vec<String> {
+        let mut c: Vec<String> = self.track.columns().into_iter().map(|c| format!("track.{c}")).collect();
+        c.extend(self.chassis.columns().into_iter().map(|c| format!("chassis.{c}")));
+        c.extend(
+            [
+                "x",
+                "y",
+                "pitch",
+                "speed",
+                "sprocket_speed",
+                "sprocket_torque",
+                "tension",
+                "ground_normal",
+                "ground_penetration",
+                "wheel_penetration",
+                "sprocket_penetration",
+                "energy",
+                "motor_work",
+                "dissipated",
+            ]
+            .map(String::from),
+        );
+        c
+    }
+
+    fn observe(&mut self, t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+        let (yt, yc, [integral, work, dissipated]) = self.split(y);
+        self.track.observe(t, &yt, row)?;
+        self.chassis.observe(t, &yc, row)?;
+        let (qt, qdt) = self.track.coordinates(t, &yt)?;
+        let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
+        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
+        self.track.set_external(&self.track_loads);
+        let qdd = self.track.accelerations(t, &qt, &qdt)?;
+        let tension = tensions(self.track.model(), &qt, &qdt, &qdd, &self.track_loads)
+            .map_or(f64::NAN, |all| all[self.config.tension_link - 1]);
+        let energy = self.track.model().kinetic_energy(&qt, &qdt)
+            + self.track.model().potential_energy(&qt)
+            + self.chassis.model().kinetic_energy(&qc, &qdc)
+            + self.chassis.model().potential_energy(&qc)
+            + arm_energy::<C, DC>(&qc)
+            + s.potential;
+        row.extend([
+            qc[0],
+            qc[1],
+            qc[2],
+            qdc[0],
+            self.sprocket_omega(&qdc),
+            s.torque,
+            tension,
+            s.ground_normal,
+            s.ground_penetration,
+            s.wheel_penetration,
+            s.sprocket_penetration,
+            energy,
+            work,
+            dissipated,
+        ]);
+        Ok(())
+    }
+
+    fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
+        let nt = self.track.dimension();
+        let mut yt = y.rows(0, nt).into_owned();
+        let changed = self.track.after_step(t, &mut yt)?;
+        if changed {
+            y.rows_mut(0, nt).copy_from(&yt);
+        }
+        Ok(changed)
+    }
+
+    fn switches(&self) -> Vec<Switch> {
+        self.track.switches()
+    }
+}
