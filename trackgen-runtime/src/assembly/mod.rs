@@ -14,7 +14,7 @@ use nalgebra::{SVector, Vector2};
 use thiserror::Error;
 
 use crate::model::TrackModel;
-use path::{ccw_sweep, outer_tangent, sag_arc, Path, Piece};
+use path::{Path, Piece, ccw_sweep, outer_tangent, sag_arc};
 
 /// A wheel the track wraps, as its pitch circle: the circle the joints lie
 /// on where the track runs round it.
@@ -43,7 +43,9 @@ pub enum AssemblyError {
         distance: f64,
     },
     /// The track is too short to go round the wheels.
-    #[error("the track is too short to wrap the wheels: {links} links reach {track:.3} m, the wrap needs {wrap:.3} m")]
+    #[error(
+        "the track is too short to wrap the wheels: {links} links reach {track:.3} m, the wrap needs {wrap:.3} m"
+    )]
     TrackTooShort {
         /// Number of links.
         links: usize,
@@ -54,7 +56,9 @@ pub enum AssemblyError {
     },
     /// The track is so long that its slack would sag more than a quarter of
     /// the span.
-    #[error("the track is too long for the wheels: {track:.3} m of track for a {wrap:.3} m wrap sags more than a quarter of the span")]
+    #[error(
+        "the track is too long for the wheels: {track:.3} m of track for a {wrap:.3} m wrap sags more than a quarter of the span"
+    )]
     TrackTooLong {
         /// m.
         track: f64,
@@ -81,8 +85,20 @@ fn belt(wheels: &[PitchCircle], sag_span: usize, sag: f64) -> Path {
         let arrive = tangents[(i + m - 1) % m].1;
         let (leave, next) = tangents[i];
         let (start, sweep) = ccw_sweep(wheel.centre, arrive, leave);
-        pieces.push(Piece::Arc { centre: wheel.centre, radius: wheel.radius, start, sweep });
-        pieces.push(if i == sag_span { sag_arc(leave, next, sag) } else { Piece::Line { from: leave, to: next } });
+        pieces.push(Piece::Arc {
+            centre: wheel.centre,
+            radius: wheel.radius,
+            start,
+            sweep,
+        });
+        pieces.push(if i == sag_span {
+            sag_arc(leave, next, sag)
+        } else {
+            Piece::Line {
+                from: leave,
+                to: next,
+            }
+        });
     }
     Path::new(pieces)
 }
@@ -110,7 +126,11 @@ fn lay(path: &Path, pitches: &[f64]) -> (Vec<Vector2<f64>>, f64) {
         let (mut lo, mut hi) = (s + pitch * (1.0 - 1e-12), s + pitch * 1.6);
         for _ in 0..100 {
             let mid = 0.5 * (lo + hi);
-            if (path.at(mid) - from).norm() < pitch { lo = mid } else { hi = mid }
+            if (path.at(mid) - from).norm() < pitch {
+                lo = mid
+            } else {
+                hi = mid
+            }
         }
         s = 0.5 * (lo + hi);
         joints.push(path.at(s));
@@ -121,14 +141,25 @@ fn lay(path: &Path, pitches: &[f64]) -> (Vec<Vector2<f64>>, f64) {
 /// How far the joints overshoot the belt when laid with `sag` (m) in span
 /// `sag_span`: the arc length past the path's end where the joint after
 /// the last link lands (m; negative if the track is too short).
-pub fn excess<M: TrackModel<D>, const D: usize>(model: &M, wheels: &[PitchCircle], sag_span: usize, sag: f64) -> f64 {
+pub fn excess<M: TrackModel<D>, const D: usize>(
+    model: &M,
+    wheels: &[PitchCircle],
+    sag_span: usize,
+    sag: f64,
+) -> f64 {
     let path = belt(&hull(wheels), sag_span.min(wheels.len() - 1), sag);
     let (_, landed) = lay(&path, &pitches(model));
     landed - path.length()
 }
 
 fn pitches<M: TrackModel<D>, const D: usize>(model: &M) -> Vec<f64> {
-    model.description().link_spans().expect("a track has link spans").iter().map(|d| d.norm()).collect()
+    model
+        .description()
+        .link_spans()
+        .expect("a track has link spans")
+        .iter()
+        .map(|d| d.norm())
+        .collect()
 }
 
 /// The wheels the belt touches: those inside the convex wrap drop out.
@@ -175,7 +206,10 @@ pub fn wrap<M: TrackModel<D>, const D: usize>(
     };
     // The sagging span, counted among the wheels the belt touches.
     let touching = hull(wheels);
-    let sag_span = touching.iter().position(|w| *w == wheels[sag_span]).unwrap_or(0);
+    let sag_span = touching
+        .iter()
+        .position(|w| *w == wheels[sag_span])
+        .unwrap_or(0);
     let wheels = &touching[..];
     let m = wheels.len();
     let pitches = pitches(model);
@@ -188,16 +222,27 @@ pub fn wrap<M: TrackModel<D>, const D: usize>(
     };
     let (short, tight) = excess(0.0);
     if short < 0.0 {
-        return Err(AssemblyError::TrackTooShort { links: pitches.len(), track, wrap: tight.length() });
+        return Err(AssemblyError::TrackTooShort {
+            links: pitches.len(),
+            track,
+            wrap: tight.length(),
+        });
     }
     let max_sag = span_length / 4.0;
     if excess(max_sag).0 > 0.0 {
-        return Err(AssemblyError::TrackTooLong { track, wrap: tight.length() });
+        return Err(AssemblyError::TrackTooLong {
+            track,
+            wrap: tight.length(),
+        });
     }
     let (mut lo, mut hi) = (0.0, max_sag);
     for _ in 0..100 {
         let mid = 0.5 * (lo + hi);
-        if excess(mid).0 > 0.0 { lo = mid } else { hi = mid }
+        if excess(mid).0 > 0.0 {
+            lo = mid
+        } else {
+            hi = mid
+        }
     }
     let path = belt(wheels, sag_span, 0.5 * (lo + hi));
     let (joints, _) = lay(&path, &pitches);
@@ -208,7 +253,10 @@ pub fn wrap<M: TrackModel<D>, const D: usize>(
         let chord = joints[j + 1] - joints[j];
         q[2 + j] = chord.y.atan2(chord.x) - span.y.atan2(span.x);
     }
-    let first = description.loop_joint.expect("a track has a loop joint").first_u1;
+    let first = description
+        .loop_joint
+        .expect("a track has a loop joint")
+        .first_u1;
     let root = joints[0] - crate::planar::rotate(q[2], first);
     q[0] = root.x;
     q[1] = root.y;

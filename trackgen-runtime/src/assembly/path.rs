@@ -6,9 +6,17 @@ use nalgebra::Vector2;
 /// A piece of the path.
 #[derive(Debug, Clone, Copy)]
 pub(crate) enum Piece {
-    Line { from: Vector2<f64>, to: Vector2<f64> },
+    Line {
+        from: Vector2<f64>,
+        to: Vector2<f64>,
+    },
     /// Positive sweep is counter-clockwise, rad.
-    Arc { centre: Vector2<f64>, radius: f64, start: f64, sweep: f64 },
+    Arc {
+        centre: Vector2<f64>,
+        radius: f64,
+        start: f64,
+        sweep: f64,
+    },
 }
 
 impl Piece {
@@ -21,8 +29,15 @@ impl Piece {
 
     pub fn at(&self, s: f64) -> Vector2<f64> {
         match *self {
-            Piece::Line { from, to } => from + (to - from) * (s / self.length().max(f64::MIN_POSITIVE)),
-            Piece::Arc { centre, radius, start, sweep } => {
+            Piece::Line { from, to } => {
+                from + (to - from) * (s / self.length().max(f64::MIN_POSITIVE))
+            }
+            Piece::Arc {
+                centre,
+                radius,
+                start,
+                sweep,
+            } => {
                 let a = start + sweep.signum() * s / radius;
                 centre + Vector2::new(a.cos(), a.sin()) * radius
             }
@@ -46,7 +61,11 @@ impl Path {
             starts.push(length);
             length += p.length();
         }
-        Path { pieces, starts, length }
+        Path {
+            pieces,
+            starts,
+            length,
+        }
     }
 
     pub fn length(&self) -> f64 {
@@ -56,14 +75,20 @@ impl Path {
     /// The point at arc length `s` (taken modulo the length).
     pub fn at(&self, s: f64) -> Vector2<f64> {
         let s = s.rem_euclid(self.length);
-        let i = self.starts.partition_point(|&start| start <= s).saturating_sub(1);
+        let i = self
+            .starts
+            .partition_point(|&start| start <= s)
+            .saturating_sub(1);
         self.pieces[i].at(s - self.starts[i])
     }
 }
 
 /// The points where the outer tangent from circle A to circle B touches
 /// them, for a path running from A to B with both circles on its left.
-pub(crate) fn outer_tangent(a: (Vector2<f64>, f64), b: (Vector2<f64>, f64)) -> (Vector2<f64>, Vector2<f64>) {
+pub(crate) fn outer_tangent(
+    a: (Vector2<f64>, f64),
+    b: (Vector2<f64>, f64),
+) -> (Vector2<f64>, Vector2<f64>) {
     let d = b.0 - a.0;
     let l = d.norm();
     let u = d / l;
@@ -82,7 +107,14 @@ pub(crate) fn ccw_sweep(centre: Vector2<f64>, from: Vector2<f64>, to: Vector2<f6
     let sweep = (a1 - a0).rem_euclid(2.0 * std::f64::consts::PI);
     // Collinear neighbours: arriving and leaving at the same point is no
     // wrap at all, whichever side rounding puts it.
-    (a0, if sweep > 2.0 * std::f64::consts::PI - 1e-9 { 0.0 } else { sweep })
+    (
+        a0,
+        if sweep > 2.0 * std::f64::consts::PI - 1e-9 {
+            0.0
+        } else {
+            sweep
+        },
+    )
 }
 
 /// A circular arc from `p` to `q` bulging `sag` (m) to the left of the
@@ -101,6 +133,15 @@ pub(crate) fn sag_arc(p: Vector2<f64>, q: Vector2<f64>, sag: f64) -> Piece {
     let half = (c / (2.0 * radius)).clamp(-1.0, 1.0).asin();
     // Bulging left of the chord, with the centre on the right: clockwise;
     // past a semicircle (sag > c/2) the short way round is the wrong way.
-    let sweep = if sag <= c / 2.0 { 2.0 * half } else { 2.0 * std::f64::consts::PI - 2.0 * half };
-    Piece::Arc { centre, radius, start: a0, sweep: -sweep }
+    let sweep = if sag <= c / 2.0 {
+        2.0 * half
+    } else {
+        2.0 * std::f64::consts::PI - 2.0 * half
+    };
+    Piece::Arc {
+        centre,
+        radius,
+        start: a0,
+        sweep: -sweep,
+    }
 }

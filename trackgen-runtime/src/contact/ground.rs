@@ -46,7 +46,14 @@ impl GroundContact {
                     continue;
                 }
                 let velocity = link.velocity_at(arm);
-                let contact = ContactForce::evaluate(&self.normal, &self.friction, point, normal, penetration, velocity);
+                let contact = ContactForce::evaluate(
+                    &self.normal,
+                    &self.friction,
+                    point,
+                    normal,
+                    penetration,
+                    velocity,
+                );
                 loads[i] = loads[i].plus(BodyLoad::force_at(contact.force, arm));
                 each(i, &contact);
             }

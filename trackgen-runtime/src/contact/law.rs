@@ -31,10 +31,14 @@ impl NormalLaw {
             return 0.0;
         }
         let f = match *self {
-            NormalLaw::KelvinVoigt { stiffness, damping } => stiffness * penetration + damping * rate,
-            NormalLaw::HuntCrossley { stiffness, exponent, chi } => {
-                stiffness * penetration.powf(exponent) * (1.0 + chi * rate)
+            NormalLaw::KelvinVoigt { stiffness, damping } => {
+                stiffness * penetration + damping * rate
             }
+            NormalLaw::HuntCrossley {
+                stiffness,
+                exponent,
+                chi,
+            } => stiffness * penetration.powf(exponent) * (1.0 + chi * rate),
         };
         f.max(0.0)
     }
@@ -48,7 +52,11 @@ impl NormalLaw {
         }
         match *self {
             NormalLaw::KelvinVoigt { stiffness, .. } => stiffness * penetration,
-            NormalLaw::HuntCrossley { stiffness, exponent, .. } => stiffness * penetration.powf(exponent),
+            NormalLaw::HuntCrossley {
+                stiffness,
+                exponent,
+                ..
+            } => stiffness * penetration.powf(exponent),
         }
     }
 
@@ -60,9 +68,11 @@ impl NormalLaw {
         }
         match *self {
             NormalLaw::KelvinVoigt { stiffness, .. } => 0.5 * stiffness * penetration * penetration,
-            NormalLaw::HuntCrossley { stiffness, exponent, .. } => {
-                stiffness * penetration.powf(exponent + 1.0) / (exponent + 1.0)
-            }
+            NormalLaw::HuntCrossley {
+                stiffness,
+                exponent,
+                ..
+            } => stiffness * penetration.powf(exponent + 1.0) / (exponent + 1.0),
         }
     }
 }
@@ -81,6 +91,7 @@ pub struct Friction {
 impl Friction {
     /// The tangential force along the slip direction, N (opposing `slip`).
     pub fn force(&self, normal: f64, slip_velocity: f64) -> f64 {
-        -self.mu * normal * slip_velocity / (slip_velocity * slip_velocity + self.slip * self.slip).sqrt()
+        -self.mu * normal * slip_velocity
+            / (slip_velocity * slip_velocity + self.slip * self.slip).sqrt()
     }
 }

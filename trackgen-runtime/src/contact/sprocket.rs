@@ -31,7 +31,12 @@ impl ToothProfile {
     /// The M113 sprocket (`shared/spec/m113.md`): 10 teeth, addendum
     /// 0.2605 m, arcs of 0.089 m centred 0.3 m out.
     pub fn m113() -> ToothProfile {
-        ToothProfile { teeth: 10, addendum: 0.2605, arc_centre_radius: 0.3, arc_radius: 0.089 }
+        ToothProfile {
+            teeth: 10,
+            addendum: 0.2605,
+            arc_centre_radius: 0.3,
+            arc_radius: 0.089,
+        }
     }
 
     /// The angular pitch of the teeth, rad.
@@ -97,7 +102,14 @@ impl SprocketContact {
                 let link_arm = point - link.position;
                 let wheel_arm = point - sprocket.position;
                 let relative = link.velocity_at(link_arm) - sprocket.velocity_at(wheel_arm);
-                let contact = ContactForce::evaluate(&self.normal, &self.friction, point, normal, penetration, relative);
+                let contact = ContactForce::evaluate(
+                    &self.normal,
+                    &self.friction,
+                    point,
+                    normal,
+                    penetration,
+                    relative,
+                );
                 link_loads[i] = link_loads[i].plus(BodyLoad::force_at(contact.force, link_arm));
                 *sprocket_load = sprocket_load.plus(BodyLoad::force_at(-contact.force, wheel_arm));
                 each(i, &contact);

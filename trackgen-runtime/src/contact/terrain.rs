@@ -49,7 +49,9 @@ pub enum TerrainError {
     #[error("a terrain table needs at least 2 points, got {0}")]
     TooFewPoints(usize),
     /// Table x values must increase strictly.
-    #[error("terrain table out of order: point {index} has x = {x} m, not after the previous x = {previous} m")]
+    #[error(
+        "terrain table out of order: point {index} has x = {x} m, not after the previous x = {previous} m"
+    )]
     OutOfOrder {
         /// Index of the offending point.
         index: usize,
@@ -74,7 +76,11 @@ impl Terrain {
                 return Err(TerrainError::NonFinite(i));
             }
             if i > 0 && x <= points[i - 1].0 {
-                return Err(TerrainError::OutOfOrder { index: i, x, previous: points[i - 1].0 });
+                return Err(TerrainError::OutOfOrder {
+                    index: i,
+                    x,
+                    previous: points[i - 1].0,
+                });
             }
         }
         Ok(Terrain::Table(points))
@@ -89,19 +95,37 @@ impl Terrain {
     pub fn height_and_slope(&self, x: f64) -> (f64, f64) {
         match self {
             Terrain::Flat { height } => (*height, 0.0),
-            Terrain::Ramp { height, start, slope } => {
-                if x <= *start { (*height, 0.0) } else { (height + slope * (x - start), *slope) }
+            Terrain::Ramp {
+                height,
+                start,
+                slope,
+            } => {
+                if x <= *start {
+                    (*height, 0.0)
+                } else {
+                    (height + slope * (x - start), *slope)
+                }
             }
-            Terrain::Bump { centre, width, height } => {
+            Terrain::Bump {
+                centre,
+                width,
+                height,
+            } => {
                 let u = x - centre;
                 if u.abs() >= width / 2.0 {
                     (0.0, 0.0)
                 } else {
                     let k = 2.0 * std::f64::consts::PI / width;
-                    (height / 2.0 * (1.0 + (k * u).cos()), -height / 2.0 * k * (k * u).sin())
+                    (
+                        height / 2.0 * (1.0 + (k * u).cos()),
+                        -height / 2.0 * k * (k * u).sin(),
+                    )
                 }
             }
-            Terrain::Sine { amplitude, wavelength } => {
+            Terrain::Sine {
+                amplitude,
+                wavelength,
+            } => {
                 let k = 2.0 * std::f64::consts::PI / wavelength;
                 (amplitude * (k * x).sin(), amplitude * k * (k * x).cos())
             }
@@ -126,9 +150,17 @@ impl Terrain {
         match self {
             Terrain::Flat { height } => *height,
             Terrain::Ramp { .. } => self.height(x0).max(self.height(x1)),
-            Terrain::Bump { centre, width, height } => {
+            Terrain::Bump {
+                centre,
+                width,
+                height,
+            } => {
                 if x1 > centre - width / 2.0 && x0 < centre + width / 2.0 {
-                    if (x0..=x1).contains(centre) { *height } else { self.height(x0).max(self.height(x1)) }
+                    if (x0..=x1).contains(centre) {
+                        *height
+                    } else {
+                        self.height(x0).max(self.height(x1))
+                    }
                 } else {
                     0.0
                 }

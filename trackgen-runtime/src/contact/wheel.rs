@@ -36,7 +36,10 @@ impl WheelContact {
             if offset.norm_squared() > reach * reach {
                 continue;
             }
-            let (a, b) = (link.point(shoe.inner_face[0]), link.point(shoe.inner_face[1]));
+            let (a, b) = (
+                link.point(shoe.inner_face[0]),
+                link.point(shoe.inner_face[1]),
+            );
             // The rim must be on the face's inner side (the link's left).
             let inward = link.arm(Vector2::new(0.0, 1.0));
             if (wheel.position - a).dot(&inward) <= 0.0 {
@@ -55,7 +58,14 @@ impl WheelContact {
             let link_arm = point - link.position;
             let wheel_arm = point - wheel.position;
             let relative = link.velocity_at(link_arm) - wheel.velocity_at(wheel_arm);
-            let contact = ContactForce::evaluate(&self.normal, &self.friction, point, normal, penetration, relative);
+            let contact = ContactForce::evaluate(
+                &self.normal,
+                &self.friction,
+                point,
+                normal,
+                penetration,
+                relative,
+            );
             link_loads[i] = link_loads[i].plus(BodyLoad::force_at(contact.force, link_arm));
             *wheel_load = wheel_load.plus(BodyLoad::force_at(-contact.force, wheel_arm));
             each(i, &contact);

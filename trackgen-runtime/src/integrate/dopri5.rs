@@ -66,6 +66,9 @@ struct Trial {
 }
 
 const SAFETY: f64 = 0.9;
+/// PI controller exponents: `α = 1/5 − 0.75 β`, `β = 0.04`.
+const BETA: f64 = 0.04;
+const ALPHA: f64 = 0.2 - 0.75 * BETA;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 5.0;
 
@@ -81,6 +84,8 @@ pub struct Dopri5 {
     max_step: f64,
     /// The next step to try; 0 until the first step picks one.
     h: f64,
+    /// The last accepted step's error norm, for PI control.
+    previous_error: f64,
     f_now: Option<DVector<f64>>,
     /// Dense-output coefficients of the last step and its span.
     dense: [DVector<f64>; 5],
@@ -98,6 +103,7 @@ impl Dopri5 {
             atol,
             max_step,
             h: 0.0,
+            previous_error: 1e-4,
             f_now: None,
             dense: [z.clone(), z.clone(), z.clone(), z.clone(), z],
             span: (0.0, 0.0),
@@ -244,7 +250,14 @@ impl Stepper for Dopri5 {
                     let d4 = &ydiff - &k[6] * h - &bspl;
                     self.dense = [y.clone(), ydiff, bspl, d4, d5];
                     self.span = (*t, *t + h);
-                    let factor = (SAFETY * err.max(1e-10).powf(-0.2)).clamp(MIN_FACTOR, MAX_FACTOR);
+                    // PI step control (Gustafsson; Hairer's DOPRI5, β = 0.04):
+                    // the previous error damps the step's growth, which
+                    // keeps a step limited by stability from being
+                    // rejected every other time.
+                    let err = err.max(1e-10);
+                    let factor = (SAFETY * err.powf(-ALPHA) * self.previous_error.powf(BETA))
+                        .clamp(MIN_FACTOR, MAX_FACTOR);
+                    self.previous_error = err.max(1e-4);
                     // After a rejection, do not grow the step at once.
                     self.h = h * if rejected_last {
                         factor.min(1.0)

@@ -19,7 +19,7 @@ pub use observe::{Momentum, momentum};
 pub use output::Output;
 pub use pair::Pair;
 pub use results::{Results, Sample, Switch};
-pub use run::{Simulated, simulate};
+pub use run::{Simulated, simulate, simulate_with_progress};
 pub use track::TrackSystem;
 pub use tree::TreeSystem;
 

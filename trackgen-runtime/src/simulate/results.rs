@@ -142,6 +142,33 @@ impl Results {
         Ok(())
     }
 
+    /// Writes CSV of some columns only (`t` first, then these, in this
+    /// order); unknown names are an error.
+    pub fn write_csv_columns<W: io::Write>(&self, writer: W, columns: &[&str]) -> csv::Result<()> {
+        let indices: Vec<usize> = columns
+            .iter()
+            .map(|name| {
+                self.columns.iter().position(|c| c == name).ok_or_else(|| {
+                    csv::Error::from(io::Error::new(
+                        io::ErrorKind::NotFound,
+                        format!("no column `{name}`"),
+                    ))
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        let mut w = csv::Writer::from_writer(writer);
+        w.write_record(std::iter::once("t").chain(columns.iter().copied()))?;
+        for s in self.iter() {
+            w.write_record(
+                std::iter::once(s.t)
+                    .chain(indices.iter().map(|&i| s.values[i]))
+                    .map(|v| v.to_string()),
+            )?;
+        }
+        w.flush()?;
+        Ok(())
+    }
+
     /// Writes CSV to a file.
     pub fn save_csv(&self, path: impl AsRef<Path>) -> csv::Result<()> {
         self.write_csv(std::fs::File::create(path)?)

@@ -45,12 +45,34 @@ pub fn simulate(
     t_end: f64,
     output: Output,
 ) -> Result<Results, SimulationFailure> {
+    simulate_with_progress(system, integrator, t0, t_end, output, &mut |_| {})
+}
+
+/// [`simulate`], calling `progress(t)` after every accepted step (for a
+/// progress bar).
+#[allow(clippy::result_large_err)]
+pub fn simulate_with_progress(
+    system: &mut dyn Simulated,
+    integrator: Integrator,
+    t0: f64,
+    t_end: f64,
+    output: Output,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Results, SimulationFailure> {
     let mut results = Results::new(system.columns());
     if let Err(error) = validate(integrator, t0, t_end, &output) {
         return Err(SimulationFailure { error, results });
     }
     let mut stepper = integrator.stepper(system.dimension());
-    let outcome = run(system, stepper.as_mut(), t0, t_end, &output, &mut results);
+    let outcome = run(
+        system,
+        stepper.as_mut(),
+        t0,
+        t_end,
+        &output,
+        &mut results,
+        progress,
+    );
     results.switches = system.switches();
     results.stats = stepper.stats();
     match outcome {
@@ -66,6 +88,7 @@ fn run(
     t_end: f64,
     output: &Output,
     results: &mut Results,
+    progress: &mut dyn FnMut(f64),
 ) -> Result<(), SimulationError> {
     let mut row = Vec::new();
     let mut record =
@@ -123,6 +146,7 @@ fn run(
         if system.after_step(t, &mut y)? {
             stepper.restart();
         }
+        progress(t);
         // After `after_step`: a projection shows in the step's row.
         if matches!(output, Output::Steps) {
             record(system, t, &y, results)?;

@@ -4,7 +4,7 @@
 
 use nalgebra::{SVector, Vector2};
 
-use crate::assembly::{excess, wrap, AssemblyError, PitchCircle};
+use crate::assembly::{AssemblyError, PitchCircle, excess, wrap};
 use crate::contact::sprocket::ToothProfile;
 use crate::contact::{ShoeGeometry, Terrain};
 use crate::model::{ChassisModel, PartKind, TrackModel};
@@ -39,14 +39,23 @@ fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
         .map(|(i, part)| {
             let radius = match part.kind {
                 // The joints sit in the gaps: a regular polygon of the pitch.
-                PartKind::Sprocket => pitch / (2.0 * (std::f64::consts::PI / profile.teeth as f64).sin()),
+                PartKind::Sprocket => {
+                    pitch / (2.0 * (std::f64::consts::PI / profile.teeth as f64).sin())
+                }
                 // The shoes' inner faces (chords) rest on the rim.
                 _ => (part.radius + shoe.inner_offset()).hypot(pitch / 2.0),
             };
-            (i, PitchCircle { centre: centres[part.body], radius })
+            (
+                i,
+                PitchCircle {
+                    centre: centres[part.body],
+                    radius,
+                },
+            )
         })
         .collect();
-    let middle = circles.iter().map(|c| c.1.centre).sum::<Vector2<f64>>() / circles.len().max(1) as f64;
+    let middle =
+        circles.iter().map(|c| c.1.centre).sum::<Vector2<f64>>() / circles.len().max(1) as f64;
     let angle = |c: &PitchCircle| (c.centre - middle).y.atan2((c.centre - middle).x);
     circles.sort_by(|a, b| angle(&a.1).total_cmp(&angle(&b.1)));
     circles
@@ -65,13 +74,21 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
     x: f64,
     clearance: f64,
 ) -> Result<Assembled<DT, DC>, AssemblyError> {
-    let pitch = track.description().link_spans().map_or(0.0, |s| s[0].norm());
+    let pitch = track
+        .description()
+        .link_spans()
+        .map_or(0.0, |s| s[0].norm());
     let mut qc = SVector::<f64, DC>::zeros();
     qc[0] = x;
     let sprocket_index = |circles: &[(usize, PitchCircle)]| {
-        circles.iter().position(|(i, _)| C::PARTS[*i].kind == PartKind::Sprocket)
+        circles
+            .iter()
+            .position(|(i, _)| C::PARTS[*i].kind == PartKind::Sprocket)
     };
-    let tensioner = C::PARTS.iter().find(|p| p.kind == PartKind::Idler).and_then(|p| p.arm);
+    let tensioner = C::PARTS
+        .iter()
+        .find(|p| p.kind == PartKind::Idler)
+        .and_then(|p| p.arm);
     if let Some(arm) = tensioner {
         let fits = |phi: f64| {
             let mut q = qc;
@@ -86,7 +103,11 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         if fits(lo).signum() != fits(hi).signum() {
             for _ in 0..60 {
                 let mid = 0.5 * (lo + hi);
-                if fits(mid).signum() == fits(lo).signum() { lo = mid } else { hi = mid }
+                if fits(mid).signum() == fits(lo).signum() {
+                    lo = mid
+                } else {
+                    hi = mid
+                }
             }
             qc[2 + arm.body] = 0.5 * (lo + hi);
         }
@@ -109,9 +130,15 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         let part = &C::PARTS[circles[s].0];
         let (centre, radius) = (wheels[s].centre, wheels[s].radius);
         let off = |p: &Vector2<f64>| ((p - centre).norm() - radius).abs();
-        let nearest = joints.iter().min_by(|a, b| off(a).total_cmp(&off(b))).expect("joints");
+        let nearest = joints
+            .iter()
+            .min_by(|a, b| off(a).total_cmp(&off(b)))
+            .expect("joints");
         let psi = (nearest - centre).y.atan2((nearest - centre).x);
         qc[2 + part.body] = psi - 0.5 * profile.pitch_angle();
     }
-    Ok(Assembled { track: qt, chassis: qc })
+    Ok(Assembled {
+        track: qt,
+        chassis: qc,
+    })
 }

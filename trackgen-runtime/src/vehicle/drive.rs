@@ -8,11 +8,13 @@ pub enum Drive {
     /// A torque (N m) as a function of time (s).
     Torque(Box<dyn Fn(f64) -> f64 + Send>),
     /// A PI controller on the sprocket's speed relative to the chassis,
-    /// tracking `target(t)` (m/s of track speed, `ω r` with `r` the
-    /// sprocket pitch radius), with the torque limited to `±max_torque`
-    /// and the integral held while the limit is active (anti-windup).
+    /// tracking a forward speed `target(t)` (m/s): driving forward, the
+    /// loop (numbered counter-clockwise) runs clockwise round the chassis,
+    /// so the sprocket's wanted speed is `−target / r` with `r` its pitch
+    /// radius. The torque is limited to `±max_torque` and the integral
+    /// held while the limit is active (anti-windup).
     Speed {
-        /// Track speed wanted, m/s, as a function of time (s).
+        /// Forward speed wanted, m/s, as a function of time (s).
         target: Box<dyn Fn(f64) -> f64 + Send>,
         /// Proportional gain, N m s/rad.
         proportional: f64,
@@ -31,8 +33,13 @@ impl Drive {
         match self {
             Drive::Free => (0.0, 0.0),
             Drive::Torque(f) => (f(t), 0.0),
-            Drive::Speed { target, proportional, integral, max_torque } => {
-                let error = target(t) / radius - omega;
+            Drive::Speed {
+                target,
+                proportional,
+                integral,
+                max_torque,
+            } => {
+                let error = -target(t) / radius - omega;
                 let wanted = proportional * error + integral * state;
                 let torque = wanted.clamp(-max_torque, *max_torque);
                 let saturated = wanted != torque && wanted.signum() == error.signum();
@@ -47,7 +54,12 @@ impl std::fmt::Debug for Drive {
         match self {
             Drive::Free => write!(f, "Free"),
             Drive::Torque(_) => write!(f, "Torque(..)"),
-            Drive::Speed { proportional, integral, max_torque, .. } => f
+            Drive::Speed {
+                proportional,
+                integral,
+                max_torque,
+                ..
+            } => f
                 .debug_struct("Speed")
                 .field("proportional", proportional)
                 .field("integral", integral)

@@ -1,6 +1,6 @@
 use nalgebra::{DVector, SVector, Vector2};
 
-use super::{tensions, Drive};
+use super::{Drive, tensions};
 use crate::closure::ClosureMethod;
 use crate::contact::ground::GroundContact;
 use crate::contact::sprocket::{SprocketContact, ToothProfile};
@@ -8,7 +8,7 @@ use crate::contact::wheel::WheelContact;
 use crate::contact::{BodyState, Friction, NormalLaw, ShoeGeometry, Terrain};
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
-use crate::simulate::{SimulationError, Simulated, Switch, TrackSystem, TreeSystem};
+use crate::simulate::{Simulated, SimulationError, Switch, TrackSystem, TreeSystem};
 use crate::suspension::{add_arm_torques, arm_energy};
 
 /// How a vehicle meets the world: shoe geometry, the three contact pairs,
@@ -35,28 +35,44 @@ impl VehicleConfig {
     /// friction 0.8 on the ground and 0.4 on wheels and sprocket) on
     /// `terrain`, driven by `drive`.
     ///
-    /// Stiffnesses: ground 2e6 N/m per shoe point, rims and teeth 1e7 N/m:
-    /// static penetrations under a millimetre, and contact periods of
-    /// 10-15 ms on an 18 kg shoe. Dampings give the shoe's contact modes a
-    /// damping ratio of about 0.3-0.5. Friction is regularised over
-    /// 0.05 m/s of slip.
+    /// Normal laws are Hunt-Crossley with exponent 1 (`F = k δ (1 + χ δ̇)`:
+    /// no force jump when a contact opens or closes, which would make an
+    /// adaptive integrator stumble at each of the thousands of contact
+    /// changes of a run). Stiffnesses: ground 2e6 N/m per shoe point, rims
+    /// and teeth 1e7 N/m, so static penetrations stay within a few
+    /// millimetres. The `χ` (2 and 0.5 s/m) damp the contacts without
+    /// making the light shoes' rotation the stiffest mode of the model.
+    /// Friction is regularised over 0.1 m/s of slip on the ground and
+    /// 0.2 m/s on wheels and sprocket (where it matters little): smaller
+    /// values shorten the explicit integrator's steps in proportion.
     pub fn m113(terrain: Terrain, drive: Drive) -> VehicleConfig {
-        let slip = 0.05;
         VehicleConfig {
             shoe: ShoeGeometry::m113(),
             ground: GroundContact {
                 terrain,
-                normal: NormalLaw::KelvinVoigt { stiffness: 2e6, damping: 4e3 },
-                friction: Friction { mu: 0.8, slip },
+                normal: NormalLaw::HuntCrossley {
+                    stiffness: 2e6,
+                    exponent: 1.0,
+                    chi: 2.0,
+                },
+                friction: Friction { mu: 0.8, slip: 0.1 },
             },
             wheels: WheelContact {
-                normal: NormalLaw::KelvinVoigt { stiffness: 1e7, damping: 1e4 },
-                friction: Friction { mu: 0.4, slip },
+                normal: NormalLaw::HuntCrossley {
+                    stiffness: 1e7,
+                    exponent: 1.0,
+                    chi: 0.5,
+                },
+                friction: Friction { mu: 0.4, slip: 0.2 },
             },
             sprocket: SprocketContact {
                 profile: ToothProfile::m113(),
-                normal: NormalLaw::KelvinVoigt { stiffness: 1e7, damping: 1e4 },
-                friction: Friction { mu: 0.4, slip },
+                normal: NormalLaw::HuntCrossley {
+                    stiffness: 1e7,
+                    exponent: 1.0,
+                    chi: 0.5,
+                },
+                friction: Friction { mu: 0.4, slip: 0.2 },
             },
             drive,
             tension_link: 1,
@@ -93,10 +109,14 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     sprocket_radius: f64,
     track_loads: Vec<BodyLoad>,
     chassis_loads: Vec<BodyLoad>,
+    /// `ū2` of every link: the joint to the next.
+    forward_joints: Vec<Vector2<f64>>,
     y0: DVector<f64>,
 }
 
-impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> VehicleSystem<T, DT, C, DC> {
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
+    VehicleSystem<T, DT, C, DC>
+{
     /// The vehicle starting at rest at the given coordinates (see
     /// [`assemble`](super::assemble)), its loop closed by `closure`.
     pub fn new(
@@ -117,10 +137,27 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> V
         let track = TrackSystem::new(track, q_track, SVector::zeros(), closure)?;
         let chassis = TreeSystem::chassis(chassis, q_chassis, SVector::zeros());
         let sprocket = C::PARTS.iter().position(|p| p.kind == PartKind::Sprocket);
-        let pitch = track.model().description().link_spans().map_or(0.0, |s| s[0].norm());
-        let sprocket_radius = pitch / (2.0 * (std::f64::consts::PI / config.sprocket.profile.teeth as f64).sin());
+        let pitch = track
+            .model()
+            .description()
+            .link_spans()
+            .map_or(0.0, |s| s[0].norm());
+        let sprocket_radius =
+            pitch / (2.0 * (std::f64::consts::PI / config.sprocket.profile.teeth as f64).sin());
+        let description = track.model().description();
+        let forward_joints = (0..T::BODIES)
+            .map(|j| match description.bodies.get(j + 1) {
+                Some(next) => next.at_parent,
+                None => description
+                    .loop_joint
+                    .map_or(Vector2::zeros(), |l| l.last_u2),
+            })
+            .collect();
         let (a, b) = (track.initial_state(), chassis.initial_state());
-        let y0 = DVector::from_iterator(a.len() + b.len() + 3, a.iter().chain(b.iter()).copied().chain([0.0; 3]));
+        let y0 = DVector::from_iterator(
+            a.len() + b.len() + 3,
+            a.iter().chain(b.iter()).copied().chain([0.0; 3]),
+        );
         Ok(VehicleSystem {
             track,
             chassis,
@@ -129,6 +166,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> V
             sprocket_radius,
             track_loads: vec![BodyLoad::ZERO; T::BODIES],
             chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
+            forward_joints,
             y0,
         })
     }
@@ -157,12 +195,23 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> V
         )
     }
 
-    fn states<M: RecursiveModel<D>, const D: usize>(model: &M, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> Vec<BodyState> {
+    fn states<M: RecursiveModel<D>, const D: usize>(
+        model: &M,
+        q: &SVector<f64, D>,
+        qd: &SVector<f64, D>,
+    ) -> Vec<BodyState> {
         let n = M::BODIES;
         let (mut r, mut v) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
         model.body_positions(q, &mut r);
         model.body_velocities(q, qd, &mut v);
-        (0..n).map(|b| BodyState { position: r[b], angle: q[2 + b], velocity: v[b], omega: qd[2 + b] }).collect()
+        (0..n)
+            .map(|b| BodyState {
+                position: r[b],
+                angle: q[2 + b],
+                velocity: v[b],
+                omega: qd[2 + b],
+            })
+            .collect()
     }
 
     /// Contact, suspension and drive loads at a state, into the load
@@ -180,27 +229,44 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> V
         self.chassis_loads.fill(BodyLoad::ZERO);
         let mut s = ContactSummary::default();
         let config = &self.config;
-        config.ground.apply(&links, &config.shoe, &mut self.track_loads, |_, c| {
-            s.ground_normal += c.normal;
-            s.ground_penetration = s.ground_penetration.max(c.penetration);
-            s.potential += c.potential;
-            s.dissipation += c.dissipation;
-        });
+        config
+            .ground
+            .apply(&links, &config.shoe, &mut self.track_loads, |_, c| {
+                s.ground_normal += c.normal;
+                s.ground_penetration = s.ground_penetration.max(c.penetration);
+                s.potential += c.potential;
+                s.dissipation += c.dissipation;
+            });
         for part in C::PARTS {
             let body = &bodies[part.body];
             let load = &mut self.chassis_loads[part.body];
             if part.kind == PartKind::Sprocket {
-                config.sprocket.apply(body, &links, &config.shoe, &mut self.track_loads, load, |_, c| {
-                    s.sprocket_penetration = s.sprocket_penetration.max(c.penetration);
-                    s.potential += c.potential;
-                    s.dissipation += c.dissipation;
-                });
+                config.sprocket.apply(
+                    body,
+                    &links,
+                    &config.shoe,
+                    &mut self.track_loads,
+                    load,
+                    |_, c| {
+                        s.sprocket_penetration = s.sprocket_penetration.max(c.penetration);
+                        s.potential += c.potential;
+                        s.dissipation += c.dissipation;
+                    },
+                );
             } else {
-                config.wheels.apply(body, part.radius, &links, &config.shoe, &mut self.track_loads, load, |_, c| {
-                    s.wheel_penetration = s.wheel_penetration.max(c.penetration);
-                    s.potential += c.potential;
-                    s.dissipation += c.dissipation;
-                });
+                config.wheels.apply(
+                    body,
+                    part.radius,
+                    &links,
+                    &config.shoe,
+                    &mut self.track_loads,
+                    load,
+                    |_, c| {
+                        s.wheel_penetration = s.wheel_penetration.max(c.penetration);
+                        s.potential += c.potential;
+                        s.dissipation += c.dissipation;
+                    },
+                );
             }
             if let Some(arm) = &part.arm {
                 let rate = qdc[2 + arm.body] - qdc[2];
@@ -211,7 +277,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> V
         if let Some(i) = self.sprocket {
             let body = C::PARTS[i].body;
             let omega = qdc[2 + body] - qdc[2];
-            let (torque, rate) = config.drive.torque(t, omega, self.sprocket_radius, integral);
+            let (torque, rate) = config
+                .drive
+                .torque(t, omega, self.sprocket_radius, integral);
             self.chassis_loads[body].moment += torque;
             self.chassis_loads[0].moment -= torque;
             s.torque = torque;
@@ -220,17 +288,57 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> V
         s
     }
 
+    /// The joints just before and just after the run of joints seated on
+    /// the sprocket (within 2 cm of its pitch circle), in link order. The
+    /// loop is numbered counter-clockwise and runs clockwise round the
+    /// chassis when driving forward, so the joint after the seated run is
+    /// on the tight span (the top run, pulled into the sprocket) and the
+    /// one before it on the slack span.
+    fn sprocket_spans(
+        &self,
+        qt: &SVector<f64, DT>,
+        qc: &SVector<f64, DC>,
+    ) -> Option<(usize, usize)> {
+        let part = &C::PARTS[self.sprocket?];
+        let mut centres = vec![Vector2::zeros(); C::BODIES];
+        self.chassis.model().body_positions(qc, &mut centres);
+        let centre = centres[part.body];
+        let mut links = vec![Vector2::zeros(); T::BODIES];
+        self.track.model().body_positions(qt, &mut links);
+        let n = T::BODIES;
+        let seated: Vec<bool> = (0..n)
+            .map(|j| {
+                let joint = links[j] + crate::planar::rotate(qt[2 + j], self.forward_joints[j]);
+                ((joint - centre).norm() - self.sprocket_radius).abs() < 0.02
+            })
+            .collect();
+        let first = (0..n).find(|&j| seated[j] && !seated[(j + n - 1) % n])?;
+        let last = (0..n)
+            .map(|k| (first + k) % n)
+            .take_while(|&j| seated[j])
+            .last()?;
+        Some(((first + n - 1) % n, (last + 1) % n))
+    }
+
     fn sprocket_omega(&self, qdc: &SVector<f64, DC>) -> f64 {
-        self.sprocket.map_or(0.0, |i| qdc[2 + C::PARTS[i].body] - qdc[2])
+        self.sprocket
+            .map_or(0.0, |i| qdc[2 + C::PARTS[i].body] - qdc[2])
     }
 }
 
-impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> OdeSystem for VehicleSystem<T, DT, C, DC> {
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> OdeSystem
+    for VehicleSystem<T, DT, C, DC>
+{
     fn dimension(&self) -> usize {
         self.y0.len()
     }
 
-    fn derivative(&mut self, t: f64, y: &DVector<f64>, dy: &mut DVector<f64>) -> Result<(), SimulationError> {
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
         let (yt, yc, [integral, _, _]) = self.split(y);
         let (qt, qdt) = self.track.coordinates(t, &yt)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
@@ -250,14 +358,26 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
     }
 }
 
-impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> Simulated for VehicleSystem<T, DT, C, DC> {
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> Simulated
+    for VehicleSystem<T, DT, C, DC>
+{
     fn initial_state(&self) -> DVector<f64> {
         self.y0.clone()
     }
 
     fn columns(&self) -> Vec<String> {
-        let mut c: Vec<String> = self.track.columns().into_iter().map(|c| format!("track.{c}")).collect();
-        c.extend(self.chassis.columns().into_iter().map(|c| format!("chassis.{c}")));
+        let mut c: Vec<String> = self
+            .track
+            .columns()
+            .into_iter()
+            .map(|c| format!("track.{c}"))
+            .collect();
+        c.extend(
+            self.chassis
+                .columns()
+                .into_iter()
+                .map(|c| format!("chassis.{c}")),
+        );
         c.extend(
             [
                 "x",
@@ -267,6 +387,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
                 "sprocket_speed",
                 "sprocket_torque",
                 "tension",
+                "tension_tight",
+                "tension_slack",
                 "ground_normal",
                 "ground_penetration",
                 "wheel_penetration",
@@ -280,7 +402,12 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         c
     }
 
-    fn observe(&mut self, t: f64, y: &DVector<f64>, row: &mut Vec<f64>) -> Result<(), SimulationError> {
+    fn observe(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
         let (yt, yc, [integral, work, dissipated]) = self.split(y);
         self.track.observe(t, &yt, row)?;
         self.chassis.observe(t, &yc, row)?;
@@ -289,8 +416,16 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
         self.track.set_external(&self.track_loads);
         let qdd = self.track.accelerations(t, &qt, &qdt)?;
-        let tension = tensions(self.track.model(), &qt, &qdt, &qdd, &self.track_loads)
-            .map_or(f64::NAN, |all| all[self.config.tension_link - 1]);
+        let all =
+            tensions(self.track.model(), &qt, &qdt, &qdd, &self.track_loads).unwrap_or_default();
+        let tension = all
+            .get(self.config.tension_link - 1)
+            .copied()
+            .unwrap_or(f64::NAN);
+        let (slack, tight) = match self.sprocket_spans(&qt, &qc) {
+            Some((before, after)) => (all.get(before).copied(), all.get(after).copied()),
+            None => (None, None),
+        };
         let energy = self.track.model().kinetic_energy(&qt, &qdt)
             + self.track.model().potential_energy(&qt)
             + self.chassis.model().kinetic_energy(&qc, &qdc)
@@ -305,6 +440,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             self.sprocket_omega(&qdc),
             s.torque,
             tension,
+            tight.unwrap_or(f64::NAN),
+            slack.unwrap_or(f64::NAN),
             s.ground_normal,
             s.ground_penetration,
             s.wheel_penetration,

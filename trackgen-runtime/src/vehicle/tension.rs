@@ -38,7 +38,8 @@ pub fn tensions<M: TrackModel<D>, const D: usize>(
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
         let body = &description.bodies[i];
-        let applied = description.gravity * body.mass + loads.get(i).map_or(Vector2::zeros(), |l| l.force);
+        let applied =
+            description.gravity * body.mass + loads.get(i).map_or(Vector2::zeros(), |l| l.force);
         let from_next = (accel[i] + gamma[i]) * body.mass - applied - from_previous;
         let axis = crate::planar::rotate(q[2 + i], spans[i]).normalize();
         out.push(from_next.dot(&axis));

@@ -1,12 +1,8 @@
-//! The default vehicle, compiled: evaluates the dynamics of the M113's
-//! track and chassis at a state, checks them against the reference route,
-//! and times both.
+//! The default vehicle's compiled dynamics at one state: the M113's track
+//! and chassis evaluated separately (as the paper's part I does), checked
+//! against the reference route, and timed.
 //!
-//! `cargo run --release --example m113`
-//!
-//! (Contact, suspension and driving arrive with the vehicle issue; until
-//! then the two subsystems are evaluated separately, as the paper's part I
-//! does.)
+//! `cargo run --release --example model_timing`
 
 use std::time::Instant;
 
