@@ -16,14 +16,14 @@ pub struct WheelContact {
 }
 
 impl WheelContact {
-    /// Forces between the wheel (`radius`, m) and every link near it: on
+    /// Forces between the wheel (its state, and its radius in m) and every
+    /// link near it: on
     /// the links into `link_loads`, the reactions into `wheel_load`.
     ///
     /// Only links whose bounding circle reaches the rim are examined.
     pub fn apply(
         &self,
-        wheel: &BodyState,
-        radius: f64,
+        (wheel, radius): (&BodyState, f64),
         links: &[BodyState],
         shoe: &ShoeGeometry,
         link_loads: &mut [BodyLoad],

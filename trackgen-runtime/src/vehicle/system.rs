@@ -255,8 +255,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 );
             } else {
                 config.wheels.apply(
-                    body,
-                    part.radius,
+                    (body, part.radius),
                     &links,
                     &config.shoe,
                     &mut self.track_loads,
