@@ -15,7 +15,9 @@
 
 mod dense;
 mod generated;
+mod linear_time;
 
 pub use dense::Accelerations;
 pub(crate) use dense::{solve_closed, solve_open};
 pub use generated::{forward_dynamics, open_dynamics};
+pub use linear_time::LinearTimeSolver;
