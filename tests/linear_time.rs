@@ -10,10 +10,10 @@
 mod support;
 include!("support/chains.rs");
 
-use trackgen::dynamics::{forward_dynamics, LinearTimeSolver};
+use support::{Lcg, assert_close};
+use trackgen::dynamics::{LinearTimeSolver, forward_dynamics};
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::{BodyLoad, TrackModel};
-use support::{assert_close, Lcg};
 
 fn check<M: TrackModel<D>, const D: usize>(model: M, seed: u64) {
     let mut solver = LinearTimeSolver::new(&model);
@@ -21,7 +21,10 @@ fn check<M: TrackModel<D>, const D: usize>(model: M, seed: u64) {
     for _ in 0..20 {
         let (q, qd) = rng.state::<D>();
         let loads: Vec<BodyLoad> = (0..M::BODIES)
-            .map(|_| BodyLoad { force: Vector2::new(rng.uniform(-100.0, 100.0), rng.uniform(-100.0, 100.0)), moment: rng.uniform(-10.0, 10.0) })
+            .map(|_| BodyLoad {
+                force: Vector2::new(rng.uniform(-100.0, 100.0), rng.uniform(-100.0, 100.0)),
+                moment: rng.uniform(-10.0, 10.0),
+            })
             .collect();
         for loads in [&[][..], &loads[..]] {
             let dense = forward_dynamics(&model, &q, &qd, loads).unwrap();
@@ -55,15 +58,66 @@ fn penalty_chains_agree_with_the_dense_route() {
 
 #[test]
 fn agrees_with_pinocchio() {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/pinocchio_chains.json")).unwrap();
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/data/pinocchio_chains.json"
+    ))
+    .unwrap();
     let data: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let floats = |v: &serde_json::Value| v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect::<Vec<_>>();
-    let case = data["cases"].as_array().unwrap().iter().find(|c| c["name"] == "closed-10").unwrap();
+    let floats = |v: &serde_json::Value| {
+        v.as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect::<Vec<_>>()
+    };
+    let case = data["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["name"] == "closed-10")
+        .unwrap();
     let mut solver = LinearTimeSolver::new(&PinocchioClosed10);
     for state in case["states"].as_array().unwrap() {
         let q = SVector::<f64, 12>::from_column_slice(&floats(&state["q"]));
         let qd = SVector::<f64, 12>::from_column_slice(&floats(&state["qd"]));
-        let a = solver.forward_dynamics(&PinocchioClosed10, &q, &qd, &[]).unwrap();
-        assert_close("q̈_i vs Pinocchio", a.qdd.as_slice(), &floats(&state["qdd"]), 1e-12, 0.0);
+        let a = solver
+            .forward_dynamics(&PinocchioClosed10, &q, &qd, &[])
+            .unwrap();
+        assert_close(
+            "q̈_i vs Pinocchio",
+            a.qdd.as_slice(),
+            &floats(&state["qdd"]),
+            1e-12,
+            0.0,
+        );
+    }
+}
+
+/// On the closure manifold, the partitioned equations of spec §2 (dense,
+/// `(Bᵀ M_i B) z̈ = Bᵀ(Q_i − M_i β)`) have the linear-time solution, for
+/// any choice of the dependent pair.
+#[test]
+fn partitioned_equations_agree_on_the_manifold() {
+    use trackgen::closure::{multipliers, partitioning};
+    use trackgen::nalgebra::SMatrix;
+    use trackgen::RecursiveModel;
+    let model = Hetero64Partitioned;
+    let mut solver = LinearTimeSolver::new(&model);
+    let mut rng = Lcg::new(37);
+    for pair in [[0, 1], [5, 40], [62, 63]] {
+        let mut q = SVector::<f64, 66>::zeros();
+        for i in 0..64 {
+            q[2 + i] = 2.0 * std::f64::consts::PI * i as f64 / 64.0;
+        }
+        let mut qd = SVector::<f64, 66>::from_fn(|_, _| rng.uniform(-1.0, 1.0));
+        multipliers::project(&model, &mut q, &mut qd, 1e-13).unwrap();
+        let (mut mass, mut forces) = (SMatrix::<f64, 66, 66>::zeros(), SVector::<f64, 66>::zeros());
+        model.equations_of_motion(&q, &qd, &[], &mut mass, &mut forces);
+        let cq = model.closure_jacobian(&q);
+        let independent = partitioning::independent_coordinates(66, pair);
+        let dense = partitioning::accelerations(&mass, &forces, &cq, &model.closure_gamma(&q, &qd), pair, &independent).unwrap();
+        let fast = solver.forward_dynamics(&model, &q, &qd, &[]).unwrap();
+        assert_close("q̈_i", fast.qdd.as_slice(), dense.as_slice(), 1e-9, 0.0);
     }
 }

@@ -14,9 +14,8 @@
 
 use nalgebra::{Matrix2, Matrix2x3, SVector, Vector2};
 
-use crate::model::{BodyLoad, Closure, TrackModel};
-use crate::planar::rotate;
 use crate::DynamicsError;
+use crate::model::{BodyLoad, Closure, TrackModel};
 
 /// The per-link constants of a chain.
 #[derive(Debug, Clone)]
@@ -73,8 +72,18 @@ impl LinearTimeSolver {
             .map(|i| {
                 let body = &description.bodies[i];
                 let u1 = if i == 0 { joint.first_u1 } else { body.at_self };
-                let u2 = if i + 1 == n { joint.last_u2 } else { description.bodies[i + 1].at_parent };
-                Link { inv_mass: 1.0 / body.mass, inv_inertia: 1.0 / body.inertia, mass: body.mass, u1, u2 }
+                let u2 = if i + 1 == n {
+                    joint.last_u2
+                } else {
+                    description.bodies[i + 1].at_parent
+                };
+                Link {
+                    inv_mass: 1.0 / body.mass,
+                    inv_inertia: 1.0 / body.inertia,
+                    mass: body.mass,
+                    u1,
+                    u2,
+                }
             })
             .collect();
         LinearTimeSolver {
@@ -110,37 +119,55 @@ impl LinearTimeSolver {
             }
             _ => None,
         };
-        let (qdd, multipliers) = self.accelerations(q, qd, loads, Vector2::zeros(), penalty)?;
+        let constrained = self.closure.is_constrained();
+        let (qdd, multipliers) =
+            self.accelerations(q, qd, loads, constrained, Vector2::zeros(), penalty)?;
         // λ of spec §2 is minus the force the closing joint puts on link n.
-        Ok(super::Accelerations { qdd, multipliers: multipliers.map(|f| -f) })
+        Ok(super::Accelerations {
+            qdd,
+            multipliers: multipliers.map(|f| -f),
+        })
     }
 
     /// `q̈_i` of the track at `(q_i, q̇_i)` under the loads (one per link, or
-    /// none). A loop closed by constraint gets `Cq q̈ = γ_c − stabilisation`,
-    /// where `stabilisation` is added to the closing joint's `κ` (Baumgarte:
-    /// `2ω Ċ + ω² C`; zero for the plain equations). Returns the closing
-    /// joint's force too (`λ` of spec §2) when the loop is constrained.
+    /// none), with the closing joint `constrained` or cut. A constrained
+    /// loop gets `C_q q̈ = γ_c − stabilisation` (Baumgarte: `2ω Ċ + ω² C`;
+    /// zero for the plain equations); a cut one may carry a penalty
+    /// spring's force (on link n at ū2ⁿ, reversed on link 1 at ū1¹).
+    /// Returns the force the closing joint puts on link n's neighbour, link
+    /// 1, when constrained.
     pub fn accelerations<const D: usize>(
         &mut self,
         q: &SVector<f64, D>,
         qd: &SVector<f64, D>,
         loads: &[BodyLoad],
+        constrained: bool,
         stabilisation: Vector2<f64>,
         penalty_force: Option<Vector2<f64>>,
     ) -> Result<(SVector<f64, D>, Option<Vector2<f64>>), DynamicsError> {
         let n = self.links.len();
         if D != n + 2 {
-            return Err(DynamicsError::WrongLength { what: "coordinates", expected: n + 2, got: D });
+            return Err(DynamicsError::WrongLength {
+                what: "coordinates",
+                expected: n + 2,
+                got: D,
+            });
         }
         if !loads.is_empty() && loads.len() != n {
-            return Err(DynamicsError::WrongLength { what: "loads", expected: n, got: loads.len() });
+            return Err(DynamicsError::WrongLength {
+                what: "loads",
+                expected: n,
+                got: loads.len(),
+            });
         }
-        let closed = self.closure.is_constrained();
+        let closed = constrained;
         // Per link: lever arms, applied loads.
         for i in 0..n {
             let link = &self.links[i];
-            let theta = q[2 + i];
-            let (a1, a2) = (rotate(theta, link.u1), rotate(theta, link.u2));
+            // One sine and cosine per link.
+            let (sin, cos) = q[2 + i].sin_cos();
+            let turn = |u: Vector2<f64>| Vector2::new(cos * u.x - sin * u.y, sin * u.x + cos * u.y);
+            let (a1, a2) = (turn(link.u1), turn(link.u2));
             let load = loads.get(i).copied().unwrap_or(BodyLoad::ZERO);
             self.kin[i] = Kinematics {
                 p1: Vector2::new(-a1.y, a1.x),
@@ -171,7 +198,10 @@ impl LinearTimeSolver {
                 + identity * lk.inv_mass;
             self.lower[j] = -(outer(kj.p2, kj.p1) * lj.inv_inertia + identity * lj.inv_mass);
             let (wj, wk) = (qd[2 + j], qd[2 + k]);
-            let (a2, a1) = (Vector2::new(kj.p2.y, -kj.p2.x), Vector2::new(kk.p1.y, -kk.p1.x));
+            let (a2, a1) = (
+                Vector2::new(kj.p2.y, -kj.p2.x),
+                Vector2::new(kk.p1.y, -kk.p1.x),
+            );
             let kappa = a2 * (wj * wj) - a1 * (wk * wk);
             self.rhs[j] = kappa - (kj.p2 * (kj.moment * lj.inv_inertia) + kj.force * lj.inv_mass)
                 + (kk.p1 * (kk.moment * lk.inv_inertia) + kk.force * lk.inv_mass);
@@ -230,15 +260,15 @@ impl LinearTimeSolver {
                 s -= block.transpose() * x0;
             }
             let y = schur.try_inverse().ok_or(singular)? * s;
-            for j in 0..m {
-                let z = solution[j].fixed_view::<2, 2>(0, 1).into_owned();
-                self.lambda[j] = solution[j].column(0).into_owned() - z * y;
+            for (lambda, x) in self.lambda.iter_mut().zip(solution.iter()).take(m) {
+                let z = x.fixed_view::<2, 2>(0, 1).into_owned();
+                *lambda = x.column(0).into_owned() - z * y;
             }
             self.lambda[n - 1] = y;
             Some(y)
         } else {
-            for j in 0..m {
-                self.lambda[j] = solution[j].column(0).into_owned();
+            for (lambda, x) in self.lambda.iter_mut().zip(solution.iter()).take(m) {
+                *lambda = x.column(0).into_owned();
             }
             None
         };
@@ -246,8 +276,18 @@ impl LinearTimeSolver {
         let mut qdd = SVector::<f64, D>::zeros();
         for i in 0..n {
             let (link, kin) = (&self.links[i], self.kin[i]);
-            let ahead = if i + 1 < n || closed { self.lambda[i] } else { Vector2::zeros() };
-            let behind = if i > 0 { self.lambda[i - 1] } else if closed { self.lambda[n - 1] } else { Vector2::zeros() };
+            let ahead = if i + 1 < n || closed {
+                self.lambda[i]
+            } else {
+                Vector2::zeros()
+            };
+            let behind = if i > 0 {
+                self.lambda[i - 1]
+            } else if closed {
+                self.lambda[n - 1]
+            } else {
+                Vector2::zeros()
+            };
             qdd[2 + i] = (kin.moment + kin.p2.dot(&ahead) - kin.p1.dot(&behind)) * link.inv_inertia;
             if i == 0 {
                 let a = (kin.force + ahead - behind) * link.inv_mass;

@@ -1,4 +1,4 @@
-use nalgebra::{DVector, SMatrix, SVector};
+use nalgebra::{DVector, SVector, Vector2};
 
 use super::observe::{coordinate_columns, masses};
 use super::{LoadFn, Simulated, SimulationError, Switch, momentum};
@@ -6,7 +6,7 @@ use crate::closure::{
     ClosureMethod, MultiplierOptions, PartitionOptions, ProjectionFailure, multipliers,
     partitioning, penalty,
 };
-use crate::dynamics::{solve_closed, solve_open};
+use crate::dynamics::LinearTimeSolver;
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, Closure, TrackModel};
 
@@ -46,6 +46,8 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     /// Loads set by an enclosing system (contact), added to `loads`.
     external: Vec<BodyLoad>,
     masses: Vec<(f64, f64)>,
+    /// Linear-time forward dynamics (spec §5) with its scratch space.
+    solver: LinearTimeSolver,
     /// `Σ |d̄ʲ|`, m: the scale of closure tolerances.
     loop_length: f64,
     switches: Vec<Switch>,
@@ -104,6 +106,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             .link_spans()
             .map_or(1.0, |s| s.iter().map(|d| d.norm()).sum());
         let mut system = TrackSystem {
+            solver: LinearTimeSolver::new(&model),
             masses: masses(&model),
             model,
             mode,
@@ -333,7 +336,10 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         self.external.copy_from_slice(loads);
     }
 
-    /// `q̈_i` at `(q_i, q̇_i)` under the current method.
+    /// `q̈_i` at `(q_i, q̇_i)` under the current method, by the
+    /// linear-time route (spec §5). Under partitioning the state satisfies
+    /// the closure, where the partitioned equations and the multiplier
+    /// form have the same solution.
     pub(crate) fn accelerations(
         &mut self,
         t: f64,
@@ -341,48 +347,35 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         qd: &SVector<f64, D>,
     ) -> Result<SVector<f64, D>, SimulationError> {
         self.fill_loads(t, q, qd);
-        let mut mass = SMatrix::<f64, D, D>::zeros();
-        let mut forces = SVector::<f64, D>::zeros();
-        self.model
-            .equations_of_motion(q, qd, &self.buffer, &mut mass, &mut forces);
         let dynamics = |source| SimulationError::Dynamics { t, source };
-        match &self.mode {
-            Mode::AsDeclared => Ok(solve_open(mass, &forces).map_err(dynamics)?.qdd),
+        let (constrained, stabilisation, penalty) = match &self.mode {
+            Mode::AsDeclared => {
+                return Ok(self
+                    .solver
+                    .forward_dynamics(&self.model, q, qd, &self.buffer)
+                    .map_err(dynamics)?
+                    .qdd);
+            }
             Mode::Penalty { stiffness, damping } => {
-                let cq = self.model.closure_jacobian(q);
-                forces += penalty::forces(&cq, self.model.closure(q), qd, *stiffness, *damping);
-                Ok(solve_open(mass, &forces).map_err(dynamics)?.qdd)
+                let rate = self.model.closure_jacobian(q) * qd;
+                (
+                    false,
+                    Vector2::zeros(),
+                    Some(-self.model.closure(q) * *stiffness - rate * *damping),
+                )
             }
             Mode::Multipliers(options) => {
-                let cq = self.model.closure_jacobian(q);
-                let gamma = multipliers::stabilised_gamma(
-                    self.model.closure_gamma(q, qd),
-                    self.model.closure(q),
-                    cq * qd,
-                    options.baumgarte,
-                );
-                Ok(solve_closed(mass, &forces, &cq, &gamma)
-                    .map_err(dynamics)?
-                    .qdd)
+                let (c, rate) = (self.model.closure(q), self.model.closure_jacobian(q) * qd);
+                let omega = options.baumgarte;
+                (true, rate * (2.0 * omega) + c * (omega * omega), None)
             }
-            Mode::Partitioned {
-                pair, independent, ..
-            } => {
-                let cq = self.model.closure_jacobian(q);
-                partitioning::accelerations(
-                    &mass,
-                    &forces,
-                    &cq,
-                    &self.model.closure_gamma(q, qd),
-                    *pair,
-                    independent,
-                )
-                .ok_or(SimulationError::SingularMatrix {
-                    t,
-                    what: "the partitioned mass matrix Bᵀ M_i B",
-                })
-            }
-        }
+            Mode::Partitioned { .. } => (true, Vector2::zeros(), None),
+        };
+        let (qdd, _) = self
+            .solver
+            .accelerations(q, qd, &self.buffer, constrained, stabilisation, penalty)
+            .map_err(dynamics)?;
+        Ok(qdd)
     }
 }
 
