@@ -99,9 +99,9 @@ fn agrees_with_pinocchio() {
 /// any choice of the dependent pair.
 #[test]
 fn partitioned_equations_agree_on_the_manifold() {
+    use trackgen::RecursiveModel;
     use trackgen::closure::{multipliers, partitioning};
     use trackgen::nalgebra::SMatrix;
-    use trackgen::RecursiveModel;
     let model = Hetero64Partitioned;
     let mut solver = LinearTimeSolver::new(&model);
     let mut rng = Lcg::new(37);
@@ -116,7 +116,15 @@ fn partitioned_equations_agree_on_the_manifold() {
         model.equations_of_motion(&q, &qd, &[], &mut mass, &mut forces);
         let cq = model.closure_jacobian(&q);
         let independent = partitioning::independent_coordinates(66, pair);
-        let dense = partitioning::accelerations(&mass, &forces, &cq, &model.closure_gamma(&q, &qd), pair, &independent).unwrap();
+        let dense = partitioning::accelerations(
+            &mass,
+            &forces,
+            &cq,
+            &model.closure_gamma(&q, &qd),
+            pair,
+            &independent,
+        )
+        .unwrap();
         let fast = solver.forward_dynamics(&model, &q, &qd, &[]).unwrap();
         assert_close("q̈_i", fast.qdd.as_slice(), dense.as_slice(), 1e-9, 0.0);
     }

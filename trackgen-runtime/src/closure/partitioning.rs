@@ -96,23 +96,69 @@ pub fn recover_positions<M: TrackModel<D>, const D: usize>(
     tolerance: f64,
     max_iterations: usize,
 ) -> Result<usize, (usize, f64)> {
-    for iteration in 0..=max_iterations {
-        let c = model.closure(q);
+    let spans = model
+        .description()
+        .link_spans()
+        .expect("a track has link spans");
+    recover(&spans, q, None, pair, tolerance, max_iterations)
+}
+
+/// [`recover_positions`] and [`recover_velocities`] in one pass, from the
+/// links' spans `d̄ʲ` (spec §2: `C = Σ Aʲ d̄ʲ`): one sine and cosine per
+/// link, then Newton-Raphson on the two dependent angles alone (the other
+/// links' part of `C` is fixed), then `ḋ = −C_d⁻¹ C_z ż` if `qd` is given.
+pub fn recover<const D: usize>(
+    spans: &[Vector2<f64>],
+    q: &mut SVector<f64, D>,
+    qd: Option<&mut SVector<f64, D>>,
+    pair: [usize; 2],
+    tolerance: f64,
+    max_iterations: usize,
+) -> Result<usize, (usize, f64)> {
+    let turn = |theta: f64, d: Vector2<f64>| {
+        let (s, c) = theta.sin_cos();
+        (
+            Vector2::new(c * d.x - s * d.y, s * d.x + c * d.y),
+            Vector2::new(-s * d.x - c * d.y, c * d.x - s * d.y),
+        )
+    };
+    // The independent links' share of C and of C_q q̇.
+    let (mut rest, mut rate) = (Vector2::zeros(), Vector2::zeros());
+    for (j, d) in spans.iter().enumerate() {
+        if j != pair[0] && j != pair[1] {
+            let (a, a_theta) = turn(q[2 + j], *d);
+            rest += a;
+            if let Some(qd) = &qd {
+                rate += a_theta * qd[2 + j];
+            }
+        }
+    }
+    let (dk, dl) = (spans[pair[0]], spans[pair[1]]);
+    let mut iteration = 0;
+    let columns = loop {
+        let ((ak, jk), (al, jl)) = (turn(q[2 + pair[0]], dk), turn(q[2 + pair[1]], dl));
+        let c = rest + ak + al;
         let residual = c.norm();
         if residual <= tolerance {
-            return Ok(iteration);
+            break Matrix2::from_columns(&[jk, jl]);
         }
         if iteration == max_iterations || !residual.is_finite() {
             return Err((iteration, residual));
         }
-        let step = block(&model.closure_jacobian(q), pair)
+        let step = Matrix2::from_columns(&[jk, jl])
             .try_inverse()
             .map(|inv| inv * c)
             .ok_or((iteration, residual))?;
         q[2 + pair[0]] -= step.x;
         q[2 + pair[1]] -= step.y;
+        iteration += 1;
+    };
+    if let Some(qd) = qd {
+        let dependent = columns.try_inverse().ok_or((iteration, 0.0))? * rate;
+        qd[2 + pair[0]] = -dependent.x;
+        qd[2 + pair[1]] = -dependent.y;
     }
-    unreachable!("the loop returns by its last iteration")
+    Ok(iteration)
 }
 
 /// Sets the dependent angular velocities from `C_q q̇ = 0`:

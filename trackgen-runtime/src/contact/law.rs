@@ -38,7 +38,7 @@ impl NormalLaw {
                 stiffness,
                 exponent,
                 chi,
-            } => stiffness * penetration.powf(exponent) * (1.0 + chi * rate),
+            } => stiffness * power(penetration, exponent) * (1.0 + chi * rate),
         };
         f.max(0.0)
     }
@@ -56,7 +56,7 @@ impl NormalLaw {
                 stiffness,
                 exponent,
                 ..
-            } => stiffness * penetration.powf(exponent),
+            } => stiffness * power(penetration, exponent),
         }
     }
 
@@ -72,7 +72,7 @@ impl NormalLaw {
                 stiffness,
                 exponent,
                 ..
-            } => stiffness * penetration.powf(exponent + 1.0) / (exponent + 1.0),
+            } => stiffness * penetration * power(penetration, exponent) / (exponent + 1.0),
         }
     }
 }
@@ -94,4 +94,10 @@ impl Friction {
         -self.mu * normal * slip_velocity
             / (slip_velocity * slip_velocity + self.slip * self.slip).sqrt()
     }
+}
+
+/// `x^n`, without `powf` for the common linear law.
+#[inline]
+fn power(x: f64, n: f64) -> f64 {
+    if n == 1.0 { x } else { x.powf(n) }
 }

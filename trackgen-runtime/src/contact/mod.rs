@@ -20,7 +20,7 @@ pub use terrain::{Terrain, TerrainError};
 
 use nalgebra::Vector2;
 
-/// A point of a body in motion: where it is and how fast it moves.
+/// A body in motion: where it is and how fast it moves.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyState {
     /// Centroid, m.
@@ -31,21 +31,44 @@ pub struct BodyState {
     pub velocity: Vector2<f64>,
     /// Angular velocity, rad/s.
     pub omega: f64,
+    /// `sin` and `cos` of the angle, computed once.
+    sin: f64,
+    cos: f64,
 }
 
 impl BodyState {
+    /// A body at `position` (m) and `angle` (rad), moving at `velocity`
+    /// (m/s) and `omega` (rad/s).
+    pub fn new(position: Vector2<f64>, angle: f64, velocity: Vector2<f64>, omega: f64) -> Self {
+        let (sin, cos) = angle.sin_cos();
+        BodyState {
+            position,
+            angle,
+            velocity,
+            omega,
+            sin,
+            cos,
+        }
+    }
+
     /// The global offset `A ū` of body point `ū` from the centroid.
+    #[inline]
     pub fn arm(&self, local: Vector2<f64>) -> Vector2<f64> {
-        crate::planar::rotate(self.angle, local)
+        Vector2::new(
+            self.cos * local.x - self.sin * local.y,
+            self.sin * local.x + self.cos * local.y,
+        )
     }
 
     /// Global position of body point `ū`.
+    #[inline]
     pub fn point(&self, local: Vector2<f64>) -> Vector2<f64> {
         self.position + self.arm(local)
     }
 
     /// Velocity of the material point at global offset `arm` from the
     /// centroid: `Ṙ + ω × arm`.
+    #[inline]
     pub fn velocity_at(&self, arm: Vector2<f64>) -> Vector2<f64> {
         self.velocity + Vector2::new(-arm.y, arm.x) * self.omega
     }

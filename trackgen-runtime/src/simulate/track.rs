@@ -50,6 +50,8 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     solver: LinearTimeSolver,
     /// `Σ |d̄ʲ|`, m: the scale of closure tolerances.
     loop_length: f64,
+    /// `d̄ʲ` of every link.
+    spans: Vec<Vector2<f64>>,
     switches: Vec<Switch>,
 }
 
@@ -102,9 +104,12 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             }
         };
         let description = model.description();
-        let loop_length = description
-            .link_spans()
-            .map_or(1.0, |s| s.iter().map(|d| d.norm()).sum());
+        let spans = description.link_spans().unwrap_or_default();
+        let loop_length = spans
+            .iter()
+            .map(|d| d.norm())
+            .sum::<f64>()
+            .max(f64::MIN_POSITIVE);
         let mut system = TrackSystem {
             solver: LinearTimeSolver::new(&model),
             masses: masses(&model),
@@ -115,6 +120,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             buffer: vec![BodyLoad::ZERO; M::BODIES],
             external: vec![BodyLoad::ZERO; M::BODIES],
             loop_length,
+            spans,
             switches: Vec::new(),
         };
         system.y0 = system.start(q, qd)?;
@@ -292,9 +298,10 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         }
         q[2 + pair[0]] = guess[0];
         q[2 + pair[1]] = guess[1];
-        partitioning::recover_positions(
-            &self.model,
+        partitioning::recover(
+            &self.spans,
             &mut q,
+            Some(&mut qd),
             *pair,
             tolerance,
             options.newton_max_iterations,
@@ -317,9 +324,6 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 jump,
             });
         }
-        let cq = self.model.closure_jacobian(&q);
-        partitioning::recover_velocities(&cq, &mut qd, *pair)
-            .ok_or(SimulationError::SingularMatrix { t, what: "C_d" })?;
         Ok((q, qd))
     }
 
@@ -397,7 +401,22 @@ impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
             });
         }
         let (q, qd) = self.coordinates(t, y)?;
-        let qdd = self.accelerations(t, &q, &qd)?;
+        self.derivative_at(t, &q, &qd, dy)
+    }
+}
+
+impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
+    /// The state's derivative from coordinates already recovered by
+    /// [`coordinates`](Self::coordinates) (so an enclosing system that needs
+    /// them too recovers them once).
+    pub(crate) fn derivative_at(
+        &mut self,
+        t: f64,
+        q: &SVector<f64, D>,
+        qd: &SVector<f64, D>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
+        let qdd = self.accelerations(t, q, qd)?;
         match &self.mode {
             Mode::Partitioned { independent, .. } => {
                 let n = independent.len();

@@ -205,12 +205,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         model.body_positions(q, &mut r);
         model.body_velocities(q, qd, &mut v);
         (0..n)
-            .map(|b| BodyState {
-                position: r[b],
-                angle: q[2 + b],
-                velocity: v[b],
-                omega: qd[2 + b],
-            })
+            .map(|b| BodyState::new(r[b], q[2 + b], v[b], qd[2 + b]))
             .collect()
     }
 
@@ -345,7 +340,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.track.set_external(&self.track_loads);
         self.chassis.set_external(&self.chassis_loads);
         let (mut dt, mut dc) = (DVector::zeros(yt.len()), DVector::zeros(yc.len()));
-        self.track.derivative(t, &yt, &mut dt)?;
+        if !yt.iter().all(|v| v.is_finite()) {
+            return Err(SimulationError::NonFinite {
+                t,
+                what: "the track's state",
+            });
+        }
+        self.track.derivative_at(t, &qt, &qdt, &mut dt)?;
         self.chassis.derivative(t, &yc, &mut dc)?;
         let (nt, nc) = (yt.len(), yc.len());
         dy.rows_mut(0, nt).copy_from(&dt);
