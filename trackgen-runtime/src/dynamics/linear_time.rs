@@ -58,6 +58,15 @@ pub struct LinearTimeSolver {
     lambda: Vec<Vector2<f64>>,
 }
 
+/// The inverse of a 2 × 2 matrix, if it is regular.
+#[inline(always)]
+fn inverse2(m: &Matrix2<f64>) -> Option<Matrix2<f64>> {
+    let det = m[(0, 0)] * m[(1, 1)] - m[(0, 1)] * m[(1, 0)];
+    (det != 0.0 && det.is_finite())
+        .then(|| Matrix2::new(m[(1, 1)], -m[(0, 1)], -m[(1, 0)], m[(0, 0)]) / det)
+}
+
+#[inline(always)]
 fn outer(a: Vector2<f64>, b: Vector2<f64>) -> Matrix2<f64> {
     a * b.transpose()
 }
@@ -187,23 +196,38 @@ impl LinearTimeSolver {
         // Joint j joins link j to link k = j + 1 (the closing joint, n − 1,
         // joins link n − 1 to link 0).
         let joints = if closed { n } else { n - 1 };
-        for j in 0..joints {
-            let k = (j + 1) % n;
-            let (lj, lk) = (&self.links[j], &self.links[k]);
-            let (kj, kk) = (self.kin[j], self.kin[k]);
+        // Link j's side of joint j (its ū2) and link k's side (its ū1).
+        let ahead = self
+            .links
+            .iter()
+            .zip(self.kin.iter())
+            .zip(qd.iter().skip(2));
+        let behind = self
+            .links
+            .iter()
+            .zip(self.kin.iter())
+            .zip(qd.iter().skip(2))
+            .cycle()
+            .skip(1);
+        let blocks = self
+            .diagonal
+            .iter_mut()
+            .zip(self.lower.iter_mut())
+            .zip(self.rhs.iter_mut());
+        for ((((lj, kj), &wj), ((lk, kk), &wk)), ((diagonal, lower), rhs)) in
+            ahead.zip(behind).zip(blocks).take(joints)
+        {
             let identity = Matrix2::identity();
-            self.diagonal[j] = outer(kj.p2, kj.p2) * lj.inv_inertia
-                + identity * lj.inv_mass
+            *diagonal = outer(kj.p2, kj.p2) * lj.inv_inertia
                 + outer(kk.p1, kk.p1) * lk.inv_inertia
-                + identity * lk.inv_mass;
-            self.lower[j] = -(outer(kj.p2, kj.p1) * lj.inv_inertia + identity * lj.inv_mass);
-            let (wj, wk) = (qd[2 + j], qd[2 + k]);
+                + identity * (lj.inv_mass + lk.inv_mass);
+            *lower = -(outer(kj.p2, kj.p1) * lj.inv_inertia + identity * lj.inv_mass);
             let (a2, a1) = (
                 Vector2::new(kj.p2.y, -kj.p2.x),
                 Vector2::new(kk.p1.y, -kk.p1.x),
             );
             let kappa = a2 * (wj * wj) - a1 * (wk * wk);
-            self.rhs[j] = kappa - (kj.p2 * (kj.moment * lj.inv_inertia) + kj.force * lj.inv_mass)
+            *rhs = kappa - (kj.p2 * (kj.moment * lj.inv_inertia) + kj.force * lj.inv_mass)
                 + (kk.p1 * (kk.moment * lk.inv_inertia) + kk.force * lk.inv_mass);
         }
         if closed {
@@ -213,39 +237,58 @@ impl LinearTimeSolver {
         // closing joint's two columns ride along (bordering).
         let m = n - 1;
         let singular = DynamicsError::SingularClosure;
-        for j in 0..m {
-            let mut rhs = Matrix2x3::zeros();
-            rhs.set_column(0, &self.rhs[j]);
+        let (b0, bm) = (self.lower[0], self.lower[n - 1].transpose());
+        let mut previous: Option<(Matrix2<f64>, Matrix2x3<f64>)> = None;
+        let rows = self
+            .diagonal
+            .iter()
+            .zip(self.lower.iter())
+            .zip(self.rhs.iter());
+        let outputs = self.inverse.iter_mut().zip(self.reduced.iter_mut());
+        for (j, (((diagonal, lower), rhs), (inverse, reduced))) in
+            rows.zip(outputs).take(m).enumerate()
+        {
+            let mut r = Matrix2x3::zeros();
+            r.set_column(0, rhs);
             if closed {
                 // Couplings to the closing joint's λ: joint 0 through link
                 // 0, joint m − 1 through link m (= n − 1).
                 let mut b = Matrix2::zeros();
                 if j == 0 {
-                    b += self.lower[0];
+                    b += b0;
                 }
                 if j + 1 == m {
-                    b += self.lower[n - 1].transpose();
+                    b += bm;
                 }
-                rhs.fixed_view_mut::<2, 2>(0, 1).copy_from(&b);
+                r.fixed_view_mut::<2, 2>(0, 1).copy_from(&b);
             }
-            let mut diag = self.diagonal[j];
-            if j > 0 {
-                // Coupling to joint j − 1 is lower[j]; eliminate it.
-                let factor = self.lower[j] * self.inverse[j - 1];
-                diag -= factor * self.lower[j].transpose();
-                rhs -= factor * self.reduced[j - 1];
+            let mut diag = *diagonal;
+            if let Some((previous_inverse, previous_reduced)) = previous {
+                // Coupling to joint j − 1 is `lower`; eliminate it.
+                let factor = lower * previous_inverse;
+                diag -= factor * lower.transpose();
+                r -= factor * previous_reduced;
             }
-            self.inverse[j] = diag.try_inverse().ok_or(singular.clone())?;
-            self.reduced[j] = rhs;
+            *inverse = inverse2(&diag).ok_or(singular.clone())?;
+            *reduced = r;
+            previous = Some((*inverse, r));
         }
         // Back substitution, in place: x_j = inv_j (r̂_j − lower[j+1]ᵀ x_{j+1}),
         // for the right side and the two bordering columns at once.
-        for j in (0..m).rev() {
-            let mut r = self.reduced[j];
-            if j + 1 < m {
-                r -= self.lower[j + 1].transpose() * self.reduced[j + 1];
+        let mut next: Option<Matrix2x3<f64>> = None;
+        let rows = self.inverse[..m]
+            .iter()
+            .zip(self.reduced[..m].iter_mut())
+            .zip(self.lower[1..=m].iter());
+        for ((inverse, reduced), lower_next) in rows.rev() {
+            let mut r = *reduced;
+            // The joint after the last of T couples to it only through the
+            // bordering columns.
+            if let Some(x) = next {
+                r -= lower_next.transpose() * x;
             }
-            self.reduced[j] = self.inverse[j] * r;
+            *reduced = inverse * r;
+            next = Some(*reduced);
         }
         let solution = &self.reduced;
         let closing = if closed {
