@@ -9,13 +9,10 @@
 use std::time::Instant;
 
 use rayon::prelude::*;
-use trackgen::closure::ClosureMethod;
-use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{ShoeGeometry, Terrain};
+use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::vehicles::m113;
 
 /// One variant's outcome.
 struct Row {
@@ -32,33 +29,8 @@ fn run(speed: f64, bump: f64) -> Result<Row, String> {
         width: 1.0,
         height: bump,
     };
-    let a = assemble(
-        &M113Track,
-        &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
-        &terrain,
-        0.0,
-        0.001,
-    )
-    .map_err(|e| e.to_string())?;
-    let target = move |t: f64| speed * ((t - 0.5) / 1.5).clamp(0.0, 1.0);
-    let drive = Drive::Speed {
-        target: Box::new(target),
-        proportional: 3000.0,
-        integral: 6000.0,
-        max_torque: 2e4,
-    };
-    let config = VehicleConfig::m113(terrain, drive);
-    let mut system = VehicleSystem::new(
-        M113Track,
-        M113Chassis,
-        a.track,
-        a.chassis,
-        ClosureMethod::Declared,
-        config,
-    )
-    .map_err(|e| e.to_string())?;
+    let drive = m113::speed_drive(move |t: f64| speed * ((t - 0.5) / 1.5).clamp(0.0, 1.0));
+    let mut system = m113::system(terrain, drive).map_err(|e| e.to_string())?;
     let started = Instant::now();
     let duration = 2.0 + 12.0 / speed;
     let results = simulate(

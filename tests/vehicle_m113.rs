@@ -9,7 +9,7 @@ use trackgen::contact::{ShoeGeometry, Terrain, TerrainError};
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::vehicles::m113::{self, M113Chassis, M113Track};
 
 fn integrator() -> Integrator {
     Integrator::Dopri5 {
@@ -19,30 +19,10 @@ fn integrator() -> Integrator {
     }
 }
 
-/// Runs the M113 on flat ground for `duration` s with a speed controller
-/// following `target` (m/s).
+/// Runs the M113 on flat ground for `duration` s under `drive`.
 fn run(drive: Drive, duration: f64) -> Results {
-    let terrain = Terrain::Flat { height: 0.0 };
-    let a = assemble(
-        &M113Track,
-        &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
-        &terrain,
-        0.0,
-        0.001,
-    )
-    .expect("the M113 assembles");
-    let config = VehicleConfig::m113(terrain, drive);
-    let mut system = VehicleSystem::new(
-        M113Track,
-        M113Chassis,
-        a.track,
-        a.chassis,
-        ClosureMethod::Declared,
-        config,
-    )
-    .unwrap();
+    let mut system =
+        m113::system(Terrain::Flat { height: 0.0 }, drive).expect("the M113 assembles");
     simulate(
         &mut system,
         integrator(),
@@ -51,15 +31,6 @@ fn run(drive: Drive, duration: f64) -> Results {
         Output::Every(0.01),
     )
     .expect("the run completes")
-}
-
-fn speed_control(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive {
-    Drive::Speed {
-        target: Box::new(target),
-        proportional: 3000.0,
-        integral: 6000.0,
-        max_torque: 2e4,
-    }
 }
 
 fn weight() -> f64 {
@@ -119,7 +90,7 @@ fn settles_into_static_equilibrium() {
 #[test]
 fn driven_run_balances_energy_reaches_speed_and_stays_shallow() {
     let results = run(
-        speed_control(|t| 2.0 * ((t - 0.5) / 1.5).clamp(0.0, 1.0)),
+        m113::speed_drive(|t| 2.0 * ((t - 0.5) / 1.5).clamp(0.0, 1.0)),
         4.0,
     );
     let last = results.last().unwrap();
@@ -181,7 +152,7 @@ fn tight_span_tension_matches_sprocket_torque() {
         0.001,
     )
     .unwrap();
-    let drive = speed_control(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
+    let drive = m113::speed_drive(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
     let config = VehicleConfig::m113(terrain, drive);
     let mut system = VehicleSystem::new(
         M113Track,

@@ -19,13 +19,10 @@ use std::time::Instant;
 
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
-use trackgen::closure::ClosureMethod;
-use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{ShoeGeometry, Terrain};
+use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate_with_progress};
-use trackgen::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::vehicles::m113;
 
 /// Drive a planar M113 over a bump.
 #[derive(Parser, Debug)]
@@ -73,33 +70,10 @@ fn run(args: &Args) -> Result<(), Box<dyn std::error::Error>> {
         width: 1.0,
         height: args.bump_height,
     };
-    let shoe = ShoeGeometry::m113();
-    let assembled = assemble(
-        &M113Track,
-        &M113Chassis,
-        &shoe,
-        &ToothProfile::m113(),
-        &terrain,
-        0.0,
-        0.001,
-    )?;
     let (settle, ramp, speed) = (args.settle, args.ramp, args.speed);
-    let target = move |t: f64| speed * ((t - settle) / ramp).clamp(0.0, 1.0);
-    let drive = Drive::Speed {
-        target: Box::new(target),
-        proportional: 3000.0,
-        integral: 6000.0,
-        max_torque: 2e4,
-    };
-    let config = VehicleConfig::m113(terrain.clone(), drive);
-    let mut system = VehicleSystem::new(
-        M113Track,
-        M113Chassis,
-        assembled.track,
-        assembled.chassis,
-        ClosureMethod::Declared,
-        config,
-    )?;
+    let drive = m113::speed_drive(move |t: f64| speed * ((t - settle) / ramp).clamp(0.0, 1.0));
+    let mut system =
+        m113::system(terrain.clone(), drive).map_err(|e| -> Box<dyn std::error::Error> { e })?;
 
     println!(
         "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm"

@@ -121,3 +121,23 @@ impl ContactForce {
         }
     }
 }
+
+/// A contact between a link and another body (a wheel, the sprocket) at
+/// `point` with `normal` (unit, on the link): the force from the laws on the
+/// relative velocity, added to the link's load and, reversed, to the
+/// other's.
+pub(crate) fn exchange(
+    (normal_law, friction): (&NormalLaw, &Friction),
+    (link, link_load): (&BodyState, &mut crate::model::BodyLoad),
+    (other, other_load): (&BodyState, &mut crate::model::BodyLoad),
+    (point, normal, penetration): (Vector2<f64>, Vector2<f64>, f64),
+) -> ContactForce {
+    use crate::model::BodyLoad;
+    let (link_arm, other_arm) = (point - link.position, point - other.position);
+    let relative = link.velocity_at(link_arm) - other.velocity_at(other_arm);
+    let contact =
+        ContactForce::evaluate(normal_law, friction, point, normal, penetration, relative);
+    *link_load = link_load.plus(BodyLoad::force_at(contact.force, link_arm));
+    *other_load = other_load.plus(BodyLoad::force_at(-contact.force, other_arm));
+    contact
+}

@@ -99,19 +99,12 @@ impl SprocketContact {
                 }
                 let normal = -out / distance;
                 let point = gap + out / distance * self.profile.arc_radius;
-                let link_arm = point - link.position;
-                let wheel_arm = point - sprocket.position;
-                let relative = link.velocity_at(link_arm) - sprocket.velocity_at(wheel_arm);
-                let contact = ContactForce::evaluate(
-                    &self.normal,
-                    &self.friction,
-                    point,
-                    normal,
-                    penetration,
-                    relative,
+                let contact = super::exchange(
+                    (&self.normal, &self.friction),
+                    (link, &mut link_loads[i]),
+                    (sprocket, sprocket_load),
+                    (point, normal, penetration),
                 );
-                link_loads[i] = link_loads[i].plus(BodyLoad::force_at(contact.force, link_arm));
-                *sprocket_load = sprocket_load.plus(BodyLoad::force_at(-contact.force, wheel_arm));
                 each(i, &contact);
             }
         }

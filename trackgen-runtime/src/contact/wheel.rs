@@ -55,19 +55,12 @@ impl WheelContact {
                 continue;
             }
             let normal = to_face / distance;
-            let link_arm = point - link.position;
-            let wheel_arm = point - wheel.position;
-            let relative = link.velocity_at(link_arm) - wheel.velocity_at(wheel_arm);
-            let contact = ContactForce::evaluate(
-                &self.normal,
-                &self.friction,
-                point,
-                normal,
-                penetration,
-                relative,
+            let contact = super::exchange(
+                (&self.normal, &self.friction),
+                (link, &mut link_loads[i]),
+                (wheel, wheel_load),
+                (point, normal, penetration),
             );
-            link_loads[i] = link_loads[i].plus(BodyLoad::force_at(contact.force, link_arm));
-            *wheel_load = wheel_load.plus(BodyLoad::force_at(-contact.force, wheel_arm));
             each(i, &contact);
         }
     }

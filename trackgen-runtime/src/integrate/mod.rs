@@ -52,6 +52,26 @@ pub trait OdeSystem {
     ) -> Result<(), SimulationError>;
 }
 
+/// `f(t, y)`, counted, and checked for NaN or infinite components.
+pub(crate) fn evaluate(
+    system: &mut dyn OdeSystem,
+    stats: &mut Stats,
+    t: f64,
+    y: &DVector<f64>,
+) -> Result<DVector<f64>, SimulationError> {
+    let mut dy = DVector::zeros(y.len());
+    stats.evaluations += 1;
+    system.derivative(t, y, &mut dy)?;
+    if dy.iter().all(|v| v.is_finite()) {
+        Ok(dy)
+    } else {
+        Err(SimulationError::NonFinite {
+            t,
+            what: "the derivative",
+        })
+    }
+}
+
 /// Counters of an integration.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Stats {

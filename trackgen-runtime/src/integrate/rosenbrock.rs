@@ -46,17 +46,7 @@ impl Rosenbrock2 {
         t: f64,
         y: &DVector<f64>,
     ) -> Result<DVector<f64>, SimulationError> {
-        let mut dy = DVector::zeros(y.len());
-        self.stats.evaluations += 1;
-        system.derivative(t, y, &mut dy)?;
-        if dy.iter().all(|v| v.is_finite()) {
-            Ok(dy)
-        } else {
-            Err(SimulationError::NonFinite {
-                t,
-                what: "the derivative",
-            })
-        }
+        super::evaluate(system, &mut self.stats, t, y)
     }
 
     /// `∂f/∂y` by forward differences, step `√ε · max(|yᵢ|, 1)`.

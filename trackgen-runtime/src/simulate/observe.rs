@@ -64,3 +64,47 @@ pub(crate) fn coordinate_columns(
         }))
         .collect()
 }
+
+/// Names of the mechanical quantities every body tree records after its
+/// coordinates and rates.
+const MECHANICS: [&str; 6] = [
+    "kinetic",
+    "potential",
+    "energy",
+    "momentum_x",
+    "momentum_y",
+    "angular_momentum",
+];
+
+/// Columns of a body tree: coordinates, rates (bodies named by `name`),
+/// then [`MECHANICS`].
+pub(crate) fn mechanics_columns(n: usize, name: impl Fn(usize) -> String) -> Vec<String> {
+    let mut c = coordinate_columns(n, false, &name);
+    c.extend(coordinate_columns(n, true, &name));
+    c.extend(MECHANICS.map(String::from));
+    c
+}
+
+/// The values of [`mechanics_columns`]: `q_i`, `q̇_i`, kinetic and
+/// potential energy (with `extra_potential` added, J), their sum, momentum.
+pub(crate) fn record_mechanics<M: RecursiveModel<D>, const D: usize>(
+    model: &M,
+    masses: &[(f64, f64)],
+    q: &SVector<f64, D>,
+    qd: &SVector<f64, D>,
+    extra_potential: f64,
+    row: &mut Vec<f64>,
+) {
+    row.extend(q.iter().chain(qd.iter()));
+    let kinetic = model.kinetic_energy(q, qd);
+    let potential = model.potential_energy(q) + extra_potential;
+    let p = momentum(model, masses, q, qd);
+    row.extend([
+        kinetic,
+        potential,
+        kinetic + potential,
+        p.linear.x,
+        p.linear.y,
+        p.angular,
+    ]);
+}

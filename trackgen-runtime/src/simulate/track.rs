@@ -1,7 +1,7 @@
 use nalgebra::{DVector, SVector, Vector2};
 
-use super::observe::{coordinate_columns, masses};
-use super::{LoadFn, Simulated, SimulationError, Switch, momentum};
+use super::observe::{masses, mechanics_columns, record_mechanics};
+use super::{LoadFn, Simulated, SimulationError, Switch};
 use crate::closure::{
     ClosureMethod, MultiplierOptions, PartitionOptions, ProjectionFailure, multipliers,
     partitioning, penalty,
@@ -442,23 +442,8 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
     }
 
     fn columns(&self) -> Vec<String> {
-        let n = M::BODIES;
-        let mut c = coordinate_columns(n, false, |b| (b + 1).to_string());
-        c.extend(coordinate_columns(n, true, |b| (b + 1).to_string()));
-        c.extend(
-            [
-                "kinetic",
-                "potential",
-                "energy",
-                "momentum_x",
-                "momentum_y",
-                "angular_momentum",
-                "closure_error",
-                "closure_rate_error",
-                "conditioning",
-            ]
-            .map(String::from),
-        );
+        let mut c = mechanics_columns(M::BODIES, |b| (b + 1).to_string());
+        c.extend(["closure_error", "closure_rate_error", "conditioning"].map(String::from));
         c
     }
 
@@ -469,31 +454,18 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
         row: &mut Vec<f64>,
     ) -> Result<(), SimulationError> {
         let (q, qd) = self.coordinates(t, y)?;
-        row.extend(q.iter().chain(qd.iter()));
-        let kinetic = self.model.kinetic_energy(&q, &qd);
         let gap = self.model.closure(&q);
         let cq = self.model.closure_jacobian(&q);
         let spring = match &self.mode {
             Mode::Penalty { stiffness, .. } => penalty::energy(gap, *stiffness),
             _ => 0.0,
         };
-        let potential = self.model.potential_energy(&q) + spring;
-        let p = momentum(&self.model, &self.masses, &q, &qd);
+        record_mechanics(&self.model, &self.masses, &q, &qd, spring, row);
         let conditioning = match &self.mode {
             Mode::Partitioned { pair, .. } => partitioning::conditioning(&cq, *pair),
             _ => partitioning::best_pair(&cq).1,
         };
-        row.extend([
-            kinetic,
-            potential,
-            kinetic + potential,
-            p.linear.x,
-            p.linear.y,
-            p.angular,
-            gap.norm(),
-            (cq * qd).norm(),
-            conditioning,
-        ]);
+        row.extend([gap.norm(), (cq * qd).norm(), conditioning]);
         Ok(())
     }
 

@@ -1,7 +1,7 @@
 use nalgebra::{DVector, SVector};
 
-use super::observe::{coordinate_columns, masses};
-use super::{LoadFn, Simulated, SimulationError, momentum};
+use super::observe::{masses, mechanics_columns, record_mechanics};
+use super::{LoadFn, Simulated, SimulationError};
 use crate::dynamics::open_dynamics;
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
@@ -135,21 +135,7 @@ impl<M: RecursiveModel<D>, const D: usize> Simulated for TreeSystem<M, D> {
     }
 
     fn columns(&self) -> Vec<String> {
-        let n = M::BODIES;
-        let mut c = coordinate_columns(n, false, |b| self.names[b].clone());
-        c.extend(coordinate_columns(n, true, |b| self.names[b].clone()));
-        c.extend(
-            [
-                "kinetic",
-                "potential",
-                "energy",
-                "momentum_x",
-                "momentum_y",
-                "angular_momentum",
-            ]
-            .map(String::from),
-        );
-        c
+        mechanics_columns(M::BODIES, |b| self.names[b].clone())
     }
 
     fn observe(
@@ -159,20 +145,7 @@ impl<M: RecursiveModel<D>, const D: usize> Simulated for TreeSystem<M, D> {
         row: &mut Vec<f64>,
     ) -> Result<(), SimulationError> {
         let (q, qd) = Self::split(y);
-        row.extend(q.iter().chain(qd.iter()));
-        let (kinetic, potential) = (
-            self.model.kinetic_energy(&q, &qd),
-            self.model.potential_energy(&q),
-        );
-        let p = momentum(&self.model, &self.masses, &q, &qd);
-        row.extend([
-            kinetic,
-            potential,
-            kinetic + potential,
-            p.linear.x,
-            p.linear.y,
-            p.angular,
-        ]);
+        record_mechanics(&self.model, &self.masses, &q, &qd, 0.0, row);
         Ok(())
     }
 }
