@@ -23,7 +23,7 @@
 //! after re-partitioning; the methods themselves are a page each.
 
 mod dopri5;
-mod hermite;
+mod fixed_step;
 mod rk4;
 mod rosenbrock;
 

@@ -1,6 +1,6 @@
 use nalgebra::{DMatrix, DVector};
 
-use super::hermite::HermiteStep;
+use super::fixed_step::FixedStep;
 use super::{OdeSystem, Stats, Stepper};
 use crate::simulate::SimulationError;
 
@@ -23,30 +23,15 @@ const GAMMA: f64 = 1.0 + std::f64::consts::FRAC_1_SQRT_2;
 /// method to steps far below the accuracy the motion needs.
 #[derive(Debug, Clone)]
 pub struct Rosenbrock2 {
-    h: f64,
-    f_now: Option<DVector<f64>>,
-    last: HermiteStep,
-    stats: Stats,
+    state: FixedStep,
 }
 
 impl Rosenbrock2 {
     /// A stepper with step `h` (s) for `dimension` components.
     pub fn new(h: f64, dimension: usize) -> Self {
         Rosenbrock2 {
-            h,
-            f_now: None,
-            last: HermiteStep::empty(dimension),
-            stats: Stats::default(),
+            state: FixedStep::new(h, dimension),
         }
-    }
-
-    fn eval(
-        &mut self,
-        system: &mut dyn OdeSystem,
-        t: f64,
-        y: &DVector<f64>,
-    ) -> Result<DVector<f64>, SimulationError> {
-        super::evaluate(system, &mut self.stats, t, y)
     }
 
     /// `∂f/∂y` by forward differences, step `√ε · max(|yᵢ|, 1)`.
@@ -63,7 +48,7 @@ impl Rosenbrock2 {
         for i in 0..n {
             let d = f64::EPSILON.sqrt() * y[i].abs().max(1.0);
             yp[i] = y[i] + d;
-            let fp = self.eval(system, t, &yp)?;
+            let fp = self.state.eval(system, t, &yp)?;
             jac.set_column(i, &((fp - f0) / d));
             yp[i] = y[i];
         }
@@ -79,11 +64,8 @@ impl Stepper for Rosenbrock2 {
         y: &mut DVector<f64>,
         t_limit: f64,
     ) -> Result<(), SimulationError> {
-        let h = self.h.min(t_limit - *t);
-        let f0 = match self.f_now.take() {
-            Some(f) => f,
-            None => self.eval(system, *t, y)?,
-        };
+        let h = self.state.h.min(t_limit - *t);
+        let f0 = self.state.start(system, *t, y)?;
         let jac = self.jacobian(system, *t, y, &f0)?;
         let n = y.len();
         let w = DMatrix::<f64>::identity(n, n) - jac * (GAMMA * h);
@@ -93,35 +75,21 @@ impl Stepper for Rosenbrock2 {
             what: "I − γhJ of the Rosenbrock step",
         };
         let k1 = lu.solve(&f0).ok_or_else(singular)?;
-        let f1 = self.eval(system, *t + h, &(&*y + &k1 * h))?;
+        let f1 = self.state.eval(system, *t + h, &(&*y + &k1 * h))?;
         let k2 = lu.solve(&(f1 - &k1 * 2.0)).ok_or_else(singular)?;
         let y1 = &*y + (&k1 * 1.5 + &k2 * 0.5) * h;
-        let f_end = self.eval(system, *t + h, &y1)?;
-        self.last = HermiteStep {
-            t0: *t,
-            t1: *t + h,
-            y0: y.clone(),
-            y1: y1.clone(),
-            f0,
-            f1: f_end.clone(),
-        };
-        self.f_now = Some(f_end);
-        *t += h;
-        *y = y1;
-        self.stats.accepted += 1;
-        Ok(())
+        self.state.finish(system, (t, y), (h, y1, f0))
     }
 
     fn interpolate(&self, t: f64) -> DVector<f64> {
-        self.last.evaluate(t)
+        self.state.interpolate(t)
     }
 
     fn restart(&mut self) {
-        self.f_now = None;
-        self.stats.restarts += 1;
+        self.state.restart();
     }
 
     fn stats(&self) -> Stats {
-        self.stats
+        self.state.stats
     }
 }

@@ -6,6 +6,7 @@
 //! results computed up to then in a [`SimulationFailure`].
 
 mod error;
+mod loads;
 mod observe;
 mod output;
 mod pair;

@@ -1,7 +1,8 @@
 use nalgebra::{DVector, SVector, Vector2};
 
+use super::loads::Loads;
 use super::observe::{masses, mechanics_columns, record_mechanics};
-use super::{LoadFn, Simulated, SimulationError, Switch};
+use super::{Simulated, SimulationError, Switch};
 use crate::closure::{
     ClosureMethod, MultiplierOptions, PartitionOptions, ProjectionFailure, multipliers,
     partitioning, penalty,
@@ -41,10 +42,7 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     model: M,
     mode: Mode,
     y0: DVector<f64>,
-    loads: Option<LoadFn<D>>,
-    buffer: Vec<BodyLoad>,
-    /// Loads set by an enclosing system (contact), added to `loads`.
-    external: Vec<BodyLoad>,
+    loads: Loads<D>,
     masses: Vec<(f64, f64)>,
     /// Linear-time forward dynamics (spec §5) with its scratch space.
     solver: LinearTimeSolver,
@@ -116,9 +114,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             model,
             mode,
             y0: DVector::zeros(0),
-            loads: None,
-            buffer: vec![BodyLoad::ZERO; M::BODIES],
-            external: vec![BodyLoad::ZERO; M::BODIES],
+            loads: Loads::new(M::BODIES),
             loop_length,
             spans,
             switches: Vec::new(),
@@ -141,7 +137,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         mut self,
         loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + 'static,
     ) -> Self {
-        self.loads = Some(Box::new(loads));
+        self.loads.set_function(Box::new(loads));
         self
     }
 
@@ -327,17 +323,10 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         Ok((q, qd))
     }
 
-    fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
-        self.buffer.copy_from_slice(&self.external);
-        if let Some(f) = &mut self.loads {
-            f(t, q, qd, &mut self.buffer);
-        }
-    }
-
     /// Loads from outside the subsystem (contact with another), added to
     /// gravity and the load function until set again.
     pub(crate) fn set_external(&mut self, loads: &[BodyLoad]) {
-        self.external.copy_from_slice(loads);
+        self.loads.set_external(loads);
     }
 
     /// `q̈_i` at `(q_i, q̇_i)` under the current method, by the
@@ -350,13 +339,13 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         q: &SVector<f64, D>,
         qd: &SVector<f64, D>,
     ) -> Result<SVector<f64, D>, SimulationError> {
-        self.fill_loads(t, q, qd);
+        let loads = self.loads.fill(t, q, qd);
         let dynamics = |source| SimulationError::Dynamics { t, source };
         let (constrained, stabilisation, penalty) = match &self.mode {
             Mode::AsDeclared => {
                 return Ok(self
                     .solver
-                    .forward_dynamics(&self.model, q, qd, &self.buffer)
+                    .forward_dynamics(&self.model, q, qd, loads)
                     .map_err(dynamics)?
                     .qdd);
             }
@@ -377,7 +366,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         };
         let (qdd, _) = self
             .solver
-            .accelerations(q, qd, &self.buffer, constrained, stabilisation, penalty)
+            .accelerations(q, qd, loads, constrained, stabilisation, penalty)
             .map_err(dynamics)?;
         Ok(qdd)
     }

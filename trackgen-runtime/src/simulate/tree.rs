@@ -1,7 +1,8 @@
 use nalgebra::{DVector, SVector};
 
+use super::loads::Loads;
 use super::observe::{masses, mechanics_columns, record_mechanics};
-use super::{LoadFn, Simulated, SimulationError};
+use super::{Simulated, SimulationError};
 use crate::dynamics::open_dynamics;
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
@@ -12,10 +13,7 @@ use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
 pub struct TreeSystem<M: RecursiveModel<D>, const D: usize> {
     model: M,
     y0: DVector<f64>,
-    loads: Option<LoadFn<D>>,
-    buffer: Vec<BodyLoad>,
-    /// Loads set by an enclosing system (contact), added to `loads`.
-    external: Vec<BodyLoad>,
+    loads: Loads<D>,
     masses: Vec<(f64, f64)>,
     names: Vec<String>,
 }
@@ -29,9 +27,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         TreeSystem {
             model,
             y0,
-            loads: None,
-            buffer: vec![BodyLoad::ZERO; M::BODIES],
-            external: vec![BodyLoad::ZERO; M::BODIES],
+            loads: Loads::new(M::BODIES),
             masses,
             names,
         }
@@ -53,7 +49,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         mut self,
         loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + 'static,
     ) -> Self {
-        self.loads = Some(Box::new(loads));
+        self.loads.set_function(Box::new(loads));
         self
     }
 
@@ -69,17 +65,10 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         )
     }
 
-    fn fill_loads(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) {
-        self.buffer.copy_from_slice(&self.external);
-        if let Some(f) = &mut self.loads {
-            f(t, q, qd, &mut self.buffer);
-        }
-    }
-
     /// Loads from outside the subsystem (contact with another), added to
     /// gravity and the load function until set again.
     pub(crate) fn set_external(&mut self, loads: &[BodyLoad]) {
-        self.external.copy_from_slice(loads);
+        self.loads.set_external(loads);
     }
 }
 
@@ -118,8 +107,8 @@ impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
             });
         }
         let (q, qd) = Self::split(y);
-        self.fill_loads(t, &q, &qd);
-        let acc = open_dynamics(&self.model, &q, &qd, &self.buffer)
+        let loads = self.loads.fill(t, &q, &qd);
+        let acc = open_dynamics(&self.model, &q, &qd, loads)
             .map_err(|source| SimulationError::Dynamics { t, source })?;
         for i in 0..D {
             dy[i] = qd[i];
