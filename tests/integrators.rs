@@ -311,3 +311,44 @@ fn bad_settings_are_setup_errors() {
         assert!(failure.results.is_empty());
     }
 }
+
+/// Bogacki-Shampine 3(2) on the same engine: its global error follows the
+/// tolerance (a thousandfold tighter tolerance, at least a hundredfold
+/// smaller error), and its dense output (cubic Hermite) stays within the
+/// tolerance's order between steps.
+#[test]
+fn bogacki_shampine_follows_its_tolerance() {
+    let exact = tumble(Integrator::dopri5(1e-13));
+    let bs23 = |tol: f64| Integrator::Bs23 {
+        rtol: tol,
+        atol: tol,
+        max_step: f64::INFINITY,
+    };
+    let (loose, tight) = (
+        distance(&tumble(bs23(1e-6)), &exact),
+        distance(&tumble(bs23(1e-9)), &exact),
+    );
+    assert!(
+        tight < loose / 100.0 && tight < 1e-6,
+        "errors {loose:e} at 1e-6, {tight:e} at 1e-9"
+    );
+    let (q, qd) = tumbler_start();
+    let mut system = TreeSystem::new(Tumbler, q, qd);
+    let coarse = simulate(&mut system, bs23(1e-9), 0.0, 1.0, Output::Every(0.01)).unwrap();
+    let mut system = TreeSystem::new(Tumbler, q, qd);
+    let fine = simulate(
+        &mut system,
+        Integrator::dopri5(1e-13),
+        0.0,
+        1.0,
+        Output::Every(0.01),
+    )
+    .unwrap();
+    for (a, b) in coarse.iter().zip(fine.iter()) {
+        assert!(
+            distance(&a.values[..10], &b.values[..10]) < 1e-6,
+            "t = {}",
+            a.t
+        );
+    }
+}

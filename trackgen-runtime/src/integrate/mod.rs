@@ -8,7 +8,9 @@
 //!
 //! * [`Rk4`]: classical fourth-order Runge-Kutta, fixed step.
 //! * [`Dopri5`]: Dormand-Prince 5(4), adaptive with `rtol`/`atol`, FSAL,
-//!   and its fourth-order continuous extension for dense output.
+//!   and its fourth-order continuous extension for dense output; the same
+//!   engine ([`Embedded`]) runs Bogacki-Shampine 3(2), three evaluations a
+//!   step, for loose tolerances.
 //! * [`Rosenbrock2`]: the linearly implicit ROS2 of Verwer et al. (1999),
 //!   L-stable and second order for any Jacobian (a W-method), fixed step:
 //!   for the stiff contact and penalty forces, where explicit methods need
@@ -22,12 +24,12 @@
 //! of the closure must shrink the step, not abort) together with a restart
 //! after re-partitioning; the methods themselves are a page each.
 
-mod dopri5;
+mod embedded;
 mod fixed_step;
 mod rk4;
 mod rosenbrock;
 
-pub use dopri5::Dopri5;
+pub use embedded::{Dopri5, Embedded};
 pub use rk4::Rk4;
 pub use rosenbrock::Rosenbrock2;
 
@@ -123,6 +125,16 @@ pub enum Integrator {
         /// Largest step, s (`f64::INFINITY` for none).
         max_step: f64,
     },
+    /// Bogacki-Shampine 3(2), adaptive: three evaluations a step, for
+    /// loose tolerances where stability, not accuracy, sets the step.
+    Bs23 {
+        /// Relative tolerance per component.
+        rtol: f64,
+        /// Absolute tolerance per component.
+        atol: f64,
+        /// Largest step, s (`f64::INFINITY` for none).
+        max_step: f64,
+    },
     /// [`Rosenbrock2`] with a fixed step, s.
     Rosenbrock2 {
         /// Step, s.
@@ -149,6 +161,11 @@ impl Integrator {
                 atol,
                 max_step,
             } => Box::new(Dopri5::new(rtol, atol, max_step, dimension)),
+            Integrator::Bs23 {
+                rtol,
+                atol,
+                max_step,
+            } => Box::new(Embedded::bogacki_shampine(rtol, atol, max_step, dimension)),
             Integrator::Rosenbrock2 { step } => Box::new(Rosenbrock2::new(step, dimension)),
         }
     }

@@ -178,6 +178,11 @@ fn validate(
             rtol,
             atol,
             max_step,
+        }
+        | Integrator::Bs23 {
+            rtol,
+            atol,
+            max_step,
         } => {
             if !(rtol >= 0.0
                 && atol >= 0.0
