@@ -55,6 +55,15 @@ fn compare<M: TrackModel<D>, const D: usize>(model: &M, values: &[f64]) {
     let flat = |v: &[Vector2<f64>]| v.iter().flat_map(|p| [p.x, p.y]).collect::<Vec<_>>();
     let want_pos: Vec<f64> = flat(&reference.positions(&dq));
     assert_close("positions", &flat(&pos), &want_pos, REL, 1.0);
+    // Positions and velocities together are the same numbers.
+    let (mut r2, mut v2, mut v1) = (
+        vec![Vector2::zeros(); n],
+        vec![Vector2::zeros(); n],
+        vec![Vector2::zeros(); n],
+    );
+    model.body_states(&q, &qd, &mut r2, &mut v2);
+    model.body_velocities(&q, &qd, &mut v1);
+    assert_eq!((r2, v2), (pos.clone(), v1));
 
     assert_close(
         "H",

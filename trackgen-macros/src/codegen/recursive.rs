@@ -74,6 +74,30 @@ pub fn recursive_impl(
             }
 
             #[inline]
+            fn body_states(
+                &self,
+                #q,
+                #qd,
+                positions: &mut [#rt::nalgebra::Vector2<f64>],
+                velocities: &mut [#rt::nalgebra::Vector2<f64>],
+            ) {
+                ::core::assert_eq!(positions.len(), #n, "one entry per body");
+                ::core::assert_eq!(velocities.len(), #n, "one entry per body");
+                #trig
+                #rates
+                #positions
+                #velocities
+                {
+                    let out = positions;
+                    #store_r
+                }
+                {
+                    let out = velocities;
+                    #store_v
+                }
+            }
+
+            #[inline]
             fn velocity_terms(&self, #q, #qd, #vec_out) {
                 #check_out
                 #trig

@@ -37,6 +37,19 @@ pub trait RecursiveModel<const DOF: usize> {
         out: &mut [Vector2<f64>],
     );
 
+    /// Positions and velocities together, sharing the trigonometry (what
+    /// contact needs at every evaluation).
+    fn body_states(
+        &self,
+        q: &SVector<f64, DOF>,
+        qd: &SVector<f64, DOF>,
+        positions: &mut [Vector2<f64>],
+        velocities: &mut [Vector2<f64>],
+    ) {
+        self.body_positions(q, positions);
+        self.body_velocities(q, qd, velocities);
+    }
+
     /// Quadratic velocity terms `γ_Rᵇ` (eq. (14)); `γ_θ = 0`.
     fn velocity_terms(
         &self,

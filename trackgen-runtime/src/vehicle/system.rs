@@ -206,8 +206,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
     ) -> Vec<BodyState> {
         let n = M::BODIES;
         let (mut r, mut v) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
-        model.body_positions(q, &mut r);
-        model.body_velocities(q, qd, &mut v);
+        model.body_states(q, qd, &mut r, &mut v);
         (0..n)
             .map(|b| BodyState::new(r[b], q[2 + b], v[b], qd[2 + b]))
             .collect()
