@@ -7,7 +7,7 @@ use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{Output, Results, SimulationError, TrackSystem, TreeSystem, simulate};
-use trackgen::{BodyLoad, TrackModel};
+use trackgen::BodyLoad;
 
 trackgen::model! {
     /// A three-link open chain, tumbling under gravity: smooth motion.
@@ -273,7 +273,6 @@ fn results_write_csv() {
     assert!(lines[0].starts_with("t,x,y,theta_1,"));
     assert_eq!(lines[0].split(',').count(), 1 + results.columns().len());
     assert!(lines[3].starts_with("0.1,"));
-    let _ = <Loop6 as TrackModel<8>>::CLOSURE;
 }
 
 /// Settings that would hang a run or make it meaningless are set-up
