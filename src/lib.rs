@@ -54,7 +54,12 @@
 //!     chassis { mass: 3909.62, inertia: 13643.8, centroid: (-2.006, 0.406) },
 //!     sprocket drive { at: (0.0, 0.0), mass: 27.68, inertia: 0.883, radius: 0.245, teeth: 10 },
 //!     idler front    { at: (-3.95, -0.12), mass: 25.76, inertia: 1.12, radius: 0.255 },
-//!     road_wheel rw1 { at: (-0.74, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305 },
+//!     road_wheel rw1 { at: (-0.74, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
+//!         arm { pivot: (-0.452, -0.081),     // optional: the part hangs from a sprung arm
+//!               mass: 75.26, inertia: 0.77,  // kg, kg m² (centroid midway pivot–wheel)
+//!               stiffness: 2.5e4,            // N m/rad, torsion spring about the pivot
+//!               damping: 500.0,              // N m s/rad
+//!               preload: 1e4 } },            // N m, counter-clockwise at the design angle
 //!     roller r1      { at: (…), mass: …, inertia: …, radius: … },
 //!     track { links: 64, link { … }, closure: partitioned },
 //! }
@@ -68,7 +73,9 @@
 //! A `track Name` becomes a unit struct `Name` implementing
 //! [`RecursiveModel`] and [`TrackModel`]. A `vehicle Name` becomes `Name`,
 //! `NameTrack` (as a track) and `NameChassis` ([`RecursiveModel`] and
-//! [`ChassisModel`], with a body-index constant per part, `NameChassis::RW1`).
+//! [`ChassisModel`], with a body-index constant per part, `NameChassis::RW1`,
+//! and per arm, `NameChassis::RW1_ARM`). [`vehicles::m113`] is the default
+//! vehicle, declared this way.
 //! Run `cargo expand` (or read the insta snapshots in
 //! `trackgen-macros/src/snapshots/`) to see the code.
 

@@ -10,8 +10,9 @@
 //! does not give them), and the idler's tensioner arm (mass 5 kg, 0.05 kg
 //! m²) is an assumption of this model; see [`TENSIONER_ARM`].
 //!
-//! What is not here yet: contact, so the track and chassis do not yet
-//! interact.
+//! [`system`] assembles it on a terrain with the contact of
+//! [`VehicleConfig::m113`], ready to simulate; [`speed_drive`] is a speed
+//! controller tuned for it.
 
 use crate::closure::ClosureMethod;
 use crate::contact::sprocket::ToothProfile;

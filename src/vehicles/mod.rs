@@ -1,4 +1,4 @@
-//! Vehicles shipped with trackgen, declared with [`model!`](crate::model)
+//! Vehicles shipped with trackgen, declared with [`model!`](macro@crate::model)
 //! like any user's: start from one.
 
 pub mod m113;

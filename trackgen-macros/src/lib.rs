@@ -8,10 +8,10 @@
 //! forms of spec §1, `Q_i` in O(n), the loop closure (spec §2) and the
 //! chassis tree (spec §3). Every constant is folded at compile time.
 //!
-//! The pipeline follows serde_derive: [`parse`] turns tokens into a syntax
-//! tree that keeps every span, [`lower`] validates it into an IR and
-//! collects *all* errors, and [`codegen`] writes the code. The whole
-//! expansion is the plain function [`expand::expand`], tested on
+//! The pipeline follows serde_derive: `parse` turns tokens into a syntax
+//! tree that keeps every span, `lower` validates it into an IR and
+//! collects *all* errors, and `codegen` writes the code. The whole
+//! expansion is the plain function `expand::expand`, tested on
 //! `proc_macro2` token streams.
 //!
 //! Users reach this macro as `trackgen::model!`; its documentation, with

@@ -60,7 +60,7 @@ pub struct LoopJoint {
 }
 
 /// A tree of rigid bodies in recursive coordinates, as data. Generated models
-/// return theirs from [`RecursiveModel::description`]; the reference route
+/// return theirs from [`RecursiveModel::description`](crate::RecursiveModel::description); the reference route
 /// evaluates the dynamics from it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TreeDescription {
