@@ -51,6 +51,11 @@ impl BodyState {
         }
     }
 
+    /// `(sin θ, cos θ)`.
+    pub fn sin_cos(&self) -> (f64, f64) {
+        (self.sin, self.cos)
+    }
+
     /// The global offset `A ū` of body point `ū` from the centroid.
     #[inline]
     pub fn arm(&self, local: Vector2<f64>) -> Vector2<f64> {

@@ -154,6 +154,22 @@ impl LinearTimeSolver {
         stabilisation: Vector2<f64>,
         penalty_force: Option<Vector2<f64>>,
     ) -> Result<(SVector<f64, D>, Option<Vector2<f64>>), DynamicsError> {
+        self.accelerations_with_trig(q, qd, loads, constrained, stabilisation, penalty_force, None)
+    }
+
+    /// [`accelerations`](Self::accelerations), given each link's
+    /// `(sin θ, cos θ)` when the caller has them already (one per link).
+    #[allow(clippy::too_many_arguments)]
+    pub fn accelerations_with_trig<const D: usize>(
+        &mut self,
+        q: &SVector<f64, D>,
+        qd: &SVector<f64, D>,
+        loads: &[BodyLoad],
+        constrained: bool,
+        stabilisation: Vector2<f64>,
+        penalty_force: Option<Vector2<f64>>,
+        trig: Option<&[(f64, f64)]>,
+    ) -> Result<(SVector<f64, D>, Option<Vector2<f64>>), DynamicsError> {
         let n = self.links.len();
         if D != n + 2 {
             return Err(DynamicsError::WrongLength {
@@ -161,6 +177,9 @@ impl LinearTimeSolver {
                 expected: n + 2,
                 got: D,
             });
+        }
+        if trig.is_some_and(|t| t.len() != n) {
+            return Err(DynamicsError::WrongLength { what: "trig", expected: n, got: trig.map_or(0, <[_]>::len) });
         }
         if !loads.is_empty() && loads.len() != n {
             return Err(DynamicsError::WrongLength {
@@ -174,7 +193,10 @@ impl LinearTimeSolver {
         for i in 0..n {
             let link = &self.links[i];
             // One sine and cosine per link.
-            let (sin, cos) = q[2 + i].sin_cos();
+            let (sin, cos) = match trig {
+                Some(t) => t[i],
+                None => q[2 + i].sin_cos(),
+            };
             let turn = |u: Vector2<f64>| Vector2::new(cos * u.x - sin * u.y, sin * u.x + cos * u.y);
             let (a1, a2) = (turn(link.u1), turn(link.u2));
             let load = loads.get(i).copied().unwrap_or(BodyLoad::ZERO);

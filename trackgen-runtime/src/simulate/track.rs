@@ -338,6 +338,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         t: f64,
         q: &SVector<f64, D>,
         qd: &SVector<f64, D>,
+        trig: Option<&[(f64, f64)]>,
     ) -> Result<SVector<f64, D>, SimulationError> {
         let loads = self.loads.fill(t, q, qd);
         let dynamics = |source| SimulationError::Dynamics { t, source };
@@ -366,7 +367,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         };
         let (qdd, _) = self
             .solver
-            .accelerations(q, qd, loads, constrained, stabilisation, penalty)
+            .accelerations_with_trig(q, qd, loads, constrained, stabilisation, penalty, trig)
             .map_err(dynamics)?;
         Ok(qdd)
     }
@@ -390,7 +391,7 @@ impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
             });
         }
         let (q, qd) = self.coordinates(t, y)?;
-        self.derivative_at(t, &q, &qd, dy)
+        self.derivative_at(t, &q, &qd, dy, None)
     }
 }
 
@@ -404,8 +405,9 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         q: &SVector<f64, D>,
         qd: &SVector<f64, D>,
         dy: &mut DVector<f64>,
+        trig: Option<&[(f64, f64)]>,
     ) -> Result<(), SimulationError> {
-        let qdd = self.accelerations(t, q, qd)?;
+        let qdd = self.accelerations(t, q, qd, trig)?;
         match &self.mode {
             Mode::Partitioned { independent, .. } => {
                 let n = independent.len();

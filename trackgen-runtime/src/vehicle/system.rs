@@ -115,6 +115,9 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     chassis_loads: Vec<BodyLoad>,
     /// `ū2` of every link: the joint to the next.
     forward_joints: Vec<Vector2<f64>>,
+    /// `(sin θ, cos θ)` of every link at the last contact evaluation, for
+    /// the dynamics to reuse.
+    link_trig: Vec<(f64, f64)>,
     y0: DVector<f64>,
 }
 
@@ -171,6 +174,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             track_loads: vec![BodyLoad::ZERO; T::BODIES],
             chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
             forward_joints,
+            link_trig: vec![(0.0, 1.0); T::BODIES],
             y0,
         })
     }
@@ -222,6 +226,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         integral: f64,
     ) -> ContactSummary {
         let links = Self::states(self.track.model(), qt, qdt);
+        for (trig, link) in self.link_trig.iter_mut().zip(&links) {
+            *trig = link.sin_cos();
+        }
         let bodies = Self::states(self.chassis.model(), qc, qdc);
         self.track_loads.fill(BodyLoad::ZERO);
         self.chassis_loads.fill(BodyLoad::ZERO);
@@ -349,7 +356,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
                 what: "the track's state",
             });
         }
-        self.track.derivative_at(t, &qt, &qdt, &mut dt)?;
+        self.track.derivative_at(t, &qt, &qdt, &mut dt, Some(&self.link_trig))?;
         self.chassis.derivative(t, &yc, &mut dc)?;
         let (nt, nc) = (yt.len(), yc.len());
         dy.rows_mut(0, nt).copy_from(&dt);
@@ -418,7 +425,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
         let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
         self.track.set_external(&self.track_loads);
-        let qdd = self.track.accelerations(t, &qt, &qdt)?;
+        let qdd = self.track.accelerations(t, &qt, &qdt, Some(&self.link_trig))?;
         let all =
             tensions(self.track.model(), &qt, &qdt, &qdd, &self.track_loads).unwrap_or_default();
         let tension = all
