@@ -3,11 +3,11 @@
 
 mod support;
 
+use trackgen::BodyLoad;
 use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{Output, Results, SimulationError, TrackSystem, TreeSystem, simulate};
-use trackgen::BodyLoad;
 
 trackgen::model! {
     /// A three-link open chain, tumbling under gravity: smooth motion.

@@ -19,6 +19,7 @@ pub fn recursive_impl(
     let n = tree.len();
     let dof = n + 2;
     let trig = tree.trig_prelude();
+    let trig_given = tree.trig_from_slice();
     let rates = tree.rate_prelude(false);
     let positions = tree.positions();
     let velocities = tree.velocities();
@@ -84,6 +85,32 @@ pub fn recursive_impl(
                 ::core::assert_eq!(positions.len(), #n, "one entry per body");
                 ::core::assert_eq!(velocities.len(), #n, "one entry per body");
                 #trig
+                #rates
+                #positions
+                #velocities
+                {
+                    let out = positions;
+                    #store_r
+                }
+                {
+                    let out = velocities;
+                    #store_v
+                }
+            }
+
+            #[inline]
+            fn body_states_with_trig(
+                &self,
+                trig: &[(f64, f64)],
+                #q,
+                #qd,
+                positions: &mut [#rt::nalgebra::Vector2<f64>],
+                velocities: &mut [#rt::nalgebra::Vector2<f64>],
+            ) {
+                ::core::assert_eq!(trig.len(), #n, "one entry per body");
+                ::core::assert_eq!(positions.len(), #n, "one entry per body");
+                ::core::assert_eq!(velocities.len(), #n, "one entry per body");
+                #trig_given
                 #rates
                 #positions
                 #velocities

@@ -127,6 +127,18 @@ impl Tree {
             .collect()
     }
 
+    /// `let (s_b, c_b) = trig[b];`: the same locals from a caller's slice.
+    pub fn trig_from_slice(&self) -> TokenStream {
+        self.bodies
+            .iter()
+            .enumerate()
+            .map(|(b, body)| {
+                let Trig { s, c } = Trig::new(&body.tag);
+                quote! { let (#s, #c) = trig[#b]; }
+            })
+            .collect()
+    }
+
     /// `let w_b = qd[2 + b];` (and `ww_b = w_b²` when asked).
     pub fn rate_prelude(&self, squares: bool) -> TokenStream {
         self.bodies

@@ -100,13 +100,14 @@ pub fn recover_positions<M: TrackModel<D>, const D: usize>(
         .description()
         .link_spans()
         .expect("a track has link spans");
-    recover(&spans, q, None, pair, tolerance, max_iterations)
+    recover(&spans, q, None, pair, tolerance, max_iterations, None)
 }
 
 /// [`recover_positions`] and [`recover_velocities`] in one pass, from the
 /// links' spans `d̄ʲ` (spec §2: `C = Σ Aʲ d̄ʲ`): one sine and cosine per
 /// link, then Newton-Raphson on the two dependent angles alone (the other
 /// links' part of `C` is fixed), then `ḋ = −C_d⁻¹ C_z ż` if `qd` is given.
+/// Every link's final `(sin θ, cos θ)` goes to `trig` if given.
 pub fn recover<const D: usize>(
     spans: &[Vector2<f64>],
     q: &mut SVector<f64, D>,
@@ -114,19 +115,24 @@ pub fn recover<const D: usize>(
     pair: [usize; 2],
     tolerance: f64,
     max_iterations: usize,
+    mut trig: Option<&mut [(f64, f64)]>,
 ) -> Result<usize, (usize, f64)> {
-    let turn = |theta: f64, d: Vector2<f64>| {
-        let (s, c) = theta.sin_cos();
+    let rotate = |(s, c): (f64, f64), d: Vector2<f64>| {
         (
             Vector2::new(c * d.x - s * d.y, s * d.x + c * d.y),
             Vector2::new(-s * d.x - c * d.y, c * d.x - s * d.y),
         )
     };
+    let turn = |theta: f64, d: Vector2<f64>| rotate(theta.sin_cos(), d);
     // The independent links' share of C and of C_q q̇.
     let (mut rest, mut rate) = (Vector2::zeros(), Vector2::zeros());
     for (j, d) in spans.iter().enumerate() {
         if j != pair[0] && j != pair[1] {
-            let (a, a_theta) = turn(q[2 + j], *d);
+            let sc = q[2 + j].sin_cos();
+            if let Some(trig) = trig.as_deref_mut() {
+                trig[j] = sc;
+            }
+            let (a, a_theta) = rotate(sc, *d);
             rest += a;
             if let Some(qd) = &qd {
                 rate += a_theta * qd[2 + j];
@@ -153,6 +159,10 @@ pub fn recover<const D: usize>(
         q[2 + pair[1]] -= step.y;
         iteration += 1;
     };
+    if let Some(trig) = trig {
+        trig[pair[0]] = q[2 + pair[0]].sin_cos();
+        trig[pair[1]] = q[2 + pair[1]].sin_cos();
+    }
     if let Some(qd) = qd {
         let dependent = columns.try_inverse().ok_or((iteration, 0.0))? * rate;
         qd[2 + pair[0]] = -dependent.x;

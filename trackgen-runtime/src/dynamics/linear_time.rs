@@ -154,7 +154,15 @@ impl LinearTimeSolver {
         stabilisation: Vector2<f64>,
         penalty_force: Option<Vector2<f64>>,
     ) -> Result<(SVector<f64, D>, Option<Vector2<f64>>), DynamicsError> {
-        self.accelerations_with_trig(q, qd, loads, constrained, stabilisation, penalty_force, None)
+        self.accelerations_with_trig(
+            q,
+            qd,
+            loads,
+            constrained,
+            stabilisation,
+            penalty_force,
+            None,
+        )
     }
 
     /// [`accelerations`](Self::accelerations), given each link's
@@ -179,7 +187,11 @@ impl LinearTimeSolver {
             });
         }
         if trig.is_some_and(|t| t.len() != n) {
-            return Err(DynamicsError::WrongLength { what: "trig", expected: n, got: trig.map_or(0, <[_]>::len) });
+            return Err(DynamicsError::WrongLength {
+                what: "trig",
+                expected: n,
+                got: trig.map_or(0, <[_]>::len),
+            });
         }
         if !loads.is_empty() && loads.len() != n {
             return Err(DynamicsError::WrongLength {

@@ -50,6 +50,20 @@ pub trait RecursiveModel<const DOF: usize> {
         self.body_velocities(q, qd, velocities);
     }
 
+    /// [`body_states`](Self::body_states) given every body's
+    /// `(sin θ, cos θ)` already (one per body, in body order).
+    fn body_states_with_trig(
+        &self,
+        trig: &[(f64, f64)],
+        q: &SVector<f64, DOF>,
+        qd: &SVector<f64, DOF>,
+        positions: &mut [Vector2<f64>],
+        velocities: &mut [Vector2<f64>],
+    ) {
+        let _ = trig;
+        self.body_states(q, qd, positions, velocities);
+    }
+
     /// Quadratic velocity terms `γ_Rᵇ` (eq. (14)); `γ_θ = 0`.
     fn velocity_terms(
         &self,

@@ -169,12 +169,32 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             )));
         }
         match &self.mode {
-            Mode::Partitioned { .. } => self.expand(t, y),
+            Mode::Partitioned { .. } => self.expand(t, y, None),
             _ => Ok((
                 SVector::from_fn(|i, _| y[i]),
                 SVector::from_fn(|i, _| y[D + i]),
             )),
         }
+    }
+
+    /// [`coordinates`](Self::coordinates), also writing every link's
+    /// `(sin θ, cos θ)` at the recovered angles into `trig`.
+    pub(crate) fn coordinates_with_trig(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        trig: &mut [(f64, f64)],
+    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        if let Mode::Partitioned { .. } = self.mode
+            && y.len() == self.y0.len()
+        {
+            return self.expand(t, y, Some(trig));
+        }
+        let (q, qd) = self.coordinates(t, y)?;
+        for (j, sc) in trig.iter_mut().enumerate() {
+            *sc = q[2 + j].sin_cos();
+        }
+        Ok((q, qd))
     }
 
     fn tolerance(&self, fraction: f64) -> f64 {
@@ -271,6 +291,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         &mut self,
         t: f64,
         y: &DVector<f64>,
+        trig: Option<&mut [(f64, f64)]>,
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
         let tolerance = match &self.mode {
             Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
@@ -301,6 +322,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             *pair,
             tolerance,
             options.newton_max_iterations,
+            trig,
         )
         .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
             t,
@@ -492,7 +514,7 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                 Ok(true)
             }
             Mode::Partitioned { .. } => {
-                let (q, qd) = self.expand(t, y)?;
+                let (q, qd) = self.expand(t, y, None)?;
                 let cq = self.model.closure_jacobian(&q);
                 let Mode::Partitioned {
                     options,

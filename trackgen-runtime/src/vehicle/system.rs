@@ -225,10 +225,17 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
         integral: f64,
     ) -> ContactSummary {
-        let links = Self::states(self.track.model(), qt, qdt);
-        for (trig, link) in self.link_trig.iter_mut().zip(&links) {
-            *trig = link.sin_cos();
-        }
+        // The track's trigonometry comes from the closure's recovery.
+        let links = {
+            let n = T::BODIES;
+            let (mut r, mut v) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
+            self.track
+                .model()
+                .body_states_with_trig(&self.link_trig, qt, qdt, &mut r, &mut v);
+            (0..n)
+                .map(|b| BodyState::new(r[b], qt[2 + b], v[b], qdt[2 + b]))
+                .collect::<Vec<_>>()
+        };
         let bodies = Self::states(self.chassis.model(), qc, qdc);
         self.track_loads.fill(BodyLoad::ZERO);
         self.chassis_loads.fill(BodyLoad::ZERO);
@@ -344,7 +351,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         dy: &mut DVector<f64>,
     ) -> Result<(), SimulationError> {
         let (yt, yc, [integral, _, _]) = self.split(y);
-        let (qt, qdt) = self.track.coordinates(t, &yt)?;
+        let (qt, qdt) = self
+            .track
+            .coordinates_with_trig(t, &yt, &mut self.link_trig)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
         let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
         self.track.set_external(&self.track_loads);
@@ -356,7 +365,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
                 what: "the track's state",
             });
         }
-        self.track.derivative_at(t, &qt, &qdt, &mut dt, Some(&self.link_trig))?;
+        self.track
+            .derivative_at(t, &qt, &qdt, &mut dt, Some(&self.link_trig))?;
         self.chassis.derivative(t, &yc, &mut dc)?;
         let (nt, nc) = (yt.len(), yc.len());
         dy.rows_mut(0, nt).copy_from(&dt);
@@ -421,11 +431,15 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let (yt, yc, [integral, work, dissipated]) = self.split(y);
         self.track.observe(t, &yt, row)?;
         self.chassis.observe(t, &yc, row)?;
-        let (qt, qdt) = self.track.coordinates(t, &yt)?;
+        let (qt, qdt) = self
+            .track
+            .coordinates_with_trig(t, &yt, &mut self.link_trig)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
         let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
         self.track.set_external(&self.track_loads);
-        let qdd = self.track.accelerations(t, &qt, &qdt, Some(&self.link_trig))?;
+        let qdd = self
+            .track
+            .accelerations(t, &qt, &qdt, Some(&self.link_trig))?;
         let all =
             tensions(self.track.model(), &qt, &qdt, &qdd, &self.track_loads).unwrap_or_default();
         let tension = all
