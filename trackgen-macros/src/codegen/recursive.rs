@@ -20,6 +20,11 @@ pub fn recursive_impl(
     let dof = n + 2;
     let trig = tree.trig_prelude();
     let trig_given = tree.trig_from_slice();
+    let trig_array = (0..n).map(|b| {
+        let i = 2 + b;
+        quote!(q[#i].sin_cos())
+    });
+    let trig_array = quote!(#(#trig_array),*);
     let rates = tree.rate_prelude(false);
     let positions = tree.positions();
     let velocities = tree.velocities();
@@ -82,20 +87,8 @@ pub fn recursive_impl(
                 positions: &mut [#rt::nalgebra::Vector2<f64>],
                 velocities: &mut [#rt::nalgebra::Vector2<f64>],
             ) {
-                ::core::assert_eq!(positions.len(), #n, "one entry per body");
-                ::core::assert_eq!(velocities.len(), #n, "one entry per body");
-                #trig
-                #rates
-                #positions
-                #velocities
-                {
-                    let out = positions;
-                    #store_r
-                }
-                {
-                    let out = velocities;
-                    #store_v
-                }
+                let trig = [#trig_array];
+                self.body_states_with_trig(&trig, q, qd, positions, velocities);
             }
 
             #[inline]
