@@ -76,12 +76,15 @@ fn run(args: &Args) -> Result<(), Box<dyn std::error::Error>> {
     };
     let (settle, ramp, speed) = (args.settle, args.ramp, args.speed);
     let drive = m113::speed_drive(move |t: f64| speed * ((t - settle) / ramp).clamp(0.0, 1.0));
+    let assembling = Instant::now();
     let mut system =
         m113::system(terrain.clone(), drive).map_err(|e| -> Box<dyn std::error::Error> { e })?;
+    let assembly = assembling.elapsed().as_secs_f64();
 
     println!(
         "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm"
     );
+    println!("assembled (track wrapped, tensioner set) in {:.0} ms", assembly * 1e3);
     println!(
         "settle {:.1} s, then to {:.1} m/s in {:.1} s; bump {:.2} m high at x = {:.1} m; {:.1} s in all",
         args.settle, args.speed, args.ramp, args.bump_height, args.bump_at, args.duration
