@@ -84,7 +84,10 @@ fn run(args: &Args) -> Result<(), Box<dyn std::error::Error>> {
     println!(
         "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm"
     );
-    println!("assembled (track wrapped, tensioner set) in {:.0} ms", assembly * 1e3);
+    println!(
+        "assembled (track wrapped, tensioner set) in {:.0} ms",
+        assembly * 1e3
+    );
     println!(
         "settle {:.1} s, then to {:.1} m/s in {:.1} s; bump {:.2} m high at x = {:.1} m; {:.1} s in all",
         args.settle, args.speed, args.ramp, args.bump_height, args.bump_at, args.duration

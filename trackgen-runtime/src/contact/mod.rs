@@ -40,7 +40,17 @@ impl BodyState {
     /// A body at `position` (m) and `angle` (rad), moving at `velocity`
     /// (m/s) and `omega` (rad/s).
     pub fn new(position: Vector2<f64>, angle: f64, velocity: Vector2<f64>, omega: f64) -> Self {
-        let (sin, cos) = angle.sin_cos();
+        Self::with_sin_cos(position, angle, angle.sin_cos(), velocity, omega)
+    }
+
+    /// [`new`](Self::new), given `(sin θ, cos θ)` already.
+    pub fn with_sin_cos(
+        position: Vector2<f64>,
+        angle: f64,
+        (sin, cos): (f64, f64),
+        velocity: Vector2<f64>,
+        omega: f64,
+    ) -> Self {
         BodyState {
             position,
             angle,

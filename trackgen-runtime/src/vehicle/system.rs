@@ -233,7 +233,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 .model()
                 .body_states_with_trig(&self.link_trig, qt, qdt, &mut r, &mut v);
             (0..n)
-                .map(|b| BodyState::new(r[b], qt[2 + b], v[b], qdt[2 + b]))
+                .map(|b| {
+                    BodyState::with_sin_cos(r[b], qt[2 + b], self.link_trig[b], v[b], qdt[2 + b])
+                })
                 .collect::<Vec<_>>()
         };
         let bodies = Self::states(self.chassis.model(), qc, qdc);
