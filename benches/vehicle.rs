@@ -3,9 +3,13 @@
 //! Bogacki-Shampine at 1e-3 as in the main job. The assembly is set-up,
 //! outside the measured time. Real-time factor = 0.5 s / the time reported.
 //!
+//! And many vehicles: four such runs one after another against the same
+//! four on rayon's pool (all cores), side by side.
+//!
 //! `cargo bench --bench vehicle`; numbers in README.md.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
+use rayon::prelude::*;
 use std::hint::black_box;
 use std::time::Duration;
 use trackgen::contact::Terrain;
@@ -13,24 +17,46 @@ use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
 use trackgen::vehicles::m113;
 
+/// The M113 at rest, speed controller on, ready to run.
+fn vehicle_at_rest() -> m113::M113System {
+    let drive = m113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
+    m113::system(Terrain::Flat { height: 0.0 }, drive).unwrap()
+}
+
+fn half_second(mut system: m113::M113System) -> trackgen::simulate::Results {
+    let integrator = Integrator::Bs23 {
+        rtol: 1e-3,
+        atol: 1e-3,
+        max_step: 0.01,
+    };
+    simulate(&mut system, integrator, 0.0, 0.5, Output::Every(0.01)).unwrap()
+}
+
 fn vehicle(c: &mut Criterion) {
     c.bench_function("m113_half_second", |b| {
         b.iter_batched(
-            || {
-                let drive = m113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
-                m113::system(Terrain::Flat { height: 0.0 }, drive).unwrap()
-            },
-            |mut system| {
-                let integrator = Integrator::Bs23 {
-                    rtol: 1e-3,
-                    atol: 1e-3,
-                    max_step: 0.01,
-                };
-                black_box(simulate(&mut system, integrator, 0.0, 0.5, Output::Every(0.01)).unwrap())
-            },
+            vehicle_at_rest,
+            |system| black_box(half_second(system)),
             BatchSize::LargeInput,
         )
     });
+    let mut group = c.benchmark_group("four_m113_runs");
+    let four = || (0..4).map(|_| vehicle_at_rest()).collect::<Vec<_>>();
+    group.bench_function("serial", |b| {
+        b.iter_batched(
+            four,
+            |systems| black_box(systems.into_iter().map(half_second).count()),
+            BatchSize::LargeInput,
+        )
+    });
+    group.bench_function("parallel", |b| {
+        b.iter_batched(
+            four,
+            |systems| black_box(systems.into_par_iter().map(half_second).count()),
+            BatchSize::LargeInput,
+        )
+    });
+    group.finish();
 }
 
 criterion_group! {

@@ -28,5 +28,6 @@ pub use tree::TreeSystem;
 /// one [`BodyLoad`](crate::BodyLoad) per body. The slice holds the loads
 /// already acting (contact, in a vehicle): add to it (`+=`).
 pub type LoadFn<const D: usize> = Box<
-    dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad]),
+    dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad])
+        + Send,
 >;

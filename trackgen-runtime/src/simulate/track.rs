@@ -135,7 +135,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// Applied loads besides gravity (a sprocket torque, say).
     pub fn with_loads(
         mut self,
-        loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + 'static,
+        loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + Send + 'static,
     ) -> Self {
         self.loads.set_function(Box::new(loads));
         self

@@ -47,7 +47,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     /// Applied loads besides gravity.
     pub fn with_loads(
         mut self,
-        loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + 'static,
+        loads: impl FnMut(f64, &SVector<f64, D>, &SVector<f64, D>, &mut [BodyLoad]) + Send + 'static,
     ) -> Self {
         self.loads.set_function(Box::new(loads));
         self
