@@ -54,6 +54,6 @@ RS
     start=$(date +%s.%N)
     (cd "$dir" && CARGO_INCREMENTAL=0 cargo build -q --profile $profile --target-dir "$work/target")
     end=$(date +%s.%N)
-    printf '%4d links  %-7s  %6.1f s\n' "$n" "$profile" "$(echo "$end - $start" | bc)"
+    printf '%4d links  %-7s  %6.1f s\n' "$n" "$profile" "$(awk "BEGIN { print $end - $start }")"
   done
 done
