@@ -147,7 +147,8 @@ pub fn excess<M: TrackModel<D>, const D: usize>(
     sag_span: usize,
     sag: f64,
 ) -> f64 {
-    let path = belt(&hull(wheels), sag_span.min(wheels.len() - 1), sag);
+    let touching = hull(wheels);
+    let path = belt(&touching, span_among(wheels, &touching, sag_span), sag);
     let (_, landed) = lay(&path, &pitches(model));
     landed - path.length()
 }
@@ -160,6 +161,17 @@ fn pitches<M: TrackModel<D>, const D: usize>(model: &M) -> Vec<f64> {
         .iter()
         .map(|d| d.norm())
         .collect()
+}
+
+/// Span `sag_span` of `wheels` (the stretch after that wheel), counted among
+/// the wheels the belt touches; if its wheel dropped out, the span after
+/// the last touching wheel before it.
+fn span_among(wheels: &[PitchCircle], touching: &[PitchCircle], sag_span: usize) -> usize {
+    let m = wheels.len();
+    (0..m)
+        .map(|back| wheels[(sag_span % m + m - back) % m])
+        .find_map(|w| touching.iter().position(|t| *t == w))
+        .unwrap_or(0)
 }
 
 /// The wheels the belt touches: those inside the convex wrap drop out.
@@ -206,10 +218,7 @@ pub fn wrap<M: TrackModel<D>, const D: usize>(
     };
     // The sagging span, counted among the wheels the belt touches.
     let touching = hull(wheels);
-    let sag_span = touching
-        .iter()
-        .position(|w| *w == wheels[sag_span])
-        .unwrap_or(0);
+    let sag_span = span_among(wheels, &touching, sag_span);
     let wheels = &touching[..];
     let m = wheels.len();
     let pitches = pitches(model);

@@ -40,21 +40,33 @@ impl GroundContact {
                 let arm = link.arm(*local);
                 let point = link.position + arm;
                 let (h, slope) = self.terrain.height_and_slope(point.x);
-                let normal = Vector2::new(-slope, 1.0) / (1.0 + slope * slope).sqrt();
-                let penetration = (h - point.y) * normal.y;
+                // Penetration below the profile, δ = h(x) − y: continuous
+                // over kinks, and its exact rate is −v·g with g = (−h′, 1),
+                // so the elastic force g·F(δ) is exactly the gradient of
+                // the contact's potential and the energy books balance on
+                // any terrain.
+                let penetration = h - point.y;
                 if penetration <= 0.0 {
                     continue;
                 }
                 let velocity = link.velocity_at(arm);
-                let contact = ContactForce::evaluate(
-                    &self.normal,
-                    &self.friction,
+                let g = Vector2::new(-slope, 1.0);
+                let rate = -velocity.dot(&g);
+                let normal = self.normal.force(penetration, rate);
+                let tangent = Vector2::new(g.y, -g.x) / g.norm();
+                let slip = velocity.dot(&tangent);
+                let friction = self.friction.force(normal * g.norm(), slip);
+                let force = g * normal + tangent * friction;
+                let contact = ContactForce {
                     point,
-                    normal,
+                    force,
+                    normal: normal * g.norm(),
                     penetration,
-                    velocity,
-                );
-                loads[i] = loads[i].plus(BodyLoad::force_at(contact.force, arm));
+                    dissipation: (normal - self.normal.elastic_force(penetration)) * rate
+                        - friction * slip,
+                    potential: self.normal.potential(penetration),
+                };
+                loads[i] = loads[i].plus(BodyLoad::force_at(force, arm));
                 each(i, &contact);
             }
         }

@@ -91,8 +91,13 @@ pub struct Friction {
 impl Friction {
     /// The tangential force along the slip direction, N (opposing `slip`).
     pub fn force(&self, normal: f64, slip_velocity: f64) -> f64 {
-        -self.mu * normal * slip_velocity
-            / (slip_velocity * slip_velocity + self.slip * self.slip).sqrt()
+        let scale = (slip_velocity * slip_velocity + self.slip * self.slip).sqrt();
+        // `slip = 0` is plain Coulomb friction (zero force at zero slip).
+        if scale == 0.0 {
+            0.0
+        } else {
+            -self.mu * normal * slip_velocity / scale
+        }
     }
 }
 

@@ -5,9 +5,11 @@
 //! between every two teeth: gap `k` is the arc of radius `arc_radius`
 //! centred at `arc_centre_radius` from the sprocket centre, at angle
 //! `θ_s + (k + ½)·2π/teeth`. Tooth material is what lies inside the
-//! addendum circle and outside every gap. A pin (a cylinder) inside the
-//! addendum circle that reaches beyond its gap's arc penetrates a tooth by
-//! `|p − g| + r_pin − r_arc` and is pushed back toward the arc centre `g`.
+//! addendum circle and outside every gap. A pin (a cylinder) reaching into
+//! a tooth is pushed out the shorter way: back toward its gap's arc centre
+//! `g` (depth `|p − g| + r_pin − r_arc`) or radially out across the tip
+//! circle (depth `r_add + r_pin − |p − c|`), so the force grows from zero
+//! wherever a pin enters.
 
 use nalgebra::Vector2;
 
@@ -90,15 +92,30 @@ impl SprocketContact {
                 if (pin - sprocket.position).norm_squared() > pin_reach * pin_reach {
                     continue;
                 }
+                // Inside the addendum circle, outside the gap's arc: in a
+                // tooth. The pin leaves it the shorter way, back into the
+                // gap or out across the tip circle.
                 let gap = self.profile.nearest_gap(sprocket, pin);
-                let out = pin - gap;
-                let distance = out.norm();
-                let penetration = distance + shoe.pin_radius - self.profile.arc_radius;
-                if penetration <= 0.0 || distance == 0.0 {
+                let (out, radial) = (pin - gap, pin - sprocket.position);
+                let (distance, from_centre) = (out.norm(), radial.norm());
+                let into_flank = distance + shoe.pin_radius - self.profile.arc_radius;
+                let into_tip = self.profile.addendum + shoe.pin_radius - from_centre;
+                if into_flank <= 0.0 || into_tip <= 0.0 || distance == 0.0 || from_centre == 0.0 {
                     continue;
                 }
-                let normal = -out / distance;
-                let point = gap + out / distance * self.profile.arc_radius;
+                let (penetration, normal, point) = if into_flank <= into_tip {
+                    (
+                        into_flank,
+                        -out / distance,
+                        gap + out / distance * self.profile.arc_radius,
+                    )
+                } else {
+                    (
+                        into_tip,
+                        radial / from_centre,
+                        sprocket.position + radial / from_centre * self.profile.addendum,
+                    )
+                };
                 let contact = super::exchange(
                     (&self.normal, &self.friction),
                     (link, &mut link_loads[i]),

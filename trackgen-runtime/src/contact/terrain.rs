@@ -122,6 +122,7 @@ impl Terrain {
                     )
                 }
             }
+            Terrain::Sine { wavelength, .. } if *wavelength == 0.0 => (0.0, 0.0),
             Terrain::Sine {
                 amplitude,
                 wavelength,
@@ -130,7 +131,10 @@ impl Terrain {
                 (amplitude * (k * x).sin(), amplitude * k * (k * x).cos())
             }
             Terrain::Table(points) => {
-                let (first, last) = (points[0], points[points.len() - 1]);
+                // Built directly (not by `table`), a table may be empty.
+                let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
+                    return (0.0, 0.0);
+                };
                 if x <= first.0 {
                     return (first.1, 0.0);
                 }
@@ -150,19 +154,14 @@ impl Terrain {
         match self {
             Terrain::Flat { height } => *height,
             Terrain::Ramp { .. } => self.height(x0).max(self.height(x1)),
-            Terrain::Bump {
-                centre,
-                width,
-                height,
-            } => {
-                if x1 > centre - width / 2.0 && x0 < centre + width / 2.0 {
-                    if (x0..=x1).contains(centre) {
-                        *height
-                    } else {
-                        self.height(x0).max(self.height(x1))
-                    }
+            Terrain::Bump { centre, height, .. } => {
+                let ends = self.height(x0).max(self.height(x1));
+                // A bump's crest inside the interval; a dip's highest points
+                // are at the ends (or the flat around it).
+                if (x0..=x1).contains(centre) {
+                    ends.max(*height)
                 } else {
-                    0.0
+                    ends
                 }
             }
             Terrain::Sine { amplitude, .. } => amplitude.abs(),

@@ -143,8 +143,8 @@ impl LinearTimeSolver {
     /// loop gets `C_q q̈ = γ_c − stabilisation` (Baumgarte: `2ω Ċ + ω² C`;
     /// zero for the plain equations); a cut one may carry a penalty
     /// spring's force (on link n at ū2ⁿ, reversed on link 1 at ū1¹).
-    /// Returns the force the closing joint puts on link n's neighbour, link
-    /// 1, when constrained.
+    /// When constrained, also returns the closing joint's `λ` of spec §5:
+    /// the force it puts on link n (link 1 gets the opposite).
     pub fn accelerations<const D: usize>(
         &mut self,
         q: &SVector<f64, D>,
@@ -201,6 +201,13 @@ impl LinearTimeSolver {
             });
         }
         let closed = constrained;
+        if closed && n < 3 {
+            return Err(DynamicsError::WrongLength {
+                what: "links of a closed loop (at least 3)",
+                expected: 3,
+                got: n,
+            });
+        }
         // Per link: lever arms, applied loads.
         for i in 0..n {
             let link = &self.links[i];

@@ -197,6 +197,24 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         Ok((q, qd))
     }
 
+    /// The closing joint's share of the energy books at `(q_i, q̇_i)`: the
+    /// elastic energy (J) not already in the model's potential energy, and
+    /// the power dissipated (W). A penalty joint's spring `½ k |C|²` and
+    /// damper `c |Ċ|²`; zero for constraints (partitioning keeps the closure
+    /// exactly; the multiplier method's stabilisation and projection are
+    /// not accounted).
+    pub(crate) fn closure_energy(&self, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> (f64, f64) {
+        let rate = || (self.model.closure_jacobian(q) * qd).norm_squared();
+        match (&self.mode, M::CLOSURE) {
+            (Mode::Penalty { stiffness, damping }, _) => (
+                penalty::energy(self.model.closure(q), *stiffness),
+                damping * rate(),
+            ),
+            (Mode::AsDeclared, Closure::Penalty { damping, .. }) => (0.0, damping * rate()),
+            _ => (0.0, 0.0),
+        }
+    }
+
     fn tolerance(&self, fraction: f64) -> f64 {
         fraction * self.loop_length
     }

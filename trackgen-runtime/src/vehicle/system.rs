@@ -141,6 +141,12 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 T::BODIES
             )));
         }
+        if config.sprocket.profile.teeth < 3 {
+            return Err(SimulationError::Setup(format!(
+                "a sprocket needs at least 3 teeth, the profile has {}",
+                config.sprocket.profile.teeth
+            )));
+        }
         let track = TrackSystem::new(track, q_track, SVector::zeros(), closure)?;
         let chassis = TreeSystem::chassis(chassis, q_chassis, SVector::zeros());
         let sprocket = C::PARTS.iter().position(|p| p.kind == PartKind::Sprocket);
@@ -375,7 +381,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         dy.rows_mut(nt, nc).copy_from(&dc);
         dy[nt + nc] = s.integral_rate;
         dy[nt + nc + 1] = s.torque * self.sprocket_omega(&qdc);
-        dy[nt + nc + 2] = s.dissipation;
+        dy[nt + nc + 2] = s.dissipation + self.track.closure_energy(&qt, &qdt).1;
         Ok(())
     }
 }
@@ -457,7 +463,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             + self.chassis.model().kinetic_energy(&qc, &qdc)
             + self.chassis.model().potential_energy(&qc)
             + arm_energy::<C, DC>(&qc)
-            + s.potential;
+            + s.potential
+            + self.track.closure_energy(&qt, &qdt).0;
         row.extend([
             qc[0],
             qc[1],

@@ -33,8 +33,15 @@ pub fn tensions<M: TrackModel<D>, const D: usize>(
     let mut gamma = vec![Vector2::zeros(); n];
     model.body_velocities(q, qdd, &mut accel);
     model.velocity_terms(q, qd, &mut gamma);
-    // The constraint C = P_n − P_1 pushes link 1 by +λ at its ū1.
-    let mut from_previous = lambda;
+    // The constraint C = P_n − P_1 pushes link 1 by +λ at its ū1. A
+    // declared penalty joint is in Q_i already (so λ ≈ 0): its spring-damper
+    // pushes link 1 by −F_pen.
+    let mut from_previous = match description.loop_joint.map(|j| j.closure) {
+        Some(crate::model::Closure::Penalty { stiffness, damping }) => {
+            model.closure(q) * stiffness + (cq * qd) * damping
+        }
+        _ => lambda,
+    };
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
         let body = &description.bodies[i];
