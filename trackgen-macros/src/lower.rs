@@ -679,10 +679,41 @@ impl Cx<'_> {
         let fields = self.fields(what, block, &keys);
         let arms: &[&str] = match kind {
             PartKind::RoadWheel | PartKind::Idler => &["arm"],
-            PartKind::Sprocket | PartKind::Roller => &[],
+            PartKind::Sprocket | PartKind::Roller => {
+                // Say why, rather than that the section is unknown.
+                for entry in &block.entries {
+                    if let Entry::Section { kind: keyword, .. } = entry
+                        && keyword == "arm"
+                    {
+                        self.errors.at(
+                            keyword.span(),
+                            format!("a {what} takes no `arm`: only road wheels and idlers hang from arms"),
+                        );
+                    }
+                }
+                &[]
+            }
         };
         let mut arm = None;
-        for section in self.sections(what, block, arms) {
+        let sections = if arms.is_empty() {
+            Vec::new()
+        } else {
+            self.sections(what, block, arms)
+        };
+        if arms.is_empty() {
+            // Other sections are still unexpected.
+            for entry in &block.entries {
+                if let Entry::Section { kind: keyword, .. } = entry
+                    && keyword != "arm"
+                {
+                    self.errors.at(
+                        keyword.span(),
+                        format!("unexpected section `{keyword}` in {what}"),
+                    );
+                }
+            }
+        }
+        for section in sections {
             let Entry::Section {
                 kind: keyword,
                 body,
