@@ -9,37 +9,9 @@ use std::hint::black_box;
 use std::time::Duration;
 use trackgen::TrackModel;
 use trackgen::dynamics::{LinearTimeSolver, forward_dynamics};
-use trackgen::nalgebra::SVector;
 
-macro_rules! tracks {
-    ($($name:ident = $n:literal),*) => {
-        trackgen::model! {
-            $(
-                /// An M113-like closed track.
-                pub track $name {
-                    links: $n,
-                    link { mass: 18.02, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
-                    closure: partitioned,
-                }
-            )*
-        }
-    };
-}
-
-tracks!(Track16 = 16, Track32 = 32, Track64 = 64, Track128 = 128);
-
-fn state<const D: usize>() -> (SVector<f64, D>, SVector<f64, D>) {
-    let n = (D - 2) as f64;
-    let q = SVector::from_fn(|i, _| {
-        if i < 2 {
-            0.3
-        } else {
-            2.0 * std::f64::consts::PI * (i - 2) as f64 / n
-        }
-    });
-    let qd = SVector::from_fn(|i, _| if i < 2 { 1.0 } else { 0.5 });
-    (q, qd)
-}
+mod support;
+use support::*;
 
 fn bench_one<M: TrackModel<D>, const D: usize>(c: &mut Criterion, model: M, dense: bool) {
     let n = M::BODIES;

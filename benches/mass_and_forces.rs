@@ -10,42 +10,8 @@ use trackgen::RecursiveModel;
 use trackgen::nalgebra::{DVector, SMatrix, SVector};
 use trackgen::reference::ReferenceModel;
 
-macro_rules! tracks {
-    ($($name:ident = $n:literal),*) => {
-        trackgen::model! {
-            $(
-                /// An M113-like track (spec m113.md shoes).
-                pub track $name {
-                    links: $n,
-                    link { mass: 18.02, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
-                    closure: partitioned,
-                }
-            )*
-        }
-    };
-}
-
-tracks!(
-    Track8 = 8,
-    Track16 = 16,
-    Track32 = 32,
-    Track64 = 64,
-    Track128 = 128
-);
-
-/// A state with every angle distinct (a ring: the loop closes).
-fn state<const D: usize>() -> (SVector<f64, D>, SVector<f64, D>) {
-    let n = (D - 2) as f64;
-    let q = SVector::from_fn(|i, _| {
-        if i < 2 {
-            0.3
-        } else {
-            2.0 * std::f64::consts::PI * (i - 2) as f64 / n
-        }
-    });
-    let qd = SVector::from_fn(|i, _| if i < 2 { 1.0 } else { 0.5 });
-    (q, qd)
-}
+mod support;
+use support::*;
 
 fn bench_one<M: RecursiveModel<D>, const D: usize>(c: &mut Criterion, model: M) {
     let n = M::BODIES;

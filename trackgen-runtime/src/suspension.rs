@@ -47,3 +47,15 @@ pub fn arm_energy<M: ChassisModel<D>, const D: usize>(q: &SVector<f64, D>) -> f6
         })
         .sum()
 }
+
+/// The power the arm dampers dissipate, `Σ c φ̇²`, W.
+pub fn arm_dissipation<M: ChassisModel<D>, const D: usize>(qd: &SVector<f64, D>) -> f64 {
+    M::PARTS
+        .iter()
+        .filter_map(|p| p.arm.as_ref())
+        .map(|arm| {
+            let rate = qd[2 + arm.body] - qd[2];
+            arm.damping * rate * rate
+        })
+        .sum()
+}

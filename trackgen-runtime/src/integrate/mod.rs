@@ -54,13 +54,22 @@ pub trait OdeSystem {
     ) -> Result<(), SimulationError>;
 }
 
-/// `f(t, y)`, counted, and checked for NaN or infinite components.
+/// `f(t, y)`, counted, with `y` and `f` checked for NaN or infinite
+/// components.
 pub(crate) fn evaluate(
     system: &mut dyn OdeSystem,
     stats: &mut Stats,
     t: f64,
     y: &DVector<f64>,
 ) -> Result<DVector<f64>, SimulationError> {
+    // One check for every system: a NaN stage state is this integrator's
+    // business (a rejected step), not each right-hand side's.
+    if !y.iter().all(|v| v.is_finite()) {
+        return Err(SimulationError::NonFinite {
+            t,
+            what: "the state",
+        });
+    }
     let mut dy = DVector::zeros(y.len());
     stats.evaluations += 1;
     system.derivative(t, y, &mut dy)?;

@@ -424,12 +424,6 @@ impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
         y: &DVector<f64>,
         dy: &mut DVector<f64>,
     ) -> Result<(), SimulationError> {
-        if !y.iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite {
-                t,
-                what: "the state",
-            });
-        }
         let (q, qd) = self.coordinates(t, y)?;
         self.derivative_at(t, &q, &qd, dy, None)
     }

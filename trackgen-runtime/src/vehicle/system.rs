@@ -5,11 +5,11 @@ use crate::closure::ClosureMethod;
 use crate::contact::ground::GroundContact;
 use crate::contact::sprocket::{SprocketContact, ToothProfile};
 use crate::contact::wheel::WheelContact;
-use crate::contact::{BodyState, Friction, NormalLaw, ShoeGeometry, Terrain};
+use crate::contact::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
 use crate::simulate::{Simulated, SimulationError, Switch, TrackSystem, TreeSystem};
-use crate::suspension::{add_arm_torques, arm_energy};
+use crate::suspension::{add_arm_torques, arm_dissipation, arm_energy};
 
 /// How a vehicle meets the world: shoe geometry, the three contact pairs,
 /// and the drive.
@@ -95,6 +95,15 @@ struct ContactSummary {
     dissipation: f64,
     torque: f64,
     integral_rate: f64,
+}
+
+impl ContactSummary {
+    /// Books a contact's energy terms; returns its penetration.
+    fn book(&mut self, contact: &ContactForce) -> f64 {
+        self.potential += contact.potential;
+        self.dissipation += contact.dissipation;
+        contact.penetration
+    }
 }
 
 /// A vehicle: its track and chassis integrated together, coupled by the
@@ -253,9 +262,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             .ground
             .apply(&links, &config.shoe, &mut self.track_loads, |_, c| {
                 s.ground_normal += c.normal;
-                s.ground_penetration = s.ground_penetration.max(c.penetration);
-                s.potential += c.potential;
-                s.dissipation += c.dissipation;
+                let depth = s.book(c);
+                s.ground_penetration = s.ground_penetration.max(depth);
             });
         for part in C::PARTS {
             let body = &bodies[part.body];
@@ -268,9 +276,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                     &mut self.track_loads,
                     load,
                     |_, c| {
-                        s.sprocket_penetration = s.sprocket_penetration.max(c.penetration);
-                        s.potential += c.potential;
-                        s.dissipation += c.dissipation;
+                        let depth = s.book(c);
+                        s.sprocket_penetration = s.sprocket_penetration.max(depth);
                     },
                 );
             } else {
@@ -281,18 +288,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                     &mut self.track_loads,
                     load,
                     |_, c| {
-                        s.wheel_penetration = s.wheel_penetration.max(c.penetration);
-                        s.potential += c.potential;
-                        s.dissipation += c.dissipation;
+                        let depth = s.book(c);
+                        s.wheel_penetration = s.wheel_penetration.max(depth);
                     },
                 );
             }
-            if let Some(arm) = &part.arm {
-                let rate = qdc[2 + arm.body] - qdc[2];
-                s.dissipation += arm.damping * rate * rate;
-            }
         }
         add_arm_torques::<C, DC>(qc, qdc, &mut self.chassis_loads);
+        s.dissipation += arm_dissipation::<C, DC>(qdc);
         if let Some(i) = self.sprocket {
             let body = C::PARTS[i].body;
             let omega = qdc[2 + body] - qdc[2];
@@ -367,12 +370,6 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.track.set_external(&self.track_loads);
         self.chassis.set_external(&self.chassis_loads);
         let (mut dt, mut dc) = (DVector::zeros(yt.len()), DVector::zeros(yc.len()));
-        if !yt.iter().all(|v| v.is_finite()) {
-            return Err(SimulationError::NonFinite {
-                t,
-                what: "the track's state",
-            });
-        }
         self.track
             .derivative_at(t, &qt, &qdt, &mut dt, Some(&self.link_trig))?;
         self.chassis.derivative(t, &yc, &mut dc)?;
