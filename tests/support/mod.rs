@@ -1,15 +1,24 @@
 //! Shared helpers of the integration tests.
 #![allow(dead_code)]
 
+pub mod vehicle;
+
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector};
 
 /// Norm-wise relative agreement: `max |a − b| ≤ rel · max(|b|_max, floor)`.
 /// Comparing against the largest entry (not entry by entry) is the right
 /// scale for rounding error in sums of products: an entry that is the
 /// small difference of large terms carries the large terms' error.
+///
+/// A NaN or infinity on either side fails: `f64::max` would drop a NaN,
+/// so the scale and the worst difference are taken with [`max_of`].
 pub fn assert_close(label: &str, got: &[f64], want: &[f64], rel: f64, floor: f64) {
     assert_eq!(got.len(), want.len(), "{label}: length");
-    let scale = want.iter().fold(floor, |m, v| m.max(v.abs()));
+    if let Some(i) = got.iter().chain(want).position(|v| !v.is_finite()) {
+        let (side, at) = if i < got.len() { ("got", i) } else { ("want", i - got.len()) };
+        panic!("{label}: entry {at} of {side} is not finite (got {:?}, want {:?})", got[at], want[at]);
+    }
+    let scale = max_of(want.iter().map(|v| v.abs())).max(floor);
     let (worst, at) = got
         .iter()
         .zip(want)
@@ -17,12 +26,32 @@ pub fn assert_close(label: &str, got: &[f64], want: &[f64], rel: f64, floor: f64
         .map(|(i, (g, w))| ((g - w).abs(), i))
         .fold((0.0f64, 0), |a, b| if b.0 > a.0 { b } else { a });
     assert!(
-        worst <= rel * scale && got.iter().all(|g| g.is_finite()),
+        worst <= rel * scale,
         "{label}: entry {at} differs by {worst:e} (got {}, want {}), allowed {:e}",
         got[at],
         want[at],
         rel * scale
     );
+}
+
+/// The largest value, NaN if any value is NaN (`fold(0.0, f64::max)`
+/// silently drops NaN, so a test of "the largest error is small" would pass
+/// a run that produced NaN). `-∞` for no values.
+pub fn max_of(values: impl IntoIterator<Item = f64>) -> f64 {
+    values.into_iter().fold(f64::NEG_INFINITY, |m, v| {
+        if v.is_nan() || m.is_nan() { f64::NAN } else { m.max(v) }
+    })
+}
+
+/// The smallest value, NaN if any value is NaN. `+∞` for no values.
+pub fn min_of(values: impl IntoIterator<Item = f64>) -> f64 {
+    -max_of(values.into_iter().map(|v| -v))
+}
+
+/// The largest magnitude, NaN if any value is NaN; 0 for no values.
+pub fn max_abs(values: impl IntoIterator<Item = f64>) -> f64 {
+    // `max_of` of nothing is −∞; `f64::max` would turn a NaN into 0 here.
+    max_of(values.into_iter().map(f64::abs).chain([0.0]))
 }
 
 pub fn dvec<const D: usize>(v: &SVector<f64, D>) -> DVector<f64> {

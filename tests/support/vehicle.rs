@@ -1,0 +1,112 @@
+//! Helpers of the vehicle tests: building the M113 with any closure and
+//! drive, and reading its energy books and time windows from the results.
+
+use trackgen::RecursiveModel;
+use trackgen::closure::ClosureMethod;
+use trackgen::contact::sprocket::ToothProfile;
+use trackgen::contact::{ShoeGeometry, Terrain};
+use trackgen::simulate::Results;
+use trackgen::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
+use trackgen::vehicles::m113::{self, M113Chassis, M113System, M113Track};
+
+use super::{max_abs, min_of};
+
+/// The M113 assembled on `terrain` (chassis centroid at x = 0, 1 mm
+/// clearance, as `m113::system`), its loop closed by `closure`.
+pub fn m113_with(terrain: Terrain, drive: Drive, closure: ClosureMethod) -> M113System {
+    let a = assemble(
+        &M113Track,
+        &M113Chassis,
+        &ShoeGeometry::m113(),
+        &ToothProfile::m113(),
+        &terrain,
+        0.0,
+        0.001,
+    )
+    .expect("the M113 assembles");
+    VehicleSystem::new(
+        M113Track,
+        M113Chassis,
+        a.track,
+        a.chassis,
+        closure,
+        VehicleConfig::m113(terrain, drive),
+    )
+    .expect("the M113 is a valid system")
+}
+
+/// The M113's weight, N, from the masses declared in
+/// `src/vehicles/m113.rs` (64 shoes, the half hull, sprocket, five road
+/// wheels and arms, idler and tensioner arm).
+pub fn m113_weight() -> f64 {
+    let mass: f64 = M113Track
+        .description()
+        .bodies
+        .iter()
+        .chain(M113Chassis.description().bodies.iter())
+        .map(|b| b.mass)
+        .sum();
+    mass * 9.81
+}
+
+/// The M113 sprocket's pitch radius, m, from the shoe pitch and the tooth
+/// count alone: the joints seated in the gaps form a regular polygon of
+/// side `p` with `N` sides, whose circumradius is `p / (2 sin(π/N))`
+/// (0.2492 m; the declared rim radius is 0.245 m).
+pub fn m113_pitch_radius() -> f64 {
+    m113::SHOE_PITCH / (2.0 * (std::f64::consts::PI / 10.0).sin())
+}
+
+/// The values of `column` at samples with `t0 ≤ t ≤ t1`.
+pub fn window(results: &Results, column: &str, t0: f64, t1: f64) -> Vec<f64> {
+    let values = results
+        .column(column)
+        .unwrap_or_else(|| panic!("no column {column}"));
+    results
+        .times()
+        .iter()
+        .zip(values)
+        .filter(|(t, _)| (t0..=t1).contains(*t))
+        .map(|(_, v)| v)
+        .collect()
+}
+
+/// The mean of a non-empty list (NaN propagates).
+pub fn mean(values: &[f64]) -> f64 {
+    assert!(!values.is_empty(), "mean of nothing");
+    values.iter().sum::<f64>() / values.len() as f64
+}
+
+/// The energy books of a vehicle run: the largest `|W − ΔE − D|` over
+/// the samples (J), the motor's final work `W` (J), and the smallest
+/// increase of the dissipated work `D` between samples (J; negative if a
+/// law gave energy back).
+pub struct Books {
+    /// Largest residual of `W = ΔE + D`, J.
+    pub residual: f64,
+    /// The motor's work at the end, J.
+    pub work: f64,
+    /// Smallest step of `D` between samples, J.
+    pub least_dissipation_step: f64,
+}
+
+impl Books {
+    /// Reads the books from a vehicle's results.
+    pub fn of(results: &Results) -> Books {
+        let column = |c: &str| results.column(c).unwrap_or_else(|| panic!("no column {c}"));
+        let (energy, work, dissipated) =
+            (column("energy"), column("motor_work"), column("dissipated"));
+        Books {
+            residual: max_abs(
+                (0..energy.len()).map(|i| work[i] - (energy[i] - energy[0]) - dissipated[i]),
+            ),
+            work: *work.last().expect("samples"),
+            least_dissipation_step: min_of(dissipated.windows(2).map(|d| d[1] - d[0])),
+        }
+    }
+
+    /// The residual as a fraction of the work.
+    pub fn relative(&self) -> f64 {
+        self.residual / self.work.abs()
+    }
+}
