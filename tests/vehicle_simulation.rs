@@ -2,6 +2,9 @@
 //! as two subsystems (spec §3: no contact yet, so they do not interact),
 //! driven by a sprocket torque.
 
+mod support;
+
+use support::max_abs;
 use trackgen::ChassisModel;
 use trackgen::closure::ClosureMethod;
 use trackgen::integrate::Integrator;
@@ -148,10 +151,7 @@ fn vehicle_subsystems_integrate_together() {
     assert!(results.columns().iter().any(|c| c == "chassis.energy"));
     let track_energy = results.column("track.energy").unwrap();
     let kinetic = results.column("track.kinetic").unwrap()[0];
-    let drift = track_energy
-        .iter()
-        .map(|e| (e - track_energy[0]).abs())
-        .fold(0.0, f64::max);
+    let drift = max_abs(track_energy.iter().map(|e| e - track_energy[0]));
     assert!(drift < 1e-8 * kinetic, "track energy drift {drift} J");
     assert!(
         results

@@ -48,7 +48,8 @@ struct Args {
     ramp: f64,
     /// Integrator tolerance, relative and absolute. At the default 1e-3 the
     /// energy balance closes to ~0.3 % of the motor's work (the vehicle
-    /// tests allow 2 %); at 1e-4, to ~0.02 %, at half the speed.
+    /// tests hold a shortened bump course at these settings to 0.5 %); at
+    /// 1e-4, to ~0.02 %, at half the speed.
     #[arg(long, default_value_t = 1e-3)]
     tolerance: f64,
     /// Integrator: `bs23` (Bogacki-Shampine 3(2), three evaluations a step:
