@@ -131,7 +131,10 @@ fn every_integrator_drives_the_vehicle() {
     let duration = 0.3;
     let exact = {
         let mut system = m113_with(flat(), torque_start(), ClosureMethod::Declared);
-        last(&run(&mut system, Integrator::dopri5(1e-7), duration), "speed")
+        last(
+            &run(&mut system, Integrator::dopri5(1e-7), duration),
+            "speed",
+        )
     };
     assert!(exact > 0.2, "the torque drives the vehicle: {exact} m/s");
     for (name, integrator) in [
@@ -228,7 +231,10 @@ fn speed_drive_saturates_without_winding_up() {
         4.0,
     );
     let torque = results.column("sprocket_torque").unwrap();
-    assert!(max_abs(torque.iter().copied()) <= limit, "torque beyond the limit");
+    assert!(
+        max_abs(torque.iter().copied()) <= limit,
+        "torque beyond the limit"
+    );
     let saturated = torque.iter().filter(|t| t.abs() == limit).count();
     assert!(saturated > 20, "saturated at {saturated} samples only");
     let r_p = support::vehicle::m113_pitch_radius();
@@ -241,7 +247,10 @@ fn speed_drive_saturates_without_winding_up() {
     let peak = max_of(track_speed.iter().copied());
     assert!(peak < 1.5 * 1.15, "track speed overshoots to {peak} m/s");
     let end = support::vehicle::mean(&track_speed[track_speed.len() - 100..]);
-    assert!((end - 1.5).abs() < 0.03 * 1.5, "track speed over the last second {end} m/s");
+    assert!(
+        (end - 1.5).abs() < 0.03 * 1.5,
+        "track speed over the last second {end} m/s"
+    );
 }
 
 /// The controller law itself, at hand-picked states: proportional plus
@@ -305,8 +314,11 @@ fn declared_penalty_tensions_match_the_open_chain_with_the_spring_as_loads() {
         let (q, qd) = rng.state::<10>();
         let loads: Vec<BodyLoad> = (0..8)
             .map(|_| {
-                BodyLoad::force(Vector2::new(rng.uniform(-50.0, 50.0), rng.uniform(-50.0, 50.0)))
-                    .plus(BodyLoad::moment(rng.uniform(-5.0, 5.0)))
+                BodyLoad::force(Vector2::new(
+                    rng.uniform(-50.0, 50.0),
+                    rng.uniform(-50.0, 50.0),
+                ))
+                .plus(BodyLoad::moment(rng.uniform(-5.0, 5.0)))
             })
             .collect();
         // The spring across the cut: F = −k C − c Ċ on link n at ū2, −F on

@@ -15,8 +15,15 @@ use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector};
 pub fn assert_close(label: &str, got: &[f64], want: &[f64], rel: f64, floor: f64) {
     assert_eq!(got.len(), want.len(), "{label}: length");
     if let Some(i) = got.iter().chain(want).position(|v| !v.is_finite()) {
-        let (side, at) = if i < got.len() { ("got", i) } else { ("want", i - got.len()) };
-        panic!("{label}: entry {at} of {side} is not finite (got {:?}, want {:?})", got[at], want[at]);
+        let (side, at) = if i < got.len() {
+            ("got", i)
+        } else {
+            ("want", i - got.len())
+        };
+        panic!(
+            "{label}: entry {at} of {side} is not finite (got {:?}, want {:?})",
+            got[at], want[at]
+        );
     }
     let scale = max_of(want.iter().map(|v| v.abs())).max(floor);
     let (worst, at) = got
@@ -39,7 +46,11 @@ pub fn assert_close(label: &str, got: &[f64], want: &[f64], rel: f64, floor: f64
 /// a run that produced NaN). `-∞` for no values.
 pub fn max_of(values: impl IntoIterator<Item = f64>) -> f64 {
     values.into_iter().fold(f64::NEG_INFINITY, |m, v| {
-        if v.is_nan() || m.is_nan() { f64::NAN } else { m.max(v) }
+        if v.is_nan() || m.is_nan() {
+            f64::NAN
+        } else {
+            m.max(v)
+        }
     })
 }
 
