@@ -36,6 +36,8 @@
 //! route agrees with the generated dynamics to 2e-12 (rounding in a
 //! 66-coordinate solve); the bound is 1e-9.
 
+mod support;
+
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -406,13 +408,10 @@ fn closed_chain_runs_and_writes_its_outputs() {
     assert_eq!(&results.header[..4], ["t", "x", "y", "theta_1"]);
     assert!(results.header.iter().any(|h| h == "theta_32"));
     let closure = results.column("closure_error");
-    let worst = closure.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let worst = support::max_abs(closure.iter().copied());
     assert!(worst <= 1e-9, "the loop opens: |C| up to {worst:e} m");
     let energy = results.column("energy");
-    let drift = energy
-        .iter()
-        .map(|e| ((e - energy[0]) / energy[0]).abs())
-        .fold(0.0f64, f64::max);
+    let drift = support::max_abs(energy.iter().map(|e| (e - energy[0]) / energy[0]));
     assert!(energy[0] > 0.0 && drift <= 1e-7, "energy drift {drift:e}");
     check_svg(&written.join("shape.svg"));
     check_svg(&written.join("history.svg"));
