@@ -237,6 +237,41 @@ fn friction_by_hand() {
     assert_eq!(c.force(200.0, -4.0), 100.0);
 }
 
+/// Regression: a NaN penetration or rate gave a silent zero force
+/// (`NaN.max(0.0)` is 0), hiding a broken state from the integrator's
+/// finiteness check. It must come out NaN.
+#[test]
+fn a_nan_state_gives_a_nan_force() {
+    for law in [KV, HC1, HC15] {
+        assert!(law.force(1e-3, f64::NAN).is_nan(), "{law:?}: NaN rate");
+        assert!(
+            law.force(f64::NAN, 0.0).is_nan(),
+            "{law:?}: NaN penetration"
+        );
+    }
+}
+
+/// Regression: `√(v² + v_s²)` underflowed and overflowed at extreme slip
+/// speeds (|F| 21 % above μ F_n at v = 2.7e-162 m/s with `slip: 0`, and 0
+/// at 1e155 m/s); with `hypot` the bound holds over the whole range.
+#[test]
+fn friction_is_bounded_at_extreme_slip_speeds() {
+    for f in [
+        Friction { mu: 0.8, slip: 0.1 },
+        Friction { mu: 0.6, slip: 0.0 },
+    ] {
+        let normal = 100.0 / f.mu;
+        for v in [2.7e-162, 1e-200, 1e-300, 1e155, 1e200, 1e300] {
+            let force = f.force(normal, v);
+            assert!(force < 0.0, "{f:?}: opposes {v:e}: {force}");
+            assert!(
+                force.abs() <= 100.0 * (1.0 + 2.0 * f64::EPSILON),
+                "{f:?} at {v:e}: {force}"
+            );
+        }
+    }
+}
+
 /// Odd in the slip velocity, opposing it, bounded by μ F_n, for slip
 /// speeds over 300 decades and both regularisations.
 #[test]

@@ -40,7 +40,9 @@ impl NormalLaw {
                 chi,
             } => stiffness * power(penetration, exponent) * (1.0 + chi * rate),
         };
-        f.max(0.0)
+        // Clip a pulling force, but let a NaN through (`f64::max` would
+        // turn it into a silent zero, hiding a broken state).
+        if f < 0.0 { 0.0 } else { f }
     }
 }
 
@@ -91,7 +93,9 @@ pub struct Friction {
 impl Friction {
     /// The tangential force along the slip direction, N (opposing `slip`).
     pub fn force(&self, normal: f64, slip_velocity: f64) -> f64 {
-        let scale = (slip_velocity * slip_velocity + self.slip * self.slip).sqrt();
+        // `hypot`, not `√(v² + v_s²)`: no overflow or underflow at extreme
+        // speeds, so the force stays within μ F_n.
+        let scale = slip_velocity.hypot(self.slip);
         // `slip = 0` is plain Coulomb friction (zero force at zero slip).
         if scale == 0.0 {
             0.0
