@@ -1,7 +1,8 @@
 //! Contact between the track and the world (paper part II, which we design
 //! here; spec §4): the normal and friction laws, the terrain, and the three
 //! contact pairs — link and ground, link and wheel (road wheels, idler,
-//! rollers), link pins and sprocket teeth.
+//! rollers), link pins and sprocket teeth; and the terramechanics laws of
+//! soft soil ([`soil`]).
 //!
 //! Every pair evaluates forces from positions and velocities only, and
 //! returns them as [`BodyLoad`](crate::BodyLoad)s on both bodies, so the
@@ -10,6 +11,7 @@
 pub mod ground;
 pub mod law;
 pub mod shoe;
+pub mod soil;
 pub mod sprocket;
 pub mod terrain;
 pub mod wheel;
