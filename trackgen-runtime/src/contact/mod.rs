@@ -11,6 +11,7 @@
 pub mod ground;
 pub mod law;
 pub mod shoe;
+pub mod soft_ground;
 pub mod soil;
 pub mod sprocket;
 pub mod terrain;
