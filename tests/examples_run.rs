@@ -1,18 +1,25 @@
 //! The examples run, briefly, and write what they say they write.
 //!
 //! * `m113` (the CLI of examples/m113/): a 0.3 s run exits 0 and writes
-//!   `m113.csv`, `all.csv`, `m113.svg`, `frame.svg` and `animation.html`;
-//!   the CSVs are a header and rows of finite numbers, one row per output
-//!   time from 0 to the duration; the SVGs and the page are whole
-//!   documents. Bad options (an unknown integrator, a speed that is not a
-//!   number, an unknown flag, a negative duration, a zero tolerance) exit
-//!   non-zero, without a panic, with a message on stderr naming the
-//!   problem.
+//!   `m113.csv`, `all.csv`, `all.arrow`, `m113.svg`, `frame.svg` and
+//!   `animation.html`; the CSVs are a header and rows of finite numbers,
+//!   one row per output time from 0 to the duration; the Arrow file holds
+//!   the same columns and the same values as `all.csv` (CSV numbers are
+//!   written in their shortest round-trip form, so they compare exactly);
+//!   the SVGs and the page are whole documents. A dip (a negative bump
+//!   height) and a ramp of 0 s (a step in speed) run: the step asks for the
+//!   drive's whole 20 kN m at t = 0, where a ramp asks for nothing. Every
+//!   bad option (an unknown integrator or flag, a number that is not one,
+//!   NaN, a zero or negative duration, a value out of its range) exits
+//!   non-zero before the run, without a panic, with nothing on stdout (no
+//!   summary) and no files, and stderr names the option and its allowed
+//!   range.
 //! * `closed_chain`: its 10 s run (it has no option to shorten it; 0.2 s of
 //!   wall time in the dev profile) writes `results.csv`, `shape.svg` and
 //!   `history.svg` under `out/closed_chain/` in its working directory,
 //!   holds the loop closed and conserves energy; with `--no-switching` it
-//!   stops early, exits non-zero and still writes the results so far.
+//!   stops early, says so on stderr, exits non-zero and still writes the
+//!   results so far; an unknown argument is refused before the run.
 //! * `sweep` (no options; ~4 s in the dev profile on two cores): six rows,
 //!   one per grid point, every one a finished run with finite figures.
 //! * `model_timing`: the generated track dynamics agree with the reference
@@ -261,9 +268,10 @@ fn check_svg(path: &Path) {
     );
 }
 
-const M113_FILES: [&str; 5] = [
+const M113_FILES: [&str; 6] = [
     "m113.csv",
     "all.csv",
+    "all.arrow",
     "m113.svg",
     "frame.svg",
     "animation.html",
@@ -299,6 +307,7 @@ fn check_m113_outputs(dir: &Path, duration: f64) {
         "all.csv has every coordinate and rate: {} columns",
         all.header.len()
     );
+    check_arrow_equals_csv(&dir.join("all.arrow"), &all);
     check_svg(&dir.join("m113.svg"));
     check_svg(&dir.join("frame.svg"));
     let html = std::fs::read_to_string(dir.join("animation.html")).unwrap();
@@ -307,6 +316,37 @@ fn check_m113_outputs(dir: &Path, duration: f64) {
         html.trim_end().ends_with("</html>"),
         "animation.html is truncated"
     );
+}
+
+/// The Arrow IPC file at `path` has the columns and the values of `csv`.
+fn check_arrow_equals_csv(path: &Path, csv: &Csv) {
+    use arrow_array::{Array, Float64Array};
+    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let reader = arrow_ipc::reader::FileReader::try_new(file, None)
+        .unwrap_or_else(|e| panic!("{}: not a complete Arrow file: {e}", path.display()));
+    let names: Vec<String> = reader
+        .schema()
+        .fields()
+        .iter()
+        .map(|f| f.name().clone())
+        .collect();
+    assert_eq!(names, csv.header, "{}: columns", path.display());
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    for batch in reader {
+        let batch = batch.unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let columns: Vec<&Float64Array> = batch
+            .columns()
+            .iter()
+            .map(|c| c.as_any().downcast_ref().expect("Float64 columns"))
+            .collect();
+        for r in 0..batch.num_rows() {
+            rows.push(columns.iter().map(|c| c.value(r)).collect());
+        }
+    }
+    assert_eq!(rows.len(), csv.rows.len(), "{}: rows", path.display());
+    for (i, (a, c)) in rows.iter().zip(&csv.rows).enumerate() {
+        assert_eq!(a, c, "{}: row {i} differs from the CSV", path.display());
+    }
 }
 
 #[test]
@@ -361,6 +401,45 @@ fn m113_runs_with_dopri5() {
 }
 
 #[test]
+fn m113_takes_a_dip_and_a_step_in_speed() {
+    let m113 = example("m113");
+    let dir = scratch("m113_dip_step");
+    let out = run(
+        &m113,
+        &[
+            "--bump-height",
+            "-0.1",
+            "--bump-at",
+            "0.5",
+            "--settle",
+            "0",
+            "--ramp",
+            "0",
+            "--duration",
+            "0.2",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --bump-height -0.1 --ramp 0", &out);
+    assert!(
+        text(&out.stdout).contains("dip 0.10 m deep"),
+        "{}",
+        text(&out.stdout)
+    );
+    check_m113_outputs(&dir, 0.2);
+    // A step: the controller asks at once for more than the drive's
+    // limit (`speed_drive`: 20 kN m), so the first row holds the limit.
+    let torque = Csv::read(&dir.join("m113.csv")).column("sprocket_torque");
+    assert!(
+        (torque[0].abs() - 2e4).abs() <= 1e-6,
+        "torque at t = 0 with a step: {} N m",
+        torque[0]
+    );
+}
+
+#[test]
 fn m113_rejects_bad_options() {
     let m113 = example("m113");
     let dir = scratch("m113_bad");
@@ -368,26 +447,65 @@ fn m113_rejects_bad_options() {
     let out_arg = out_dir.to_str().unwrap();
     // Short runs, in case an option were wrongly accepted.
     const SHORT: [&str; 6] = ["--duration", "0.05", "--settle", "0.0", "--ramp", "0.05"];
-    let case = |args: &[&str]| run(&m113, &[args, &["--out", out_arg]].concat(), &dir);
+    let cases: &[(&[&str], &[&str])] = &[
+        (
+            &["--integrator", "rk9"],
+            &["rk9", "--integrator", "bs23", "dopri5"],
+        ),
+        (&["--speed", "abc"], &["abc", "--speed", "-20 to 20 m/s"]),
+        (&["--speed", "nan"], &["--speed", "-20 to 20 m/s"]),
+        (&["--speed", "25"], &["--speed", "-20 to 20 m/s"]),
+        (&["--frobnicate"], &["--frobnicate"]),
+        (&["--duration=-1"], &["--duration", "-1", "more than 0 s"]),
+        (
+            &["--duration", "-1"],
+            &["--duration", "-1", "more than 0 s"],
+        ),
+        (&["--duration", "0"], &["--duration", "more than 0 s"]),
+        (&["--duration", "inf"], &["--duration", "more than 0 s"]),
+        (&["--settle", "-1"], &["--settle", "0 to 1e6 s"]),
+        (&["--ramp", "nan"], &["--ramp", "0 to 1e6 s"]),
+        (&["--tolerance", "0"], &["--tolerance", "1e-12 to 0.1"]),
+        (&["--tolerance", "1"], &["--tolerance", "1e-12 to 0.1"]),
+        (
+            &["--bump-height", "0.6"],
+            &["--bump-height", "-0.5 to 0.5 m"],
+        ),
+        (&["--bump-at", "inf"], &["--bump-at", "-10000 to 10000 m"]),
+    ];
+    for (bad, mentions) in cases {
+        // The short run's settings, less the one under test (clap refuses
+        // an option given twice).
+        let named = |key: &str| bad.iter().any(|b| b.split('=').next() == Some(key));
+        let short: Vec<&str> = SHORT
+            .chunks(2)
+            .filter(|pair| !named(pair[0]))
+            .flatten()
+            .copied()
+            .collect();
+        let args = [&short[..], bad, &["--out", out_arg]].concat();
+        let out = run(&m113, &args, &dir);
+        let what = bad.join(" ");
+        assert_rejected(&what, &out, mentions);
+        assert!(
+            out.stdout.is_empty(),
+            "{what}: nothing is run or summarised, got:\n{}",
+            text(&out.stdout)
+        );
+        assert!(!out_dir.exists(), "{what}: no files are written");
+    }
+    let out = run(&m113, &["--out", ""], &dir);
+    assert_rejected("--out ''", &out, &["--out"]);
+}
 
-    let out = case(&[&SHORT[..], &["--integrator", "rk9"]].concat());
-    assert_rejected("--integrator rk9", &out, &["rk9", "integrator"]);
-    assert!(
-        !out_dir.join("m113.csv").exists(),
-        "a rejected integrator writes no results"
-    );
-
-    let out = case(&[&SHORT[..], &["--speed", "abc"]].concat());
-    assert_rejected("--speed abc", &out, &["abc", "--speed"]);
-
-    let out = case(&[&SHORT[..], &["--frobnicate"]].concat());
-    assert_rejected("--frobnicate", &out, &["--frobnicate"]);
-
-    // Values that parse but make no run.
-    let out = case(&["--duration=-1"]);
-    assert_rejected("--duration=-1", &out, &["t_end", "-1"]);
-    let out = case(&[&SHORT[..], &["--tolerance", "0"]].concat());
-    assert_rejected("--tolerance 0", &out, &["tolerance"]);
+#[test]
+fn closed_chain_refuses_unknown_arguments() {
+    let closed_chain = example("closed_chain");
+    let dir = scratch("closed_chain_unknown");
+    let out = run(&closed_chain, &["--frobnicate"], &dir);
+    assert_rejected("closed_chain --frobnicate", &out, &["--frobnicate"]);
+    assert!(out.stdout.is_empty(), "no run: {}", text(&out.stdout));
+    assert!(!dir.join("out").exists(), "no files are written");
 }
 
 #[test]
@@ -427,11 +545,10 @@ fn closed_chain_without_switching_stops_early_and_keeps_its_results() {
         "a singular partition must fail the run: exit {:?}",
         out.status.code()
     );
-    let stdout = text(&out.stdout);
+    let (stdout, stderr) = (text(&out.stdout), text(&out.stderr));
     assert!(
-        stdout.contains("switching off") && stdout.contains("stopped early"),
-        "no explanation:\n{stdout}\n{}",
-        text(&out.stderr)
+        stdout.contains("switching off") && stderr.contains("stopped early"),
+        "no explanation (the failure goes to stderr):\n{stdout}\n{stderr}"
     );
     let results = Csv::read(&dir.join("out/closed_chain/results.csv"));
     let t = results.column("t");
@@ -542,4 +659,284 @@ fn model_timing_agrees_with_the_reference_route() {
     );
     let fall = after("ÿ = ");
     assert_eq!(fall, -9.81, "the chassis alone falls freely");
+}
+
+// The sweep beyond one machine (issue 12, part 5): slices, their merge,
+// and the Slurm script. The runs use `--grid small` (three points at
+// 4 m/s, ~1.2 s each in the dev profile): the full sweep above already
+// runs the whole grid, and slicing does not depend on the grid's size.
+
+/// A sweep CSV: `index,speed,bump,max_pitch,max_ground,error`, every run
+/// finished (the error field empty), read with the csv crate. The header,
+/// and each row's index and its four numbers.
+fn sweep_csv(path: &Path) -> (Vec<String>, Vec<(usize, [f64; 4])>) {
+    let mut reader =
+        csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let header: Vec<String> = reader
+        .headers()
+        .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+        .iter()
+        .map(str::to_owned)
+        .collect();
+    assert_eq!(
+        header,
+        ["index", "speed", "bump", "max_pitch", "max_ground", "error"],
+        "{}: columns",
+        path.display()
+    );
+    let rows = reader
+        .records()
+        .map(|r| {
+            let r = r.unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert_eq!(&r[5], "", "{}: a run failed: {r:?}", path.display());
+            let num = |i: usize| -> f64 {
+                let x: f64 = r[i]
+                    .parse()
+                    .unwrap_or_else(|e| panic!("{}: {:?} in {r:?}: {e}", path.display(), &r[i]));
+                assert!(x.is_finite(), "{}: {x} in {r:?}", path.display());
+                x
+            };
+            let index = r[0]
+                .parse()
+                .unwrap_or_else(|e| panic!("{}: index in {r:?}: {e}", path.display()));
+            (index, [num(1), num(2), num(3), num(4)])
+        })
+        .collect();
+    (header, rows)
+}
+
+/// Two slices of the small grid, merged (in either order of the files),
+/// equal the whole sweep run at once, value for value to the last bit
+/// (the runs are deterministic and the CSV numbers round-trip). Slice 1 of
+/// 2 holds the grid points 0 and 2, slice 2 point 1 (round robin). A merge
+/// that misses a slice, holds a slice twice, or is told another grid is
+/// refused, naming the points, and writes nothing. No `.partial` file is
+/// left behind.
+#[test]
+fn sweep_slices_merge_into_the_full_sweep() {
+    let sweep = example("sweep");
+    let dir = scratch("sweep_slices");
+    let small = ["--grid", "small"];
+    let go = |args: &[&str]| run(&sweep, &[&small[..], args].concat(), &dir);
+
+    let out = go(&["--out", "full.csv"]);
+    assert_success("sweep --grid small --out full.csv", &out);
+    let out = go(&["--slice", "1/2", "--out", "slice-1.csv"]);
+    assert_success("sweep --slice 1/2", &out);
+    assert!(
+        text(&out.stdout).starts_with("2 runs (slice 1/2 of a 3-point grid)"),
+        "{}",
+        text(&out.stdout)
+    );
+    let out = go(&["--slice", "2/2", "--out", "slice-2.csv"]);
+    assert_success("sweep --slice 2/2", &out);
+
+    let (_, full) = sweep_csv(&dir.join("full.csv"));
+    let indices = |rows: &[(usize, [f64; 4])]| rows.iter().map(|r| r.0).collect::<Vec<_>>();
+    assert_eq!(indices(&full), [0, 1, 2], "the full sweep, in grid order");
+    let (_, one) = sweep_csv(&dir.join("slice-1.csv"));
+    let (_, two) = sweep_csv(&dir.join("slice-2.csv"));
+    assert_eq!(indices(&one), [0, 2], "slice 1/2: i mod 2 = 0");
+    assert_eq!(indices(&two), [1], "slice 2/2: i mod 2 = 1");
+
+    for files in [
+        ["slice-1.csv", "slice-2.csv"],
+        ["slice-2.csv", "slice-1.csv"],
+    ] {
+        let out = go(&["--merge", files[0], files[1], "--out", "merged.csv"]);
+        assert_success("sweep --merge", &out);
+        let (_, merged) = sweep_csv(&dir.join("merged.csv"));
+        assert_eq!(merged.len(), full.len(), "merged {files:?}: row count");
+        for ((i, m), (j, f)) in merged.iter().zip(&full) {
+            assert_eq!(i, j, "merged {files:?}: grid order");
+            assert_eq!(
+                m.map(f64::to_bits),
+                f.map(f64::to_bits),
+                "merged {files:?}, point {i}: {m:?} against the full sweep's {f:?}"
+            );
+        }
+    }
+
+    let out = go(&["--merge", "slice-1.csv", "--out", "bad.csv"]);
+    assert_rejected("a merge missing slice 2", &out, &["grid point 1 ", "none"]);
+    let out = go(&[
+        "--merge",
+        "slice-1.csv",
+        "slice-2.csv",
+        "slice-1.csv",
+        "--out",
+        "bad.csv",
+    ]);
+    assert_rejected(
+        "a merge with slice 1 twice",
+        &out,
+        &["grid point 0", "twice"],
+    );
+    // The small grid's slices against the full grid: point 0 is 4 m/s
+    // here and 2 m/s there.
+    let out = run(
+        &sweep,
+        &["--merge", "slice-1.csv", "slice-2.csv", "--out", "bad.csv"],
+        &dir,
+    );
+    assert_rejected(
+        "small slices merged as the full grid",
+        &out,
+        &["another grid"],
+    );
+    assert!(
+        !dir.join("bad.csv").exists(),
+        "a refused merge writes nothing"
+    );
+    let partial: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().ends_with(".partial"))
+        .map(|e| e.file_name())
+        .collect();
+    assert!(partial.is_empty(), "left behind: {partial:?}");
+}
+
+/// A slice spec that is not `K/N` with `1 ≤ K ≤ N` exits non-zero before
+/// any run (nothing on stdout, no file), naming `--slice`, the spec and
+/// what is wrong; so does `--slice` without `--out`, and `--merge` with
+/// `--slice`.
+#[test]
+fn sweep_rejects_bad_slices() {
+    let sweep = example("sweep");
+    let dir = scratch("sweep_bad_slices");
+    for (spec, why) in [
+        ("0/2", "1 ≤ K ≤ N"),
+        ("3/2", "1 ≤ K ≤ N"),
+        ("1/0", "1 ≤ K ≤ N"),
+        ("a/b", "whole number"),
+        ("1/-2", "whole number"),
+        ("2", "K/N"),
+    ] {
+        let arg = format!("--slice={spec}");
+        let out = run(&sweep, &[&arg, "--out", "x.csv"], &dir);
+        assert_rejected(&arg, &out, &["--slice", spec, why]);
+        assert!(out.stdout.is_empty(), "{arg}: ran:\n{}", text(&out.stdout));
+    }
+    let out = run(&sweep, &["--slice", "1/2"], &dir);
+    assert_rejected("--slice without --out", &out, &["--out"]);
+    let out = run(
+        &sweep,
+        &["--slice", "1/2", "--merge", "a.csv", "--out", "x.csv"],
+        &dir,
+    );
+    assert_rejected("--slice with --merge", &out, &["--merge", "--slice"]);
+    assert!(out.stdout.is_empty(), "ran:\n{}", text(&out.stdout));
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert!(left.is_empty(), "files written: {left:?}");
+}
+
+/// `tools/slurm-sweep.sh`, without Slurm: as array task 2 of 3 (the
+/// environment Slurm gives it) it runs grid point 1 into `slice-2.csv`;
+/// as the merge job it refuses the incomplete set, naming points 0 and 2;
+/// on a login node it submits the array `1-N` and a merge that waits for
+/// all of it (`afterany`), here to a stand-in `sbatch` that records its
+/// arguments; with the CSVs of an earlier sweep in the folder it submits
+/// nothing.
+#[test]
+fn slurm_script_runs_a_slice_merges_and_submits() {
+    let sweep = example("sweep");
+    let dir = scratch("slurm_sweep");
+    let out_dir = dir.join("out");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tools/slurm-sweep.sh");
+    let bash = |args: &[&str], env: &[(&str, &str)]| -> Output {
+        Command::new("bash")
+            .arg(&script)
+            .args(args)
+            .envs(env.iter().copied())
+            .env("SWEEP_BIN", &sweep)
+            .env("SWEEP_DIR", &out_dir)
+            .env("SWEEP_ARGS", "--grid small")
+            .current_dir(&dir)
+            .output()
+            .expect("bash runs")
+    };
+    std::fs::create_dir_all(&out_dir).unwrap();
+    let task = [
+        ("SLURM_JOB_ID", "7"),
+        ("SLURM_ARRAY_TASK_ID", "2"),
+        ("SLURM_ARRAY_TASK_COUNT", "3"),
+        ("SLURM_CPUS_PER_TASK", "1"),
+    ];
+    let out = bash(&[], &task);
+    assert_success("array task 2 of 3", &out);
+    assert!(
+        text(&out.stdout).contains("on 1 thread(s)"),
+        "RAYON_NUM_THREADS from the cpus per task:\n{}",
+        text(&out.stdout)
+    );
+    let (_, rows) = sweep_csv(&out_dir.join("slice-2.csv"));
+    assert_eq!(rows.iter().map(|r| r.0).collect::<Vec<_>>(), [1]);
+
+    let out = bash(&["merge"], &[]);
+    assert_rejected("the merge of slice 2 alone", &out, &["grid points 0, 2"]);
+    assert!(!out_dir.join("sweep.csv").exists());
+
+    // Submitting, to a stand-in sbatch first on the PATH.
+    let fake = dir.join("bin");
+    std::fs::create_dir_all(&fake).unwrap();
+    let log = dir.join("sbatch.log");
+    let sbatch = fake.join("sbatch");
+    std::fs::write(
+        &sbatch,
+        format!(
+            "#!/usr/bin/env bash\nprintf '%s\\n' \"$*\" >> '{}'\necho \"4$(wc -l < '{}');cluster\"\n",
+            log.display(),
+            log.display()
+        ),
+    )
+    .unwrap();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&sbatch, std::fs::Permissions::from_mode(0o755)).unwrap();
+    }
+    let path = format!(
+        "{}:{}",
+        fake.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let fresh = dir.join("fresh");
+    let submit = |folder: &Path| {
+        Command::new("bash")
+            .arg(&script)
+            .env_remove("SLURM_ARRAY_TASK_ID")
+            .env("PATH", &path)
+            .env("SWEEP_BIN", &sweep)
+            .env("SWEEP_DIR", folder)
+            .env("SWEEP_SLICES", "3")
+            .current_dir(&dir)
+            .output()
+            .expect("bash runs")
+    };
+    // The folder of the task above holds slice-2.csv: nothing submitted.
+    let out = submit(&out_dir);
+    assert_rejected(
+        "a submission over an earlier sweep",
+        &out,
+        &["earlier sweep"],
+    );
+    assert!(!log.exists(), "submitted over an earlier sweep");
+    let out = submit(&fresh);
+    assert_success("the submission", &out);
+    let calls = std::fs::read_to_string(&log).unwrap();
+    let calls: Vec<&str> = calls.lines().collect();
+    assert_eq!(calls.len(), 2, "the array and the merge: {calls:?}");
+    assert!(
+        calls[0].contains("--array=1-3") && calls[0].ends_with(script.to_str().unwrap()),
+        "the array: {}",
+        calls[0]
+    );
+    // The first call printed job id 41.
+    assert!(
+        calls[1].contains("--dependency=afterany:41") && calls[1].contains("merge"),
+        "the merge: {}",
+        calls[1]
+    );
+    assert!(fresh.is_dir(), "the output folder exists for the logs");
 }

@@ -41,6 +41,14 @@ const PANELS: [Panel; 6] = [
     ),
 ];
 
+/// The columns the plots draw.
+pub fn columns() -> Vec<String> {
+    PANELS
+        .iter()
+        .flat_map(|(_, _, series)| series.iter().map(|(c, _, _)| c.to_string()))
+        .collect()
+}
+
 pub fn draw(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1000, 1050)).into_drawing_area();
     root.fill(&WHITE)?;

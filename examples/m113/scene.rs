@@ -34,6 +34,19 @@ pub struct Frame {
     pub hull: Vec<(f64, f64)>,
 }
 
+/// The columns a picture needs: the track's and the chassis' coordinates
+/// (`track.x` and the 65 after it, `chassis.x` and the 15 after it), out
+/// of all the recorded ones; `None` if they are not there.
+pub fn columns(all: &[String]) -> Option<Vec<String>> {
+    let block = |prefix: &str, n: usize| {
+        let start = all.iter().position(|c| *c == format!("{prefix}.x"))?;
+        all.get(start..start + n).map(<[String]>::to_vec)
+    };
+    let mut names = block("track", DT)?;
+    names.extend(block("chassis", DC)?);
+    Some(names)
+}
+
 fn vector<const D: usize>(results: &Results, i: usize, prefix: &str) -> SVector<f64, D> {
     let start = results
         .columns()

@@ -20,8 +20,10 @@
 //! * [`suspension`]: torsion-sprung arms of road wheels and idlers.
 //! * [`vehicle`]: a vehicle in motion — track and chassis coupled by
 //!   contact, sprung arms, drive, initial assembly.
-//! * [`simulate`]: systems of subsystems integrated into [`simulate::Results`],
-//!   with typed errors that keep the results.
+//! * [`simulate`]: systems of subsystems integrated into [`simulate::Results`]
+//!   or streamed to sinks as they run (CSV and Arrow IPC files, running
+//!   summaries, a bounded selection for plots), with typed errors that keep
+//!   the results.
 //!
 //! Conventions follow `shared/spec/recursive-formulation.md` §0: planar, SI
 //! units, `A(θ)` the rotation matrix, body frames at the centroid, recursive

@@ -68,6 +68,10 @@ pub enum AssemblyError {
     /// The sagging span index is not a span.
     #[error("sag span {0} does not exist (spans are numbered from 0, one after each wheel)")]
     NoSuchSpan(usize),
+    /// The terrain to place the vehicle on is invalid (a NaN or infinite
+    /// parameter, a bad table).
+    #[error(transparent)]
+    Terrain(#[from] crate::contact::TerrainError),
 }
 
 /// The closed belt path with span `sag_span` sagging by `sag` (m).
@@ -186,8 +190,8 @@ fn hull(wheels: &[PitchCircle]) -> Vec<PitchCircle> {
 /// Wraps the track of `model` around `wheels` (pitch circles, in
 /// counter-clockwise order round the loop), the slack sagging in span
 /// `sag_span` (the stretch from wheel `i` to wheel `i + 1`; default the
-/// longest). Returns `q_i` with link 1 starting where the path leaves
-/// wheel 0, and the joints' positions.
+/// longest). Returns `q_i` with link 1 starting where the belt reaches
+/// wheel 0 (the start of its arc), and the joints' positions.
 pub fn wrap<M: TrackModel<D>, const D: usize>(
     model: &M,
     wheels: &[PitchCircle],

@@ -63,6 +63,17 @@ pub enum TerrainError {
     /// A value is NaN or infinite.
     #[error("terrain: non-finite value at point {0}")]
     NonFinite(usize),
+    /// A parameter of a flat, ramp, bump or sine terrain is NaN or
+    /// infinite.
+    #[error("terrain: the {terrain}'s {parameter} is {value}, not a finite number")]
+    NonFiniteParameter {
+        /// Which kind of terrain (`"ramp"`, …).
+        terrain: &'static str,
+        /// Which parameter (`"slope"`, …).
+        parameter: &'static str,
+        /// Its value.
+        value: f64,
+    },
 }
 
 impl Terrain {
@@ -84,6 +95,52 @@ impl Terrain {
             }
         }
         Ok(Terrain::Table(points))
+    }
+
+    /// Checks a terrain however it was built: every parameter finite, and
+    /// a table as [`table`](Self::table) requires. A bump of zero or
+    /// negative width is no bump and a sine of zero wavelength is flat
+    /// (see [`height_and_slope`](Self::height_and_slope)): both are valid.
+    /// Vehicles check their terrain when they are assembled and built.
+    pub fn check(&self) -> Result<(), TerrainError> {
+        let finite = |terrain, parameters: &[(&'static str, f64)]| match parameters
+            .iter()
+            .find(|(_, v)| !v.is_finite())
+        {
+            Some(&(parameter, value)) => Err(TerrainError::NonFiniteParameter {
+                terrain,
+                parameter,
+                value,
+            }),
+            None => Ok(()),
+        };
+        match self {
+            Terrain::Flat { height } => finite("flat", &[("height", *height)]),
+            Terrain::Ramp {
+                height,
+                start,
+                slope,
+            } => finite(
+                "ramp",
+                &[("height", *height), ("start", *start), ("slope", *slope)],
+            ),
+            Terrain::Bump {
+                centre,
+                width,
+                height,
+            } => finite(
+                "bump",
+                &[("centre", *centre), ("width", *width), ("height", *height)],
+            ),
+            Terrain::Sine {
+                amplitude,
+                wavelength,
+            } => finite(
+                "sine",
+                &[("amplitude", *amplitude), ("wavelength", *wavelength)],
+            ),
+            Terrain::Table(points) => Terrain::table(points.clone()).map(drop),
+        }
     }
 
     /// `h(x)`, m.

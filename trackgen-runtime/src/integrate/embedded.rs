@@ -175,6 +175,12 @@ impl Embedded {
         let n = v.len().max(1) as f64;
         let sum: f64 = (0..v.len())
             .map(|i| {
+                // A zero is no error whatever the scale: with `atol = 0`
+                // a component that is exactly 0 has a scale of 0, and
+                // 0/0 = NaN would reject every step down to underflow.
+                if v[i] == 0.0 {
+                    return 0.0;
+                }
                 let scale = self.atol + self.rtol * y0[i].abs().max(y1[i].abs());
                 (v[i] / scale).powi(2)
             })
@@ -182,7 +188,11 @@ impl Embedded {
         (sum / n).sqrt()
     }
 
-    /// Hairer's starting-step heuristic.
+    /// Hairer's starting-step heuristic. Norms taken at `y` alone are
+    /// infinite for a component that is 0 when `atol = 0` (pure relative
+    /// tolerance, a body at rest): then the heuristic starts at 1e-6 s and
+    /// leaves the step control, which scales by the larger of the old and
+    /// new values, to find the step.
     fn initial_step(
         &mut self,
         system: &mut dyn OdeSystem,
@@ -192,7 +202,7 @@ impl Embedded {
     ) -> f64 {
         let d0 = self.norm(y, y, y);
         let d1 = self.norm(f0, y, y);
-        let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+        let h0 = if d0 < 1e-5 || d1 < 1e-5 || !d1.is_finite() {
             1e-6
         } else {
             0.01 * d0 / d1
@@ -204,6 +214,8 @@ impl Embedded {
         };
         let h1 = if d1.max(d2) <= 1e-15 {
             (h0 * 1e-3).max(1e-6)
+        } else if !d1.max(d2).is_finite() {
+            h0
         } else {
             (0.01 / d1.max(d2)).powf(0.2)
         };

@@ -1,9 +1,13 @@
 //! Simulation: a system of subsystems (a closed track, a chassis),
-//! integrated in time, recorded into [`Results`].
+//! integrated in time, recorded into [`Results`] ([`simulate`]) or streamed
+//! to any [`Sink`] as it runs ([`simulate_into`]): CSV and Arrow IPC files,
+//! running figures, a bounded selection for plots, several at once.
 //!
 //! A run never panics on a bad state: it stops with a typed
 //! [`SimulationError`] carrying the time and the cause, and returns the
-//! results computed up to then in a [`SimulationFailure`].
+//! results computed up to then in a [`SimulationFailure`] (or, streamed,
+//! finishes the sink so the rows before the failure are written, and
+//! returns a [`StreamFailure`]).
 
 mod error;
 mod loads;
@@ -12,6 +16,8 @@ mod output;
 mod pair;
 mod results;
 mod run;
+mod sink;
+mod stream;
 mod track;
 mod tree;
 
@@ -21,6 +27,10 @@ pub use output::Output;
 pub use pair::Pair;
 pub use results::{Results, Sample, Switch};
 pub use run::{Simulated, simulate, simulate_with_progress};
+#[cfg(feature = "arrow")]
+pub use sink::ArrowSink;
+pub use sink::{ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned};
+pub use stream::{RunError, RunReport, StreamFailure, simulate_into};
 pub use track::TrackSystem;
 pub use tree::TreeSystem;
 

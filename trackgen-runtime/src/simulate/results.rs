@@ -1,6 +1,7 @@
 use std::io;
 use std::path::Path;
 
+use super::{Sink, SinkError};
 use crate::integrate::Stats;
 
 /// A change of the dependent coordinates of a partitioned track (spec §2).
@@ -70,6 +71,18 @@ impl Results {
         );
         self.times.push(t);
         self.values.extend_from_slice(row);
+    }
+
+    /// Keeps the samples at even positions (0, 2, 4, …).
+    pub(crate) fn keep_every_other(&mut self) {
+        let w = self.columns.len();
+        let kept = self.len().div_ceil(2);
+        for k in 1..kept {
+            self.times[k] = self.times[2 * k];
+            self.values.copy_within(2 * k * w..(2 * k + 1) * w, k * w);
+        }
+        self.times.truncate(kept);
+        self.values.truncate(kept * w);
     }
 
     /// Column names (time excluded).
@@ -169,8 +182,50 @@ impl Results {
         Ok(())
     }
 
+    /// Gives every sample to `sink`, as a run would: `begin`, the rows,
+    /// `finish`. For saving results held in memory in another format:
+    /// `results.write_to(ArrowSink::create("run.arrow")?)`.
+    pub fn write_to(&self, mut sink: impl Sink) -> Result<(), SinkError> {
+        sink.begin(&self.columns)?;
+        for s in self.iter() {
+            sink.row(s.t, s.values)?;
+        }
+        sink.finish()
+    }
+
     /// Writes CSV to a file.
     pub fn save_csv(&self, path: impl AsRef<Path>) -> csv::Result<()> {
         self.write_csv(std::fs::File::create(path)?)
+    }
+}
+
+/// The in-memory sink: every row is kept. `begin` on results that hold
+/// samples already must name the same columns (the rows are appended).
+impl Sink for Results {
+    fn begin(&mut self, columns: &[String]) -> Result<(), SinkError> {
+        if self.is_empty() {
+            self.columns = columns.to_vec();
+            Ok(())
+        } else if self.columns == columns {
+            Ok(())
+        } else {
+            Err(SinkError::Columns(format!(
+                "these results hold {} samples of {} other columns",
+                self.len(),
+                self.columns.len()
+            )))
+        }
+    }
+
+    fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
+        if values.len() != self.columns.len() {
+            return Err(SinkError::width(t, values.len(), self.columns.len()));
+        }
+        self.push(t, values);
+        Ok(())
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        Ok(())
     }
 }

@@ -1,7 +1,7 @@
 use nalgebra::DVector;
 
-use super::{Output, Results, SimulationError, SimulationFailure, Switch};
-use crate::integrate::{Integrator, OdeSystem};
+use super::{Output, Results, RunError, SimulationError, SimulationFailure, Sink, Switch};
+use crate::integrate::{Integrator, OdeSystem, Stats};
 
 /// A system a simulation can run: an [`OdeSystem`] that also knows its
 /// initial state, what to record, and what to do between steps.
@@ -59,14 +59,10 @@ pub fn simulate_with_progress(
     output: Output,
     progress: &mut dyn FnMut(f64),
 ) -> Result<Results, SimulationFailure> {
-    let mut results = Results::new(system.columns());
-    if let Err(error) = validate(integrator, t0, t_end, &output) {
-        return Err(SimulationFailure { error, results });
-    }
-    let mut stepper = integrator.stepper(system.dimension());
-    let outcome = run(
+    let mut results = Results::default();
+    let (outcome, stats) = drive(
         system,
-        stepper.as_mut(),
+        integrator,
         t0,
         t_end,
         &output,
@@ -74,49 +70,95 @@ pub fn simulate_with_progress(
         progress,
     );
     results.switches = system.switches();
-    results.stats = stepper.stats();
+    results.stats = stats;
     match outcome {
         Ok(()) => Ok(results),
-        Err(error) => Err(SimulationFailure { error, results }),
+        Err(RunError::Simulation(error)) => Err(SimulationFailure { error, results }),
+        // In-memory results take every row the run checked; kept typed all
+        // the same.
+        Err(RunError::Sink { t, source }) => Err(SimulationFailure {
+            error: SimulationError::Setup(format!("recording at t = {t} s: {source}")),
+            results,
+        }),
     }
 }
 
+/// The run: `sink.begin`, the set-up checks, then the steps and a row at
+/// every output time. The caller finishes the sink.
+pub(super) fn drive(
+    system: &mut dyn Simulated,
+    integrator: Integrator,
+    t0: f64,
+    t_end: f64,
+    output: &Output,
+    sink: &mut dyn Sink,
+    progress: &mut dyn FnMut(f64),
+) -> (Result<(), RunError>, Stats) {
+    let columns = system.columns();
+    if let Err(source) = sink.begin(&columns) {
+        return (Err(RunError::Sink { t: t0, source }), Stats::default());
+    }
+    if let Err(error) = validate(integrator, t0, t_end, output) {
+        return (Err(error.into()), Stats::default());
+    }
+    let mut stepper = integrator.stepper(system.dimension());
+    let outcome = run(
+        system,
+        stepper.as_mut(),
+        t0,
+        t_end,
+        output,
+        sink,
+        columns.len(),
+        progress,
+    );
+    (outcome, stepper.stats())
+}
+
+#[allow(clippy::too_many_arguments)]
 fn run(
     system: &mut dyn Simulated,
     stepper: &mut dyn crate::integrate::Stepper,
     t0: f64,
     t_end: f64,
     output: &Output,
-    results: &mut Results,
+    sink: &mut dyn Sink,
+    width: usize,
     progress: &mut dyn FnMut(f64),
-) -> Result<(), SimulationError> {
-    let mut row = Vec::new();
-    let mut record =
-        |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, results: &mut Results| {
-            row.clear();
-            system.observe(t, y, &mut row)?;
-            results.push(t, &row);
-            Ok::<(), SimulationError>(())
-        };
+) -> Result<(), RunError> {
+    let mut row = Vec::with_capacity(width);
+    let mut record = |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, sink: &mut dyn Sink| {
+        row.clear();
+        system.observe(t, y, &mut row)?;
+        if row.len() != width {
+            return Err(RunError::Simulation(SimulationError::Setup(format!(
+                "the system recorded {} values at t = {t} s for its {width} columns",
+                row.len()
+            ))));
+        }
+        sink.row(t, &row)
+            .map_err(|source| RunError::Sink { t, source })
+    };
     let mut t = t0;
     let mut y = system.initial_state();
     if !y.iter().all(|v| v.is_finite()) {
         return Err(SimulationError::NonFinite {
             t,
             what: "the initial state",
-        });
+        }
+        .into());
     }
     // Times closer than this are the same time.
     let eps = 1e-12 * t_end.abs().max(t0.abs()).max(1.0);
     let mut next = 0;
     if matches!(output, Output::Steps) {
-        record(system, t, &y, results)?;
+        record(system, t, &y, sink)?;
     }
     // Requested times before the start are skipped; one at the start is
     // the initial state.
     while let Some(to) = output.time(t0, next).filter(|&to| to <= t0 + eps) {
         if to >= t0 - eps {
-            record(system, t, &y, results)?;
+            record(system, t, &y, sink)?;
         }
         next += 1;
     }
@@ -127,7 +169,8 @@ fn run(
             return Err(SimulationError::NonFinite {
                 t,
                 what: "the state",
-            });
+            }
+            .into());
         }
         if t >= t_end - eps {
             t = t_end;
@@ -139,7 +182,7 @@ fn run(
                 } else {
                     stepper.interpolate(to)
                 };
-                record(system, to.min(t), &yo, results)?;
+                record(system, to.min(t), &yo, sink)?;
             }
             next += 1;
         }
@@ -149,7 +192,7 @@ fn run(
         progress(t);
         // After `after_step`: a projection shows in the step's row.
         if matches!(output, Output::Steps) {
-            record(system, t, &y, results)?;
+            record(system, t, &y, sink)?;
         }
     }
     Ok(())

@@ -64,7 +64,8 @@ fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
 /// Assembles the vehicle with its chassis centroid at `x` (m), the track
 /// resting `clearance` (m) above the terrain. If the idler is on an arm,
 /// the arm is swung so that the track fits with a nearly straight top span
-/// (the tensioner takes up the slack); otherwise the top span sags.
+/// (the tensioner takes up the slack); otherwise the top span sags. An
+/// invalid terrain ([`Terrain::check`]) is an error.
 pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
     track: &T,
     chassis: &C,
@@ -74,6 +75,7 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
     x: f64,
     clearance: f64,
 ) -> Result<Assembled<DT, DC>, AssemblyError> {
+    terrain.check()?;
     let pitch = track
         .description()
         .link_spans()

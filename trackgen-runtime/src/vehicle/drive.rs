@@ -1,5 +1,7 @@
 //! What turns the sprocket: a torque schedule or a speed controller.
 
+use crate::simulate::SimulationError;
+
 /// The sprocket drive: its torque acts on the sprocket and, reversed, on
 /// the chassis frame.
 pub enum Drive {
@@ -12,7 +14,9 @@ pub enum Drive {
     /// loop (numbered counter-clockwise) runs clockwise round the chassis,
     /// so the sprocket's wanted speed is `−target / r` with `r` its pitch
     /// radius. The torque is limited to `±max_torque` and the integral
-    /// held while the limit is active (anti-windup).
+    /// held while the limit is active (anti-windup). A target that is NaN
+    /// or infinite stops a run ([`Drive::checked_torque`]); gains must be
+    /// finite and the limit zero or more ([`Drive::check`]).
     Speed {
         /// Forward speed wanted, m/s, as a function of time (s).
         target: Box<dyn Fn(f64) -> f64 + Send>,
@@ -29,19 +33,90 @@ impl Drive {
     /// The torque (N m) at time `t` for sprocket speed `omega` (rad/s,
     /// relative to the chassis), pitch radius `radius` (m) and controller
     /// integral `state` (rad), and the integral's rate.
+    ///
+    /// A NaN or infinite target speed or scheduled torque gives a NaN or
+    /// unbounded torque here; [`checked_torque`](Self::checked_torque)
+    /// refuses it.
     pub fn torque(&self, t: f64, omega: f64, radius: f64, state: f64) -> (f64, f64) {
+        self.respond(self.demand(t), omega, radius, state)
+    }
+
+    /// [`torque`](Self::torque), refusing a target speed (a speed drive) or
+    /// a scheduled torque (a torque drive) that is NaN or infinite at `t`:
+    /// [`SimulationError::NonFinite`] naming it.
+    pub fn checked_torque(
+        &self,
+        t: f64,
+        omega: f64,
+        radius: f64,
+        state: f64,
+    ) -> Result<(f64, f64), SimulationError> {
+        let demand = self.demand(t);
+        if !demand.is_finite() {
+            let what = match self {
+                Drive::Speed { .. } => "the drive's target speed",
+                _ => "the drive's torque schedule",
+            };
+            return Err(SimulationError::NonFinite { t, what });
+        }
+        Ok(self.respond(demand, omega, radius, state))
+    }
+
+    /// Why the settings of the drive make no controller: gains that are NaN
+    /// or infinite, a torque limit that is NaN or negative.
+    pub fn check(&self) -> Result<(), String> {
+        if let Drive::Speed {
+            proportional,
+            integral,
+            max_torque,
+            ..
+        } = self
+        {
+            if !(proportional.is_finite() && integral.is_finite()) {
+                return Err(format!(
+                    "the speed drive's gains must be finite, got proportional {proportional}, integral {integral}"
+                ));
+            }
+            if max_torque.is_nan() || *max_torque < 0.0 {
+                return Err(format!(
+                    "the speed drive's torque limit must be zero or more, got {max_torque}"
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// The target speed (m/s) or the scheduled torque (N m) at `t`.
+    fn demand(&self, t: f64) -> f64 {
+        match self {
+            Drive::Free => 0.0,
+            Drive::Torque(f) => f(t),
+            Drive::Speed { target, .. } => target(t),
+        }
+    }
+
+    fn respond(&self, demand: f64, omega: f64, radius: f64, state: f64) -> (f64, f64) {
         match self {
             Drive::Free => (0.0, 0.0),
-            Drive::Torque(f) => (f(t), 0.0),
+            Drive::Torque(_) => (demand, 0.0),
             Drive::Speed {
-                target,
                 proportional,
                 integral,
                 max_torque,
+                ..
             } => {
-                let error = -target(t) / radius - omega;
+                let error = -demand / radius - omega;
                 let wanted = proportional * error + integral * state;
-                let torque = wanted.clamp(-max_torque, *max_torque);
+                // Not `clamp`, which panics on a NaN or negative limit
+                // (refused by `check` when a vehicle is built); a NaN
+                // stays NaN.
+                let torque = if wanted > *max_torque {
+                    *max_torque
+                } else if wanted < -max_torque {
+                    -max_torque
+                } else {
+                    wanted
+                };
                 let saturated = wanted != torque && wanted.signum() == error.signum();
                 (torque, if saturated { 0.0 } else { error })
             }

@@ -84,6 +84,26 @@ impl VehicleConfig {
     }
 }
 
+/// The quantities a vehicle records after its track's and chassis' own.
+const RECORDED: [&str; 16] = [
+    "x",
+    "y",
+    "pitch",
+    "speed",
+    "sprocket_speed",
+    "sprocket_torque",
+    "tension",
+    "tension_tight",
+    "tension_slack",
+    "ground_normal",
+    "ground_penetration",
+    "wheel_penetration",
+    "sprocket_penetration",
+    "energy",
+    "motor_work",
+    "dissipated",
+];
+
 /// What the contacts did at one evaluation.
 #[derive(Debug, Clone, Copy, Default)]
 struct ContactSummary {
@@ -108,6 +128,10 @@ impl ContactSummary {
 
 /// A vehicle: its track and chassis integrated together, coupled by the
 /// contact forces, with sprung arms and a drive.
+///
+/// Every recorded quantity is finite: one that is not (see
+/// [`observe`](Simulated::observe)) stops the run with a
+/// [`SimulationError::NonFinite`] naming it.
 ///
 /// State: the track's, the chassis' `[q_i, q̇_i]`, then the drive
 /// controller's integral (rad), the motor's work and the dissipated work
@@ -135,6 +159,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
 {
     /// The vehicle starting at rest at the given coordinates (see
     /// [`assemble`](super::assemble)), its loop closed by `closure`.
+    ///
+    /// A [`SimulationError::Setup`] for a configuration that makes no
+    /// vehicle: a terrain that fails [`Terrain::check`], a drive that
+    /// fails [`Drive::check`], a tension link that is not a link, a
+    /// sprocket of fewer than 3 teeth. A target speed or torque schedule
+    /// that turns NaN or infinite stops the run when the drive meets it
+    /// ([`Drive::checked_torque`]).
     pub fn new(
         track: T,
         chassis: C,
@@ -150,6 +181,12 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 T::BODIES
             )));
         }
+        config
+            .ground
+            .terrain
+            .check()
+            .map_err(|e| SimulationError::Setup(e.to_string()))?;
+        config.drive.check().map_err(SimulationError::Setup)?;
         if config.sprocket.profile.teeth < 3 {
             return Err(SimulationError::Setup(format!(
                 "a sprocket needs at least 3 teeth, the profile has {}",
@@ -239,7 +276,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         (qt, qdt): (&SVector<f64, DT>, &SVector<f64, DT>),
         (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
         integral: f64,
-    ) -> ContactSummary {
+    ) -> Result<ContactSummary, SimulationError> {
         // The track's trigonometry comes from the closure's recovery.
         let links = {
             let n = T::BODIES;
@@ -299,19 +336,23 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         if let Some(i) = self.sprocket {
             let body = C::PARTS[i].body;
             let omega = qdc[2 + body] - qdc[2];
-            let (torque, rate) = config
-                .drive
-                .torque(t, omega, self.sprocket_radius, integral);
+            let (torque, rate) =
+                config
+                    .drive
+                    .checked_torque(t, omega, self.sprocket_radius, integral)?;
             self.chassis_loads[body].moment += torque;
             self.chassis_loads[0].moment -= torque;
             s.torque = torque;
             s.integral_rate = rate;
         }
-        s
+        Ok(s)
     }
 
     /// The joints just before and just after the run of joints seated on
-    /// the sprocket (within 2 cm of its pitch circle), in link order. The
+    /// the sprocket (within 2 cm of its pitch circle), in link order; when
+    /// none is (the track has jumped the teeth), the joint nearest the
+    /// pitch circle stands for the run, so that a run that goes on has
+    /// span tensions to record. `None` only if every joint is seated. The
     /// loop is numbered counter-clockwise and runs clockwise round the
     /// chassis when driving forward, so the joint after the seated run is
     /// on the tight span (the top run, pulled into the sprocket) and the
@@ -328,12 +369,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         let mut links = vec![Vector2::zeros(); T::BODIES];
         self.track.model().body_positions(qt, &mut links);
         let n = T::BODIES;
-        let seated: Vec<bool> = (0..n)
+        let off: Vec<f64> = (0..n)
             .map(|j| {
                 let joint = links[j] + crate::planar::rotate(qt[2 + j], self.forward_joints[j]);
-                ((joint - centre).norm() - self.sprocket_radius).abs() < 0.02
+                ((joint - centre).norm() - self.sprocket_radius).abs()
             })
             .collect();
+        let nearest = off.iter().copied().fold(f64::INFINITY, f64::min);
+        let seated: Vec<bool> = off.iter().map(|&o| o < 0.02 || o <= nearest).collect();
         let first = (0..n).find(|&j| seated[j] && !seated[(j + n - 1) % n])?;
         let last = (0..n)
             .map(|k| (first + k) % n)
@@ -366,7 +409,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
             .track
             .coordinates_with_trig(t, &yt, &mut self.link_trig)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
-        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
+        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;
         self.track.set_external(&self.track_loads);
         self.chassis.set_external(&self.chassis_loads);
         let (mut dt, mut dc) = (DVector::zeros(yt.len()), DVector::zeros(yc.len()));
@@ -403,27 +446,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
                 .into_iter()
                 .map(|c| format!("chassis.{c}")),
         );
-        c.extend(
-            [
-                "x",
-                "y",
-                "pitch",
-                "speed",
-                "sprocket_speed",
-                "sprocket_torque",
-                "tension",
-                "tension_tight",
-                "tension_slack",
-                "ground_normal",
-                "ground_penetration",
-                "wheel_penetration",
-                "sprocket_penetration",
-                "energy",
-                "motor_work",
-                "dissipated",
-            ]
-            .map(String::from),
-        );
+        c.extend(RECORDED.map(String::from));
         c
     }
 
@@ -433,6 +456,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         y: &DVector<f64>,
         row: &mut Vec<f64>,
     ) -> Result<(), SimulationError> {
+        let start = row.len();
         let (yt, yc, [integral, work, dissipated]) = self.split(y);
         self.track.observe(t, &yt, row)?;
         self.chassis.observe(t, &yc, row)?;
@@ -440,7 +464,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             .track
             .coordinates_with_trig(t, &yt, &mut self.link_trig)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
-        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral);
+        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;
         self.track.set_external(&self.track_loads);
         let qdd = self
             .track
@@ -480,6 +504,20 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             work,
             dissipated,
         ]);
+        // Recorded results hold numbers only: a NaN or infinity computed
+        // from a finite state (forces that overflow on an absurd terrain, a
+        // singular tension solve, a loop wrapped wholly round the
+        // sprocket) stops the run, with the rows so far.
+        if let Some(i) = row[start..].iter().position(|v| !v.is_finite()) {
+            let own = row.len() - start - RECORDED.len();
+            return Err(SimulationError::NonFinite {
+                t,
+                what: match i.checked_sub(own) {
+                    Some(k) => RECORDED[k],
+                    None => "a recorded coordinate or rate of the track or chassis",
+                },
+            });
+        }
         Ok(())
     }
 

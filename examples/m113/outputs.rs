@@ -1,0 +1,110 @@
+//! The files of a run: opened before it starts (a folder that cannot be
+//! written fails at once, not after the run), fed as it goes, pictures
+//! drawn at the end from a bounded selection of rows.
+
+use std::error::Error;
+use std::fs::File;
+use std::path::{Path, PathBuf};
+
+use trackgen::contact::Terrain;
+use trackgen::simulate::{ArrowSink, CsvSink, Select, Summary, Tee, Thinned};
+
+use super::nearest::Nearest;
+use super::{animation, plots, scene};
+
+/// The columns of `m113.csv`.
+const MAIN_COLUMNS: [&str; 8] = [
+    "x",
+    "y",
+    "pitch",
+    "speed",
+    "sprocket_torque",
+    "sprocket_speed",
+    "tension",
+    "ground_normal",
+];
+
+/// Rows kept in memory for the plots and the animation, evenly spaced:
+/// a run shorter than 20 s at the 0.01 s output interval keeps every row;
+/// longer ones every 2nd, 4th, … (≤ 2000 × ~90 numbers, 1.4 MB).
+const PICTURE_ROWS: usize = 2000;
+/// Frames of the animation: at most this many, 0.04 s apart or more.
+const MAX_FRAMES: f64 = 1500.0;
+
+pub struct Outputs {
+    dir: PathBuf,
+    all_csv: CsvSink<File>,
+    all_arrow: ArrowSink<File>,
+    main_csv: Select<CsvSink<File>>,
+    /// First, last and extreme values of every column, for the report.
+    pub summary: Summary,
+    picture_columns: Vec<String>,
+    thinned: Thinned,
+    at_bump: Nearest,
+}
+
+impl Outputs {
+    /// Creates the folder and the data files for a run recording `columns`,
+    /// with a bump centred at `bump_at` (m).
+    pub fn create(dir: &Path, columns: &[String], bump_at: f64) -> Result<Self, Box<dyn Error>> {
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create the output folder {}: {e}", dir.display()))?;
+        let mut picture_columns =
+            scene::columns(columns).ok_or("the system records no track and chassis coordinates")?;
+        picture_columns.extend(plots::columns());
+        picture_columns.push("x".to_string());
+        Ok(Outputs {
+            dir: dir.to_path_buf(),
+            all_csv: CsvSink::create(dir.join("all.csv"))?,
+            all_arrow: ArrowSink::create(dir.join("all.arrow"))?,
+            main_csv: Select::new(MAIN_COLUMNS, CsvSink::create(dir.join("m113.csv"))?),
+            summary: Summary::new(),
+            picture_columns,
+            thinned: Thinned::new(PICTURE_ROWS),
+            // The chassis centroid a metre short of the bump: the front
+            // wheels on it.
+            at_bump: Nearest::new("x", bump_at - 1.0),
+        })
+    }
+
+    /// Everything a run feeds, as one sink.
+    pub fn sink(&mut self) -> Tee<'_> {
+        let pictures = Tee::new().and(&mut self.thinned).and(&mut self.at_bump);
+        Tee::new()
+            .and(&mut self.all_csv)
+            .and(&mut self.all_arrow)
+            .and(&mut self.main_csv)
+            .and(&mut self.summary)
+            .and(Select::new(self.picture_columns.clone(), pictures))
+    }
+
+    /// Draws the plots, the frame at the bump and the animation (when the
+    /// run has at least two rows); returns the names of every file
+    /// written.
+    pub fn draw(&self, terrain: &Terrain) -> Result<Vec<&'static str>, Box<dyn Error>> {
+        let mut written = vec!["m113.csv", "all.csv", "all.arrow"];
+        let kept = self.thinned.results();
+        if kept.len() < 2 {
+            return Ok(written);
+        }
+        plots::draw(kept, &self.dir.join("m113.svg"))?;
+        written.push("m113.svg");
+        if let Some(frame) = scene::frames(self.at_bump.results(), 0.0).first() {
+            std::fs::write(self.dir.join("frame.svg"), scene::svg(frame, terrain))?;
+            written.push("frame.svg");
+        }
+        let span = kept.times().last().unwrap_or(&0.0) - kept.times()[0];
+        let frames = scene::frames(kept, (span / MAX_FRAMES).max(0.04));
+        std::fs::write(
+            self.dir.join("animation.html"),
+            animation::html(&frames, terrain),
+        )?;
+        written.push("animation.html");
+        Ok(written)
+    }
+
+    /// The output folder.
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+}

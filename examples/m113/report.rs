@@ -1,0 +1,35 @@
+//! The figures printed after a run, from running summaries: no row is
+//! kept for them.
+
+use trackgen::simulate::{RunReport, Summary};
+
+pub fn print(summary: &Summary, report: &RunReport, wall: f64) {
+    let get = |name: &str| summary.get(name);
+    let last = |name: &str| get(name).map_or(f64::NAN, |s| s.last);
+    let max = |name: &str| get(name).map_or(f64::NAN, |s| s.max);
+    let simulated = summary.time().map_or(0.0, |t| t.last - t.first);
+    let change = get("energy").map_or(f64::NAN, |s| s.change());
+    let (work, dissipated) = (last("motor_work"), last("dissipated"));
+    println!(
+        "simulated {simulated:.2} s in {wall:.2} s of wall time: real-time factor {:.2}",
+        simulated / wall
+    );
+    println!(
+        "steps {} accepted, {} rejected; {} coordinate switches; max closure error {:.1e} m",
+        report.stats.accepted,
+        report.stats.rejected,
+        report.switches.len(),
+        max("track.closure_error")
+    );
+    println!(
+        "energy balance: motor work {work:.0} J = ΔE {change:.0} J + dissipated {dissipated:.0} J  (residual {:.2e} of the work)",
+        (work - change - dissipated) / work.abs().max(1.0)
+    );
+    println!(
+        "final speed {:.2} m/s; max penetration: ground {:.1} mm, wheels {:.1} mm, sprocket {:.1} mm",
+        last("speed"),
+        1e3 * max("ground_penetration"),
+        1e3 * max("wheel_penetration"),
+        1e3 * max("sprocket_penetration")
+    );
+}

@@ -1,0 +1,182 @@
+//! Runs whose samples go to a [`Sink`] as they are produced.
+
+use std::fmt;
+
+use thiserror::Error;
+
+use super::run::drive;
+use super::{Output, Simulated, SimulationError, Sink, SinkError, Switch};
+use crate::integrate::{Integrator, Stats};
+
+/// What a streamed run did, besides its rows: how many it gave the sink,
+/// the partition switches and the integrator's counters.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct RunReport {
+    /// Rows given to the sink.
+    pub rows: usize,
+    /// The time of the last row, s (`None` when there was none).
+    pub last_time: Option<f64>,
+    /// Every re-partitioning, in order.
+    pub switches: Vec<Switch>,
+    /// Integrator counters.
+    pub stats: Stats,
+}
+
+/// Why a streamed run stopped early.
+#[derive(Debug, Error)]
+pub enum RunError {
+    /// The simulation failed (the same errors as [`simulate`](super::simulate)).
+    #[error(transparent)]
+    Simulation(#[from] SimulationError),
+    /// The sink refused a row, or could not be written to.
+    #[error("writing the results failed at t = {t} s: {source}")]
+    Sink {
+        /// The time of the row, s (the start for `begin`, the last row's
+        /// time for `finish`).
+        t: f64,
+        /// The sink's error.
+        source: SinkError,
+    },
+}
+
+impl RunError {
+    /// The simulation time at which it happened (`None` for a set-up
+    /// error).
+    pub fn time(&self) -> Option<f64> {
+        match self {
+            RunError::Simulation(e) => e.time(),
+            RunError::Sink { t, .. } => Some(*t),
+        }
+    }
+}
+
+/// A streamed run that stopped early. The sink was finished: every row
+/// before the failure is in it, unless [`finish`](Self::finish) says
+/// otherwise.
+#[derive(Debug)]
+pub struct StreamFailure {
+    /// Why the run stopped.
+    pub error: RunError,
+    /// What it did until then.
+    pub report: RunReport,
+    /// Finishing the sink after the failure failed too: its output may
+    /// lack rows (for an Arrow file, the footer).
+    pub finish: Option<SinkError>,
+}
+
+impl fmt::Display for StreamFailure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} ({} rows written", self.error, self.report.rows)?;
+        if let Some(t) = self.report.last_time {
+            write!(f, ", up to t = {t} s")?;
+        }
+        write!(f, ")")?;
+        if let Some(e) = &self.finish {
+            write!(f, "; then finishing the output failed: {e}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for StreamFailure {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&self.error)
+    }
+}
+
+/// Integrates `system` from `t0` to `t_end` (s), giving `sink` a row at
+/// every output time as the run goes: memory does not grow with the length
+/// of the run (beyond what the sink keeps). `progress(t)` is called after
+/// every accepted step (for a progress bar; `&mut |_| {}` for none).
+///
+/// The sink is finished in every case, so on failure the rows before it
+/// are written out; the error carries the time and the cause. A sink's
+/// error stops the run.
+///
+/// ```no_run
+/// # use trackgen_runtime::simulate::*;
+/// # use trackgen_runtime::integrate::Integrator;
+/// # fn demo(system: &mut dyn Simulated) -> Result<(), Box<dyn std::error::Error>> {
+/// let mut csv = CsvSink::create("run.csv")?;
+/// let mut arrow = ArrowSink::create("run.arrow")?;
+/// let mut summary = Summary::new();
+/// let mut sinks = Tee::new().and(&mut csv).and(&mut arrow).and(&mut summary);
+/// let report = simulate_into(system, Integrator::dopri5(1e-8), 0.0, 3600.0,
+///                            Output::Every(0.01), &mut sinks, &mut |_| {})?;
+/// drop(sinks);
+/// println!("{} rows; max |C| {:e} m", report.rows, summary.get("closure_error").unwrap().max);
+/// # Ok(()) }
+/// ```
+// The failure carries the report by design; it is the rare path.
+#[allow(clippy::result_large_err)]
+pub fn simulate_into(
+    system: &mut dyn Simulated,
+    integrator: Integrator,
+    t0: f64,
+    t_end: f64,
+    output: Output,
+    sink: &mut dyn Sink,
+    progress: &mut dyn FnMut(f64),
+) -> Result<RunReport, StreamFailure> {
+    let mut counted = Counted {
+        inner: sink,
+        rows: 0,
+        last_time: None,
+    };
+    let (outcome, stats) = drive(
+        system,
+        integrator,
+        t0,
+        t_end,
+        &output,
+        &mut counted,
+        progress,
+    );
+    let finished = counted.inner.finish();
+    let report = RunReport {
+        rows: counted.rows,
+        last_time: counted.last_time,
+        switches: system.switches(),
+        stats,
+    };
+    match (outcome, finished) {
+        (Ok(()), Ok(())) => Ok(report),
+        (Ok(()), Err(source)) => Err(StreamFailure {
+            error: RunError::Sink {
+                t: report.last_time.unwrap_or(t0),
+                source,
+            },
+            report,
+            finish: None,
+        }),
+        (Err(error), finished) => Err(StreamFailure {
+            error,
+            report,
+            finish: finished.err(),
+        }),
+    }
+}
+
+/// Counts the rows on their way to the sink.
+struct Counted<'a> {
+    inner: &'a mut dyn Sink,
+    rows: usize,
+    last_time: Option<f64>,
+}
+
+impl Sink for Counted<'_> {
+    fn begin(&mut self, columns: &[String]) -> Result<(), SinkError> {
+        self.inner.begin(columns)
+    }
+
+    fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
+        self.inner.row(t, values)?;
+        self.rows += 1;
+        self.last_time = Some(t);
+        Ok(())
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        self.inner.finish()
+    }
+}
