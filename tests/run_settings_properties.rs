@@ -960,7 +960,11 @@ fn a_terrain_that_overflows_the_contact_stops_the_run_typed() {
     )
     .unwrap_err();
     assert!(
-        matches!(f.error, SimulationError::NonFinite { t, .. } if t == 0.0),
+        matches!(
+            f.error,
+            SimulationError::NonFinite { t, .. } | SimulationError::NonFiniteRecord { t, .. }
+                if t == 0.0
+        ),
         "{}",
         f.error
     );

@@ -404,3 +404,31 @@ fn table_errors_name_the_problem() {
     let points = vec![(0.0, 1.0), (0.5, -1.0)];
     assert_eq!(Terrain::table(points.clone()), Ok(Terrain::Table(points)));
 }
+
+/// Regression: a table evaluated at x = NaN panicked (index underflow in
+/// the segment search); every profile gives a NaN height there, so the
+/// integrator's finiteness check reports it.
+#[test]
+fn every_profile_is_nan_at_nan() {
+    let table = Terrain::table(vec![(0.0, 0.0), (1.0, 0.5), (2.0, 0.0)]).unwrap();
+    for terrain in [
+        table,
+        Terrain::Ramp {
+            height: 0.0,
+            start: 1.0,
+            slope: 0.2,
+        },
+        Terrain::Bump {
+            centre: 1.0,
+            width: 1.0,
+            height: 0.1,
+        },
+        Terrain::Sine {
+            amplitude: 0.1,
+            wavelength: 2.0,
+        },
+    ] {
+        let (h, _) = terrain.height_and_slope(f64::NAN);
+        assert!(h.is_nan(), "{terrain:?}: h(NaN) = {h}");
+    }
+}

@@ -410,3 +410,69 @@ fn thinned_keeps_a_bounded_evenly_spaced_selection_ending_at_the_last_row() {
         assert_eq!(thinned.results().column("i").unwrap(), kept, "{case}");
     }
 }
+
+/// The oscillator, recording a NaN energy after `t = 0.5` s from its finite
+/// state.
+struct NanRecord(Oscillator);
+
+impl OdeSystem for NanRecord {
+    fn dimension(&self) -> usize {
+        self.0.dimension()
+    }
+
+    fn derivative(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        dy: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
+        self.0.derivative(t, y, dy)
+    }
+}
+
+impl Simulated for NanRecord {
+    fn initial_state(&self) -> DVector<f64> {
+        self.0.initial_state()
+    }
+
+    fn columns(&self) -> Vec<String> {
+        self.0.columns()
+    }
+
+    fn observe(
+        &mut self,
+        t: f64,
+        y: &DVector<f64>,
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
+        self.0.observe(t, y, row)?;
+        if t > 0.5 {
+            *row.last_mut().unwrap() = f64::NAN;
+        }
+        Ok(())
+    }
+}
+
+/// Regression: a recorded NaN from a finite state was written into the
+/// results of every system but the vehicle (which checked its own rows).
+/// The driver checks every row: the run stops with the column's name and
+/// keeps the rows before it.
+#[test]
+fn a_recorded_nan_stops_any_system_naming_its_column() {
+    let mut system = NanRecord(Oscillator { fail_at: None });
+    let failure = simulate(&mut system, rk4(), 0.0, 1.0, Output::Every(INTERVAL)).unwrap_err();
+    match &failure.error {
+        SimulationError::NonFiniteRecord { t, column } => {
+            assert!(*t > 0.5 && *t <= 0.5 + INTERVAL + 1e-12, "t = {t}");
+            assert_eq!(column, "energy");
+        }
+        other => panic!("{other}"),
+    }
+    assert_eq!(failure.results.len(), 51);
+    assert!(
+        failure
+            .results
+            .iter()
+            .all(|s| s.values.iter().all(|v| v.is_finite()))
+    );
+}

@@ -192,6 +192,11 @@ impl Terrain {
                 let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
                     return (0.0, 0.0);
                 };
+                // NaN is neither left of, right of nor between the points:
+                // it has no segment (the search below would find none).
+                if x.is_nan() {
+                    return (f64::NAN, f64::NAN);
+                }
                 if x <= first.0 {
                     return (first.1, 0.0);
                 }

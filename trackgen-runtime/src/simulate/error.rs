@@ -17,6 +17,16 @@ pub enum SimulationError {
         /// Which quantity.
         what: &'static str,
     },
+    /// A recorded quantity came out NaN or infinite from a finite state
+    /// (forces that overflow on an absurd terrain, a singular solve): the
+    /// results hold numbers only, so the run stops with the rows so far.
+    #[error("non-finite value of the recorded `{column}` at t = {t} s")]
+    NonFiniteRecord {
+        /// Time, s.
+        t: f64,
+        /// The column's name.
+        column: String,
+    },
     /// Newton-Raphson on the loop closure `C(z, d) = 0` did not converge.
     #[error(
         "Newton-Raphson on the loop closure failed at t = {t} s: |C| = {residual:e} m after {iterations} iterations"
@@ -90,6 +100,7 @@ impl SimulationError {
     pub fn time(&self) -> Option<f64> {
         match self {
             SimulationError::NonFinite { t, .. }
+            | SimulationError::NonFiniteRecord { t, .. }
             | SimulationError::NewtonFailed { t, .. }
             | SimulationError::BranchJump { t, .. }
             | SimulationError::StepSizeUnderflow { t, .. }

@@ -109,7 +109,7 @@ pub(super) fn drive(
         t_end,
         output,
         sink,
-        columns.len(),
+        &columns,
         progress,
     );
     (outcome, stepper.stats())
@@ -123,9 +123,10 @@ fn run(
     t_end: f64,
     output: &Output,
     sink: &mut dyn Sink,
-    width: usize,
+    columns: &[String],
     progress: &mut dyn FnMut(f64),
 ) -> Result<(), RunError> {
+    let width = columns.len();
     let mut row = Vec::with_capacity(width);
     let mut record = |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, sink: &mut dyn Sink| {
         row.clear();
@@ -135,6 +136,14 @@ fn run(
                 "the system recorded {} values at t = {t} s for its {width} columns",
                 row.len()
             ))));
+        }
+        // Every system's results hold numbers only; the state is finite
+        // here (checked after each step), so a NaN is the observation's.
+        if let Some(i) = row.iter().position(|v| !v.is_finite()) {
+            return Err(RunError::Simulation(SimulationError::NonFiniteRecord {
+                t,
+                column: columns[i].clone(),
+            }));
         }
         sink.row(t, &row)
             .map_err(|source| RunError::Sink { t, source })
