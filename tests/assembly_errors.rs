@@ -481,3 +481,83 @@ fn vehicle_setup_edges_are_accepted() {
     assert!((radius - want).abs() <= 1e-15 * want, "{radius} vs {want}");
     assert_eq!(<M113Track as RecursiveModel<TRACK_DOF>>::BODIES, 64);
 }
+
+trackgen::model! {
+    /// A carrier whose top span sags freely (no tensioner arm): with 52 or
+    /// 54 shoes the sag that closes the loop reaches into the idler and
+    /// the road wheels.
+    pub vehicle Sagging52 {
+        chassis { mass: 1000.0, inertia: 500.0 },
+        sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.245, teeth: 10 },
+        road_wheel rw1 { at: (-0.6, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
+        road_wheel rw2 { at: (-2.4, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
+        idler rear { at: (-3.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.25 },
+        roller top { at: (-1.5, 0.05), mass: 10.0, inertia: 0.1, radius: 0.1 },
+        track { links: 52, link { mass: 18.0, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) } },
+    }
+
+    /// The same with 54 shoes.
+    pub vehicle Sagging54 {
+        chassis { mass: 1000.0, inertia: 500.0 },
+        sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.245, teeth: 10 },
+        road_wheel rw1 { at: (-0.6, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
+        road_wheel rw2 { at: (-2.4, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
+        idler rear { at: (-3.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.25 },
+        roller top { at: (-1.5, 0.05), mass: 10.0, inertia: 0.1, radius: 0.1 },
+        track { links: 54, link { mass: 18.0, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) } },
+    }
+}
+
+/// Regression: a wrap whose sagging span passes through a wheel was
+/// returned as a start, and the run began with shoes centimetres inside
+/// the wheels. The assembled start is checked pair by pair (ground, every
+/// wheel, the sprocket's teeth) against `START_PENETRATION` (2 mm), and a
+/// deeper start is a typed error naming the part, the link and the depth.
+/// The M113 starts clear of everything (its runs assemble in every
+/// vehicle test).
+#[test]
+fn a_start_inside_a_wheel_is_an_error() {
+    let (shoe, profile) = (ShoeGeometry::m113(), ToothProfile::m113());
+    let flat = Terrain::Flat { height: 0.0 };
+    let e52 = assemble(
+        &Sagging52Track,
+        &Sagging52Chassis,
+        &shoe,
+        &profile,
+        &flat,
+        0.0,
+        0.001,
+    )
+    .unwrap_err();
+    let e54 = assemble(
+        &Sagging54Track,
+        &Sagging54Chassis,
+        &shoe,
+        &profile,
+        &flat,
+        0.0,
+        0.001,
+    )
+    .unwrap_err();
+    for (e, part, at_least) in [
+        (&e52, "idler `rear`", 0.005),
+        (&e54, "road wheel `rw1`", 0.1),
+    ] {
+        match e {
+            AssemblyError::StartsInside { what, link, depth } => {
+                assert_eq!(what, part, "{e}");
+                assert!((1..=54).contains(link), "{e}");
+                assert!(*depth > at_least, "{e}");
+            }
+            other => panic!("{other}"),
+        }
+        let message = e.to_string();
+        assert!(
+            message.contains(part)
+                && message.contains("mm inside")
+                && message.contains("at most 2 mm"),
+            "{message}"
+        );
+    }
+    let _ = (Sagging52, Sagging54);
+}

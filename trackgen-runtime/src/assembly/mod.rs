@@ -68,6 +68,22 @@ pub enum AssemblyError {
     /// The sagging span index is not a span.
     #[error("sag span {0} does not exist (spans are numbered from 0, one after each wheel)")]
     NoSuchSpan(usize),
+    /// The assembled start puts a shoe deeper than
+    /// [`START_PENETRATION`](crate::vehicle::START_PENETRATION) into a
+    /// wheel, the sprocket or the ground.
+    #[error(
+        "the assembled track starts {:.1} mm inside {what} (link {link}); a start may be at most {:.0} mm deep: the wrap does not fit this layout",
+        depth * 1e3,
+        crate::vehicle::START_PENETRATION * 1e3
+    )]
+    StartsInside {
+        /// What the shoe is inside (`the ground`, `road wheel \`rw3\``, …).
+        what: String,
+        /// The link, numbered from 1.
+        link: usize,
+        /// How deep, m.
+        depth: f64,
+    },
     /// The terrain to place the vehicle on is invalid (a NaN or infinite
     /// parameter, a bad table).
     #[error(transparent)]

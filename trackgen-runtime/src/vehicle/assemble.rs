@@ -5,9 +5,11 @@
 use nalgebra::{SVector, Vector2};
 
 use crate::assembly::{AssemblyError, PitchCircle, excess, wrap};
-use crate::contact::sprocket::ToothProfile;
-use crate::contact::{ShoeGeometry, Terrain};
-use crate::model::{ChassisModel, PartKind, TrackModel};
+use crate::contact::ground::GroundContact;
+use crate::contact::sprocket::{SprocketContact, ToothProfile};
+use crate::contact::wheel::WheelContact;
+use crate::contact::{BodyState, Friction, NormalLaw, ShoeGeometry, Terrain};
+use crate::model::{BodyLoad, ChassisModel, PartKind, TrackModel};
 
 /// Initial coordinates of a vehicle.
 #[derive(Debug, Clone, PartialEq)]
@@ -139,8 +141,98 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         let psi = (nearest - centre).y.atan2((nearest - centre).x);
         qc[2 + part.body] = psi - 0.5 * profile.pitch_angle();
     }
+    check_start::<T, DT, C, DC>(track, chassis, (&qt, &qc), shoe, profile, terrain)?;
     Ok(Assembled {
         track: qt,
         chassis: qc,
     })
+}
+
+/// How deep (m) an assembled start may put a shoe feature into a wheel,
+/// the sprocket's teeth or the ground. The wrap lays the joints on pitch
+/// circles from which the faces and pins just touch, and the closure's
+/// Newton-Raphson moves them by a fraction of a millimetre; 2 mm is well
+/// above that and well below what a wrong wrap gives (a sagging span laid
+/// through a roller: centimetres), and below the 2–4 mm a shoe sinks under
+/// its static load, so a start within it is not a jolt.
+pub const START_PENETRATION: f64 = 2e-3;
+
+/// The deepest penetration of each contact pair at the assembled start,
+/// checked against [`START_PENETRATION`].
+fn check_start<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
+    track: &T,
+    chassis: &C,
+    (qt, qc): (&SVector<f64, DT>, &SVector<f64, DC>),
+    shoe: &ShoeGeometry,
+    profile: &ToothProfile,
+    terrain: &Terrain,
+) -> Result<(), AssemblyError> {
+    let at_rest = |positions: &[Vector2<f64>], angles: &[f64]| -> Vec<BodyState> {
+        positions
+            .iter()
+            .zip(angles)
+            .map(|(r, a)| BodyState::new(*r, *a, Vector2::zeros(), 0.0))
+            .collect()
+    };
+    let mut r = vec![Vector2::zeros(); T::BODIES];
+    track.body_positions(qt, &mut r);
+    let links = at_rest(&r, &qt.as_slice()[2..]);
+    let mut r = vec![Vector2::zeros(); C::BODIES];
+    chassis.body_positions(qc, &mut r);
+    let bodies = at_rest(&r, &qc.as_slice()[2..]);
+    // Geometry only: any law reports the penetration.
+    let normal = NormalLaw::KelvinVoigt {
+        stiffness: 1.0,
+        damping: 0.0,
+    };
+    let friction = Friction { mu: 0.0, slip: 1.0 };
+    let mut loads = vec![BodyLoad::ZERO; T::BODIES];
+    let mut other = BodyLoad::ZERO;
+    let mut deepest: Option<(String, usize, f64)> = None;
+    let mut keep = |what: &dyn Fn() -> String, link: usize, depth: f64| {
+        if depth > deepest.as_ref().map_or(START_PENETRATION, |d| d.2) {
+            deepest = Some((what(), link + 1, depth));
+        }
+    };
+    GroundContact {
+        terrain: terrain.clone(),
+        normal,
+        friction,
+    }
+    .apply(&links, shoe, &mut loads, |i, c| {
+        keep(&|| "the ground".to_string(), i, c.penetration)
+    });
+    for part in C::PARTS {
+        let body = &bodies[part.body];
+        let kind = match part.kind {
+            PartKind::Sprocket => "sprocket",
+            PartKind::Idler => "idler",
+            PartKind::RoadWheel => "road wheel",
+            PartKind::Roller => "roller",
+        };
+        let name = || format!("{kind} `{}`", part.name);
+        if part.kind == PartKind::Sprocket {
+            SprocketContact {
+                profile: *profile,
+                normal,
+                friction,
+            }
+            .apply(body, &links, shoe, &mut loads, &mut other, |i, c| {
+                keep(&name, i, c.penetration)
+            });
+        } else {
+            WheelContact { normal, friction }.apply(
+                (body, part.radius),
+                &links,
+                shoe,
+                &mut loads,
+                &mut other,
+                |i, c| keep(&name, i, c.penetration),
+            );
+        }
+    }
+    match deepest {
+        Some((what, link, depth)) => Err(AssemblyError::StartsInside { what, link, depth }),
+        None => Ok(()),
+    }
 }

@@ -6,7 +6,7 @@ mod drive;
 mod system;
 mod tension;
 
-pub use assemble::{Assembled, assemble};
+pub use assemble::{Assembled, START_PENETRATION, assemble};
 pub use drive::Drive;
 pub use system::{VehicleConfig, VehicleSystem};
 pub use tension::tensions;
