@@ -3,10 +3,12 @@
 //! the macro can evaluate them; checks it cannot do are [`ConstCheck`]s that
 //! rustc performs at compile time.
 
+use std::rc::Rc;
+
 use proc_macro2::{Span, TokenStream};
 use syn::{Attribute, Ident, Visibility};
 
-use crate::num::{Num, Vec2};
+use crate::num::{ConstPool, Num, Vec2};
 
 /// Everything one invocation declares.
 pub struct Model {
@@ -21,6 +23,8 @@ pub struct Item {
     pub kind: ItemKind,
     /// Checks of constant expressions, for rustc.
     pub checks: Vec<ConstCheck>,
+    /// The item's named constants: its constant expressions, each once.
+    pub consts: Rc<ConstPool>,
 }
 
 pub enum ItemKind {

@@ -25,6 +25,8 @@ mod num;
 mod parse;
 
 #[cfg(test)]
+mod fuzz;
+#[cfg(test)]
 mod tests;
 
 /// Declares tracks and vehicles and compiles their dynamics. See the

@@ -2,21 +2,27 @@
 //! problem is reported, each at the token that causes it, all at once.
 
 use std::collections::BTreeMap;
+use std::rc::Rc;
+use std::str::FromStr;
 
 use proc_macro2::Span;
 use quote::{ToTokens, quote, quote_spanned};
 use syn::spanned::Spanned;
-use syn::{BinOp, Expr, Ident, Lit, Member, UnOp};
+use syn::{BinOp, Expr, Ident, Lit, LitInt, Member, UnOp};
 
 use crate::ir::{
     Arm, Closure, ConstCheck, Item, ItemKind, Link, Model, Part, PartKind, Track, Vehicle,
 };
-use crate::num::{Num, Vec2};
-use crate::parse::{Block, Entry, Input, ItemAst, Selector};
+use crate::num::{ConstPool, Num, Vec2};
+use crate::parse::{Block, Entry, IndexRange, Input, ItemAst, Selector};
 
 /// The most links a track may have: beyond this the unrolled code stops
 /// being a good trade (see README, compile times).
 pub const MAX_LINKS: usize = 1024;
+
+/// The shortest arm, m: a pivot closer than this to its part's centre is
+/// taken as a zero-length arm (the arm's angle would not move the part).
+const MIN_ARM_LENGTH: f64 = 1e-9;
 
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Bound {
@@ -74,6 +80,7 @@ fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
     let mut cx = Cx {
         errors,
         checks: Vec::new(),
+        pool: ConstPool::new(&ast.name),
     };
     let kind = if ast.kind == "track" {
         ItemKind::Track(cx.track(&ast.body, true))
@@ -86,12 +93,15 @@ fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
         name: ast.name,
         kind,
         checks: cx.checks,
+        consts: cx.pool,
     }
 }
 
 struct Cx<'e> {
     errors: &'e mut Errors,
     checks: Vec<ConstCheck>,
+    /// The item's named constants.
+    pool: Rc<ConstPool>,
 }
 
 /// The fields of one block by key, after unknown and duplicate keys were
@@ -215,9 +225,9 @@ impl Cx<'_> {
                     );
                 }
             }
-            Num::Expr(t) => self.checks.push(ConstCheck {
+            Num::Expr(_) => self.checks.push(ConstCheck {
                 span: expr?.span(),
-                condition: quote!((#t) #holds && (#t) <= f64::MAX),
+                condition: quote!((#value) #holds && (#value) <= f64::MAX),
                 message: format!("`{key}` must be {what} and finite"),
             }),
         }
@@ -239,7 +249,7 @@ impl Cx<'_> {
     /// Evaluates a number: literals and arithmetic on them are folded here,
     /// anything else that can be a constant expression is left to rustc.
     fn eval(&mut self, expr: &Expr, key: &str) -> Result<Num, ()> {
-        let result = eval_number(expr);
+        let result = eval_number(expr, &self.pool);
         match result {
             Ok(Num::Known(v)) if !v.is_finite() => {
                 self.errors
@@ -314,9 +324,15 @@ impl Cx<'_> {
             );
             return None;
         };
-        let Ok(n) = lit.base10_parse::<usize>() else {
-            self.errors
-                .spanned(lit, "`links` must be a non-negative integer");
+        let n = self.integer::<usize>(lit, "usize").ok()?;
+        let Some(n) = n.filter(|&n| n <= MAX_LINKS) else {
+            self.errors.at(
+                lit.span(),
+                format!(
+                    "at most {MAX_LINKS} links are supported, found {}",
+                    lit.base10_digits()
+                ),
+            );
             return None;
         };
         let closed = !matches!(closure, Closure::Open);
@@ -328,12 +344,6 @@ impl Cx<'_> {
             self.errors.at(
                 lit.span(),
                 format!("a closed track needs at least 3 links, found {n}"),
-            );
-            None
-        } else if n > MAX_LINKS {
-            self.errors.at(
-                lit.span(),
-                format!("at most {MAX_LINKS} links are supported, found {n}"),
             );
             None
         } else {
@@ -497,7 +507,7 @@ impl Cx<'_> {
                 let (x, y) = (d.x.to_token_stream(), d.y.to_token_stream());
                 self.checks.push(ConstCheck {
                     span,
-                    condition: quote!(!(#x == 0.0 && #y == 0.0)),
+                    condition: quote!(!((#x) == 0.0 && (#y) == 0.0)),
                     message: format!("{which}: its joint points `u1` and `u2` coincide"),
                 });
             }
@@ -505,40 +515,53 @@ impl Cx<'_> {
     }
 
     /// The 0-based link indices a selector names (it names 1-based links).
+    /// Each range that selects nothing, or a link the track does not have,
+    /// is an error at its tokens.
     fn select(&mut self, sel: &Selector, n: usize) -> Vec<usize> {
         let mut out = Vec::new();
         for range in &sel.ranges {
-            let parse = |lit: &syn::LitInt| {
-                lit.base10_parse::<usize>()
-                    .map_err(|e| syn::Error::new(lit.span(), e))
+            // A link number too large for a `usize` names no link either.
+            let mut number = |lit: &LitInt| {
+                self.integer::<usize>(lit, "usize")
+                    .map(|v| v.unwrap_or(usize::MAX))
             };
-            let start = parse(&range.start);
-            let end = range.end.as_ref().map(|(inclusive, lit)| {
-                parse(lit).map(|e| if *inclusive { e } else { e.saturating_sub(1) })
-            });
-            let step = range.step.as_ref().map(parse);
-            let (start, end, step) = match (start, end.transpose(), step.transpose()) {
-                (Ok(s), Ok(e), Ok(st)) => (s, e.unwrap_or(s), st.unwrap_or(1)),
-                (a, b, c) => {
-                    for e in [a.err(), b.err(), c.err()].into_iter().flatten() {
-                        self.errors.push(e);
-                    }
-                    continue;
-                }
+            let start = number(&range.start);
+            let end = range.end.as_ref().map(|(_, lit)| number(lit)).transpose();
+            let step = range.step.as_ref().map(&mut number).transpose();
+            let (Ok(start), Ok(end), Ok(step)) = (start, end, step) else {
+                continue;
             };
             if start == 0 {
                 self.errors
                     .at(range.start.span(), "links are numbered from 1");
                 continue;
             }
-            if end > n {
+            // The last link selected, 1-based.
+            let last = match (&range.end, end) {
+                (Some((true, _)), Some(end)) => end,
+                (Some((false, _)), Some(end)) => end.saturating_sub(1),
+                _ => start,
+            };
+            if last < start {
+                let equal = matches!(&range.end, Some((false, _))) && end == Some(start);
+                self.empty_range(range, equal);
+                continue;
+            }
+            if last > n {
                 let lit = range.end.as_ref().map_or(&range.start, |(_, l)| l);
+                // The literal itself, unless it is an exclusive end that
+                // fits in a `usize` (then the link before it).
+                let last = match &range.end {
+                    Some((false, _)) if end != Some(usize::MAX) => last.to_string(),
+                    _ => lit.base10_digits().to_string(),
+                };
                 self.errors.at(
                     lit.span(),
-                    format!("the track has {n} links; link {end} does not exist"),
+                    format!("the track has {n} links; link {last} does not exist"),
                 );
                 continue;
             }
+            let step = step.unwrap_or(1);
             if step == 0 {
                 self.errors.at(
                     range.step.as_ref().map_or(sel.span, |s| s.span()),
@@ -546,9 +569,49 @@ impl Cx<'_> {
                 );
                 continue;
             }
-            out.extend((start..=end).step_by(step).map(|i| i - 1));
+            out.extend((start..=last).step_by(step).map(|i| i - 1));
         }
         out
+    }
+
+    /// `a..=b` with `b < a`, or `a..b` with `b ≤ a`: most likely a typo,
+    /// which would otherwise change nothing without a word.
+    fn empty_range(&mut self, range: &IndexRange, equal: bool) {
+        let Some((inclusive, end)) = &range.end else {
+            return;
+        };
+        let start = &range.start;
+        let (a, b) = (start.base10_digits(), end.base10_digits());
+        let (dots, text) = if *inclusive {
+            (quote!(..=), format!("{a}..={b}"))
+        } else {
+            (quote!(..), format!("{a}..{b}"))
+        };
+        let message = if equal {
+            format!(
+                "empty range `{text}`: it stops before link {b}, so it selects no link; \
+                 `[{a}]` selects link {a}"
+            )
+        } else {
+            format!("empty range `{text}`: it selects no link; write the lower link first")
+        };
+        self.errors.spanned(quote!(#start #dots #end), message);
+    }
+
+    /// The value of an integer literal for a field of type `ty`: `Ok(None)`
+    /// if it does not fit (the caller reports that against the field's own
+    /// bound), `Err(())` after reporting a suffix other than `ty`'s (as
+    /// `f64` fields refuse theirs).
+    fn integer<T: FromStr>(&mut self, lit: &LitInt, ty: &str) -> Result<Option<T>, ()> {
+        let suffix = lit.suffix();
+        if !suffix.is_empty() && suffix != ty {
+            self.errors
+                .at(lit.span(), format!("expected a `{ty}`; remove the suffix"));
+            return Err(());
+        }
+        // `base10_digits` is the literal's value in decimal digits (no sign,
+        // no underscores, hex converted): parsing fails only on overflow.
+        Ok(lit.base10_digits().parse::<T>().ok())
     }
 
     fn vehicle(&mut self, block: &Block, name: &Ident) -> Vehicle {
@@ -561,6 +624,7 @@ impl Cx<'_> {
         let mut track = None;
         let mut parts = Vec::new();
         let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
+        let mut sprocket: Option<&Ident> = None;
         let vehicle_name = name;
         for entry in sections {
             let Entry::Section {
@@ -615,6 +679,19 @@ impl Cx<'_> {
                     } else if part_names.insert(upper, name.clone()).is_some() {
                         self.errors
                             .at(name.span(), format!("duplicate part name `{name}`"));
+                    }
+                    if kind_ir == PartKind::Sprocket {
+                        match sprocket {
+                            // The runtime drives and meshes one sprocket.
+                            Some(first) => self.errors.at(
+                                kind.span(),
+                                format!(
+                                    "one sprocket per vehicle: `{first}` is its sprocket; \
+                                     declare `{name}` as an `idler`"
+                                ),
+                            ),
+                            None => sprocket = Some(name),
+                        }
                     }
                     if let Some(part) = self.part(kind_ir, name, body) {
                         parts.push(part);
@@ -730,6 +807,9 @@ impl Cx<'_> {
             arm = Some(self.arm(body));
         }
         let at = self.point(&fields, "at", true);
+        if let (Some(Some((arm, pivot_span))), Some(at)) = (&arm, &at) {
+            self.check_arm_length(arm, *pivot_span, at, what);
+        }
         let mass = self.positive(&fields, "mass", true);
         let inertia = self.positive(&fields, "inertia", true);
         let radius = self.positive(&fields, "radius", true);
@@ -747,14 +827,42 @@ impl Cx<'_> {
             radius: radius?,
             teeth: teeth?,
             arm: match arm {
-                Some(a) => Some(a?),
+                Some(a) => Some(a?.0),
                 None => None,
             },
         })
     }
 
-    /// `arm { pivot, mass, inertia, stiffness, damping, preload }`.
-    fn arm(&mut self, block: &Block) -> Option<Arm> {
+    /// An arm carries its part at a distance: a pivot at the part's centre
+    /// would make the arm's angle move nothing but the arm.
+    fn check_arm_length(&mut self, arm: &Arm, pivot_span: Span, at: &Vec2, what: &str) {
+        let what = what.replace('_', " ");
+        let message = format!(
+            "zero-length arm: its `pivot` is at the {what}'s centre `at`; \
+             pivot and centre must be at least {MIN_ARM_LENGTH:e} m apart"
+        );
+        let d = arm.pivot.clone() - at.clone();
+        match (d.x.known(), d.y.known()) {
+            (Some(x), Some(y)) => {
+                if x.hypot(y) < MIN_ARM_LENGTH {
+                    self.errors.at(pivot_span, message);
+                }
+            }
+            _ => {
+                let squared = d.norm_squared();
+                let min = MIN_ARM_LENGTH * MIN_ARM_LENGTH;
+                self.checks.push(ConstCheck {
+                    span: pivot_span,
+                    condition: quote!((#squared) >= #min),
+                    message,
+                });
+            }
+        }
+    }
+
+    /// `arm { pivot, mass, inertia, stiffness, damping, preload }`, and the
+    /// span of its pivot.
+    fn arm(&mut self, block: &Block) -> Option<(Arm, Span)> {
         let keys = [
             "pivot",
             "mass",
@@ -771,14 +879,15 @@ impl Cx<'_> {
         let stiffness = self.non_negative(&fields, "stiffness");
         let damping = self.non_negative(&fields, "damping");
         let preload = self.number(&fields, "preload", false).unwrap_or(Num::ZERO);
-        Some(Arm {
+        let arm = Arm {
             pivot: pivot?,
             mass: mass?,
             inertia: inertia?,
             stiffness: stiffness?,
             damping: damping?,
             preload,
-        })
+        };
+        Some((arm, fields.map["pivot"].span()))
     }
 
     fn teeth(&mut self, fields: &Fields) -> Option<u32> {
@@ -789,11 +898,22 @@ impl Cx<'_> {
         match strip(expr) {
             Expr::Lit(syn::ExprLit {
                 lit: Lit::Int(lit), ..
-            }) => match lit.base10_parse::<u32>() {
-                Ok(t) if t >= 3 => Some(t),
-                _ => {
+            }) => match self.integer::<u32>(lit, "u32").ok()? {
+                Some(t) if t >= 3 => Some(t),
+                Some(_) => {
                     self.errors
                         .at(lit.span(), "a sprocket needs at least 3 teeth");
+                    None
+                }
+                None => {
+                    self.errors.at(
+                        lit.span(),
+                        format!(
+                            "`teeth` is a `u32`: at most {}, found {}",
+                            u32::MAX,
+                            lit.base10_digits()
+                        ),
+                    );
                     None
                 }
             },
@@ -816,7 +936,7 @@ fn strip(expr: &Expr) -> &Expr {
 
 /// A number: folded when built from literals, otherwise a constant
 /// expression for rustc. Rejects what cannot be an `f64` at all.
-fn eval_number(expr: &Expr) -> syn::Result<Num> {
+fn eval_number(expr: &Expr, pool: &Rc<ConstPool>) -> syn::Result<Num> {
     match strip(expr) {
         Expr::Lit(l) => match &l.lit {
             Lit::Float(f) if matches!(f.suffix(), "" | "f64") => {
@@ -833,9 +953,9 @@ fn eval_number(expr: &Expr) -> syn::Result<Num> {
             )),
             _ => Err(syn::Error::new(l.span(), "expected a number")),
         },
-        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval_number(&u.expr)?),
+        Expr::Unary(u) if matches!(u.op, UnOp::Neg(_)) => Ok(-eval_number(&u.expr, pool)?),
         Expr::Binary(b) => {
-            let (l, r) = (eval_number(&b.left), eval_number(&b.right));
+            let (l, r) = (eval_number(&b.left, pool), eval_number(&b.right, pool));
             let (l, r) = match (l, r) {
                 (Ok(l), Ok(r)) => (l, r),
                 (Err(mut a), Err(b)) => {
@@ -864,7 +984,7 @@ fn eval_number(expr: &Expr) -> syn::Result<Num> {
         | Expr::Block(_)) => {
             let tokens = e.to_token_stream();
             let span = e.span();
-            Ok(Num::Expr(quote_spanned!(span=> #tokens)))
+            Ok(pool.user(quote_spanned!(span=> #tokens)))
         }
         e => Err(syn::Error::new(
             e.span(),

@@ -5,6 +5,7 @@
 //! nothing but the `trackgen` dependency.
 
 mod chassis;
+mod flat;
 mod lin;
 mod recursive;
 mod stub;
@@ -33,9 +34,12 @@ fn item(item: &Item) -> TokenStream {
         let (cond, msg) = (&c.condition, &c.message);
         quote::quote_spanned! {c.span=> const _: () = ::core::assert!(#cond, #msg); }
     });
+    let checks: TokenStream = checks.collect();
     let body = match &item.kind {
         ItemKind::Track(t) => track::track(item, t),
         ItemKind::Vehicle(v) => chassis::vehicle(item, v),
     };
-    quote! { #(#checks)* #body }
+    // After the body and the checks: it holds the constants they use.
+    let consts = item.consts.definitions();
+    quote! { #consts #checks #body }
 }

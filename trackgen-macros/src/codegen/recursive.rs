@@ -4,6 +4,7 @@
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
+use super::flat::flatten;
 use super::runtime;
 use super::tree::Tree;
 
@@ -53,6 +54,44 @@ pub fn recursive_impl(
             loads
         };
     };
+    // Straight-line bodies, thousands of `let`s long for a large track:
+    // flat scopes (see `flatten`).
+    let body_positions = flatten(quote! { #check_out #trig #positions #store_r });
+    let body_velocities = flatten(quote! { #check_out #trig #rates #velocities #store_v });
+    let body_states_with_trig = flatten(quote! {
+        ::core::assert_eq!(trig.len(), #n, "one entry per body");
+        ::core::assert_eq!(positions.len(), #n, "one entry per body");
+        ::core::assert_eq!(velocities.len(), #n, "one entry per body");
+        #trig_given
+        #rates
+        #positions
+        #velocities
+        {
+            let out = positions;
+            #store_r
+        }
+        {
+            let out = velocities;
+            #store_v
+        }
+    });
+    let velocity_terms = flatten(quote! { #check_out #trig #rates_squared #terms #store_g });
+    let mass_matrix = flatten(quote! { #trig #mass });
+    let generalized_forces = flatten(quote! { #loads #trig #forces });
+    let equations_of_motion = flatten(quote! {
+        #loads
+        #trig
+        {
+            let out = mass;
+            #mass
+        }
+        {
+            let out = forces;
+            #forces
+        }
+    });
+    let kinetic_energy = flatten(quote! { #trig #rates #velocities #kinetic });
+    let potential_energy = flatten(quote! { #trig #positions #potential #extra_potential });
     quote! {
         #[allow(unused_variables, clippy::all, clippy::pedantic)]
         impl #rt::runtime::RecursiveModel<#dof> for #name {
@@ -64,19 +103,12 @@ pub fn recursive_impl(
 
             #[inline]
             fn body_positions(&self, #q, #vec_out) {
-                #check_out
-                #trig
-                #positions
-                #store_r
+                #body_positions
             }
 
             #[inline]
             fn body_velocities(&self, #q, #qd, #vec_out) {
-                #check_out
-                #trig
-                #rates
-                #velocities
-                #store_v
+                #body_velocities
             }
 
             #[inline]
@@ -100,36 +132,17 @@ pub fn recursive_impl(
                 positions: &mut [#rt::nalgebra::Vector2<f64>],
                 velocities: &mut [#rt::nalgebra::Vector2<f64>],
             ) {
-                ::core::assert_eq!(trig.len(), #n, "one entry per body");
-                ::core::assert_eq!(positions.len(), #n, "one entry per body");
-                ::core::assert_eq!(velocities.len(), #n, "one entry per body");
-                #trig_given
-                #rates
-                #positions
-                #velocities
-                {
-                    let out = positions;
-                    #store_r
-                }
-                {
-                    let out = velocities;
-                    #store_v
-                }
+                #body_states_with_trig
             }
 
             #[inline]
             fn velocity_terms(&self, #q, #qd, #vec_out) {
-                #check_out
-                #trig
-                #rates_squared
-                #terms
-                #store_g
+                #velocity_terms
             }
 
             #[inline]
             fn mass_matrix(&self, #q, out: &mut #rt::nalgebra::SMatrix<f64, #dof, #dof>) {
-                #trig
-                #mass
+                #mass_matrix
             }
 
             #[inline]
@@ -140,9 +153,7 @@ pub fn recursive_impl(
                 loads: &[#rt::runtime::BodyLoad],
                 out: &mut #rt::nalgebra::SVector<f64, #dof>,
             ) {
-                #loads
-                #trig
-                #forces
+                #generalized_forces
             }
 
             #[inline]
@@ -154,29 +165,15 @@ pub fn recursive_impl(
                 mass: &mut #rt::nalgebra::SMatrix<f64, #dof, #dof>,
                 forces: &mut #rt::nalgebra::SVector<f64, #dof>,
             ) {
-                #loads
-                #trig
-                {
-                    let out = mass;
-                    #mass
-                }
-                {
-                    let out = forces;
-                    #forces
-                }
+                #equations_of_motion
             }
 
             fn kinetic_energy(&self, #q, #qd) -> f64 {
-                #trig
-                #rates
-                #velocities
-                #kinetic
+                #kinetic_energy
             }
 
             fn potential_energy(&self, #q) -> f64 {
-                #trig
-                #positions
-                #potential #extra_potential
+                #potential_energy
             }
         }
     }

@@ -5,6 +5,7 @@ use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 use syn::{Attribute, Visibility};
 
+use super::flat::flatten;
 use super::lin::{LinVec, Trig};
 use super::runtime;
 use super::tree::{Body, Penalty, Tree};
@@ -170,19 +171,23 @@ fn closure_impl(tree: &Tree, track: &Track) -> TokenStream {
     }
     let rates = tree.rate_prelude(true);
     let (gx, gy) = (gamma.x.tokens(), gamma.y.tokens());
+    let closure = flatten(quote! { #trig #rt::nalgebra::Vector2::new(#cx, #cy) });
+    let closure_jacobian = flatten(quote! {
+        #trig
+        let mut out = #rt::nalgebra::SMatrix::<f64, 2, #dof>::zeros();
+        #jacobian
+        out
+    });
+    let closure_gamma = flatten(quote! { #trig #rates #rt::nalgebra::Vector2::new(#gx, #gy) });
     quote! {
         #[inline]
         fn closure(&self, q: &#rt::nalgebra::SVector<f64, #dof>) -> #rt::nalgebra::Vector2<f64> {
-            #trig
-            #rt::nalgebra::Vector2::new(#cx, #cy)
+            #closure
         }
 
         #[inline]
         fn closure_jacobian(&self, q: &#rt::nalgebra::SVector<f64, #dof>) -> #rt::nalgebra::SMatrix<f64, 2, #dof> {
-            #trig
-            let mut out = #rt::nalgebra::SMatrix::<f64, 2, #dof>::zeros();
-            #jacobian
-            out
+            #closure_jacobian
         }
 
         #[inline]
@@ -191,9 +196,7 @@ fn closure_impl(tree: &Tree, track: &Track) -> TokenStream {
             q: &#rt::nalgebra::SVector<f64, #dof>,
             qd: &#rt::nalgebra::SVector<f64, #dof>,
         ) -> #rt::nalgebra::Vector2<f64> {
-            #trig
-            #rates
-            #rt::nalgebra::Vector2::new(#gx, #gy)
+            #closure_gamma
         }
     }
 }
