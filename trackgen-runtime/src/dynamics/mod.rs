@@ -25,4 +25,5 @@ mod linear_time;
 pub use dense::Accelerations;
 pub(crate) use dense::{solve_closed, solve_open};
 pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
+pub(crate) use generated::zeroed_matrix;
 pub use linear_time::LinearTimeSolver;

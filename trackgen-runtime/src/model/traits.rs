@@ -9,9 +9,12 @@ use super::{BodyLoad, ChassisPart, Closure, TreeDescription};
 /// bodies, `q_i = [R_x, R_y, θ_0 … θ_{n−1}]`. Absolute coordinates are
 /// `q = [R_0 … R_{n−1}, θ_0 … θ_{n−1}]` (3n), as in the paper's eq. (6).
 ///
-/// The fixed-size matrices live on the stack: `M_i` is `8 · DOF²` bytes,
-/// 34.8 KB at 64 links (DOF 66) and 135 KB at 128 links (DOF 130), well
-/// inside a 2 MiB thread stack; a Cholesky factorisation copies it once.
+/// The methods fill fixed-size matrices the caller provides: `M_i` is
+/// `8 · DOF²` bytes (34.8 KB at 64 links, 8 MB at 1000). The runtime's own
+/// callers keep it on the stack only up to
+/// [`STACK_MATRIX_BYTES`](crate::dynamics::STACK_MATRIX_BYTES) and on the
+/// heap beyond, so every size runs on a 2 MiB thread; a caller of
+/// [`mass_matrix`](Self::mass_matrix) on a large model should do the same.
 ///
 /// Slices passed to or filled by these methods have one entry per body; the
 /// methods panic on a wrong length (a programming error, not a state).

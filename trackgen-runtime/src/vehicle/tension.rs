@@ -1,7 +1,7 @@
 //! Joint forces along the track, from the accelerations (Newton's second
 //! law link by link).
 
-use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
+use nalgebra::{Matrix2, SVector, Vector2};
 
 use crate::model::{BodyLoad, TrackModel};
 
@@ -21,12 +21,13 @@ pub fn tensions<M: TrackModel<D>, const D: usize>(
     loads: &[BodyLoad],
 ) -> Option<Vec<f64>> {
     let n = M::BODIES;
-    let mut mass = SMatrix::<f64, D, D>::zeros();
+    // On the heap: a 1000-link track's `M_i` is 8 MB.
+    let mut mass = crate::dynamics::zeroed_matrix::<D>();
     let mut forces = SVector::<f64, D>::zeros();
     model.equations_of_motion(q, qd, loads, &mut mass, &mut forces);
     let cq = model.closure_jacobian(q);
     let gram: Matrix2<f64> = cq * cq.transpose();
-    let lambda = gram.try_inverse()? * (cq * (forces - mass * qdd));
+    let lambda = gram.try_inverse()? * (cq * (forces - &*mass * qdd));
     let description = model.description();
     let spans = description.link_spans()?;
     let mut accel = vec![Vector2::zeros(); n];
