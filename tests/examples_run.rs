@@ -373,6 +373,17 @@ fn m113_short_run_writes_its_outputs() {
         "m113 reports what it wrote:\n{}",
         text(&out.stdout)
     );
+    // The books are printed, and within the bound of the default tolerance
+    // 1e-3 (EnergyBalance::bound_for_tolerance: 1e-2), so no warning.
+    let stdout = text(&out.stdout);
+    let residual: f64 = stdout
+        .split("(residual ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|r| r.parse().ok())
+        .unwrap_or_else(|| panic!("no energy residual in:\n{stdout}"));
+    assert!(residual.abs() < 1e-2, "residual {residual}");
+    assert!(!stdout.contains("warning"), "{stdout}");
     check_m113_outputs(&dir, 0.3);
 }
 

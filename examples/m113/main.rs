@@ -111,7 +111,7 @@ fn run(args: &Args) -> Result<(), Box<dyn Error>> {
     // A run that stopped at its start has nothing to summarise or draw.
     let started = report.rows >= 2;
     let written = if started {
-        report::print(&outputs.summary, &report, wall);
+        report::print(&outputs.summary, &report, wall, args.tolerance);
         outputs.draw(&terrain)?
     } else {
         vec!["m113.csv", "all.csv", "all.arrow"]

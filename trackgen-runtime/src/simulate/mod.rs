@@ -9,6 +9,7 @@
 //! finishes the sink so the rows before the failure are written, and
 //! returns a [`StreamFailure`]).
 
+mod energy;
 mod error;
 mod loads;
 mod observe;
@@ -21,6 +22,10 @@ mod stream;
 mod track;
 mod tree;
 
+pub use energy::{
+    DISSIPATED, ENERGY, EnergyBalance, EnergyBalanceError, MOTOR_WORK, RESIDUAL_FLOOR,
+    RESIDUAL_PER_TOLERANCE,
+};
 pub use error::{SimulationError, SimulationFailure};
 pub use observe::{Momentum, momentum};
 pub use output::Output;
