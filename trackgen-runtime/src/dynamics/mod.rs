@@ -24,6 +24,6 @@ mod linear_time;
 
 pub use dense::Accelerations;
 pub(crate) use dense::{solve_closed, solve_open};
-pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
 pub(crate) use generated::zeroed_matrix;
+pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
 pub use linear_time::LinearTimeSolver;
