@@ -1,7 +1,7 @@
 use nalgebra::DVector;
 
 use super::{OdeSystem, Stats, Stepper};
-use crate::simulate::SimulationError;
+use crate::error::SimulationError;
 
 /// An embedded explicit Runge-Kutta pair whose last stage is evaluated at
 /// the solution (first-same-as-last).

@@ -35,7 +35,7 @@ pub use rosenbrock::Rosenbrock2;
 
 use nalgebra::DVector;
 
-use crate::simulate::SimulationError;
+use crate::error::SimulationError;
 
 /// A first-order system `y' = f(t, y)` whose evaluation may fail (a
 /// failed Newton-Raphson recovery, a singular matrix, a non-finite value).

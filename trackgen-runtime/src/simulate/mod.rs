@@ -22,11 +22,12 @@ mod stream;
 mod track;
 mod tree;
 
+pub use crate::error::SimulationError;
 pub use energy::{
     DISSIPATED, ENERGY, EnergyBalance, EnergyBalanceError, MOTOR_WORK, RESIDUAL_FLOOR,
     RESIDUAL_PER_TOLERANCE,
 };
-pub use error::{SimulationError, SimulationFailure};
+pub use error::SimulationFailure;
 pub use observe::{Momentum, momentum};
 pub use output::Output;
 pub use pair::Pair;
