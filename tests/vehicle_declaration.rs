@@ -29,7 +29,7 @@ use trackgen::contact::sprocket::ToothProfile;
 use trackgen::contact::{NormalLaw, ShoeGeometry, Terrain};
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, SimulationError, simulate};
-use trackgen::vehicle::{Drive, VehicleConfig};
+use trackgen::vehicle::{BuildError, Drive, VehicleConfig};
 use trackgen::vehicles::m113::{self, M113, M113Chassis};
 
 use support::vehicle::Books;
@@ -181,12 +181,9 @@ fn bad_arm_overrides_are_setup_errors() {
     negative.arms.as_mut().expect("declared arms")[2].damping = -1.0;
     for (config, needle) in [(missing, "bodies"), (negative, "damping -1")] {
         let error = M113::system_with(config).err().expect("refused");
-        let setup = error
-            .downcast_ref::<SimulationError>()
-            .expect("a SimulationError");
         assert!(
-            matches!(setup, SimulationError::Setup(m) if m.contains(needle)),
-            "{setup}"
+            matches!(&error, BuildError::Setup(SimulationError::Setup(m)) if m.contains(needle)),
+            "{error}"
         );
     }
 }

@@ -126,5 +126,5 @@ pub fn system(
     terrain: Terrain,
     drive: Drive,
 ) -> Result<M113System, Box<dyn std::error::Error + Send + Sync>> {
-    M113::system(terrain, drive)
+    Ok(M113::system(terrain, drive)?)
 }

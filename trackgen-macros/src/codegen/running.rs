@@ -74,9 +74,7 @@ pub fn running(
         max_torque,
         ..
     } = run;
-    let error = quote!(
-        ::std::boxed::Box<dyn ::std::error::Error + ::core::marker::Send + ::core::marker::Sync>
-    );
+    let error = quote!(#rt::runtime::vehicle::BuildError);
     quote! {
         #common
 
@@ -152,8 +150,8 @@ pub fn running(
 
             /// The vehicle assembled on `config`'s terrain (chassis centroid
             /// at x = 0, shoes 1 mm above the ground), its loop closed by
-            /// partitioning, ready for `simulate`. An `AssemblyError` when no
-            /// start fits, a `SimulationError::Setup` for a configuration
+            /// partitioning, ready for `simulate`. `BuildError::Assembly`
+            /// when no start fits, `BuildError::Setup` for a configuration
             /// that makes no vehicle.
             pub fn system_with(
                 config: #rt::runtime::vehicle::VehicleConfig,
