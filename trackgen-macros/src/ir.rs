@@ -29,7 +29,7 @@ pub struct Item {
 
 pub enum ItemKind {
     Track(Track),
-    Vehicle(Vehicle),
+    Vehicle(Box<Vehicle>),
 }
 
 /// A chain of links, possibly closed (spec §1, §2).

@@ -81,7 +81,7 @@ fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
     let kind = if ast.kind == "track" {
         ItemKind::Track(cx.track(&ast.body, true))
     } else {
-        ItemKind::Vehicle(cx.vehicle(&ast.body, &ast.name))
+        ItemKind::Vehicle(Box::new(cx.vehicle(&ast.body, &ast.name)))
     };
     Item {
         attrs: ast.attrs,

@@ -140,9 +140,10 @@ fn checked_arms<C: ChassisModel<DC>, const DC: usize>(
     }
     for arm in arms {
         let rates_ok = arm.stiffness >= 0.0 && arm.damping >= 0.0;
-        if !(rates_ok && arm.stiffness.is_finite() && arm.damping.is_finite())
-            || !arm.preload.is_finite()
-        {
+        let finite = [arm.stiffness, arm.damping, arm.preload]
+            .iter()
+            .all(|v| v.is_finite());
+        if !(rates_ok && finite) {
             return Err(SimulationError::Setup(format!(
                 "the arm at body {} needs finite stiffness and damping of zero or more and a finite preload, \
                  got stiffness {}, damping {}, preload {}",
