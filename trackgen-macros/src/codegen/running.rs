@@ -128,7 +128,7 @@ pub fn running(
             /// A PI speed drive with the declared gains and torque limit:
             /// `target` is the forward speed wanted, m/s, against time, s.
             pub fn speed_drive(
-                target: impl Fn(f64) -> f64 + ::core::marker::Send + 'static,
+                target: impl ::core::ops::Fn(f64) -> f64 + ::core::marker::Send + 'static,
             ) -> #rt::runtime::vehicle::Drive {
                 #rt::runtime::vehicle::Drive::Speed {
                     target: ::std::boxed::Box::new(target),

@@ -31,7 +31,9 @@ pub struct ToothProfile {
 
 impl ToothProfile {
     /// The M113 sprocket (`shared/spec/m113.md`): 10 teeth, addendum
-    /// 0.2605 m, arcs of 0.089 m centred 0.3 m out.
+    /// 0.2605 m, arcs of 0.089 m centred 0.3 m out. The same figures as
+    /// the sprocket of the M113's declaration (`M113::tooth_profile()`),
+    /// their home; `tests/vehicle_declaration.rs` holds the two equal.
     pub fn m113() -> ToothProfile {
         ToothProfile {
             teeth: 10,
