@@ -159,7 +159,8 @@ impl Cx<'_> {
                     None => sprocket = Some(name),
                 }
             }
-            let (declared, declared_profile) = self.part(kind_ir, &names, repeat.is_some(), body);
+            let base = repeat.map(|_| name);
+            let (declared, declared_profile) = self.part(kind_ir, &names, base, body);
             parts.extend(declared);
             if let Some(p) = declared_profile {
                 profile = p;
@@ -241,13 +242,13 @@ impl Cx<'_> {
         (mass, inertia, centroid)
     }
 
-    /// One part, or one per name of a repeated block (whose `at` is then a
-    /// list of positions), and a sprocket's declared profile.
+    /// One part, or one per name of a repeated block `base[n]` (whose `at`
+    /// is then a list of positions), and a sprocket's declared profile.
     fn part(
         &mut self,
         kind: PartKind,
         names: &[Ident],
-        repeated: bool,
+        repeated: Option<&Ident>,
         block: &crate::parse::Block,
     ) -> (Vec<Part>, Option<Profile>) {
         use crate::parse::Entry;
@@ -283,10 +284,10 @@ impl Cx<'_> {
                 self.errors
                     .at(keyword.span(), format!("duplicate `arm` in {what}"));
             } else {
-                arm = Some(self.arm(body, repeated));
+                arm = Some(self.arm(body, repeated.is_some()));
             }
         }
-        let at = if repeated {
+        let at = if let Some(base) = repeated {
             self.points(&fields, "at", true).and_then(|at| {
                 if at.len() == names.len() {
                     Some(at)
@@ -295,7 +296,7 @@ impl Cx<'_> {
                         fields.map["at"],
                         format!(
                             "`{}[{}]` declares {} parts: `at` needs {} positions, found {}",
-                            names[0].to_string().trim_end_matches('1'),
+                            base,
                             names.len(),
                             names.len(),
                             names.len(),
