@@ -10,14 +10,14 @@
 //! does not give them), and the idler's tensioner arm (mass 5 kg, 0.05 kg
 //! m²) is an assumption of this model; see [`TENSIONER_ARM`].
 //!
-//! [`system`] assembles it on a terrain with the contact of
-//! [`VehicleConfig::m113`], ready to simulate; [`speed_drive`] is a speed
-//! controller tuned for it.
+//! Everything that makes it run is declared with it: shoe, sprocket
+//! profile, contact laws and drive gains. [`system`] assembles it on a
+//! terrain, ready to simulate ([`M113::system`]; [`M113::config`] gives
+//! the run-time settings to change first, for [`M113::system_with`]);
+//! [`speed_drive`] is a speed controller tuned for it.
 
-use crate::closure::ClosureMethod;
-use crate::contact::sprocket::ToothProfile;
-use crate::contact::{ShoeGeometry, Terrain};
-use crate::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
+use crate::contact::Terrain;
+use crate::vehicle::Drive;
 
 /// Shoe pitch (pin to pin), m.
 pub const SHOE_PITCH: f64 = 0.154;
@@ -59,22 +59,15 @@ crate::model! {
     pub vehicle M113 {
         gravity: (0.0, -9.81),
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.006, 0.406) },
-        sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.245, teeth: 10 },
-        road_wheel rw1 { at: (-0.740, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
-            arm { pivot: (-0.740 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
-                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
-        road_wheel rw2 { at: (-1.407, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
-            arm { pivot: (-1.407 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
-                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
-        road_wheel rw3 { at: (-2.074, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
-            arm { pivot: (-2.074 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
-                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
-        road_wheel rw4 { at: (-2.740, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
-            arm { pivot: (-2.740 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
-                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
-        road_wheel rw5 { at: (-3.407, -0.215), mass: 35.56, inertia: 2.16, radius: 0.305,
-            arm { pivot: (-3.407 + 0.288, -0.215 + 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
-                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD } },
+        // Tip circle 0.2605 m, gap arcs of 0.089 m centred 0.3 m out.
+        sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.245,
+            teeth: 10, tip_radius: 0.2605, gap_radius: 0.089, gap_centre: 0.3 },
+        road_wheel rw[5] {
+            at: [(-0.740, -0.215), (-1.407, -0.215), (-2.074, -0.215), (-2.740, -0.215), (-3.407, -0.215)],
+            mass: 35.56, inertia: 2.16, radius: 0.305,
+            arm { pivot_offset: (0.288, 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD },
+        },
         idler idler { at: (-3.95, -0.12), mass: 25.76, inertia: 1.12, radius: 0.255,
             arm { pivot: (-3.95, -0.12 + TENSIONER_ARM), mass: 5.0, inertia: 0.05,
                   stiffness: 1.0e6 * TENSIONER_ARM * TENSIONER_ARM,
@@ -90,55 +83,48 @@ crate::model! {
             },
             closure: partitioned,
         },
+        // The single-pin shoe: 0.06 m high with the pin axis at
+        // mid-height, the ground face touching at two points 0.12 m apart,
+        // sprocket cylinders of 0.015 m at x = +0.0535 and -0.061 m.
+        shoe {
+            ground_points: [(-0.06, -0.03), (0.06, -0.03)],
+            inner_offset: 0.03,
+            pins: [(0.0535, 0.0), (-0.061, 0.0)],
+            pin_radius: 0.015,
+        },
+        // Hunt-Crossley with exponent 1 throughout (see
+        // `VehicleConfig::m113` for why these values).
+        contact {
+            ground { stiffness: 2e6, chi: 2.0, mu: 0.8, slip: 0.1 },
+            wheels { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
+            sprocket { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
+        },
+        // Half the vehicle's mass reflected through the 0.25 m sprocket
+        // is ~250 kg m²: a closed loop of about 12 rad/s, well damped.
+        drive { proportional: 3000.0, integral: 6000.0, max_torque: 2e4 },
     }
 }
 
 /// Number of track coordinates `q_i` (64 links + 2).
-pub const TRACK_DOF: usize = 66;
+pub const TRACK_DOF: usize = M113::TRACK_DOF;
 /// Number of chassis coordinates `q_i` (14 bodies + 2).
-pub const CHASSIS_DOF: usize = 16;
+pub const CHASSIS_DOF: usize = M113::CHASSIS_DOF;
 
-/// The M113 in motion.
-pub type M113System = VehicleSystem<M113Track, TRACK_DOF, M113Chassis, CHASSIS_DOF>;
-
-/// A PI speed drive tuned for the M113: proportional gain 3000 N m s/rad
-/// and integral gain 6000 N m/rad on the sprocket speed (half the
-/// vehicle's mass reflected through the 0.25 m sprocket is ~250 kg m²: a
-/// closed loop of about 12 rad/s, well damped), torque limited to 20 kN m.
-/// `target` is the forward speed wanted, m/s, against time, s.
+/// A PI speed drive tuned for the M113 ([`M113::speed_drive`]):
+/// proportional gain 3000 N m s/rad and integral gain 6000 N m/rad on the
+/// sprocket speed, torque limited to 20 kN m. `target` is the forward
+/// speed wanted, m/s, against time, s.
 pub fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive {
-    Drive::Speed {
-        target: Box::new(target),
-        proportional: 3000.0,
-        integral: 6000.0,
-        max_torque: 2e4,
-    }
+    M113::speed_drive(target)
 }
 
 /// The M113 assembled on `terrain` (chassis centroid at x = 0, shoes 1 mm
-/// above the ground), its loop closed by partitioning, with the contact of
-/// [`VehicleConfig::m113`] and `drive`: ready for
+/// above the ground), its loop closed by partitioning, with its declared
+/// contact ([`M113::config`]) and `drive`: ready for
 /// [`simulate`](crate::simulate::simulate).
 pub fn system(
     terrain: Terrain,
     drive: Drive,
 ) -> Result<M113System, Box<dyn std::error::Error + Send + Sync>> {
-    let assembled = assemble(
-        &M113Track,
-        &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
-        &terrain,
-        0.0,
-        0.001,
-    )?;
-    let config = VehicleConfig::m113(terrain, drive);
-    Ok(VehicleSystem::new(
-        M113Track,
-        M113Chassis,
-        assembled.track,
-        assembled.chassis,
-        ClosureMethod::Declared,
-        config,
-    )?)
+    Ok(M113::system(terrain, drive)?)
 }

@@ -5,7 +5,8 @@
 //! Three sources of input: declarations built from the grammar with random
 //! keys (valid and wrong), numbers (NaN, infinities, negatives, huge,
 //! suffixed, constant expressions), link counts (0 … 1100), selectors
-//! (empty, reversed, out of range, huge), arms and parts; such declarations
+//! (empty, reversed, out of range, huge), arms and parts (repeated ones
+//! too), shoes, contact pairs and drives; such declarations
 //! with tokens deleted, duplicated or replaced; and random token trees.
 //! The case counts keep the run to a few seconds.
 
@@ -115,6 +116,52 @@ fn point() -> impl Strategy<Value = String> {
         1 => (number(), number(), number()).prop_map(|(x, y, z)| format!("({x}, {y}, {z})")),
         1 => Just("()".to_string()),
     ]
+}
+
+/// Lists of points: mostly lists, sometimes empty, a point or a number.
+fn points() -> impl Strategy<Value = String> {
+    prop_oneof![
+        6 => prop::collection::vec(point(), 0..4).prop_map(|p| format!("[{}]", p.join(", "))),
+        1 => point(),
+        1 => Just("[1.0, 2.0]".to_string()),
+    ]
+}
+
+/// A `shoe`, `contact` or `drive` section, valid or not.
+fn running_section() -> impl Strategy<Value = String> {
+    let shoe = fields(vec![
+        ("ground_points", points().boxed()),
+        ("inner_offset", number().boxed()),
+        ("pins", points().boxed()),
+        ("pin_radius", number().boxed()),
+    ])
+    .prop_map(|f| format!("shoe {}", block(f, true)));
+    let pair = (
+        prop_oneof![
+            Just("ground"),
+            Just("wheels"),
+            Just("sprocket"),
+            Just("tyres")
+        ],
+        fields(vec![
+            ("stiffness", number().boxed()),
+            ("exponent", number().boxed()),
+            ("chi", number().boxed()),
+            ("damping", number().boxed()),
+            ("mu", number().boxed()),
+            ("slip", number().boxed()),
+        ]),
+    )
+        .prop_map(|(kind, f)| format!("{kind} {}", block(f, false)));
+    let contact = prop::collection::vec(pair, 0..4)
+        .prop_map(|pairs| format!("contact {}", block(pairs, true)));
+    let drive = fields(vec![
+        ("proportional", number().boxed()),
+        ("integral", number().boxed()),
+        ("max_torque", number().boxed()),
+    ])
+    .prop_map(|f| format!("drive {}", block(f, false)));
+    prop_oneof![shoe, contact, drive]
 }
 
 /// Integers for counts, link numbers, teeth: mostly small.
@@ -239,6 +286,7 @@ fn track_body() -> impl Strategy<Value = String> {
 fn arm() -> impl Strategy<Value = String> {
     let body = fields(vec![
         ("pivot", point().boxed()),
+        ("pivot_offset", point().boxed()),
         ("mass", number().boxed()),
         ("inertia", number().boxed()),
         ("stiffness", number().boxed()),
@@ -271,16 +319,28 @@ fn part() -> impl Strategy<Value = String> {
         ("inertia", number().boxed()),
         ("radius", number().boxed()),
         ("teeth", integer().boxed()),
+        ("tip_radius", number().boxed()),
+        ("gap_radius", number().boxed()),
+        ("gap_centre", number().boxed()),
     ]);
+    // `name[count]` with `at` a list.
+    let repeat = proptest::option::weighted(0.3, (integer(), points()));
     (
         kind,
         name,
-        body,
+        (body, repeat).prop_map(|(mut body, repeat)| match repeat {
+            Some((n, at)) => {
+                body.retain(|f| !f.starts_with("at:"));
+                body.push(format!("at: {at}"));
+                (format!("[{n}]"), body)
+            }
+            None => (String::new(), body),
+        }),
         prop::collection::vec(arm(), 0..3),
         // An arm whose pivot is the part's centre.
         proptest::option::weighted(0.1, Just(())),
     )
-        .prop_map(|(kind, name, mut body, arms, centred)| {
+        .prop_map(|(kind, name, (count, mut body), arms, centred)| {
             if centred.is_some() {
                 body.retain(|f| !f.starts_with("at:"));
                 body.push("at: (-1.0, -0.2)".to_string());
@@ -290,7 +350,7 @@ fn part() -> impl Strategy<Value = String> {
                 );
             }
             body.extend(arms);
-            format!("{kind} {name} {}", block(body, false))
+            format!("{kind} {name}{count} {}", block(body, false))
         })
 }
 
@@ -309,14 +369,16 @@ fn vehicle_body() -> impl Strategy<Value = String> {
         prop::collection::vec(part(), 0..5),
         proptest::option::weighted(0.85, track_body().prop_map(|t| format!("track {t}"))),
         proptest::option::weighted(0.05, Just("track { links: 3 }".to_string())),
+        prop::collection::vec(running_section(), 0..4),
     )
-        .prop_map(|(gravity, chassis, parts, track, extra)| {
+        .prop_map(|(gravity, chassis, parts, track, extra, running)| {
             let entries: Vec<String> = gravity
                 .into_iter()
                 .chain(chassis)
                 .chain(parts)
                 .chain(track)
                 .chain(extra)
+                .chain(running)
                 .collect();
             block(entries, true)
         })
@@ -451,9 +513,11 @@ fn tame_vehicle() -> impl Strategy<Value = String> {
         proptest::option::weighted(0.8, (3u32..40, tame_number())),
         (0usize..4).prop_flat_map(|k| (0..k).map(tame_part).collect::<Vec<_>>()),
         tame_track(),
+        proptest::option::weighted(0.6, tame_running()),
     )
-        .prop_map(|((m, j), sprocket, parts, track)| {
+        .prop_map(|((m, j), sprocket, parts, track, running)| {
             let mut entries = vec![format!("chassis {{ mass: {m}, inertia: {j}, centroid: (-1.0, 0.4) }}")];
+            let has_sprocket = sprocket.is_some();
             if let Some((teeth, r)) = sprocket {
                 entries.push(format!(
                     "sprocket drive {{ at: (0.0, 0.0), mass: 27.0, inertia: 0.9, radius: {r}, teeth: {teeth} }}"
@@ -461,7 +525,50 @@ fn tame_vehicle() -> impl Strategy<Value = String> {
             }
             entries.extend(parts);
             entries.push(format!("track {track}"));
+            // What makes it run needs a sprocket to drive.
+            if let Some(running) = running.filter(|_| has_sprocket) {
+                entries.push(running);
+            }
             block(entries, false)
+        })
+}
+
+/// A repeated, sprung road-wheel block, a shoe, contact pairs (either
+/// law) and drive gains, all in range.
+fn tame_running() -> impl Strategy<Value = String> {
+    (
+        1usize..4,
+        (tame_number(), tame_number(), tame_number()),
+        (0.01f64..0.05, tame_number()),
+        prop::collection::vec((any::<bool>(), tame_number(), tame_number()), 0..3),
+        proptest::option::of((tame_number(), tame_number(), tame_number())),
+    )
+        .prop_map(|(n, (m, j, r), (offset, pin), laws, drive)| {
+            let at: Vec<String> = (0..n).map(|i| format!("({:?}, -0.3)", -0.5 * (i + 1) as f64)).collect();
+            let mut entries = vec![
+                format!(
+                    "road_wheel w[{n}] {{ at: [{}], mass: {m}, inertia: {j}, radius: {r}, \
+                     arm {{ pivot_offset: (0.2, 0.1), mass: {m}, inertia: {j}, stiffness: {r}, damping: 1.0 }} }}",
+                    at.join(", ")
+                ),
+                format!(
+                    "shoe {{ ground_points: [(-0.05, -{offset:?}), (0.05, -{offset:?})], inner_offset: {offset:?}, \
+                     pins: [(0.0, 0.0)], pin_radius: {pin} }}"
+                ),
+            ];
+            let pairs: Vec<String> = laws
+                .into_iter()
+                .zip(["ground", "wheels", "sprocket"])
+                .map(|((hunt, k, c), pair)| {
+                    let law = if hunt { format!("chi: {c}, exponent: 1.5") } else { format!("damping: {c}") };
+                    format!("{pair} {{ stiffness: {k}, {law}, mu: 0.5, slip: {c} }}")
+                })
+                .collect();
+            entries.push(format!("contact {}", block(pairs, true)));
+            if let Some((p, i, t)) = drive {
+                entries.push(format!("drive {{ proportional: {p}, integral: {i}, max_torque: {t} }}"));
+            }
+            entries.join(", ")
         })
 }
 
@@ -518,6 +625,16 @@ const IDENTS: &[&str] = &[
     "teeth",
     "by",
     "centroid",
+    "shoe",
+    "ground_points",
+    "inner_offset",
+    "pins",
+    "pin_radius",
+    "contact",
+    "chi",
+    "mu",
+    "pivot_offset",
+    "tip_radius",
     "Chain",
     "Tank",
     "drive",

@@ -29,7 +29,7 @@ pub struct Item {
 
 pub enum ItemKind {
     Track(Track),
-    Vehicle(Vehicle),
+    Vehicle(Box<Vehicle>),
 }
 
 /// A chain of links, possibly closed (spec §1, §2).
@@ -63,6 +63,55 @@ pub struct Vehicle {
     pub chassis_inertia: Num,
     pub parts: Vec<Part>,
     pub track: Track,
+    /// What makes the vehicle run; `None` without a `shoe` section (the
+    /// dynamics only).
+    pub running: Option<Running>,
+}
+
+/// The declared contact and drive of a vehicle: what `Name::config`
+/// returns. Nothing here enters the mass matrix.
+pub struct Running {
+    pub shoe: Shoe,
+    /// The sprocket's declared profile; `None` fields take the scaled
+    /// default (`ToothProfile::scaled`).
+    pub tip_radius: Option<Num>,
+    pub gap_radius: Option<Num>,
+    pub gap_centre: Option<Num>,
+    /// `ground`, `wheels`, `sprocket`.
+    pub contact: [ContactPair; 3],
+    /// Speed drive gains, N m s/rad and N m/rad, and torque limit, N m.
+    pub proportional: Num,
+    pub integral: Num,
+    pub max_torque: Num,
+}
+
+/// A shoe's contact features, link frame, m.
+pub struct Shoe {
+    pub ground_points: Vec<Vec2>,
+    /// Distance from the pitch line to the inner running face.
+    pub inner_offset: Num,
+    pub pins: Vec<Vec2>,
+    pub pin_radius: Num,
+}
+
+/// A declared contact pair: a normal law replacing the default, and
+/// friction fields replacing the default's.
+#[derive(Default)]
+pub struct ContactPair {
+    pub normal: Option<NormalLaw>,
+    pub mu: Option<Num>,
+    pub slip: Option<Num>,
+}
+
+pub enum NormalLaw {
+    /// N/mⁿ, n, s/m.
+    HuntCrossley {
+        stiffness: Num,
+        exponent: Num,
+        chi: Num,
+    },
+    /// N/m, N s/m.
+    KelvinVoigt { stiffness: Num, damping: Num },
 }
 
 #[derive(Clone, Copy, PartialEq, Eq)]

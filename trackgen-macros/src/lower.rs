@@ -10,19 +10,15 @@ use quote::{ToTokens, quote, quote_spanned};
 use syn::spanned::Spanned;
 use syn::{BinOp, Expr, Ident, Lit, LitInt, Member, UnOp};
 
-use crate::ir::{
-    Arm, Closure, ConstCheck, Item, ItemKind, Link, Model, Part, PartKind, Track, Vehicle,
-};
+mod vehicle;
+
+use crate::ir::{Closure, ConstCheck, Item, ItemKind, Link, Model, Track};
 use crate::num::{ConstPool, Num, Vec2};
 use crate::parse::{Block, Entry, IndexRange, Input, ItemAst, Selector};
 
 /// The most links a track may have: beyond this the unrolled code stops
 /// being a good trade (see README, compile times).
 pub const MAX_LINKS: usize = 1024;
-
-/// The shortest arm, m: a pivot closer than this to its part's centre is
-/// taken as a zero-length arm (the arm's angle would not move the part).
-const MIN_ARM_LENGTH: f64 = 1e-9;
 
 #[derive(Clone, Copy, PartialEq, Eq)]
 enum Bound {
@@ -85,7 +81,7 @@ fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
     let kind = if ast.kind == "track" {
         ItemKind::Track(cx.track(&ast.body, true))
     } else {
-        ItemKind::Vehicle(cx.vehicle(&ast.body, &ast.name))
+        ItemKind::Vehicle(Box::new(cx.vehicle(&ast.body, &ast.name)))
     };
     Item {
         attrs: ast.attrs,
@@ -406,6 +402,7 @@ impl Cx<'_> {
                 selector,
                 name,
                 body,
+                ..
             } = entry
             else {
                 continue;
@@ -612,317 +609,6 @@ impl Cx<'_> {
         // `base10_digits` is the literal's value in decimal digits (no sign,
         // no underscores, hex converted): parsing fails only on overflow.
         Ok(lit.base10_digits().parse::<T>().ok())
-    }
-
-    fn vehicle(&mut self, block: &Block, name: &Ident) -> Vehicle {
-        let fields = self.fields("vehicle", block, &["gravity"]);
-        let gravity = self.gravity(&fields);
-        let mut kinds = vec!["chassis", "track"];
-        kinds.extend(["sprocket", "idler", "road_wheel", "roller"]);
-        let sections = self.sections("vehicle", block, &kinds);
-        let mut chassis = None;
-        let mut track = None;
-        let mut parts = Vec::new();
-        let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
-        let mut sprocket: Option<&Ident> = None;
-        let vehicle_name = name;
-        for entry in sections {
-            let Entry::Section {
-                kind,
-                selector,
-                name,
-                body,
-            } = entry
-            else {
-                continue;
-            };
-            if let Some(sel) = selector {
-                self.errors
-                    .at(sel.span, format!("`{kind}` takes no link selector"));
-            }
-            let k = kind.to_string();
-            match k.as_str() {
-                "chassis" | "track" => {
-                    if let Some(name) = name {
-                        self.errors.at(name.span(), format!("`{k}` takes no name"));
-                    }
-                    let slot_taken = if k == "chassis" {
-                        chassis.is_some()
-                    } else {
-                        track.is_some()
-                    };
-                    if slot_taken {
-                        self.errors
-                            .at(kind.span(), format!("duplicate `{k}` section"));
-                        continue;
-                    }
-                    if k == "chassis" {
-                        chassis = Some(self.chassis(body));
-                    } else {
-                        track = Some(self.track(body, false));
-                    }
-                }
-                _ => {
-                    let kind_ir = PartKind::from_keyword(&k).expect("filtered by sections()");
-                    let Some(name) = name else {
-                        self.errors.at(
-                            kind.span(),
-                            format!("`{k}` needs a name, e.g. `{k} front {{ … }}`"),
-                        );
-                        continue;
-                    };
-                    // Part names become body-index constants (`RW1`) and
-                    // local names beside the frame's (`chassis`).
-                    let upper = name.to_string().to_uppercase();
-                    if upper == "FRAME" || upper == "CHASSIS" {
-                        self.errors.at(name.span(), format!("`{name}` is reserved for the chassis frame; choose another part name"));
-                    } else if part_names.insert(upper, name.clone()).is_some() {
-                        self.errors
-                            .at(name.span(), format!("duplicate part name `{name}`"));
-                    }
-                    if kind_ir == PartKind::Sprocket {
-                        match sprocket {
-                            // The runtime drives and meshes one sprocket.
-                            Some(first) => self.errors.at(
-                                kind.span(),
-                                format!(
-                                    "one sprocket per vehicle: `{first}` is its sprocket; \
-                                     declare `{name}` as an `idler`"
-                                ),
-                            ),
-                            None => sprocket = Some(name),
-                        }
-                    }
-                    if let Some(part) = self.part(kind_ir, name, body) {
-                        parts.push(part);
-                    }
-                }
-            }
-        }
-        if chassis.is_none() {
-            self.errors.at(
-                vehicle_name.span(),
-                format!(
-                    "vehicle `{vehicle_name}` has no `chassis {{ mass: …, inertia: … }}` section"
-                ),
-            );
-        }
-        if track.is_none() {
-            self.errors.at(
-                vehicle_name.span(),
-                format!("vehicle `{vehicle_name}` has no `track {{ … }}` section"),
-            );
-        }
-        let (chassis_mass, chassis_inertia, centroid) =
-            chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
-        for part in &mut parts {
-            part.at = part.at.clone() - centroid.clone();
-            if let Some(arm) = &mut part.arm {
-                arm.pivot = arm.pivot.clone() - centroid.clone();
-            }
-        }
-        let mut track = track.unwrap_or(Track {
-            links: Vec::new(),
-            closure: Closure::Open,
-            gravity: Vec2::zero(),
-        });
-        track.gravity = gravity.clone();
-        Vehicle {
-            gravity,
-            chassis_mass,
-            chassis_inertia,
-            parts,
-            track,
-        }
-    }
-
-    fn chassis(&mut self, block: &Block) -> (Num, Num, Vec2) {
-        let fields = self.fields("chassis", block, &["mass", "inertia", "centroid"]);
-        self.sections("chassis", block, &[]);
-        let mass = self.positive(&fields, "mass", true).unwrap_or(Num::ZERO);
-        let inertia = self.positive(&fields, "inertia", true).unwrap_or(Num::ZERO);
-        let centroid = self
-            .point(&fields, "centroid", false)
-            .unwrap_or(Vec2::zero());
-        (mass, inertia, centroid)
-    }
-
-    fn part(&mut self, kind: PartKind, name: &Ident, block: &Block) -> Option<Part> {
-        let what = kind.keyword();
-        let mut keys = vec!["at", "mass", "inertia", "radius"];
-        if kind == PartKind::Sprocket {
-            keys.push("teeth");
-        }
-        let fields = self.fields(what, block, &keys);
-        let arms: &[&str] = match kind {
-            PartKind::RoadWheel | PartKind::Idler => &["arm"],
-            PartKind::Sprocket | PartKind::Roller => {
-                // Say why, rather than that the section is unknown.
-                for entry in &block.entries {
-                    if let Entry::Section { kind: keyword, .. } = entry
-                        && keyword == "arm"
-                    {
-                        self.errors.at(
-                            keyword.span(),
-                            format!("a {what} takes no `arm`: only road wheels and idlers hang from arms"),
-                        );
-                    }
-                }
-                &[]
-            }
-        };
-        let mut arm = None;
-        let sections = if arms.is_empty() {
-            Vec::new()
-        } else {
-            self.sections(what, block, arms)
-        };
-        if arms.is_empty() {
-            // Other sections are still unexpected.
-            for entry in &block.entries {
-                if let Entry::Section { kind: keyword, .. } = entry
-                    && keyword != "arm"
-                {
-                    self.errors.at(
-                        keyword.span(),
-                        format!("unexpected section `{keyword}` in {what}"),
-                    );
-                }
-            }
-        }
-        for section in sections {
-            let Entry::Section {
-                kind: keyword,
-                body,
-                ..
-            } = section
-            else {
-                continue;
-            };
-            if arm.is_some() {
-                self.errors
-                    .at(keyword.span(), format!("duplicate `arm` in {what}"));
-                continue;
-            }
-            arm = Some(self.arm(body));
-        }
-        let at = self.point(&fields, "at", true);
-        if let (Some(Some((arm, pivot_span))), Some(at)) = (&arm, &at) {
-            self.check_arm_length(arm, *pivot_span, at, what);
-        }
-        let mass = self.positive(&fields, "mass", true);
-        let inertia = self.positive(&fields, "inertia", true);
-        let radius = self.positive(&fields, "radius", true);
-        let teeth = if kind == PartKind::Sprocket {
-            self.teeth(&fields)
-        } else {
-            Some(0)
-        };
-        Some(Part {
-            name: name.clone(),
-            kind,
-            at: at?,
-            mass: mass?,
-            inertia: inertia?,
-            radius: radius?,
-            teeth: teeth?,
-            arm: match arm {
-                Some(a) => Some(a?.0),
-                None => None,
-            },
-        })
-    }
-
-    /// An arm carries its part at a distance: a pivot at the part's centre
-    /// would make the arm's angle move nothing but the arm.
-    fn check_arm_length(&mut self, arm: &Arm, pivot_span: Span, at: &Vec2, what: &str) {
-        let what = what.replace('_', " ");
-        let message = format!(
-            "zero-length arm: its `pivot` is at the {what}'s centre `at`; \
-             pivot and centre must be at least {MIN_ARM_LENGTH:e} m apart"
-        );
-        let d = arm.pivot.clone() - at.clone();
-        match (d.x.known(), d.y.known()) {
-            (Some(x), Some(y)) => {
-                if x.hypot(y) < MIN_ARM_LENGTH {
-                    self.errors.at(pivot_span, message);
-                }
-            }
-            _ => {
-                let squared = d.norm_squared();
-                let min = MIN_ARM_LENGTH * MIN_ARM_LENGTH;
-                self.checks.push(ConstCheck {
-                    span: pivot_span,
-                    condition: quote!((#squared) >= #min),
-                    message,
-                });
-            }
-        }
-    }
-
-    /// `arm { pivot, mass, inertia, stiffness, damping, preload }`, and the
-    /// span of its pivot.
-    fn arm(&mut self, block: &Block) -> Option<(Arm, Span)> {
-        let keys = [
-            "pivot",
-            "mass",
-            "inertia",
-            "stiffness",
-            "damping",
-            "preload",
-        ];
-        let fields = self.fields("arm", block, &keys);
-        self.sections("arm", block, &[]);
-        let pivot = self.point(&fields, "pivot", true);
-        let mass = self.positive(&fields, "mass", true);
-        let inertia = self.positive(&fields, "inertia", true);
-        let stiffness = self.non_negative(&fields, "stiffness");
-        let damping = self.non_negative(&fields, "damping");
-        let preload = self.number(&fields, "preload", false).unwrap_or(Num::ZERO);
-        let arm = Arm {
-            pivot: pivot?,
-            mass: mass?,
-            inertia: inertia?,
-            stiffness: stiffness?,
-            damping: damping?,
-            preload,
-        };
-        Some((arm, fields.map["pivot"].span()))
-    }
-
-    fn teeth(&mut self, fields: &Fields) -> Option<u32> {
-        let Some(expr) = fields.map.get("teeth") else {
-            self.missing(fields, "teeth");
-            return None;
-        };
-        match strip(expr) {
-            Expr::Lit(syn::ExprLit {
-                lit: Lit::Int(lit), ..
-            }) => match self.integer::<u32>(lit, "u32").ok()? {
-                Some(t) if t >= 3 => Some(t),
-                Some(_) => {
-                    self.errors
-                        .at(lit.span(), "a sprocket needs at least 3 teeth");
-                    None
-                }
-                None => {
-                    self.errors.at(
-                        lit.span(),
-                        format!(
-                            "`teeth` is a `u32`: at most {}, found {}",
-                            u32::MAX,
-                            lit.base10_digits()
-                        ),
-                    );
-                    None
-                }
-            },
-            other => {
-                self.errors
-                    .spanned(other, "`teeth` must be an integer literal");
-                None
-            }
-        }
     }
 }
 

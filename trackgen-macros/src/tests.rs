@@ -94,3 +94,28 @@ fn errors_expand_to_compile_errors_and_stubs() {
     });
     insta::assert_snapshot!(out.to_string());
 }
+
+#[test]
+fn runnable_vehicle_with_repeated_wheels() {
+    insta::assert_snapshot!(pretty(expand(quote! {
+        /// Two road wheels from one block, a shoe, a partly declared
+        /// profile, one contact pair and the drive gains.
+        pub vehicle Runner {
+            chassis { mass: 1000.0, inertia: 500.0, centroid: (-1.0, 0.3) },
+            sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 0.5, radius: 0.2, teeth: 9,
+                tip_radius: TIP },
+            road_wheel rw[2] { at: [(-0.5, -0.2), (-1.0, -0.2)], mass: 30.0, inertia: 1.5, radius: 0.25,
+                arm { pivot_offset: (0.25, 0.1), mass: 40.0, inertia: 0.5,
+                      stiffness: 2e4, damping: 400.0 } },
+            idler rear { at: (-1.6, 0.0), mass: 20.0, inertia: 1.0, radius: 0.2 },
+            track {
+                links: 3,
+                link { mass: 10.0, inertia: 0.02, u1: (-0.06, 0.0), u2: (0.06, 0.0) },
+            },
+            shoe { ground_points: [(-0.05, -0.025), (0.05, -0.025)], inner_offset: 0.025,
+                   pins: [(0.0, 0.0)], pin_radius: 0.012 },
+            contact { ground { stiffness: 1e6, chi: 1.0, mu: 0.7 }, sprocket { stiffness: 5e6, damping: 1e3 } },
+            drive { max_torque: 5e3 },
+        }
+    })));
+}

@@ -32,6 +32,12 @@ pub fn vehicle(item: &Item, vehicle: &Vehicle) -> TokenStream {
         &vehicle.track,
     );
     let chassis = chassis_type(vis, name, &chassis_name, vehicle);
+    let arms = vehicle.parts.iter().filter(|p| p.arm.is_some()).count();
+    let dofs = (
+        vehicle.track.links.len() + 2,
+        1 + vehicle.parts.len() + arms + 2,
+    );
+    let running = super::running::running(vis, name, &track_name, &chassis_name, vehicle, dofs);
     quote! {
         #(#attrs)*
         #docs
@@ -47,6 +53,7 @@ pub fn vehicle(item: &Item, vehicle: &Vehicle) -> TokenStream {
 
         #track
         #chassis
+        #running
     }
 }
 

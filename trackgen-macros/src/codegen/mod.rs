@@ -8,6 +8,7 @@ mod chassis;
 mod flat;
 mod lin;
 mod recursive;
+mod running;
 mod stub;
 mod track;
 mod tree;

@@ -7,7 +7,8 @@
 //! item     := attr* vis ("track" | "vehicle") Ident block
 //! block    := "{" (entry ","?)* "}"
 //! entry    := Ident ":" Expr                        // a field
-//!           | Ident selector? Ident? block          // a section
+//!           | Ident selector? Ident? count? block    // a section
+//! count    := "[" Int "]"                           // repeated parts
 //! selector := "[" range ("," range)* "]"
 //! range    := Int (("..=" | "..") Int ("by" Int)?)?
 //! ```
@@ -45,11 +46,13 @@ pub struct Block {
 pub enum Entry {
     /// `key: value`.
     Field { key: Ident, value: Expr },
-    /// `kind[selector] name { … }`.
+    /// `kind[selector] name[count] { … }`.
     Section {
         kind: Ident,
         selector: Option<Selector>,
         name: Option<Ident>,
+        /// `[n]` after the name: `n` parts declared by one block.
+        count: Option<LitInt>,
         body: Block,
     },
 }
@@ -143,6 +146,17 @@ impl Parse for Entry {
         } else {
             None
         };
+        let count = if name.is_some() && input.peek(syn::token::Bracket) {
+            let content;
+            bracketed!(content in input);
+            let count: LitInt = content.parse()?;
+            if !content.is_empty() {
+                return Err(content.error("expected one count of parts, e.g. `rw[5]`"));
+            }
+            Some(count)
+        } else {
+            None
+        };
         if !input.peek(syn::token::Brace) {
             return Err(input.error(format!("expected `:` or `{{ … }}` after `{head}`")));
         }
@@ -150,6 +164,7 @@ impl Parse for Entry {
             kind: head,
             selector,
             name,
+            count,
             body: input.parse()?,
         })
     }

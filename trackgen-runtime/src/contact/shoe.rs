@@ -26,7 +26,10 @@ impl ShoeGeometry {
     /// height 0.06 m with the pin axis at mid-height (so the faces are
     /// 0.03 m either side of the pitch line), sprocket cylinders of radius
     /// 0.015 m at x = +0.0535 and −0.061 m. The ground face touches at two
-    /// points 0.12 m apart.
+    /// points 0.12 m apart. The same figures as the `shoe` of the M113's
+    /// declaration (`trackgen::vehicles::m113`, `M113::shoe()`), which is
+    /// their home; this copy serves runtime-level tests, and
+    /// `tests/vehicle_declaration.rs` holds the two equal.
     pub fn m113() -> ShoeGeometry {
         ShoeGeometry {
             ground_points: vec![Vector2::new(-0.06, -0.03), Vector2::new(0.06, -0.03)],

@@ -31,13 +31,34 @@ pub struct ToothProfile {
 
 impl ToothProfile {
     /// The M113 sprocket (`shared/spec/m113.md`): 10 teeth, addendum
-    /// 0.2605 m, arcs of 0.089 m centred 0.3 m out.
+    /// 0.2605 m, arcs of 0.089 m centred 0.3 m out. The same figures as
+    /// the sprocket of the M113's declaration (`M113::tooth_profile()`),
+    /// their home; `tests/vehicle_declaration.rs` holds the two equal.
     pub fn m113() -> ToothProfile {
         ToothProfile {
             teeth: 10,
             addendum: 0.2605,
             arc_centre_radius: 0.3,
             arc_radius: 0.089,
+        }
+    }
+
+    /// A profile of `teeth` teeth for shoes of `pitch` (m, pin to pin) in
+    /// the M113's proportions: with `R = p / (2 sin(π/teeth))` the pitch
+    /// radius, the tip circle at `R + 0.073 p`, gap arcs centred
+    /// `R + 0.33 p` out, each of radius 0.48 of the chord between
+    /// neighbouring arc centres (so neighbouring gaps never meet). For the
+    /// M113 (`p` = 0.154 m, 10 teeth) this gives 0.2605, 0.300 and
+    /// 0.089 m, its figures.
+    pub fn scaled(teeth: u32, pitch: f64) -> ToothProfile {
+        let half_angle = std::f64::consts::PI / teeth as f64;
+        let pitch_radius = pitch / (2.0 * half_angle.sin());
+        let arc_centre_radius = pitch_radius + 0.33 * pitch;
+        ToothProfile {
+            teeth,
+            addendum: pitch_radius + 0.073 * pitch,
+            arc_centre_radius,
+            arc_radius: 0.48 * 2.0 * arc_centre_radius * half_angle.sin(),
         }
     }
 

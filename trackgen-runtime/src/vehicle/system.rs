@@ -7,12 +7,15 @@ use crate::contact::sprocket::{SprocketContact, ToothProfile};
 use crate::contact::wheel::WheelContact;
 use crate::contact::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
 use crate::integrate::OdeSystem;
-use crate::model::{BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
+use crate::model::{ArmSpring, BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
 use crate::simulate::{Simulated, SimulationError, Switch, TrackSystem, TreeSystem};
-use crate::suspension::{add_arm_torques, arm_dissipation, arm_energy};
+use crate::suspension::{add_arm_torques_of, arm_dissipation_of, arm_energy_of, declared_arms};
 
 /// How a vehicle meets the world: shoe geometry, the three contact pairs,
-/// and the drive.
+/// the arms' springs and the drive. Nothing here enters the mass matrix:
+/// every field can be changed at run time, between runs, without
+/// recompiling (a vehicle declared with `model!` gives its declared values
+/// from `Name::config`).
 #[derive(Debug)]
 pub struct VehicleConfig {
     /// The shoes' contact features.
@@ -28,12 +31,74 @@ pub struct VehicleConfig {
     /// The link (numbered from 1) whose joint to the next is recorded as
     /// `tension`.
     pub tension_link: usize,
+    /// The arms' torsion springs and dampers, one per arm of the chassis
+    /// (any order), replacing the rates compiled into the chassis model;
+    /// `None` runs with the compiled ones ([`ChassisModel::PARTS`]).
+    pub arms: Option<Vec<ArmSpring>>,
 }
 
 impl VehicleConfig {
+    /// The default normal law of shoes on the ground: Hunt-Crossley,
+    /// `k` = 2e6 N/m per shoe point, exponent 1, `χ` = 2 s/m (see
+    /// [`m113`](Self::m113) for why).
+    pub const GROUND_LAW: NormalLaw = NormalLaw::HuntCrossley {
+        stiffness: 2e6,
+        exponent: 1.0,
+        chi: 2.0,
+    };
+    /// The default friction of shoes on the ground: μ = 0.8 over 0.1 m/s
+    /// of slip.
+    pub const GROUND_FRICTION: Friction = Friction { mu: 0.8, slip: 0.1 };
+    /// The default normal law of the track on wheel rims and sprocket
+    /// teeth: Hunt-Crossley, `k` = 1e7 N/m, exponent 1, `χ` = 0.5 s/m.
+    pub const RIM_LAW: NormalLaw = NormalLaw::HuntCrossley {
+        stiffness: 1e7,
+        exponent: 1.0,
+        chi: 0.5,
+    };
+    /// The default friction of the track on rims and teeth: μ = 0.4 over
+    /// 0.5 m/s of slip.
+    pub const RIM_FRICTION: Friction = Friction { mu: 0.4, slip: 0.5 };
+
+    /// A vehicle with these shoes and sprocket teeth on `terrain`, driven
+    /// by `drive`, with the default contact laws ([`GROUND_LAW`](Self::GROUND_LAW),
+    /// [`GROUND_FRICTION`](Self::GROUND_FRICTION), [`RIM_LAW`](Self::RIM_LAW)
+    /// and [`RIM_FRICTION`](Self::RIM_FRICTION) on wheels and sprocket),
+    /// tension recorded at link 1 and the arms' compiled springs.
+    pub fn new(
+        shoe: ShoeGeometry,
+        profile: ToothProfile,
+        terrain: Terrain,
+        drive: Drive,
+    ) -> VehicleConfig {
+        VehicleConfig {
+            shoe,
+            ground: GroundContact {
+                terrain,
+                normal: Self::GROUND_LAW,
+                friction: Self::GROUND_FRICTION,
+            },
+            wheels: WheelContact {
+                normal: Self::RIM_LAW,
+                friction: Self::RIM_FRICTION,
+            },
+            sprocket: SprocketContact {
+                profile,
+                normal: Self::RIM_LAW,
+                friction: Self::RIM_FRICTION,
+            },
+            drive,
+            tension_link: 1,
+            arms: None,
+        }
+    }
+
     /// The M113's contact (shoes and sprocket of `shared/spec/m113.md`,
     /// friction 0.8 on the ground and 0.4 on wheels and sprocket) on
-    /// `terrain`, driven by `drive`.
+    /// `terrain`, driven by `drive`: [`new`](Self::new) with
+    /// [`ShoeGeometry::m113`] and [`ToothProfile::m113`]. The vehicle
+    /// declared in `trackgen::vehicles::m113` gives the same from its
+    /// declaration (`M113::config`).
     ///
     /// Normal laws are Hunt-Crossley with exponent 1 (`F = k δ (1 + χ δ̇)`:
     /// no force jump when a contact opens or closes, which would make an
@@ -50,38 +115,43 @@ impl VehicleConfig {
     /// step grows 1.75× from 0.2 to 0.5 m/s; without rim friction at all,
     /// 2×).
     pub fn m113(terrain: Terrain, drive: Drive) -> VehicleConfig {
-        VehicleConfig {
-            shoe: ShoeGeometry::m113(),
-            ground: GroundContact {
-                terrain,
-                normal: NormalLaw::HuntCrossley {
-                    stiffness: 2e6,
-                    exponent: 1.0,
-                    chi: 2.0,
-                },
-                friction: Friction { mu: 0.8, slip: 0.1 },
-            },
-            wheels: WheelContact {
-                normal: NormalLaw::HuntCrossley {
-                    stiffness: 1e7,
-                    exponent: 1.0,
-                    chi: 0.5,
-                },
-                friction: Friction { mu: 0.4, slip: 0.5 },
-            },
-            sprocket: SprocketContact {
-                profile: ToothProfile::m113(),
-                normal: NormalLaw::HuntCrossley {
-                    stiffness: 1e7,
-                    exponent: 1.0,
-                    chi: 0.5,
-                },
-                friction: Friction { mu: 0.4, slip: 0.5 },
-            },
-            drive,
-            tension_link: 1,
+        Self::new(ShoeGeometry::m113(), ToothProfile::m113(), terrain, drive)
+    }
+}
+
+/// The arms' springs a vehicle runs with: `arms` if given, checked to be
+/// one per arm of `C` with finite rates, stiffness and damping zero or
+/// more; otherwise the compiled ones.
+fn checked_arms<C: ChassisModel<DC>, const DC: usize>(
+    arms: Option<&[ArmSpring]>,
+) -> Result<Vec<ArmSpring>, SimulationError> {
+    let declared: Vec<ArmSpring> = declared_arms::<C, DC>().copied().collect();
+    let Some(arms) = arms else {
+        return Ok(declared);
+    };
+    let mut bodies: Vec<usize> = arms.iter().map(|a| a.body).collect();
+    let mut expected: Vec<usize> = declared.iter().map(|a| a.body).collect();
+    bodies.sort_unstable();
+    expected.sort_unstable();
+    if bodies != expected {
+        return Err(SimulationError::Setup(format!(
+            "the configured arms act on bodies {bodies:?}; the chassis has arms at bodies {expected:?}"
+        )));
+    }
+    for arm in arms {
+        let rates_ok = arm.stiffness >= 0.0 && arm.damping >= 0.0;
+        let finite = [arm.stiffness, arm.damping, arm.preload]
+            .iter()
+            .all(|v| v.is_finite());
+        if !(rates_ok && finite) {
+            return Err(SimulationError::Setup(format!(
+                "the arm at body {} needs finite stiffness and damping of zero or more and a finite preload, \
+                 got stiffness {}, damping {}, preload {}",
+                arm.body, arm.stiffness, arm.damping, arm.preload
+            )));
         }
     }
+    Ok(arms.to_vec())
 }
 
 /// The quantities a vehicle records after its track's and chassis' own.
@@ -144,6 +214,8 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     /// Index of the sprocket in `C::PARTS`.
     sprocket: Option<usize>,
     sprocket_radius: f64,
+    /// The arms' springs in force: the configuration's, or the compiled.
+    arms: Vec<ArmSpring>,
     track_loads: Vec<BodyLoad>,
     chassis_loads: Vec<BodyLoad>,
     /// `ū2` of every link: the joint to the next.
@@ -163,7 +235,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
     /// A [`SimulationError::Setup`] for a configuration that makes no
     /// vehicle: a terrain that fails [`Terrain::check`], a drive that
     /// fails [`Drive::check`], a tension link that is not a link, a
-    /// sprocket of fewer than 3 teeth. A target speed or torque schedule
+    /// sprocket of fewer than 3 teeth, configured [`arms`](VehicleConfig::arms)
+    /// that are not one per arm of the chassis or have rates that are
+    /// negative or not finite. A target speed or torque schedule
     /// that turns NaN or infinite stops the run when the drive meets it
     /// ([`Drive::checked_torque`]).
     pub fn new(
@@ -193,6 +267,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 config.sprocket.profile.teeth
             )));
         }
+        let arms = checked_arms::<C, DC>(config.arms.as_deref())?;
         let track = TrackSystem::new(track, q_track, SVector::zeros(), closure)?;
         let chassis = TreeSystem::chassis(chassis, q_chassis, SVector::zeros());
         let sprocket = C::PARTS.iter().position(|p| p.kind == PartKind::Sprocket);
@@ -223,6 +298,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             config,
             sprocket,
             sprocket_radius,
+            arms,
             track_loads: vec![BodyLoad::ZERO; T::BODIES],
             chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
             forward_joints,
@@ -331,8 +407,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 );
             }
         }
-        add_arm_torques::<C, DC>(qc, qdc, &mut self.chassis_loads);
-        s.dissipation += arm_dissipation::<C, DC>(qdc);
+        add_arm_torques_of(&self.arms, qc, qdc, &mut self.chassis_loads);
+        s.dissipation += arm_dissipation_of(&self.arms, qdc);
         if let Some(i) = self.sprocket {
             let body = C::PARTS[i].body;
             let omega = qdc[2 + body] - qdc[2];
@@ -482,7 +558,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             + self.track.model().potential_energy(&qt)
             + self.chassis.model().kinetic_energy(&qc, &qdc)
             + self.chassis.model().potential_energy(&qc)
-            + arm_energy::<C, DC>(&qc)
+            + arm_energy_of(&self.arms, &qc)
             + s.potential
             + self.track.closure_energy(&qt, &qdt).0;
         row.extend([

@@ -1,0 +1,189 @@
+//! The declaration is the whole vehicle: what `model!` generates from the
+//! M113's running keys (shoe, profile, contact, drive), and the run-time
+//! overrides of `VehicleConfig`, each a number that could fail.
+//!
+//! Tolerances, and why:
+//! - **Declared = runtime M113 figures**: exact. The declaration and
+//!   `ShoeGeometry::m113`, `ToothProfile::m113`, `VehicleConfig::m113`
+//!   spell the same literals; any difference is a transcription error.
+//! - **Scaled profile** (`ToothProfile::scaled(10, 0.154)` against the
+//!   M113's 0.2605, 0.3 and 0.089 m): 2e-4 m. Its proportions are rounded
+//!   to two figures (0.073, 0.33 and 0.48), which at the M113's pitch
+//!   moves each radius by at most 0.005 × 0.154 / 2 ≈ 4e-4 m; measured
+//!   8e-5 m.
+//! - **Arms overridden with the compiled rates**: bit-identical results
+//!   (the same numbers through the same operations).
+//! - **Arms overridden with other rates**: the energy books close to 1e-5
+//!   of the motor's work at Dormand-Prince 1e-6 (the bound of
+//!   `tests/vehicle_m113.rs`, same run length and integrator): a run whose
+//!   springs act with one rate and are booked with another would leave a
+//!   residual of the spring energy difference, ~`½ Δk φ²` per arm, hundreds
+//!   of joules against a work of ~1e4 J; measured 3.1e-6. The override
+//!   must also act: the stiffer road-wheel arms deflect less, by more than
+//!   10 % at the end (measured 0.30 rad as declared, 0.146 rad at twice
+//!   the rates: about half, as a linear spring under the same load).
+
+mod support;
+
+use trackgen::contact::sprocket::ToothProfile;
+use trackgen::contact::{NormalLaw, ShoeGeometry, Terrain};
+use trackgen::integrate::Integrator;
+use trackgen::simulate::{Output, Results, SimulationError, simulate};
+use trackgen::vehicle::{BuildError, Drive, VehicleConfig};
+use trackgen::vehicles::m113::{self, M113, M113Chassis};
+
+use support::vehicle::Books;
+
+const FLAT: Terrain = Terrain::Flat { height: 0.0 };
+
+#[test]
+fn m113_declaration_carries_the_m113_figures() {
+    let declared = M113::config(FLAT, Drive::Free);
+    let runtime = VehicleConfig::m113(FLAT, Drive::Free);
+    assert_eq!(declared.shoe, ShoeGeometry::m113());
+    assert_eq!(M113::shoe(), ShoeGeometry::m113());
+    assert_eq!(declared.sprocket.profile, ToothProfile::m113());
+    assert_eq!(declared.ground, runtime.ground);
+    assert_eq!(declared.wheels, runtime.wheels);
+    assert_eq!(declared.sprocket, runtime.sprocket);
+    assert_eq!(declared.tension_link, runtime.tension_link);
+    let arms = declared.arms.expect("the declaration lists its arms");
+    assert_eq!(arms.len(), 6, "five road-wheel arms and the tensioner");
+    assert_eq!(arms[0].body, M113Chassis::RW1_ARM);
+    assert_eq!(arms[5].body, M113Chassis::IDLER_ARM);
+    assert_eq!(arms[0].stiffness, m113::TORSION_STIFFNESS);
+    assert_eq!(
+        (M113::TRACK_DOF, M113::CHASSIS_DOF),
+        (m113::TRACK_DOF, m113::CHASSIS_DOF)
+    );
+    assert_eq!((M113::TRACK_DOF, M113::CHASSIS_DOF), (66, 16));
+    match M113::speed_drive(|_| 1.0) {
+        Drive::Speed {
+            proportional,
+            integral,
+            max_torque,
+            ..
+        } => assert_eq!((proportional, integral, max_torque), (3000.0, 6000.0, 2e4)),
+        _ => panic!("a speed drive"),
+    }
+    // The defaults of an undeclared pair are the M113's too.
+    assert_eq!(
+        VehicleConfig::GROUND_LAW,
+        NormalLaw::HuntCrossley {
+            stiffness: 2e6,
+            exponent: 1.0,
+            chi: 2.0
+        }
+    );
+}
+
+#[test]
+fn scaled_profile_has_the_m113_proportions() {
+    let scaled = ToothProfile::scaled(10, m113::SHOE_PITCH);
+    let m113 = ToothProfile::m113();
+    assert_eq!(scaled.teeth, 10);
+    for (what, got, want) in [
+        ("tip", scaled.addendum, m113.addendum),
+        (
+            "gap centre",
+            scaled.arc_centre_radius,
+            m113.arc_centre_radius,
+        ),
+        ("gap radius", scaled.arc_radius, m113.arc_radius),
+    ] {
+        assert!((got - want).abs() < 2e-4, "{what}: {got} vs {want}");
+    }
+    // Neighbouring gaps never meet, for any tooth count.
+    for teeth in 3..60 {
+        let p = ToothProfile::scaled(teeth, 0.1);
+        let chord = 2.0 * p.arc_centre_radius * (std::f64::consts::PI / teeth as f64).sin();
+        assert!(2.0 * p.arc_radius < chord, "{teeth} teeth");
+        assert!(
+            p.arc_centre_radius - p.arc_radius < p.addendum,
+            "{teeth} teeth"
+        );
+    }
+}
+
+fn driven(config: VehicleConfig) -> Results {
+    let mut system = M113::system_with(config).expect("the M113 assembles");
+    simulate(
+        &mut system,
+        Integrator::Dopri5 {
+            rtol: 1e-6,
+            atol: 1e-6,
+            max_step: 0.01,
+        },
+        0.0,
+        1.5,
+        Output::Every(0.01),
+    )
+    .expect("the run completes")
+}
+
+fn drive() -> Drive {
+    M113::speed_drive(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0))
+}
+
+/// Mean deflection of the road-wheel arms from the chassis at the end, rad.
+fn arm_deflection(results: &Results) -> f64 {
+    let last = |c: &str| *results.column(c).expect(c).last().expect("samples");
+    let chassis = last("chassis.theta_chassis");
+    (1..=5)
+        .map(|i| (last(&format!("chassis.theta_rw{i}_arm")) - chassis).abs())
+        .sum::<f64>()
+        / 5.0
+}
+
+#[test]
+fn arm_rates_are_overridden_at_run_time() {
+    let base = driven(M113::config(FLAT, drive()));
+    let mut same = M113::config(FLAT, drive());
+    same.arms = Some(same.arms.take().expect("declared arms"));
+    let same = driven(same);
+    assert_eq!(base.times(), same.times());
+    assert_eq!(
+        base.column("energy").expect("energy"),
+        same.column("energy").expect("energy")
+    );
+
+    let mut stiff = M113::config(FLAT, drive());
+    for arm in stiff
+        .arms
+        .as_mut()
+        .expect("declared arms")
+        .iter_mut()
+        .take(5)
+    {
+        arm.stiffness *= 2.0;
+        arm.damping *= 2.0;
+    }
+    let stiff = driven(stiff);
+    let books = Books::of(&stiff);
+    assert!(
+        books.relative() < 1e-5,
+        "residual {} J of {} J",
+        books.residual,
+        books.work
+    );
+    let (soft, hard) = (arm_deflection(&base), arm_deflection(&stiff));
+    assert!(
+        hard < 0.9 * soft,
+        "arms deflect {hard} rad at twice the rate, {soft} rad as declared"
+    );
+}
+
+#[test]
+fn bad_arm_overrides_are_setup_errors() {
+    let mut missing = M113::config(FLAT, Drive::Free);
+    missing.arms.as_mut().expect("declared arms").pop();
+    let mut negative = M113::config(FLAT, Drive::Free);
+    negative.arms.as_mut().expect("declared arms")[2].damping = -1.0;
+    for (config, needle) in [(missing, "bodies"), (negative, "damping -1")] {
+        let error = M113::system_with(config).err().expect("refused");
+        assert!(
+            matches!(&error, BuildError::Setup(SimulationError::Setup(m)) if m.contains(needle)),
+            "{error}"
+        );
+    }
+}

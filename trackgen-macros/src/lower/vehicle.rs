@@ -1,0 +1,711 @@
+//! Lowering a `vehicle`: chassis, parts (repeated parts expanded), arms,
+//! and what makes it run (shoe, sprocket profile, contact laws, drive).
+
+use std::collections::BTreeMap;
+
+use proc_macro2::Span;
+use quote::{format_ident, quote};
+use syn::spanned::Spanned;
+use syn::{Expr, Ident, Lit, LitInt};
+
+use super::{Bound, Cx, Fields, strip};
+use crate::ir::{
+    Arm, Closure, ConstCheck, ContactPair, NormalLaw, Part, PartKind, Running, Shoe, Track, Vehicle,
+};
+use crate::num::{Num, Vec2};
+
+/// The shortest arm, m: a pivot closer than this to its part's centre is
+/// taken as a zero-length arm (the arm's angle would not move the part).
+const MIN_ARM_LENGTH: f64 = 1e-9;
+
+/// The most parts one repeated block declares.
+const MAX_REPEAT: usize = 64;
+
+/// Default speed drive: proportional gain, N m s/rad.
+const DEFAULT_PROPORTIONAL: f64 = 3000.0;
+/// Default speed drive: integral gain, N m/rad.
+const DEFAULT_INTEGRAL: f64 = 6000.0;
+/// Default speed drive: torque limit, N m.
+const DEFAULT_MAX_TORQUE: f64 = 2e4;
+
+/// The contact pairs of a `contact { … }` section, in [`Running::contact`]'s
+/// order.
+const PAIRS: [&str; 3] = ["ground", "wheels", "sprocket"];
+
+/// The declared sprocket profile: tip radius, gap arc radius, gap arc
+/// centre distance.
+type Profile = [Option<Num>; 3];
+
+/// The vehicle-level sections that appear at most once, unnamed.
+#[derive(Default)]
+struct Singles<'a> {
+    chassis: Option<&'a crate::parse::Block>,
+    track: Option<&'a crate::parse::Block>,
+    shoe: Option<(&'a Ident, &'a crate::parse::Block)>,
+    contact: Option<&'a crate::parse::Block>,
+    drive: Option<&'a crate::parse::Block>,
+}
+
+impl Cx<'_> {
+    pub(super) fn vehicle(&mut self, block: &crate::parse::Block, name: &Ident) -> Vehicle {
+        use crate::parse::Entry;
+        let fields = self.fields("vehicle", block, &["gravity"]);
+        let gravity = self.gravity(&fields);
+        let kinds = [
+            "chassis",
+            "track",
+            "shoe",
+            "contact",
+            "drive",
+            "sprocket",
+            "idler",
+            "road_wheel",
+            "roller",
+        ];
+        let sections = self.sections("vehicle", block, &kinds);
+        let mut singles = Singles::default();
+        let mut parts = Vec::new();
+        let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
+        let mut sprocket: Option<&Ident> = None;
+        let mut profile: Profile = [None, None, None];
+        let vehicle_name = name;
+        for entry in sections {
+            let Entry::Section {
+                kind,
+                selector,
+                name,
+                count,
+                body,
+            } = entry
+            else {
+                continue;
+            };
+            if let Some(sel) = selector {
+                self.errors
+                    .at(sel.span, format!("`{kind}` takes no link selector"));
+            }
+            let k = kind.to_string();
+            let Some(kind_ir) = PartKind::from_keyword(&k) else {
+                if let Some(name) = name {
+                    self.errors.at(name.span(), format!("`{k}` takes no name"));
+                }
+                let slot = match k.as_str() {
+                    "chassis" => &mut singles.chassis,
+                    "track" => &mut singles.track,
+                    "contact" => &mut singles.contact,
+                    "drive" => &mut singles.drive,
+                    _ => {
+                        if singles.shoe.is_some() {
+                            self.errors
+                                .at(kind.span(), "duplicate `shoe` section".to_string());
+                        } else {
+                            singles.shoe = Some((kind, body));
+                        }
+                        continue;
+                    }
+                };
+                if slot.is_some() {
+                    self.errors
+                        .at(kind.span(), format!("duplicate `{k}` section"));
+                } else {
+                    *slot = Some(body);
+                }
+                continue;
+            };
+            let Some(name) = name else {
+                self.errors.at(
+                    kind.span(),
+                    format!("`{k}` needs a name, e.g. `{k} front {{ … }}`"),
+                );
+                continue;
+            };
+            let repeat = match count {
+                Some(lit) => match self.repeat(lit, kind_ir) {
+                    Some(n) => Some(n),
+                    None => continue,
+                },
+                None => None,
+            };
+            let names: Vec<Ident> = match repeat {
+                Some(n) => (1..=n)
+                    .map(|i| format_ident!("{}{}", name, i, span = name.span()))
+                    .collect(),
+                None => vec![name.clone()],
+            };
+            for part_name in &names {
+                // Part names become body-index constants (`RW1`) and local
+                // names beside the frame's (`chassis`).
+                let upper = part_name.to_string().to_uppercase();
+                if upper == "FRAME" || upper == "CHASSIS" {
+                    self.errors.at(
+                        name.span(),
+                        format!("`{part_name}` is reserved for the chassis frame; choose another part name"),
+                    );
+                } else if part_names.insert(upper, part_name.clone()).is_some() {
+                    self.errors
+                        .at(name.span(), format!("duplicate part name `{part_name}`"));
+                }
+            }
+            if kind_ir == PartKind::Sprocket {
+                match sprocket {
+                    // The runtime drives and meshes one sprocket.
+                    Some(first) => self.errors.at(
+                        kind.span(),
+                        format!(
+                            "one sprocket per vehicle: `{first}` is its sprocket; \
+                             declare `{name}` as an `idler`"
+                        ),
+                    ),
+                    None => sprocket = Some(name),
+                }
+            }
+            let base = repeat.map(|_| name);
+            let (declared, declared_profile) = self.part(kind_ir, &names, base, body);
+            parts.extend(declared);
+            if let Some(p) = declared_profile {
+                profile = p;
+            }
+        }
+        let chassis = singles.chassis.map(|b| self.chassis(b));
+        let track = singles.track.map(|b| self.track(b, false));
+        if chassis.is_none() {
+            self.errors.at(
+                vehicle_name.span(),
+                format!(
+                    "vehicle `{vehicle_name}` has no `chassis {{ mass: …, inertia: … }}` section"
+                ),
+            );
+        }
+        if track.is_none() {
+            self.errors.at(
+                vehicle_name.span(),
+                format!("vehicle `{vehicle_name}` has no `track {{ … }}` section"),
+            );
+        }
+        let (chassis_mass, chassis_inertia, centroid) =
+            chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
+        for part in &mut parts {
+            part.at = part.at.clone() - centroid.clone();
+            if let Some(arm) = &mut part.arm {
+                arm.pivot = arm.pivot.clone() - centroid.clone();
+            }
+        }
+        let mut track = track.unwrap_or(Track {
+            links: Vec::new(),
+            closure: Closure::Open,
+            gravity: Vec2::zero(),
+        });
+        track.gravity = gravity.clone();
+        let running = self.running(&singles, sprocket.is_some(), profile);
+        Vehicle {
+            gravity,
+            chassis_mass,
+            chassis_inertia,
+            parts,
+            track,
+            running,
+        }
+    }
+
+    /// The count of a repeated part block, `rw[5]`.
+    fn repeat(&mut self, lit: &LitInt, kind: PartKind) -> Option<usize> {
+        if kind == PartKind::Sprocket {
+            self.errors.at(
+                lit.span(),
+                "one sprocket per vehicle: a sprocket cannot be repeated",
+            );
+            return None;
+        }
+        match self.integer::<usize>(lit, "usize").ok()? {
+            Some(n) if (1..=MAX_REPEAT).contains(&n) => Some(n),
+            _ => {
+                self.errors.at(
+                    lit.span(),
+                    format!(
+                        "a repeated part declares 1 to {MAX_REPEAT} parts, found {}",
+                        lit.base10_digits()
+                    ),
+                );
+                None
+            }
+        }
+    }
+
+    fn chassis(&mut self, block: &crate::parse::Block) -> (Num, Num, Vec2) {
+        let fields = self.fields("chassis", block, &["mass", "inertia", "centroid"]);
+        self.sections("chassis", block, &[]);
+        let mass = self.positive(&fields, "mass", true).unwrap_or(Num::ZERO);
+        let inertia = self.positive(&fields, "inertia", true).unwrap_or(Num::ZERO);
+        let centroid = self
+            .point(&fields, "centroid", false)
+            .unwrap_or(Vec2::zero());
+        (mass, inertia, centroid)
+    }
+
+    /// One part, or one per name of a repeated block `base[n]` (whose `at`
+    /// is then a list of positions), and a sprocket's declared profile.
+    fn part(
+        &mut self,
+        kind: PartKind,
+        names: &[Ident],
+        repeated: Option<&Ident>,
+        block: &crate::parse::Block,
+    ) -> (Vec<Part>, Option<Profile>) {
+        use crate::parse::Entry;
+        let what = kind.keyword();
+        let mut keys = vec!["at", "mass", "inertia", "radius"];
+        if kind == PartKind::Sprocket {
+            keys.extend(["teeth", "tip_radius", "gap_radius", "gap_centre"]);
+        }
+        let fields = self.fields(what, block, &keys);
+        let takes_arm = matches!(kind, PartKind::RoadWheel | PartKind::Idler);
+        let mut arm = None;
+        for entry in &block.entries {
+            let Entry::Section {
+                kind: keyword,
+                body,
+                ..
+            } = entry
+            else {
+                continue;
+            };
+            if keyword != "arm" {
+                self.errors.at(
+                    keyword.span(),
+                    format!("unexpected section `{keyword}` in {what}"),
+                );
+            } else if !takes_arm {
+                // Say why, rather than that the section is unknown.
+                self.errors.at(
+                    keyword.span(),
+                    format!("a {what} takes no `arm`: only road wheels and idlers hang from arms"),
+                );
+            } else if arm.is_some() {
+                self.errors
+                    .at(keyword.span(), format!("duplicate `arm` in {what}"));
+            } else {
+                arm = Some(self.arm(body, repeated.is_some()));
+            }
+        }
+        let at = if let Some(base) = repeated {
+            self.points(&fields, "at", true).and_then(|at| {
+                if at.len() == names.len() {
+                    Some(at)
+                } else {
+                    self.errors.spanned(
+                        fields.map["at"],
+                        format!(
+                            "`{}[{}]` declares {} parts: `at` needs {} positions, found {}",
+                            base,
+                            names.len(),
+                            names.len(),
+                            names.len(),
+                            at.len()
+                        ),
+                    );
+                    None
+                }
+            })
+        } else {
+            self.point(&fields, "at", true).map(|p| vec![p])
+        };
+        let mass = self.positive(&fields, "mass", true);
+        let inertia = self.positive(&fields, "inertia", true);
+        let radius = self.positive(&fields, "radius", true);
+        let (teeth, profile) = if kind == PartKind::Sprocket {
+            let profile = [
+                self.positive(&fields, "tip_radius", false),
+                self.positive(&fields, "gap_radius", false),
+                self.positive(&fields, "gap_centre", false),
+            ];
+            if let [Some(tip), Some(gap), Some(centre)] = &profile
+                && let (Some(tip), Some(gap), Some(centre)) =
+                    (tip.known(), gap.known(), centre.known())
+                && centre - gap >= tip
+            {
+                self.errors.spanned(
+                    fields.map["gap_centre"],
+                    format!(
+                        "the gap arcs (radius {gap} m centred {centre} m out) do not reach inside \
+                         the tip circle ({tip} m): the sprocket would have no tooth flanks"
+                    ),
+                );
+            }
+            (self.teeth(&fields), Some(profile))
+        } else {
+            (Some(0), None)
+        };
+        let (Some(at), Some(mass), Some(inertia), Some(radius), Some(teeth)) =
+            (at, mass, inertia, radius, teeth)
+        else {
+            return (Vec::new(), profile);
+        };
+        let arm = match arm {
+            Some(Some(arm)) => Some(arm),
+            Some(None) => return (Vec::new(), profile),
+            None => None,
+        };
+        let parts = names
+            .iter()
+            .zip(at)
+            .map(|(name, at)| {
+                let arm = arm.as_ref().map(|(arm, pivot, span)| {
+                    let pivot = match pivot {
+                        PivotAt::Absolute => arm.pivot.clone(),
+                        PivotAt::FromPart => at.clone() + arm.pivot.clone(),
+                    };
+                    self.check_arm_length(&pivot, *span, &at, what);
+                    Arm {
+                        pivot,
+                        ..arm.clone()
+                    }
+                });
+                Part {
+                    name: name.clone(),
+                    kind,
+                    at,
+                    mass: mass.clone(),
+                    inertia: inertia.clone(),
+                    radius: radius.clone(),
+                    teeth,
+                    arm,
+                }
+            })
+            .collect::<Vec<_>>();
+        (parts, profile)
+    }
+
+    /// An arm carries its part at a distance: a pivot at the part's centre
+    /// would make the arm's angle move nothing but the arm.
+    fn check_arm_length(&mut self, pivot: &Vec2, pivot_span: Span, at: &Vec2, what: &str) {
+        let what = what.replace('_', " ");
+        let message = format!(
+            "zero-length arm: its `pivot` is at the {what}'s centre `at`; \
+             pivot and centre must be at least {MIN_ARM_LENGTH:e} m apart"
+        );
+        let d = pivot.clone() - at.clone();
+        match (d.x.known(), d.y.known()) {
+            (Some(x), Some(y)) => {
+                if x.hypot(y) < MIN_ARM_LENGTH {
+                    self.errors.at(pivot_span, message);
+                }
+            }
+            _ => {
+                let squared = d.norm_squared();
+                let min = MIN_ARM_LENGTH * MIN_ARM_LENGTH;
+                self.checks.push(ConstCheck {
+                    span: pivot_span,
+                    condition: quote!((#squared) >= #min),
+                    message,
+                });
+            }
+        }
+    }
+
+    /// `arm { pivot | pivot_offset, mass, inertia, stiffness, damping,
+    /// preload }`: the arm (its `pivot` as declared, absolute or from the
+    /// part), how its pivot is given, and the pivot's span. In a repeated
+    /// block only `pivot_offset` makes sense.
+    fn arm(&mut self, block: &crate::parse::Block, repeated: bool) -> Option<(Arm, PivotAt, Span)> {
+        let keys = [
+            "pivot",
+            "pivot_offset",
+            "mass",
+            "inertia",
+            "stiffness",
+            "damping",
+            "preload",
+        ];
+        let fields = self.fields("arm", block, &keys);
+        self.sections("arm", block, &[]);
+        let pivot = match (fields.map.get("pivot"), fields.map.get("pivot_offset")) {
+            (Some(p), Some(_)) => {
+                self.errors.spanned(
+                    p,
+                    "give the arm's `pivot` or its `pivot_offset` from the part's centre, not both",
+                );
+                None
+            }
+            (Some(p), None) if repeated => {
+                self.errors.spanned(
+                    p,
+                    "a repeated part's arms share one `pivot_offset` (m, from each part's centre), not a `pivot`",
+                );
+                None
+            }
+            (Some(p), None) => self
+                .point(&fields, "pivot", true)
+                .map(|v| (v, PivotAt::Absolute, p.span())),
+            (None, Some(p)) => self
+                .point(&fields, "pivot_offset", true)
+                .map(|v| (v, PivotAt::FromPart, p.span())),
+            (None, None) => {
+                self.errors.at(
+                    fields.span,
+                    "missing key `pivot` (or `pivot_offset`) in arm",
+                );
+                None
+            }
+        };
+        let mass = self.positive(&fields, "mass", true);
+        let inertia = self.positive(&fields, "inertia", true);
+        let stiffness = self.non_negative(&fields, "stiffness");
+        let damping = self.non_negative(&fields, "damping");
+        let preload = self.number(&fields, "preload", false).unwrap_or(Num::ZERO);
+        let (pivot, how, span) = pivot?;
+        let arm = Arm {
+            pivot,
+            mass: mass?,
+            inertia: inertia?,
+            stiffness: stiffness?,
+            damping: damping?,
+            preload,
+        };
+        Some((arm, how, span))
+    }
+
+    fn teeth(&mut self, fields: &Fields) -> Option<u32> {
+        let Some(expr) = fields.map.get("teeth") else {
+            self.missing(fields, "teeth");
+            return None;
+        };
+        match strip(expr) {
+            Expr::Lit(syn::ExprLit {
+                lit: Lit::Int(lit), ..
+            }) => match self.integer::<u32>(lit, "u32").ok()? {
+                Some(t) if t >= 3 => Some(t),
+                Some(_) => {
+                    self.errors
+                        .at(lit.span(), "a sprocket needs at least 3 teeth");
+                    None
+                }
+                None => {
+                    self.errors.at(
+                        lit.span(),
+                        format!(
+                            "`teeth` is a `u32`: at most {}, found {}",
+                            u32::MAX,
+                            lit.base10_digits()
+                        ),
+                    );
+                    None
+                }
+            },
+            other => {
+                self.errors
+                    .spanned(other, "`teeth` must be an integer literal");
+                None
+            }
+        }
+    }
+
+    /// A non-empty list of points `[(x, y), …]`, m.
+    fn points(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Vec<Vec2>> {
+        let Some(expr) = fields.map.get(key) else {
+            if required {
+                self.missing(fields, key);
+            }
+            return None;
+        };
+        let Expr::Array(list) = strip(expr) else {
+            self.errors.spanned(
+                expr,
+                format!("`{key}` must be a list of points `[(x, y), …]` in metres"),
+            );
+            return None;
+        };
+        if list.elems.is_empty() {
+            self.errors
+                .spanned(list, format!("`{key}` needs at least one point"));
+            return None;
+        }
+        let points: Vec<Option<Vec2>> = list
+            .elems
+            .iter()
+            .map(|e| self.eval_point(e, key).ok())
+            .collect();
+        points.into_iter().collect()
+    }
+
+    /// What makes the vehicle run, from its `shoe`, `contact` and `drive`
+    /// sections and the sprocket's profile; `None` without a shoe.
+    fn running(
+        &mut self,
+        singles: &Singles,
+        has_sprocket: bool,
+        profile: Profile,
+    ) -> Option<Running> {
+        let Some((shoe_kw, shoe_block)) = singles.shoe else {
+            for (section, block) in [("contact", singles.contact), ("drive", singles.drive)] {
+                if let Some(block) = block {
+                    self.errors.at(
+                        block.span,
+                        format!(
+                            "`{section}` is used by the vehicle's `config` and `system`, which need a \
+                             `shoe {{ ground_points: […], inner_offset: …, pins: […], pin_radius: … }}` section"
+                        ),
+                    );
+                }
+            }
+            return None;
+        };
+        if !has_sprocket {
+            self.errors.at(
+                shoe_kw.span(),
+                "a vehicle with a `shoe` runs: it needs a `sprocket` to drive it",
+            );
+        }
+        let shoe = self.shoe(shoe_block);
+        let contact = match singles.contact {
+            Some(block) => self.contact(block),
+            None => Default::default(),
+        };
+        let drive = singles
+            .drive
+            .map(|block| self.fields("drive", block, &["proportional", "integral", "max_torque"]));
+        if let Some(block) = singles.drive {
+            self.sections("drive", block, &[]);
+        }
+        let mut gain = |key: &str, bound: Bound, default: f64| {
+            drive
+                .as_ref()
+                .and_then(|f| self.bounded(f, key, false, bound))
+                .unwrap_or(Num::Known(default))
+        };
+        let proportional = gain("proportional", Bound::NonNegative, DEFAULT_PROPORTIONAL);
+        let integral = gain("integral", Bound::NonNegative, DEFAULT_INTEGRAL);
+        let max_torque = gain("max_torque", Bound::Positive, DEFAULT_MAX_TORQUE);
+        let shoe = shoe?;
+        if let (Some(pin), Some(gap)) = (
+            shoe.pin_radius.known(),
+            profile[1].as_ref().and_then(Num::known),
+        ) && pin >= gap
+        {
+            self.errors.at(
+                shoe_block.span,
+                format!(
+                    "the pins (radius {pin} m) do not fit the sprocket's gaps (radius {gap} m)"
+                ),
+            );
+        }
+        let [tip_radius, gap_radius, gap_centre] = profile;
+        Some(Running {
+            shoe,
+            tip_radius,
+            gap_radius,
+            gap_centre,
+            contact,
+            proportional,
+            integral,
+            max_torque,
+        })
+    }
+
+    /// `shoe { ground_points, inner_offset, pins, pin_radius }`.
+    fn shoe(&mut self, block: &crate::parse::Block) -> Option<Shoe> {
+        let keys = ["ground_points", "inner_offset", "pins", "pin_radius"];
+        let fields = self.fields("shoe", block, &keys);
+        self.sections("shoe", block, &[]);
+        let ground_points = self.points(&fields, "ground_points", true);
+        let inner_offset = self.positive(&fields, "inner_offset", true);
+        let pins = self.points(&fields, "pins", true);
+        let pin_radius = self.positive(&fields, "pin_radius", true);
+        Some(Shoe {
+            ground_points: ground_points?,
+            inner_offset: inner_offset?,
+            pins: pins?,
+            pin_radius: pin_radius?,
+        })
+    }
+
+    /// `contact { ground { … }, wheels { … }, sprocket { … } }`.
+    fn contact(&mut self, block: &crate::parse::Block) -> [ContactPair; 3] {
+        use crate::parse::Entry;
+        self.fields("contact", block, &[]);
+        let mut out: [ContactPair; 3] = Default::default();
+        let mut seen = [false; 3];
+        for entry in self.sections("contact", block, &PAIRS) {
+            let Entry::Section {
+                kind, name, body, ..
+            } = entry
+            else {
+                continue;
+            };
+            if let Some(name) = name {
+                self.errors
+                    .at(name.span(), format!("`{kind}` takes no name"));
+            }
+            let i = PAIRS
+                .iter()
+                .position(|p| kind == p)
+                .expect("filtered by sections()");
+            if std::mem::replace(&mut seen[i], true) {
+                self.errors
+                    .at(kind.span(), format!("duplicate `{kind}` in contact"));
+                continue;
+            }
+            out[i] = self.pair(body);
+        }
+        out
+    }
+
+    /// One contact pair: a normal law (`stiffness` with `chi` and optional
+    /// `exponent` for Hunt-Crossley, or with `damping` for Kelvin-Voigt)
+    /// and friction (`mu`, `slip`), each part optional.
+    fn pair(&mut self, block: &crate::parse::Block) -> ContactPair {
+        let keys = ["stiffness", "exponent", "chi", "damping", "mu", "slip"];
+        let fields = self.fields("contact pair", block, &keys);
+        self.sections("contact pair", block, &[]);
+        let has = |k: &str| fields.map.contains_key(k);
+        let normal = if !(has("stiffness") || has("chi") || has("damping") || has("exponent")) {
+            None
+        } else if has("damping") && (has("chi") || has("exponent")) {
+            let key = if has("chi") { "chi" } else { "exponent" };
+            self.errors.spanned(
+                fields.map[key],
+                format!(
+                    "`{key}` belongs to the Hunt-Crossley law and `damping` to the Kelvin-Voigt law: give one law"
+                ),
+            );
+            None
+        } else if has("damping") {
+            let stiffness = self.positive(&fields, "stiffness", true);
+            let damping = self.bounded(&fields, "damping", true, Bound::NonNegative);
+            Some(NormalLaw::KelvinVoigt {
+                stiffness: stiffness.unwrap_or(Num::ZERO),
+                damping: damping.unwrap_or(Num::ZERO),
+            })
+        } else {
+            let stiffness = self.positive(&fields, "stiffness", true);
+            let exponent = self
+                .positive(&fields, "exponent", false)
+                .unwrap_or(Num::Known(1.0));
+            if !has("chi") {
+                self.errors.at(
+                    fields.span,
+                    "missing key `chi` (Hunt-Crossley, s/m) or `damping` (Kelvin-Voigt, N s/m) in contact pair",
+                );
+            }
+            let chi = self.bounded(&fields, "chi", false, Bound::NonNegative);
+            Some(NormalLaw::HuntCrossley {
+                stiffness: stiffness.unwrap_or(Num::ZERO),
+                exponent,
+                chi: chi.unwrap_or(Num::ZERO),
+            })
+        };
+        ContactPair {
+            normal,
+            mu: self.bounded(&fields, "mu", false, Bound::NonNegative),
+            slip: self.bounded(&fields, "slip", false, Bound::NonNegative),
+        }
+    }
+}
+
+/// How an arm's pivot is declared.
+#[derive(Clone, Copy)]
+enum PivotAt {
+    /// `pivot`: in the vehicle's frame.
+    Absolute,
+    /// `pivot_offset`: from the part's centre.
+    FromPart,
+}
