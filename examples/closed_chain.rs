@@ -93,18 +93,10 @@ fn main() -> Result<(), Box<dyn Error>> {
     }
     let column = |name: &str| results.column(name).unwrap();
     let energy = column("energy");
-    let drift = energy
-        .iter()
-        .map(|e| (e - energy[0]).abs())
-        .fold(0.0, f64::max)
-        / energy[0];
-    let closure = column("closure_error").into_iter().fold(0.0, f64::max);
+    let drift = largest(energy.iter().map(|e| (e - energy[0]).abs())) / energy[0];
+    let closure = largest(column("closure_error"));
     let angular = column("angular_momentum");
-    let angular_drift = angular
-        .iter()
-        .map(|l| (l - angular[0]).abs())
-        .fold(0.0, f64::max)
-        / angular[0].abs();
+    let angular_drift = largest(angular.iter().map(|l| (l - angular[0]).abs())) / angular[0].abs();
     println!(
         "{} switches; energy drift {drift:.1e} (relative), angular momentum drift {angular_drift:.1e}",
         results.switches.len()
@@ -264,4 +256,12 @@ fn plot_history(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
     )?;
     root.present()?;
     Ok(())
+}
+
+/// The largest value, NaN if any is (`fold(0.0, f64::max)` would drop a
+/// NaN and report a broken run as a clean one).
+fn largest(values: impl IntoIterator<Item = f64>) -> f64 {
+    values
+        .into_iter()
+        .fold(0.0, |m: f64, v| if v.is_nan() || m.is_nan() { f64::NAN } else { m.max(v) })
 }

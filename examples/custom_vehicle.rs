@@ -18,7 +18,7 @@ use std::path::PathBuf;
 
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
-use trackgen::simulate::{Output, simulate};
+use trackgen::simulate::{EnergyBalance, Output, simulate};
 
 trackgen::model! {
     /// A light carrier, one side: half its hull on a 55-link track.
@@ -73,18 +73,17 @@ fn main() -> Result<(), Box<dyn Error>> {
     std::fs::create_dir_all(&out)?;
     let path = out.join("carrier.csv");
     results.save_csv(&path)?;
-    let column = |c: &str| results.column(c).unwrap_or_default();
-    let (energy, work, dissipated) = (column("energy"), column("motor_work"), column("dissipated"));
-    let residual = (0..energy.len())
-        .map(|i| (work[i] - (energy[i] - energy[0]) - dissipated[i]).abs())
-        .fold(0.0, f64::max);
+    let books = results.energy_balance().ok_or("no energy books")?;
     let last = results.last().ok_or("no samples")?;
     println!(
         "carrier: {:.2} m/s after {duration} s; motor work {:.0} J, energy residual {:.2e} of the work",
         last.get("speed").unwrap_or(f64::NAN),
-        work.last().copied().unwrap_or(f64::NAN),
-        residual / work.last().copied().unwrap_or(f64::NAN).abs(),
+        books.motor_work,
+        books.residual(),
     );
+    if let Err(e) = books.check(EnergyBalance::bound_for_tolerance(rtol)) {
+        println!("warning: {e}");
+    }
     println!("wrote {}", path.display());
     Ok(())
 }
