@@ -261,7 +261,11 @@ fn plot_history(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
 /// The largest value, NaN if any is (`fold(0.0, f64::max)` would drop a
 /// NaN and report a broken run as a clean one).
 fn largest(values: impl IntoIterator<Item = f64>) -> f64 {
-    values
-        .into_iter()
-        .fold(0.0, |m: f64, v| if v.is_nan() || m.is_nan() { f64::NAN } else { m.max(v) })
+    values.into_iter().fold(0.0, |m: f64, v| {
+        if v.is_nan() || m.is_nan() {
+            f64::NAN
+        } else {
+            m.max(v)
+        }
+    })
 }

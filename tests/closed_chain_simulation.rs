@@ -9,7 +9,9 @@ mod support;
 
 use support::{Lcg, max_abs, max_of, min_of};
 use trackgen::TrackModel;
-use trackgen::closure::{ClosureMethod, MultiplierOptions, PartitionOptions, multipliers};
+use trackgen::closure::{
+    ClosureMethod, MultiplierOptions, PartitionOptions, PenaltyJoint, multipliers,
+};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{Output, Results, SimulationError, TrackSystem, simulate};
@@ -217,10 +219,10 @@ fn penalty_gap_falls_with_stiffness() {
     let (q, qd) = start(&Heavy20, 4, 1.0);
     let mut gaps = Vec::new();
     for stiffness in [1e4, 1e5, 1e6] {
-        let method = ClosureMethod::Penalty {
+        let method = ClosureMethod::Penalty(PenaltyJoint {
             stiffness,
             damping: 0.0,
-        };
+        });
         let mut system = TrackSystem::new(Heavy20, q, qd, method).unwrap();
         let results = simulate(
             &mut system,
@@ -262,10 +264,10 @@ fn three_closure_methods_agree() {
     };
     let partition = run(ClosureMethod::Partitioning(PartitionOptions::default()));
     let multiplier = run(ClosureMethod::Multipliers(MultiplierOptions::default()));
-    let penalty = run(ClosureMethod::Penalty {
+    let penalty = run(ClosureMethod::Penalty(PenaltyJoint {
         stiffness: 1e8,
         damping: 0.0,
-    });
+    }));
     let coords = |r: &Results, i: usize| r.sample(i).values[..22].to_vec();
     for i in 0..2 {
         let a = coords(&partition, i);

@@ -190,9 +190,9 @@ fn description_of_a_penalty_track_carries_its_spring() {
     let desc = Hetero10Penalty.description();
     assert_eq!(
         desc.loop_joint.unwrap().closure,
-        trackgen::Closure::Penalty {
+        trackgen::Closure::Penalty(trackgen::closure::PenaltyJoint {
             stiffness: 2.5e5,
             damping: 40.0
-        }
+        })
     );
 }

@@ -30,7 +30,7 @@
 mod support;
 
 use support::max_of;
-use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
+use trackgen::closure::{ClosureMethod, PartitionOptions, PenaltyJoint, multipliers};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
 use trackgen::simulate::{Output, SimulationError, TrackSystem, TreeSystem, simulate};
@@ -226,9 +226,7 @@ fn dopri5_dense_output_is_its_fourth_order_extension() {
         let mut system = TreeSystem::new(Tumbler, q, qd);
         let mut slope = |t: f64, y: &[f64]| {
             let mut f = DVector::zeros(10);
-            system
-                .derivative(t, &DVector::from_column_slice(y), &mut f)
-                .unwrap();
+            system.derivative(t, y, f.as_mut_slice()).unwrap();
             f
         };
         let (mut dense_errors, mut hermite_errors) = (Vec::new(), Vec::new());
@@ -301,10 +299,10 @@ fn loop6_start() -> (SVector<f64, 8>, SVector<f64, 8>) {
 #[test]
 fn stiff_penalty_needs_the_implicit_method() {
     let (q, qd) = loop6_start();
-    let method = ClosureMethod::Penalty {
+    let method = ClosureMethod::Penalty(PenaltyJoint {
         stiffness: 1e9,
         damping: 0.0,
-    };
+    });
     let mut explicit = TrackSystem::new(Loop6, q, qd, method).unwrap();
     let failure = simulate(
         &mut explicit,

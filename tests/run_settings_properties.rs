@@ -79,12 +79,7 @@ impl<S: OdeSystem> OdeSystem for Budgeted<S> {
         self.inner.dimension()
     }
 
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         if self.left == 0 {
             self.spent = true;
             return Err(SimulationError::Setup(
@@ -105,21 +100,17 @@ impl<S: Simulated> Simulated for Budgeted<S> {
         self.inner.columns()
     }
 
-    fn observe(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
+    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         self.inner.observe(t, y, row)
     }
 
-    fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
-        self.inner.after_step(t, y)
-    }
-
-    fn switches(&self) -> Vec<Switch> {
-        self.inner.switches()
+    fn after_step(
+        &mut self,
+        t: f64,
+        y: &mut [f64],
+        switched: &mut dyn FnMut(Switch),
+    ) -> Result<bool, SimulationError> {
+        self.inner.after_step(t, y, switched)
     }
 }
 
@@ -1019,12 +1010,7 @@ impl OdeSystem for Decay {
         2
     }
 
-    fn derivative(
-        &mut self,
-        _t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
+    fn derivative(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         dy[0] = -y[0];
         dy[1] = 0.0;
         Ok(())
@@ -1040,12 +1026,7 @@ impl Simulated for Decay {
         vec!["y0".into(), "y1".into()]
     }
 
-    fn observe(
-        &mut self,
-        _t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
+    fn observe(&mut self, _t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         row.extend(y.iter());
         Ok(())
     }

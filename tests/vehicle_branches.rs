@@ -42,7 +42,7 @@
 
 mod support;
 
-use trackgen::closure::{ClosureMethod, MultiplierOptions};
+use trackgen::closure::{ClosureMethod, MultiplierOptions, PenaltyJoint};
 use trackgen::contact::Terrain;
 use trackgen::dynamics::forward_dynamics;
 use trackgen::integrate::Integrator;
@@ -85,10 +85,10 @@ fn closure_methods_agree_on_the_vehicle() {
         ),
         (
             "penalty",
-            ClosureMethod::Penalty {
+            ClosureMethod::Penalty(PenaltyJoint {
                 stiffness: 1e8,
                 damping: 1e4,
-            },
+            }),
         ),
     ];
     let mut finals = Vec::new();

@@ -22,7 +22,7 @@ pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
         "steps {} accepted, {} rejected; {} coordinate switches; max closure error {:.1e} m",
         report.stats.accepted,
         report.stats.rejected,
-        report.switches.len(),
+        report.switches,
         max("track.closure_error")
     );
     let residual = books.map_or(f64::NAN, |b| b.residual());

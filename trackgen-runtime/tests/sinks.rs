@@ -34,12 +34,7 @@ impl OdeSystem for Oscillator {
         2
     }
 
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let load = match self.fail_at {
             Some(at) if t > at => f64::NAN,
             _ => 0.0,
@@ -59,12 +54,7 @@ impl Simulated for Oscillator {
         ["x", "v", "energy"].map(String::from).to_vec()
     }
 
-    fn observe(
-        &mut self,
-        _t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
+    fn observe(&mut self, _t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         let energy = 0.5 * (y[1] * y[1] + OMEGA * OMEGA * y[0] * y[0]);
         row.extend_from_slice(&[y[0], y[1], energy]);
         Ok(())
@@ -420,12 +410,7 @@ impl OdeSystem for NanRecord {
         self.0.dimension()
     }
 
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         self.0.derivative(t, y, dy)
     }
 }
@@ -439,12 +424,7 @@ impl Simulated for NanRecord {
         self.0.columns()
     }
 
-    fn observe(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
+    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         self.0.observe(t, y, row)?;
         if t > 0.5 {
             *row.last_mut().unwrap() = f64::NAN;

@@ -93,7 +93,7 @@ pub fn track_type(
         Closure::Open => quote!(#rt::runtime::Closure::Open),
         Closure::Partitioned => quote!(#rt::runtime::Closure::Partitioned),
         Closure::Penalty { stiffness, damping } => {
-            quote!(#rt::runtime::Closure::Penalty { stiffness: #stiffness, damping: #damping })
+            quote!(#rt::runtime::Closure::Penalty(#rt::runtime::closure::PenaltyJoint { stiffness: #stiffness, damping: #damping }))
         }
     };
     let (first, last) = (&track.links[0].u1, &track.links[n - 1].u2);

@@ -19,6 +19,7 @@ pub mod penalty;
 
 pub use multipliers::{MultiplierOptions, ProjectionFailure};
 pub use partitioning::PartitionOptions;
+pub use penalty::PenaltyJoint;
 
 /// How a simulation closes a track's loop.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -33,10 +34,5 @@ pub enum ClosureMethod {
     Multipliers(MultiplierOptions),
     /// A spring-damper at the cut joint, chosen at run time (for a track
     /// declared `partitioned`).
-    Penalty {
-        /// `k`, N/m.
-        stiffness: f64,
-        /// `c`, N s/m.
-        damping: f64,
-    },
+    Penalty(PenaltyJoint),
 }

@@ -32,14 +32,13 @@ impl Default for MultiplierOptions {
     }
 }
 
-/// `γ_c − 2ω Ċ − ω² C` (Baumgarte).
-pub fn stabilised_gamma(
-    gamma_c: Vector2<f64>,
-    c: Vector2<f64>,
-    c_rate: Vector2<f64>,
-    omega: f64,
-) -> Vector2<f64> {
-    gamma_c - c_rate * (2.0 * omega) - c * (omega * omega)
+impl MultiplierOptions {
+    /// Baumgarte's stabilisation `2ω Ċ + ω² C` at the closure `C` and its
+    /// rate `Ċ`: the acceleration equation is `C_q q̈ = γ_c − 2ω Ċ − ω² C`.
+    pub fn stabilisation(&self, c: Vector2<f64>, c_rate: Vector2<f64>) -> Vector2<f64> {
+        let omega = self.baumgarte;
+        c_rate * (2.0 * omega) + c * (omega * omega)
+    }
 }
 
 /// Why a projection onto the closure failed.

@@ -4,6 +4,7 @@
 use nalgebra::{DMatrix, DVector, Matrix2, SMatrix, SVector, Vector2};
 
 use crate::model::TrackModel;
+use crate::simulate::{SimulationError, Switch};
 
 /// Settings of the partitioning method.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -55,7 +56,7 @@ fn column<const D: usize>(cq: &SMatrix<f64, 2, D>, link: usize) -> Vector2<f64> 
 
 /// `|sin|` of the angle between the columns of `C_d` for dependent links
 /// `pair` (0-based): 1 at best, 0 singular (eq. (21)).
-pub fn conditioning<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> f64 {
+pub(crate) fn conditioning<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> f64 {
     let (a, b) = (column(cq, pair[0]), column(cq, pair[1]));
     let det = a.x * b.y - a.y * b.x;
     let norms = a.norm() * b.norm();
@@ -67,7 +68,7 @@ pub fn conditioning<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -
 }
 
 /// The best-conditioned pair of links (0-based) and its conditioning.
-pub fn best_pair<const D: usize>(cq: &SMatrix<f64, 2, D>) -> ([usize; 2], f64) {
+pub(crate) fn best_pair<const D: usize>(cq: &SMatrix<f64, 2, D>) -> ([usize; 2], f64) {
     let n = D - 2;
     let mut best = ([0, 1.min(n - 1)], -1.0);
     for j in 0..n {
@@ -89,7 +90,7 @@ fn block<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> Matrix2<f
 /// Solves `C(q) = 0` for the dependent angles by Newton-Raphson, the others
 /// fixed. Returns `Err((iterations, |C|))` if it does not converge to
 /// `tolerance` (m).
-pub fn recover_positions<M: TrackModel<D>, const D: usize>(
+pub(crate) fn recover_positions<M: TrackModel<D>, const D: usize>(
     model: &M,
     q: &mut SVector<f64, D>,
     pair: [usize; 2],
@@ -108,7 +109,7 @@ pub fn recover_positions<M: TrackModel<D>, const D: usize>(
 /// link, then Newton-Raphson on the two dependent angles alone (the other
 /// links' part of `C` is fixed), then `ḋ = −C_d⁻¹ C_z ż` if `qd` is given.
 /// Every link's final `(sin θ, cos θ)` goes to `trig` if given.
-pub fn recover<const D: usize>(
+pub(crate) fn recover<const D: usize>(
     spans: &[Vector2<f64>],
     q: &mut SVector<f64, D>,
     qd: Option<&mut SVector<f64, D>>,
@@ -173,7 +174,7 @@ pub fn recover<const D: usize>(
 
 /// Sets the dependent angular velocities from `C_q q̇ = 0`:
 /// `ḋ = −C_d⁻¹ C_z ż`. `None` if `C_d` is singular.
-pub fn recover_velocities<const D: usize>(
+pub(crate) fn recover_velocities<const D: usize>(
     cq: &SMatrix<f64, 2, D>,
     qd: &mut SVector<f64, D>,
     pair: [usize; 2],
@@ -186,18 +187,21 @@ pub fn recover_velocities<const D: usize>(
     Some(())
 }
 
-/// The accelerations of the partitioned equations
+/// The accelerations of the dense partitioned equations
 /// `(Bᵀ M_i B) z̈ = Bᵀ (Q_i − M_i β)`, `q̈_i = B z̈ + β`, with
-/// `B = [I ; −C_d⁻¹ C_z]` and `β = [0 ; C_d⁻¹ γ_c]` (spec §2). `None` if a
-/// matrix is singular.
+/// `B = [I ; −C_d⁻¹ C_z]` and `β = [0 ; C_d⁻¹ γ_c]` (spec §2), for the
+/// dependent links `pair` (0-based). `None` if a matrix is singular.
+///
+/// O(n³): the cross-check of the simulation, which takes `z̈` from the
+/// linear-time route (on the closure manifold the two agree).
 pub fn accelerations<const D: usize>(
     mass: &SMatrix<f64, D, D>,
     forces: &SVector<f64, D>,
     cq: &SMatrix<f64, 2, D>,
     gamma_c: &Vector2<f64>,
     pair: [usize; 2],
-    independent: &[usize],
 ) -> Option<SVector<f64, D>> {
+    let independent = independent_coordinates(D, pair);
     let n = independent.len();
     let inv = block(cq, pair).try_inverse()?;
     let mut b = DMatrix::<f64>::zeros(D, n);
@@ -228,8 +232,203 @@ fn column_any<const D: usize>(cq: &SMatrix<f64, 2, D>, c: usize) -> Vector2<f64>
 
 /// The coordinates of `q_i` that are integrated for dependent links
 /// `pair` (0-based): `R_x, R_y` and every other angle.
-pub fn independent_coordinates(dof: usize, pair: [usize; 2]) -> Vec<usize> {
+pub(crate) fn independent_coordinates(dof: usize, pair: [usize; 2]) -> Vec<usize> {
     (0..dof)
         .filter(|&c| c != 2 + pair[0] && c != 2 + pair[1])
         .collect()
+}
+
+/// The partition of a closed track's coordinates as it evolves: the
+/// dependent pair, the integrated (independent) coordinates, and where
+/// Newton-Raphson starts. The integrated state is `y = [z, ż]`.
+#[derive(Debug, Clone)]
+pub(crate) struct Partition {
+    options: PartitionOptions,
+    /// The dependent links, 0-based.
+    pair: [usize; 2],
+    /// The integrated coordinates of `q_i`: `R_x, R_y` and every angle
+    /// but the pair's.
+    independent: Vec<usize>,
+    /// The dependent angles last accepted: Newton-Raphson's start.
+    guess: [f64; 2],
+    /// `|C|` at which Newton-Raphson stops, m.
+    tolerance: f64,
+}
+
+impl Partition {
+    /// A partition with these options for a loop of length `loop_length`
+    /// (m, `Σ |d̄ʲ|`: the scale of the closure tolerance). The pair is
+    /// chosen by [`start`](Self::start).
+    pub fn new(options: PartitionOptions, loop_length: f64) -> Partition {
+        Partition {
+            options,
+            pair: [0, 1],
+            independent: Vec::new(),
+            guess: [0.0; 2],
+            tolerance: options.newton_tolerance * loop_length,
+        }
+    }
+
+    /// The dependent links, 0-based.
+    pub fn pair(&self) -> [usize; 2] {
+        self.pair
+    }
+
+    /// `2 n`: the length of the integrated state.
+    pub fn dimension<const D: usize>(&self) -> usize {
+        2 * (D - 2)
+    }
+
+    /// Chooses the starting pair (the options' `initial_pair`, else the
+    /// best-conditioned) and makes `(q_i, q̇_i)` consistent with the
+    /// closure: the pair's angles from `C = 0`, its rates from `C_q q̇ = 0`.
+    pub fn start<M: TrackModel<D>, const D: usize>(
+        &mut self,
+        model: &M,
+        q: &mut SVector<f64, D>,
+        qd: &mut SVector<f64, D>,
+    ) -> Result<(), SimulationError> {
+        let links = D - 2;
+        self.pair = match self.options.initial_pair {
+            Some([a, b]) if a != b && (1..=links).contains(&a) && (1..=links).contains(&b) => {
+                [a - 1, b - 1]
+            }
+            Some(p) => {
+                return Err(SimulationError::Setup(format!(
+                    "initial_pair {p:?}: two different links from 1 to {links}"
+                )));
+            }
+            None => best_pair(&model.closure_jacobian(q)).0,
+        };
+        self.independent = independent_coordinates(D, self.pair);
+        recover_positions(
+            model,
+            q,
+            self.pair,
+            self.tolerance,
+            self.options.newton_max_iterations,
+        )
+        .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
+            t: 0.0,
+            iterations,
+            residual,
+        })?;
+        self.guess = [q[2 + self.pair[0]], q[2 + self.pair[1]]];
+        recover_velocities(&model.closure_jacobian(q), qd, self.pair).ok_or(
+            SimulationError::SingularMatrix {
+                t: 0.0,
+                what: "C_d at the start",
+            },
+        )
+    }
+
+    /// `[z, ż]` of `(q_i, q̇_i)` into `y` (and so `[ż, z̈]` of
+    /// `(q̇_i, q̈_i)`).
+    pub fn pack<const D: usize>(&self, q: &SVector<f64, D>, qd: &SVector<f64, D>, y: &mut [f64]) {
+        let n = self.independent.len();
+        for (i, &c) in self.independent.iter().enumerate() {
+            y[i] = q[c];
+            y[n + i] = qd[c];
+        }
+    }
+
+    /// `(q_i, q̇_i)` of `y = [z, ż]`: the dependent angles by
+    /// Newton-Raphson from the last accepted ones, their rates from
+    /// `C_q q̇ = 0`, every link's `(sin θ, cos θ)` into `trig` if given.
+    ///
+    /// A jump of the pair by more than π/2 from the last accepted state is
+    /// the closure's mirror solution: [`SimulationError::BranchJump`].
+    pub fn expand<const D: usize>(
+        &self,
+        spans: &[Vector2<f64>],
+        t: f64,
+        y: &[f64],
+        trig: Option<&mut [(f64, f64)]>,
+    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        let n = self.independent.len();
+        let mut q = SVector::<f64, D>::zeros();
+        let mut qd = SVector::<f64, D>::zeros();
+        for (i, &c) in self.independent.iter().enumerate() {
+            q[c] = y[i];
+            qd[c] = y[n + i];
+        }
+        let [k, l] = self.pair;
+        q[2 + k] = self.guess[0];
+        q[2 + l] = self.guess[1];
+        recover(
+            spans,
+            &mut q,
+            Some(&mut qd),
+            self.pair,
+            self.tolerance,
+            self.options.newton_max_iterations,
+            trig,
+        )
+        .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
+            t,
+            iterations,
+            residual,
+        })?;
+        // The start is the last accepted state's pair (never a rejected
+        // trial's), so the result does not depend on the call history.
+        let jump = (q[2 + k] - self.guess[0])
+            .abs()
+            .max((q[2 + l] - self.guess[1]).abs());
+        if jump > std::f64::consts::FRAC_PI_2 {
+            return Err(SimulationError::BranchJump {
+                t,
+                pair: [k + 1, l + 1],
+                jump,
+            });
+        }
+        Ok((q, qd))
+    }
+
+    /// After an accepted step at `(q_i, q̇_i)` (expanded from `y`): the
+    /// accepted pair becomes Newton-Raphson's start, and if its conditioning
+    /// has fallen below the threshold the best-conditioned pair takes over
+    /// and `y` is re-packed. Returns the switch made, if any. With
+    /// switching off, a pair below `singular_below` is an error.
+    pub fn accept<M: TrackModel<D>, const D: usize>(
+        &mut self,
+        model: &M,
+        t: f64,
+        q: &SVector<f64, D>,
+        qd: &SVector<f64, D>,
+        y: &mut [f64],
+    ) -> Result<Option<Switch>, SimulationError> {
+        let cq = model.closure_jacobian(q);
+        let [k, l] = self.pair;
+        self.guess = [q[2 + k], q[2 + l]];
+        let now = conditioning(&cq, self.pair);
+        if !self.options.switching {
+            if now < self.options.singular_below {
+                return Err(SimulationError::SingularPartition {
+                    t,
+                    pair: [k + 1, l + 1],
+                    conditioning: now,
+                });
+            }
+            return Ok(None);
+        }
+        if now >= self.options.switch_below {
+            return Ok(None);
+        }
+        let (best, better) = best_pair(&cq);
+        if best == self.pair {
+            return Ok(None);
+        }
+        let switch = Switch {
+            t,
+            from: [k + 1, l + 1],
+            to: [best[0] + 1, best[1] + 1],
+            conditioning: now,
+            new_conditioning: better,
+        };
+        self.pair = best;
+        self.independent = independent_coordinates(D, best);
+        self.guess = [q[2 + best[0]], q[2 + best[1]]];
+        self.pack(q, qd, y);
+        Ok(Some(switch))
+    }
 }

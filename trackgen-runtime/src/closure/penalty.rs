@@ -1,24 +1,62 @@
-//! The secondary joint of the paper's Fig. 5, chosen at run time: the
-//! closing joint cut, a spring-damper across the cut.
+//! The secondary joint of the paper's Fig. 5: the closing joint cut, a
+//! spring-damper across the cut. [`PenaltyJoint`] is the one owner of its
+//! law: the force, the elastic energy and the power it dissipates.
 
 use nalgebra::{SMatrix, SVector, Vector2};
 
-/// The spring-damper's generalised forces `C_qᵀ F` with
-/// `F = −k C − c Ċ` (on link n; `−F` on link 1). The gap `C = P_n − P_1`
-/// and its rate `Ċ = C_q q̇` make `C_qᵀ` the map from the force to
-/// generalised forces by virtual work.
-pub fn forces<const D: usize>(
-    cq: &SMatrix<f64, 2, D>,
-    gap: Vector2<f64>,
-    qd: &SVector<f64, D>,
-    stiffness: f64,
-    damping: f64,
-) -> SVector<f64, D> {
-    let force = -gap * stiffness - (cq * qd) * damping;
-    cq.transpose() * force
+/// A spring-damper between the two points of the cut closing joint,
+/// `P_n = Rⁿ + Aⁿ ū2ⁿ` on link n and `P_1 = R¹ + A¹ ū1¹` on link 1.
+/// Their gap is the closure `C = P_n − P_1` (spec §2) and its rate
+/// `Ċ = C_q q̇`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PenaltyJoint {
+    /// `k`, N/m.
+    pub stiffness: f64,
+    /// `c`, N s/m.
+    pub damping: f64,
 }
 
-/// The spring's potential energy `½ k |C|²`, J.
-pub fn energy(gap: Vector2<f64>, stiffness: f64) -> f64 {
-    0.5 * stiffness * gap.norm_squared()
+impl PenaltyJoint {
+    /// The force on link n at `P_n`, N: `F = −k C − c Ċ`; link 1 takes
+    /// `−F` at `P_1`.
+    #[inline]
+    pub fn force(&self, gap: Vector2<f64>, rate: Vector2<f64>) -> Vector2<f64> {
+        -gap * self.stiffness - rate * self.damping
+    }
+
+    /// The spring's elastic energy `½ k |C|²`, J.
+    #[inline]
+    pub fn energy(&self, gap: Vector2<f64>) -> f64 {
+        0.5 * self.stiffness * gap.norm_squared()
+    }
+
+    /// The power the damper dissipates, `c |Ċ|²`, W.
+    #[inline]
+    pub fn dissipation(&self, rate: Vector2<f64>) -> f64 {
+        self.damping * rate.norm_squared()
+    }
+
+    /// Its generalised forces `C_qᵀ F` at `(q_i, q̇_i)`: `C_qᵀ` maps the
+    /// force at the gap to generalised forces by virtual work.
+    pub fn generalized_forces<const D: usize>(
+        &self,
+        cq: &SMatrix<f64, 2, D>,
+        gap: Vector2<f64>,
+        qd: &SVector<f64, D>,
+    ) -> SVector<f64, D> {
+        cq.transpose() * self.force(gap, cq * qd)
+    }
+
+    /// A spring that closes the loop: stiffness positive and damping zero
+    /// or more, both finite.
+    pub fn check(&self) -> Result<(), String> {
+        let (k, c) = (self.stiffness, self.damping);
+        if k > 0.0 && k.is_finite() && c >= 0.0 && c.is_finite() {
+            Ok(())
+        } else {
+            Err(format!(
+                "penalty stiffness must be positive and damping non-negative, got k = {k}, c = {c}"
+            ))
+        }
+    }
 }

@@ -16,6 +16,14 @@ use nalgebra::Vector2;
 use super::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry};
 use crate::model::BodyLoad;
 
+/// The pitch radius of a sprocket of `teeth` teeth for a chain of `pitch`
+/// (m, pin to pin): the circumradius of the `teeth`-gon of side `pitch`,
+/// `p / (2 sin(π/teeth))`, m. Seated pins sit on this circle, so it is
+/// track speed over sprocket speed and tension difference over torque.
+pub fn pitch_radius(teeth: u32, pitch: f64) -> f64 {
+    pitch / (2.0 * (std::f64::consts::PI / teeth as f64).sin())
+}
+
 /// An arc tooth profile, m.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToothProfile {
@@ -52,7 +60,7 @@ impl ToothProfile {
     /// 0.089 m, its figures.
     pub fn scaled(teeth: u32, pitch: f64) -> ToothProfile {
         let half_angle = std::f64::consts::PI / teeth as f64;
-        let pitch_radius = pitch / (2.0 * half_angle.sin());
+        let pitch_radius = pitch_radius(teeth, pitch);
         let arc_centre_radius = pitch_radius + 0.33 * pitch;
         ToothProfile {
             teeth,

@@ -122,9 +122,8 @@ impl LinearTimeSolver {
         loads: &[BodyLoad],
     ) -> Result<super::Accelerations<SVector<f64, D>>, DynamicsError> {
         let penalty = match self.closure {
-            Closure::Penalty { stiffness, damping } => {
-                let rate = model.closure_jacobian(q) * qd;
-                Some(-model.closure(q) * stiffness - rate * damping)
+            Closure::Penalty(joint) => {
+                Some(joint.force(model.closure(q), model.closure_jacobian(q) * qd))
             }
             _ => None,
         };

@@ -90,12 +90,29 @@ pub(crate) const BOGACKI_SHAMPINE: Tableau = Tableau {
     dense: None,
 };
 
-/// A step tried: the solution, the stages (the last is the slope at the
-/// solution), and the error norm.
-struct Trial {
-    y: DVector<f64>,
-    stages: Vec<DVector<f64>>,
-    error: f64,
+/// The RMS of `v` weighted by `atol + rtol · max(|y0|, |y1|)` per
+/// component.
+fn weighted_rms(
+    v: &DVector<f64>,
+    y0: &DVector<f64>,
+    y1: &DVector<f64>,
+    atol: f64,
+    rtol: f64,
+) -> f64 {
+    let n = v.len().max(1) as f64;
+    let sum: f64 = (0..v.len())
+        .map(|i| {
+            // A zero is no error whatever the scale: with `atol = 0` a
+            // component that is exactly 0 has a scale of 0, and 0/0 = NaN
+            // would reject every step down to underflow.
+            if v[i] == 0.0 {
+                return 0.0;
+            }
+            let scale = atol + rtol * y0[i].abs().max(y1[i].abs());
+            (v[i] / scale).powi(2)
+        })
+        .sum();
+    (sum / n).sqrt()
 }
 
 const SAFETY: f64 = 0.9;
@@ -109,6 +126,8 @@ const MAX_FACTOR: f64 = 5.0;
 /// steps. The error of each step is kept below 1 in the RMS norm weighted by
 /// `atol + rtol·|y|` per component, with PI step control; a step whose
 /// right-hand side fails is rejected and retried four times shorter.
+///
+/// Every vector it needs is allocated with it: a step allocates nothing.
 #[derive(Debug, Clone)]
 pub struct Embedded {
     tableau: &'static Tableau,
@@ -119,8 +138,18 @@ pub struct Embedded {
     h: f64,
     /// The last accepted step's error norm, for PI control.
     previous_error: f64,
-    f_now: Option<DVector<f64>>,
-    /// Dense-output coefficients of the last step and its span.
+    /// Whether `stages[0]` holds `f` at the current state (first same as
+    /// last, or the last call's start).
+    f_now: bool,
+    /// The stages of the step being tried; the last is the slope at its
+    /// solution.
+    stages: Vec<DVector<f64>>,
+    /// The stage argument, then the trial solution.
+    trial: DVector<f64>,
+    /// The error estimate of the trial.
+    error: DVector<f64>,
+    /// Dense-output coefficients of the last step (five for Hairer's
+    /// `contd5`, four for cubic Hermite) and its span.
     dense: Vec<DVector<f64>>,
     span: (f64, f64),
     stats: Stats,
@@ -148,6 +177,8 @@ impl Embedded {
         max_step: f64,
         dimension: usize,
     ) -> Self {
+        let zero = DVector::zeros(dimension);
+        let dense = if tableau.dense.is_some() { 5 } else { 4 };
         Embedded {
             tableau,
             rtol,
@@ -155,61 +186,44 @@ impl Embedded {
             max_step,
             h: 0.0,
             previous_error: 1e-4,
-            f_now: None,
-            dense: vec![DVector::zeros(dimension); 5],
+            f_now: false,
+            stages: vec![zero.clone(); tableau.c.len()],
+            trial: zero.clone(),
+            error: zero.clone(),
+            dense: vec![zero; dense],
             span: (0.0, 0.0),
             stats: Stats::default(),
         }
     }
 
-    fn eval(
-        &mut self,
-        system: &mut dyn OdeSystem,
-        t: f64,
-        y: &DVector<f64>,
-    ) -> Result<DVector<f64>, SimulationError> {
-        super::evaluate(system, &mut self.stats, t, y)
-    }
-
     fn norm(&self, v: &DVector<f64>, y0: &DVector<f64>, y1: &DVector<f64>) -> f64 {
-        let n = v.len().max(1) as f64;
-        let sum: f64 = (0..v.len())
-            .map(|i| {
-                // A zero is no error whatever the scale: with `atol = 0`
-                // a component that is exactly 0 has a scale of 0, and
-                // 0/0 = NaN would reject every step down to underflow.
-                if v[i] == 0.0 {
-                    return 0.0;
-                }
-                let scale = self.atol + self.rtol * y0[i].abs().max(y1[i].abs());
-                (v[i] / scale).powi(2)
-            })
-            .sum();
-        (sum / n).sqrt()
+        weighted_rms(v, y0, y1, self.atol, self.rtol)
     }
 
-    /// Hairer's starting-step heuristic. Norms taken at `y` alone are
-    /// infinite for a component that is 0 when `atol = 0` (pure relative
-    /// tolerance, a body at rest): then the heuristic starts at 1e-6 s and
-    /// leaves the step control, which scales by the larger of the old and
-    /// new values, to find the step.
-    fn initial_step(
-        &mut self,
-        system: &mut dyn OdeSystem,
-        t: f64,
-        y: &DVector<f64>,
-        f0: &DVector<f64>,
-    ) -> f64 {
+    /// Hairer's starting-step heuristic, from `f0 = stages[0]`. Norms
+    /// taken at `y` alone are infinite for a component that is 0 when
+    /// `atol = 0` (pure relative tolerance, a body at rest): then the
+    /// heuristic starts at 1e-6 s and leaves the step control, which scales
+    /// by the larger of the old and new values, to find the step.
+    fn initial_step(&mut self, system: &mut dyn OdeSystem, t: f64, y: &DVector<f64>) -> f64 {
         let d0 = self.norm(y, y, y);
-        let d1 = self.norm(f0, y, y);
+        let d1 = self.norm(&self.stages[0], y, y);
         let h0 = if d0 < 1e-5 || d1 < 1e-5 || !d1.is_finite() {
             1e-6
         } else {
             0.01 * d0 / d1
         };
         let h0 = h0.min(self.max_step);
-        let d2 = match self.eval(system, t + h0, &(y + f0 * h0)) {
-            Ok(f1) => self.norm(&(f1 - f0), y, y) / h0,
+        self.trial.copy_from(y);
+        self.trial.axpy(h0, &self.stages[0], 1.0);
+        let [f0, f1, ..] = &mut self.stages[..] else {
+            unreachable!("a tableau has at least two stages")
+        };
+        let d2 = match super::evaluate(system, &mut self.stats, t + h0, &self.trial, f1) {
+            Ok(()) => {
+                f1.axpy(-1.0, f0, 1.0);
+                weighted_rms(f1, y, y, self.atol, self.rtol) / h0
+            }
             Err(_) => return h0 * 0.1,
         };
         let h1 = if d1.max(d2) <= 1e-15 {
@@ -222,43 +236,76 @@ impl Embedded {
         (100.0 * h0).min(h1).min(self.max_step)
     }
 
-    /// Tries one step of length `h`.
+    /// Tries one step of length `h` from `(t, y)` with `f(t, y)` in
+    /// `stages[0]`: the stages, the solution in `trial` (the last stage's
+    /// argument: first same as last) and the error estimate's norm.
     fn attempt(
         &mut self,
         system: &mut dyn OdeSystem,
         t: f64,
         y: &DVector<f64>,
-        f0: &DVector<f64>,
         h: f64,
-    ) -> Result<Trial, SimulationError> {
+    ) -> Result<f64, SimulationError> {
         let tableau = self.tableau;
-        let stages = tableau.c.len();
-        let mut k: Vec<DVector<f64>> = Vec::with_capacity(stages);
-        k.push(f0.clone());
-        let mut ys = y.clone();
-        for s in 1..stages {
-            ys.copy_from(y);
+        for s in 1..tableau.c.len() {
+            self.trial.copy_from(y);
             for (j, &a) in tableau.a[s].iter().enumerate() {
                 if a != 0.0 {
-                    ys.axpy(h * a, &k[j], 1.0);
+                    self.trial.axpy(h * a, &self.stages[j], 1.0);
                 }
             }
-            let f = self.eval(system, t + tableau.c[s] * h, &ys)?;
-            k.push(f);
+            super::evaluate(
+                system,
+                &mut self.stats,
+                t + tableau.c[s] * h,
+                &self.trial,
+                &mut self.stages[s],
+            )?;
         }
-        // First same as last: the last stage's argument is the solution.
-        let mut err = DVector::zeros(y.len());
+        self.error.fill(0.0);
         for (j, &e) in tableau.e.iter().enumerate() {
             if e != 0.0 {
-                err.axpy(h * e, &k[j], 1.0);
+                self.error.axpy(h * e, &self.stages[j], 1.0);
             }
         }
-        let error = self.norm(&err, y, &ys);
-        Ok(Trial {
-            y: ys,
-            stages: k,
-            error,
-        })
+        Ok(self.norm(&self.error, y, &self.trial))
+    }
+
+    /// The dense-output coefficients of the accepted step `y → trial`.
+    fn keep_dense_output(&mut self, y: &DVector<f64>, h: f64) {
+        let last = self.stages.len() - 1;
+        match self.tableau.dense {
+            Some(d) => {
+                // Hairer's contd5: r1 = y, r2 = y1 − y, r3 = h f0 − r2,
+                // r4 = r2 − h f1 − r3, r5 = h Σ d_j k_j.
+                let [r1, r2, r3, r4, r5] = &mut self.dense[..] else {
+                    unreachable!("contd5 has five coefficients")
+                };
+                r1.copy_from(y);
+                r2.copy_from(&self.trial);
+                r2.axpy(-1.0, y, 1.0);
+                r3.copy_from(&self.stages[0]);
+                r3.axpy(-1.0, r2, h);
+                r4.copy_from(r2);
+                r4.axpy(-h, &self.stages[last], 1.0);
+                r4.axpy(-1.0, r3, 1.0);
+                r5.fill(0.0);
+                for (j, &dj) in d.iter().enumerate() {
+                    if dj != 0.0 {
+                        r5.axpy(h * dj, &self.stages[j], 1.0);
+                    }
+                }
+            }
+            None => {
+                let [y0, y1, f0, f1] = &mut self.dense[..] else {
+                    unreachable!("Hermite output has four coefficients")
+                };
+                y0.copy_from(y);
+                y1.copy_from(&self.trial);
+                f0.copy_from(&self.stages[0]);
+                f1.copy_from(&self.stages[last]);
+            }
+        }
     }
 }
 
@@ -270,12 +317,12 @@ impl Stepper for Embedded {
         y: &mut DVector<f64>,
         t_limit: f64,
     ) -> Result<(), SimulationError> {
-        let f0 = match self.f_now.take() {
-            Some(f) => f,
-            None => self.eval(system, *t, y)?,
-        };
+        if !self.f_now {
+            super::evaluate(system, &mut self.stats, *t, y, &mut self.stages[0])?;
+            self.f_now = true;
+        }
         if self.h == 0.0 {
-            self.h = self.initial_step(system, *t, y, &f0);
+            self.h = self.initial_step(system, *t, y);
         }
         let mut rejected_last = false;
         loop {
@@ -287,31 +334,9 @@ impl Stepper for Embedded {
                     cause: None,
                 });
             }
-            match self.attempt(system, *t, y, &f0, h) {
-                Ok(Trial {
-                    y: y1,
-                    stages: k,
-                    error: err,
-                }) if err <= 1.0 => {
-                    let last = k.last().expect("stages").clone();
-                    match self.tableau.dense {
-                        Some(d) => {
-                            // Hairer's contd5.
-                            let ydiff = &y1 - &*y;
-                            let bspl = &k[0] * h - &ydiff;
-                            let mut d5 = DVector::zeros(y.len());
-                            for (j, &dj) in d.iter().enumerate() {
-                                if dj != 0.0 {
-                                    d5.axpy(h * dj, &k[j], 1.0);
-                                }
-                            }
-                            let d4 = &ydiff - &last * h - &bspl;
-                            self.dense = vec![y.clone(), ydiff, bspl, d4, d5];
-                        }
-                        None => {
-                            self.dense = vec![y.clone(), y1.clone(), k[0].clone(), last.clone()]
-                        }
-                    }
+            match self.attempt(system, *t, y, h) {
+                Ok(err) if err <= 1.0 => {
+                    self.keep_dense_output(y, h);
                     self.span = (*t, *t + h);
                     // PI step control (Gustafsson; Hairer's DOPRI5, β = 0.04):
                     // the previous error damps the step's growth, which
@@ -328,13 +353,16 @@ impl Stepper for Embedded {
                     } else {
                         factor
                     };
-                    self.f_now = Some(last);
+                    // First same as last: the slope at the solution starts
+                    // the next step.
+                    let last = self.stages.len() - 1;
+                    self.stages.swap(0, last);
                     *t += h;
-                    *y = y1;
+                    std::mem::swap(y, &mut self.trial);
                     self.stats.accepted += 1;
                     return Ok(());
                 }
-                Ok(Trial { error: err, .. }) => {
+                Ok(err) => {
                     self.stats.rejected += 1;
                     rejected_last = true;
                     let factor = if err.is_finite() {
@@ -381,7 +409,7 @@ impl Stepper for Embedded {
     }
 
     fn restart(&mut self) {
-        self.f_now = None;
+        self.f_now = false;
         self.stats.restarts += 1;
     }
 

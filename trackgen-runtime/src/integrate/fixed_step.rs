@@ -38,9 +38,11 @@ impl HermiteStep {
 #[derive(Debug, Clone)]
 pub(crate) struct FixedStep {
     pub h: f64,
-    /// `f` at the current state, if still valid (the next step's first
-    /// slope, so dense output costs nothing extra).
-    f_now: Option<DVector<f64>>,
+    /// Whether `slope` holds `f` at the current state (the next step's
+    /// first slope, so dense output costs nothing extra).
+    f_now: bool,
+    /// `f` at the current state, once [`start`](Self::start) has run.
+    pub slope: DVector<f64>,
     last: HermiteStep,
     pub stats: Stats,
 }
@@ -50,7 +52,8 @@ impl FixedStep {
         let z = DVector::zeros(dimension);
         FixedStep {
             h,
-            f_now: None,
+            f_now: false,
+            slope: z.clone(),
             last: HermiteStep {
                 t0: 0.0,
                 t1: 0.0,
@@ -63,49 +66,50 @@ impl FixedStep {
         }
     }
 
-    /// `f(t, y)`, counted and checked.
+    /// `f(t, y)` into `out`, counted and checked.
     pub fn eval(
         &mut self,
         system: &mut dyn OdeSystem,
         t: f64,
         y: &DVector<f64>,
-    ) -> Result<DVector<f64>, SimulationError> {
-        super::evaluate(system, &mut self.stats, t, y)
+        out: &mut DVector<f64>,
+    ) -> Result<(), SimulationError> {
+        super::evaluate(system, &mut self.stats, t, y, out)
     }
 
-    /// The slope at the step's start: carried over, or evaluated.
+    /// Makes [`slope`](Self::slope) the slope at the step's start: carried
+    /// over, or evaluated.
     pub fn start(
         &mut self,
         system: &mut dyn OdeSystem,
         t: f64,
         y: &DVector<f64>,
-    ) -> Result<DVector<f64>, SimulationError> {
-        match self.f_now.take() {
-            Some(f) => Ok(f),
-            None => self.eval(system, t, y),
+    ) -> Result<(), SimulationError> {
+        if !self.f_now {
+            super::evaluate(system, &mut self.stats, t, y, &mut self.slope)?;
+            self.f_now = true;
         }
+        Ok(())
     }
 
-    /// Accepts the step `(t, y) → (t + h, y1)` with slope `f0` at its
-    /// start: evaluates the slope at its end, keeps both for dense output.
+    /// Accepts the step `(t, y) → (t + h, y1)`, whose start's slope is
+    /// [`slope`](Self::slope): evaluates the slope at its end, keeps both
+    /// for dense output, and moves `(t, y)` on.
     pub fn finish(
         &mut self,
         system: &mut dyn OdeSystem,
         (t, y): (&mut f64, &mut DVector<f64>),
-        (h, y1, f0): (f64, DVector<f64>, DVector<f64>),
+        (h, y1): (f64, &DVector<f64>),
     ) -> Result<(), SimulationError> {
-        let f1 = self.eval(system, *t + h, &y1)?;
-        self.last = HermiteStep {
-            t0: *t,
-            t1: *t + h,
-            y0: y.clone(),
-            y1: y1.clone(),
-            f0,
-            f1: f1.clone(),
-        };
-        self.f_now = Some(f1);
+        super::evaluate(system, &mut self.stats, *t + h, y1, &mut self.last.f1)?;
+        self.last.t0 = *t;
+        self.last.t1 = *t + h;
+        self.last.y0.copy_from(y);
+        self.last.y1.copy_from(y1);
+        std::mem::swap(&mut self.last.f0, &mut self.slope);
+        self.slope.copy_from(&self.last.f1);
         *t += h;
-        *y = y1;
+        y.copy_from(y1);
         self.stats.accepted += 1;
         Ok(())
     }
@@ -115,7 +119,7 @@ impl FixedStep {
     }
 
     pub fn restart(&mut self) {
-        self.f_now = None;
+        self.f_now = false;
         self.stats.restarts += 1;
     }
 }

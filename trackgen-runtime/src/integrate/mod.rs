@@ -39,29 +39,29 @@ use crate::error::SimulationError;
 
 /// A first-order system `y' = f(t, y)` whose evaluation may fail (a
 /// failed Newton-Raphson recovery, a singular matrix, a non-finite value).
+///
+/// States are plain slices, so a system made of subsystems hands each its
+/// part of `y` and `dy` without copying.
 pub trait OdeSystem {
     /// Length of `y`.
     fn dimension(&self) -> usize;
 
-    /// Writes `f(t, y)` into `dy`. An error rejects the step in an adaptive
-    /// integrator (which retries a shorter one) and ends the run in a
-    /// fixed-step one.
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError>;
+    /// Writes `f(t, y)` into `dy` (both of length
+    /// [`dimension`](Self::dimension)). An error rejects the step in an
+    /// adaptive integrator (which retries a shorter one) and ends the run
+    /// in a fixed-step one.
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError>;
 }
 
-/// `f(t, y)`, counted, with `y` and `f` checked for NaN or infinite
-/// components.
+/// `f(t, y)` into `dy`, counted, with `y` and `f` checked for NaN or
+/// infinite components.
 pub(crate) fn evaluate(
     system: &mut dyn OdeSystem,
     stats: &mut Stats,
     t: f64,
     y: &DVector<f64>,
-) -> Result<DVector<f64>, SimulationError> {
+    dy: &mut DVector<f64>,
+) -> Result<(), SimulationError> {
     // One check for every system: a NaN stage state is this integrator's
     // business (a rejected step), not each right-hand side's.
     if !y.iter().all(|v| v.is_finite()) {
@@ -70,11 +70,10 @@ pub(crate) fn evaluate(
             what: "the state",
         });
     }
-    let mut dy = DVector::zeros(y.len());
     stats.evaluations += 1;
-    system.derivative(t, y, &mut dy)?;
+    system.derivative(t, y.as_slice(), dy.as_mut_slice())?;
     if dy.iter().all(|v| v.is_finite()) {
-        Ok(dy)
+        Ok(())
     } else {
         Err(SimulationError::NonFinite {
             t,

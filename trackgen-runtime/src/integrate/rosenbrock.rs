@@ -18,7 +18,8 @@ const GAMMA: f64 = 1.0 + std::f64::consts::FRAC_1_SQRT_2;
 ///
 /// L-stable, and second order for *any* matrix `J`, so the Jacobian is
 /// taken by forward differences once per step. Fixed step. Each step costs
-/// `dimension + 2` evaluations of `f` and one LU factorisation: it pays off
+/// `dimension + 2` evaluations of `f` and one LU factorisation (its
+/// matrices are allocated per step, a small cost beside those): it pays off
 /// when the stiffest mode (contact, penalty springs) forces an explicit
 /// method to steps far below the accuracy the motion needs.
 #[derive(Debug, Clone)]
@@ -45,11 +46,12 @@ impl Rosenbrock2 {
         let n = y.len();
         let mut jac = DMatrix::zeros(n, n);
         let mut yp = y.clone();
+        let mut fp = DVector::zeros(n);
         for i in 0..n {
             let d = f64::EPSILON.sqrt() * y[i].abs().max(1.0);
             yp[i] = y[i] + d;
-            let fp = self.state.eval(system, t, &yp)?;
-            jac.set_column(i, &((fp - f0) / d));
+            self.state.eval(system, t, &yp, &mut fp)?;
+            jac.set_column(i, &((&fp - f0) / d));
             yp[i] = y[i];
         }
         Ok(jac)
@@ -65,7 +67,8 @@ impl Stepper for Rosenbrock2 {
         t_limit: f64,
     ) -> Result<(), SimulationError> {
         let h = self.state.h.min(t_limit - *t);
-        let f0 = self.state.start(system, *t, y)?;
+        self.state.start(system, *t, y)?;
+        let f0 = self.state.slope.clone();
         let jac = self.jacobian(system, *t, y, &f0)?;
         let n = y.len();
         let w = DMatrix::<f64>::identity(n, n) - jac * (GAMMA * h);
@@ -75,10 +78,11 @@ impl Stepper for Rosenbrock2 {
             what: "I − γhJ of the Rosenbrock step",
         };
         let k1 = lu.solve(&f0).ok_or_else(singular)?;
-        let f1 = self.state.eval(system, *t + h, &(&*y + &k1 * h))?;
+        let mut f1 = DVector::zeros(n);
+        self.state.eval(system, *t + h, &(&*y + &k1 * h), &mut f1)?;
         let k2 = lu.solve(&(f1 - &k1 * 2.0)).ok_or_else(singular)?;
         let y1 = &*y + (&k1 * 1.5 + &k2 * 0.5) * h;
-        self.state.finish(system, (t, y), (h, y1, f0))
+        self.state.finish(system, (t, y), (h, &y1))
     }
 
     fn interpolate(&self, t: f64) -> DVector<f64> {

@@ -1,3 +1,4 @@
+use crate::closure::penalty::PenaltyJoint;
 use nalgebra::Vector2;
 
 /// How a track loop is closed (spec §2).
@@ -10,12 +11,7 @@ pub enum Closure {
     Partitioned,
     /// The closing joint is cut and replaced by a spring-damper between the
     /// two joint points (paper Fig. 5): `F = −k (P_n − P_1) − c (Ṗ_n − Ṗ_1)`.
-    Penalty {
-        /// `k`, N/m.
-        stiffness: f64,
-        /// `c`, N s/m.
-        damping: f64,
-    },
+    Penalty(PenaltyJoint),
 }
 
 impl Closure {

@@ -161,7 +161,7 @@ impl ReferenceModel {
             f[2 * n + b] += load.moment;
         }
         if let Some(joint) = self.tree.loop_joint
-            && let Closure::Penalty { stiffness, damping } = joint.closure
+            && let Closure::Penalty(penalty) = joint.closure
         {
             let last = n - 1;
             let (arm_n, arm_1) = (
@@ -175,7 +175,7 @@ impl ReferenceModel {
             };
             let gap = (r[last] + arm_n) - (r[0] + arm_1);
             let rate = point_velocity(last, arm_n) - point_velocity(0, arm_1);
-            let force = -gap * stiffness - rate * damping;
+            let force = penalty.force(gap, rate);
             for (b, arm, sign) in [(last, arm_n, 1.0), (0, arm_1, -1.0)] {
                 let l = BodyLoad::force_at(force * sign, arm);
                 f[2 * b] += l.force.x;

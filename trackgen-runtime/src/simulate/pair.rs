@@ -3,10 +3,11 @@ use nalgebra::DVector;
 use super::{Simulated, SimulationError, Switch};
 use crate::integrate::OdeSystem;
 
-/// Two subsystems integrated together, their states concatenated: the
-/// chassis and the track of a vehicle (spec §3: assembled separately,
-/// coupled only through the forces between them). Columns are prefixed
-/// with the subsystems' names.
+/// Two subsystems integrated together, their states side by side in one
+/// vector: the chassis and the track of a vehicle (spec §3: assembled
+/// separately, coupled only through the forces between them). Each
+/// subsystem works on its own part of the state, in place: nothing is
+/// copied per evaluation. Columns are prefixed with the subsystems' names.
 pub struct Pair<A, B> {
     first: A,
     second: B,
@@ -33,12 +34,19 @@ impl<A: Simulated, B: Simulated> Pair<A, B> {
         &self.second
     }
 
-    fn split(&self, y: &DVector<f64>) -> (DVector<f64>, DVector<f64>) {
-        let n = self.first.dimension();
-        (
-            y.rows(0, n).into_owned(),
-            y.rows(n, y.len() - n).into_owned(),
-        )
+    /// Both subsystems, to change.
+    pub(crate) fn parts_mut(&mut self) -> (&mut A, &mut B) {
+        (&mut self.first, &mut self.second)
+    }
+
+    /// The first subsystem's part of a state and the second's.
+    pub(crate) fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], &'y [f64]) {
+        y.split_at(self.first.dimension())
+    }
+
+    /// [`split`](Self::split), to change.
+    pub(crate) fn split_mut<'y>(&self, y: &'y mut [f64]) -> (&'y mut [f64], &'y mut [f64]) {
+        y.split_at_mut(self.first.dimension())
     }
 }
 
@@ -47,19 +55,11 @@ impl<A: Simulated, B: Simulated> OdeSystem for Pair<A, B> {
         self.first.dimension() + self.second.dimension()
     }
 
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let (ya, yb) = self.split(y);
-        let (mut da, mut db) = (DVector::zeros(ya.len()), DVector::zeros(yb.len()));
-        self.first.derivative(t, &ya, &mut da)?;
-        self.second.derivative(t, &yb, &mut db)?;
-        dy.rows_mut(0, da.len()).copy_from(&da);
-        dy.rows_mut(da.len(), db.len()).copy_from(&db);
-        Ok(())
+        let (da, db) = self.split_mut(dy);
+        self.first.derivative(t, ya, da)?;
+        self.second.derivative(t, yb, db)
     }
 }
 
@@ -80,37 +80,23 @@ impl<A: Simulated, B: Simulated> Simulated for Pair<A, B> {
         first.chain(second).collect()
     }
 
-    fn observe(
+    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
+        let (ya, yb) = self.split(y);
+        self.first.observe(t, ya, row)?;
+        self.second.observe(t, yb, row)
+    }
+
+    fn after_step(
         &mut self,
         t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
-        let (ya, yb) = self.split(y);
-        self.first.observe(t, &ya, row)?;
-        self.second.observe(t, &yb, row)
-    }
-
-    fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
-        let (mut ya, mut yb) = self.split(y);
-        let n = ya.len();
-        // Each subsystem's change is written back at once, so a failure of
-        // the second leaves the first's (recorded) change in the state.
-        let first = self.first.after_step(t, &mut ya)?;
-        if first {
-            y.rows_mut(0, n).copy_from(&ya);
-        }
-        let second = self.second.after_step(t, &mut yb)?;
-        if second {
-            y.rows_mut(n, yb.len()).copy_from(&yb);
-        }
+        y: &mut [f64],
+        switched: &mut dyn FnMut(Switch),
+    ) -> Result<bool, SimulationError> {
+        let (ya, yb) = self.split_mut(y);
+        // Each subsystem changes its part in place, so a failure of the
+        // second leaves the first's (logged) change in the state.
+        let first = self.first.after_step(t, ya, switched)?;
+        let second = self.second.after_step(t, yb, switched)?;
         Ok(first || second)
-    }
-
-    fn switches(&self) -> Vec<Switch> {
-        let mut s = self.first.switches();
-        s.extend(self.second.switches());
-        s.sort_by(|a, b| a.t.total_cmp(&b.t));
-        s
     }
 }

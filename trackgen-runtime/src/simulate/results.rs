@@ -228,4 +228,9 @@ impl Sink for Results {
     fn finish(&mut self) -> Result<(), SinkError> {
         Ok(())
     }
+
+    fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
+        self.switches.push(*switch);
+        Ok(())
+    }
 }

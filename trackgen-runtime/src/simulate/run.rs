@@ -13,23 +13,19 @@ pub trait Simulated: OdeSystem {
     fn columns(&self) -> Vec<String>;
 
     /// Appends the recorded quantities at `(t, y)` to `row`.
-    fn observe(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError>;
+    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError>;
 
     /// Called after every accepted step; may change the coordinates of the
-    /// state (re-partitioning, projection). Returns whether it did, so the
+    /// state (re-partitioning, projection), telling `switched` of every
+    /// re-partitioning. Returns whether it changed the state, so the
     /// integrator restarts.
-    fn after_step(&mut self, _t: f64, _y: &mut DVector<f64>) -> Result<bool, SimulationError> {
+    fn after_step(
+        &mut self,
+        _t: f64,
+        _y: &mut [f64],
+        _switched: &mut dyn FnMut(Switch),
+    ) -> Result<bool, SimulationError> {
         Ok(false)
-    }
-
-    /// Re-partitionings so far.
-    fn switches(&self) -> Vec<Switch> {
-        Vec::new()
     }
 }
 
@@ -69,7 +65,6 @@ pub fn simulate_with_progress(
         &mut results,
         progress,
     );
-    results.switches = system.switches();
     results.stats = stats;
     match outcome {
         Ok(()) => Ok(results),
@@ -130,7 +125,7 @@ fn run(
     let mut row = Vec::with_capacity(width);
     let mut record = |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, sink: &mut dyn Sink| {
         row.clear();
-        system.observe(t, y, &mut row)?;
+        system.observe(t, y.as_slice(), &mut row)?;
         if row.len() != width {
             return Err(RunError::Simulation(SimulationError::Setup(format!(
                 "the system recorded {} values at t = {t} s for its {width} columns",
@@ -195,7 +190,14 @@ fn run(
             }
             next += 1;
         }
-        if system.after_step(t, &mut y)? {
+        let mut logged = Ok(());
+        let changed = system.after_step(t, y.as_mut_slice(), &mut |switch| {
+            if logged.is_ok() {
+                logged = sink.switch(&switch);
+            }
+        })?;
+        logged.map_err(|source| RunError::Sink { t, source })?;
+        if changed {
             stepper.restart();
         }
         progress(t);

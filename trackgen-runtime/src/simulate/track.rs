@@ -3,9 +3,9 @@ use nalgebra::{DVector, SVector, Vector2};
 use super::loads::Loads;
 use super::observe::{masses, mechanics_columns, record_mechanics};
 use super::{Simulated, SimulationError, Switch};
+use crate::closure::partitioning::{self, Partition};
 use crate::closure::{
-    ClosureMethod, MultiplierOptions, PartitionOptions, ProjectionFailure, multipliers,
-    partitioning, penalty,
+    ClosureMethod, MultiplierOptions, PenaltyJoint, ProjectionFailure, multipliers,
 };
 use crate::dynamics::LinearTimeSolver;
 use crate::integrate::OdeSystem;
@@ -18,19 +18,10 @@ enum Mode {
     /// The declared dynamics as they are: an open chain, or a chain closed
     /// by its declared penalty joint.
     AsDeclared,
-    Partitioned {
-        options: PartitionOptions,
-        /// The dependent links, 0-based.
-        pair: [usize; 2],
-        independent: Vec<usize>,
-        /// The dependent angles last recovered: Newton-Raphson's start.
-        guess: [f64; 2],
-    },
+    Partitioned(Partition),
     Multipliers(MultiplierOptions),
-    Penalty {
-        stiffness: f64,
-        damping: f64,
-    },
+    /// A penalty joint chosen at run time.
+    Penalty(PenaltyJoint),
 }
 
 /// A track in motion, its loop closed by one of the methods of
@@ -50,7 +41,6 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     loop_length: f64,
     /// `d̄ʲ` of every link.
     spans: Vec<Vector2<f64>>,
-    switches: Vec<Switch>,
 }
 
 impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
@@ -66,41 +56,6 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         qd: SVector<f64, D>,
         method: ClosureMethod,
     ) -> Result<Self, SimulationError> {
-        let declared = M::CLOSURE;
-        let mode = match (method, declared) {
-            (ClosureMethod::Declared, Closure::Partitioned) => {
-                Self::partitioned(PartitionOptions::default())
-            }
-            (ClosureMethod::Declared, _) => Mode::AsDeclared,
-            (_, Closure::Open) => {
-                return Err(SimulationError::Setup(
-                    "the track is declared `closure: open`; declare it `partitioned` to close its loop".into(),
-                ));
-            }
-            (_, Closure::Penalty { .. }) => {
-                return Err(SimulationError::Setup(
-                    "the track is declared with a penalty joint; declare it `partitioned` to choose the closure method at run time".into(),
-                ));
-            }
-            (ClosureMethod::Partitioning(options), Closure::Partitioned) => {
-                Self::partitioned(options)
-            }
-            (ClosureMethod::Multipliers(options), Closure::Partitioned) => {
-                Mode::Multipliers(options)
-            }
-            (ClosureMethod::Penalty { stiffness, damping }, Closure::Partitioned) => {
-                if !(stiffness > 0.0
-                    && stiffness.is_finite()
-                    && damping >= 0.0
-                    && damping.is_finite())
-                {
-                    return Err(SimulationError::Setup(format!(
-                        "penalty stiffness must be positive and damping non-negative, got k = {stiffness}, c = {damping}"
-                    )));
-                }
-                Mode::Penalty { stiffness, damping }
-            }
-        };
         let description = model.description();
         let spans = description.link_spans().unwrap_or_default();
         let loop_length = spans
@@ -108,6 +63,32 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             .map(|d| d.norm())
             .sum::<f64>()
             .max(f64::MIN_POSITIVE);
+        let mode = match (method, M::CLOSURE) {
+            (ClosureMethod::Declared, Closure::Partitioned) => {
+                Mode::Partitioned(Partition::new(Default::default(), loop_length))
+            }
+            (ClosureMethod::Declared, _) => Mode::AsDeclared,
+            (_, Closure::Open) => {
+                return Err(SimulationError::Setup(
+                    "the track is declared `closure: open`; declare it `partitioned` to close its loop".into(),
+                ));
+            }
+            (_, Closure::Penalty(_)) => {
+                return Err(SimulationError::Setup(
+                    "the track is declared with a penalty joint; declare it `partitioned` to choose the closure method at run time".into(),
+                ));
+            }
+            (ClosureMethod::Partitioning(options), Closure::Partitioned) => {
+                Mode::Partitioned(Partition::new(options, loop_length))
+            }
+            (ClosureMethod::Multipliers(options), Closure::Partitioned) => {
+                Mode::Multipliers(options)
+            }
+            (ClosureMethod::Penalty(joint), Closure::Partitioned) => {
+                joint.check().map_err(SimulationError::Setup)?;
+                Mode::Penalty(joint)
+            }
+        };
         let mut system = TrackSystem {
             solver: LinearTimeSolver::new(&model),
             masses: masses(&model),
@@ -117,19 +98,9 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             loads: Loads::new(M::BODIES),
             loop_length,
             spans,
-            switches: Vec::new(),
         };
         system.y0 = system.start(q, qd)?;
         Ok(system)
-    }
-
-    fn partitioned(options: PartitionOptions) -> Mode {
-        Mode::Partitioned {
-            options,
-            pair: [0, 1],
-            independent: Vec::new(),
-            guess: [0.0; 2],
-        }
     }
 
     /// Applied loads besides gravity (a sprocket torque, say).
@@ -149,7 +120,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// The dependent links now (numbered from 1), under partitioning.
     pub fn dependent_pair(&self) -> Option<[usize; 2]> {
         match &self.mode {
-            Mode::Partitioned { pair, .. } => Some([pair[0] + 1, pair[1] + 1]),
+            Mode::Partitioned(p) => Some(p.pair().map(|l| l + 1)),
             _ => None,
         }
     }
@@ -157,9 +128,29 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// `(q_i, q̇_i)` of the state `y`, the closure recovered under
     /// partitioning.
     pub fn coordinates(
-        &mut self,
+        &self,
         t: f64,
-        y: &DVector<f64>,
+        y: &[f64],
+    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        self.expand(t, y, None)
+    }
+
+    /// [`coordinates`](Self::coordinates), also writing every link's
+    /// `(sin θ, cos θ)` at the recovered angles into `trig`.
+    pub(crate) fn coordinates_with_trig(
+        &self,
+        t: f64,
+        y: &[f64],
+        trig: &mut [(f64, f64)],
+    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+        self.expand(t, y, Some(trig))
+    }
+
+    fn expand(
+        &self,
+        t: f64,
+        y: &[f64],
+        trig: Option<&mut [(f64, f64)]>,
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
         if y.len() != self.y0.len() {
             return Err(SimulationError::Setup(format!(
@@ -169,54 +160,45 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             )));
         }
         match &self.mode {
-            Mode::Partitioned { .. } => self.expand(t, y, None),
-            _ => Ok((
-                SVector::from_fn(|i, _| y[i]),
-                SVector::from_fn(|i, _| y[D + i]),
-            )),
+            Mode::Partitioned(partition) => partition.expand(&self.spans, t, y, trig),
+            _ => {
+                let q = SVector::from_column_slice(&y[..D]);
+                if let Some(trig) = trig {
+                    for (j, sc) in trig.iter_mut().enumerate() {
+                        *sc = q[2 + j].sin_cos();
+                    }
+                }
+                Ok((q, SVector::from_column_slice(&y[D..])))
+            }
         }
     }
 
-    /// [`coordinates`](Self::coordinates), also writing every link's
-    /// `(sin θ, cos θ)` at the recovered angles into `trig`.
-    pub(crate) fn coordinates_with_trig(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        trig: &mut [(f64, f64)],
-    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
-        if let Mode::Partitioned { .. } = self.mode
-            && y.len() == self.y0.len()
-        {
-            return self.expand(t, y, Some(trig));
+    /// The penalty joint acting, declared or chosen at run time.
+    fn penalty(&self) -> Option<PenaltyJoint> {
+        match (&self.mode, M::CLOSURE) {
+            (Mode::Penalty(joint), _) => Some(*joint),
+            (Mode::AsDeclared, Closure::Penalty(joint)) => Some(joint),
+            _ => None,
         }
-        let (q, qd) = self.coordinates(t, y)?;
-        for (j, sc) in trig.iter_mut().enumerate() {
-            *sc = q[2 + j].sin_cos();
-        }
-        Ok((q, qd))
     }
 
     /// The closing joint's share of the energy books at `(q_i, q̇_i)`: the
     /// elastic energy (J) not already in the model's potential energy, and
-    /// the power dissipated (W). A penalty joint's spring `½ k |C|²` and
-    /// damper `c |Ċ|²`; zero for constraints (partitioning keeps the closure
-    /// exactly; the multiplier method's stabilisation and projection are
-    /// not accounted).
+    /// the power dissipated (W). A penalty joint's spring and damper (a
+    /// declared one's spring is in the model's potential energy already);
+    /// zero for constraints (partitioning keeps the closure exactly; the
+    /// multiplier method's stabilisation and projection are not
+    /// accounted).
     pub(crate) fn closure_energy(&self, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> (f64, f64) {
-        let rate = || (self.model.closure_jacobian(q) * qd).norm_squared();
-        match (&self.mode, M::CLOSURE) {
-            (Mode::Penalty { stiffness, damping }, _) => (
-                penalty::energy(self.model.closure(q), *stiffness),
-                damping * rate(),
-            ),
-            (Mode::AsDeclared, Closure::Penalty { damping, .. }) => (0.0, damping * rate()),
-            _ => (0.0, 0.0),
-        }
-    }
-
-    fn tolerance(&self, fraction: f64) -> f64 {
-        fraction * self.loop_length
+        let Some(joint) = self.penalty() else {
+            return (0.0, 0.0);
+        };
+        let rate = self.model.closure_jacobian(q) * qd;
+        let elastic = match self.mode {
+            Mode::Penalty(_) => joint.energy(self.model.closure(q)),
+            _ => 0.0,
+        };
+        (elastic, joint.dissipation(rate))
     }
 
     /// Makes the start consistent and returns the initial state.
@@ -225,57 +207,19 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         mut q: SVector<f64, D>,
         mut qd: SVector<f64, D>,
     ) -> Result<DVector<f64>, SimulationError> {
-        let singular = |what| SimulationError::SingularMatrix { t: 0.0, what };
-        let tolerance = match &self.mode {
-            Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
-            Mode::Multipliers(options) => self.tolerance(options.tolerance),
-            Mode::Penalty { .. } => self.tolerance(MultiplierOptions::default().tolerance),
-            Mode::AsDeclared => 0.0,
-        };
+        let tolerance = self.loop_length * MultiplierOptions::default().tolerance;
         match &mut self.mode {
-            Mode::Partitioned {
-                options,
-                pair,
-                independent,
-                guess,
-            } => {
-                let cq = self.model.closure_jacobian(&q);
-                *pair = match options.initial_pair {
-                    Some([a, b])
-                        if a != b && (1..=D - 2).contains(&a) && (1..=D - 2).contains(&b) =>
-                    {
-                        [a - 1, b - 1]
-                    }
-                    Some(p) => {
-                        return Err(SimulationError::Setup(format!(
-                            "initial_pair {p:?}: two different links from 1 to {}",
-                            D - 2
-                        )));
-                    }
-                    None => partitioning::best_pair(&cq).0,
-                };
-                *independent = partitioning::independent_coordinates(D, *pair);
-                partitioning::recover_positions(
-                    &self.model,
-                    &mut q,
-                    *pair,
-                    tolerance,
-                    options.newton_max_iterations,
-                )
-                .map_err(|(iterations, residual)| {
-                    SimulationError::NewtonFailed {
-                        t: 0.0,
-                        iterations,
-                        residual,
-                    }
-                })?;
-                *guess = [q[2 + pair[0]], q[2 + pair[1]]];
-                let cq = self.model.closure_jacobian(&q);
-                partitioning::recover_velocities(&cq, &mut qd, *pair)
-                    .ok_or_else(|| singular("C_d at the start"))?;
-                Ok(Self::pack(independent, &q, &qd))
+            Mode::Partitioned(partition) => {
+                partition.start(&self.model, &mut q, &mut qd)?;
+                let mut y = DVector::zeros(partition.dimension::<D>());
+                partition.pack(&q, &qd, y.as_mut_slice());
+                Ok(y)
             }
-            Mode::Multipliers(_) | Mode::Penalty { .. } => {
+            Mode::Multipliers(_) | Mode::Penalty(_) => {
+                let tolerance = match &self.mode {
+                    Mode::Multipliers(options) => self.loop_length * options.tolerance,
+                    _ => tolerance,
+                };
                 multipliers::project(&self.model, &mut q, &mut qd, tolerance).map_err(|failure| {
                     SimulationError::Setup(format!(
                         "the initial state cannot be projected onto the loop closure: {failure:?}"
@@ -291,76 +235,6 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 q.iter().chain(qd.iter()).copied(),
             )),
         }
-    }
-
-    fn pack(independent: &[usize], q: &SVector<f64, D>, qd: &SVector<f64, D>) -> DVector<f64> {
-        let n = independent.len();
-        DVector::from_fn(2 * n, |i, _| {
-            if i < n {
-                q[independent[i]]
-            } else {
-                qd[independent[i - n]]
-            }
-        })
-    }
-
-    /// Partitioning: `(q_i, q̇_i)` from `[z, ż]`.
-    fn expand(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        trig: Option<&mut [(f64, f64)]>,
-    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
-        let tolerance = match &self.mode {
-            Mode::Partitioned { options, .. } => self.tolerance(options.newton_tolerance),
-            _ => unreachable!("expand is for partitioned states"),
-        };
-        let Mode::Partitioned {
-            options,
-            pair,
-            independent,
-            guess,
-        } = &mut self.mode
-        else {
-            unreachable!()
-        };
-        let n = independent.len();
-        let mut q = SVector::<f64, D>::zeros();
-        let mut qd = SVector::<f64, D>::zeros();
-        for (i, &c) in independent.iter().enumerate() {
-            q[c] = y[i];
-            qd[c] = y[n + i];
-        }
-        q[2 + pair[0]] = guess[0];
-        q[2 + pair[1]] = guess[1];
-        partitioning::recover(
-            &self.spans,
-            &mut q,
-            Some(&mut qd),
-            *pair,
-            tolerance,
-            options.newton_max_iterations,
-            trig,
-        )
-        .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
-            t,
-            iterations,
-            residual,
-        })?;
-        // The start is the last accepted state's pair (never a rejected
-        // trial's), so the result does not depend on the call history; a
-        // jump of more than π/2 is the closure's mirror solution.
-        let jump = (q[2 + pair[0]] - guess[0])
-            .abs()
-            .max((q[2 + pair[1]] - guess[1]).abs());
-        if jump > std::f64::consts::FRAC_PI_2 {
-            return Err(SimulationError::BranchJump {
-                t,
-                pair: [pair[0] + 1, pair[1] + 1],
-                jump,
-            });
-        }
-        Ok((q, qd))
     }
 
     /// Loads from outside the subsystem (contact with another), added to
@@ -380,30 +254,27 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         qd: &SVector<f64, D>,
         trig: Option<&[(f64, f64)]>,
     ) -> Result<SVector<f64, D>, SimulationError> {
+        let penalty = self.penalty();
         let loads = self.loads.fill(t, q, qd);
         let dynamics = |source| SimulationError::Dynamics { t, source };
         let (constrained, stabilisation, penalty) = match &self.mode {
-            Mode::AsDeclared => {
-                return Ok(self
-                    .solver
-                    .forward_dynamics(&self.model, q, qd, loads)
-                    .map_err(dynamics)?
-                    .qdd);
+            Mode::AsDeclared if !M::CLOSURE.is_constrained() => {
+                let force = penalty.map(|joint| {
+                    joint.force(self.model.closure(q), self.model.closure_jacobian(q) * qd)
+                });
+                (false, Vector2::zeros(), force)
             }
-            Mode::Penalty { stiffness, damping } => {
-                let rate = self.model.closure_jacobian(q) * qd;
-                (
-                    false,
-                    Vector2::zeros(),
-                    Some(-self.model.closure(q) * *stiffness - rate * *damping),
-                )
-            }
-            Mode::Multipliers(options) => {
-                let (c, rate) = (self.model.closure(q), self.model.closure_jacobian(q) * qd);
-                let omega = options.baumgarte;
-                (true, rate * (2.0 * omega) + c * (omega * omega), None)
-            }
-            Mode::Partitioned { .. } => (true, Vector2::zeros(), None),
+            Mode::Penalty(joint) => (
+                false,
+                Vector2::zeros(),
+                Some(joint.force(self.model.closure(q), self.model.closure_jacobian(q) * qd)),
+            ),
+            Mode::Multipliers(options) => (
+                true,
+                options.stabilisation(self.model.closure(q), self.model.closure_jacobian(q) * qd),
+                None,
+            ),
+            Mode::Partitioned(_) | Mode::AsDeclared => (true, Vector2::zeros(), None),
         };
         let (qdd, _) = self
             .solver
@@ -411,25 +282,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             .map_err(dynamics)?;
         Ok(qdd)
     }
-}
 
-impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
-    fn dimension(&self) -> usize {
-        self.y0.len()
-    }
-
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
-        let (q, qd) = self.coordinates(t, y)?;
-        self.derivative_at(t, &q, &qd, dy, None)
-    }
-}
-
-impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// The state's derivative from coordinates already recovered by
     /// [`coordinates`](Self::coordinates) (so an enclosing system that needs
     /// them too recovers them once).
@@ -438,26 +291,29 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         t: f64,
         q: &SVector<f64, D>,
         qd: &SVector<f64, D>,
-        dy: &mut DVector<f64>,
+        dy: &mut [f64],
         trig: Option<&[(f64, f64)]>,
     ) -> Result<(), SimulationError> {
         let qdd = self.accelerations(t, q, qd, trig)?;
         match &self.mode {
-            Mode::Partitioned { independent, .. } => {
-                let n = independent.len();
-                for (i, &c) in independent.iter().enumerate() {
-                    dy[i] = qd[c];
-                    dy[n + i] = qdd[c];
-                }
-            }
+            Mode::Partitioned(partition) => partition.pack(qd, &qdd, dy),
             _ => {
-                for i in 0..D {
-                    dy[i] = qd[i];
-                    dy[D + i] = qdd[i];
-                }
+                dy[..D].copy_from_slice(qd.as_slice());
+                dy[D..].copy_from_slice(qdd.as_slice());
             }
         }
         Ok(())
+    }
+}
+
+impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
+    fn dimension(&self) -> usize {
+        self.y0.len()
+    }
+
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
+        let (q, qd) = self.coordinates(t, y)?;
+        self.derivative_at(t, &q, &qd, dy, None)
     }
 }
 
@@ -472,36 +328,36 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
         c
     }
 
-    fn observe(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
+    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         let (q, qd) = self.coordinates(t, y)?;
         let gap = self.model.closure(&q);
         let cq = self.model.closure_jacobian(&q);
         let spring = match &self.mode {
-            Mode::Penalty { stiffness, .. } => penalty::energy(gap, *stiffness),
+            Mode::Penalty(joint) => joint.energy(gap),
             _ => 0.0,
         };
         record_mechanics(&self.model, &self.masses, &q, &qd, spring, row);
         let conditioning = match &self.mode {
-            Mode::Partitioned { pair, .. } => partitioning::conditioning(&cq, *pair),
+            Mode::Partitioned(partition) => partitioning::conditioning(&cq, partition.pair()),
             _ => partitioning::best_pair(&cq).1,
         };
         row.extend([gap.norm(), (cq * qd).norm(), conditioning]);
         Ok(())
     }
 
-    fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
+    fn after_step(
+        &mut self,
+        t: f64,
+        y: &mut [f64],
+        switched: &mut dyn FnMut(Switch),
+    ) -> Result<bool, SimulationError> {
         match &self.mode {
-            Mode::AsDeclared | Mode::Penalty { .. } => Ok(false),
+            Mode::AsDeclared | Mode::Penalty(_) => Ok(false),
             Mode::Multipliers(options) => {
                 if !options.projection {
                     return Ok(false);
                 }
-                let tolerance = self.tolerance(options.tolerance);
+                let tolerance = self.loop_length * options.tolerance;
                 let (mut q, mut qd) = self.coordinates(t, y)?;
                 multipliers::project(&self.model, &mut q, &mut qd, tolerance).map_err(
                     |failure| match failure {
@@ -519,60 +375,23 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                         },
                     },
                 )?;
-                for i in 0..D {
-                    y[i] = q[i];
-                    y[D + i] = qd[i];
-                }
+                y[..D].copy_from_slice(q.as_slice());
+                y[D..].copy_from_slice(qd.as_slice());
                 Ok(true)
             }
-            Mode::Partitioned { .. } => {
-                let (q, qd) = self.expand(t, y, None)?;
-                let cq = self.model.closure_jacobian(&q);
-                let Mode::Partitioned {
-                    options,
-                    pair,
-                    independent,
-                    guess,
-                } = &mut self.mode
-                else {
-                    unreachable!()
+            Mode::Partitioned(_) => {
+                let (q, qd) = self.coordinates(t, y)?;
+                let Mode::Partitioned(partition) = &mut self.mode else {
+                    unreachable!("matched above")
                 };
-                *guess = [q[2 + pair[0]], q[2 + pair[1]]];
-                let now = partitioning::conditioning(&cq, *pair);
-                if !options.switching {
-                    if now < options.singular_below {
-                        return Err(SimulationError::SingularPartition {
-                            t,
-                            pair: [pair[0] + 1, pair[1] + 1],
-                            conditioning: now,
-                        });
+                match partition.accept(&self.model, t, &q, &qd, y)? {
+                    Some(switch) => {
+                        switched(switch);
+                        Ok(true)
                     }
-                    return Ok(false);
+                    None => Ok(false),
                 }
-                if now >= options.switch_below {
-                    return Ok(false);
-                }
-                let (best, better) = partitioning::best_pair(&cq);
-                if best == *pair {
-                    return Ok(false);
-                }
-                self.switches.push(Switch {
-                    t,
-                    from: [pair[0] + 1, pair[1] + 1],
-                    to: [best[0] + 1, best[1] + 1],
-                    conditioning: now,
-                    new_conditioning: better,
-                });
-                *pair = best;
-                *independent = partitioning::independent_coordinates(D, best);
-                *guess = [q[2 + best[0]], q[2 + best[1]]];
-                *y = Self::pack(independent, &q, &qd);
-                Ok(true)
             }
         }
-    }
-
-    fn switches(&self) -> Vec<Switch> {
-        self.switches.clone()
     }
 }

@@ -58,10 +58,11 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         &self.model
     }
 
-    pub(crate) fn split(y: &DVector<f64>) -> (SVector<f64, D>, SVector<f64, D>) {
+    /// `(q_i, q̇_i)` of a state `y = [q_i, q̇_i]`.
+    pub(crate) fn split(y: &[f64]) -> (SVector<f64, D>, SVector<f64, D>) {
         (
-            SVector::from_fn(|i, _| y[i]),
-            SVector::from_fn(|i, _| y[D + i]),
+            SVector::from_column_slice(&y[..D]),
+            SVector::from_column_slice(&y[D..2 * D]),
         )
     }
 
@@ -94,12 +95,7 @@ impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
         2 * D
     }
 
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let (q, qd) = Self::split(y);
         let loads = self.loads.fill(t, &q, &qd);
         let acc = open_dynamics(&self.model, &q, &qd, loads)
@@ -121,12 +117,7 @@ impl<M: RecursiveModel<D>, const D: usize> Simulated for TreeSystem<M, D> {
         mechanics_columns(M::BODIES, |b| self.names[b].clone())
     }
 
-    fn observe(
-        &mut self,
-        _t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
+    fn observe(&mut self, _t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         let (q, qd) = Self::split(y);
         record_mechanics(&self.model, &self.masses, &q, &qd, 0.0, row);
         Ok(())

@@ -41,9 +41,7 @@ fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
         .map(|(i, part)| {
             let radius = match part.kind {
                 // The joints sit in the gaps: a regular polygon of the pitch.
-                PartKind::Sprocket => {
-                    pitch / (2.0 * (std::f64::consts::PI / profile.teeth as f64).sin())
-                }
+                PartKind::Sprocket => crate::contact::sprocket::pitch_radius(profile.teeth, pitch),
                 // The shoes' inner faces (chords) rest on the rim.
                 _ => (part.radius + shoe.inner_offset()).hypot(pitch / 2.0),
             };

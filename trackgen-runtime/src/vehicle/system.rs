@@ -3,12 +3,12 @@ use nalgebra::{DVector, SVector, Vector2};
 use super::{Drive, tensions};
 use crate::closure::ClosureMethod;
 use crate::contact::ground::GroundContact;
-use crate::contact::sprocket::{SprocketContact, ToothProfile};
+use crate::contact::sprocket::{SprocketContact, ToothProfile, pitch_radius};
 use crate::contact::wheel::WheelContact;
 use crate::contact::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
 use crate::integrate::OdeSystem;
-use crate::model::{ArmSpring, BodyLoad, ChassisModel, PartKind, RecursiveModel, TrackModel};
-use crate::simulate::{Simulated, SimulationError, Switch, TrackSystem, TreeSystem};
+use crate::model::{ArmSpring, BodyLoad, ChassisModel, PartKind, TrackModel};
+use crate::simulate::{Pair, Simulated, SimulationError, Switch, TrackSystem, TreeSystem};
 use crate::suspension::{add_arm_torques_of, arm_dissipation_of, arm_energy_of, declared_arms};
 
 /// How a vehicle meets the world: shoe geometry, the three contact pairs,
@@ -208,23 +208,37 @@ impl ContactSummary {
 /// (J, integrated alongside so the energy balance is exact to the
 /// integration tolerance).
 pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> {
-    track: TrackSystem<T, DT>,
-    chassis: TreeSystem<C, DC>,
+    /// Track and chassis, their states side by side.
+    bodies: Pair<TrackSystem<T, DT>, TreeSystem<C, DC>>,
     config: VehicleConfig,
     /// Index of the sprocket in `C::PARTS`.
     sprocket: Option<usize>,
     sprocket_radius: f64,
     /// The arms' springs in force: the configuration's, or the compiled.
     arms: Vec<ArmSpring>,
-    track_loads: Vec<BodyLoad>,
-    chassis_loads: Vec<BodyLoad>,
     /// `ū2` of every link: the joint to the next.
     forward_joints: Vec<Vector2<f64>>,
-    /// `(sin θ, cos θ)` of every link at the last contact evaluation, for
-    /// the dynamics to reuse.
-    link_trig: Vec<(f64, f64)>,
+    /// What an evaluation works in, allocated once.
+    scratch: Scratch,
     y0: DVector<f64>,
 }
+
+/// The buffers of an evaluation.
+struct Scratch {
+    track_loads: Vec<BodyLoad>,
+    chassis_loads: Vec<BodyLoad>,
+    /// `(sin θ, cos θ)` of every link, from the closure's recovery, shared
+    /// by the contact states and the dynamics.
+    link_trig: Vec<(f64, f64)>,
+    links: Vec<BodyState>,
+    parts: Vec<BodyState>,
+    positions: Vec<Vector2<f64>>,
+    velocities: Vec<Vector2<f64>>,
+}
+
+/// The drive's integral, the motor's work and the dissipated work: the
+/// three states a vehicle integrates after its bodies'.
+const EXTRA_STATES: usize = 3;
 
 impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
     VehicleSystem<T, DT, C, DC>
@@ -276,8 +290,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             .description()
             .link_spans()
             .map_or(0.0, |s| s[0].norm());
-        let sprocket_radius =
-            pitch / (2.0 * (std::f64::consts::PI / config.sprocket.profile.teeth as f64).sin());
+        let sprocket_radius = pitch_radius(config.sprocket.profile.teeth, pitch);
         let description = track.model().description();
         let forward_joints = (0..T::BODIES)
             .map(|j| match description.bodies.get(j + 1) {
@@ -287,22 +300,30 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                     .map_or(Vector2::zeros(), |l| l.last_u2),
             })
             .collect();
-        let (a, b) = (track.initial_state(), chassis.initial_state());
+        let bodies = Pair::new(track, "track", chassis, "chassis");
+        let start = bodies.initial_state();
         let y0 = DVector::from_iterator(
-            a.len() + b.len() + 3,
-            a.iter().chain(b.iter()).copied().chain([0.0; 3]),
+            start.len() + EXTRA_STATES,
+            start.iter().copied().chain([0.0; EXTRA_STATES]),
         );
+        let largest = T::BODIES.max(C::BODIES);
+        let resting = BodyState::new(Vector2::zeros(), 0.0, Vector2::zeros(), 0.0);
         Ok(VehicleSystem {
-            track,
-            chassis,
+            bodies,
             config,
             sprocket,
             sprocket_radius,
             arms,
-            track_loads: vec![BodyLoad::ZERO; T::BODIES],
-            chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
             forward_joints,
-            link_trig: vec![(0.0, 1.0); T::BODIES],
+            scratch: Scratch {
+                track_loads: vec![BodyLoad::ZERO; T::BODIES],
+                chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
+                link_trig: vec![(0.0, 1.0); T::BODIES],
+                links: vec![resting; T::BODIES],
+                parts: vec![resting; C::BODIES],
+                positions: vec![Vector2::zeros(); largest],
+                velocities: vec![Vector2::zeros(); largest],
+            },
             y0,
         })
     }
@@ -314,7 +335,12 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
 
     /// The track subsystem.
     pub fn track(&self) -> &TrackSystem<T, DT> {
-        &self.track
+        self.bodies.first()
+    }
+
+    /// The chassis subsystem.
+    pub fn chassis(&self) -> &TreeSystem<C, DC> {
+        self.bodies.second()
     }
 
     /// The sprocket's pitch radius, m: track speed over sprocket speed.
@@ -322,30 +348,15 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         self.sprocket_radius
     }
 
-    fn split(&self, y: &DVector<f64>) -> (DVector<f64>, DVector<f64>, [f64; 3]) {
-        let (nt, nc) = (self.track.dimension(), 2 * DC);
-        (
-            y.rows(0, nt).into_owned(),
-            y.rows(nt, nc).into_owned(),
-            [y[nt + nc], y[nt + nc + 1], y[nt + nc + 2]],
-        )
-    }
-
-    fn states<M: RecursiveModel<D>, const D: usize>(
-        model: &M,
-        q: &SVector<f64, D>,
-        qd: &SVector<f64, D>,
-    ) -> Vec<BodyState> {
-        let n = M::BODIES;
-        let (mut r, mut v) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
-        model.body_states(q, qd, &mut r, &mut v);
-        (0..n)
-            .map(|b| BodyState::new(r[b], q[2 + b], v[b], qd[2 + b]))
-            .collect()
+    /// The bodies' part of a state and the three extra states.
+    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; EXTRA_STATES]) {
+        let (bodies, extra) = y.split_at(self.bodies.dimension());
+        (bodies, [extra[0], extra[1], extra[2]])
     }
 
     /// Contact, suspension and drive loads at a state, into the load
-    /// buffers.
+    /// buffers; the links' states from the trigonometry already in
+    /// `scratch.link_trig` (the closure's recovery computed it).
     fn loads(
         &mut self,
         t: f64,
@@ -353,52 +364,55 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
         integral: f64,
     ) -> Result<ContactSummary, SimulationError> {
-        // The track's trigonometry comes from the closure's recovery.
-        let links = {
-            let n = T::BODIES;
-            let (mut r, mut v) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
-            self.track
-                .model()
-                .body_states_with_trig(&self.link_trig, qt, qdt, &mut r, &mut v);
-            (0..n)
-                .map(|b| {
-                    BodyState::with_sin_cos(r[b], qt[2 + b], self.link_trig[b], v[b], qdt[2 + b])
-                })
-                .collect::<Vec<_>>()
-        };
-        let bodies = Self::states(self.chassis.model(), qc, qdc);
-        self.track_loads.fill(BodyLoad::ZERO);
-        self.chassis_loads.fill(BodyLoad::ZERO);
+        let Scratch {
+            track_loads,
+            chassis_loads,
+            link_trig,
+            links,
+            parts,
+            positions,
+            velocities,
+        } = &mut self.scratch;
+        let (r, v) = (&mut positions[..T::BODIES], &mut velocities[..T::BODIES]);
+        self.bodies
+            .first()
+            .model()
+            .body_states_with_trig(link_trig, qt, qdt, r, v);
+        for (b, link) in links.iter_mut().enumerate() {
+            *link = BodyState::with_sin_cos(r[b], qt[2 + b], link_trig[b], v[b], qdt[2 + b]);
+        }
+        let (r, v) = (&mut positions[..C::BODIES], &mut velocities[..C::BODIES]);
+        self.bodies.second().model().body_states(qc, qdc, r, v);
+        for (b, part) in parts.iter_mut().enumerate() {
+            *part = BodyState::new(r[b], qc[2 + b], v[b], qdc[2 + b]);
+        }
+        track_loads.fill(BodyLoad::ZERO);
+        chassis_loads.fill(BodyLoad::ZERO);
         let mut s = ContactSummary::default();
         let config = &self.config;
         config
             .ground
-            .apply(&links, &config.shoe, &mut self.track_loads, |_, c| {
+            .apply(links, &config.shoe, track_loads, |_, c| {
                 s.ground_normal += c.normal;
                 let depth = s.book(c);
                 s.ground_penetration = s.ground_penetration.max(depth);
             });
         for part in C::PARTS {
-            let body = &bodies[part.body];
-            let load = &mut self.chassis_loads[part.body];
+            let body = &parts[part.body];
+            let load = &mut chassis_loads[part.body];
             if part.kind == PartKind::Sprocket {
-                config.sprocket.apply(
-                    body,
-                    &links,
-                    &config.shoe,
-                    &mut self.track_loads,
-                    load,
-                    |_, c| {
+                config
+                    .sprocket
+                    .apply(body, links, &config.shoe, track_loads, load, |_, c| {
                         let depth = s.book(c);
                         s.sprocket_penetration = s.sprocket_penetration.max(depth);
-                    },
-                );
+                    });
             } else {
                 config.wheels.apply(
                     (body, part.radius),
-                    &links,
+                    links,
                     &config.shoe,
-                    &mut self.track_loads,
+                    track_loads,
                     load,
                     |_, c| {
                         let depth = s.book(c);
@@ -407,7 +421,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 );
             }
         }
-        add_arm_torques_of(&self.arms, qc, qdc, &mut self.chassis_loads);
+        add_arm_torques_of(&self.arms, qc, qdc, chassis_loads);
         s.dissipation += arm_dissipation_of(&self.arms, qdc);
         if let Some(i) = self.sprocket {
             let body = C::PARTS[i].body;
@@ -416,8 +430,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 config
                     .drive
                     .checked_torque(t, omega, self.sprocket_radius, integral)?;
-            self.chassis_loads[body].moment += torque;
-            self.chassis_loads[0].moment -= torque;
+            chassis_loads[body].moment += torque;
+            chassis_loads[0].moment -= torque;
             s.torque = torque;
             s.integral_rate = rate;
         }
@@ -440,10 +454,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
     ) -> Option<(usize, usize)> {
         let part = &C::PARTS[self.sprocket?];
         let mut centres = vec![Vector2::zeros(); C::BODIES];
-        self.chassis.model().body_positions(qc, &mut centres);
+        self.chassis().model().body_positions(qc, &mut centres);
         let centre = centres[part.body];
         let mut links = vec![Vector2::zeros(); T::BODIES];
-        self.track.model().body_positions(qt, &mut links);
+        self.track().model().body_positions(qt, &mut links);
         let n = T::BODIES;
         let off: Vec<f64> = (0..n)
             .map(|j| {
@@ -465,6 +479,35 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         self.sprocket
             .map_or(0.0, |i| qdc[2 + C::PARTS[i].body] - qdc[2])
     }
+
+    /// Both subsystems' coordinates at a state (the track's recovered, its
+    /// trigonometry into the scratch), and the loads there.
+    #[allow(clippy::type_complexity)]
+    fn evaluate(
+        &mut self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<
+        (
+            (SVector<f64, DT>, SVector<f64, DT>),
+            (SVector<f64, DC>, SVector<f64, DC>),
+            ContactSummary,
+        ),
+        SimulationError,
+    > {
+        let (bodies, [integral, ..]) = self.split(y);
+        let (yt, yc) = self.bodies.split(bodies);
+        let (qt, qdt) =
+            self.bodies
+                .first()
+                .coordinates_with_trig(t, yt, &mut self.scratch.link_trig)?;
+        let (qc, qdc) = TreeSystem::<C, DC>::split(yc);
+        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;
+        let (track, chassis) = self.bodies.parts_mut();
+        track.set_external(&self.scratch.track_loads);
+        chassis.set_external(&self.scratch.chassis_loads);
+        Ok(((qt, qdt), (qc, qdc), s))
+    }
 }
 
 impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> OdeSystem
@@ -474,30 +517,18 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.y0.len()
     }
 
-    fn derivative(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        dy: &mut DVector<f64>,
-    ) -> Result<(), SimulationError> {
-        let (yt, yc, [integral, _, _]) = self.split(y);
-        let (qt, qdt) = self
-            .track
-            .coordinates_with_trig(t, &yt, &mut self.link_trig)?;
-        let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
-        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;
-        self.track.set_external(&self.track_loads);
-        self.chassis.set_external(&self.chassis_loads);
-        let (mut dt, mut dc) = (DVector::zeros(yt.len()), DVector::zeros(yc.len()));
-        self.track
-            .derivative_at(t, &qt, &qdt, &mut dt, Some(&self.link_trig))?;
-        self.chassis.derivative(t, &yc, &mut dc)?;
-        let (nt, nc) = (yt.len(), yc.len());
-        dy.rows_mut(0, nt).copy_from(&dt);
-        dy.rows_mut(nt, nc).copy_from(&dc);
-        dy[nt + nc] = s.integral_rate;
-        dy[nt + nc + 1] = s.torque * self.sprocket_omega(&qdc);
-        dy[nt + nc + 2] = s.dissipation + self.track.closure_energy(&qt, &qdt).1;
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
+        let ((qt, qdt), (_, qdc), s) = self.evaluate(t, y)?;
+        let nb = self.bodies.dimension();
+        let (_, yc) = self.bodies.split(&y[..nb]);
+        let (dy_bodies, extra) = dy.split_at_mut(nb);
+        let (dyt, dyc) = self.bodies.split_mut(dy_bodies);
+        let (track, chassis) = self.bodies.parts_mut();
+        track.derivative_at(t, &qt, &qdt, dyt, Some(&self.scratch.link_trig))?;
+        chassis.derivative(t, yc, dyc)?;
+        extra[0] = s.integral_rate;
+        extra[1] = s.torque * self.sprocket_omega(&qdc);
+        extra[2] = s.dissipation + self.track().closure_energy(&qt, &qdt).1;
         Ok(())
     }
 }
@@ -510,42 +541,19 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
     }
 
     fn columns(&self) -> Vec<String> {
-        let mut c: Vec<String> = self
-            .track
-            .columns()
-            .into_iter()
-            .map(|c| format!("track.{c}"))
-            .collect();
-        c.extend(
-            self.chassis
-                .columns()
-                .into_iter()
-                .map(|c| format!("chassis.{c}")),
-        );
+        let mut c = self.bodies.columns();
         c.extend(RECORDED.map(String::from));
         c
     }
 
-    fn observe(
-        &mut self,
-        t: f64,
-        y: &DVector<f64>,
-        row: &mut Vec<f64>,
-    ) -> Result<(), SimulationError> {
-        let (yt, yc, [integral, work, dissipated]) = self.split(y);
-        self.track.observe(t, &yt, row)?;
-        self.chassis.observe(t, &yc, row)?;
-        let (qt, qdt) = self
-            .track
-            .coordinates_with_trig(t, &yt, &mut self.link_trig)?;
-        let (qc, qdc) = TreeSystem::<C, DC>::split(&yc);
-        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;
-        self.track.set_external(&self.track_loads);
-        let qdd = self
-            .track
-            .accelerations(t, &qt, &qdt, Some(&self.link_trig))?;
+    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
+        let (bodies, [_, work, dissipated]) = self.split(y);
+        self.bodies.observe(t, bodies, row)?;
+        let ((qt, qdt), (qc, qdc), s) = self.evaluate(t, y)?;
+        let (track, _) = self.bodies.parts_mut();
+        let qdd = track.accelerations(t, &qt, &qdt, Some(&self.scratch.link_trig))?;
         let all =
-            tensions(self.track.model(), &qt, &qdt, &qdd, &self.track_loads).unwrap_or_default();
+            tensions(track.model(), &qt, &qdt, &qdd, &self.scratch.track_loads).unwrap_or_default();
         let tension = all
             .get(self.config.tension_link - 1)
             .copied()
@@ -554,13 +562,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             Some((before, after)) => (all.get(before).copied(), all.get(after).copied()),
             None => (None, None),
         };
-        let energy = self.track.model().kinetic_energy(&qt, &qdt)
-            + self.track.model().potential_energy(&qt)
-            + self.chassis.model().kinetic_energy(&qc, &qdc)
-            + self.chassis.model().potential_energy(&qc)
+        let (track, chassis) = (self.track().model(), self.chassis().model());
+        let energy = track.kinetic_energy(&qt, &qdt)
+            + track.potential_energy(&qt)
+            + chassis.kinetic_energy(&qc, &qdc)
+            + chassis.potential_energy(&qc)
             + arm_energy_of(&self.arms, &qc)
             + s.potential
-            + self.track.closure_energy(&qt, &qdt).0;
+            + self.track().closure_energy(&qt, &qdt).0;
         row.extend([
             qc[0],
             qc[1],
@@ -582,17 +591,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         Ok(())
     }
 
-    fn after_step(&mut self, t: f64, y: &mut DVector<f64>) -> Result<bool, SimulationError> {
-        let nt = self.track.dimension();
-        let mut yt = y.rows(0, nt).into_owned();
-        let changed = self.track.after_step(t, &mut yt)?;
-        if changed {
-            y.rows_mut(0, nt).copy_from(&yt);
-        }
-        Ok(changed)
-    }
-
-    fn switches(&self) -> Vec<Switch> {
-        self.track.switches()
+    fn after_step(
+        &mut self,
+        t: f64,
+        y: &mut [f64],
+        switched: &mut dyn FnMut(Switch),
+    ) -> Result<bool, SimulationError> {
+        let nb = self.bodies.dimension();
+        self.bodies.after_step(t, &mut y[..nb], switched)
     }
 }

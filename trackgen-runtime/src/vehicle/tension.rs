@@ -38,9 +38,7 @@ pub fn tensions<M: TrackModel<D>, const D: usize>(
     // declared penalty joint is in Q_i already (so λ ≈ 0): its spring-damper
     // pushes link 1 by −F_pen.
     let mut from_previous = match description.loop_joint.map(|j| j.closure) {
-        Some(crate::model::Closure::Penalty { stiffness, damping }) => {
-            model.closure(q) * stiffness + (cq * qd) * damping
-        }
+        Some(crate::model::Closure::Penalty(joint)) => -joint.force(model.closure(q), cq * qd),
         _ => lambda,
     };
     let mut out = Vec::with_capacity(n);

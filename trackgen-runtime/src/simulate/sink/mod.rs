@@ -35,6 +35,8 @@ pub use thinned::Thinned;
 
 use thiserror::Error;
 
+use super::Switch;
+
 /// A receiver of a run's samples, row by row.
 ///
 /// A run calls [`begin`](Sink::begin) once, then [`row`](Sink::row) for
@@ -51,6 +53,14 @@ pub trait Sink {
 
     /// The end of the run: writes out whatever is buffered.
     fn finish(&mut self) -> Result<(), SinkError>;
+
+    /// A re-partitioning of a track (spec §2), as it happens. Sinks of
+    /// rows ignore it; [`Results`](crate::simulate::Results) keeps every
+    /// one.
+    fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
+        let _ = switch;
+        Ok(())
+    }
 }
 
 impl<S: Sink + ?Sized> Sink for &mut S {
@@ -65,6 +75,10 @@ impl<S: Sink + ?Sized> Sink for &mut S {
     fn finish(&mut self) -> Result<(), SinkError> {
         (**self).finish()
     }
+
+    fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
+        (**self).switch(switch)
+    }
 }
 
 impl<S: Sink + ?Sized> Sink for Box<S> {
@@ -78,6 +92,10 @@ impl<S: Sink + ?Sized> Sink for Box<S> {
 
     fn finish(&mut self) -> Result<(), SinkError> {
         (**self).finish()
+    }
+
+    fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
+        (**self).switch(switch)
     }
 }
 

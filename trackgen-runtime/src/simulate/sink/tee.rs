@@ -1,6 +1,7 @@
 //! One run, several sinks.
 
 use super::{Sink, SinkError};
+use crate::simulate::Switch;
 
 /// Feeds every row to each of its sinks, in the order they were added:
 /// `Tee::new().and(&mut csv).and(&mut arrow).and(&mut summary)`. The first
@@ -55,6 +56,10 @@ impl Sink for Tee<'_> {
 
     fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
         self.sinks.iter_mut().try_for_each(|s| s.row(t, values))
+    }
+
+    fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
+        self.sinks.iter_mut().try_for_each(|s| s.switch(switch))
     }
 
     fn finish(&mut self) -> Result<(), SinkError> {
