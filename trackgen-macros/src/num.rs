@@ -231,6 +231,12 @@ impl Num {
         self.known() == Some(0.0)
     }
 
+    /// Whether two numbers are the same constant: the same value, or the
+    /// same named constant.
+    pub fn same(&self, other: &Num) -> bool {
+        Operand::of(self) == Operand::of(other)
+    }
+
     fn combine(self, rhs: Num, fold: fn(f64, f64) -> f64, op: char) -> Num {
         match (&self, &rhs) {
             (Num::Known(a), Num::Known(b)) => Num::Known(fold(*a, *b)),

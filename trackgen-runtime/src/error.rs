@@ -17,6 +17,18 @@ pub enum DynamicsError {
     /// loop is parallel (a fully stretched loop).
     #[error("the closure constraints are singular (C_q M_i⁻¹ C_qᵀ not invertible)")]
     SingularClosure,
+    /// A 2 × 2 block of the joint-force system of the linear-time route
+    /// (spec §5) is singular. The system is positive definite for finite
+    /// states of an open chain; a closed loop's last block is singular when
+    /// the loop is fully stretched (every link parallel).
+    #[error(
+        "the joint-force system of the linear-time dynamics is singular at joint {joint} (a stretched loop, or a non-finite state)"
+    )]
+    SingularJointSystem {
+        /// The joint (0-based; joint `j` joins link `j + 1` to the next, the
+        /// last is the closing joint).
+        joint: usize,
+    },
     /// A slice argument has the wrong length.
     #[error("{what}: expected {expected} entries, got {got}")]
     WrongLength {

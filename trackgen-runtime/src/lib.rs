@@ -45,6 +45,7 @@ pub mod vehicle;
 
 mod error;
 mod planar;
+mod trig;
 
 pub use dynamics::Accelerations;
 pub use error::DynamicsError;
@@ -53,6 +54,7 @@ pub use model::{
     RecursiveModel, TrackModel, TreeDescription,
 };
 pub use planar::{rotate, rotate_derivative};
+pub use trig::{FAST_RANGE, sin_cos, sin_cos_each};
 
 /// Items that generated code names by absolute path. Not part of the public
 /// API: it may change in any release.

@@ -7,6 +7,7 @@
 mod chassis;
 mod flat;
 mod lin;
+mod linear_time;
 mod recursive;
 mod running;
 mod stub;

@@ -108,6 +108,7 @@ pub fn track_type(
     let recursive =
         super::recursive::recursive_impl(name, &tree, loop_joint, penalty_energy(track, &tree));
     let closure_fns = closure_impl(&tree, track);
+    let linear_time = super::linear_time::linear_time_dynamics(track);
     let links_doc = format!("Number of links, `{n}`.");
     quote! {
         #(#attrs)*
@@ -126,6 +127,7 @@ pub fn track_type(
         impl #rt::runtime::TrackModel<#dof> for #name {
             const CLOSURE: #rt::runtime::Closure = #closure;
             #closure_fns
+            #linear_time
         }
     }
 }

@@ -18,12 +18,14 @@
 //! 1000 links), so every route runs on a 2 MiB thread for any track the
 //! macro accepts.
 
+mod closing;
 mod dense;
+pub mod elimination;
 mod generated;
 mod linear_time;
 
+pub use closing::{ClosingJoint, track_dynamics};
 pub use dense::Accelerations;
 pub(crate) use dense::{solve_closed, solve_open};
-pub(crate) use generated::zeroed_matrix;
 pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
 pub use linear_time::LinearTimeSolver;

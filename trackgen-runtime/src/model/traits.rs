@@ -1,6 +1,8 @@
 use nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
 
 use super::{BodyLoad, ChassisPart, Closure, TreeDescription};
+use crate::DynamicsError;
+use crate::dynamics::ClosingJoint;
 
 /// A body tree in recursive coordinates, compiled to code (spec §1, §3).
 ///
@@ -157,6 +159,35 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
 
     /// `γ_c = Σ Aʲ d̄ʲ ωʲ²`, so that `C_q q̈_i = γ_c`.
     fn closure_gamma(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> Vector2<f64>;
+
+    /// Forward dynamics in O(n) by spec §5, generated for this track: the
+    /// links' absolute accelerations and the joint forces `λ` as unknowns,
+    /// the joint forces from a block-tridiagonal system (cyclic for a
+    /// constrained loop, solved by bordering), with every per-link
+    /// constant (`1/m`, `1/J`, `m g`, the lever arms `ū1`, `ū2`) folded
+    /// into the code, and the building of each joint's blocks fused with
+    /// their elimination.
+    ///
+    /// Given every link's `(sin θ, cos θ)` (`trig`, one per link), `q̇_i`,
+    /// the loads besides gravity (one per link, or none) and how the
+    /// closing joint acts, writes `q̈_i` and every joint's force:
+    /// `joint_forces[j]` is the force link `j + 2` exerts on link `j + 1`
+    /// (N, links numbered from 1; the last is link 1's on link n: the
+    /// closing joint's, or for a cut joint the force across the cut). The
+    /// tension of joint `j` is that force along link `j + 1`'s `d̄`.
+    ///
+    /// # Panics
+    /// If `trig` or `joint_forces` is not one per link, or `loads` neither
+    /// one per link nor empty (a programming error).
+    fn linear_time_dynamics(
+        &self,
+        trig: &[(f64, f64)],
+        qd: &SVector<f64, DOF>,
+        loads: &[BodyLoad],
+        closing: ClosingJoint,
+        qdd: &mut SVector<f64, DOF>,
+        joint_forces: &mut [Vector2<f64>],
+    ) -> Result<(), DynamicsError>;
 }
 
 /// A chassis: a frame with named parts (sprocket, idler, road wheels,

@@ -7,7 +7,7 @@ use crate::closure::partitioning::{self, Partition};
 use crate::closure::{
     ClosureMethod, MultiplierOptions, PenaltyJoint, ProjectionFailure, multipliers,
 };
-use crate::dynamics::LinearTimeSolver;
+use crate::dynamics::ClosingJoint;
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, Closure, TrackModel};
 
@@ -35,8 +35,11 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     y0: DVector<f64>,
     loads: Loads<D>,
     masses: Vec<(f64, f64)>,
-    /// Linear-time forward dynamics (spec §5) with its scratch space.
-    solver: LinearTimeSolver,
+    /// Every link's `(sin θ, cos θ)` when the caller gives none.
+    trig: Vec<(f64, f64)>,
+    /// Every joint's force from the last solve (see
+    /// [`TrackModel::linear_time_dynamics`]).
+    joint_forces: Vec<Vector2<f64>>,
     /// `Σ |d̄ʲ|`, m: the scale of closure tolerances.
     loop_length: f64,
     /// `d̄ʲ` of every link.
@@ -90,7 +93,8 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             }
         };
         let mut system = TrackSystem {
-            solver: LinearTimeSolver::new(&model),
+            trig: vec![(0.0, 1.0); M::BODIES],
+            joint_forces: vec![Vector2::zeros(); M::BODIES],
             masses: masses(&model),
             model,
             mode,
@@ -164,9 +168,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             _ => {
                 let q = SVector::from_column_slice(&y[..D]);
                 if let Some(trig) = trig {
-                    for (j, sc) in trig.iter_mut().enumerate() {
-                        *sc = q[2 + j].sin_cos();
-                    }
+                    crate::sin_cos_each(&y[2..D], trig);
                 }
                 Ok((q, SVector::from_column_slice(&y[D..])))
             }
@@ -244,9 +246,12 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     }
 
     /// `q̈_i` at `(q_i, q̇_i)` under the current method, by the
-    /// linear-time route (spec §5). Under partitioning the state satisfies
-    /// the closure, where the partitioned equations and the multiplier
-    /// form have the same solution.
+    /// generated linear-time route (spec §5), given every link's
+    /// `(sin θ, cos θ)` if the caller has them (the closure's recovery
+    /// computes them). Under partitioning the state satisfies the closure,
+    /// where the partitioned equations and the multiplier form have the
+    /// same solution. Every joint's force is kept for
+    /// [`tensions`](Self::tensions).
     pub(crate) fn accelerations(
         &mut self,
         t: f64,
@@ -254,33 +259,48 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         qd: &SVector<f64, D>,
         trig: Option<&[(f64, f64)]>,
     ) -> Result<SVector<f64, D>, SimulationError> {
-        let penalty = self.penalty();
-        let loads = self.loads.fill(t, q, qd);
-        let dynamics = |source| SimulationError::Dynamics { t, source };
-        let (constrained, stabilisation, penalty) = match &self.mode {
-            Mode::AsDeclared if !M::CLOSURE.is_constrained() => {
-                let force = penalty.map(|joint| {
-                    joint.force(self.model.closure(q), self.model.closure_jacobian(q) * qd)
-                });
-                (false, Vector2::zeros(), force)
-            }
-            Mode::Penalty(joint) => (
-                false,
-                Vector2::zeros(),
-                Some(joint.force(self.model.closure(q), self.model.closure_jacobian(q) * qd)),
-            ),
-            Mode::Multipliers(options) => (
-                true,
-                options.stabilisation(self.model.closure(q), self.model.closure_jacobian(q) * qd),
-                None,
-            ),
-            Mode::Partitioned(_) | Mode::AsDeclared => (true, Vector2::zeros(), None),
+        let closing = match &self.mode {
+            Mode::Partitioned(_) => ClosingJoint::CLOSED,
+            Mode::Multipliers(options) => ClosingJoint::Constrained {
+                stabilisation: options
+                    .stabilisation(self.model.closure(q), self.model.closure_jacobian(q) * qd),
+            },
+            Mode::Penalty(_) | Mode::AsDeclared => match self.penalty() {
+                Some(joint) => ClosingJoint::Cut {
+                    force: joint.force(self.model.closure(q), self.model.closure_jacobian(q) * qd),
+                },
+                None if M::CLOSURE.is_constrained() => ClosingJoint::CLOSED,
+                None => ClosingJoint::OPEN,
+            },
         };
-        let (qdd, _) = self
-            .solver
-            .accelerations_with_trig(q, qd, loads, constrained, stabilisation, penalty, trig)
-            .map_err(dynamics)?;
+        let trig = match trig {
+            Some(trig) => trig,
+            None => {
+                crate::sin_cos_each(&q.as_slice()[2..], &mut self.trig);
+                &self.trig
+            }
+        };
+        let loads = self.loads.fill(t, q, qd);
+        let mut qdd = SVector::zeros();
+        self.model
+            .linear_time_dynamics(trig, qd, loads, closing, &mut qdd, &mut self.joint_forces)
+            .map_err(|source| SimulationError::Dynamics { t, source })?;
         Ok(qdd)
+    }
+
+    /// The tension (N, positive pulling) in every joint `i → i+1` (the last
+    /// is the closing joint `n → 1`) at the last
+    /// [`accelerations`](Self::accelerations), at the angles whose
+    /// `(sin θ, cos θ)` are `trig`: the joint's force on link `i` along its
+    /// `d̄ⁱ`. For a cut closing joint, the force across the cut.
+    pub(crate) fn tensions(&self, trig: &[(f64, f64)], out: &mut Vec<f64>) {
+        out.clear();
+        out.extend(self.joint_forces.iter().zip(&self.spans).zip(trig).map(
+            |((force, span), &(s, c))| {
+                let axis = Vector2::new(c * span.x - s * span.y, s * span.x + c * span.y);
+                force.dot(&axis) / span.norm()
+            },
+        ));
     }
 
     /// The state's derivative from coordinates already recovered by

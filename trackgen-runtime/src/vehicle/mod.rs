@@ -5,10 +5,8 @@ mod assemble;
 mod build;
 mod drive;
 mod system;
-mod tension;
 
 pub use assemble::{Assembled, START_PENETRATION, assemble};
 pub use build::BuildError;
 pub use drive::Drive;
 pub use system::{VehicleConfig, VehicleSystem};
-pub use tension::tensions;

@@ -1,6 +1,6 @@
 use nalgebra::{DVector, SVector, Vector2};
 
-use super::{Drive, tensions};
+use super::Drive;
 use crate::closure::ClosureMethod;
 use crate::contact::ground::GroundContact;
 use crate::contact::sprocket::{SprocketContact, ToothProfile, pitch_radius};
@@ -551,9 +551,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         self.bodies.observe(t, bodies, row)?;
         let ((qt, qdt), (qc, qdc), s) = self.evaluate(t, y)?;
         let (track, _) = self.bodies.parts_mut();
-        let qdd = track.accelerations(t, &qt, &qdt, Some(&self.scratch.link_trig))?;
-        let all =
-            tensions(track.model(), &qt, &qdt, &qdd, &self.scratch.track_loads).unwrap_or_default();
+        track.accelerations(t, &qt, &qdt, Some(&self.scratch.link_trig))?;
+        let mut all = Vec::with_capacity(T::BODIES);
+        track.tensions(&self.scratch.link_trig, &mut all);
         let tension = all
             .get(self.config.tension_link - 1)
             .copied()
