@@ -28,58 +28,14 @@
 //! (unrolling would fold nothing more), and the const-generic `solve`
 //! specialises it for the constrained and the cut loop.
 
-use proc_macro2::{Ident, TokenStream};
-use quote::{format_ident, quote};
+use proc_macro2::TokenStream;
+use quote::quote;
 
 use super::lin::Lin;
+use super::per_link::{PerLink, e};
 use super::runtime;
 use crate::ir::Track;
 use crate::num::Num;
-
-/// A constant of every link: one value, folded into the code, or a table
-/// indexed at run time.
-enum PerLink {
-    Uniform(Num),
-    Table { name: Ident, values: Vec<Num> },
-}
-
-impl PerLink {
-    fn new(name: &str, values: Vec<Num>) -> PerLink {
-        if values.iter().all(|v| v.same(&values[0])) {
-            PerLink::Uniform(values[0].clone())
-        } else {
-            PerLink::Table {
-                name: format_ident!("{}", name),
-                values,
-            }
-        }
-    }
-
-    /// The value for the link at `index` (an expression of type `usize`).
-    fn at(&self, index: TokenStream) -> Lin {
-        match self {
-            PerLink::Uniform(v) => Lin::constant(v.clone()),
-            PerLink::Table { name, .. } => Lin::var(quote!(#name[#index])),
-        }
-    }
-
-    /// `const NAME: [f64; n] = [...];` for a table.
-    fn declaration(&self) -> TokenStream {
-        match self {
-            PerLink::Uniform(_) => TokenStream::new(),
-            PerLink::Table { name, values } => {
-                let n = values.len();
-                quote! { const #name: [f64; #n] = [#(#values),*]; }
-            }
-        }
-    }
-}
-
-/// A linear combination as a parenthesised expression.
-fn e(lin: Lin) -> TokenStream {
-    let t = lin.tokens();
-    quote!((#t))
-}
 
 /// The per-link constants of the solve.
 struct Fields {

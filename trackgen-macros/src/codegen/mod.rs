@@ -8,6 +8,8 @@ mod chassis;
 mod flat;
 mod lin;
 mod linear_time;
+mod per_link;
+mod recovery;
 mod recursive;
 mod running;
 mod stub;

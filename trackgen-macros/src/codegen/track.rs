@@ -109,6 +109,7 @@ pub fn track_type(
         super::recursive::recursive_impl(name, &tree, loop_joint, penalty_energy(track, &tree));
     let closure_fns = closure_impl(&tree, track);
     let linear_time = super::linear_time::linear_time_dynamics(track);
+    let recovery = super::recovery::recovery(track);
     let links_doc = format!("Number of links, `{n}`.");
     quote! {
         #(#attrs)*
@@ -128,6 +129,7 @@ pub fn track_type(
             const CLOSURE: #rt::runtime::Closure = #closure;
             #closure_fns
             #linear_time
+            #recovery
         }
     }
 }

@@ -54,10 +54,16 @@ fn column<const D: usize>(cq: &SMatrix<f64, 2, D>, link: usize) -> Vector2<f64> 
     cq.fixed_view::<2, 1>(0, 2 + link).into_owned()
 }
 
+/// The angle columns `A_θʲ d̄ʲ` of `C_q`, one per link.
+pub(crate) fn columns<const D: usize>(cq: &SMatrix<f64, 2, D>) -> Vec<Vector2<f64>> {
+    (0..D - 2).map(|j| column(cq, j)).collect()
+}
+
 /// `|sin|` of the angle between the columns of `C_d` for dependent links
-/// `pair` (0-based): 1 at best, 0 singular (eq. (21)).
-pub(crate) fn conditioning<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> f64 {
-    let (a, b) = (column(cq, pair[0]), column(cq, pair[1]));
+/// `pair` (0-based), from the angle columns of `C_q`: 1 at best, 0
+/// singular (eq. (21)).
+pub(crate) fn conditioning(columns: &[Vector2<f64>], pair: [usize; 2]) -> f64 {
+    let (a, b) = (columns[pair[0]], columns[pair[1]]);
     let det = a.x * b.y - a.y * b.x;
     let norms = a.norm() * b.norm();
     if norms > 0.0 {
@@ -68,12 +74,12 @@ pub(crate) fn conditioning<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize
 }
 
 /// The best-conditioned pair of links (0-based) and its conditioning.
-pub(crate) fn best_pair<const D: usize>(cq: &SMatrix<f64, 2, D>) -> ([usize; 2], f64) {
-    let n = D - 2;
+pub(crate) fn best_pair(columns: &[Vector2<f64>]) -> ([usize; 2], f64) {
+    let n = columns.len();
     let mut best = ([0, 1.min(n - 1)], -1.0);
     for j in 0..n {
         for k in j + 1..n {
-            let c = conditioning(cq, [j, k]);
+            let c = conditioning(columns, [j, k]);
             if c > best.1 {
                 best = ([j, k], c);
             }
@@ -85,106 +91,6 @@ pub(crate) fn best_pair<const D: usize>(cq: &SMatrix<f64, 2, D>) -> ([usize; 2],
 /// `C_d`, the 2 × 2 block of `C_q` under the dependent angles.
 fn block<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> Matrix2<f64> {
     Matrix2::from_columns(&[column(cq, pair[0]), column(cq, pair[1])])
-}
-
-/// Solves `C(q) = 0` for the dependent angles by Newton-Raphson, the others
-/// fixed. Returns `Err((iterations, |C|))` if it does not converge to
-/// `tolerance` (m).
-pub(crate) fn recover_positions<M: TrackModel<D>, const D: usize>(
-    model: &M,
-    q: &mut SVector<f64, D>,
-    pair: [usize; 2],
-    tolerance: f64,
-    max_iterations: usize,
-) -> Result<usize, (usize, f64)> {
-    let spans = model
-        .description()
-        .link_spans()
-        .expect("a track has link spans");
-    recover(&spans, q, None, pair, tolerance, max_iterations, None)
-}
-
-/// [`recover_positions`] and [`recover_velocities`] in one pass, from the
-/// links' spans `d̄ʲ` (spec §2: `C = Σ Aʲ d̄ʲ`): one sine and cosine per
-/// link, then Newton-Raphson on the two dependent angles alone (the other
-/// links' part of `C` is fixed), then `ḋ = −C_d⁻¹ C_z ż` if `qd` is given.
-/// Every link's final `(sin θ, cos θ)` goes to `trig` if given.
-pub(crate) fn recover<const D: usize>(
-    spans: &[Vector2<f64>],
-    q: &mut SVector<f64, D>,
-    qd: Option<&mut SVector<f64, D>>,
-    pair: [usize; 2],
-    tolerance: f64,
-    max_iterations: usize,
-    mut trig: Option<&mut [(f64, f64)]>,
-) -> Result<usize, (usize, f64)> {
-    let rotate = |(s, c): (f64, f64), d: Vector2<f64>| {
-        (
-            Vector2::new(c * d.x - s * d.y, s * d.x + c * d.y),
-            Vector2::new(-s * d.x - c * d.y, c * d.x - s * d.y),
-        )
-    };
-    let turn = |theta: f64, d: Vector2<f64>| rotate(theta.sin_cos(), d);
-    // The independent links' share of C and of C_q q̇.
-    let (mut rest, mut rate) = (Vector2::zeros(), Vector2::zeros());
-    for (j, d) in spans.iter().enumerate() {
-        if j != pair[0] && j != pair[1] {
-            let sc = q[2 + j].sin_cos();
-            if let Some(trig) = trig.as_deref_mut() {
-                trig[j] = sc;
-            }
-            let (a, a_theta) = rotate(sc, *d);
-            rest += a;
-            if let Some(qd) = &qd {
-                rate += a_theta * qd[2 + j];
-            }
-        }
-    }
-    let (dk, dl) = (spans[pair[0]], spans[pair[1]]);
-    let mut iteration = 0;
-    let columns = loop {
-        let ((ak, jk), (al, jl)) = (turn(q[2 + pair[0]], dk), turn(q[2 + pair[1]], dl));
-        let c = rest + ak + al;
-        let residual = c.norm();
-        if residual <= tolerance {
-            break Matrix2::from_columns(&[jk, jl]);
-        }
-        if iteration == max_iterations || !residual.is_finite() {
-            return Err((iteration, residual));
-        }
-        let step = Matrix2::from_columns(&[jk, jl])
-            .try_inverse()
-            .map(|inv| inv * c)
-            .ok_or((iteration, residual))?;
-        q[2 + pair[0]] -= step.x;
-        q[2 + pair[1]] -= step.y;
-        iteration += 1;
-    };
-    if let Some(trig) = trig {
-        trig[pair[0]] = q[2 + pair[0]].sin_cos();
-        trig[pair[1]] = q[2 + pair[1]].sin_cos();
-    }
-    if let Some(qd) = qd {
-        let dependent = columns.try_inverse().ok_or((iteration, 0.0))? * rate;
-        qd[2 + pair[0]] = -dependent.x;
-        qd[2 + pair[1]] = -dependent.y;
-    }
-    Ok(iteration)
-}
-
-/// Sets the dependent angular velocities from `C_q q̇ = 0`:
-/// `ḋ = −C_d⁻¹ C_z ż`. `None` if `C_d` is singular.
-pub(crate) fn recover_velocities<const D: usize>(
-    cq: &SMatrix<f64, 2, D>,
-    qd: &mut SVector<f64, D>,
-    pair: [usize; 2],
-) -> Option<()> {
-    qd[2 + pair[0]] = 0.0;
-    qd[2 + pair[1]] = 0.0;
-    let rate = block(cq, pair).try_inverse()? * (cq * *qd);
-    qd[2 + pair[0]] = -rate.x;
-    qd[2 + pair[1]] = -rate.y;
-    Some(())
 }
 
 /// The accelerations of the dense partitioned equations
@@ -298,28 +204,35 @@ impl Partition {
                     "initial_pair {p:?}: two different links from 1 to {links}"
                 )));
             }
-            None => best_pair(&model.closure_jacobian(q)).0,
+            None => best_pair(&columns(&model.closure_jacobian(q))).0,
         };
         self.independent = independent_coordinates(D, self.pair);
-        recover_positions(
-            model,
-            q,
-            self.pair,
-            self.tolerance,
-            self.options.newton_max_iterations,
-        )
-        .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
-            t: 0.0,
-            iterations,
-            residual,
-        })?;
+        let mut trig = vec![(0.0, 1.0); links];
+        model
+            .recover_closure(
+                q,
+                qd,
+                self.pair,
+                self.tolerance,
+                self.options.newton_max_iterations,
+                &mut trig,
+            )
+            .map_err(|(iterations, residual)| {
+                if residual == 0.0 {
+                    SimulationError::SingularMatrix {
+                        t: 0.0,
+                        what: "C_d at the start",
+                    }
+                } else {
+                    SimulationError::NewtonFailed {
+                        t: 0.0,
+                        iterations,
+                        residual,
+                    }
+                }
+            })?;
         self.guess = [q[2 + self.pair[0]], q[2 + self.pair[1]]];
-        recover_velocities(&model.closure_jacobian(q), qd, self.pair).ok_or(
-            SimulationError::SingularMatrix {
-                t: 0.0,
-                what: "C_d at the start",
-            },
-        )
+        Ok(())
     }
 
     /// `[z, ż]` of `(q_i, q̇_i)` into `y` (and so `[ż, z̈]` of
@@ -332,18 +245,18 @@ impl Partition {
         }
     }
 
-    /// `(q_i, q̇_i)` of `y = [z, ż]`: the dependent angles by
-    /// Newton-Raphson from the last accepted ones, their rates from
-    /// `C_q q̇ = 0`, every link's `(sin θ, cos θ)` into `trig` if given.
+    /// `(q_i, q̇_i)` of `y = [z, ż]`: the dependent angles by the model's
+    /// generated Newton-Raphson from the last accepted ones, their rates
+    /// from `C_q q̇ = 0`, every link's `(sin θ, cos θ)` into `trig`.
     ///
     /// A jump of the pair by more than π/2 from the last accepted state is
     /// the closure's mirror solution: [`SimulationError::BranchJump`].
-    pub fn expand<const D: usize>(
+    pub fn expand<M: TrackModel<D>, const D: usize>(
         &self,
-        spans: &[Vector2<f64>],
+        model: &M,
         t: f64,
         y: &[f64],
-        trig: Option<&mut [(f64, f64)]>,
+        trig: &mut [(f64, f64)],
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
         let n = self.independent.len();
         let mut q = SVector::<f64, D>::zeros();
@@ -355,20 +268,20 @@ impl Partition {
         let [k, l] = self.pair;
         q[2 + k] = self.guess[0];
         q[2 + l] = self.guess[1];
-        recover(
-            spans,
-            &mut q,
-            Some(&mut qd),
-            self.pair,
-            self.tolerance,
-            self.options.newton_max_iterations,
-            trig,
-        )
-        .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
-            t,
-            iterations,
-            residual,
-        })?;
+        model
+            .recover_closure(
+                &mut q,
+                &mut qd,
+                self.pair,
+                self.tolerance,
+                self.options.newton_max_iterations,
+                trig,
+            )
+            .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
+                t,
+                iterations,
+                residual,
+            })?;
         // The start is the last accepted state's pair (never a rejected
         // trial's), so the result does not depend on the call history.
         let jump = (q[2 + k] - self.guess[0])
@@ -384,23 +297,22 @@ impl Partition {
         Ok((q, qd))
     }
 
-    /// After an accepted step at `(q_i, q̇_i)` (expanded from `y`): the
-    /// accepted pair becomes Newton-Raphson's start, and if its conditioning
-    /// has fallen below the threshold the best-conditioned pair takes over
-    /// and `y` is re-packed. Returns the switch made, if any. With
-    /// switching off, a pair below `singular_below` is an error.
-    pub fn accept<M: TrackModel<D>, const D: usize>(
+    /// After an accepted step at `(q_i, q̇_i)` (expanded from `y`), with
+    /// `columns` the angle columns of `C_q` there: the accepted pair
+    /// becomes Newton-Raphson's start, and if its conditioning has fallen
+    /// below the threshold the best-conditioned pair takes over and `y` is
+    /// re-packed. Returns the switch made, if any. With switching off, a
+    /// pair below `singular_below` is an error.
+    pub fn accept<const D: usize>(
         &mut self,
-        model: &M,
         t: f64,
-        q: &SVector<f64, D>,
-        qd: &SVector<f64, D>,
+        (q, qd): (&SVector<f64, D>, &SVector<f64, D>),
+        columns: &[Vector2<f64>],
         y: &mut [f64],
     ) -> Result<Option<Switch>, SimulationError> {
-        let cq = model.closure_jacobian(q);
         let [k, l] = self.pair;
         self.guess = [q[2 + k], q[2 + l]];
-        let now = conditioning(&cq, self.pair);
+        let now = conditioning(columns, self.pair);
         if !self.options.switching {
             if now < self.options.singular_below {
                 return Err(SimulationError::SingularPartition {
@@ -414,7 +326,7 @@ impl Partition {
         if now >= self.options.switch_below {
             return Ok(None);
         }
-        let (best, better) = best_pair(&cq);
+        let (best, better) = best_pair(columns);
         if best == self.pair {
             return Ok(None);
         }

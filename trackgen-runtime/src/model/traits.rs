@@ -160,6 +160,35 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
     /// `γ_c = Σ Aʲ d̄ʲ ωʲ²`, so that `C_q q̈_i = γ_c`.
     fn closure_gamma(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> Vector2<f64>;
 
+    /// Generalised coordinate partitioning's recovery (spec §2, the
+    /// paper's eqs. (18)-(21)), generated with every span `d̄ʲ` folded: the
+    /// angles of the dependent `pair` (0-based links) from `C = 0` by
+    /// Newton-Raphson, starting from their values in `q`, the others
+    /// fixed, to `|C| ≤ tolerance` (m) within `max_iterations`; then their
+    /// rates from `C_q q̇ = 0`, the other rates in `qd` fixed. Every link's
+    /// `(sin θ, cos θ)` at the result goes to `trig` (one per link).
+    ///
+    /// Returns the iterations taken, or `Err((iterations, |C|))` when it
+    /// does not converge or `C_d` is singular (`|C|` is 0 for a singular
+    /// `C_d` at the converged angles).
+    ///
+    /// # Panics
+    /// If `trig` is not one per link or `pair` not two different links.
+    fn recover_closure(
+        &self,
+        q: &mut SVector<f64, DOF>,
+        qd: &mut SVector<f64, DOF>,
+        pair: [usize; 2],
+        tolerance: f64,
+        max_iterations: usize,
+        trig: &mut [(f64, f64)],
+    ) -> Result<usize, (usize, f64)>;
+
+    /// The angle columns of `C_q`, `A_θʲ d̄ʲ` (one per link), from every
+    /// link's `(sin θ, cos θ)`: what the conditioning of a dependent pair
+    /// (eq. (21)) is measured on.
+    fn closure_columns(&self, trig: &[(f64, f64)], out: &mut [Vector2<f64>]);
+
     /// Forward dynamics in O(n) by spec §5, generated for this track: the
     /// links' absolute accelerations and the joint forces `λ` as unknowns,
     /// the joint forces from a block-tridiagonal system (cyclic for a

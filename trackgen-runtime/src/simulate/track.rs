@@ -24,6 +24,18 @@ enum Mode {
     Penalty(PenaltyJoint),
 }
 
+/// The last state expanded to coordinates: the accepted state of a step is
+/// its last stage's (first same as last), so the recovery after the step
+/// is this one again.
+#[derive(Debug, Clone)]
+struct Recovered<const D: usize> {
+    valid: bool,
+    y: Vec<f64>,
+    q: SVector<f64, D>,
+    qd: SVector<f64, D>,
+    trig: Vec<(f64, f64)>,
+}
+
 /// A track in motion, its loop closed by one of the methods of
 /// [`crate::closure`].
 ///
@@ -37,6 +49,10 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     masses: Vec<(f64, f64)>,
     /// Every link's `(sin θ, cos θ)` when the caller gives none.
     trig: Vec<(f64, f64)>,
+    /// The angle columns of `C_q`, for the partition's conditioning.
+    columns: Vec<Vector2<f64>>,
+    /// The last state expanded, and what it expanded to.
+    recovered: Recovered<D>,
     /// Every joint's force from the last solve (see
     /// [`TrackModel::linear_time_dynamics`]).
     joint_forces: Vec<Vector2<f64>>,
@@ -94,6 +110,14 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         };
         let mut system = TrackSystem {
             trig: vec![(0.0, 1.0); M::BODIES],
+            columns: vec![Vector2::zeros(); M::BODIES],
+            recovered: Recovered {
+                valid: false,
+                y: Vec::new(),
+                q: SVector::zeros(),
+                qd: SVector::zeros(),
+                trig: vec![(0.0, 1.0); M::BODIES],
+            },
             joint_forces: vec![Vector2::zeros(); M::BODIES],
             masses: masses(&model),
             model,
@@ -132,29 +156,25 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// `(q_i, q̇_i)` of the state `y`, the closure recovered under
     /// partitioning.
     pub fn coordinates(
-        &self,
+        &mut self,
         t: f64,
         y: &[f64],
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
-        self.expand(t, y, None)
+        let mut trig = std::mem::take(&mut self.trig);
+        let result = self.coordinates_with_trig(t, y, &mut trig);
+        self.trig = trig;
+        result
     }
 
     /// [`coordinates`](Self::coordinates), also writing every link's
-    /// `(sin θ, cos θ)` at the recovered angles into `trig`.
+    /// `(sin θ, cos θ)` at the recovered angles into `trig`. The last
+    /// state's result is kept: asked again for the same state (after a
+    /// step, for its last stage's), it is not recovered again.
     pub(crate) fn coordinates_with_trig(
-        &self,
+        &mut self,
         t: f64,
         y: &[f64],
         trig: &mut [(f64, f64)],
-    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
-        self.expand(t, y, Some(trig))
-    }
-
-    fn expand(
-        &self,
-        t: f64,
-        y: &[f64],
-        trig: Option<&mut [(f64, f64)]>,
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
         if y.len() != self.y0.len() {
             return Err(SimulationError::Setup(format!(
@@ -163,16 +183,28 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 self.y0.len()
             )));
         }
-        match &self.mode {
-            Mode::Partitioned(partition) => partition.expand(&self.spans, t, y, trig),
-            _ => {
-                let q = SVector::from_column_slice(&y[..D]);
-                if let Some(trig) = trig {
-                    crate::sin_cos_each(&y[2..D], trig);
-                }
-                Ok((q, SVector::from_column_slice(&y[D..])))
-            }
+        let kept = &mut self.recovered;
+        if kept.valid && kept.y == y {
+            trig.copy_from_slice(&kept.trig);
+            return Ok((kept.q, kept.qd));
         }
+        let (q, qd) = match &self.mode {
+            Mode::Partitioned(partition) => partition.expand(&self.model, t, y, trig)?,
+            _ => {
+                crate::sin_cos_each(&y[2..D], trig);
+                (
+                    SVector::from_column_slice(&y[..D]),
+                    SVector::from_column_slice(&y[D..]),
+                )
+            }
+        };
+        kept.valid = true;
+        kept.y.clear();
+        kept.y.extend_from_slice(y);
+        kept.q = q;
+        kept.qd = qd;
+        kept.trig.copy_from_slice(trig);
+        Ok((q, qd))
     }
 
     /// The penalty joint acting, declared or chosen at run time.
@@ -357,9 +389,12 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
             _ => 0.0,
         };
         record_mechanics(&self.model, &self.masses, &q, &qd, spring, row);
+        self.model.closure_columns(&self.trig, &mut self.columns);
         let conditioning = match &self.mode {
-            Mode::Partitioned(partition) => partitioning::conditioning(&cq, partition.pair()),
-            _ => partitioning::best_pair(&cq).1,
+            Mode::Partitioned(partition) => {
+                partitioning::conditioning(&self.columns, partition.pair())
+            }
+            _ => partitioning::best_pair(&self.columns).1,
         };
         row.extend([gap.norm(), (cq * qd).norm(), conditioning]);
         Ok(())
@@ -397,15 +432,19 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                 )?;
                 y[..D].copy_from_slice(q.as_slice());
                 y[D..].copy_from_slice(qd.as_slice());
+                self.recovered.valid = false;
                 Ok(true)
             }
             Mode::Partitioned(_) => {
                 let (q, qd) = self.coordinates(t, y)?;
+                self.model.closure_columns(&self.trig, &mut self.columns);
                 let Mode::Partitioned(partition) = &mut self.mode else {
                     unreachable!("matched above")
                 };
-                match partition.accept(&self.model, t, &q, &qd, y)? {
+                match partition.accept(t, (&q, &qd), &self.columns, y)? {
                     Some(switch) => {
+                        // The same state means other coordinates now.
+                        self.recovered.valid = false;
                         switched(switch);
                         Ok(true)
                     }

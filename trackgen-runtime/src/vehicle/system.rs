@@ -499,7 +499,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         let (yt, yc) = self.bodies.split(bodies);
         let (qt, qdt) =
             self.bodies
-                .first()
+                .parts_mut()
+                .0
                 .coordinates_with_trig(t, yt, &mut self.scratch.link_trig)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(yc);
         let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;

@@ -1,0 +1,138 @@
+//! The closure under generalised coordinate partitioning (spec §2, the
+//! paper's eqs. (17)-(21)), generated: `TrackModel::recover_closure` and
+//! `TrackModel::closure_columns`.
+//!
+//! With `C = Σ Aʲ d̄ʲ` and the dependent pair `k, l`, everything but the
+//! pair is fixed while Newton-Raphson moves it: the sum over every link is
+//! taken once (one loop, each span `d̄ʲ` folded; every link's sine and
+//! cosine by the runtime's vectorised `sin_cos_each`), the pair's share
+//! taken out, and the Newton step `C_d⁻¹ C` on the 2 × 2 block
+//! `C_d = [A_θᵏ d̄ᵏ, A_θˡ d̄ˡ]` uses the pair's spans only. The pair's rates
+//! follow from `C_q q̇ = 0`: `ḋ = −C_d⁻¹ C_z ż`.
+
+use proc_macro2::TokenStream;
+use quote::quote;
+
+use super::per_link::{PerLink, e};
+use super::runtime;
+use crate::ir::Track;
+
+/// `recover_closure` and `closure_columns` of a track.
+pub fn recovery(track: &Track) -> TokenStream {
+    let rt = runtime();
+    let n = track.links.len();
+    let dof = n + 2;
+    let spans = [
+        PerLink::new(
+            "SPAN_X",
+            track
+                .links
+                .iter()
+                .map(|l| l.u2.x.clone() - l.u1.x.clone())
+                .collect(),
+        ),
+        PerLink::new(
+            "SPAN_Y",
+            track
+                .links
+                .iter()
+                .map(|l| l.u2.y.clone() - l.u1.y.clone())
+                .collect(),
+        ),
+    ];
+    let tables: TokenStream = spans.iter().map(PerLink::declaration).collect();
+    // A d̄ at link `j` from its `(s, c)`: (c dₓ − s d_y, s dₓ + c d_y).
+    let turned = |j: TokenStream| {
+        let (dx, dy) = (spans[0].at(j.clone()), spans[1].at(j));
+        let x = dx
+            .clone()
+            .times(&quote!(c))
+            .minus(dy.clone().times(&quote!(s)));
+        let y = dx.times(&quote!(s)).plus(dy.times(&quote!(c)));
+        (e(x), e(y))
+    };
+    let (ax, ay) = turned(quote!(j));
+    let (span_x, span_y) = (e(spans[0].at(quote!(j))), e(spans[1].at(quote!(j))));
+    let v2 = quote!(#rt::nalgebra::Vector2::<f64>);
+    quote! {
+        fn recover_closure(
+            &self,
+            q: &mut #rt::nalgebra::SVector<f64, #dof>,
+            qd: &mut #rt::nalgebra::SVector<f64, #dof>,
+            pair: [usize; 2],
+            tolerance: f64,
+            max_iterations: usize,
+            trig: &mut [(f64, f64)],
+        ) -> ::core::result::Result<usize, (usize, f64)> {
+            const N: usize = #n;
+            #tables
+            #[inline(always)]
+            fn span(j: usize) -> (f64, f64) {
+                (#span_x, #span_y)
+            }
+            #[inline(always)]
+            fn turn((s, c): (f64, f64), (x, y): (f64, f64)) -> (f64, f64) {
+                (c * x - s * y, s * x + c * y)
+            }
+            let trig: &mut [(f64, f64); N] = trig.try_into().expect("one (sin θ, cos θ) per link");
+            let [k, l] = pair;
+            ::core::assert!(k != l && k < N && l < N, "the dependent pair: two different links");
+            #rt::runtime::sin_cos_each(&q.as_slice()[2..], trig);
+            // C and C_q q̇ over every link, then without the pair's share.
+            let (mut cx, mut cy, mut vx, mut vy) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
+            for j in 0..N {
+                let (s, c) = trig[j];
+                let (ax, ay) = (#ax, #ay);
+                let w = qd[2 + j];
+                cx += ax;
+                cy += ay;
+                vx -= ay * w;
+                vy += ax * w;
+            }
+            let (dk, dl) = (span(k), span(l));
+            let (ak, al) = (turn(trig[k], dk), turn(trig[l], dl));
+            let (wk, wl) = (qd[2 + k], qd[2 + l]);
+            let rest = (cx - ak.0 - al.0, cy - ak.1 - al.1);
+            let rate = (vx + ak.1 * wk + al.1 * wl, vy - ak.0 * wk - al.0 * wl);
+            // Newton-Raphson on the pair. C_d's columns are A_θ d̄ = (−a_y, aₓ),
+            // det C_d = aₖₓ a_l_y − aₖ_y a_lₓ, C_d⁻¹ = [[a_lₓ, a_l_y], [−aₖₓ, −aₖ_y]] / det.
+            let mut iteration = 0usize;
+            let (ak, al) = loop {
+                let (tk, tl) = (#rt::runtime::sin_cos(q[2 + k]), #rt::runtime::sin_cos(q[2 + l]));
+                let (ak, al) = (turn(tk, dk), turn(tl, dl));
+                let (gx, gy) = (rest.0 + ak.0 + al.0, rest.1 + ak.1 + al.1);
+                let residual = (gx * gx + gy * gy).sqrt();
+                if residual <= tolerance {
+                    trig[k] = tk;
+                    trig[l] = tl;
+                    break (ak, al);
+                }
+                let det = ak.0 * al.1 - ak.1 * al.0;
+                if iteration == max_iterations || !residual.is_finite() || det == 0.0 {
+                    return ::core::result::Result::Err((iteration, residual));
+                }
+                q[2 + k] -= (al.0 * gx + al.1 * gy) / det;
+                q[2 + l] += (ak.0 * gx + ak.1 * gy) / det;
+                iteration += 1;
+            };
+            let det = ak.0 * al.1 - ak.1 * al.0;
+            if !(det != 0.0 && det.is_finite()) {
+                return ::core::result::Result::Err((iteration, 0.0));
+            }
+            qd[2 + k] = -(al.0 * rate.0 + al.1 * rate.1) / det;
+            qd[2 + l] = (ak.0 * rate.0 + ak.1 * rate.1) / det;
+            ::core::result::Result::Ok(iteration)
+        }
+
+        fn closure_columns(&self, trig: &[(f64, f64)], out: &mut [#v2]) {
+            const N: usize = #n;
+            #tables
+            ::core::assert!(trig.len() == N && out.len() == N, "one entry per link");
+            for j in 0..N {
+                let (s, c) = trig[j];
+                let (ax, ay) = (#ax, #ay);
+                out[j] = <#v2>::new(-ay, ax);
+            }
+        }
+    }
+}
