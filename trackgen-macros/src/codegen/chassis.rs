@@ -125,8 +125,27 @@ fn chassis_type(
     let rt = runtime();
     let tree = chassis_tree(vehicle);
     let dof = tree.len() + 2;
-    let recursive =
-        super::recursive::recursive_impl(name, &tree, quote!(::core::option::Option::None), None);
+    let n = tree.len();
+    let statements = super::articulated::tree_dynamics(&tree);
+    let tree_dynamics = super::flat::flatten(quote! {
+        ::core::assert_eq!(trig.len(), #n, "one (sin θ, cos θ) per body");
+        let no_loads = [#rt::runtime::BodyLoad::ZERO; #n];
+        let loads: &[#rt::runtime::BodyLoad] = if loads.is_empty() {
+            &no_loads
+        } else {
+            ::core::assert_eq!(loads.len(), #n, "one load per body, or none");
+            loads
+        };
+        #statements
+        ::core::result::Result::Ok(())
+    });
+    let recursive = super::recursive::recursive_impl(
+        name,
+        &tree,
+        quote!(::core::option::Option::None),
+        None,
+        tree_dynamics,
+    );
     let doc = format!(
         "The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it."
     );

@@ -4,6 +4,7 @@
 //! `::trackgen::__private`, never a bare `nalgebra::`, so a user needs
 //! nothing but the `trackgen` dependency.
 
+mod articulated;
 mod chassis;
 mod flat;
 mod lin;

@@ -15,43 +15,71 @@ use quote::quote;
 
 use super::per_link::{PerLink, e};
 use super::runtime;
-use crate::ir::Track;
+use crate::ir::{Closure, Track};
+
+/// Every link's span `d̄ʲ = ū2ʲ − ū1ʲ`, folded.
+fn spans(track: &Track) -> [PerLink; 2] {
+    let span = |f: fn(&crate::ir::Link) -> crate::num::Num| track.links.iter().map(f).collect();
+    [
+        PerLink::new("SPAN_X", span(|l| l.u2.x.clone() - l.u1.x.clone())),
+        PerLink::new("SPAN_Y", span(|l| l.u2.y.clone() - l.u1.y.clone())),
+    ]
+}
+
+/// `A d̄` at link `j` from its `(s, c)`: (c dₓ − s d_y, s dₓ + c d_y).
+fn turned(spans: &[PerLink; 2], j: TokenStream) -> (TokenStream, TokenStream) {
+    let (dx, dy) = (spans[0].at(j.clone()), spans[1].at(j));
+    let x = dx
+        .clone()
+        .times(&quote!(c))
+        .minus(dy.clone().times(&quote!(s)));
+    let y = dx.times(&quote!(s)).plus(dy.times(&quote!(c)));
+    (e(x), e(y))
+}
+
+/// The statements of a track's `tree_dynamics`: its linear-time route with
+/// the closing joint cut, and a declared penalty spring's force across the
+/// cut (its gap `C = Σ Aʲ d̄ʲ` and rate from `trig` and `qd`).
+pub fn cut_dynamics(track: &Track) -> TokenStream {
+    let rt = runtime();
+    let n = track.links.len();
+    let v2 = quote!(#rt::nalgebra::Vector2::<f64>);
+    let closing = match &track.closure {
+        Closure::Penalty { stiffness, damping } => {
+            let spans = spans(track);
+            let tables: TokenStream = spans.iter().map(PerLink::declaration).collect();
+            let (ax, ay) = turned(&spans, quote!(j));
+            quote! {{
+                #tables
+                let (mut gap, mut rate) = (<#v2>::zeros(), <#v2>::zeros());
+                for j in 0..#n {
+                    let (s, c) = trig[j];
+                    let (ax, ay) = (#ax, #ay);
+                    gap += <#v2>::new(ax, ay);
+                    rate += <#v2>::new(-ay, ax) * qd[2 + j];
+                }
+                let joint = #rt::runtime::closure::PenaltyJoint { stiffness: #stiffness, damping: #damping };
+                #rt::runtime::dynamics::ClosingJoint::Cut { force: joint.force(gap, rate) }
+            }}
+        }
+        _ => quote!(#rt::runtime::dynamics::ClosingJoint::OPEN),
+    };
+    quote! {
+        ::core::assert_eq!(trig.len(), #n, "one (sin θ, cos θ) per link");
+        let closing = #closing;
+        let mut forces = [<#v2>::zeros(); #n];
+        #rt::runtime::TrackModel::linear_time_dynamics(self, trig, qd, loads, closing, qdd, &mut forces)
+    }
+}
 
 /// `recover_closure` and `closure_columns` of a track.
 pub fn recovery(track: &Track) -> TokenStream {
     let rt = runtime();
     let n = track.links.len();
     let dof = n + 2;
-    let spans = [
-        PerLink::new(
-            "SPAN_X",
-            track
-                .links
-                .iter()
-                .map(|l| l.u2.x.clone() - l.u1.x.clone())
-                .collect(),
-        ),
-        PerLink::new(
-            "SPAN_Y",
-            track
-                .links
-                .iter()
-                .map(|l| l.u2.y.clone() - l.u1.y.clone())
-                .collect(),
-        ),
-    ];
+    let spans = spans(track);
     let tables: TokenStream = spans.iter().map(PerLink::declaration).collect();
-    // A d̄ at link `j` from its `(s, c)`: (c dₓ − s d_y, s dₓ + c d_y).
-    let turned = |j: TokenStream| {
-        let (dx, dy) = (spans[0].at(j.clone()), spans[1].at(j));
-        let x = dx
-            .clone()
-            .times(&quote!(c))
-            .minus(dy.clone().times(&quote!(s)));
-        let y = dx.times(&quote!(s)).plus(dy.times(&quote!(c)));
-        (e(x), e(y))
-    };
-    let (ax, ay) = turned(quote!(j));
+    let (ax, ay) = turned(&spans, quote!(j));
     let (span_x, span_y) = (e(spans[0].at(quote!(j))), e(spans[1].at(quote!(j))));
     let v2 = quote!(#rt::nalgebra::Vector2::<f64>);
     quote! {

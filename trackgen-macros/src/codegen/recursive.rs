@@ -15,6 +15,7 @@ pub fn recursive_impl(
     tree: &Tree,
     loop_joint: TokenStream,
     extra_potential: Option<TokenStream>,
+    tree_dynamics: TokenStream,
 ) -> TokenStream {
     let rt = runtime();
     let n = tree.len();
@@ -166,6 +167,16 @@ pub fn recursive_impl(
                 forces: &mut #rt::nalgebra::SVector<f64, #dof>,
             ) {
                 #equations_of_motion
+            }
+
+            fn tree_dynamics(
+                &self,
+                trig: &[(f64, f64)],
+                #qd,
+                loads: &[#rt::runtime::BodyLoad],
+                qdd: &mut #rt::nalgebra::SVector<f64, #dof>,
+            ) -> ::core::result::Result<(), #rt::runtime::DynamicsError> {
+                #tree_dynamics
             }
 
             fn kinetic_energy(&self, #q, #qd) -> f64 {

@@ -105,8 +105,14 @@ pub fn track_type(
             last_u2: #rt::nalgebra::Vector2::new(#lx, #ly),
         })
     };
-    let recursive =
-        super::recursive::recursive_impl(name, &tree, loop_joint, penalty_energy(track, &tree));
+    let tree_dynamics = super::recovery::cut_dynamics(track);
+    let recursive = super::recursive::recursive_impl(
+        name,
+        &tree,
+        loop_joint,
+        penalty_energy(track, &tree),
+        tree_dynamics,
+    );
     let closure_fns = closure_impl(&tree, track);
     let linear_time = super::linear_time::linear_time_dynamics(track);
     let recovery = super::recovery::recovery(track);

@@ -104,12 +104,17 @@ impl Tree {
         self.bodies.len()
     }
 
+    /// The bodies hanging from body `b`.
+    pub fn children(&self, b: usize) -> &[usize] {
+        &self.children[b]
+    }
+
     /// `w_{b→c}`: from `b`'s own joint to its child `c`'s, in `b`'s frame.
-    fn lever(&self, b: usize, c: usize) -> Vec2 {
+    pub fn lever(&self, b: usize, c: usize) -> Vec2 {
         self.bodies[c].at_parent.clone() - self.bodies[b].at_self.clone()
     }
 
-    fn trig(&self, b: usize) -> Trig {
+    pub fn trig(&self, b: usize) -> Trig {
         Trig::new(&self.bodies[b].tag)
     }
 

@@ -106,6 +106,27 @@ pub trait RecursiveModel<const DOF: usize> {
         self.generalized_forces(q, qd, loads, forces);
     }
 
+    /// Forward dynamics of the tree without constraints, in O(n),
+    /// generated: `q̈_i` from every body's `(sin θ, cos θ)` (`trig`, one per
+    /// body), `q̇_i` and the loads besides gravity (one per body, or none).
+    /// A chassis eliminates its joint forces from the leaves (spec §5's
+    /// route on a tree; `trackgen-macros/src/codegen/articulated.rs`); a
+    /// track is its [`linear_time_dynamics`](TrackModel::linear_time_dynamics)
+    /// with the closing joint cut (its declared penalty spring across the
+    /// cut). The same accelerations as
+    /// [`open_dynamics`](crate::dynamics::open_dynamics), the dense cross-check.
+    ///
+    /// # Panics
+    /// If `trig` is not one per body, or `loads` neither one per body nor
+    /// empty (a programming error).
+    fn tree_dynamics(
+        &self,
+        trig: &[(f64, f64)],
+        qd: &SVector<f64, DOF>,
+        loads: &[BodyLoad],
+        qdd: &mut SVector<f64, DOF>,
+    ) -> Result<(), DynamicsError>;
+
     /// Kinetic energy `Σ ½ mᵇ |Ṙᵇ|² + ½ Jᵇ ωᵇ²`, J, summed from the
     /// absolute velocities.
     fn kinetic_energy(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> f64;

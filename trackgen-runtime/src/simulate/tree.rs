@@ -3,15 +3,17 @@ use nalgebra::{DVector, SVector};
 use super::loads::Loads;
 use super::observe::{masses, mechanics_columns, record_mechanics};
 use super::{Simulated, SimulationError};
-use crate::dynamics::open_dynamics;
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
 
 /// A body tree without constraints in motion: a chassis (spec §3), an open
 /// chain, or a track closed by its declared penalty joint. The state is
-/// `y = [q_i, q̇_i]`.
+/// `y = [q_i, q̇_i]`; the accelerations come from the model's generated
+/// O(n) [`tree_dynamics`](RecursiveModel::tree_dynamics).
 pub struct TreeSystem<M: RecursiveModel<D>, const D: usize> {
     model: M,
+    /// Every body's `(sin θ, cos θ)` at the last evaluation.
+    trig: Vec<(f64, f64)>,
     y0: DVector<f64>,
     loads: Loads<D>,
     masses: Vec<(f64, f64)>,
@@ -26,6 +28,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
         let names = (0..M::BODIES).map(|b| b.to_string()).collect();
         TreeSystem {
             model,
+            trig: vec![(0.0, 1.0); M::BODIES],
             y0,
             loads: Loads::new(M::BODIES),
             masses,
@@ -97,13 +100,14 @@ impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let (q, qd) = Self::split(y);
+        crate::sin_cos_each(&y[2..D], &mut self.trig);
         let loads = self.loads.fill(t, &q, &qd);
-        let acc = open_dynamics(&self.model, &q, &qd, loads)
+        let mut qdd = SVector::zeros();
+        self.model
+            .tree_dynamics(&self.trig, &qd, loads, &mut qdd)
             .map_err(|source| SimulationError::Dynamics { t, source })?;
-        for i in 0..D {
-            dy[i] = qd[i];
-            dy[D + i] = acc.qdd[i];
-        }
+        dy[..D].copy_from_slice(&y[D..2 * D]);
+        dy[D..].copy_from_slice(qdd.as_slice());
         Ok(())
     }
 }
