@@ -20,9 +20,11 @@ impl GroundContact {
     /// Forces on the links from the ground, added to `loads` (one per
     /// link); every active contact is passed to `each`.
     ///
-    /// Links whose bounding circle clears the highest terrain beneath them
-    /// are skipped without looking at their points, so the cost is one
-    /// comparison per link plus the links actually near the ground.
+    /// Links whose bounding circle clears the highest terrain under the
+    /// whole track are skipped without looking at their points, so the cost
+    /// is one comparison per link plus the links actually near the ground
+    /// (the terrain's highest point is found once, over the track's
+    /// extent).
     pub fn apply(
         &self,
         links: &[BodyState],
@@ -31,9 +33,16 @@ impl GroundContact {
         mut each: impl FnMut(usize, &ContactForce),
     ) {
         let extent = shoe.extent();
+        let (low, high) = links
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
+                (lo.min(l.position.x), hi.max(l.position.x))
+            });
+        // A NaN position compares false below and is looked at: its force
+        // is NaN, and the run stops with the cause.
+        let highest = self.terrain.max_height(low - extent, high + extent);
         for (i, link) in links.iter().enumerate() {
-            let x = link.position.x;
-            if link.position.y - extent > self.terrain.max_height(x - extent, x + extent) {
+            if link.position.y - extent > highest {
                 continue;
             }
             for local in &shoe.ground_points {

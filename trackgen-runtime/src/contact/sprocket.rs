@@ -75,14 +75,27 @@ impl ToothProfile {
         2.0 * std::f64::consts::PI / self.teeth as f64
     }
 
-    /// The centre of the gap nearest to global point `p`.
+    /// The centre of the gap nearest to global point `p`: the gap whose
+    /// direction from the sprocket's centre is closest to `p`'s (the largest
+    /// cosine; gap `k` at `θ_s + (k + ½)·2π/teeth`), found among the teeth
+    /// in the sprocket's frame without an arctangent.
     pub fn nearest_gap(&self, sprocket: &BodyState, p: Vector2<f64>) -> Vector2<f64> {
         let r = p - sprocket.position;
+        let (s, c) = sprocket.sin_cos();
+        let (x, y) = (c * r.x + s * r.y, c * r.y - s * r.x);
         let beta = self.pitch_angle();
-        let alpha = r.y.atan2(r.x) - sprocket.angle;
-        let k = (alpha / beta - 0.5).round();
-        let phi = sprocket.angle + (k + 0.5) * beta;
-        sprocket.position + Vector2::new(phi.cos(), phi.sin()) * self.arc_centre_radius
+        let (sb, cb) = crate::sin_cos(beta);
+        let (sh, ch) = crate::sin_cos(0.5 * beta);
+        let (mut gap, mut best, mut nearest) = ((ch, sh), f64::NEG_INFINITY, (ch, sh));
+        for _ in 0..self.teeth {
+            let cosine = gap.0 * x + gap.1 * y;
+            if cosine > best {
+                (best, nearest) = (cosine, gap);
+            }
+            gap = (cb * gap.0 - sb * gap.1, sb * gap.0 + cb * gap.1);
+        }
+        let direction = Vector2::new(c * nearest.0 - s * nearest.1, s * nearest.0 + c * nearest.1);
+        sprocket.position + direction * self.arc_centre_radius
     }
 }
 

@@ -149,6 +149,7 @@ impl Terrain {
     }
 
     /// `(h(x), h'(x))`.
+    #[inline]
     pub fn height_and_slope(&self, x: f64) -> (f64, f64) {
         match self {
             Terrain::Flat { height } => (*height, 0.0),

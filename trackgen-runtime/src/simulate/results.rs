@@ -1,7 +1,7 @@
 use std::io;
 use std::path::Path;
 
-use super::{Sink, SinkError};
+use super::{CsvSink, Select, Sink, SinkError};
 use crate::integrate::Stats;
 
 /// A change of the dependent coordinates of a partitioned track (spec §2).
@@ -140,46 +140,20 @@ impl Results {
         Some((0..self.len()).map(|r| self.values[r * w + i]).collect())
     }
 
-    /// Writes CSV: a header `t,<columns>`, then one row per sample.
-    pub fn write_csv<W: io::Write>(&self, writer: W) -> csv::Result<()> {
-        let mut w = csv::Writer::from_writer(writer);
-        w.write_record(std::iter::once("t").chain(self.columns.iter().map(String::as_str)))?;
-        for s in self.iter() {
-            w.write_record(
-                std::iter::once(s.t)
-                    .chain(s.values.iter().copied())
-                    .map(|v| v.to_string()),
-            )?;
-        }
-        w.flush()?;
-        Ok(())
+    /// Writes CSV: `t`, then every column (the text of a
+    /// [`CsvSink`](crate::simulate::CsvSink)).
+    pub fn write_csv<W: io::Write>(&self, writer: W) -> Result<(), SinkError> {
+        self.write_to(CsvSink::new(writer))
     }
 
     /// Writes CSV of some columns only (`t` first, then these, in this
     /// order); unknown names are an error.
-    pub fn write_csv_columns<W: io::Write>(&self, writer: W, columns: &[&str]) -> csv::Result<()> {
-        let indices: Vec<usize> = columns
-            .iter()
-            .map(|name| {
-                self.columns.iter().position(|c| c == name).ok_or_else(|| {
-                    csv::Error::from(io::Error::new(
-                        io::ErrorKind::NotFound,
-                        format!("no column `{name}`"),
-                    ))
-                })
-            })
-            .collect::<Result<_, _>>()?;
-        let mut w = csv::Writer::from_writer(writer);
-        w.write_record(std::iter::once("t").chain(columns.iter().copied()))?;
-        for s in self.iter() {
-            w.write_record(
-                std::iter::once(s.t)
-                    .chain(indices.iter().map(|&i| s.values[i]))
-                    .map(|v| v.to_string()),
-            )?;
-        }
-        w.flush()?;
-        Ok(())
+    pub fn write_csv_columns<W: io::Write>(
+        &self,
+        writer: W,
+        columns: &[&str],
+    ) -> Result<(), SinkError> {
+        self.write_to(Select::new(columns.iter().copied(), CsvSink::new(writer)))
     }
 
     /// Gives every sample to `sink`, as a run would: `begin`, the rows,
@@ -193,9 +167,9 @@ impl Results {
         sink.finish()
     }
 
-    /// Writes CSV to a file.
-    pub fn save_csv(&self, path: impl AsRef<Path>) -> csv::Result<()> {
-        self.write_csv(std::fs::File::create(path)?)
+    /// Writes CSV to a file; errors name it.
+    pub fn save_csv(&self, path: impl AsRef<Path>) -> Result<(), SinkError> {
+        self.write_to(CsvSink::create(path)?)
     }
 }
 

@@ -232,6 +232,8 @@ struct Scratch {
     link_trig: Vec<(f64, f64)>,
     links: Vec<BodyState>,
     parts: Vec<BodyState>,
+    /// `(sin θ, cos θ)` of every chassis body.
+    part_trig: Vec<(f64, f64)>,
     positions: Vec<Vector2<f64>>,
     velocities: Vec<Vector2<f64>>,
 }
@@ -321,6 +323,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 link_trig: vec![(0.0, 1.0); T::BODIES],
                 links: vec![resting; T::BODIES],
                 parts: vec![resting; C::BODIES],
+                part_trig: vec![(0.0, 1.0); C::BODIES],
                 positions: vec![Vector2::zeros(); largest],
                 velocities: vec![Vector2::zeros(); largest],
             },
@@ -370,6 +373,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             link_trig,
             links,
             parts,
+            part_trig,
             positions,
             velocities,
         } = &mut self.scratch;
@@ -382,9 +386,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             *link = BodyState::with_sin_cos(r[b], qt[2 + b], link_trig[b], v[b], qdt[2 + b]);
         }
         let (r, v) = (&mut positions[..C::BODIES], &mut velocities[..C::BODIES]);
-        self.bodies.second().model().body_states(qc, qdc, r, v);
+        crate::sin_cos_each(&qc.as_slice()[2..], part_trig);
+        self.bodies
+            .second()
+            .model()
+            .body_states_with_trig(part_trig, qc, qdc, r, v);
         for (b, part) in parts.iter_mut().enumerate() {
-            *part = BodyState::new(r[b], qc[2 + b], v[b], qdc[2 + b]);
+            *part = BodyState::with_sin_cos(r[b], qc[2 + b], part_trig[b], v[b], qdc[2 + b]);
         }
         track_loads.fill(BodyLoad::ZERO);
         chassis_loads.fill(BodyLoad::ZERO);

@@ -1,6 +1,5 @@
 //! Rows written as CSV as they come.
 
-use std::fmt::Write as _;
 use std::fs::File;
 use std::io;
 use std::path::{Path, PathBuf};
@@ -8,16 +7,26 @@ use std::path::{Path, PathBuf};
 use super::{Sink, SinkError};
 
 /// Writes a run as CSV while it runs: a header `t,<columns>`, then one line
-/// per sample, numbers in Rust's shortest round-trip form (the text of
-/// [`Results::write_csv`](crate::simulate::Results::write_csv)). Holds one
-/// line and the `csv` writer's buffer (8 KiB), whatever the length of the
-/// run; [`finish`](Sink::finish) flushes.
-#[derive(Debug)]
+/// per sample, every number in its shortest round-trip form (by `ryu`:
+/// `1.0`, `0.154`, `1e-7`, `NaN`; what any CSV reader parses back to the
+/// same `f64`), the text of
+/// [`Results::write_csv`](crate::simulate::Results::write_csv). Holds the
+/// `csv` writer's buffer (8 KiB), whatever the length of the run;
+/// [`finish`](Sink::finish) flushes.
 pub struct CsvSink<W: io::Write> {
     writer: csv::Writer<W>,
     path: Option<PathBuf>,
     width: Option<usize>,
-    field: String,
+    number: ryu::Buffer,
+}
+
+impl<W: io::Write> std::fmt::Debug for CsvSink<W> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("CsvSink")
+            .field("path", &self.path)
+            .field("width", &self.width)
+            .finish_non_exhaustive()
+    }
 }
 
 impl<W: io::Write> CsvSink<W> {
@@ -28,7 +37,7 @@ impl<W: io::Write> CsvSink<W> {
             writer: csv::Writer::from_writer(writer),
             path: None,
             width: None,
-            field: String::new(),
+            number: ryu::Buffer::new(),
         }
     }
 
@@ -76,11 +85,8 @@ impl<W: io::Write> Sink for CsvSink<W> {
             return Err(SinkError::width(t, values.len(), width));
         }
         for v in std::iter::once(t).chain(values.iter().copied()) {
-            self.field.clear();
-            // Writing to a String cannot fail.
-            let _ = write!(self.field, "{v}");
-            let result = self.writer.write_field(&self.field);
-            result.map_err(self.err())?;
+            let result = self.writer.write_field(self.number.format(v));
+            result.map_err(|e| SinkError::csv(self.path.as_deref(), e))?;
         }
         let result = self.writer.write_record(None::<&[u8]>);
         result.map_err(self.err())
