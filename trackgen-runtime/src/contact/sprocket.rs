@@ -75,26 +75,22 @@ impl ToothProfile {
         2.0 * std::f64::consts::PI / self.teeth as f64
     }
 
-    /// The centre of the gap nearest to global point `p`: the gap whose
-    /// direction from the sprocket's centre is closest to `p`'s (the largest
-    /// cosine; gap `k` at `θ_s + (k + ½)·2π/teeth`), found among the teeth
-    /// in the sprocket's frame without an arctangent.
+    /// The centre of the gap nearest to global point `p`: gap
+    /// `k = round(α/β − ½)` for `p` at angle `α` in the sprocket's frame, at
+    /// `θ_s + (k + ½) β`, `β = 2π/teeth`.
     pub fn nearest_gap(&self, sprocket: &BodyState, p: Vector2<f64>) -> Vector2<f64> {
+        // Adding 1.5·2⁵² rounds to an integer (to even at a tie, where both
+        // gaps are as near); `f64::round` is a library call on x86-64.
+        const TO_INT: f64 = 6_755_399_441_055_744.0;
         let r = p - sprocket.position;
         let (s, c) = sprocket.sin_cos();
-        let (x, y) = (c * r.x + s * r.y, c * r.y - s * r.x);
+        // The angle in the sprocket's frame, without subtracting angles
+        // that grow without bound as the sprocket turns.
+        let alpha = (c * r.y - s * r.x).atan2(c * r.x + s * r.y);
         let beta = self.pitch_angle();
-        let (sb, cb) = crate::sin_cos(beta);
-        let (sh, ch) = crate::sin_cos(0.5 * beta);
-        let (mut gap, mut best, mut nearest) = ((ch, sh), f64::NEG_INFINITY, (ch, sh));
-        for _ in 0..self.teeth {
-            let cosine = gap.0 * x + gap.1 * y;
-            if cosine > best {
-                (best, nearest) = (cosine, gap);
-            }
-            gap = (cb * gap.0 - sb * gap.1, sb * gap.0 + cb * gap.1);
-        }
-        let direction = Vector2::new(c * nearest.0 - s * nearest.1, s * nearest.0 + c * nearest.1);
+        let k = (alpha / beta - 0.5 + TO_INT) - TO_INT;
+        let (sin, cos) = crate::sin_cos((k + 0.5) * beta);
+        let direction = Vector2::new(c * cos - s * sin, s * cos + c * sin);
         sprocket.position + direction * self.arc_centre_radius
     }
 }
