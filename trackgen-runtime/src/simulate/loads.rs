@@ -30,12 +30,13 @@ impl<const D: usize> Loads<D> {
     }
 
     /// The loads at `(t, q_i, q̇_i)`: the external ones, then the function's
-    /// additions.
+    /// additions (without a function, the external ones as they are).
     pub fn fill(&mut self, t: f64, q: &SVector<f64, D>, qd: &SVector<f64, D>) -> &[BodyLoad] {
+        let Some(f) = &mut self.function else {
+            return &self.external;
+        };
         self.current.copy_from_slice(&self.external);
-        if let Some(f) = &mut self.function {
-            f(t, q, qd, &mut self.current);
-        }
+        f(t, q, qd, &mut self.current);
         &self.current
     }
 }
