@@ -110,32 +110,25 @@ fn reduced_sin_cos(x: f64) -> (f64, f64) {
 /// If the slices differ in length.
 pub fn sin_cos_each(angles: &[f64], out: &mut [(f64, f64)]) {
     assert_eq!(angles.len(), out.len(), "one output per angle");
-    vectorised(|| each(angles, out));
-}
-
-/// Runs `f`, compiled for AVX2 where the processor has it (x86-64, chosen
-/// at run time): four numbers at a time instead of two. `f` must be
-/// inlined into it (a closure calling `#[inline(always)]` code) to be
-/// compiled so. Only the width of the vector operations changes, not which
-/// operations run or in what order (no fused multiply-add), so the results
-/// are the same bits on every x86-64 processor. (Tried on the generated
-/// linear-time solve too: its vectorised pass is too short to gain, 15 %
-/// slower in the bench.)
-#[inline(always)]
-fn vectorised<R>(f: impl FnOnce() -> R) -> R {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx2") {
         // SAFETY: the processor has AVX2, checked just above.
-        return unsafe { with_avx2(f) };
+        unsafe { each_avx2(angles, out) };
+        return;
     }
-    f()
+    each(angles, out);
 }
 
+/// [`each`] compiled for AVX2: four numbers at a time instead of two. Only
+/// the width of the vector operations changes, not which operations run or
+/// in what order (no fused multiply-add), so the results are the same bits
+/// on every x86-64 processor. (Tried on the generated linear-time solve
+/// too: its vectorised pass is too short to gain, 15 % slower in the
+/// bench.)
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-#[inline]
-unsafe fn with_avx2<R>(f: impl FnOnce() -> R) -> R {
-    f()
+fn each_avx2(angles: &[f64], out: &mut [(f64, f64)]) {
+    each(angles, out);
 }
 
 #[inline(always)]

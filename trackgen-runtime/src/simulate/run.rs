@@ -169,7 +169,7 @@ fn run(
     while t < t_end - eps {
         let t_old = t;
         stepper.step(system, &mut t, &mut y, t_end)?;
-        if !y.iter().all(|v| v.is_finite()) {
+        if !crate::integrate::all_finite(y.as_slice()) {
             return Err(SimulationError::NonFinite {
                 t,
                 what: "the state",
