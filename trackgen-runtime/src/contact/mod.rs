@@ -92,6 +92,35 @@ impl BodyState {
     }
 }
 
+/// Calls `f(i, link)` for every link whose centroid is within `reach` (m)
+/// of `centre`, in order, and for any whose distance is not a number (so a
+/// NaN state shows as a NaN force). The distances are compared 64 links at
+/// a time into a bit mask without branches, then the few links near are
+/// visited: a wheel is near a handful of a track's links, and a branch per
+/// link mispredicts at the edges of every run of them.
+#[inline]
+pub(crate) fn each_near(
+    links: &[BodyState],
+    centre: Vector2<f64>,
+    reach: f64,
+    mut f: impl FnMut(usize, &BodyState),
+) {
+    let reach2 = reach * reach;
+    for (chunk, block) in links.chunks(64).enumerate() {
+        let mut near = 0u64;
+        for (k, link) in block.iter().enumerate() {
+            let (dx, dy) = (link.position.x - centre.x, link.position.y - centre.y);
+            // `!(d² > r²)`: true for NaN.
+            near |= u64::from(!(dx * dx + dy * dy > reach2)) << k;
+        }
+        while near != 0 {
+            let k = near.trailing_zeros() as usize;
+            near &= near - 1;
+            f(chunk * 64 + k, &block[k]);
+        }
+    }
+}
+
 /// One contact's force on the first body of the pair, at a global point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactForce {

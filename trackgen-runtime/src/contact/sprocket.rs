@@ -120,10 +120,7 @@ impl SprocketContact {
     ) {
         let reach = self.profile.addendum + shoe.extent();
         let pin_reach = self.profile.addendum + shoe.pin_radius;
-        for (i, link) in links.iter().enumerate() {
-            if (link.position - sprocket.position).norm_squared() > reach * reach {
-                continue;
-            }
+        super::each_near(links, sprocket.position, reach, |i, link| {
             for local in &shoe.pins {
                 let pin_arm = link.arm(*local);
                 let pin = link.position + pin_arm;
@@ -162,6 +159,6 @@ impl SprocketContact {
                 );
                 each(i, &contact);
             }
-        }
+        });
     }
 }

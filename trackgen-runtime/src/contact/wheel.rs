@@ -31,11 +31,7 @@ impl WheelContact {
         mut each: impl FnMut(usize, &ContactForce),
     ) {
         let reach = radius + shoe.extent();
-        for (i, link) in links.iter().enumerate() {
-            let offset = link.position - wheel.position;
-            if offset.norm_squared() > reach * reach {
-                continue;
-            }
+        super::each_near(links, wheel.position, reach, |i, link| {
             let (a, b) = (
                 link.point(shoe.inner_face[0]),
                 link.point(shoe.inner_face[1]),
@@ -43,7 +39,7 @@ impl WheelContact {
             // The rim must be on the face's inner side (the link's left).
             let inward = link.arm(Vector2::new(0.0, 1.0));
             if (wheel.position - a).dot(&inward) <= 0.0 {
-                continue;
+                return;
             }
             let ab = b - a;
             let s = ((wheel.position - a).dot(&ab) / ab.norm_squared()).clamp(0.0, 1.0);
@@ -52,7 +48,7 @@ impl WheelContact {
             let distance = to_face.norm();
             let penetration = radius - distance;
             if penetration <= 0.0 || distance == 0.0 {
-                continue;
+                return;
             }
             let normal = to_face / distance;
             let contact = super::exchange(
@@ -62,6 +58,6 @@ impl WheelContact {
                 (point, normal, penetration),
             );
             each(i, &contact);
-        }
+        });
     }
 }
