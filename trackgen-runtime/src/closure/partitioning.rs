@@ -245,9 +245,10 @@ impl Partition {
         }
     }
 
-    /// `(q_i, q̇_i)` of `y = [z, ż]`: the dependent angles by the model's
-    /// generated Newton-Raphson from the last accepted ones, their rates
-    /// from `C_q q̇ = 0`, every link's `(sin θ, cos θ)` into `trig`.
+    /// `(q_i, q̇_i)` of `y = [z, ż]` into `q`, `qd`: the dependent angles
+    /// by the model's generated Newton-Raphson from the last accepted ones,
+    /// their rates from `C_q q̇ = 0`, every link's `(sin θ, cos θ)` into
+    /// `trig`.
     ///
     /// A jump of the pair by more than π/2 from the last accepted state is
     /// the closure's mirror solution: [`SimulationError::BranchJump`].
@@ -256,11 +257,10 @@ impl Partition {
         model: &M,
         t: f64,
         y: &[f64],
+        (q, qd): (&mut SVector<f64, D>, &mut SVector<f64, D>),
         trig: &mut [(f64, f64)],
-    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+    ) -> Result<(), SimulationError> {
         let n = self.independent.len();
-        let mut q = SVector::<f64, D>::zeros();
-        let mut qd = SVector::<f64, D>::zeros();
         for (i, &c) in self.independent.iter().enumerate() {
             q[c] = y[i];
             qd[c] = y[n + i];
@@ -270,8 +270,8 @@ impl Partition {
         q[2 + l] = self.guess[1];
         model
             .recover_closure(
-                &mut q,
-                &mut qd,
+                q,
+                qd,
                 self.pair,
                 self.tolerance,
                 self.options.newton_max_iterations,
@@ -294,7 +294,7 @@ impl Partition {
                 jump,
             });
         }
-        Ok((q, qd))
+        Ok(())
     }
 
     /// After an accepted step at `(q_i, q̇_i)` (expanded from `y`), with

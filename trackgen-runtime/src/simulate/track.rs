@@ -47,8 +47,8 @@ pub struct TrackSystem<M: TrackModel<D>, const D: usize> {
     y0: DVector<f64>,
     loads: Loads<D>,
     masses: Vec<(f64, f64)>,
-    /// Every link's `(sin θ, cos θ)` when the caller gives none.
-    trig: Vec<(f64, f64)>,
+    /// `q̈_i` of the last [`accelerations`](Self::accelerations).
+    qdd: SVector<f64, D>,
     /// The angle columns of `C_q`, for the partition's conditioning.
     columns: Vec<Vector2<f64>>,
     /// The last state expanded, and what it expanded to.
@@ -109,7 +109,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
             }
         };
         let mut system = TrackSystem {
-            trig: vec![(0.0, 1.0); M::BODIES],
+            qdd: SVector::zeros(),
             columns: vec![Vector2::zeros(); M::BODIES],
             recovered: Recovered {
                 valid: false,
@@ -160,22 +160,15 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         t: f64,
         y: &[f64],
     ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
-        let mut trig = std::mem::take(&mut self.trig);
-        let result = self.coordinates_with_trig(t, y, &mut trig);
-        self.trig = trig;
-        result
+        self.recover(t, y)?;
+        Ok((self.recovered.q, self.recovered.qd))
     }
 
-    /// [`coordinates`](Self::coordinates), also writing every link's
-    /// `(sin θ, cos θ)` at the recovered angles into `trig`. The last
-    /// state's result is kept: asked again for the same state (after a
-    /// step, for its last stage's), it is not recovered again.
-    pub(crate) fn coordinates_with_trig(
-        &mut self,
-        t: f64,
-        y: &[f64],
-        trig: &mut [(f64, f64)],
-    ) -> Result<(SVector<f64, D>, SVector<f64, D>), SimulationError> {
+    /// Makes the kept recovery that of `y`: `(q_i, q̇_i)`, the closure
+    /// recovered under partitioning, and every link's `(sin θ, cos θ)`
+    /// ([`recovered`](Self::recovered)). Asked again for the same state
+    /// (after a step, for its last stage's), it is not recovered again.
+    pub(crate) fn recover(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         if y.len() != self.y0.len() {
             return Err(SimulationError::Setup(format!(
                 "a state of {} values for a system of {}",
@@ -185,26 +178,29 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         }
         let kept = &mut self.recovered;
         if kept.valid && kept.y == y {
-            trig.copy_from_slice(&kept.trig);
-            return Ok((kept.q, kept.qd));
+            return Ok(());
         }
-        let (q, qd) = match &self.mode {
-            Mode::Partitioned(partition) => partition.expand(&self.model, t, y, trig)?,
-            _ => {
-                crate::sin_cos_each(&y[2..D], trig);
-                (
-                    SVector::from_column_slice(&y[..D]),
-                    SVector::from_column_slice(&y[D..]),
-                )
+        kept.valid = false;
+        match &self.mode {
+            Mode::Partitioned(partition) => {
+                partition.expand(&self.model, t, y, (&mut kept.q, &mut kept.qd), &mut kept.trig)?
             }
-        };
+            _ => {
+                crate::sin_cos_each(&y[2..D], &mut kept.trig);
+                kept.q.copy_from_slice(&y[..D]);
+                kept.qd.copy_from_slice(&y[D..]);
+            }
+        }
         kept.valid = true;
         kept.y.clear();
         kept.y.extend_from_slice(y);
-        kept.q = q;
-        kept.qd = qd;
-        kept.trig.copy_from_slice(trig);
-        Ok((q, qd))
+        Ok(())
+    }
+
+    /// The kept recovery: `q_i`, `q̇_i` and every link's `(sin θ, cos θ)`.
+    pub(crate) fn recovered(&self) -> (&SVector<f64, D>, &SVector<f64, D>, &[(f64, f64)]) {
+        let kept = &self.recovered;
+        (&kept.q, &kept.qd, &kept.trig)
     }
 
     /// The penalty joint acting, declared or chosen at run time.
@@ -277,20 +273,13 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         self.loads.set_external(loads);
     }
 
-    /// `q̈_i` at `(q_i, q̇_i)` under the current method, by the
-    /// generated linear-time route (spec §5), given every link's
-    /// `(sin θ, cos θ)` if the caller has them (the closure's recovery
-    /// computes them). Under partitioning the state satisfies the closure,
-    /// where the partitioned equations and the multiplier form have the
-    /// same solution. Every joint's force is kept for
-    /// [`tensions`](Self::tensions).
-    pub(crate) fn accelerations(
-        &mut self,
-        t: f64,
-        q: &SVector<f64, D>,
-        qd: &SVector<f64, D>,
-        trig: Option<&[(f64, f64)]>,
-    ) -> Result<SVector<f64, D>, SimulationError> {
+    /// `q̈_i` at the kept recovery ([`recover`](Self::recover)) under the
+    /// current method, by the generated linear-time route (spec §5). Under
+    /// partitioning the state satisfies the closure, where the partitioned
+    /// equations and the multiplier form have the same solution. Every
+    /// joint's force is kept for [`tensions`](Self::tensions).
+    pub(crate) fn accelerations(&mut self, t: f64) -> Result<&SVector<f64, D>, SimulationError> {
+        let (q, qd) = (&self.recovered.q, &self.recovered.qd);
         let closing = match &self.mode {
             Mode::Partitioned(_) => ClosingJoint::CLOSED,
             Mode::Multipliers(options) => ClosingJoint::Constrained {
@@ -305,28 +294,27 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 None => ClosingJoint::OPEN,
             },
         };
-        let trig = match trig {
-            Some(trig) => trig,
-            None => {
-                crate::sin_cos_each(&q.as_slice()[2..], &mut self.trig);
-                &self.trig
-            }
-        };
         let loads = self.loads.fill(t, q, qd);
-        let mut qdd = SVector::zeros();
         self.model
-            .linear_time_dynamics(trig, qd, loads, closing, &mut qdd, &mut self.joint_forces)
+            .linear_time_dynamics(
+                &self.recovered.trig,
+                qd,
+                loads,
+                closing,
+                &mut self.qdd,
+                &mut self.joint_forces,
+            )
             .map_err(|source| SimulationError::Dynamics { t, source })?;
-        Ok(qdd)
+        Ok(&self.qdd)
     }
 
     /// The tension (N, positive pulling) in every joint `i → i+1` (the last
     /// is the closing joint `n → 1`) at the last
-    /// [`accelerations`](Self::accelerations), at the angles whose
-    /// `(sin θ, cos θ)` are `trig`: the joint's force on link `i` along its
-    /// `d̄ⁱ`. For a cut closing joint, the force across the cut.
-    pub(crate) fn tensions(&self, trig: &[(f64, f64)], out: &mut Vec<f64>) {
+    /// [`accelerations`](Self::accelerations): the joint's force on link `i`
+    /// along its `d̄ⁱ`. For a cut closing joint, the force across the cut.
+    pub(crate) fn tensions(&self, out: &mut Vec<f64>) {
         out.clear();
+        let trig = &self.recovered.trig;
         out.extend(self.joint_forces.iter().zip(&self.spans).zip(trig).map(
             |((force, span), &(s, c))| {
                 let axis = Vector2::new(c * span.x - s * span.y, s * span.x + c * span.y);
@@ -335,20 +323,18 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         ));
     }
 
-    /// The state's derivative from coordinates already recovered by
-    /// [`coordinates`](Self::coordinates) (so an enclosing system that needs
-    /// them too recovers them once).
-    pub(crate) fn derivative_at(
+    /// The state's derivative at the kept recovery
+    /// ([`recover`](Self::recover)), so an enclosing system that needs the
+    /// coordinates too recovers them once.
+    pub(crate) fn derivative_recovered(
         &mut self,
         t: f64,
-        q: &SVector<f64, D>,
-        qd: &SVector<f64, D>,
         dy: &mut [f64],
-        trig: Option<&[(f64, f64)]>,
     ) -> Result<(), SimulationError> {
-        let qdd = self.accelerations(t, q, qd, trig)?;
+        self.accelerations(t)?;
+        let (qd, qdd) = (&self.recovered.qd, &self.qdd);
         match &self.mode {
-            Mode::Partitioned(partition) => partition.pack(qd, &qdd, dy),
+            Mode::Partitioned(partition) => partition.pack(qd, qdd, dy),
             _ => {
                 dy[..D].copy_from_slice(qd.as_slice());
                 dy[D..].copy_from_slice(qdd.as_slice());
@@ -364,8 +350,8 @@ impl<M: TrackModel<D>, const D: usize> OdeSystem for TrackSystem<M, D> {
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
-        let (q, qd) = self.coordinates(t, y)?;
-        self.derivative_at(t, &q, &qd, dy, None)
+        self.recover(t, y)?;
+        self.derivative_recovered(t, dy)
     }
 }
 
@@ -389,7 +375,8 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
             _ => 0.0,
         };
         record_mechanics(&self.model, &self.masses, &q, &qd, spring, row);
-        self.model.closure_columns(&self.trig, &mut self.columns);
+        self.model
+            .closure_columns(&self.recovered.trig, &mut self.columns);
         let conditioning = match &self.mode {
             Mode::Partitioned(partition) => {
                 partitioning::conditioning(&self.columns, partition.pair())
@@ -437,7 +424,8 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
             }
             Mode::Partitioned(_) => {
                 let (q, qd) = self.coordinates(t, y)?;
-                self.model.closure_columns(&self.trig, &mut self.columns);
+                self.model
+                    .closure_columns(&self.recovered.trig, &mut self.columns);
                 let Mode::Partitioned(partition) = &mut self.mode else {
                     unreachable!("matched above")
                 };

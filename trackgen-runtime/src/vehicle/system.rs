@@ -227,9 +227,6 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
 struct Scratch {
     track_loads: Vec<BodyLoad>,
     chassis_loads: Vec<BodyLoad>,
-    /// `(sin θ, cos θ)` of every link, from the closure's recovery, shared
-    /// by the contact states and the dynamics.
-    link_trig: Vec<(f64, f64)>,
     links: Vec<BodyState>,
     parts: Vec<BodyState>,
     /// `(sin θ, cos θ)` of every chassis body.
@@ -320,7 +317,6 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             scratch: Scratch {
                 track_loads: vec![BodyLoad::ZERO; T::BODIES],
                 chassis_loads: vec![BodyLoad::ZERO; C::BODIES],
-                link_trig: vec![(0.0, 1.0); T::BODIES],
                 links: vec![resting; T::BODIES],
                 parts: vec![resting; C::BODIES],
                 part_trig: vec![(0.0, 1.0); C::BODIES],
@@ -357,20 +353,19 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         (bodies, [extra[0], extra[1], extra[2]])
     }
 
-    /// Contact, suspension and drive loads at a state, into the load
-    /// buffers; the links' states from the trigonometry already in
-    /// `scratch.link_trig` (the closure's recovery computed it).
+    /// Contact, suspension and drive loads at the track's kept recovery
+    /// (whose trigonometry the links' states share) and the chassis'
+    /// coordinates, into the load buffers.
     fn loads(
         &mut self,
         t: f64,
-        (qt, qdt): (&SVector<f64, DT>, &SVector<f64, DT>),
         (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
         integral: f64,
     ) -> Result<ContactSummary, SimulationError> {
+        let (qt, qdt, link_trig) = self.bodies.first().recovered();
         let Scratch {
             track_loads,
             chassis_loads,
-            link_trig,
             links,
             parts,
             part_trig,
@@ -488,34 +483,24 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             .map_or(0.0, |i| qdc[2 + C::PARTS[i].body] - qdc[2])
     }
 
-    /// Both subsystems' coordinates at a state (the track's recovered, its
-    /// trigonometry into the scratch), and the loads there.
+    /// The loads at a state: the track's coordinates recovered (kept by
+    /// the track system), the chassis', and the contact, suspension and
+    /// drive loads there, given to both subsystems.
     #[allow(clippy::type_complexity)]
     fn evaluate(
         &mut self,
         t: f64,
         y: &[f64],
-    ) -> Result<
-        (
-            (SVector<f64, DT>, SVector<f64, DT>),
-            (SVector<f64, DC>, SVector<f64, DC>),
-            ContactSummary,
-        ),
-        SimulationError,
-    > {
+    ) -> Result<(ContactSummary, (SVector<f64, DC>, SVector<f64, DC>)), SimulationError> {
         let (bodies, [integral, ..]) = self.split(y);
         let (yt, yc) = self.bodies.split(bodies);
-        let (qt, qdt) =
-            self.bodies
-                .parts_mut()
-                .0
-                .coordinates_with_trig(t, yt, &mut self.scratch.link_trig)?;
+        self.bodies.parts_mut().0.recover(t, yt)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(yc);
-        let s = self.loads(t, (&qt, &qdt), (&qc, &qdc), integral)?;
+        let s = self.loads(t, (&qc, &qdc), integral)?;
         let (track, chassis) = self.bodies.parts_mut();
         track.set_external(&self.scratch.track_loads);
         chassis.set_external(&self.scratch.chassis_loads);
-        Ok(((qt, qdt), (qc, qdc), s))
+        Ok((s, (qc, qdc)))
     }
 }
 
@@ -527,17 +512,18 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
-        let ((qt, qdt), (_, qdc), s) = self.evaluate(t, y)?;
+        let (s, (_, qdc)) = self.evaluate(t, y)?;
         let nb = self.bodies.dimension();
         let (_, yc) = self.bodies.split(&y[..nb]);
         let (dy_bodies, extra) = dy.split_at_mut(nb);
         let (dyt, dyc) = self.bodies.split_mut(dy_bodies);
         let (track, chassis) = self.bodies.parts_mut();
-        track.derivative_at(t, &qt, &qdt, dyt, Some(&self.scratch.link_trig))?;
+        track.derivative_recovered(t, dyt)?;
         chassis.derivative(t, yc, dyc)?;
+        let (qt, qdt, _) = self.track().recovered();
         extra[0] = s.integral_rate;
         extra[1] = s.torque * self.sprocket_omega(&qdc);
-        extra[2] = s.dissipation + self.track().closure_energy(&qt, &qdt).1;
+        extra[2] = s.dissipation + self.track().closure_energy(qt, qdt).1;
         Ok(())
     }
 }
@@ -558,11 +544,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
     fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
         let (bodies, [_, work, dissipated]) = self.split(y);
         self.bodies.observe(t, bodies, row)?;
-        let ((qt, qdt), (qc, qdc), s) = self.evaluate(t, y)?;
+        let (s, (qc, qdc)) = self.evaluate(t, y)?;
         let (track, _) = self.bodies.parts_mut();
-        track.accelerations(t, &qt, &qdt, Some(&self.scratch.link_trig))?;
+        track.accelerations(t)?;
         let mut all = Vec::with_capacity(T::BODIES);
-        track.tensions(&self.scratch.link_trig, &mut all);
+        track.tensions(&mut all);
+        let (qt, qdt, _) = self.track().recovered();
+        let (qt, qdt) = (*qt, *qdt);
         let tension = all
             .get(self.config.tension_link - 1)
             .copied()
