@@ -75,23 +75,74 @@ impl ToothProfile {
         2.0 * std::f64::consts::PI / self.teeth as f64
     }
 
-    /// The centre of the gap nearest to global point `p`: gap
-    /// `k = round(α/β − ½)` for `p` at angle `α` in the sprocket's frame, at
-    /// `θ_s + (k + ½) β`, `β = 2π/teeth`.
+    /// The centre of the gap nearest to global point `p`: of the gaps at
+    /// `θ_s + (k + ½) β` (`β = 2π/teeth`), the one whose direction from the
+    /// sprocket's centre is closest to `p`'s.
     pub fn nearest_gap(&self, sprocket: &BodyState, p: Vector2<f64>) -> Vector2<f64> {
-        // Adding 1.5·2⁵² rounds to an integer (to even at a tie, where both
-        // gaps are as near); `f64::round` is a library call on x86-64.
+        Gaps::of(self).nearest(sprocket, p)
+    }
+}
+
+/// What finding a profile's nearest gap needs, computed once per
+/// evaluation: the angular pitch `β` and the rotation by it.
+#[derive(Debug, Clone, Copy)]
+struct Gaps {
+    pitch: f64,
+    turn: (f64, f64),
+    arc_centre_radius: f64,
+}
+
+impl Gaps {
+    fn of(profile: &ToothProfile) -> Gaps {
+        let pitch = profile.pitch_angle();
+        Gaps {
+            pitch,
+            turn: crate::sin_cos(pitch),
+            arc_centre_radius: profile.arc_centre_radius,
+        }
+    }
+
+    /// The gap nearest `p`: its index from a rough angle of `p` in the
+    /// sprocket's frame (within 2e-3 rad, far less than half a tooth), then
+    /// exactly, the largest cosine among it and its two neighbours.
+    #[inline]
+    fn nearest(&self, sprocket: &BodyState, p: Vector2<f64>) -> Vector2<f64> {
+        // Adding 1.5·2⁵² rounds to an integer without a library call.
         const TO_INT: f64 = 6_755_399_441_055_744.0;
         let r = p - sprocket.position;
         let (s, c) = sprocket.sin_cos();
-        // The angle in the sprocket's frame, without subtracting angles
-        // that grow without bound as the sprocket turns.
-        let alpha = (c * r.y - s * r.x).atan2(c * r.x + s * r.y);
-        let beta = self.pitch_angle();
-        let k = (alpha / beta - 0.5 + TO_INT) - TO_INT;
-        let (sin, cos) = crate::sin_cos((k + 0.5) * beta);
-        let direction = Vector2::new(c * cos - s * sin, s * cos + c * sin);
+        let (x, y) = (c * r.x + s * r.y, c * r.y - s * r.x);
+        let k = (rough_angle(y, x) / self.pitch - 0.5 + TO_INT) - TO_INT;
+        let (sin, cos) = crate::sin_cos((k + 0.5) * self.pitch);
+        let (sb, cb) = self.turn;
+        let mut best = (cos, sin);
+        for candidate in [(cos * cb - sin * sb, sin * cb + cos * sb), (cos * cb + sin * sb, sin * cb - cos * sb)] {
+            if candidate.0 * x + candidate.1 * y > best.0 * x + best.1 * y {
+                best = candidate;
+            }
+        }
+        let direction = Vector2::new(c * best.0 - s * best.1, s * best.0 + c * best.1);
         sprocket.position + direction * self.arc_centre_radius
+    }
+}
+
+/// `atan2(y, x)` within 2e-3 rad: `atan z ≈ π/4 z − z (|z| − 1)(0.2447 +
+/// 0.0663 |z|)` on `|z| ≤ 1` (Rajan et al., 2006), by octant. NaN for NaN.
+#[inline]
+fn rough_angle(y: f64, x: f64) -> f64 {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, PI};
+    let atan = |z: f64| FRAC_PI_4 * z - z * (z.abs() - 1.0) * (0.2447 + 0.0663 * z.abs());
+    if x.abs() >= y.abs() {
+        let a = atan(y / x);
+        if x >= 0.0 {
+            a
+        } else if y >= 0.0 {
+            a + PI
+        } else {
+            a - PI
+        }
+    } else {
+        FRAC_PI_2.copysign(y) - atan(x / y)
     }
 }
 
@@ -120,6 +171,7 @@ impl SprocketContact {
     ) {
         let reach = self.profile.addendum + shoe.extent();
         let pin_reach = self.profile.addendum + shoe.pin_radius;
+        let gaps = Gaps::of(&self.profile);
         super::each_near(links, sprocket.position, reach, |i, link| {
             for local in &shoe.pins {
                 let pin_arm = link.arm(*local);
@@ -130,7 +182,7 @@ impl SprocketContact {
                 // Inside the addendum circle, outside the gap's arc: in a
                 // tooth. The pin leaves it the shorter way, back into the
                 // gap or out across the tip circle.
-                let gap = self.profile.nearest_gap(sprocket, pin);
+                let gap = gaps.nearest(sprocket, pin);
                 let (out, radial) = (pin - gap, pin - sprocket.position);
                 let (distance, from_centre) = (out.norm(), radial.norm());
                 let into_flank = distance + shoe.pin_radius - self.profile.arc_radius;
