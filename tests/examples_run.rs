@@ -1008,3 +1008,36 @@ fn custom_vehicle_runs_balances_its_energy_and_rides_on_its_rollers() {
         );
     }
 }
+
+/// `step_limit --quick`: the step study runs, prints a line per variant
+/// (four at the main job's tolerance) with finite books, and the stiffest
+/// eigenvalues, each with its stability step; a bad argument is refused.
+#[test]
+fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
+    let step_limit = example("step_limit");
+    let dir = scratch("step_limit");
+    let out = run(&step_limit, &["--quick"], &dir);
+    assert_success("step_limit --quick", &out);
+    let stdout = text(&out.stdout);
+    let variants = stdout.lines().filter(|l| l.contains(" steps ")).count();
+    assert_eq!(variants, 4, "one line per variant:\n{stdout}");
+    for line in stdout.lines().filter(|l| l.contains("books")) {
+        let books: f64 = line
+            .split("books")
+            .nth(1)
+            .and_then(|r| r.split_whitespace().next())
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(f64::NAN);
+        assert!(books.abs() < 1e-2, "books in {line:?}");
+    }
+    assert!(
+        stdout
+            .lines()
+            .filter(|l| l.contains("stable to h ="))
+            .count()
+            >= 6,
+        "eigenvalues:\n{stdout}"
+    );
+    let bad = run(&step_limit, &["--slow"], &dir);
+    assert_rejected("step_limit --slow", &bad, &["--slow"]);
+}

@@ -1,0 +1,161 @@
+//! What sets the M113's step: accuracy or stability, and which mode.
+//!
+//! ```text
+//! cargo run --release --example step_limit [-- --quick]
+//! ```
+//!
+//! (`--quick`: 0.5 s and the main job's tolerance only, for a smoke test.)
+//!
+//! Drives the M113 from rest to 3 m/s on flat ground for 4 s with
+//! Bogacki-Shampine, the main job's integrator, and prints the steps,
+//! rejections, evaluations and energy books for:
+//!
+//! - tolerances 1e-4 … 1e-2: where accuracy sets the step, the step count
+//!   falls as `tol^(-1/3)` (third order); where a stiff mode's stability
+//!   sets it, the count stops falling;
+//! - at the main job's 1e-3, the same vehicle without rim and sprocket
+//!   friction, without any friction, and with every contact's damping
+//!   (Hunt-Crossley's `χ`) a tenth: if a friction slope or a damping rate
+//!   set the step, removing it would lengthen the step;
+//! - and the stiffest eigenvalues of the right-hand side's Jacobian
+//!   (central differences) at the end, with the step at which
+//!   Bogacki-Shampine's stability (`|h λ| ≤ 2.5` on the real axis) would
+//!   stop.
+
+use std::time::Instant;
+
+use trackgen::contact::{NormalLaw, Terrain};
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::nalgebra::{DMatrix, DVector};
+use trackgen::simulate::{Output, Simulated, simulate};
+use trackgen::vehicle::VehicleConfig;
+use trackgen::vehicles::m113::{self, M113};
+
+fn config() -> VehicleConfig {
+    let drive = m113::speed_drive(|t| 3.0 * ((t - 1.0) / 2.0).clamp(0.0, 1.0));
+    M113::config(Terrain::Flat { height: 0.0 }, drive)
+}
+
+fn damped(law: NormalLaw, factor: f64) -> NormalLaw {
+    match law {
+        NormalLaw::HuntCrossley {
+            stiffness,
+            exponent,
+            chi,
+        } => NormalLaw::HuntCrossley {
+            stiffness,
+            exponent,
+            chi: chi * factor,
+        },
+        NormalLaw::KelvinVoigt { stiffness, damping } => NormalLaw::KelvinVoigt {
+            stiffness,
+            damping: damping * factor,
+        },
+    }
+}
+
+fn run(
+    label: &str,
+    config: VehicleConfig,
+    tol: f64,
+    duration: f64,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut system = M113::system_with(config)?;
+    let integrator = Integrator::Bs23 {
+        rtol: tol,
+        atol: tol,
+        max_step: 0.01,
+    };
+    let started = Instant::now();
+    let results = simulate(&mut system, integrator, 0.0, duration, Output::Every(0.01))
+        .map_err(|f| f.error.to_string())?;
+    let wall = started.elapsed().as_secs_f64();
+    let s = results.stats;
+    let books = results.energy_balance().ok_or("no books")?;
+    println!(
+        "{label:<28} tol {tol:7.0e}: {:6} steps {:5} rejected {:6} evaluations  mean step {:.2} ms  books {:9.2e}  {:.3} s",
+        s.accepted,
+        s.rejected,
+        s.evaluations,
+        duration / s.accepted as f64 * 1e3,
+        books.residual(),
+        wall
+    );
+    Ok(())
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let quick = match std::env::args().nth(1).as_deref() {
+        None => false,
+        Some("--quick") => true,
+        Some(other) => return Err(format!("unknown argument {other:?} (only --quick)").into()),
+    };
+    let (duration, tolerances): (f64, &[f64]) = if quick {
+        (0.5, &[1e-3])
+    } else {
+        (4.0, &[1e-4, 3e-4, 1e-3, 3e-3, 1e-2])
+    };
+    for &tol in tolerances {
+        run("M113", config(), tol, duration)?;
+    }
+    let mut no_rim_friction = config();
+    no_rim_friction.wheels.friction.mu = 0.0;
+    no_rim_friction.sprocket.friction.mu = 0.0;
+    run(
+        "no rim or sprocket friction",
+        no_rim_friction,
+        1e-3,
+        duration,
+    )?;
+    let mut no_friction = config();
+    no_friction.wheels.friction.mu = 0.0;
+    no_friction.sprocket.friction.mu = 0.0;
+    no_friction.ground.friction.mu = 0.0;
+    run("no friction at all", no_friction, 1e-3, duration)?;
+    let mut less_damping = config();
+    less_damping.ground.normal = damped(less_damping.ground.normal, 0.1);
+    less_damping.wheels.normal = damped(less_damping.wheels.normal, 0.1);
+    less_damping.sprocket.normal = damped(less_damping.sprocket.normal, 0.1);
+    run("contact damping / 10", less_damping, 1e-3, duration)?;
+
+    // The Jacobian at the end of the default run.
+    let mut system = M113::system_with(config())?;
+    let integrator = Integrator::Bs23 {
+        rtol: 1e-3,
+        atol: 1e-3,
+        max_step: 0.01,
+    };
+    let mut stepper = integrator.stepper(system.dimension());
+    let (mut t, mut y) = (0.0, system.initial_state());
+    while t < duration {
+        stepper.step(&mut system, &mut t, &mut y, duration)?;
+        if system.after_step(t, y.as_mut_slice(), &mut |_| {})? {
+            stepper.restart();
+        }
+    }
+    let n = y.len();
+    let mut jacobian = DMatrix::zeros(n, n);
+    let (mut plus, mut minus) = (DVector::zeros(n), DVector::zeros(n));
+    for j in 0..n {
+        let h = 1e-7 * y[j].abs().max(1e-3);
+        let mut yj = y.clone();
+        yj[j] += h;
+        system.derivative(t, yj.as_slice(), plus.as_mut_slice())?;
+        yj[j] -= 2.0 * h;
+        system.derivative(t, yj.as_slice(), minus.as_mut_slice())?;
+        jacobian.set_column(j, &((&plus - &minus) / (2.0 * h)));
+    }
+    let mut eigenvalues: Vec<_> = jacobian.complex_eigenvalues().iter().copied().collect();
+    eigenvalues.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
+    println!("stiffest eigenvalues of the Jacobian at t = {t:.1} s (1/s):");
+    for e in eigenvalues.iter().take(6) {
+        println!(
+            "  {:9.1} {:+9.1}i   |λ| {:7.1}   Bogacki-Shampine stable to h = {:.2} ms on the real axis",
+            e.re,
+            e.im,
+            e.norm(),
+            2.5 / e.norm() * 1e3
+        );
+    }
+    Ok(())
+}
