@@ -37,6 +37,25 @@ pub struct Track {
     pub links: Vec<Link>,
     pub closure: Closure,
     pub gravity: Vec2,
+    /// The chain as a tree (link `i` hangs from link `i − 1`), lowered from
+    /// `links` ([`crate::lower`]).
+    pub bodies: Vec<TreeBody>,
+}
+
+/// A body of a tree in recursive coordinates: the track's chain and the
+/// chassis are both lowered to these (spec §1, §3). Body `b` hangs from its
+/// parent by a revolute joint: `Rᵇ = Rᵖ + Aᵖ at_parent − Aᵇ at_self`.
+#[derive(Clone)]
+pub struct TreeBody {
+    /// Names the body's locals in generated code: `s_{tag}`, `rx_{tag}`, …
+    pub tag: String,
+    pub mass: Num,
+    pub inertia: Num,
+    pub parent: Option<usize>,
+    /// Joint point on the parent, parent frame, m.
+    pub at_parent: Vec2,
+    /// Joint point on this body, own frame, m (zero for the root).
+    pub at_self: Vec2,
 }
 
 /// One track link (spec §1).
@@ -59,10 +78,13 @@ pub enum Closure {
 /// A chassis with its parts, and its track.
 pub struct Vehicle {
     pub gravity: Vec2,
-    pub chassis_mass: Num,
-    pub chassis_inertia: Num,
     pub parts: Vec<Part>,
     pub track: Track,
+    /// The chassis as a tree: the frame (body 0), then each part preceded
+    /// by its arm if it has one.
+    pub chassis: Vec<TreeBody>,
+    /// The body index of each part and of its arm, in `chassis`.
+    pub part_bodies: Vec<(usize, Option<usize>)>,
     /// What makes the vehicle run; `None` without a `shoe` section (the
     /// dynamics only).
     pub running: Option<Running>,

@@ -6,12 +6,9 @@ use quote::{format_ident, quote};
 
 use super::runtime;
 use super::track::{default_docs, track_type};
-use super::tree::{Body, Tree};
+use super::tree::Tree;
 use crate::ir::{Item, PartKind, Vehicle};
-use crate::num::{Num, Vec2};
-
-/// The frame's local tag (the paper's superscript `c`).
-const FRAME: &str = "chassis";
+use crate::num::Num;
 
 pub fn vehicle(item: &Item, vehicle: &Vehicle) -> TokenStream {
     let name = &item.name;
@@ -57,65 +54,6 @@ pub fn vehicle(item: &Item, vehicle: &Vehicle) -> TokenStream {
     }
 }
 
-/// The frame (body 0), then each part, preceded by its arm if it has one:
-/// a two-level tree. An arm's centroid is midway between its pivot and the
-/// part, and its frame is aligned with the chassis at the design position.
-fn chassis_tree(vehicle: &Vehicle) -> Tree {
-    let mut bodies = vec![Body {
-        tag: FRAME.to_string(),
-        mass: vehicle.chassis_mass.clone(),
-        inertia: vehicle.chassis_inertia.clone(),
-        parent: None,
-        at_parent: Vec2::zero(),
-        at_self: Vec2::zero(),
-    }];
-    for part in &vehicle.parts {
-        let (parent, at_parent) = match &part.arm {
-            Some(arm) => {
-                let half = Num::Known(0.5);
-                // From the arm's centroid (midway) to the pivot and the part.
-                let to_pivot = (arm.pivot.clone() - part.at.clone()).scale(&half);
-                bodies.push(Body {
-                    tag: format!("{}_arm", part.name),
-                    mass: arm.mass.clone(),
-                    inertia: arm.inertia.clone(),
-                    parent: Some(0),
-                    at_parent: arm.pivot.clone(),
-                    at_self: to_pivot.clone(),
-                });
-                (bodies.len() - 1, -to_pivot)
-            }
-            None => (0, part.at.clone()),
-        };
-        bodies.push(Body {
-            tag: part.name.to_string(),
-            mass: part.mass.clone(),
-            inertia: part.inertia.clone(),
-            parent: Some(parent),
-            at_parent,
-            at_self: Vec2::zero(),
-        });
-    }
-    Tree::new(bodies, vehicle.gravity.clone(), None)
-}
-
-/// Body indices of each part and its arm, in [`chassis_tree`]'s order.
-fn body_indices(vehicle: &Vehicle) -> Vec<(usize, Option<usize>)> {
-    let mut next = 1;
-    vehicle
-        .parts
-        .iter()
-        .map(|p| {
-            let arm = p.arm.as_ref().map(|_| {
-                next += 1;
-                next - 1
-            });
-            next += 1;
-            (next - 1, arm)
-        })
-        .collect()
-}
-
 fn chassis_type(
     vis: &syn::Visibility,
     vehicle_name: &Ident,
@@ -123,7 +61,7 @@ fn chassis_type(
     vehicle: &Vehicle,
 ) -> TokenStream {
     let rt = runtime();
-    let tree = chassis_tree(vehicle);
+    let tree = Tree::new(vehicle.chassis.clone(), vehicle.gravity.clone(), None);
     let dof = tree.len() + 2;
     let n = tree.len();
     let statements = super::articulated::tree_dynamics(&tree);
@@ -149,8 +87,8 @@ fn chassis_type(
     let doc = format!(
         "The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it."
     );
-    let indices = body_indices(vehicle);
-    let parts = vehicle.parts.iter().zip(&indices).map(|(p, &(body, arm_body))| {
+    let indices = &vehicle.part_bodies;
+    let parts = vehicle.parts.iter().zip(indices).map(|(p, &(body, arm_body))| {
         let label = p.name.to_string();
         let kind = match p.kind {
             PartKind::Sprocket => quote!(Sprocket),
@@ -181,7 +119,7 @@ fn chassis_type(
     let index_consts = vehicle
         .parts
         .iter()
-        .zip(&indices)
+        .zip(indices)
         .map(|(p, &(body, arm_body))| {
             let konst = format_ident!("{}", p.name.to_string().to_uppercase());
             let doc = format!(

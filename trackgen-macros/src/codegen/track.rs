@@ -8,7 +8,7 @@ use syn::{Attribute, Visibility};
 use super::flat::flatten;
 use super::lin::{LinVec, Trig};
 use super::runtime;
-use super::tree::{Body, Penalty, Tree};
+use super::tree::{Penalty, Tree};
 use crate::ir::{Closure, Item, Track};
 use crate::num::Vec2;
 
@@ -43,30 +43,8 @@ fn spans(track: &Track) -> Vec<Vec2> {
         .collect()
 }
 
-/// The chain as a tree: link `i` hangs from link `i − 1` by `ū1ⁱ` at
-/// `ū2^{i−1}`; tags are the paper's link numbers `1 … n`.
+/// The chain's tree, with a penalty joint's spring if declared.
 fn chain(track: &Track) -> Tree {
-    let bodies = track
-        .links
-        .iter()
-        .enumerate()
-        .map(|(i, link)| Body {
-            tag: (i + 1).to_string(),
-            mass: link.mass.clone(),
-            inertia: link.inertia.clone(),
-            parent: i.checked_sub(1),
-            at_parent: if i == 0 {
-                Vec2::zero()
-            } else {
-                track.links[i - 1].u2.clone()
-            },
-            at_self: if i == 0 {
-                Vec2::zero()
-            } else {
-                link.u1.clone()
-            },
-        })
-        .collect();
     let penalty = match &track.closure {
         Closure::Penalty { stiffness, damping } => Some(Penalty {
             stiffness: stiffness.clone(),
@@ -75,7 +53,7 @@ fn chain(track: &Track) -> Tree {
         }),
         _ => None,
     };
-    Tree::new(bodies, track.gravity.clone(), penalty)
+    Tree::new(track.bodies.clone(), track.gravity.clone(), penalty)
 }
 
 pub fn track_type(

@@ -25,18 +25,8 @@ use quote::{format_ident, quote};
 use super::lin::{Lin, LinVec, Trig, pair};
 use crate::num::{Num, Vec2};
 
-/// One body of a tree to generate.
-pub struct Body {
-    /// Names the body's locals: `s_{tag}`, `rx_{tag}`, …
-    pub tag: String,
-    pub mass: Num,
-    pub inertia: Num,
-    pub parent: Option<usize>,
-    /// Joint point on the parent, parent frame.
-    pub at_parent: Vec2,
-    /// Joint point on this body, own frame (zero for the root).
-    pub at_self: Vec2,
-}
+/// One body of a tree to generate: the IR's.
+pub use crate::ir::TreeBody as Body;
 
 /// The spring-damper of a penalty-closed track: it acts along the closure
 /// gap `C = Σ Aʲ d̄ʲ`, so `Q_i` gains `C_qᵀ F` with `F = −k C − c Ċ`.

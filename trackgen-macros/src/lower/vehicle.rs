@@ -8,7 +8,8 @@ use quote::{format_ident, quote};
 use syn::spanned::Spanned;
 use syn::{Expr, Ident, Lit, LitInt};
 
-use super::{Bound, Cx, Fields, strip};
+use super::Cx;
+use super::keys::{Bound, Fields, strip};
 use crate::ir::{
     Arm, Closure, ConstCheck, ContactPair, NormalLaw, Part, PartKind, Running, Shoe, Track, Vehicle,
 };
@@ -194,15 +195,17 @@ impl Cx<'_> {
             links: Vec::new(),
             closure: Closure::Open,
             gravity: Vec2::zero(),
+            bodies: Vec::new(),
         });
         track.gravity = gravity.clone();
         let running = self.running(&singles, sprocket.is_some(), profile);
+        let (chassis, part_bodies) = super::tree::chassis(&chassis_mass, &chassis_inertia, &parts);
         Vehicle {
             gravity,
-            chassis_mass,
-            chassis_inertia,
             parts,
             track,
+            chassis,
+            part_bodies,
             running,
         }
     }
