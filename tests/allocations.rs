@@ -48,10 +48,21 @@ fn allocations_in(f: impl FnOnce()) -> usize {
 #[test]
 fn evaluations_and_steps_allocate_nothing() {
     let drive = m113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
-    let mut system = m113::system(Terrain::Bump { centre: 5.0, width: 1.0, height: 0.1 }, drive)
-        .expect("the M113 assembles");
+    let mut system = m113::system(
+        Terrain::Bump {
+            centre: 5.0,
+            width: 1.0,
+            height: 0.1,
+        },
+        drive,
+    )
+    .expect("the M113 assembles");
     for integrator in [
-        Integrator::Bs23 { rtol: 1e-3, atol: 1e-3, max_step: 0.01 },
+        Integrator::Bs23 {
+            rtol: 1e-3,
+            atol: 1e-3,
+            max_step: 0.01,
+        },
         Integrator::dopri5(1e-6),
     ] {
         let mut stepper = integrator.stepper(system.dimension());
@@ -59,7 +70,10 @@ fn evaluations_and_steps_allocate_nothing() {
         let mut dy = DVector::zeros(y.len());
         let mut step = |system: &mut m113::M113System, t: &mut f64, y: &mut DVector<f64>| {
             stepper.step(system, t, y, 10.0).expect("a step");
-            if system.after_step(*t, y.as_mut_slice(), &mut |_| {}).expect("after the step") {
+            if system
+                .after_step(*t, y.as_mut_slice(), &mut |_| {})
+                .expect("after the step")
+            {
                 stepper.restart();
             }
         };
@@ -70,16 +84,24 @@ fn evaluations_and_steps_allocate_nothing() {
         let warm = t;
         let evaluation = allocations_in(|| {
             for _ in 0..50 {
-                system.derivative(t, y.as_slice(), dy.as_mut_slice()).expect("an evaluation");
+                system
+                    .derivative(t, y.as_slice(), dy.as_mut_slice())
+                    .expect("an evaluation");
             }
         });
-        assert_eq!(evaluation, 0, "{integrator:?}: allocations in 50 evaluations");
+        assert_eq!(
+            evaluation, 0,
+            "{integrator:?}: allocations in 50 evaluations"
+        );
         let steps = allocations_in(|| {
             for _ in 0..200 {
                 step(&mut system, &mut t, &mut y);
             }
         });
-        assert_eq!(steps, 0, "{integrator:?}: allocations in 200 steps to t = {t} s");
+        assert_eq!(
+            steps, 0,
+            "{integrator:?}: allocations in 200 steps to t = {t} s"
+        );
         assert!(t > warm, "the steps went somewhere: t = {t} s");
     }
 }

@@ -116,7 +116,10 @@ impl Gaps {
         let (sin, cos) = crate::sin_cos((k + 0.5) * self.pitch);
         let (sb, cb) = self.turn;
         let mut best = (cos, sin);
-        for candidate in [(cos * cb - sin * sb, sin * cb + cos * sb), (cos * cb + sin * sb, sin * cb - cos * sb)] {
+        for candidate in [
+            (cos * cb - sin * sb, sin * cb + cos * sb),
+            (cos * cb + sin * sb, sin * cb - cos * sb),
+        ] {
             if candidate.0 * x + candidate.1 * y > best.0 * x + best.1 * y {
                 best = candidate;
             }

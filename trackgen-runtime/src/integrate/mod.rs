@@ -94,7 +94,9 @@ pub(crate) fn all_finite(values: &[f64]) -> bool {
             *lane += v - v;
         }
     }
-    let total = rest.iter().fold(lanes.iter().sum::<f64>(), |t, v| t + (v - v));
+    let total = rest
+        .iter()
+        .fold(lanes.iter().sum::<f64>(), |t, v| t + (v - v));
     total == 0.0
 }
 

@@ -182,9 +182,13 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         }
         kept.valid = false;
         match &self.mode {
-            Mode::Partitioned(partition) => {
-                partition.expand(&self.model, t, y, (&mut kept.q, &mut kept.qd), &mut kept.trig)?
-            }
+            Mode::Partitioned(partition) => partition.expand(
+                &self.model,
+                t,
+                y,
+                (&mut kept.q, &mut kept.qd),
+                &mut kept.trig,
+            )?,
             _ => {
                 crate::sin_cos_each(&y[2..D], &mut kept.trig);
                 kept.q.copy_from_slice(&y[..D]);
