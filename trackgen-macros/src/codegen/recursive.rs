@@ -22,11 +22,6 @@ pub fn recursive_impl(
     let dof = n + 2;
     let trig = tree.trig_prelude();
     let trig_given = tree.trig_from_slice();
-    let trig_array = (0..n).map(|b| {
-        let i = 2 + b;
-        quote!(q[#i].sin_cos())
-    });
-    let trig_array = quote!(#(#trig_array),*);
     let rates = tree.rate_prelude(false);
     let positions = tree.positions();
     let velocities = tree.velocities();
@@ -120,7 +115,8 @@ pub fn recursive_impl(
                 positions: &mut [#rt::nalgebra::Vector2<f64>],
                 velocities: &mut [#rt::nalgebra::Vector2<f64>],
             ) {
-                let trig = [#trig_array];
+                let mut trig = [(0.0f64, 1.0f64); #n];
+                #rt::runtime::sin_cos_each(&q.as_slice()[2..], &mut trig);
                 self.body_states_with_trig(&trig, q, qd, positions, velocities);
             }
 

@@ -108,18 +108,17 @@ impl Tree {
         Trig::new(&self.bodies[b].tag)
     }
 
-    /// `let (s_b, c_b) = q[2 + b].sin_cos();` for every body: each angle's
-    /// sine and cosine once.
+    /// Every body's angle's sine and cosine once, by the runtime's
+    /// vectorised `sin_cos_each` into `trig`, then
+    /// `let (s_b, c_b) = trig[b];`.
     pub fn trig_prelude(&self) -> TokenStream {
-        self.bodies
-            .iter()
-            .enumerate()
-            .map(|(b, body)| {
-                let Trig { s, c } = Trig::new(&body.tag);
-                let i = 2 + b;
-                quote! { let (#s, #c) = q[#i].sin_cos(); }
-            })
-            .collect()
+        let rt = super::runtime();
+        let (n, from_slice) = (self.len(), self.trig_from_slice());
+        quote! {
+            let mut trig = [(0.0f64, 1.0f64); #n];
+            #rt::runtime::sin_cos_each(&q.as_slice()[2..], &mut trig);
+            #from_slice
+        }
     }
 
     /// `let (s_b, c_b) = trig[b];`: the same locals from a caller's slice.
