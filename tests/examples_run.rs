@@ -462,6 +462,68 @@ fn m113_takes_a_dip_and_a_step_in_speed() {
     );
 }
 
+/// A negative speed drives in reverse: the chassis ends moving backwards
+/// near the command (2 m/s after a 0.3 s ramp and 0.7 s more: within
+/// 30 % — the controller overshoots on the way, as forwards) and has
+/// moved back.
+#[test]
+fn m113_drives_in_reverse() {
+    let m113 = example("m113");
+    let dir = scratch("m113_reverse");
+    let out = run(
+        &m113,
+        &[
+            "--speed",
+            "-2",
+            "--settle",
+            "0",
+            "--ramp",
+            "0.3",
+            "--duration",
+            "1.0",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --speed -2", &out);
+    check_m113_outputs(&dir, 1.0);
+    let csv = Csv::read(&dir.join("m113.csv"));
+    let (speed, x) = (csv.column("speed"), csv.column("x"));
+    let (v, moved) = (*speed.last().unwrap(), x.last().unwrap() - x[0]);
+    assert!((v + 2.0).abs() <= 0.6, "final speed {v} m/s for -2");
+    assert!(moved < -0.5, "moved {moved} m in reverse");
+}
+
+/// A run that cannot start (a 0.4 m bump under the vehicle at rest, so
+/// the track would start inside the ground) is an error naming why: a
+/// non-zero exit, no summary and no files.
+#[test]
+fn m113_refuses_a_start_inside_the_ground() {
+    let m113 = example("m113");
+    let dir = scratch("m113_start_inside");
+    let out_dir = dir.join("out");
+    let out = run(
+        &m113,
+        &[
+            "--bump-at",
+            "0",
+            "--bump-height",
+            "0.4",
+            "--out",
+            out_dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_rejected(
+        "m113 with a bump under the start",
+        &out,
+        &["inside the ground"],
+    );
+    assert!(out.stdout.is_empty(), "no summary:\n{}", text(&out.stdout));
+    assert!(!out_dir.exists(), "no files are written");
+}
+
 #[test]
 fn m113_rejects_bad_options() {
     let m113 = example("m113");

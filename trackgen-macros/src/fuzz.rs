@@ -8,6 +8,9 @@
 //! (empty, reversed, out of range, huge), arms and parts (repeated ones
 //! too), shoes, contact pairs and drives; such declarations
 //! with tokens deleted, duplicated or replaced; and random token trees.
+//! Errors on declarations from the grammar must point at a token of the
+//! input, not at the macro call (`check_spanned`; spans carry locations
+//! here through proc-macro2's `span-locations`, a dev-dependency feature).
 //! The case counts keep the run to a few seconds.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
@@ -39,6 +42,40 @@ fn check(input: TokenStream) -> Result<(), TestCaseError> {
         }
     }
     Ok(())
+}
+
+/// Expands `text`, lexed after a leading newline so that no token of it
+/// starts where `Span::call_site()` reports (line 1, column 0), and checks
+/// the outcome as [`check`] does, and also that every error points into
+/// the input: a token span on line 2 or later, never the call site (which
+/// the user would see as an error on the whole macro call).
+fn check_spanned(text: &str) -> Result<(), TestCaseError> {
+    let tokens = TokenStream::from_str(&format!("\n{text}")).expect("generated text lexes");
+    let out = catch_unwind(AssertUnwindSafe(|| expand(tokens.clone())))
+        .map_err(|_| TestCaseError::fail(format!("the expander panicked on: {text}")))?;
+    for span in error_spans(&out) {
+        prop_assert!(
+            span.start().line >= 2 && span.byte_range().len() > 0,
+            "an error at the call site ({:?}) for: {}",
+            span.start(),
+            text
+        );
+    }
+    check(tokens)
+}
+
+/// The span of every `compile_error` in `tokens` (where the compiler shows
+/// the error), nested groups included.
+fn error_spans(tokens: &TokenStream) -> Vec<Span> {
+    let mut out = Vec::new();
+    for t in tokens.clone() {
+        match t {
+            TokenTree::Ident(id) if id == "compile_error" => out.push(id.span()),
+            TokenTree::Group(g) => out.extend(error_spans(&g.stream())),
+            _ => {}
+        }
+    }
+    out
 }
 
 /// The message of every `compile_error!` in `tokens`, nested groups
@@ -797,8 +834,7 @@ proptest! {
 
     #[test]
     fn declarations_expand_to_code_or_errors(text in declaration()) {
-        let tokens = TokenStream::from_str(&text).expect("generated text lexes");
-        check(tokens)?;
+        check_spanned(&text)?;
     }
 
     #[test]

@@ -119,3 +119,46 @@ fn runnable_vehicle_with_repeated_wheels() {
         }
     })));
 }
+
+/// Each user expression is emitted once, as a named constant, however many
+/// links or generated places use it (issue 12: a bad expression copied into
+/// every generated place made a 64-link error path take minutes). Each of
+/// the 32 links gets its own expression `np(k)`, and the shared ones are
+/// `PITCH`-based: the ident `np` appears exactly once per expression, and
+/// `PITCH` once per distinct joint expression.
+#[test]
+fn each_user_expression_is_emitted_once() {
+    let mut overrides = TokenStream::new();
+    for k in 1..=32usize {
+        let value = k as f64 + 0.5;
+        overrides.extend(quote! { link[#k] { mass: np(#value), inertia: np(0.04 * #value) }, });
+    }
+    let out = expand(quote! {
+        pub track Pasted {
+            links: 32,
+            link { mass: 1.0, inertia: 0.1, u1: (-PITCH / 2.0, 0.0), u2: (PITCH / 2.0, 0.0) },
+            #overrides
+            closure: partitioned,
+        }
+    });
+    fn count(tokens: TokenStream, name: &str) -> usize {
+        tokens
+            .into_iter()
+            .map(|t| match t {
+                proc_macro2::TokenTree::Ident(i) => usize::from(i == name),
+                proc_macro2::TokenTree::Group(g) => count(g.stream(), name),
+                _ => 0,
+            })
+            .sum()
+    }
+    assert_eq!(
+        count(out.clone(), "np"),
+        64,
+        "each of the 64 expressions once"
+    );
+    assert_eq!(
+        count(out, "PITCH"),
+        2,
+        "each of the two joint expressions once"
+    );
+}
