@@ -329,6 +329,7 @@ fn arm() -> impl Strategy<Value = String> {
         ("stiffness", number().boxed()),
         ("damping", number().boxed()),
         ("preload", number().boxed()),
+        ("travel", point().boxed()),
     ]);
     (body, any::<bool>()).prop_map(|(b, t)| format!("arm {}", block(b, t)))
 }
@@ -657,6 +658,7 @@ const IDENTS: &[&str] = &[
     "arm",
     "pivot",
     "preload",
+    "travel",
     "at",
     "radius",
     "teeth",

@@ -195,6 +195,9 @@ pub struct Arm {
     pub damping: Num,
     /// N m, counter-clockwise on the arm at its design angle.
     pub preload: Num,
+    /// The angles (rad from the design position) the assembly may set the
+    /// arm to, to take up a track's slack: (low, high), low ≤ 0 ≤ high.
+    pub travel: Vec2,
 }
 
 /// A property of constant expressions that the macro cannot evaluate, for

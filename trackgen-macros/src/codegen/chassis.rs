@@ -101,9 +101,11 @@ fn chassis_type(
         let arm = match (&p.arm, arm_body) {
             (Some(a), Some(arm_body)) => {
                 let (k, c, t) = (&a.stiffness, &a.damping, &a.preload);
+                let (low, high) = (&a.travel.x, &a.travel.y);
                 quote! {
                     ::core::option::Option::Some(#rt::runtime::ArmSpring {
                         body: #arm_body, stiffness: #k, damping: #c, preload: #t,
+                        travel: (#low, #high),
                     })
                 }
             }

@@ -406,7 +406,7 @@ impl Cx<'_> {
     }
 
     /// `arm { pivot | pivot_offset, mass, inertia, stiffness, damping,
-    /// preload }`: the arm (its `pivot` as declared, absolute or from the
+    /// preload, travel }`: the arm (its `pivot` as declared, absolute or from the
     /// part), how its pivot is given, and the pivot's span. In a repeated
     /// block only `pivot_offset` makes sense.
     fn arm(&mut self, block: &crate::parse::Block, repeated: bool) -> Option<(Arm, PivotAt, Span)> {
@@ -418,6 +418,7 @@ impl Cx<'_> {
             "stiffness",
             "damping",
             "preload",
+            "travel",
         ];
         let fields = self.fields("arm", block, &keys);
         self.sections("arm", block, &[]);
@@ -455,6 +456,7 @@ impl Cx<'_> {
         let stiffness = self.non_negative(&fields, "stiffness");
         let damping = self.non_negative(&fields, "damping");
         let preload = self.number(&fields, "preload", false).unwrap_or(Num::ZERO);
+        let travel = self.travel(&fields);
         let (pivot, how, span) = pivot?;
         let arm = Arm {
             pivot,
@@ -463,8 +465,54 @@ impl Cx<'_> {
             stiffness: stiffness?,
             damping: damping?,
             preload,
+            travel: travel?,
         };
         Some((arm, how, span))
+    }
+
+    /// An arm's `travel: (low, high)`, rad from the design position, with
+    /// `−π ≤ low ≤ 0 ≤ high ≤ π` and `low < high`; default a quarter turn
+    /// each way.
+    fn travel(&mut self, fields: &Fields) -> Option<Vec2> {
+        let quarter = std::f64::consts::FRAC_PI_2;
+        let Some(expr) = fields.map.get("travel").copied() else {
+            return Some(Vec2 {
+                x: Num::Known(-quarter),
+                y: Num::Known(quarter),
+            });
+        };
+        if !matches!(strip(expr), Expr::Tuple(t) if t.elems.len() == 2) {
+            self.errors.spanned(
+                expr,
+                "`travel` must be a pair `(low, high)` of angles in rad",
+            );
+            return None;
+        }
+        let travel = self.point(fields, "travel", false)?;
+        let message = "`travel` must be (low, high) in rad from the design position, with -π ≤ low ≤ 0 ≤ high ≤ π and low < high";
+        match (travel.x.known(), travel.y.known()) {
+            (Some(low), Some(high)) => {
+                let pi = std::f64::consts::PI;
+                if !(-pi <= low && low <= 0.0 && 0.0 <= high && high <= pi && low < high) {
+                    self.errors
+                        .spanned(expr, format!("{message}; found ({low}, {high})"));
+                    return None;
+                }
+            }
+            _ => {
+                let (low, high) = (&travel.x, &travel.y);
+                self.checks.push(ConstCheck {
+                    span: expr.span(),
+                    condition: quote!(
+                        -::core::f64::consts::PI <= (#low) && (#low) <= 0.0
+                            && 0.0 <= (#high) && (#high) <= ::core::f64::consts::PI
+                            && (#low) < (#high)
+                    ),
+                    message: message.to_string(),
+                });
+            }
+        }
+        Some(travel)
     }
 
     fn teeth(&mut self, fields: &Fields) -> Option<u32> {

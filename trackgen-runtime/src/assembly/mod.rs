@@ -1,20 +1,32 @@
-//! Initial assembly of a track: wrap the links around the sprocket, idler
-//! and road wheels so that the loop closes at t = 0 (spec §4).
+//! Initial assembly of a track: wrap the links around the sprocket, idler,
+//! road wheels and return rollers so that the loop closes at t = 0
+//! (spec §4).
 //!
-//! The belt path is the convex wrap of the wheels' pitch circles (outer
-//! tangents and arcs), run counter-clockwise. Joints are laid along it one
-//! link pitch apart (chords, not arcs). A track longer than the wrap takes
-//! up the slack in one span, which sags as a circular arc; the sag is
-//! found by bisection so that the last joint lands on the first. What is
-//! left (rounding) is closed by the simulation's Newton-Raphson.
+//! The belt path ([`belt`]) runs counter-clockwise round the wheels'
+//! pitch circles: arcs on the wheels it touches, straight spans on the
+//! lower run, and on the upper run spans that sag with one curvature, as a
+//! hanging chain's do, resting on the return rollers. Joints are laid
+//! along it one link pitch apart (chords, not arcs: each found where the
+//! path leaves the circle of one pitch about the joint before). The sag's
+//! curvature is solved so that the last joint lands on the first; what is
+//! left (rounding) is closed by the simulation's Newton-Raphson. A vehicle
+//! with a tensioner sets the tensioner instead, with the upper run nearly
+//! tight ([`crate::vehicle::assemble`]).
+//!
+//! When the track does not fit, the error says by how much, and which
+//! link counts would.
 
+mod belt;
 mod path;
+
+use std::fmt;
 
 use nalgebra::{SVector, Vector2};
 use thiserror::Error;
 
 use crate::model::TrackModel;
-use path::{Path, Piece, ccw_sweep, outer_tangent, sag_arc};
+pub(crate) use belt::longest_upper_span;
+use path::{Path, Place};
 
 /// A wheel the track wraps, as its pitch circle: the circle the joints lie
 /// on where the track runs round it.
@@ -24,6 +36,72 @@ pub struct PitchCircle {
     pub centre: Vector2<f64>,
     /// Radius, m.
     pub radius: f64,
+}
+
+/// What limits how much track the wheels take up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SlackLimit {
+    /// The upper run's sag: at most a quarter of a span ([`MAX_SAG`]),
+    /// clear of the wheels below it.
+    Sag,
+    /// The tensioner's travel (the idler arm's declared `travel`), with
+    /// the upper run nearly tight.
+    Tensioner,
+}
+
+impl fmt::Display for SlackLimit {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            SlackLimit::Sag => {
+                "for the upper run to sag clear of the wheels and at most a quarter of a span"
+            }
+            SlackLimit::Tensioner => "for the tensioner's travel",
+        })
+    }
+}
+
+/// The link counts that fit a set of wheels: between `tight` and `slack`
+/// links of `pitch` (real numbers: the belt's length in chords of the
+/// pitch, tight and at the most slack taken up).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LinkCounts {
+    /// The track's mean link pitch, m.
+    pub pitch: f64,
+    /// Links of `pitch` round the tightest belt.
+    pub tight: f64,
+    /// Links of `pitch` round the belt with the most slack taken up.
+    pub slack: f64,
+}
+
+impl LinkCounts {
+    /// The whole numbers of links that fit.
+    pub fn range(&self) -> std::ops::RangeInclusive<usize> {
+        // A count within rounding of an end fits: the Newton-Raphson
+        // closes what is left.
+        let lo = (self.tight - 1e-9).ceil().max(0.0) as usize;
+        let hi = (self.slack + 1e-9).floor().max(0.0) as usize;
+        lo..=hi
+    }
+}
+
+impl fmt::Display for LinkCounts {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let range = self.range();
+        let (lo, hi) = (*range.start(), *range.end());
+        if range.is_empty() {
+            write!(
+                f,
+                "no whole number of {:.3} m links fits (from {:.2} to {:.2} would)",
+                self.pitch, self.tight, self.slack
+            )
+        } else if lo == hi {
+            write!(f, "{lo} fit")
+        } else if hi == lo + 1 {
+            write!(f, "{lo} or {hi} fit")
+        } else {
+            write!(f, "{lo} to {hi} fit")
+        }
+    }
 }
 
 /// Why a track cannot be wrapped.
@@ -43,36 +121,44 @@ pub enum AssemblyError {
         distance: f64,
     },
     /// The track is too short to go round the wheels.
-    #[error(
-        "the track is too short to wrap the wheels: {links} links reach {track:.3} m, the wrap needs {wrap:.3} m"
-    )]
+    #[error("{links} links are {short:.3} m too short to wrap the wheels; {fits}")]
     TrackTooShort {
         /// Number of links.
         links: usize,
-        /// The track's length, m (sum of pitches).
-        track: f64,
-        /// The wrap's length, m.
-        wrap: f64,
+        /// How much belt the joints leave uncovered, m.
+        short: f64,
+        /// The counts that would fit.
+        fits: LinkCounts,
     },
-    /// The track is so long that its slack would sag more than a quarter of
-    /// the span.
-    #[error(
-        "the track is too long for the wheels: {track:.3} m of track for a {wrap:.3} m wrap sags more than a quarter of the span"
-    )]
+    /// The track is longer than the wheels can take up.
+    #[error("{links} links are {long:.3} m too long {limit}; {fits}")]
     TrackTooLong {
-        /// m.
-        track: f64,
-        /// m.
-        wrap: f64,
+        /// Number of links.
+        links: usize,
+        /// How far the last joint overshoots the first, m of belt.
+        long: f64,
+        /// What ran out.
+        limit: SlackLimit,
+        /// The counts that would fit.
+        fits: LinkCounts,
     },
-    /// The sagging span index is not a span.
-    #[error("sag span {0} does not exist (spans are numbered from 0, one after each wheel)")]
-    NoSuchSpan(usize),
+    /// No sag (or tensioner setting) closes the loop, though the track is
+    /// neither too short nor too long: the landing jumps past the first
+    /// joint as the belt's supports change.
+    #[error(
+        "the wrap of {links} links does not close: the last joint lands {gap:.3} m from the first at best, as the belt moves from one set of wheels to another"
+    )]
+    Unclosed {
+        /// Number of links.
+        links: usize,
+        /// The closest landing, m of belt.
+        gap: f64,
+    },
     /// The assembled start puts a shoe deeper than
     /// [`START_PENETRATION`](crate::vehicle::START_PENETRATION) into a
     /// wheel, the sprocket or the ground.
     #[error(
-        "the assembled track starts {:.1} mm inside {what} (link {link}); a start may be at most {:.0} mm deep: the wrap does not fit this layout",
+        "the assembled track starts {:.1} mm inside {what} (link {link}); a start may be at most {:.0} mm deep",
         depth * 1e3,
         crate::vehicle::START_PENETRATION * 1e3
     )]
@@ -90,90 +176,30 @@ pub enum AssemblyError {
     Terrain(#[from] crate::contact::TerrainError),
 }
 
-/// The closed belt path with span `sag_span` sagging by `sag` (m).
-fn belt(wheels: &[PitchCircle], sag_span: usize, sag: f64) -> Path {
-    let m = wheels.len();
-    let tangents: Vec<(Vector2<f64>, Vector2<f64>)> = (0..m)
-        .map(|i| {
-            let (a, b) = (wheels[i], wheels[(i + 1) % m]);
-            outer_tangent((a.centre, a.radius), (b.centre, b.radius))
-        })
-        .collect();
-    let mut pieces = Vec::with_capacity(2 * m);
-    for i in 0..m {
-        let wheel = wheels[i];
-        let arrive = tangents[(i + m - 1) % m].1;
-        let (leave, next) = tangents[i];
-        let (start, sweep) = ccw_sweep(wheel.centre, arrive, leave);
-        pieces.push(Piece::Arc {
-            centre: wheel.centre,
-            radius: wheel.radius,
-            start,
-            sweep,
-        });
-        pieces.push(if i == sag_span {
-            sag_arc(leave, next, sag)
-        } else {
-            Piece::Line {
-                from: leave,
-                to: next,
-            }
-        });
-    }
-    Path::new(pieces)
+/// The most the upper run may sag: a quarter of a span's length, below
+/// the tight span (and never onto a wheel that does not carry it). More
+/// slack than that is a track too long for its wheels.
+pub const MAX_SAG: f64 = 0.25;
+
+/// A wrapped track.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Wrap<const D: usize> {
+    /// `q_i`, link 1 starting where the belt reaches the first wheel it
+    /// touches.
+    pub q: SVector<f64, D>,
+    /// The joints' positions, m: one more than the links, the last on the
+    /// first (to rounding).
+    pub joints: Vec<Vector2<f64>>,
+    /// The upper run's sag curvature, 1/m (0: tight).
+    pub sag_curvature: f64,
+    /// The wheels the belt touches, by index in the list given: a wheel
+    /// inside the belt (a road wheel above its neighbours, a return roller
+    /// below a tight upper run) is not among them.
+    pub touching: Vec<usize>,
 }
 
-/// Whether the belt from wheel `i − 1` to `i + 1` passes outside wheel `i`:
-/// the tangents would meet it turning the wrong way (a near-full sweep).
-fn off_hull(wheels: &[PitchCircle], i: usize) -> bool {
-    let m = wheels.len();
-    let (prev, this, next) = (wheels[(i + m - 1) % m], wheels[i], wheels[(i + 1) % m]);
-    let arrive = outer_tangent((prev.centre, prev.radius), (this.centre, this.radius)).1;
-    let leave = outer_tangent((this.centre, this.radius), (next.centre, next.radius)).0;
-    let (_, sweep) = ccw_sweep(this.centre, arrive, leave);
-    sweep > std::f64::consts::PI * 1.5 && sweep < 2.0 * std::f64::consts::PI - 1e-9
-}
-
-/// Lays joints one pitch apart along `path` from its start; returns them
-/// and the arc length where the joint after the last link lands.
-fn lay(path: &Path, pitches: &[f64]) -> (Vec<Vector2<f64>>, f64) {
-    let mut joints = vec![path.at(0.0)];
-    let mut s = 0.0;
-    for &pitch in pitches {
-        let from = *joints.last().unwrap();
-        // The chord is never longer than the arc, and on a pitch circle
-        // no shorter than 2/π of it.
-        let (mut lo, mut hi) = (s + pitch * (1.0 - 1e-12), s + pitch * 1.6);
-        for _ in 0..100 {
-            let mid = 0.5 * (lo + hi);
-            if (path.at(mid) - from).norm() < pitch {
-                lo = mid
-            } else {
-                hi = mid
-            }
-        }
-        s = 0.5 * (lo + hi);
-        joints.push(path.at(s));
-    }
-    (joints, s)
-}
-
-/// How far the joints overshoot the belt when laid with `sag` (m) in span
-/// `sag_span`: the arc length past the path's end where the joint after
-/// the last link lands (m; negative if the track is too short).
-pub fn excess<M: TrackModel<D>, const D: usize>(
-    model: &M,
-    wheels: &[PitchCircle],
-    sag_span: usize,
-    sag: f64,
-) -> f64 {
-    let touching = hull(wheels);
-    let path = belt(&touching, span_among(wheels, &touching, sag_span), sag);
-    let (_, landed) = lay(&path, &pitches(model));
-    landed - path.length()
-}
-
-fn pitches<M: TrackModel<D>, const D: usize>(model: &M) -> Vec<f64> {
+/// The links' pitches, m.
+pub(crate) fn pitches<M: TrackModel<D>, const D: usize>(model: &M) -> Vec<f64> {
     model
         .description()
         .link_spans()
@@ -183,36 +209,52 @@ fn pitches<M: TrackModel<D>, const D: usize>(model: &M) -> Vec<f64> {
         .collect()
 }
 
-/// Span `sag_span` of `wheels` (the stretch after that wheel), counted among
-/// the wheels the belt touches; if its wheel dropped out, the span after
-/// the last touching wheel before it.
-fn span_among(wheels: &[PitchCircle], touching: &[PitchCircle], sag_span: usize) -> usize {
-    let m = wheels.len();
-    (0..m)
-        .map(|back| wheels[(sag_span % m + m - back) % m])
-        .find_map(|w| touching.iter().position(|t| *t == w))
-        .unwrap_or(0)
-}
-
-/// The wheels the belt touches: those inside the convex wrap drop out.
-fn hull(wheels: &[PitchCircle]) -> Vec<PitchCircle> {
-    let mut wheels = wheels.to_vec();
-    while let Some(i) = (0..wheels.len()).find(|&i| wheels.len() > 2 && off_hull(&wheels, i)) {
-        wheels.remove(i);
+/// Lays joints one pitch apart along `path` from its start; returns them
+/// and the arc length where the joint after the last link lands.
+fn lay(path: &Path, pitches: &[f64]) -> (Vec<Vector2<f64>>, f64) {
+    let mut place = Place {
+        piece: 0,
+        along: 0.0,
+        laps: 0,
+    };
+    let mut joints = Vec::with_capacity(pitches.len() + 1);
+    joints.push(path.point(place));
+    for &pitch in pitches {
+        place = path.next_joint(place, pitch);
+        if !place.along.is_finite() {
+            return (joints, f64::INFINITY);
+        }
+        joints.push(path.point(place));
     }
-    wheels
+    (joints, path.arc_length(place))
 }
 
-/// Wraps the track of `model` around `wheels` (pitch circles, in
-/// counter-clockwise order round the loop), the slack sagging in span
-/// `sag_span` (the stretch from wheel `i` to wheel `i + 1`; default the
-/// longest). Returns `q_i` with link 1 starting where the belt reaches
-/// wheel 0 (the start of its arc), and the joints' positions.
-pub fn wrap<M: TrackModel<D>, const D: usize>(
-    model: &M,
-    wheels: &[PitchCircle],
-    sag_span: Option<usize>,
-) -> Result<(SVector<f64, D>, Vec<Vector2<f64>>), AssemblyError> {
+/// How many links of `pitch` go round `path`, as a real number: whole
+/// chords, and the fraction of the next that the path's end is.
+fn links_along(path: &Path, pitch: f64) -> f64 {
+    let mut place = Place {
+        piece: 0,
+        along: 0.0,
+        laps: 0,
+    };
+    let mut s = 0.0;
+    for k in 0..1_000_000 {
+        let next = path.next_joint(place, pitch);
+        let t = path.arc_length(next);
+        if !t.is_finite() {
+            return f64::INFINITY;
+        }
+        if t >= path.length() {
+            return k as f64 + (path.length() - s) / (t - s);
+        }
+        (place, s) = (next, t);
+    }
+    f64::INFINITY
+}
+
+/// A set of wheels checked for wrapping: at least two, none inside
+/// another.
+fn check_wheels(wheels: &[PitchCircle]) -> Result<(), AssemblyError> {
     let m = wheels.len();
     if m < 2 {
         return Err(AssemblyError::TooFewWheels(m));
@@ -226,55 +268,172 @@ pub fn wrap<M: TrackModel<D>, const D: usize>(
             }
         }
     }
-    let sag_span = match sag_span {
-        Some(i) if i >= m => return Err(AssemblyError::NoSuchSpan(i)),
-        Some(i) => i,
-        None => (0..m)
-            .max_by(|&a, &b| {
-                let span = |i: usize| (wheels[(i + 1) % m].centre - wheels[i].centre).norm();
-                span(a).total_cmp(&span(b))
-            })
-            .unwrap(),
-    };
-    // The sagging span, counted among the wheels the belt touches.
-    let touching = hull(wheels);
-    let sag_span = span_among(wheels, &touching, sag_span);
-    let wheels = &touching[..];
-    let m = wheels.len();
+    Ok(())
+}
+
+/// How far the joints of links with `pitches` overshoot the belt round
+/// `wheels` with the upper run sagging at curvature `kappa` (m of belt:
+/// the arc length past the start where the joint after the last link
+/// lands; negative if the track is short; `−∞` if the run cannot sag
+/// that much).
+pub(crate) fn excess(wheels: &[PitchCircle], kappa: f64, pitches: &[f64]) -> f64 {
+    match belt::belt(wheels, kappa) {
+        Some(b) => lay(&b.path, pitches).1 - b.path.length(),
+        None => f64::NEG_INFINITY,
+    }
+}
+
+/// Links of `pitch` round `wheels` at sag curvature `kappa` (see
+/// [`LinkCounts`]).
+pub(crate) fn links_round(wheels: &[PitchCircle], kappa: f64, pitch: f64) -> f64 {
+    belt::belt(wheels, kappa).map_or(f64::NAN, |b| links_along(&b.path, pitch))
+}
+
+/// The mean of `pitches`, m.
+pub(crate) fn mean(pitches: &[f64]) -> f64 {
+    pitches.iter().sum::<f64>() / pitches.len() as f64
+}
+
+/// Wraps the track of `model` round `wheels` (pitch circles in
+/// counter-clockwise order round the loop), the slack taken up by the
+/// upper run's sag ([`belt`]); link 1 starts where the belt reaches the
+/// first wheel (of those it touches) in the list.
+///
+/// Errors: fewer than two wheels, one inside another, a track too short
+/// for the tight belt or too long for the most sag ([`MAX_SAG`]), the
+/// last two naming the link counts that would fit.
+pub fn wrap<M: TrackModel<D>, const D: usize>(
+    model: &M,
+    wheels: &[PitchCircle],
+) -> Result<Wrap<D>, AssemblyError> {
+    check_wheels(wheels)?;
     let pitches = pitches(model);
-    let track: f64 = pitches.iter().sum();
-    let span_length = (wheels[(sag_span + 1) % m].centre - wheels[sag_span].centre).norm();
-    let excess = |sag: f64| {
-        let path = belt(wheels, sag_span, sag);
-        let (_, landed) = lay(&path, &pitches);
-        (landed - path.length(), path)
+    let links = pitches.len();
+    let most = belt::curvature_for_sag(wheels, MAX_SAG);
+    let fits = || LinkCounts {
+        pitch: mean(&pitches),
+        tight: links_round(wheels, 0.0, mean(&pitches)),
+        slack: links_round(wheels, most, mean(&pitches)),
     };
-    let (short, tight) = excess(0.0);
-    if short < 0.0 {
-        return Err(AssemblyError::TrackTooShort {
-            links: pitches.len(),
-            track,
-            wrap: tight.length(),
-        });
+    let samples: Vec<(f64, f64)> = (0..=SAG_SAMPLES)
+        .map(|i| most * i as f64 / SAG_SAMPLES as f64)
+        .map(|k| (k, excess(wheels, k, &pitches)))
+        .collect();
+    let kappa = match first_root(&samples, |k| excess(wheels, k, &pitches)) {
+        Some(Ok(kappa)) => kappa,
+        Some(Err(gap)) => return Err(AssemblyError::Unclosed { links, gap }),
+        None if samples.iter().all(|s| s.1 < 0.0) => {
+            return Err(AssemblyError::TrackTooShort {
+                links,
+                short: -samples
+                    .iter()
+                    .map(|s| s.1)
+                    .fold(f64::NEG_INFINITY, f64::max),
+                fits: fits(),
+            });
+        }
+        None => {
+            return Err(AssemblyError::TrackTooLong {
+                links,
+                long: samples.iter().map(|s| s.1).fold(f64::INFINITY, f64::min),
+                limit: SlackLimit::Sag,
+                fits: fits(),
+            });
+        }
+    };
+    wrap_at(model, wheels, kappa)
+}
+
+/// The points of the sag's range tried before bisecting: where a joint
+/// falls on a wheel's arc moves the landing by a little as the sag grows,
+/// so the excess need not fall monotonically at the millimetre level.
+const SAG_SAMPLES: usize = 32;
+
+/// Wraps the track of `model` round `wheels` with the upper run sagging
+/// at curvature `kappa` (1/m), wherever its last joint lands: for a
+/// curvature (or a tensioner setting) already solved for.
+pub(crate) fn wrap_at<M: TrackModel<D>, const D: usize>(
+    model: &M,
+    wheels: &[PitchCircle],
+    kappa: f64,
+) -> Result<Wrap<D>, AssemblyError> {
+    check_wheels(wheels)?;
+    let belt = belt::belt(wheels, kappa).ok_or(AssemblyError::TrackTooLong {
+        links: model.description().bodies.len(),
+        long: f64::INFINITY,
+        limit: SlackLimit::Sag,
+        fits: LinkCounts {
+            pitch: mean(&pitches(model)),
+            tight: f64::NAN,
+            slack: f64::NAN,
+        },
+    })?;
+    let (joints, _) = lay(&belt.path, &pitches(model));
+    let touching = belt
+        .touching
+        .iter()
+        .filter_map(|t| wheels.iter().position(|w| w == t))
+        .collect();
+    Ok(Wrap {
+        q: coordinates(model, &joints),
+        joints,
+        sag_curvature: kappa,
+        touching,
+    })
+}
+
+/// How far (m of belt) the last joint may land from the first for a
+/// solved wrap: the root is bisected to rounding (~1e-15 m); more means
+/// the sign change was a jump (the belt's supports changing), not a root.
+pub(crate) const LANDING: f64 = 1e-9;
+
+/// The root of `f` in the first interval of `samples` (`(x, f(x))` in
+/// increasing `x`) where `f` changes sign and is a root (`|f| ≤`
+/// [`LANDING`]), bisected to rounding; `Err(gap)` with the smallest `|f|`
+/// found if every sign change is a jump.
+pub(crate) fn first_root(
+    samples: &[(f64, f64)],
+    f: impl Fn(f64) -> f64,
+) -> Option<Result<f64, f64>> {
+    let mut gap = f64::INFINITY;
+    for w in samples
+        .windows(2)
+        .filter(|w| (w[0].1 >= 0.0) != (w[1].1 >= 0.0))
+    {
+        let x = bisect(w[0], w[1], &f);
+        let landing = f(x).abs();
+        if landing <= LANDING {
+            return Some(Ok(x));
+        }
+        gap = gap.min(landing);
     }
-    let max_sag = span_length / 4.0;
-    if excess(max_sag).0 > 0.0 {
-        return Err(AssemblyError::TrackTooLong {
-            track,
-            wrap: tight.length(),
-        });
-    }
-    let (mut lo, mut hi) = (0.0, max_sag);
-    for _ in 0..100 {
-        let mid = 0.5 * (lo + hi);
-        if excess(mid).0 > 0.0 {
-            lo = mid
+    gap.is_finite().then_some(Err(gap))
+}
+
+/// The root of `f` between two points `(x, f(x))` where its sign
+/// differs, by bisection to rounding.
+pub(crate) fn bisect(a: (f64, f64), b: (f64, f64), f: &impl Fn(f64) -> f64) -> f64 {
+    let positive_at_a = a.1 >= 0.0;
+    let (mut a, mut b) = (a.0, b.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (a + b);
+        if mid == a || mid == b {
+            break;
+        }
+        if (f(mid) >= 0.0) == positive_at_a {
+            a = mid
         } else {
-            hi = mid
+            b = mid
         }
     }
-    let path = belt(wheels, sag_span, 0.5 * (lo + hi));
-    let (joints, _) = lay(&path, &pitches);
+    0.5 * (a + b)
+}
+
+/// `q_i` putting link `j` from joint `j` to joint `j + 1`.
+fn coordinates<M: TrackModel<D>, const D: usize>(
+    model: &M,
+    joints: &[Vector2<f64>],
+) -> SVector<f64, D> {
     let description = model.description();
     let spans = description.link_spans().expect("a track has link spans");
     let mut q = SVector::<f64, D>::zeros();
@@ -289,5 +448,5 @@ pub fn wrap<M: TrackModel<D>, const D: usize>(
     let root = joints[0] - crate::planar::rotate(q[2], first);
     q[0] = root.x;
     q[1] = root.y;
-    Ok((q, joints))
+    q
 }

@@ -194,4 +194,10 @@ pub struct ArmSpring {
     pub damping: f64,
     /// Torque at the design position, N m.
     pub preload: f64,
+    /// The range of `φ` (rad, `low ≤ 0 ≤ high`) the assembly may set the
+    /// arm to: for an idler's tensioner, the travel over which it takes up
+    /// the track's slack ([`assemble`](crate::vehicle::assemble)). Declared
+    /// as the arm's `travel`, default `(−π/2, π/2)`. Not a stop: the
+    /// simulation does not limit the arm.
+    pub travel: (f64, f64),
 }

@@ -4,7 +4,9 @@
 
 use nalgebra::{SVector, Vector2};
 
-use crate::assembly::{AssemblyError, PitchCircle, excess, wrap};
+use crate::assembly::{
+    self, AssemblyError, LinkCounts, PitchCircle, SlackLimit, excess, links_round, wrap, wrap_at,
+};
 use crate::contact::ground::GroundContact;
 use crate::contact::sprocket::{SprocketContact, ToothProfile};
 use crate::contact::wheel::WheelContact;
@@ -20,9 +22,25 @@ pub struct Assembled<const DT: usize, const DC: usize> {
     pub chassis: SVector<f64, DC>,
 }
 
-/// The sag left in the top span when a tensioner takes up the rest, as a
-/// fraction of the span.
+/// The upper run's sag when a tensioner takes up the rest, as a fraction
+/// of its longest span: nearly tight, as a tensioned track runs.
 const TENSIONED_SAG: f64 = 0.005;
+
+/// The sag curvature (1/m) that makes the longest upper span of `wheels`
+/// sag [`TENSIONED_SAG`] of its length (`s ≈ κ L²/8`).
+fn tensioned(wheels: &[PitchCircle]) -> f64 {
+    let longest = assembly::longest_upper_span(wheels);
+    if longest > 0.0 {
+        8.0 * TENSIONED_SAG / longest
+    } else {
+        0.0
+    }
+}
+
+/// The points of a tensioner's travel tried before bisecting: the belt's
+/// length need not be monotone in a swing arm's angle, so the travel is
+/// scanned for the bracket nearest the declared position.
+const TRAVEL_SAMPLES: usize = 48;
 
 /// The wheels' pitch circles in wrap order (counter-clockwise), each with
 /// its index in `C::PARTS`.
@@ -91,28 +109,22 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         .iter()
         .find(|p| p.kind == PartKind::Idler)
         .and_then(|p| p.arm);
+    let mut sag = None;
     if let Some(arm) = tensioner {
-        let fits = |phi: f64| {
-            let mut q = qc;
-            q[2 + arm.body] = phi;
-            let circles = pitch_circles(chassis, &q, pitch, shoe, profile);
-            let wheels: Vec<PitchCircle> = circles.iter().map(|c| c.1).collect();
-            let span = sprocket_index(&circles).unwrap_or(0);
-            let length = (wheels[(span + 1) % wheels.len()].centre - wheels[span].centre).norm();
-            excess(track, &wheels, span, TENSIONED_SAG * length)
-        };
-        let (mut lo, mut hi) = (-0.6, 0.6);
-        if fits(lo).signum() != fits(hi).signum() {
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if fits(mid).signum() == fits(lo).signum() {
-                    lo = mid
-                } else {
-                    hi = mid
-                }
-            }
-            qc[2 + arm.body] = 0.5 * (lo + hi);
-        }
+        let (phi, kappa) = set_tensioner(
+            track,
+            |phi| {
+                let mut q = qc;
+                q[2 + arm.body] = phi;
+                pitch_circles(chassis, &q, pitch, shoe, profile)
+                    .iter()
+                    .map(|c| c.1)
+                    .collect()
+            },
+            arm.travel,
+        )?;
+        qc[2 + arm.body] = phi;
+        sag = Some(kappa);
     }
     let mut circles = pitch_circles(chassis, &qc, pitch, shoe, profile);
     // Down onto the ground: the lowest wheel's shoes touch it.
@@ -127,7 +139,11 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
     }
     let wheels: Vec<PitchCircle> = circles.iter().map(|c| c.1).collect();
     let sprocket = sprocket_index(&circles);
-    let (qt, joints) = wrap(track, &wheels, sprocket)?;
+    let wrapped = match sag {
+        Some(kappa) => wrap_at(track, &wheels, kappa)?,
+        None => wrap(track, &wheels)?,
+    };
+    let (qt, joints) = (wrapped.q, wrapped.joints);
     if let Some(s) = sprocket {
         let part = &C::PARTS[circles[s].0];
         let (centre, radius) = (wheels[s].centre, wheels[s].radius);
@@ -144,6 +160,81 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         track: qt,
         chassis: qc,
     })
+}
+
+/// The tensioner's angle (rad, from the declared position, within
+/// `travel`) at which the track fits `wheels(angle)` with the upper run
+/// nearly tight ([`TENSIONED_SAG`]): the root nearest the declared
+/// position; and that sag's curvature, 1/m. If none, the track is too long or too short for the travel,
+/// and the error names the link counts that fit somewhere in it.
+fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
+    track: &T,
+    wheels: impl Fn(f64) -> Vec<PitchCircle>,
+    (low, high): (f64, f64),
+) -> Result<(f64, f64), AssemblyError> {
+    let pitches = assembly::pitches(track);
+    let fit = |phi: f64| {
+        let w = wheels(phi);
+        excess(&w, tensioned(&w), &pitches)
+    };
+    let angles: Vec<f64> = (0..=TRAVEL_SAMPLES)
+        .map(|i| low + (high - low) * i as f64 / TRAVEL_SAMPLES as f64)
+        .chain([0.0_f64.clamp(low, high)])
+        .collect();
+    let mut samples: Vec<(f64, f64)> = angles.iter().map(|&a| (a, fit(a))).collect();
+    samples.sort_by(|a, b| a.0.total_cmp(&b.0));
+    // The sign change nearest the declared position.
+    let bracket = samples
+        .windows(2)
+        .filter(|w| (w[0].1 >= 0.0) != (w[1].1 >= 0.0))
+        .min_by(|a, b| {
+            let distance = |w: &[(f64, f64)]| w[0].0.abs().min(w[1].0.abs());
+            distance(a).total_cmp(&distance(b))
+        });
+    if let Some(w) = bracket {
+        let phi = assembly::bisect(w[0], w[1], &fit);
+        let gap = fit(phi).abs();
+        if gap > assembly::LANDING {
+            return Err(AssemblyError::Unclosed {
+                links: pitches.len(),
+                gap,
+            });
+        }
+        let w = wheels(phi);
+        return Ok((phi, tensioned(&w)));
+    }
+    let pitch = assembly::mean(&pitches);
+    let counts: Vec<f64> = angles
+        .iter()
+        .map(|&a| {
+            let w = wheels(a);
+            links_round(&w, tensioned(&w), pitch)
+        })
+        .filter(|n| n.is_finite())
+        .collect();
+    let fits = LinkCounts {
+        pitch,
+        tight: counts.iter().copied().fold(f64::INFINITY, f64::min),
+        slack: counts.iter().copied().fold(f64::NEG_INFINITY, f64::max),
+    };
+    let links = pitches.len();
+    if samples.iter().all(|s| s.1 >= 0.0) {
+        Err(AssemblyError::TrackTooLong {
+            links,
+            long: samples.iter().map(|s| s.1).fold(f64::INFINITY, f64::min),
+            limit: SlackLimit::Tensioner,
+            fits,
+        })
+    } else {
+        Err(AssemblyError::TrackTooShort {
+            links,
+            short: -samples
+                .iter()
+                .map(|s| s.1)
+                .fold(f64::NEG_INFINITY, f64::max),
+            fits,
+        })
+    }
 }
 
 /// How deep (m) an assembled start may put a shoe feature into a wheel,
