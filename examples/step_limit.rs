@@ -1,12 +1,13 @@
-//! What sets the M113's step: accuracy or stability, and which mode.
+//! What sets a vehicle's step: accuracy or stability, and which mode.
 //!
 //! ```text
-//! cargo run --release --example step_limit [-- --quick]
+//! cargo run --release --example step_limit [-- [--quick] [--vehicle marder]]
 //! ```
 //!
-//! (`--quick`: 0.5 s and the main job's tolerance only, for a smoke test.)
+//! (`--quick`: 0.5 s and the main job's tolerance only, for a smoke test;
+//! `--vehicle marder`: the Marder instead of the M113.)
 //!
-//! Drives the M113 from rest to 3 m/s on flat ground for 4 s with
+//! Drives the vehicle from rest to 3 m/s on flat ground for 4 s with
 //! Bogacki-Shampine, the main job's integrator, and prints the steps,
 //! rejections, evaluations and energy books for:
 //!
@@ -28,12 +29,21 @@ use trackgen::contact::{NormalLaw, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DMatrix, DVector};
 use trackgen::simulate::{Output, Simulated, simulate};
-use trackgen::vehicle::VehicleConfig;
-use trackgen::vehicles::m113::{self, M113};
+use trackgen::vehicle::{BuildError, VehicleConfig, VehicleSystem};
+use trackgen::vehicles::m113::M113;
+use trackgen::vehicles::marder::Marder;
+use trackgen::{ChassisModel, TrackModel};
 
-fn config() -> VehicleConfig {
-    let drive = m113::speed_drive(|t| 3.0 * ((t - 1.0) / 2.0).clamp(0.0, 1.0));
-    M113::config(Terrain::Flat { height: 0.0 }, drive)
+/// A vehicle to study: its declared configuration, driven from rest to
+/// 3 m/s, and how to build it from a configuration.
+struct Subject<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> {
+    name: &'static str,
+    config: fn() -> VehicleConfig,
+    build: fn(VehicleConfig) -> Result<VehicleSystem<T, DT, C, DC>, BuildError>,
+}
+
+fn ramp(t: f64) -> f64 {
+    3.0 * ((t - 1.0) / 2.0).clamp(0.0, 1.0)
 }
 
 fn damped(law: NormalLaw, factor: f64) -> NormalLaw {
@@ -54,13 +64,14 @@ fn damped(law: NormalLaw, factor: f64) -> NormalLaw {
     }
 }
 
-fn run(
+fn run<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
+    subject: &Subject<T, DT, C, DC>,
     label: &str,
     config: VehicleConfig,
     tol: f64,
     duration: f64,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let mut system = M113::system_with(config)?;
+    let mut system = (subject.build)(config)?;
     let integrator = Integrator::Bs23 {
         rtol: tol,
         atol: tol,
@@ -85,23 +96,64 @@ fn run(
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let quick = match std::env::args().nth(1).as_deref() {
-        None => false,
-        Some("--quick") => true,
-        Some(other) => return Err(format!("unknown argument {other:?} (only --quick)").into()),
-    };
+    let (mut quick, mut marder) = (false, false);
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        match (arg.as_str(), args.next()) {
+            ("--quick", next) => {
+                quick = true;
+                if let Some(next) = next {
+                    return Err(format!("unknown argument {next:?}").into());
+                }
+            }
+            ("--vehicle", Some(v)) if v == "marder" => marder = true,
+            ("--vehicle", Some(v)) if v == "m113" => {}
+            _ => {
+                return Err(
+                    format!("unknown argument {arg:?} (--quick, --vehicle m113|marder)").into(),
+                );
+            }
+        }
+    }
+    if marder {
+        study(
+            &Subject {
+                name: "Marder",
+                config: || Marder::config(Terrain::Flat { height: 0.0 }, Marder::speed_drive(ramp)),
+                build: Marder::system_with,
+            },
+            quick,
+        )
+    } else {
+        study(
+            &Subject {
+                name: "M113",
+                config: || M113::config(Terrain::Flat { height: 0.0 }, M113::speed_drive(ramp)),
+                build: M113::system_with,
+            },
+            quick,
+        )
+    }
+}
+
+fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
+    subject: &Subject<T, DT, C, DC>,
+    quick: bool,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let config = subject.config;
     let (duration, tolerances): (f64, &[f64]) = if quick {
         (0.5, &[1e-3])
     } else {
         (4.0, &[1e-4, 3e-4, 1e-3, 3e-3, 1e-2])
     };
     for &tol in tolerances {
-        run("M113", config(), tol, duration)?;
+        run(subject, subject.name, config(), tol, duration)?;
     }
     let mut no_rim_friction = config();
     no_rim_friction.wheels.friction.mu = 0.0;
     no_rim_friction.sprocket.friction.mu = 0.0;
     run(
+        subject,
         "no rim or sprocket friction",
         no_rim_friction,
         1e-3,
@@ -111,15 +163,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     no_friction.wheels.friction.mu = 0.0;
     no_friction.sprocket.friction.mu = 0.0;
     no_friction.ground.friction.mu = 0.0;
-    run("no friction at all", no_friction, 1e-3, duration)?;
+    run(subject, "no friction at all", no_friction, 1e-3, duration)?;
     let mut less_damping = config();
     less_damping.ground.normal = damped(less_damping.ground.normal, 0.1);
     less_damping.wheels.normal = damped(less_damping.wheels.normal, 0.1);
     less_damping.sprocket.normal = damped(less_damping.sprocket.normal, 0.1);
-    run("contact damping / 10", less_damping, 1e-3, duration)?;
+    run(
+        subject,
+        "contact damping / 10",
+        less_damping,
+        1e-3,
+        duration,
+    )?;
 
     // The Jacobian at the end of the default run.
-    let mut system = M113::system_with(config())?;
+    let mut system = (subject.build)(config())?;
     let integrator = Integrator::Bs23 {
         rtol: 1e-3,
         atol: 1e-3,
@@ -148,6 +206,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut eigenvalues: Vec<_> = jacobian.complex_eigenvalues().iter().copied().collect();
     eigenvalues.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
     println!("stiffest eigenvalues of the Jacobian at t = {t:.1} s (1/s):");
+    if std::env::var("STEP_LIMIT_DIAGONAL").is_ok() {
+        for i in 0..n {
+            if jacobian[(i, i)].abs() > 1000.0 {
+                println!(
+                    "  J[{0},{0}] = {1:.1} ({2})",
+                    i,
+                    jacobian[(i, i)],
+                    state_name(DT, DC, i)
+                );
+            }
+        }
+    }
+    // Which coordinates the stiffest real mode moves: the null vector of
+    // J − λI, by its smallest singular value.
+    for e in eigenvalues.iter().take(3).filter(|e| e.im == 0.0) {
+        let shifted = &jacobian - DMatrix::identity(n, n) * e.re;
+        let svd = shifted.svd(false, true);
+        let v_t = svd.v_t.expect("V");
+        let k = svd.singular_values.imin();
+        let mut parts: Vec<(usize, f64)> = v_t.row(k).iter().copied().enumerate().collect();
+        parts.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
+        let top: Vec<String> = parts
+            .iter()
+            .take(6)
+            .map(|(i, v)| format!("{} {:+.2}", state_name(DT, DC, *i), v))
+            .collect();
+        println!("  mode {:.1}: {}", e.re, top.join(", "));
+    }
     for e in eigenvalues.iter().take(6) {
         println!(
             "  {:9.1} {:+9.1}i   |λ| {:7.1}   Bogacki-Shampine stable to h = {:.2} ms on the real axis",
@@ -158,4 +244,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     Ok(())
+}
+
+/// A name for state `i`: the track's independent coordinates and rates
+/// (the partitioned track integrates all but a dependent pair), the
+/// chassis' coordinates and rates, then the books' three extra states.
+fn state_name(dt: usize, dc: usize, i: usize) -> String {
+    let dt = dt - 2;
+    match i {
+        i if i < dt => format!("track z{i}"),
+        i if i < 2 * dt => format!("track z{}'", i - dt),
+        i if i < 2 * dt + dc => format!("chassis q{}", i - 2 * dt),
+        i if i < 2 * (dt + dc) => format!("chassis q{}'", i - 2 * dt - dc),
+        i => format!("extra {}", i - 2 * (dt + dc)),
+    }
 }

@@ -18,7 +18,8 @@ fn list(points: &[(f64, f64)]) -> String {
     s + "]"
 }
 
-pub fn html(frames: &[Frame], terrain: &Terrain) -> String {
+/// The page playing `frames` over `terrain`, headed `title`.
+pub fn html(frames: &[Frame], terrain: &Terrain, title: &str) -> String {
     let x0 = frames.iter().map(|f| f.chassis.0).fold(f64::MAX, f64::min) - 5.0;
     let x1 = frames.iter().map(|f| f.chassis.0).fold(f64::MIN, f64::max) + 5.0;
     let mut data = String::from("[");
@@ -51,15 +52,16 @@ pub fn html(frames: &[Frame], terrain: &Terrain) -> String {
     data.push(']');
     let ground = list(&ground(terrain, x0, x1));
     TEMPLATE
+        .replace("__TITLE__", title)
         .replace("__FRAMES__", &data)
         .replace("__GROUND__", &ground)
 }
 
 const TEMPLATE: &str = r#"<!doctype html>
-<html><head><meta charset="utf-8"><title>trackgen: M113</title>
+<html><head><meta charset="utf-8"><title>trackgen: __TITLE__</title>
 <style>body{font-family:sans-serif;margin:16px}canvas{border:1px solid #ccc;background:#fff}</style></head>
 <body>
-<h3>trackgen: planar M113 (one side) driving over a bump</h3>
+<h3>trackgen: __TITLE__</h3>
 <canvas id="c" width="1100" height="460"></canvas><br>
 <button id="play">pause</button> <input id="s" type="range" min="0" value="0" style="width:800px"> <span id="t"></span>
 <script>

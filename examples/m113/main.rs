@@ -1,16 +1,18 @@
-//! The main job: the default vehicle, a planar M113 (one side), assembled
-//! on flat ground, settled under gravity, driven up to a target speed by a
-//! speed-controlled sprocket, and over a bump.
+//! The main job: the default vehicle, a planar M113 (one side), or the
+//! Marder (`--vehicle marder`), assembled on flat ground, settled under
+//! gravity, driven up to a target speed by a speed-controlled sprocket,
+//! and over a bump.
 //!
 //! `cargo run --release --example m113 -- --help`
 //!
 //! Writes to the output folder, streamed as the run goes: `all.csv` and
 //! `all.arrow` (every recorded quantity, CSV and Arrow IPC), `m113.csv`
-//! (chassis position, pitch and speed, sprocket torque and speed, tension
-//! in link 1, ground normal force); at the end, from a bounded selection of
-//! rows: `m113.svg` (plots), `frame.svg` (the vehicle at the bump),
-//! `animation.html` (open it in a browser). Memory stays flat however long
-//! the run.
+//! (or `marder.csv`: chassis position, pitch and speed, sprocket torque and
+//! speed, tension in link 1, ground normal force); at the end, from a
+//! bounded selection of rows: `m113.svg` (plots), `frame.svg` (the vehicle
+//! at the bump), `animation.html` (open it in a browser). Memory stays flat
+//! however long the run. Lines printed to a closed pipe are dropped; the
+//! run and its files go on.
 
 mod animation;
 mod cli;
@@ -27,10 +29,23 @@ use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::contact::Terrain;
 use trackgen::simulate::{Output, Simulated, StreamFailure, simulate_into};
-use trackgen::vehicles::m113;
+use trackgen::vehicle::VehicleSystem;
+use trackgen::vehicles::{m113, marder};
+use trackgen::{ChassisModel, TrackModel};
 
-use cli::Args;
+use cli::{Args, Vehicle};
 use outputs::Outputs;
+use scene::Scene;
+
+/// `println!` that drops its line if stdout is gone (a closed pipe), rather
+/// than panicking mid-run.
+macro_rules! say {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+pub(crate) use say;
 
 fn main() {
     let args = Args::parse();
@@ -46,16 +61,59 @@ fn run(args: &Args) -> Result<(), Box<dyn Error>> {
         width: 1.0,
         height: args.bump_height,
     };
-    let drive = m113::speed_drive(args.speed_profile());
     let assembling = Instant::now();
-    let mut system = m113::system(terrain.clone(), drive).map_err(|e| -> Box<dyn Error> { e })?;
-    let assembly = assembling.elapsed().as_secs_f64();
-    let mut outputs = Outputs::create(&args.out, &system.columns(), args.bump_at)?;
+    match args.vehicle {
+        Vehicle::M113 => {
+            let drive = m113::speed_drive(args.speed_profile());
+            let system =
+                m113::system(terrain.clone(), drive).map_err(|e| -> Box<dyn Error> { e })?;
+            let about = "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm";
+            drive_vehicle(args, system, about, assembling, terrain)
+        }
+        Vehicle::Marder => {
+            let drive = marder::speed_drive(args.speed_profile());
+            let system =
+                marder::system(terrain.clone(), drive).map_err(|e| -> Box<dyn Error> { e })?;
+            let about = "Marder (one side): 77 shoes, sprocket, 6 road wheels on torsion arms, 3 return rollers, idler on a tensioner arm";
+            drive_vehicle(args, system, about, assembling, terrain)
+        }
+    }
+}
 
-    println!(
-        "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm"
+/// Runs an assembled vehicle with the options given, streaming its
+/// outputs, and reports.
+fn drive_vehicle<T, const DT: usize, C, const DC: usize>(
+    args: &Args,
+    mut system: VehicleSystem<T, DT, C, DC>,
+    about: &str,
+    assembling: Instant,
+    terrain: Terrain,
+) -> Result<(), Box<dyn Error>>
+where
+    T: TrackModel<DT> + Copy + 'static,
+    C: ChassisModel<DC> + Copy + 'static,
+{
+    let assembly = assembling.elapsed().as_secs_f64();
+    let (track, chassis) = (*system.track().model(), *system.chassis().model());
+    let name = args.vehicle.name();
+    let title = format!(
+        "{} driving over a {}",
+        about.split(':').next().unwrap_or(name),
+        if args.bump_height < 0.0 {
+            "dip"
+        } else {
+            "bump"
+        }
     );
-    println!(
+    let mut outputs = Outputs::create(
+        &args.out(),
+        (name, title, Scene::of(track, chassis)),
+        &system.columns(),
+        args.bump_at,
+    )?;
+
+    say!("{about}");
+    say!(
         "assembled (track wrapped, tensioner set) in {:.0} ms",
         assembly * 1e3
     );
@@ -64,7 +122,7 @@ fn run(args: &Args) -> Result<(), Box<dyn Error>> {
     } else {
         "at once".to_string()
     };
-    println!(
+    say!(
         "settle {:.1} s, then to {:.1} m/s {ramp}; {} {:.2} m {} at x = {:.1} m; {:.1} s in all",
         args.settle,
         args.speed,
@@ -111,12 +169,12 @@ fn run(args: &Args) -> Result<(), Box<dyn Error>> {
     // A run that stopped at its start has nothing to summarise or draw.
     let started = report.rows >= 2;
     let written = if started {
-        report::print(&outputs.summary, &report, wall, args.tolerance);
+        report::print(&outputs.summary, &report, wall, args.tolerance());
         outputs.draw(&terrain)?
     } else {
-        vec!["m113.csv", "all.csv", "all.arrow"]
+        outputs.data_files()
     };
-    println!(
+    say!(
         "wrote {}/{{{}}} ({} rows)",
         outputs.dir().display(),
         written.join(", "),

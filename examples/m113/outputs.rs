@@ -10,9 +10,10 @@ use trackgen::contact::Terrain;
 use trackgen::simulate::{ArrowSink, CsvSink, Select, Summary, Tee, Thinned};
 
 use super::nearest::Nearest;
-use super::{animation, plots, scene};
+use super::scene::Scene;
+use super::{animation, plots};
 
-/// The columns of `m113.csv`.
+/// The columns of `<vehicle>.csv`.
 const MAIN_COLUMNS: [&str; 8] = [
     "x",
     "y",
@@ -33,6 +34,11 @@ const MAX_FRAMES: f64 = 1500.0;
 
 pub struct Outputs {
     dir: PathBuf,
+    /// The vehicle's name, in file names.
+    name: &'static str,
+    /// Its title, in the animation.
+    title: String,
+    scene: Scene,
     all_csv: CsvSink<File>,
     all_arrow: ArrowSink<File>,
     main_csv: Select<CsvSink<File>>,
@@ -44,20 +50,33 @@ pub struct Outputs {
 }
 
 impl Outputs {
-    /// Creates the folder and the data files for a run recording `columns`,
-    /// with a bump centred at `bump_at` (m).
-    pub fn create(dir: &Path, columns: &[String], bump_at: f64) -> Result<Self, Box<dyn Error>> {
+    /// Creates the folder and the data files for a run of the vehicle
+    /// `name` (drawn by `scene`, titled `title`) recording `columns`, with
+    /// a bump centred at `bump_at` (m).
+    pub fn create(
+        dir: &Path,
+        (name, title, scene): (&'static str, String, Scene),
+        columns: &[String],
+        bump_at: f64,
+    ) -> Result<Self, Box<dyn Error>> {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("cannot create the output folder {}: {e}", dir.display()))?;
-        let mut picture_columns =
-            scene::columns(columns).ok_or("the system records no track and chassis coordinates")?;
+        let mut picture_columns = scene
+            .columns(columns)
+            .ok_or("the system records no track and chassis coordinates")?;
         picture_columns.extend(plots::columns());
         picture_columns.push("x".to_string());
         Ok(Outputs {
             dir: dir.to_path_buf(),
+            name,
+            title,
+            scene,
             all_csv: CsvSink::create(dir.join("all.csv"))?,
             all_arrow: ArrowSink::create(dir.join("all.arrow"))?,
-            main_csv: Select::new(MAIN_COLUMNS, CsvSink::create(dir.join("m113.csv"))?),
+            main_csv: Select::new(
+                MAIN_COLUMNS,
+                CsvSink::create(dir.join(format!("{name}.csv")))?,
+            ),
             summary: Summary::new(),
             picture_columns,
             thinned: Thinned::new(PICTURE_ROWS),
@@ -81,26 +100,39 @@ impl Outputs {
     /// Draws the plots, the frame at the bump and the animation (when the
     /// run has at least two rows); returns the names of every file
     /// written.
-    pub fn draw(&self, terrain: &Terrain) -> Result<Vec<&'static str>, Box<dyn Error>> {
-        let mut written = vec!["m113.csv", "all.csv", "all.arrow"];
+    pub fn draw(&self, terrain: &Terrain) -> Result<Vec<String>, Box<dyn Error>> {
+        let mut written = self.data_files();
         let kept = self.thinned.results();
         if kept.len() < 2 {
             return Ok(written);
         }
-        plots::draw(kept, &self.dir.join("m113.svg"))?;
-        written.push("m113.svg");
-        if let Some(frame) = scene::frames(self.at_bump.results(), 0.0).first() {
-            std::fs::write(self.dir.join("frame.svg"), scene::svg(frame, terrain))?;
-            written.push("frame.svg");
+        let plot = format!("{}.svg", self.name);
+        plots::draw(kept, &self.dir.join(&plot))?;
+        written.push(plot);
+        if let Some(frame) = self.scene.frames(self.at_bump.results(), 0.0).first() {
+            std::fs::write(
+                self.dir.join("frame.svg"),
+                super::scene::svg(frame, terrain),
+            )?;
+            written.push("frame.svg".to_string());
         }
         let span = kept.times().last().unwrap_or(&0.0) - kept.times()[0];
-        let frames = scene::frames(kept, (span / MAX_FRAMES).max(0.04));
+        let frames = self.scene.frames(kept, (span / MAX_FRAMES).max(0.04));
         std::fs::write(
             self.dir.join("animation.html"),
-            animation::html(&frames, terrain),
+            animation::html(&frames, terrain, &self.title),
         )?;
-        written.push("animation.html");
+        written.push("animation.html".to_string());
         Ok(written)
+    }
+
+    /// The data files, written as the run goes.
+    pub fn data_files(&self) -> Vec<String> {
+        vec![
+            format!("{}.csv", self.name),
+            "all.csv".into(),
+            "all.arrow".into(),
+        ]
     }
 
     /// The output folder.

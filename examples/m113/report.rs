@@ -14,11 +14,11 @@ pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
     let (work, change, dissipated) = books.map_or((f64::NAN, f64::NAN, f64::NAN), |b| {
         (b.motor_work, b.energy_change, b.dissipated)
     });
-    println!(
+    super::say!(
         "simulated {simulated:.2} s in {wall:.2} s of wall time: real-time factor {:.2}",
         simulated / wall
     );
-    println!(
+    super::say!(
         "steps {} accepted, {} rejected; {} coordinate switches; max closure error {:.1e} m",
         report.stats.accepted,
         report.stats.rejected,
@@ -26,13 +26,13 @@ pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
         max("track.closure_error")
     );
     let residual = books.map_or(f64::NAN, |b| b.residual());
-    println!(
+    super::say!(
         "energy balance: motor work {work:.0} J = ΔE {change:.0} J + dissipated {dissipated:.0} J  (residual {residual:.2e} of the largest term)"
     );
     if let Some(Err(off)) = books.map(|b| b.check(EnergyBalance::bound_for_tolerance(tolerance))) {
-        println!("warning: {off}; try --tolerance {:.0e}", tolerance / 10.0);
+        super::say!("warning: {off}; try --tolerance {:.0e}", tolerance / 10.0);
     }
-    println!(
+    super::say!(
         "final speed {:.2} m/s; max penetration: ground {:.1} mm, wheels {:.1} mm, sprocket {:.1} mm",
         last("speed"),
         1e3 * max("ground_penetration"),

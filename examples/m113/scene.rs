@@ -1,23 +1,10 @@
 //! The vehicle's geometry at recorded times, for pictures.
 
 use trackgen::contact::Terrain;
+use trackgen::model::PartKind;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::Results;
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
-use trackgen::{ChassisModel, RecursiveModel, rotate};
-
-const DT: usize = 66;
-const DC: usize = 16;
-
-/// The chassis outline in its centroid frame, m (a side view of the hull).
-const HULL: [(f64, f64); 6] = [
-    (2.4, 0.05),
-    (2.0, 0.75),
-    (1.2, 1.15),
-    (-2.35, 1.15),
-    (-2.35, 0.35),
-    (-1.9, 0.05),
-];
+use trackgen::{ChassisModel, TrackModel, rotate};
 
 /// One picture's worth of geometry.
 #[derive(Debug, Clone)]
@@ -34,81 +21,145 @@ pub struct Frame {
     pub hull: Vec<(f64, f64)>,
 }
 
-/// The columns a picture needs: the track's and the chassis' coordinates
-/// (`track.x` and the 65 after it, `chassis.x` and the 15 after it), out
-/// of all the recorded ones; `None` if they are not there.
-pub fn columns(all: &[String]) -> Option<Vec<String>> {
-    let block = |prefix: &str, n: usize| {
-        let start = all.iter().position(|c| *c == format!("{prefix}.x"))?;
-        all.get(start..start + n).map(<[String]>::to_vec)
-    };
-    let mut names = block("track", DT)?;
-    names.extend(block("chassis", DC)?);
-    Some(names)
+/// How to draw a vehicle from its recorded coordinates.
+pub struct Scene {
+    /// Track and chassis coordinates.
+    dofs: (usize, usize),
+    frame: Box<dyn Fn(f64, &[f64], &[f64]) -> Frame>,
 }
 
-fn vector<const D: usize>(results: &Results, i: usize, prefix: &str) -> SVector<f64, D> {
-    let start = results
-        .columns()
-        .iter()
-        .position(|c| c == &format!("{prefix}.x"))
-        .expect("coordinates");
-    SVector::from_column_slice(&results.sample(i).values[start..start + D])
-}
-
-/// Frames every `dt` (s).
-pub fn frames(results: &Results, dt: f64) -> Vec<Frame> {
-    let mut out = Vec::new();
-    let mut next = 0.0;
-    for i in 0..results.len() {
-        let t = results.sample(i).t;
-        if t + 1e-9 < next {
-            continue;
+impl Scene {
+    /// The scene of a vehicle declared with `model!`: its wheels, arms
+    /// and track from the compiled models, and a side view of a hull drawn
+    /// over its running gear.
+    pub fn of<T, const DT: usize, C, const DC: usize>(track: T, chassis: C) -> Scene
+    where
+        T: TrackModel<DT> + 'static,
+        C: ChassisModel<DC> + 'static,
+    {
+        let hull = hull(&chassis);
+        let description = track.description();
+        let spans = description.link_spans().expect("a track has link spans");
+        let links = spans.len();
+        // Each link's rear joint, in its own frame.
+        let rear: Vec<Vector2<f64>> = (0..links)
+            .map(|j| match j {
+                0 => description.loop_joint.expect("a closed track").first_u1,
+                _ => description.bodies[j].at_self,
+            })
+            .collect();
+        let frame = move |t: f64, qt: &[f64], qc: &[f64]| {
+            let qt = SVector::<f64, DT>::from_column_slice(qt);
+            let qc = SVector::<f64, DC>::from_column_slice(qc);
+            let mut centres = vec![Vector2::zeros(); links];
+            track.body_positions(&qt, &mut centres);
+            let mut joints: Vec<(f64, f64)> = (0..links)
+                .map(|j| centres[j] + rotate(qt[2 + j], rear[j]))
+                .map(|p| (p.x, p.y))
+                .collect();
+            joints.push(joints[0]);
+            let mut bodies = vec![Vector2::zeros(); C::BODIES];
+            chassis.body_positions(&qc, &mut bodies);
+            let description = chassis.description();
+            let mut wheels = Vec::new();
+            let mut arms = Vec::new();
+            for part in C::PARTS {
+                let c = bodies[part.body];
+                wheels.push((c.x, c.y, part.radius));
+                if let Some(arm) = &part.arm {
+                    let body = &description.bodies[arm.body];
+                    let pivot = bodies[arm.body] + rotate(qc[2 + arm.body], body.at_self);
+                    arms.push(((pivot.x, pivot.y), (c.x, c.y)));
+                }
+            }
+            let hull = hull
+                .iter()
+                .map(|p| bodies[0] + rotate(qc[2], *p))
+                .map(|p| (p.x, p.y))
+                .collect();
+            Frame {
+                t,
+                joints,
+                wheels,
+                arms,
+                chassis: (qc[0], qc[1], qc[2]),
+                hull,
+            }
+        };
+        Scene {
+            dofs: (DT, DC),
+            frame: Box::new(frame),
         }
-        next = t + dt;
-        out.push(frame(results, i));
     }
-    out
+
+    /// The columns a picture needs: the track's and the chassis'
+    /// coordinates (`track.x` and those after it, `chassis.x` and those
+    /// after it), out of all the recorded ones; `None` if they are not
+    /// there.
+    pub fn columns(&self, all: &[String]) -> Option<Vec<String>> {
+        let block = |prefix: &str, n: usize| {
+            let start = all.iter().position(|c| *c == format!("{prefix}.x"))?;
+            all.get(start..start + n).map(<[String]>::to_vec)
+        };
+        let mut names = block("track", self.dofs.0)?;
+        names.extend(block("chassis", self.dofs.1)?);
+        Some(names)
+    }
+
+    /// Frames every `dt` (s) of `results` (which hold [`columns`](Self::columns)).
+    pub fn frames(&self, results: &Results, dt: f64) -> Vec<Frame> {
+        let start = |prefix: &str| {
+            results
+                .columns()
+                .iter()
+                .position(|c| c == &format!("{prefix}.x"))
+                .expect("coordinates")
+        };
+        let (track, chassis) = (start("track"), start("chassis"));
+        let mut out = Vec::new();
+        let mut next = 0.0;
+        for i in 0..results.len() {
+            let sample = results.sample(i);
+            if sample.t + 1e-9 < next {
+                continue;
+            }
+            next = sample.t + dt;
+            let values = &sample.values;
+            out.push((self.frame)(
+                sample.t,
+                &values[track..track + self.dofs.0],
+                &values[chassis..chassis + self.dofs.1],
+            ));
+        }
+        out
+    }
 }
 
-fn frame(results: &Results, i: usize) -> Frame {
-    let qt = vector::<DT>(results, i, "track");
-    let qc = vector::<DC>(results, i, "chassis");
-    let mut links = vec![Vector2::zeros(); 64];
-    M113Track.body_positions(&qt, &mut links);
-    let u1 = Vector2::new(-0.077, 0.0);
-    let mut joints: Vec<(f64, f64)> = (0..64)
-        .map(|j| links[j] + rotate(qt[2 + j], u1))
-        .map(|p| (p.x, p.y))
-        .collect();
-    joints.push(joints[0]);
-    let mut bodies = vec![Vector2::zeros(); 14];
-    M113Chassis.body_positions(&qc, &mut bodies);
-    let description = M113Chassis.description();
-    let mut wheels = Vec::new();
-    let mut arms = Vec::new();
-    for part in <M113Chassis as ChassisModel<DC>>::PARTS {
-        let c = bodies[part.body];
-        wheels.push((c.x, c.y, part.radius));
-        if let Some(arm) = &part.arm {
-            let body = &description.bodies[arm.body];
-            let pivot = bodies[arm.body] + rotate(qc[2 + arm.body], body.at_self);
-            arms.push(((pivot.x, pivot.y), (c.x, c.y)));
-        }
-    }
-    let hull = HULL
-        .iter()
-        .map(|&(x, y)| bodies[0] + rotate(qc[2], Vector2::new(x, y)))
-        .map(|p| (p.x, p.y))
-        .collect();
-    Frame {
-        t: results.sample(i).t,
-        joints,
-        wheels,
-        arms,
-        chassis: (qc[0], qc[1], qc[2]),
-        hull,
-    }
+/// A side view of a hull over the running gear, in the chassis' centroid
+/// frame: from behind the rearmost wheel to past the foremost, its belly
+/// clear of the track's upper run, a sloped glacis at the front.
+fn hull<C: ChassisModel<DC>, const DC: usize>(chassis: &C) -> Vec<Vector2<f64>> {
+    let mut bodies = vec![Vector2::zeros(); C::BODIES];
+    chassis.body_positions(&SVector::zeros(), &mut bodies);
+    let parts = || C::PARTS.iter().map(|p| (bodies[p.body], p.radius, p.kind));
+    let front = parts().map(|(c, r, _)| c.x + r).fold(f64::MIN, f64::max) + 0.15;
+    let rear = parts().map(|(c, r, _)| c.x - r).fold(f64::MAX, f64::min) - 0.05;
+    let belly = parts()
+        .filter(|(_, _, kind)| *kind != PartKind::RoadWheel)
+        .map(|(c, r, _)| c.y + r)
+        .fold(f64::MIN, f64::max)
+        + 0.2;
+    [
+        (front, belly),
+        (front - 0.4, belly + 0.7),
+        (front - 1.2, belly + 1.1),
+        (rear, belly + 1.1),
+        (rear, belly + 0.3),
+        (rear + 0.45, belly),
+    ]
+    .iter()
+    .map(|&(x, y)| Vector2::new(x, y))
+    .collect()
 }
 
 /// The terrain as a polyline over `[x0, x1]`.
@@ -121,8 +172,12 @@ pub fn ground(terrain: &Terrain, x0: f64, x1: f64) -> Vec<(f64, f64)> {
 
 /// A still picture of one frame, SVG.
 pub fn svg(frame: &Frame, terrain: &Terrain) -> String {
-    let (cx, cy, _) = frame.chassis;
-    let (x0, x1, y0, y1) = (cx - 3.5, cx + 3.5, cy - 1.6, cy + 1.6);
+    // The vehicle (track and hull) with a margin, the ground below it.
+    let points_x = frame.joints.iter().chain(&frame.hull).map(|p| p.0);
+    let (lo, hi) = points_x.fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
+    let top = frame.hull.iter().map(|p| p.1).fold(f64::MIN, f64::max);
+    let bottom = frame.joints.iter().map(|p| p.1).fold(f64::MAX, f64::min);
+    let (x0, x1, y0, y1) = (lo - 0.6, hi + 0.6, bottom - 0.8, top + 0.3);
     let scale = 140.0;
     let px = |x: f64| (x - x0) * scale;
     let py = |y: f64| (y1 - y) * scale;

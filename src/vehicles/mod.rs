@@ -2,3 +2,4 @@
 //! like any user's: start from one.
 
 pub mod m113;
+pub mod marder;

@@ -149,12 +149,14 @@ pub fn running(
             }
 
             /// The vehicle assembled on `config`'s terrain (chassis centroid
-            /// at x = 0, shoes 1 mm above the ground), its loop closed by
+            /// at x = 0, shoes 1 mm above the ground), its tensioner set
+            /// with the spring's rest angle where it takes up the slack
+            /// (`VehicleConfig::adjust_tensioner`), its loop closed by
             /// partitioning, ready for `simulate`. `BuildError::Assembly`
             /// when no start fits, `BuildError::Setup` for a configuration
             /// that makes no vehicle.
             pub fn system_with(
-                config: #rt::runtime::vehicle::VehicleConfig,
+                mut config: #rt::runtime::vehicle::VehicleConfig,
             ) -> ::core::result::Result<#system, #error> {
                 let assembled = #rt::runtime::vehicle::assemble(
                     &#track,
@@ -165,6 +167,7 @@ pub fn running(
                     0.0,
                     0.001,
                 )?;
+                config.adjust_tensioner::<#chassis, #dc, #dt>(&assembled);
                 ::core::result::Result::Ok(#rt::runtime::vehicle::VehicleSystem::new(
                     #track,
                     #chassis,

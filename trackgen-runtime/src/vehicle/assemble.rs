@@ -20,6 +20,11 @@ pub struct Assembled<const DT: usize, const DC: usize> {
     pub track: SVector<f64, DT>,
     /// Chassis `q_i`.
     pub chassis: SVector<f64, DC>,
+    /// The tensioner as set: its arm's body and the angle (rad, from the
+    /// declared position) at which the track fits. A track adjuster sets
+    /// the spring's rest angle there too
+    /// ([`VehicleConfig::adjust_tensioner`](super::VehicleConfig::adjust_tensioner)).
+    pub tensioner: Option<(usize, f64)>,
 }
 
 /// The upper run's sag when a tensioner takes up the rest, as a fraction
@@ -110,6 +115,7 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         .find(|p| p.kind == PartKind::Idler)
         .and_then(|p| p.arm);
     let mut sag = None;
+    let mut set = None;
     if let Some(arm) = tensioner {
         let (phi, kappa) = set_tensioner(
             track,
@@ -125,6 +131,7 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
         )?;
         qc[2 + arm.body] = phi;
         sag = Some(kappa);
+        set = Some((arm.body, phi));
     }
     let mut circles = pitch_circles(chassis, &qc, pitch, shoe, profile);
     // Down onto the ground: the lowest wheel's shoes touch it.
@@ -159,6 +166,7 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
     Ok(Assembled {
         track: qt,
         chassis: qc,
+        tensioner: set,
     })
 }
 

@@ -119,6 +119,31 @@ impl VehicleConfig {
     }
 }
 
+impl VehicleConfig {
+    /// Moves the rest angle of the tensioner's spring to where the
+    /// assembly set the arm (`assembled.tensioner`), as a track adjuster
+    /// does: the tensioner then pushes with its declared preload at the
+    /// start, and the track's tension comes from that preload, not from a
+    /// spring wound up by however far the assembly swung the arm. In
+    /// `τ = preload − k φ`, the preload becomes `preload + k φ₀` (the
+    /// arms' compiled rates are copied into [`arms`](Self::arms) first if
+    /// it is `None`). Nothing changes without a tensioner.
+    pub fn adjust_tensioner<C: ChassisModel<DC>, const DC: usize, const DT: usize>(
+        &mut self,
+        assembled: &super::Assembled<DT, DC>,
+    ) {
+        let Some((body, angle)) = assembled.tensioner else {
+            return;
+        };
+        let arms = self
+            .arms
+            .get_or_insert_with(|| declared_arms::<C, DC>().copied().collect());
+        for arm in arms.iter_mut().filter(|a| a.body == body) {
+            arm.preload += arm.stiffness * angle;
+        }
+    }
+}
+
 /// The arms' springs a vehicle runs with: `arms` if given, checked to be
 /// one per arm of `C` with finite rates, stiffness and damping zero or
 /// more; otherwise the compiled ones.

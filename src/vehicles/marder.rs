@@ -1,0 +1,175 @@
+//! The second vehicle: a planar Marder, **one side** (the left track set,
+//! 77 shoes).
+//!
+//! Figures from `shared/spec/marder.md` (Project Chrono's open Marder
+//! model), converted as its notes say: Chrono's x forward and z up are our
+//! x and y, angles change sign (a counter-clockwise planar angle is a
+//! negative rotation about Chrono's +y), and the planar inertia of every
+//! body is Chrono's `Iyy`. The planar model carries one track and the
+//! matching half of the chassis: **half its mass (12 500 kg) and half its
+//! pitch inertia (49 091.35 kg m²)**. Positions are in the track-assembly
+//! frame, whose origin is the sprocket centre (and the chassis reference).
+//!
+//! Three translations from Chrono's templates to what a planar declaration
+//! has, each documented where it is declared:
+//! - the **shock absorbers** (linear dampers of 17 771.53 N s/m on arms 1,
+//!   2, 5 and 6) become rotational damping about the arm pivot, `c r²`
+//!   with `r` = 0.4015 m the shock line's lever arm at the design position
+//!   ([`SHOCK_LEVER`]), added to the torsion bar's 500 N m s/rad;
+//! - the **translational tensioner** (2e6 N/m, 1e5 N s/m, 24 525 N preload
+//!   along the hull) becomes a 0.2 m swing arm above the idler with the
+//!   equivalent torsion spring (`k L²`, `c L²`, `F L`), as for the M113;
+//!   like the M113's, the preload is the stated `F0` only (Chrono's
+//!   design length sits 0.25 m short of the free length, which would add
+//!   0.5 MN; the track settles where its tension balances the spring);
+//! - the **torsion preload** `T0 = −2.7e4` N m about Chrono's +y is
+//!   +2.7e4 N m counter-clockwise here, pressing the wheels down.
+//!
+//! The arm centroids are midway between pivot and wheel (as the source
+//! gives, (+0.200, +0.0325) m from the wheel). Contact laws are the M113's
+//! (no Marder-specific figures exist); the drive's torque limit is the
+//! simple engine's in its one gear, `2400 / 0.1708 / 2 ≈ 7026` N m per
+//! sprocket (the spec's example).
+//!
+//! Everything that makes it run is declared with it; [`system`] assembles
+//! it on a terrain ([`Marder::system`]; [`Marder::config`] gives the
+//! run-time settings to change first, for [`Marder::system_with`]), and
+//! [`speed_drive`] is a speed controller tuned for it.
+
+use crate::contact::Terrain;
+use crate::vehicle::Drive;
+
+/// Shoe pitch (pin to pin), m.
+pub const SHOE_PITCH: f64 = 0.17;
+/// Shoe mass, kg.
+pub const SHOE_MASS: f64 = 18.02;
+/// Shoe pitch inertia (Chrono `Iyy`), kg m².
+pub const SHOE_INERTIA: f64 = 0.04;
+/// Whole-vehicle hull mass, kg (the planar model uses half).
+pub const CHASSIS_MASS: f64 = 25_000.0;
+/// Whole-vehicle hull pitch inertia (Chrono `Iyy`), kg m² (the planar
+/// model uses half).
+pub const CHASSIS_INERTIA: f64 = 98_182.71;
+/// Sprocket gear inertia plus its axle's, kg m²: the axle spins with it.
+pub const SPROCKET_INERTIA: f64 = 0.883 + 0.4;
+/// Road-wheel arm mass, kg.
+pub const ARM_MASS: f64 = 75.26;
+/// Road-wheel arm pitch inertia, kg m².
+pub const ARM_INERTIA: f64 = 0.77;
+/// Torsion bar stiffness, N m/rad.
+pub const TORSION_STIFFNESS: f64 = 84_220.62;
+/// Torsion bar damping, N m s/rad.
+pub const TORSION_DAMPING: f64 = 500.0;
+/// Torsion bar preload, N m, counter-clockwise (Chrono's −2.7e4 N m about
+/// its +y): it presses the wheel down.
+pub const TORSION_PRELOAD: f64 = 2.7e4;
+/// Shock absorber damping, N s/m (arms 1, 2, 5 and 6).
+pub const SHOCK_DAMPING: f64 = 17_771.53;
+/// The shock's lever arm about the arm pivot at the design position, m:
+/// the distance from the pivot (+0.400, +0.065) to the line through the
+/// shock's ends (−0.034, +0.152) on the arm and (−0.128, +0.542) on the
+/// hull, all from the wheel centre: `|(P − A) × (B − A)| / |B − A|`
+/// = 0.161082 / 0.401168.
+pub const SHOCK_LEVER: f64 = 0.401_532_2;
+/// Length of the idler's tensioner arm, m (see the module docs).
+pub const TENSIONER_ARM: f64 = 0.2;
+/// Tensioner spring (N/m), damper (N s/m) and preload (N) of Chrono's
+/// translational tensioner.
+pub const TENSIONER: (f64, f64, f64) = (2e6, 1e5, 24_525.0);
+
+crate::model! {
+    /// A planar Marder, left side: 77 shoes, a 12-tooth front sprocket,
+    /// six road wheels on torsion-sprung trailing arms (four with shock
+    /// absorbers), three return rollers and a rear idler on a tensioner
+    /// arm. See the [module docs](self).
+    pub vehicle Marder {
+        gravity: (0.0, -9.81),
+        chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.7958, 0.0) },
+        // Addendum circle 0.3 m, gap arcs of 0.07 m centred on the
+        // 0.328414781 m circle (a 12-gon of 0.17 m sides).
+        sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.275,
+            teeth: 12, tip_radius: 0.3, gap_radius: 0.07, gap_centre: 0.328414781 },
+        // Wheels 1, 2, 5 and 6 (from the front) carry shock absorbers.
+        road_wheel shocked[4] {
+            at: [(-0.8458, -0.3759), (-1.6258, -0.3759), (-3.9658, -0.3759), (-4.7458, -0.3759)],
+            mass: 35.56, inertia: 2.16, radius: 0.35,
+            arm { pivot_offset: (0.4, 0.065), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS,
+                  damping: TORSION_DAMPING + SHOCK_DAMPING * SHOCK_LEVER * SHOCK_LEVER,
+                  preload: TORSION_PRELOAD },
+        },
+        // Wheels 3 and 4: the torsion bar alone.
+        road_wheel plain[2] {
+            at: [(-2.4058, -0.3759), (-3.1858, -0.3759)],
+            mass: 35.56, inertia: 2.16, radius: 0.35,
+            arm { pivot_offset: (0.4, 0.065), mass: ARM_MASS, inertia: ARM_INERTIA,
+                  stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING,
+                  preload: TORSION_PRELOAD },
+        },
+        roller roller[3] {
+            at: [(-1.2358, 0.1761), (-2.7958, 0.1761), (-4.3106, 0.1761)],
+            mass: 10.56, inertia: 1.16, radius: 0.118,
+        },
+        // The idler's 10 kg carrier is the tensioner arm.
+        idler idler { at: (-5.4, -0.0647), mass: 25.76, inertia: 1.12, radius: 0.334,
+            arm { pivot: (-5.4, -0.0647 + TENSIONER_ARM), mass: 10.0, inertia: 0.04,
+                  stiffness: TENSIONER.0 * TENSIONER_ARM * TENSIONER_ARM,
+                  damping: TENSIONER.1 * TENSIONER_ARM * TENSIONER_ARM,
+                  preload: -TENSIONER.2 * TENSIONER_ARM } },
+        track {
+            links: 77,
+            link {
+                mass: SHOE_MASS,
+                inertia: SHOE_INERTIA,
+                u1: (-SHOE_PITCH / 2.0, 0.0),
+                u2: (SHOE_PITCH / 2.0, 0.0),
+            },
+            closure: partitioned,
+        },
+        // The single-pin shoe: 0.06 m high with the pin axis at
+        // mid-height, the 0.11 m ground pad touching at its ends, sprocket
+        // cylinders of 0.015 m at x = +0.0535 and −0.061 m.
+        shoe {
+            ground_points: [(-0.055, -0.03), (0.055, -0.03)],
+            inner_offset: 0.03,
+            pins: [(0.0535, 0.0), (-0.061, 0.0)],
+            pin_radius: 0.015,
+        },
+        // The M113's laws (Hunt-Crossley, exponent 1): no Marder figures.
+        contact {
+            ground { stiffness: 2e6, chi: 2.0, mu: 0.8, slip: 0.1 },
+            wheels { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
+            sprocket { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
+        },
+        // A speed loop of ~2.5 rad/s on the vehicle's 1580 kg m² of
+        // inertia reflected through the sprocket; a higher gain acts on
+        // the sprocket's own 1.28 kg m² first and sets the explicit
+        // integrator's step (4000 / 1.283 ≈ 3100 /s, as stiff as the
+        // idler's rim friction).
+        drive { proportional: 4000.0, integral: 8000.0, max_torque: 7026.0 },
+    }
+}
+
+/// Number of track coordinates `q_i` (77 links + 2).
+pub const TRACK_DOF: usize = Marder::TRACK_DOF;
+/// Number of chassis coordinates `q_i`.
+pub const CHASSIS_DOF: usize = Marder::CHASSIS_DOF;
+
+/// A PI speed drive tuned for the Marder ([`Marder::speed_drive`]):
+/// proportional gain 4000 N m s/rad and integral gain 8000 N m/rad on
+/// the sprocket speed, torque limited to 7026 N m. `target` is the forward
+/// speed wanted, m/s, against time, s.
+pub fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive {
+    Marder::speed_drive(target)
+}
+
+/// The Marder assembled on `terrain` (chassis centroid at x = 0, shoes
+/// 1 mm above the ground), its loop closed by partitioning, with its
+/// declared contact ([`Marder::config`]) and `drive`: ready for
+/// [`simulate`](crate::simulate::simulate).
+pub fn system(
+    terrain: Terrain,
+    drive: Drive,
+) -> Result<MarderSystem, Box<dyn std::error::Error + Send + Sync>> {
+    Ok(Marder::system(terrain, drive)?)
+}
