@@ -16,21 +16,28 @@
 //!   `dissipated` is non-decreasing from sample to sample — exactly, no
 //!   tolerance (its rate is ≥ 0.9 J per 0.01 s sample here, far above any
 //!   rounding).
-//! - **At rest**: after 6 s on flat ground with the sprocket free, over the
-//!   last 0.5 s the chassis' speed stays below 5 mm/s, its vertical speed
-//!   below 5 mm/s and its pitch rate below 2e-3 rad/s (measured 3.8 mm/s and
-//!   1.3e-3 rad/s: the free-rolling vehicle's lightly damped surge, which
-//!   was still 11 mm/s at 4 s), and the mean ground force equals the weight
-//!   within 5e-4 (measured 2.6e-4; the shoes ring at ±0.6 % about it).
+//! - **At rest**: after 10 s on flat ground with the drive holding the
+//!   sprocket still (a free sprocket lets the vehicle roll away on the
+//!   surge of its settling drop, 0.1 m/s after 6 s with the track
+//!   tensioned), over the last 0.5 s the chassis' speed stays below
+//!   5 mm/s, its vertical speed below 5 mm/s and its pitch rate below
+//!   2e-3 rad/s (measured 2.0 mm/s, 3.0 mm/s and 1.0e-3 rad/s: the
+//!   pitch-heave mode on the tensioned track halves in about 2.5 s, and
+//!   was still 7 mm/s at 6 s), and the mean ground force equals the weight
+//!   within 5e-4 (the shoes ring at ±0.6 % about it).
 //! - **Speed**: the track speed `−ω r_p` (the test computes the pitch radius
 //!   `r_p = p / (2 sin(π/N))` from pitch and teeth) within 0.5 % of the
 //!   command (measured 0.2 %; a sprocket radius off by the 1.7 % between the
 //!   pitch radius and the rim radius fails), and the ground slip
 //!   `1 − v / (−ω r_p)` averaged over the last 4 s (one period of the
 //!   chassis' surge on the track) between 0 and 2 % (measured 0.6 %).
-//! - **Penetration**: ground ≤ 10 mm, rims ≤ 6 mm, sprocket teeth ≤ 2 mm
-//!   (measured maxima 7.1, 4.2 and 1.3 mm, at the settling drop and the
-//!   start of the drive; static penetrations are a few mm).
+//! - **Penetration**: ground ≤ 10 mm, rims ≤ 6 mm, sprocket teeth ≤ 4 mm
+//!   (measured maxima 7.1, 4.2 and 2.6 mm, at the settling drop and the
+//!   start of the drive; static penetrations are a few mm). The teeth
+//!   carry the tensioner's preload (20 kN on the idler, about 10 kN in
+//!   each run) on top of the drive's pull since the tensioner's spring
+//!   rests where the assembly sets it: 1.3 mm before, when the assembled
+//!   track ran slack.
 //! - **Tension**: on a 25 % slope, the statics of the sprocket with the
 //!   links seated on it: `(T_tight − T_slack) r_p = |τ| + M_g`, with `M_g`
 //!   the moment of the seated links' weight about the sprocket centre,
@@ -85,13 +92,13 @@ fn run(drive: Drive, duration: f64) -> Results {
     .expect("the run completes")
 }
 
-/// Static equilibrium on flat ground, the sprocket free: after settling,
+/// Static equilibrium on flat ground, the sprocket held: after settling,
 /// the chassis is at rest and the ground carries the vehicle's weight
 /// (bounds in the file's header).
 #[test]
 fn settles_into_static_equilibrium() {
-    let results = run(Drive::Free, 6.0);
-    let (t0, t1) = (5.5, 6.0);
+    let results = run(m113::speed_drive(|_| 0.0), 10.0);
+    let (t0, t1) = (9.5, 10.0);
     let speed = max_abs(window(&results, "speed", t0, t1));
     let heave = max_abs(window(&results, "chassis.vy", t0, t1));
     let pitch_rate = max_abs(window(&results, "chassis.omega_chassis", t0, t1));
@@ -146,7 +153,7 @@ fn driven_run_balances_energy_reaches_speed_and_stays_shallow() {
     for (column, bound) in [
         ("ground_penetration", 0.010),
         ("wheel_penetration", 0.006),
-        ("sprocket_penetration", 0.002),
+        ("sprocket_penetration", 0.004),
     ] {
         let deepest = max_of(results.column(column).unwrap());
         assert!(deepest < bound, "{column}: {deepest} m");
