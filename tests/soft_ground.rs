@@ -191,8 +191,24 @@ fn the_rut_makes_a_second_pass_sink_less() {
     );
     let shoe = shoe_at(first, 1.0, Vector2::zeros(), 0.0, 0.0);
     let mut j = [0.02; 2];
-    assert!(g.press(std::slice::from_ref(&shoe), &ShoeGeometry::m113(), &mut j));
+    let (_, before) = evaluate(&g, &shoe, j);
+    // Pressing where the shoe stands leaves the force there as it was
+    // (Bekker's at the new yield point): no restart needed.
+    assert!(!g.press(std::slice::from_ref(&shoe), &ShoeGeometry::m113(), &mut j));
     assert_eq!(j, [0.02; 2], "loaded points keep their shear displacement");
+    let (_, after) = evaluate(&g, &shoe, j);
+    for (b, a) in before.iter().zip(&after) {
+        assert!(
+            (a.normal - b.normal).abs() <= 1e-9 * b.normal,
+            "{} N before pressing, {} N after",
+            b.normal,
+            a.normal
+        );
+    }
+    assert!(
+        g.rut.profile().count() > 0,
+        "the press is imprinted on the rut"
+    );
     // Half the load again: the shoe sits in its rut, above the first
     // pass's sinkage.
     let second = {
@@ -220,7 +236,7 @@ fn the_rut_makes_a_second_pass_sink_less() {
     assert!(second > fresh, "second pass {second} m, fresh {fresh} m");
     // Lifted off the ground: the shear displacement resets.
     let lifted = shoe_at(-0.05, 1.0, Vector2::zeros(), 0.0, 0.0);
-    assert!(g.press(std::slice::from_ref(&lifted), &ShoeGeometry::m113(), &mut j));
+    assert!(!g.press(std::slice::from_ref(&lifted), &ShoeGeometry::m113(), &mut j));
     assert_eq!(j, [0.0; 2]);
     let profile: Vec<(f64, f64)> = g.rut.profile().collect();
     assert!(!profile.is_empty() && profile.iter().all(|&(_, z)| z > 0.0 && z < first));

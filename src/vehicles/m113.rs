@@ -45,6 +45,10 @@ pub const TORSION_DAMPING: f64 = 500.0;
 /// plane: it presses the wheel down. (Chrono's −1e4 N m is about its
 /// lateral axis, which points the other way.)
 pub const TORSION_PRELOAD: f64 = 1.0e4;
+/// Track width, m, for soft soil (which the planar model otherwise does
+/// not see): the M113's 15-inch (0.381 m) single-pin track; Chrono's model
+/// and `shared/spec/m113.md` give none.
+pub const TRACK_WIDTH: f64 = 0.381;
 /// Length of the idler's tensioner arm, m. Chrono's tensioner is a
 /// translational spring-damper (1e6 N/m, 1.4e4 N s/m, 2e4 N preload); here
 /// the idler swings on a vertical arm of this length from a pivot above

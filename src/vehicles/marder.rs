@@ -71,6 +71,9 @@ pub const SHOCK_DAMPING: f64 = 17_771.53;
 /// hull, all from the wheel centre: `|(P − A) × (B − A)| / |B − A|`
 /// = 0.161082 / 0.401168.
 pub const SHOCK_LEVER: f64 = 0.401_532_2;
+/// Track width, m, for soft soil: the shoe's ground pad, 0.40 m
+/// (`shared/spec/marder.md`; 0.48 m over the side pads).
+pub const TRACK_WIDTH: f64 = 0.40;
 /// Length of the idler's tensioner arm, m (see the module docs).
 pub const TENSIONER_ARM: f64 = 0.2;
 /// Tensioner spring (N/m), damper (N s/m) and preload (N) of Chrono's

@@ -14,18 +14,23 @@
 //! magnitude, so the shear always dissipates; the direction is regularised
 //! over `slip_speed` so that it turns smoothly through zero slip).
 //!
-//! The memory is a rut grid ([`Rut`]) of cells `cell` metres long along x,
-//! interpolated linearly between cell centres so the force is continuous
-//! as a point moves; [`SoftGround::press`] writes the sinkage of every
-//! point into it after each accepted step (the memory is history, not
-//! state: within a step it is fixed).
+//! The memory is the patch under each ground point while the point bears
+//! on the soil (a shoe on the ground stays over the soil it pressed, but
+//! for its slip, so the patch moves with it), and a rut grid ([`Rut`]) of
+//! cells `cell` metres long along x, interpolated linearly between cell
+//! centres, between contacts: a point touching down takes up the rut's
+//! memory where it lands, and leaves its patch in the rut when it lifts.
+//! [`SoftGround::press`] brings both up to date after each accepted step
+//! (the memory is history, not state: within a step it is fixed); a point
+//! pressing its patch deeper sees the same pressure before and after, so
+//! the force has no jump at the step.
 //!
-//! [`VehicleSystem`](crate::vehicle::VehicleSystem) does not use it yet:
-//! it drives on rigid terrain only. This pair is checked on its own
-//! (`tests/soft_ground.rs`: forces against the laws, energy books along
-//! any motion, the rut).
-
-use std::collections::BTreeMap;
+//! [`VehicleSystem`](crate::vehicle::VehicleSystem) drives on it when
+//! [`VehicleConfig::soil`](crate::vehicle::VehicleConfig::soil) is set:
+//! the shear displacements are integrated states, and the rut is pressed
+//! after every accepted step. Checked on its own in `tests/soft_ground.rs`
+//! (forces against the laws, energy books along any motion, the rut) and
+//! under vehicles in `tests/vehicle_soil.rs`.
 
 use nalgebra::Vector2;
 
@@ -34,13 +39,16 @@ use super::{BodyState, ContactForce, ShoeGeometry, Terrain};
 use crate::model::BodyLoad;
 
 /// The plastic memory of the ground along x: a [`SoilMemory`] per cell of
-/// `cell` m, fresh soil where nothing has pressed. Cells are stored only
-/// where the track has been, so memory grows with the distance travelled
-/// (16 bytes per cell: 0.8 MB per km at the default 2 cm).
+/// `cell` m, fresh soil where nothing has pressed. The cells are one
+/// contiguous run from the first to the last the track has pressed (a
+/// lookup is an index, not a search), so memory grows with the distance
+/// travelled: 16 bytes per cell, 0.8 MB per km at the default 2 cm.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Rut {
     cell: f64,
-    cells: BTreeMap<i64, SoilMemory>,
+    /// Index of `cells[0]`.
+    first: i64,
+    cells: Vec<SoilMemory>,
 }
 
 /// Default rut cell, m: a sixth of the M113's 0.12 m ground-point spacing,
@@ -53,7 +61,8 @@ impl Rut {
     pub fn new(cell: f64) -> Rut {
         Rut {
             cell,
-            cells: BTreeMap::new(),
+            first: 0,
+            cells: Vec::new(),
         }
     }
 
@@ -63,7 +72,11 @@ impl Rut {
     }
 
     fn at(&self, i: i64) -> SoilMemory {
-        self.cells.get(&i).copied().unwrap_or_default()
+        usize::try_from(i.wrapping_sub(self.first))
+            .ok()
+            .and_then(|k| self.cells.get(k))
+            .copied()
+            .unwrap_or_default()
     }
 
     /// The memory at `x`, interpolated linearly between cell centres.
@@ -87,24 +100,66 @@ impl Rut {
         )
     }
 
-    /// Presses the cell holding `x` to sinkage `z` (m) under a track of
-    /// width `width` (m); returns whether the memory changed.
+    /// Presses the ground at `x` to sinkage `z` (m) under a track of
+    /// width `width` (m), over one cell; returns whether the memory
+    /// changed.
     pub fn press(&mut self, soil: &Soil, x: f64, z: f64, width: f64) -> bool {
         let i = (x / self.cell).floor() as i64;
         let old = self.at(i);
         let new = old.pressed_to(soil, z, width);
         if new != old {
-            self.cells.insert(i, new);
+            *self.cell_mut(i) = new;
         }
         new != old
     }
 
-    /// The plastic sinkage (m) along x, cell by cell, in order of x: the
-    /// rut's profile, for output.
+    /// Leaves `memory` in the cells whose centres lie under a patch
+    /// `length` m long centred at `x` (at least the cell holding `x`),
+    /// where it is deeper than what they remember.
+    pub fn imprint(&mut self, x: f64, length: f64, memory: SoilMemory, soil: &Soil) {
+        let first = ((x - 0.5 * length) / self.cell - 0.5).ceil() as i64;
+        let last = ((x + 0.5 * length) / self.cell - 0.5).floor() as i64;
+        let held = (x / self.cell).floor() as i64;
+        let (first, last) = (first.min(held), last.max(held));
+        for i in first..=last {
+            let cell = self.cell_mut(i);
+            if memory.deepest(soil) > cell.deepest(soil) {
+                *cell = memory;
+            }
+        }
+    }
+
+    /// The cell `i`, created fresh (with every cell between it and the
+    /// others) if the track has not been there.
+    fn cell_mut(&mut self, i: i64) -> &mut SoilMemory {
+        if self.cells.is_empty() {
+            self.first = i;
+        } else if i < self.first {
+            let grow = (self.first - i) as usize;
+            self.cells
+                .splice(0..0, std::iter::repeat_n(SoilMemory::default(), grow));
+            self.first = i;
+        }
+        let k = (i - self.first) as usize;
+        if k >= self.cells.len() {
+            self.cells.resize(k + 1, SoilMemory::default());
+        }
+        &mut self.cells[k]
+    }
+
+    /// The plastic sinkage (m) along x, cell by cell, in order of x, over
+    /// the cells the track has pressed: the rut's profile, for output.
     pub fn profile(&self) -> impl Iterator<Item = (f64, f64)> + '_ {
         self.cells
             .iter()
-            .map(|(i, m)| ((*i as f64 + 0.5) * self.cell, m.plastic))
+            .enumerate()
+            .filter(|(_, m)| **m != SoilMemory::default())
+            .map(|(k, m)| {
+                (
+                    (self.first + k as i64) as f64 * self.cell + 0.5 * self.cell,
+                    m.plastic,
+                )
+            })
     }
 }
 
@@ -123,8 +178,21 @@ pub struct SoftGround {
     pub patch_area: f64,
     /// Slip speed over which the shear's direction turns, m/s.
     pub slip_speed: f64,
-    /// What the ground remembers.
+    /// What the ground remembers between contacts.
     pub rut: Rut,
+    /// What the ground under each shoe ground point remembers while the
+    /// point bears on it (link by link, the shoe's points in order; empty
+    /// until the first [`press`](Self::press)).
+    patches: Vec<Patch>,
+}
+
+/// The soil under one shoe ground point: its memory, carried with the
+/// point while it bears on the soil (a shoe on the ground stays over the
+/// patch it pressed, but for its slip), and whether it bears.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct Patch {
+    memory: SoilMemory,
+    loaded: bool,
 }
 
 impl SoftGround {
@@ -156,20 +224,33 @@ impl SoftGround {
             patch_area: width * shoe_length / shoe.ground_points.len().max(1) as f64,
             slip_speed: 0.05,
             rut: Rut::new(DEFAULT_RUT_CELL),
+            patches: Vec::new(),
         })
     }
 
-    /// At a point at `point` moving at `velocity`: the pressure with
-    /// damping and without (Pa), the sinkage `z` (m) and its rate (m/s),
-    /// the memory there, and the surface's gradient `g = (−h′, 1)`.
+    /// The memory a point at `x` presses: its patch's while the patches
+    /// are kept (from the first [`press`](Self::press) on), with no slope
+    /// along x (it moves with the point); before that, the rut's,
+    /// interpolated at `x`, with the slope of its floor.
+    fn memory_at(&self, slot: usize, x: f64) -> (SoilMemory, f64) {
+        match self.patches.get(slot) {
+            Some(patch) => (patch.memory, 0.0),
+            None => self.rut.memory_and_slope(x),
+        }
+    }
+
+    /// At a point at `point` moving at `velocity` over ground remembering
+    /// `memory` (whose plastic sinkage slopes by `floor_slope` along x):
+    /// the pressure with damping and without (Pa), the sinkage `z` (m)
+    /// and its rate (m/s), and the surface's gradient `g = (−h′, 1)`.
     fn state(
         &self,
         point: Vector2<f64>,
         velocity: Vector2<f64>,
-    ) -> (f64, f64, f64, f64, SoilMemory, Vector2<f64>) {
+        (memory, floor_slope): (SoilMemory, f64),
+    ) -> (f64, f64, f64, f64, Vector2<f64>) {
         let (h, slope) = self.terrain.height_and_slope(point.x);
         let z = h - point.y;
-        let (memory, floor_slope) = self.rut.memory_and_slope(point.x);
         let elastic = memory.pressure(&self.soil, z, self.width);
         // Reloading a rut, the stored energy `A K_e (z − z_p(x))²/2` also
         // changes along x where the rut's floor slopes: its gradient adds
@@ -190,7 +271,7 @@ impl SoftGround {
         } else {
             0.0
         };
-        (elastic + damping, elastic, z, rate, memory, g)
+        (elastic + damping, elastic, z, rate, g)
     }
 
     /// Forces on the links from the soil, added to `loads` (one per link).
@@ -208,14 +289,29 @@ impl SoftGround {
         mut each: impl FnMut(usize, &ContactForce),
     ) {
         let points = shoe.ground_points.len();
+        // As on rigid ground: a link whose bounding circle clears the
+        // highest undisturbed surface under the track (ruts lie below it)
+        // touches nothing.
+        let extent = shoe.extent();
+        let (low, high) = links
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
+                (lo.min(l.position.x), hi.max(l.position.x))
+            });
+        let highest = self.terrain.max_height(low - extent, high + extent);
         for (i, link) in links.iter().enumerate() {
+            if link.position.y - extent > highest {
+                shear_rate[i * points..(i + 1) * points].fill(0.0);
+                continue;
+            }
             for (k, local) in shoe.ground_points.iter().enumerate() {
                 let slot = i * points + k;
                 shear_rate[slot] = 0.0;
                 let arm = link.arm(*local);
                 let point = link.position + arm;
                 let velocity = link.velocity_at(arm);
-                let (p, elastic, z, rate, memory, g) = self.state(point, velocity);
+                let memory = self.memory_at(slot, point.x);
+                let (p, elastic, z, rate, g) = self.state(point, velocity, memory);
                 if p <= 0.0 {
                     continue;
                 }
@@ -231,7 +327,7 @@ impl SoftGround {
                 // work goes into plastic flow except what the elastic
                 // spring-back `p²/(2 K_e)` per unit area stores: with
                 // p = B(z) = k zⁿ, that is B ż (1 − B′/K_e), B′ = n B / z.
-                let plastic = if z > memory.deepest(&self.soil) {
+                let plastic = if z > memory.0.deepest(&self.soil) {
                     elastic * (1.0 - self.soil.n * elastic / z / self.soil.unloading_stiffness)
                 } else {
                     0.0
@@ -253,24 +349,55 @@ impl SoftGround {
         }
     }
 
-    /// After an accepted step: presses the rut wherever a point has sunk
-    /// deeper than the ground remembers, and resets the shear displacement
-    /// of every point that has left the ground. Returns whether anything
-    /// changed (the integrator must then restart).
+    /// After an accepted step: what the ground remembers, brought up to
+    /// the links' positions.
+    ///
+    /// A point bearing on the soil presses its own patch to its sinkage
+    /// (the pressure there is the same before and after: Bekker's at the
+    /// new yield point) and imprints it on the rut; a point that has left
+    /// the soil leaves its patch in the rut, has its shear displacement
+    /// reset, and takes up the rut's memory where it now is, for when it
+    /// touches down. Returns whether the force at the links' state changed
+    /// (an unloaded point whose new memory would make it bear): then the
+    /// integrator must restart.
     pub fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
         let points = shoe.ground_points.len();
+        let patch_length = self.patch_area / self.width;
+        if self.patches.len() != links.len() * points {
+            self.patches = links
+                .iter()
+                .flat_map(|l| shoe.ground_points.iter().map(|g| l.point(*g).x))
+                .map(|x| Patch {
+                    memory: self.rut.memory(x),
+                    loaded: false,
+                })
+                .collect();
+        }
         let mut changed = false;
         for (i, link) in links.iter().enumerate() {
             for (k, local) in shoe.ground_points.iter().enumerate() {
+                let slot = i * points + k;
                 let point = link.point(*local);
                 let z = self.terrain.height(point.x) - point.y;
-                let loaded = self.rut.memory(point.x).pressure(&self.soil, z, self.width) > 0.0;
-                if loaded {
-                    changed |= self.rut.press(&self.soil, point.x, z, self.width);
-                } else if shear[i * points + k] != 0.0 {
-                    shear[i * points + k] = 0.0;
+                let patch = &mut self.patches[slot];
+                if patch.memory.pressure(&self.soil, z, self.width) > 0.0 {
+                    patch.memory = patch.memory.pressed_to(&self.soil, z, self.width);
+                    patch.loaded = true;
+                    self.rut
+                        .imprint(point.x, patch_length, patch.memory, &self.soil);
+                    continue;
+                }
+                if patch.loaded {
+                    patch.loaded = false;
+                    self.rut
+                        .imprint(point.x, patch_length, patch.memory, &self.soil);
+                }
+                shear[slot] = 0.0;
+                let fresh = self.rut.memory(point.x);
+                if fresh.pressure(&self.soil, z, self.width) > 0.0 {
                     changed = true;
                 }
+                self.patches[slot].memory = fresh;
             }
         }
         changed

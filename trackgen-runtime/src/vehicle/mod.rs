@@ -3,10 +3,12 @@
 
 mod assemble;
 mod build;
+mod config;
 mod drive;
 mod system;
 
 pub use assemble::{Assembled, START_PENETRATION, assemble};
 pub use build::BuildError;
+pub use config::VehicleConfig;
 pub use drive::Drive;
-pub use system::{VehicleConfig, VehicleSystem};
+pub use system::VehicleSystem;

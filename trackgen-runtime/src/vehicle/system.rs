@@ -1,183 +1,17 @@
+//! A vehicle in motion: track and chassis integrated together, coupled by
+//! contact, with sprung arms, a drive and rigid ground or soft soil.
+
 use nalgebra::{DVector, SVector, Vector2};
 
-use super::Drive;
+use super::config::{VehicleConfig, checked_arms};
 use crate::closure::ClosureMethod;
-use crate::contact::ground::GroundContact;
-use crate::contact::sprocket::{SprocketContact, ToothProfile, pitch_radius};
-use crate::contact::wheel::WheelContact;
-use crate::contact::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
+use crate::contact::soft_ground::Rut;
+use crate::contact::sprocket::pitch_radius;
+use crate::contact::{BodyState, ContactForce};
 use crate::integrate::OdeSystem;
 use crate::model::{ArmSpring, BodyLoad, ChassisModel, PartKind, TrackModel};
 use crate::simulate::{Pair, Simulated, SimulationError, Switch, TrackSystem, TreeSystem};
-use crate::suspension::{add_arm_torques_of, arm_dissipation_of, arm_energy_of, declared_arms};
-
-/// How a vehicle meets the world: shoe geometry, the three contact pairs,
-/// the arms' springs and the drive. Nothing here enters the mass matrix:
-/// every field can be changed at run time, between runs, without
-/// recompiling (a vehicle declared with `model!` gives its declared values
-/// from `Name::config`).
-#[derive(Debug)]
-pub struct VehicleConfig {
-    /// The shoes' contact features.
-    pub shoe: ShoeGeometry,
-    /// Track on terrain.
-    pub ground: GroundContact,
-    /// Track on road wheels, idler and rollers.
-    pub wheels: WheelContact,
-    /// Track on sprocket teeth.
-    pub sprocket: SprocketContact,
-    /// The sprocket drive.
-    pub drive: Drive,
-    /// The link (numbered from 1) whose joint to the next is recorded as
-    /// `tension`.
-    pub tension_link: usize,
-    /// The arms' torsion springs and dampers, one per arm of the chassis
-    /// (any order), replacing the rates compiled into the chassis model;
-    /// `None` runs with the compiled ones ([`ChassisModel::PARTS`]).
-    pub arms: Option<Vec<ArmSpring>>,
-}
-
-impl VehicleConfig {
-    /// The default normal law of shoes on the ground: Hunt-Crossley,
-    /// `k` = 2e6 N/m per shoe point, exponent 1, `χ` = 2 s/m (see
-    /// [`m113`](Self::m113) for why).
-    pub const GROUND_LAW: NormalLaw = NormalLaw::HuntCrossley {
-        stiffness: 2e6,
-        exponent: 1.0,
-        chi: 2.0,
-    };
-    /// The default friction of shoes on the ground: μ = 0.8 over 0.1 m/s
-    /// of slip.
-    pub const GROUND_FRICTION: Friction = Friction { mu: 0.8, slip: 0.1 };
-    /// The default normal law of the track on wheel rims and sprocket
-    /// teeth: Hunt-Crossley, `k` = 1e7 N/m, exponent 1, `χ` = 0.5 s/m.
-    pub const RIM_LAW: NormalLaw = NormalLaw::HuntCrossley {
-        stiffness: 1e7,
-        exponent: 1.0,
-        chi: 0.5,
-    };
-    /// The default friction of the track on rims and teeth: μ = 0.4 over
-    /// 0.5 m/s of slip.
-    pub const RIM_FRICTION: Friction = Friction { mu: 0.4, slip: 0.5 };
-
-    /// A vehicle with these shoes and sprocket teeth on `terrain`, driven
-    /// by `drive`, with the default contact laws ([`GROUND_LAW`](Self::GROUND_LAW),
-    /// [`GROUND_FRICTION`](Self::GROUND_FRICTION), [`RIM_LAW`](Self::RIM_LAW)
-    /// and [`RIM_FRICTION`](Self::RIM_FRICTION) on wheels and sprocket),
-    /// tension recorded at link 1 and the arms' compiled springs.
-    pub fn new(
-        shoe: ShoeGeometry,
-        profile: ToothProfile,
-        terrain: Terrain,
-        drive: Drive,
-    ) -> VehicleConfig {
-        VehicleConfig {
-            shoe,
-            ground: GroundContact {
-                terrain,
-                normal: Self::GROUND_LAW,
-                friction: Self::GROUND_FRICTION,
-            },
-            wheels: WheelContact {
-                normal: Self::RIM_LAW,
-                friction: Self::RIM_FRICTION,
-            },
-            sprocket: SprocketContact {
-                profile,
-                normal: Self::RIM_LAW,
-                friction: Self::RIM_FRICTION,
-            },
-            drive,
-            tension_link: 1,
-            arms: None,
-        }
-    }
-
-    /// The M113's contact (shoes and sprocket of `shared/spec/m113.md`,
-    /// friction 0.8 on the ground and 0.4 on wheels and sprocket) on
-    /// `terrain`, driven by `drive`: [`new`](Self::new) with
-    /// [`ShoeGeometry::m113`] and [`ToothProfile::m113`]. The vehicle
-    /// declared in `trackgen::vehicles::m113` gives the same from its
-    /// declaration (`M113::config`).
-    ///
-    /// Normal laws are Hunt-Crossley with exponent 1 (`F = k δ (1 + χ δ̇)`:
-    /// no force jump when a contact opens or closes, which would make an
-    /// adaptive integrator stumble at each of the thousands of contact
-    /// changes of a run). Stiffnesses: ground 2e6 N/m per shoe point, rims
-    /// and teeth 1e7 N/m, so static penetrations stay within a few
-    /// millimetres. The `χ` (2 and 0.5 s/m) damp the contacts without
-    /// making the light shoes' rotation the stiffest mode of the model.
-    /// Friction is regularised over 0.1 m/s of slip on the ground, where it
-    /// carries the traction, and over 0.5 m/s on rims and teeth, where it
-    /// only spins the wheels up and rubs the flanks: the friction slope
-    /// `μ F_n / v_s` on an 18 kg shoe under a loaded rim is the stiffest mode
-    /// of the model, and sets the explicit integrator's step (measured: the
-    /// step grows 1.75× from 0.2 to 0.5 m/s; without rim friction at all,
-    /// 2×).
-    pub fn m113(terrain: Terrain, drive: Drive) -> VehicleConfig {
-        Self::new(ShoeGeometry::m113(), ToothProfile::m113(), terrain, drive)
-    }
-}
-
-impl VehicleConfig {
-    /// Moves the rest angle of the tensioner's spring to where the
-    /// assembly set the arm (`assembled.tensioner`), as a track adjuster
-    /// does: the tensioner then pushes with its declared preload at the
-    /// start, and the track's tension comes from that preload, not from a
-    /// spring wound up by however far the assembly swung the arm. In
-    /// `τ = preload − k φ`, the preload becomes `preload + k φ₀` (the
-    /// arms' compiled rates are copied into [`arms`](Self::arms) first if
-    /// it is `None`). Nothing changes without a tensioner.
-    pub fn adjust_tensioner<C: ChassisModel<DC>, const DC: usize, const DT: usize>(
-        &mut self,
-        assembled: &super::Assembled<DT, DC>,
-    ) {
-        let Some((body, angle)) = assembled.tensioner else {
-            return;
-        };
-        let arms = self
-            .arms
-            .get_or_insert_with(|| declared_arms::<C, DC>().copied().collect());
-        for arm in arms.iter_mut().filter(|a| a.body == body) {
-            arm.preload += arm.stiffness * angle;
-        }
-    }
-}
-
-/// The arms' springs a vehicle runs with: `arms` if given, checked to be
-/// one per arm of `C` with finite rates, stiffness and damping zero or
-/// more; otherwise the compiled ones.
-fn checked_arms<C: ChassisModel<DC>, const DC: usize>(
-    arms: Option<&[ArmSpring]>,
-) -> Result<Vec<ArmSpring>, SimulationError> {
-    let declared: Vec<ArmSpring> = declared_arms::<C, DC>().copied().collect();
-    let Some(arms) = arms else {
-        return Ok(declared);
-    };
-    let mut bodies: Vec<usize> = arms.iter().map(|a| a.body).collect();
-    let mut expected: Vec<usize> = declared.iter().map(|a| a.body).collect();
-    bodies.sort_unstable();
-    expected.sort_unstable();
-    if bodies != expected {
-        return Err(SimulationError::Setup(format!(
-            "the configured arms act on bodies {bodies:?}; the chassis has arms at bodies {expected:?}"
-        )));
-    }
-    for arm in arms {
-        let rates_ok = arm.stiffness >= 0.0 && arm.damping >= 0.0;
-        let finite = [arm.stiffness, arm.damping, arm.preload]
-            .iter()
-            .all(|v| v.is_finite());
-        if !(rates_ok && finite) {
-            return Err(SimulationError::Setup(format!(
-                "the arm at body {} needs finite stiffness and damping of zero or more and a finite preload, \
-                 got stiffness {}, damping {}, preload {}",
-                arm.body, arm.stiffness, arm.damping, arm.preload
-            )));
-        }
-    }
-    Ok(arms.to_vec())
-}
+use crate::suspension::{add_arm_torques_of, arm_dissipation_of, arm_energy_of};
 
 /// The quantities a vehicle records after its track's and chassis' own.
 const RECORDED: [&str; 16] = [
@@ -231,7 +65,9 @@ impl ContactSummary {
 /// State: the track's, the chassis' `[q_i, q̇_i]`, then the drive
 /// controller's integral (rad), the motor's work and the dissipated work
 /// (J, integrated alongside so the energy balance is exact to the
-/// integration tolerance).
+/// integration tolerance); on soft soil, then the shear displacement `j`
+/// (m) of every shoe ground point, link by link, grown by the point's
+/// slip speed while it bears on the soil and reset when it leaves it.
 pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> {
     /// Track and chassis, their states side by side.
     bodies: Pair<TrackSystem<T, DT>, TreeSystem<C, DC>>,
@@ -258,6 +94,8 @@ struct Scratch {
     part_trig: Vec<(f64, f64)>,
     positions: Vec<Vector2<f64>>,
     velocities: Vec<Vector2<f64>>,
+    /// `dj/dt` of every shoe ground point on soft soil.
+    shear_rate: Vec<f64>,
 }
 
 /// The drive's integral, the motor's work and the dissipated work: the
@@ -306,6 +144,27 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             )));
         }
         let arms = checked_arms::<C, DC>(config.arms.as_deref())?;
+        if let Some(soil) = &config.soil {
+            soil.soil
+                .check()
+                .map_err(|e| SimulationError::Setup(e.to_string()))?;
+            if soil.terrain != config.ground.terrain {
+                return Err(SimulationError::Setup(
+                    "the soil's surface is not the ground's terrain: set the soil with VehicleConfig::on_soil after the terrain".to_string(),
+                ));
+            }
+        }
+        if !config.drawbar_pull.is_finite() {
+            return Err(SimulationError::Setup(format!(
+                "drawbar_pull {} N is not a finite number",
+                config.drawbar_pull
+            )));
+        }
+        let shear_states = if config.soil.is_some() {
+            T::BODIES * config.shoe.ground_points.len()
+        } else {
+            0
+        };
         let track = TrackSystem::new(track, q_track, SVector::zeros(), closure)?;
         let chassis = TreeSystem::chassis(chassis, q_chassis, SVector::zeros());
         let sprocket = C::PARTS.iter().position(|p| p.kind == PartKind::Sprocket);
@@ -327,8 +186,11 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         let bodies = Pair::new(track, "track", chassis, "chassis");
         let start = bodies.initial_state();
         let y0 = DVector::from_iterator(
-            start.len() + EXTRA_STATES,
-            start.iter().copied().chain([0.0; EXTRA_STATES]),
+            start.len() + EXTRA_STATES + shear_states,
+            start
+                .iter()
+                .copied()
+                .chain(std::iter::repeat_n(0.0, EXTRA_STATES + shear_states)),
         );
         let largest = T::BODIES.max(C::BODIES);
         let resting = BodyState::new(Vector2::zeros(), 0.0, Vector2::zeros(), 0.0);
@@ -347,6 +209,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
                 part_trig: vec![(0.0, 1.0); C::BODIES],
                 positions: vec![Vector2::zeros(); largest],
                 velocities: vec![Vector2::zeros(); largest],
+                shear_rate: vec![0.0; shear_states],
             },
             y0,
         })
@@ -372,10 +235,18 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         self.sprocket_radius
     }
 
-    /// The bodies' part of a state and the three extra states.
-    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; EXTRA_STATES]) {
+    /// The bodies' part of a state, the three extra states and the shear
+    /// displacements.
+    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; EXTRA_STATES], &'y [f64]) {
         let (bodies, extra) = y.split_at(self.bodies.dimension());
-        (bodies, [extra[0], extra[1], extra[2]])
+        let (extra, shear) = extra.split_at(EXTRA_STATES);
+        (bodies, [extra[0], extra[1], extra[2]], shear)
+    }
+
+    /// The soft soil's memory, if the vehicle drives on soil: the rut it
+    /// has left so far.
+    pub fn rut(&self) -> Option<&Rut> {
+        self.config.soil.as_ref().map(|s| &s.rut)
     }
 
     /// Contact, suspension and drive loads at the track's kept recovery
@@ -386,6 +257,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         t: f64,
         (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
         integral: f64,
+        shear: &[f64],
     ) -> Result<ContactSummary, SimulationError> {
         let (qt, qdt, link_trig) = self.bodies.first().recovered();
         let Scratch {
@@ -396,6 +268,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             part_trig,
             positions,
             velocities,
+            shear_rate,
         } = &mut self.scratch;
         let (r, v) = (&mut positions[..T::BODIES], &mut velocities[..T::BODIES]);
         self.bodies
@@ -418,13 +291,24 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         chassis_loads.fill(BodyLoad::ZERO);
         let mut s = ContactSummary::default();
         let config = &self.config;
-        config
-            .ground
-            .apply(links, &config.shoe, track_loads, |_, c| {
-                s.ground_normal += c.normal;
-                let depth = s.book(c);
-                s.ground_penetration = s.ground_penetration.max(depth);
-            });
+        let mut on_ground = |_: usize, c: &ContactForce| {
+            s.ground_normal += c.normal;
+            let depth = s.book(c);
+            s.ground_penetration = s.ground_penetration.max(depth);
+        };
+        match &config.soil {
+            None => config
+                .ground
+                .apply(links, &config.shoe, track_loads, on_ground),
+            Some(soil) => soil.apply(
+                links,
+                &config.shoe,
+                track_loads,
+                shear,
+                shear_rate,
+                &mut on_ground,
+            ),
+        }
         for part in C::PARTS {
             let body = &parts[part.body];
             let load = &mut chassis_loads[part.body];
@@ -450,6 +334,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             }
         }
         add_arm_torques_of(&self.arms, qc, qdc, chassis_loads);
+        // The drawbar pulls the chassis back at its centroid; the power it
+        // takes out, `F v`, is booked as dissipated.
+        chassis_loads[0].force.x -= config.drawbar_pull;
+        s.dissipation += config.drawbar_pull * qdc[0];
         s.dissipation += arm_dissipation_of(&self.arms, qdc);
         if let Some(i) = self.sprocket {
             let body = C::PARTS[i].body;
@@ -508,6 +396,33 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
             .map_or(0.0, |i| qdc[2 + C::PARTS[i].body] - qdc[2])
     }
 
+    /// After an accepted step on soft soil: the rut pressed wherever a
+    /// ground point has sunk deeper than the soil remembers, and the shear
+    /// displacement of every point off the ground reset
+    /// ([`SoftGround::press`](crate::contact::soft_ground::SoftGround::press)).
+    /// Returns whether the right-hand side changed (the integrator must
+    /// then restart).
+    fn press_soil(&mut self, t: f64, y: &mut [f64]) -> Result<bool, SimulationError> {
+        let nb = self.bodies.dimension();
+        let (bodies, rest) = y.split_at_mut(nb);
+        let (yt, _) = self.bodies.split(bodies);
+        let track = self.bodies.parts_mut().0;
+        track.recover(t, yt)?;
+        let (qt, _, trig) = track.recovered();
+        let positions = &mut self.scratch.positions[..T::BODIES];
+        track.model().body_positions(qt, positions);
+        for (b, link) in self.scratch.links.iter_mut().enumerate() {
+            *link =
+                BodyState::with_sin_cos(positions[b], qt[2 + b], trig[b], Vector2::zeros(), 0.0);
+        }
+        let soil = self.config.soil.as_mut().expect("on soil");
+        Ok(soil.press(
+            &self.scratch.links,
+            &self.config.shoe,
+            &mut rest[EXTRA_STATES..],
+        ))
+    }
+
     /// The loads at a state: the track's coordinates recovered (kept by
     /// the track system), the chassis', and the contact, suspension and
     /// drive loads there, given to both subsystems.
@@ -517,11 +432,11 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         t: f64,
         y: &[f64],
     ) -> Result<(ContactSummary, (SVector<f64, DC>, SVector<f64, DC>)), SimulationError> {
-        let (bodies, [integral, ..]) = self.split(y);
+        let (bodies, [integral, ..], shear) = self.split(y);
         let (yt, yc) = self.bodies.split(bodies);
         self.bodies.parts_mut().0.recover(t, yt)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(yc);
-        let s = self.loads(t, (&qc, &qdc), integral)?;
+        let s = self.loads(t, (&qc, &qdc), integral, shear)?;
         let (track, chassis) = self.bodies.parts_mut();
         track.set_external(&self.scratch.track_loads);
         chassis.set_external(&self.scratch.chassis_loads);
@@ -549,6 +464,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         extra[0] = s.integral_rate;
         extra[1] = s.torque * self.sprocket_omega(&qdc);
         extra[2] = s.dissipation + self.track().closure_energy(qt, qdt).1;
+        extra[EXTRA_STATES..].copy_from_slice(&self.scratch.shear_rate);
         Ok(())
     }
 }
@@ -567,7 +483,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
     }
 
     fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
-        let (bodies, [_, work, dissipated]) = self.split(y);
+        let (bodies, [_, work, dissipated], _) = self.split(y);
         self.bodies.observe(t, bodies, row)?;
         let (s, (qc, qdc)) = self.evaluate(t, y)?;
         let (track, _) = self.bodies.parts_mut();
@@ -620,6 +536,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         switched: &mut dyn FnMut(Switch),
     ) -> Result<bool, SimulationError> {
         let nb = self.bodies.dimension();
-        self.bodies.after_step(t, &mut y[..nb], switched)
+        let mut restart = self.bodies.after_step(t, &mut y[..nb], switched)?;
+        if self.config.soil.is_some() {
+            restart |= self.press_soil(t, y)?;
+        }
+        Ok(restart)
     }
 }
