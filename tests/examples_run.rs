@@ -1103,3 +1103,32 @@ fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
     let bad = run(&step_limit, &["--slow"], &dir);
     assert_rejected("step_limit --slow", &bad, &["--slow"]);
 }
+
+/// `drawbar_pull --quick`: two drawbar loads on dry sand; the CSV has a
+/// row per load, the slip grows with the load and stays in (0, 1), Wong's
+/// pull at each slip is below the soil's Coulomb limit, and the SVG is
+/// drawn; a bad soil is refused with the list of presets.
+#[test]
+fn drawbar_pull_writes_its_curve() {
+    let drawbar = example("drawbar_pull");
+    let dir = scratch("drawbar_pull");
+    let out = run(&drawbar, &["--quick", "--out", dir.to_str().unwrap()], &dir);
+    assert_success("drawbar_pull --quick", &out);
+    let csv = Csv::read(&dir.join("drawbar_pull.csv"));
+    let (pull, slip, wong) = (
+        csv.column("drawbar_pull_n"),
+        csv.column("slip"),
+        csv.column("wong_n"),
+    );
+    assert_eq!(pull.len(), 2);
+    assert!(pull[0] < pull[1] && slip[0] < slip[1], "{pull:?} {slip:?}");
+    assert!(slip.iter().all(|s| (0.0..1.0).contains(s)), "{slip:?}");
+    assert!(wong.iter().all(|w| *w > 0.0 && *w < 31_000.0), "{wong:?}");
+    check_svg(&dir.join("drawbar_pull.svg"));
+    let out = run(
+        &drawbar,
+        &["--soil", "mud", "--out", dir.to_str().unwrap()],
+        &dir,
+    );
+    assert_rejected("drawbar_pull --soil mud", &out, &["mud", "dry-sand"]);
+}

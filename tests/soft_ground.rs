@@ -79,7 +79,7 @@ fn a_shoe_at_rest_carries_bekkers_pressure_on_its_patches() {
 }
 
 #[test]
-fn shear_follows_janosi_hanamoto_against_the_slip() {
+fn shear_follows_janosi_hanamoto_against_the_displacement() {
     let soil = SoilPreset::Clay.soil();
     let g = ground(soil, Terrain::Flat { height: 0.0 });
     let z = 0.02;
@@ -91,13 +91,26 @@ fn shear_follows_janosi_hanamoto_against_the_slip() {
         [j; 2],
     );
     let p = soil.bekker_pressure(z, WIDTH);
-    let direction = slip / slip.hypot(g.slip_speed);
-    let want = -2.0 * soil.shear_stress(p, j) * g.patch_area * direction;
+    // Against the displacement, whatever the slip's instant direction.
+    let want = -2.0 * soil.shear_stress(p, j) * g.patch_area;
     assert!(
         (load.force.x - want).abs() < 1e-12 * want.abs(),
         "{} vs {want}",
         load.force.x
     );
+    for (j, slip) in [(-0.01, 0.3), (-0.01, -0.3), (0.01, -0.3)] {
+        let (load, _) = evaluate(
+            &g,
+            &shoe_at(z, 0.0, Vector2::new(slip, 0.0), 0.0, 0.0),
+            [j; 2],
+        );
+        let want = -2.0 * soil.shear_stress(p, j) * g.patch_area * j.signum();
+        assert!(
+            (load.force.x - want).abs() < 1e-12 * want.abs(),
+            "j {j}, slip {slip}: {} vs {want}",
+            load.force.x
+        );
+    }
 }
 
 /// Along random motions of a shoe over flat and sloping soil, fresh and

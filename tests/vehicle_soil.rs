@@ -6,7 +6,7 @@
 //! Tolerances, and why:
 //! - **Static sinkage** (the M113 at rest on dry sand): the mean sinkage
 //!   of the loaded ground points within 5 % of `z₀ = (W/(b l) / (k_c/b +
-//!   k_φ))^{1/n}` (the issue's figure; measured 2.6 %), with `W` the ground
+//!   k_φ))^{1/n}` (the issue's figure; measured 1.3 %), with `W` the ground
 //!   force, `b` the track width and `l` the loaded points' footprint. On
 //!   dry sand `n` = 1.1, so the mean sinkage under *any* distribution of
 //!   the weight along the track is `z₀` to within Jensen's gap (for
@@ -22,21 +22,23 @@
 //!   integrated as the vehicle does (`j̇` = slip speed while loaded, reset
 //!   when lifted), the rut pressed after each step. Its horizontal force
 //!   in steady state within 10 % of Wong's `F = (A c + W tan φ)[1 − K/(i
-//!   l)(1 − e^{−i l/K})]` (the issue's figure; measured within 3 %): the
-//!   shear direction is regularised over 0.05 m/s of slip speed (3 % at
-//!   5 % slip), and the shear is sampled at the ground points (77 mm
-//!   apart) rather than integrated.
+//!   l)(1 − e^{−i l/K})]` (the issue's figure; measured within 0.05 %: the
+//!   shear is sampled at the ground points, 77 mm apart, rather than
+//!   integrated).
 //! - **Second pass**: the M113 drives off over dry sand, then a second
 //!   one over the rut it left: the second pass sinks the ground by less
 //!   than half what the first did (the rut's plastic depth over the first
-//!   2 m: 0.12 m made by the first pass, 0.014 m more by the second). The
+//!   2 m: 0.125 m made by the first pass, 0.020 m more by the second). The
 //!   second vehicle rides as deep as the first (it reloads the rut
-//!   elastically to the same load, 0.14 against 0.12 m at its deepest),
+//!   elastically to the same load, 0.14 against 0.13 m at its deepest),
 //!   but it presses the soil only past the first pass's sinkage.
 //! - **Energy books** on soil: `motor work = ΔE + dissipated` (the soil's
 //!   plastic work, damping and shear among the dissipated) within 2e-3 of
-//!   the work at Bogacki-Shampine 1e-4 (`bound_for_tolerance`: 1e-3 … the
-//!   issue asks 2 %; measured ~3e-4), dissipation never decreasing.
+//!   the work at Bogacki-Shampine 1e-4 (the issue asks 2 %; measured
+//!   8e-4). The shear is elastic in small reversals (`soft_ground`'s
+//!   docs), so the dissipated work may dip between samples by what the
+//!   rocking shoes get back, bounded here by 1e-3 of the work (measured
+//!   6.8 J of 2.9e4 J).
 
 mod support;
 
@@ -275,9 +277,12 @@ fn energy_books_close_on_soil() {
         books.residual,
         books.work
     );
+    // The shear gives back what small reversals stored (the shoes rock
+    // under the road wheels): the dissipated work may dip by that, a few
+    // joules (measured 6.8 J), never by 1e-3 of the work.
     assert!(
-        books.least_dissipation_step >= 0.0,
-        "dissipated work fell by {:e} J",
+        -books.least_dissipation_step < 1e-3 * books.work,
+        "dissipated work fell by {:e} J between samples",
         -books.least_dissipation_step
     );
 }

@@ -7,12 +7,21 @@
 //! [`Terrain`] a point at height `y` is sunk by `z = h(x) − y`; the
 //! pressure on its patch follows the ground's memory at `x`
 //! ([`SoilMemory::pressure`]: Bekker beyond the deepest earlier sinkage,
-//! elastic back from it), plus the damping `R ż` while pressing. The
-//! shear stress is Janosi–Hanamoto's at that pressure and at the shear
-//! displacement `j` the point has accumulated while on the ground,
-//! opposing the slip (as Chrono's SCM: `j` grows with the slip's
-//! magnitude, so the shear always dissipates; the direction is regularised
-//! over `slip_speed` so that it turns smoothly through zero slip).
+//! elastic back from it), plus the damping `R ż`. The shear stress is
+//! Janosi–Hanamoto's at that pressure and at the shear displacement `j`
+//! the point has slipped over the soil since it sank into it (signed,
+//! `j̇` = the slip velocity along the surface), opposing that
+//! displacement: the shear is a function of how far the shoe has
+//! sheared the soil, as in Wong's derivation (`j = i x`), not of the
+//! instantaneous direction of slip. (Chrono's SCM grows `j` with the
+//! slip's magnitude and opposes the instantaneous slip; under a tracked
+//! vehicle the shoes rock as the road wheels roll over them, their ground
+//! points' slip turning back and forth at a few cm/s about a mean of the
+//! same size, and a shear that turns with it cancels itself: measured,
+//! the M113 pulled a fifth of Wong's drawbar pull at 2 % slip.) Small
+//! reversals are elastic: the shear work they do is given back, so the
+//! work booked as dissipated can dip by that much; the shear's work is
+//! dissipated as it is done when the shoe lifts.
 //!
 //! The memory is the patch under each ground point while the point bears
 //! on the soil (a shoe on the ground stays over the soil it pressed, but
@@ -176,8 +185,6 @@ pub struct SoftGround {
     /// The ground-face area each ground point carries, m² (the shoe's
     /// ground face over its number of ground points).
     pub patch_area: f64,
-    /// Slip speed over which the shear's direction turns, m/s.
-    pub slip_speed: f64,
     /// What the ground remembers between contacts.
     pub rut: Rut,
     /// What the ground under each shoe ground point remembers while the
@@ -198,7 +205,7 @@ struct Patch {
 impl SoftGround {
     /// Soft ground of `soil` over `terrain` for a track `width` m wide
     /// whose shoes have ground faces `shoe_length` m long carried by the
-    /// shoe's ground points; direction of shear regularised over 0.05 m/s;
+    /// shoe's ground points;
     /// rut cells of [`DEFAULT_RUT_CELL`]. The soil is checked.
     pub fn new(
         soil: Soil,
@@ -222,7 +229,6 @@ impl SoftGround {
             terrain,
             width,
             patch_area: width * shoe_length / shoe.ground_points.len().max(1) as f64,
-            slip_speed: 0.05,
             rut: Rut::new(DEFAULT_RUT_CELL),
             patches: Vec::new(),
         })
@@ -266,8 +272,11 @@ impl SoftGround {
         // ż = −v·g, exact over any profile (as on rigid ground), so the
         // force `g p A` is the gradient of the stored energy.
         let rate = -velocity.dot(&g);
+        // Damping both ways while the soil bears (SCM adds R·ż whatever
+        // its sign), never pulling: lightly damped, shoes rock on the soil's
+        // stiff elastic unloading.
         let damping = if elastic > 0.0 {
-            self.soil.damping * rate.max(0.0)
+            (self.soil.damping * rate).max(-elastic)
         } else {
             0.0
         };
@@ -276,8 +285,10 @@ impl SoftGround {
 
     /// Forces on the links from the soil, added to `loads` (one per link).
     /// `shear` holds each ground point's shear displacement `j` (m; link
-    /// by link, the shoe's points in order), `shear_rate` receives `ż`
-    /// of each: the slip speed while the point is loaded, 0 otherwise.
+    /// by link, the shoe's points in order, signed along the surface's
+    /// forward tangent), `shear_rate` receives `j̇` of each: the slip
+    /// velocity while the point is below the undisturbed surface (in the
+    /// soil, bearing or not), 0 otherwise.
     /// Every loaded point is passed to `each`.
     pub fn apply(
         &self,
@@ -312,16 +323,25 @@ impl SoftGround {
                 let velocity = link.velocity_at(arm);
                 let memory = self.memory_at(slot, point.x);
                 let (p, elastic, z, rate, g) = self.state(point, velocity, memory);
-                if p <= 0.0 {
+                if z <= 0.0 {
                     continue;
                 }
                 let t = Vector2::new(g.y, -g.x) / g.norm();
                 let slip = velocity.dot(&t);
-                let direction = slip / slip.hypot(self.slip_speed);
-                let tau = self.soil.shear_stress(p, shear[slot]);
-                let tangential = -tau * self.patch_area * direction;
+                // Below the surface the shoe shears the soil it sits in,
+                // bearing or not (between road wheels a shoe may rest
+                // lightly in its rut): `j` follows the slip, as Wong's
+                // `j = i x` along the whole contact.
+                shear_rate[slot] = slip;
+                if p <= 0.0 {
+                    continue;
+                }
+                // τ(|j|) against the displacement: 1 − e^{−|j|/K} ~ |j|/K
+                // near 0, so `τ sign(j)` is smooth through j = 0.
+                let j = shear[slot];
+                let tau = self.soil.shear_stress(p, j);
+                let tangential = -tau * self.patch_area * j.signum();
                 let force = g * (p * self.patch_area) + t * tangential;
-                shear_rate[slot] = slip.abs();
                 loads[i] = loads[i].plus(BodyLoad::force_at(force, arm));
                 // Pressing fresh ground (beyond the deepest sinkage), the
                 // work goes into plastic flow except what the elastic
@@ -354,10 +374,10 @@ impl SoftGround {
     ///
     /// A point bearing on the soil presses its own patch to its sinkage
     /// (the pressure there is the same before and after: Bekker's at the
-    /// new yield point) and imprints it on the rut; a point that has left
-    /// the soil leaves its patch in the rut, has its shear displacement
-    /// reset, and takes up the rut's memory where it now is, for when it
-    /// touches down. Returns whether the force at the links' state changed
+    /// new yield point) and imprints it on the rut; a point that no longer
+    /// bears leaves its patch in the rut and takes up the rut's memory
+    /// where it now is, for when it bears again; a point lifted above the
+    /// undisturbed surface has its shear displacement reset. Returns whether the force at the links' state changed
     /// (an unloaded point whose new memory would make it bear): then the
     /// integrator must restart.
     pub fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
@@ -392,7 +412,11 @@ impl SoftGround {
                     self.rut
                         .imprint(point.x, patch_length, patch.memory, &self.soil);
                 }
-                shear[slot] = 0.0;
+                // Lifted out of the soil (above the undisturbed surface),
+                // the shoe has left the soil it sheared.
+                if z <= 0.0 {
+                    shear[slot] = 0.0;
+                }
                 let fresh = self.rut.memory(point.x);
                 if fresh.pressure(&self.soil, z, self.width) > 0.0 {
                     changed = true;
