@@ -524,6 +524,76 @@ fn m113_refuses_a_start_inside_the_ground() {
     assert!(!out_dir.exists(), "no files are written");
 }
 
+/// `--terrain dry-sand`: the M113 on soft soil sinks centimetres (on rigid
+/// ground, millimetres) and the run writes its outputs; `--vehicle
+/// marder` on rigid ground writes the Marder's.
+#[test]
+fn m113_drives_on_soft_soil_and_the_marder_runs() {
+    let m113 = example("m113");
+    let dir = scratch("m113_soil");
+    let out = run(
+        &m113,
+        &[
+            "--terrain",
+            "dry-sand",
+            "--settle",
+            "0.3",
+            "--ramp",
+            "0.5",
+            "--duration",
+            "1.0",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --terrain dry-sand", &out);
+    assert!(
+        text(&out.stdout).contains("on dry-sand soil"),
+        "{}",
+        text(&out.stdout)
+    );
+    check_m113_outputs(&dir, 1.0);
+    let sinkage = Csv::read(&dir.join("all.csv")).column("ground_penetration");
+    let deepest = sinkage.iter().copied().fold(0.0, f64::max);
+    assert!(deepest > 0.02, "deepest sinkage {deepest} m on dry sand");
+    let dir = scratch("marder");
+    let out = run(
+        &m113,
+        &[
+            "--vehicle",
+            "marder",
+            "--settle",
+            "0.2",
+            "--ramp",
+            "0.3",
+            "--duration",
+            "0.6",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --vehicle marder", &out);
+    assert!(
+        text(&out.stdout).starts_with("Marder"),
+        "{}",
+        text(&out.stdout)
+    );
+    for file in [
+        "marder.csv",
+        "all.csv",
+        "all.arrow",
+        "marder.svg",
+        "frame.svg",
+        "animation.html",
+    ] {
+        assert!(dir.join(file).is_file(), "{file} not written");
+    }
+    let csv = Csv::read(&dir.join("marder.csv"));
+    assert!((csv.column("t").last().unwrap() - 0.6).abs() < 1e-9);
+}
+
 #[test]
 fn m113_rejects_bad_options() {
     let m113 = example("m113");
@@ -557,6 +627,14 @@ fn m113_rejects_bad_options() {
             &["--bump-height", "-0.5 to 0.5 m"],
         ),
         (&["--bump-at", "inf"], &["--bump-at", "-10000 to 10000 m"]),
+        (
+            &["--terrain", "mud"],
+            &["--terrain", "mud", "rigid", "dry-sand"],
+        ),
+        (
+            &["--vehicle", "tiger"],
+            &["--vehicle", "tiger", "m113", "marder"],
+        ),
     ];
     for (bad, mentions) in cases {
         // The short run's settings, less the one under test (clap refuses

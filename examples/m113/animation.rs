@@ -3,9 +3,7 @@
 
 use std::fmt::Write;
 
-use trackgen::contact::Terrain;
-
-use super::scene::{Frame, ground};
+use super::scene::{Frame, Ground};
 
 fn list(points: &[(f64, f64)]) -> String {
     let mut s = String::from("[");
@@ -18,8 +16,9 @@ fn list(points: &[(f64, f64)]) -> String {
     s + "]"
 }
 
-/// The page playing `frames` over `terrain`, headed `title`.
-pub fn html(frames: &[Frame], terrain: &Terrain, title: &str) -> String {
+/// The page playing `frames` over `ground` (its rut drawn behind each
+/// frame's track front), headed `title`.
+pub fn html(frames: &[Frame], ground: &Ground, title: &str) -> String {
     let x0 = frames.iter().map(|f| f.chassis.0).fold(f64::MAX, f64::min) - 5.0;
     let x1 = frames.iter().map(|f| f.chassis.0).fold(f64::MIN, f64::max) + 5.0;
     let mut data = String::from("[");
@@ -50,11 +49,16 @@ pub fn html(frames: &[Frame], terrain: &Terrain, title: &str) -> String {
         );
     }
     data.push(']');
-    let ground = list(&ground(terrain, x0, x1));
+    let profile = ground.profile(x0, x1);
+    let ruts: Vec<(f64, f64)> = profile
+        .iter()
+        .map(|&(x, _)| (x, ground.rut_depth(x)))
+        .collect();
     TEMPLATE
         .replace("__TITLE__", title)
         .replace("__FRAMES__", &data)
-        .replace("__GROUND__", &ground)
+        .replace("__GROUND__", &list(&profile))
+        .replace("__RUT__", &list(&ruts))
 }
 
 const TEMPLATE: &str = r#"<!doctype html>
@@ -67,6 +71,7 @@ const TEMPLATE: &str = r#"<!doctype html>
 <script>
 const F = __FRAMES__;
 const G = __GROUND__;
+const R = __RUT__;
 const cv = document.getElementById('c'), g = cv.getContext('2d');
 const slider = document.getElementById('s'); slider.max = F.length - 1;
 let k = 0, playing = true;
@@ -77,7 +82,10 @@ function draw() {
   const X = x => (x - cx) * sc + cv.width / 2, Y = y => cv.height * 0.55 - (y - cy) * sc;
   g.clearRect(0, 0, cv.width, cv.height);
   const poly = (p, close) => { g.beginPath(); for (let i = 0; i < p.length; i += 2) { const f2 = i ? 'lineTo' : 'moveTo'; g[f2](X(p[i]), Y(p[i+1])); } if (close) g.closePath(); };
-  poly(G, false); g.lineTo(X(G[G.length-2]), cv.height); g.lineTo(X(G[0]), cv.height); g.closePath();
+  // The rut left by the end of the run, behind the track's front.
+  let front = -Infinity; for (let i = 0; i < f.j.length; i += 2) front = Math.max(front, f.j[i]);
+  const S = G.map((v, i) => (i % 2 === 1 && G[i-1] <= front) ? v - R[i] : v);
+  poly(S, false); g.lineTo(X(S[S.length-2]), cv.height); g.lineTo(X(S[0]), cv.height); g.closePath();
   g.fillStyle = '#d8c9a8'; g.fill(); g.strokeStyle = '#8a7650'; g.stroke();
   poly(f.h, true); g.fillStyle = '#7d8b6a'; g.fill(); g.strokeStyle = '#3d4633'; g.lineWidth = 2; g.stroke();
   g.strokeStyle = '#444'; g.lineWidth = 6;

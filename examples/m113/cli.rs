@@ -4,6 +4,7 @@
 use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
+use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 
 /// Drive a planar tracked vehicle (the M113 by default, or the Marder) over
@@ -26,6 +27,11 @@ pub struct Args {
     /// cosine 1 m wide.
     #[arg(long, default_value_t = 0.1, value_name = "M", value_parser = bump_height)]
     pub bump_height: f64,
+    /// The ground: `rigid`, or a soil of Wong's table (Bekker–Wong soft
+    /// soil over the same profile, leaving a rut): dry-sand, sandy-loam,
+    /// clay, heavy-clay, lete-sand, snow.
+    #[arg(long, default_value = "rigid", value_name = "GROUND", value_parser = ground)]
+    pub terrain: Ground,
     /// Where the bump's centre is, m, from -10000 to 10000 (the chassis
     /// centroid starts at 0 and the vehicle spans about -2.4 to 2.4).
     #[arg(long, default_value_t = 12.0, value_name = "M", value_parser = position)]
@@ -54,6 +60,33 @@ pub struct Args {
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = folder)]
     pub out: Option<PathBuf>,
+}
+
+/// What the ground is made of.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ground {
+    /// Rigid: the contact laws of the vehicle's declaration.
+    Rigid,
+    /// Soft soil.
+    Soil(SoilPreset),
+}
+
+impl std::fmt::Display for Ground {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Ground::Rigid => f.write_str("rigid ground"),
+            Ground::Soil(soil) => write!(f, "{soil} soil"),
+        }
+    }
+}
+
+fn ground(s: &str) -> Result<Ground, String> {
+    if s == "rigid" {
+        return Ok(Ground::Rigid);
+    }
+    s.parse()
+        .map(Ground::Soil)
+        .map_err(|_| format!("`{s}` is no ground; one of rigid, {}", SoilPreset::names()))
 }
 
 /// The vehicles the main job drives.

@@ -30,10 +30,11 @@ use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::contact::Terrain;
 use trackgen::simulate::{Output, Simulated, StreamFailure, simulate_into};
 use trackgen::vehicle::VehicleSystem;
-use trackgen::vehicles::{m113, marder};
+use trackgen::vehicles::m113::{self, M113};
+use trackgen::vehicles::marder::{self, Marder};
 use trackgen::{ChassisModel, TrackModel};
 
-use cli::{Args, Vehicle};
+use cli::{Args, Ground, Vehicle};
 use outputs::Outputs;
 use scene::Scene;
 
@@ -64,16 +65,21 @@ fn run(args: &Args) -> Result<(), Box<dyn Error>> {
     let assembling = Instant::now();
     match args.vehicle {
         Vehicle::M113 => {
-            let drive = m113::speed_drive(args.speed_profile());
-            let system =
-                m113::system(terrain.clone(), drive).map_err(|e| -> Box<dyn Error> { e })?;
+            let mut config = M113::config(terrain.clone(), M113::speed_drive(args.speed_profile()));
+            if let Ground::Soil(soil) = args.terrain {
+                config.on_soil(soil.soil(), m113::TRACK_WIDTH, m113::SHOE_PITCH)?;
+            }
+            let system = M113::system_with(config)?;
             let about = "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm";
             drive_vehicle(args, system, about, assembling, terrain)
         }
         Vehicle::Marder => {
-            let drive = marder::speed_drive(args.speed_profile());
-            let system =
-                marder::system(terrain.clone(), drive).map_err(|e| -> Box<dyn Error> { e })?;
+            let mut config =
+                Marder::config(terrain.clone(), Marder::speed_drive(args.speed_profile()));
+            if let Ground::Soil(soil) = args.terrain {
+                config.on_soil(soil.soil(), marder::TRACK_WIDTH, marder::SHOE_PITCH)?;
+            }
+            let system = Marder::system_with(config)?;
             let about = "Marder (one side): 77 shoes, sprocket, 6 road wheels on torsion arms, 3 return rollers, idler on a tensioner arm";
             drive_vehicle(args, system, about, assembling, terrain)
         }
@@ -123,7 +129,8 @@ where
         "at once".to_string()
     };
     say!(
-        "settle {:.1} s, then to {:.1} m/s {ramp}; {} {:.2} m {} at x = {:.1} m; {:.1} s in all",
+        "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {} {:.2} m {} at x = {:.1} m; {:.1} s in all",
+        args.terrain,
         args.settle,
         args.speed,
         if args.bump_height < 0.0 {
@@ -170,7 +177,14 @@ where
     let started = report.rows >= 2;
     let written = if started {
         report::print(&outputs.summary, &report, wall, args.tolerance());
-        outputs.draw(&terrain)?
+        let ground = scene::Ground {
+            terrain: terrain.clone(),
+            rut: system
+                .rut()
+                .map(|r| r.profile().collect())
+                .unwrap_or_default(),
+        };
+        outputs.draw(&ground)?
     } else {
         outputs.data_files()
     };

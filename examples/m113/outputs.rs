@@ -6,11 +6,10 @@ use std::error::Error;
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
-use trackgen::contact::Terrain;
 use trackgen::simulate::{ArrowSink, CsvSink, Select, Summary, Tee, Thinned};
 
 use super::nearest::Nearest;
-use super::scene::Scene;
+use super::scene::{Ground, Scene};
 use super::{animation, plots};
 
 /// The columns of `<vehicle>.csv`.
@@ -100,7 +99,7 @@ impl Outputs {
     /// Draws the plots, the frame at the bump and the animation (when the
     /// run has at least two rows); returns the names of every file
     /// written.
-    pub fn draw(&self, terrain: &Terrain) -> Result<Vec<String>, Box<dyn Error>> {
+    pub fn draw(&self, ground: &Ground) -> Result<Vec<String>, Box<dyn Error>> {
         let mut written = self.data_files();
         let kept = self.thinned.results();
         if kept.len() < 2 {
@@ -110,17 +109,14 @@ impl Outputs {
         plots::draw(kept, &self.dir.join(&plot))?;
         written.push(plot);
         if let Some(frame) = self.scene.frames(self.at_bump.results(), 0.0).first() {
-            std::fs::write(
-                self.dir.join("frame.svg"),
-                super::scene::svg(frame, terrain),
-            )?;
+            std::fs::write(self.dir.join("frame.svg"), super::scene::svg(frame, ground))?;
             written.push("frame.svg".to_string());
         }
         let span = kept.times().last().unwrap_or(&0.0) - kept.times()[0];
         let frames = self.scene.frames(kept, (span / MAX_FRAMES).max(0.04));
         std::fs::write(
             self.dir.join("animation.html"),
-            animation::html(&frames, terrain, &self.title),
+            animation::html(&frames, ground, &self.title),
         )?;
         written.push("animation.html".to_string());
         Ok(written)

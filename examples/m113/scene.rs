@@ -162,16 +162,49 @@ fn hull<C: ChassisModel<DC>, const DC: usize>(chassis: &C) -> Vec<Vector2<f64>> 
     .collect()
 }
 
-/// The terrain as a polyline over `[x0, x1]`.
-pub fn ground(terrain: &Terrain, x0: f64, x1: f64) -> Vec<(f64, f64)> {
-    (0..=400)
-        .map(|k| x0 + (x1 - x0) * k as f64 / 400.0)
-        .map(|x| (x, terrain.height(x)))
-        .collect()
+/// The ground a run drove on: its undisturbed profile and, on soft soil,
+/// the rut the track left (plastic sinkage against x, in order of x).
+pub struct Ground {
+    pub terrain: Terrain,
+    pub rut: Vec<(f64, f64)>,
+}
+
+impl Ground {
+    /// The rut's depth at `x`, m: interpolated between the rut's cells, 0
+    /// where the track has not been.
+    pub fn rut_depth(&self, x: f64) -> f64 {
+        let i = self.rut.partition_point(|p| p.0 < x);
+        match (
+            i.checked_sub(1).and_then(|k| self.rut.get(k)),
+            self.rut.get(i),
+        ) {
+            (Some(a), Some(b)) if b.0 - a.0 < 0.1 => a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0),
+            _ => 0.0,
+        }
+    }
+
+    /// Sample points over `[x0, x1]`: the undisturbed surface.
+    pub fn profile(&self, x0: f64, x1: f64) -> Vec<(f64, f64)> {
+        (0..=800)
+            .map(|k| x0 + (x1 - x0) * k as f64 / 800.0)
+            .map(|x| (x, self.terrain.height(x)))
+            .collect()
+    }
+
+    /// The surface over `[x0, x1]` as a vehicle whose track's front is at
+    /// `front` sees it: rutted behind the front (the rut is the one left
+    /// at the end of the run, drawn where the track had passed by then),
+    /// undisturbed ahead.
+    pub fn surface(&self, x0: f64, x1: f64, front: f64) -> Vec<(f64, f64)> {
+        self.profile(x0, x1)
+            .into_iter()
+            .map(|(x, y)| (x, if x <= front { y - self.rut_depth(x) } else { y }))
+            .collect()
+    }
 }
 
 /// A still picture of one frame, SVG.
-pub fn svg(frame: &Frame, terrain: &Terrain) -> String {
+pub fn svg(frame: &Frame, ground: &Ground) -> String {
     // The vehicle (track and hull) with a margin, the ground below it.
     let points_x = frame.joints.iter().chain(&frame.hull).map(|p| p.0);
     let (lo, hi) = points_x.fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
@@ -192,7 +225,8 @@ pub fn svg(frame: &Frame, terrain: &Terrain) -> String {
         (x1 - x0) * scale,
         (y1 - y0) * scale
     );
-    let mut terrain_line = ground(terrain, x0, x1);
+    let front = frame.joints.iter().map(|p| p.0).fold(f64::MIN, f64::max);
+    let mut terrain_line = ground.surface(x0, x1, front);
     terrain_line.push((x1, y0));
     terrain_line.push((x0, y0));
     s += &format!(

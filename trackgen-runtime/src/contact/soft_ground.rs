@@ -382,7 +382,21 @@ impl SoftGround {
     /// integrator must restart.
     pub fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
         let points = shoe.ground_points.len();
-        let patch_length = self.patch_area / self.width;
+        // The rut is written over the widest gap between ground points
+        // along the track (within a shoe, and from one shoe to the next),
+        // so a footprint leaves no ridge of fresh soil between points.
+        let shoe_length = self.patch_area / self.width * points as f64;
+        let mut xs: Vec<f64> = shoe.ground_points.iter().map(|p| p.x).collect();
+        xs.sort_by(f64::total_cmp);
+        let patch_length = xs
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .chain(
+                xs.first()
+                    .zip(xs.last())
+                    .map(|(a, b)| shoe_length - (b - a)),
+            )
+            .fold(self.patch_area / self.width, f64::max);
         if self.patches.len() != links.len() * points {
             self.patches = links
                 .iter()
