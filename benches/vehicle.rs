@@ -6,6 +6,11 @@
 //! And many vehicles: four such runs one after another against the same
 //! four on rayon's pool (all cores), side by side.
 //!
+//! And soft soil against rigid ground: 2 s of the M113 from rest to
+//! 2 m/s on flat rigid ground and on dry sand (Bekker–Wong soil, the rut
+//! pressed after every step), side by side (group `ground`): the cost of
+//! soft soil per simulated second is the ratio.
+//!
 //! `cargo bench --bench vehicle`; numbers in README.md.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
@@ -13,9 +18,10 @@ use rayon::prelude::*;
 use std::hint::black_box;
 use std::time::Duration;
 use trackgen::contact::Terrain;
+use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicles::m113;
+use trackgen::vehicles::m113::{self, M113};
 
 /// The M113 at rest, speed controller on, ready to run.
 fn vehicle_at_rest() -> m113::M113System {
@@ -53,6 +59,43 @@ fn vehicle(c: &mut Criterion) {
         b.iter_batched(
             four,
             |systems| black_box(systems.into_par_iter().map(half_second).count()),
+            BatchSize::LargeInput,
+        )
+    });
+    group.finish();
+
+    let mut group = c.benchmark_group("ground");
+    let driving = |soil: Option<SoilPreset>| {
+        move || {
+            let drive = M113::speed_drive(|t| 2.0 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
+            let mut config = M113::config(Terrain::Flat { height: 0.0 }, drive);
+            if let Some(soil) = soil {
+                config
+                    .on_soil(soil.soil(), m113::TRACK_WIDTH, m113::SHOE_PITCH)
+                    .unwrap();
+            }
+            M113::system_with(config).unwrap()
+        }
+    };
+    let two_seconds = |mut system: m113::M113System| {
+        let integrator = Integrator::Bs23 {
+            rtol: 1e-3,
+            atol: 1e-3,
+            max_step: 0.01,
+        };
+        simulate(&mut system, integrator, 0.0, 2.0, Output::Every(0.01)).unwrap()
+    };
+    group.bench_function("rigid", |b| {
+        b.iter_batched(
+            driving(None),
+            |s| black_box(two_seconds(s)),
+            BatchSize::LargeInput,
+        )
+    });
+    group.bench_function("dry_sand", |b| {
+        b.iter_batched(
+            driving(Some(SoilPreset::DrySand)),
+            |s| black_box(two_seconds(s)),
             BatchSize::LargeInput,
         )
     });

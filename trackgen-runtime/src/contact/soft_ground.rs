@@ -191,6 +191,22 @@ pub struct SoftGround {
     /// point bears on it (link by link, the shoe's points in order; empty
     /// until the first [`press`](Self::press)).
     patches: Vec<Patch>,
+    /// The length of rut a point's patch is written over, m.
+    imprint_length: f64,
+}
+
+/// The length of rut a ground point's patch is written over: the widest
+/// gap between ground points along the track (within a shoe, and from one
+/// shoe to the next, `pitch` apart), and at least the patch's own length
+/// `patch`, so a footprint leaves no ridge of fresh soil between points.
+fn imprint_length(shoe: &ShoeGeometry, patch: f64) -> f64 {
+    let pitch = patch * shoe.ground_points.len() as f64;
+    let mut xs: Vec<f64> = shoe.ground_points.iter().map(|p| p.x).collect();
+    xs.sort_by(f64::total_cmp);
+    xs.windows(2)
+        .map(|w| w[1] - w[0])
+        .chain(xs.first().zip(xs.last()).map(|(a, b)| pitch - (b - a)))
+        .fold(patch, f64::max)
 }
 
 /// The soil under one shoe ground point: its memory, carried with the
@@ -231,6 +247,7 @@ impl SoftGround {
             patch_area: width * shoe_length / shoe.ground_points.len().max(1) as f64,
             rut: Rut::new(DEFAULT_RUT_CELL),
             patches: Vec::new(),
+            imprint_length: 0.0,
         })
     }
 
@@ -310,6 +327,7 @@ impl SoftGround {
                 (lo.min(l.position.x), hi.max(l.position.x))
             });
         let highest = self.terrain.max_height(low - extent, high + extent);
+        let tan_phi = self.soil.tan_phi();
         for (i, link) in links.iter().enumerate() {
             if link.position.y - extent > highest {
                 shear_rate[i * points..(i + 1) * points].fill(0.0);
@@ -339,7 +357,9 @@ impl SoftGround {
                 // τ(|j|) against the displacement: 1 − e^{−|j|/K} ~ |j|/K
                 // near 0, so `τ sign(j)` is smooth through j = 0.
                 let j = shear[slot];
-                let tau = self.soil.shear_stress(p, j);
+                // Janosi–Hanamoto (`Soil::shear_stress`), tan φ once.
+                let tau = (self.soil.cohesion + p * tan_phi)
+                    * -(-j.abs() / self.soil.shear_modulus).exp_m1();
                 let tangential = -tau * self.patch_area * j.signum();
                 let force = g * (p * self.patch_area) + t * tangential;
                 loads[i] = loads[i].plus(BodyLoad::force_at(force, arm));
@@ -382,22 +402,8 @@ impl SoftGround {
     /// integrator must restart.
     pub fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
         let points = shoe.ground_points.len();
-        // The rut is written over the widest gap between ground points
-        // along the track (within a shoe, and from one shoe to the next),
-        // so a footprint leaves no ridge of fresh soil between points.
-        let shoe_length = self.patch_area / self.width * points as f64;
-        let mut xs: Vec<f64> = shoe.ground_points.iter().map(|p| p.x).collect();
-        xs.sort_by(f64::total_cmp);
-        let patch_length = xs
-            .windows(2)
-            .map(|w| w[1] - w[0])
-            .chain(
-                xs.first()
-                    .zip(xs.last())
-                    .map(|(a, b)| shoe_length - (b - a)),
-            )
-            .fold(self.patch_area / self.width, f64::max);
         if self.patches.len() != links.len() * points {
+            self.imprint_length = imprint_length(shoe, self.patch_area / self.width);
             self.patches = links
                 .iter()
                 .flat_map(|l| shoe.ground_points.iter().map(|g| l.point(*g).x))
@@ -415,16 +421,19 @@ impl SoftGround {
                 let z = self.terrain.height(point.x) - point.y;
                 let patch = &mut self.patches[slot];
                 if patch.memory.pressure(&self.soil, z, self.width) > 0.0 {
-                    patch.memory = patch.memory.pressed_to(&self.soil, z, self.width);
+                    let pressed = patch.memory.pressed_to(&self.soil, z, self.width);
                     patch.loaded = true;
-                    self.rut
-                        .imprint(point.x, patch_length, patch.memory, &self.soil);
+                    if pressed != patch.memory {
+                        patch.memory = pressed;
+                        self.rut
+                            .imprint(point.x, self.imprint_length, pressed, &self.soil);
+                    }
                     continue;
                 }
                 if patch.loaded {
                     patch.loaded = false;
                     self.rut
-                        .imprint(point.x, patch_length, patch.memory, &self.soil);
+                        .imprint(point.x, self.imprint_length, patch.memory, &self.soil);
                 }
                 // Lifted out of the soil (above the undisturbed surface),
                 // the shoe has left the soil it sheared.
