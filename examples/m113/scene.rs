@@ -170,17 +170,17 @@ pub struct Ground {
 }
 
 impl Ground {
-    /// The rut's depth at `x`, m: interpolated between the rut's cells, 0
-    /// where the track has not been.
+    /// The rut's depth at `x` as drawn, m: the deepest the rut holds
+    /// within 6 cm of `x` (half an M113 shoe's pad), so the ground between
+    /// two shoes' footprints is drawn at their depth rather than as a
+    /// ridge; 0 where the track has not been.
     pub fn rut_depth(&self, x: f64) -> f64 {
-        let i = self.rut.partition_point(|p| p.0 < x);
-        match (
-            i.checked_sub(1).and_then(|k| self.rut.get(k)),
-            self.rut.get(i),
-        ) {
-            (Some(a), Some(b)) if b.0 - a.0 < 0.1 => a.1 + (b.1 - a.1) * (x - a.0) / (b.0 - a.0),
-            _ => 0.0,
-        }
+        let from = self.rut.partition_point(|p| p.0 < x - 0.06);
+        self.rut[from..]
+            .iter()
+            .take_while(|p| p.0 <= x + 0.06)
+            .map(|p| p.1)
+            .fold(0.0, f64::max)
     }
 
     /// Sample points over `[x0, x1]`: the undisturbed surface.

@@ -191,22 +191,6 @@ pub struct SoftGround {
     /// point bears on it (link by link, the shoe's points in order; empty
     /// until the first [`press`](Self::press)).
     patches: Vec<Patch>,
-    /// The length of rut a point's patch is written over, m.
-    imprint_length: f64,
-}
-
-/// The length of rut a ground point's patch is written over: the widest
-/// gap between ground points along the track (within a shoe, and from one
-/// shoe to the next, `pitch` apart), and at least the patch's own length
-/// `patch`, so a footprint leaves no ridge of fresh soil between points.
-fn imprint_length(shoe: &ShoeGeometry, patch: f64) -> f64 {
-    let pitch = patch * shoe.ground_points.len() as f64;
-    let mut xs: Vec<f64> = shoe.ground_points.iter().map(|p| p.x).collect();
-    xs.sort_by(f64::total_cmp);
-    xs.windows(2)
-        .map(|w| w[1] - w[0])
-        .chain(xs.first().zip(xs.last()).map(|(a, b)| pitch - (b - a)))
-        .fold(patch, f64::max)
 }
 
 /// The soil under one shoe ground point: its memory, carried with the
@@ -247,7 +231,6 @@ impl SoftGround {
             patch_area: width * shoe_length / shoe.ground_points.len().max(1) as f64,
             rut: Rut::new(DEFAULT_RUT_CELL),
             patches: Vec::new(),
-            imprint_length: 0.0,
         })
     }
 
@@ -402,8 +385,9 @@ impl SoftGround {
     /// integrator must restart.
     pub fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
         let points = shoe.ground_points.len();
+        // A patch is written over its own footprint along the track.
+        let patch_length = self.patch_area / self.width;
         if self.patches.len() != links.len() * points {
-            self.imprint_length = imprint_length(shoe, self.patch_area / self.width);
             self.patches = links
                 .iter()
                 .flat_map(|l| shoe.ground_points.iter().map(|g| l.point(*g).x))
@@ -425,15 +409,14 @@ impl SoftGround {
                     patch.loaded = true;
                     if pressed != patch.memory {
                         patch.memory = pressed;
-                        self.rut
-                            .imprint(point.x, self.imprint_length, pressed, &self.soil);
+                        self.rut.imprint(point.x, patch_length, pressed, &self.soil);
                     }
                     continue;
                 }
                 if patch.loaded {
                     patch.loaded = false;
                     self.rut
-                        .imprint(point.x, self.imprint_length, patch.memory, &self.soil);
+                        .imprint(point.x, patch_length, patch.memory, &self.soil);
                 }
                 // Lifted out of the soil (above the undisturbed surface),
                 // the shoe has left the soil it sheared.
