@@ -2,7 +2,7 @@
 //! road wheels and return rollers so that the loop closes at t = 0
 //! (spec §4).
 //!
-//! The belt path ([`belt`]) runs counter-clockwise round the wheels'
+//! The belt path runs counter-clockwise round the wheels'
 //! pitch circles: arcs on the wheels it touches, straight spans on the
 //! lower run, and on the upper run spans that sag with one curvature, as a
 //! hanging chain's do, resting on the return rollers. Joints are laid
@@ -296,7 +296,7 @@ pub(crate) fn mean(pitches: &[f64]) -> f64 {
 
 /// Wraps the track of `model` round `wheels` (pitch circles in
 /// counter-clockwise order round the loop), the slack taken up by the
-/// upper run's sag ([`belt`]); link 1 starts where the belt reaches the
+/// upper run's sag (see the module docs); link 1 starts where the belt reaches the
 /// first wheel (of those it touches) in the list.
 ///
 /// Errors: fewer than two wheels, one inside another, a track too short

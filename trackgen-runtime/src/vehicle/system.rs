@@ -109,13 +109,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
     /// [`assemble`](super::assemble)), its loop closed by `closure`.
     ///
     /// A [`SimulationError::Setup`] for a configuration that makes no
-    /// vehicle: a terrain that fails [`Terrain::check`], a drive that
-    /// fails [`Drive::check`], a tension link that is not a link, a
+    /// vehicle: a terrain that fails [`Terrain::check`](crate::contact::Terrain::check), a drive that
+    /// fails [`Drive::check`](super::Drive::check), a tension link that is not a link, a
     /// sprocket of fewer than 3 teeth, configured [`arms`](VehicleConfig::arms)
     /// that are not one per arm of the chassis or have rates that are
     /// negative or not finite. A target speed or torque schedule
     /// that turns NaN or infinite stops the run when the drive meets it
-    /// ([`Drive::checked_torque`]).
+    /// ([`Drive::checked_torque`](super::Drive::checked_torque)).
     pub fn new(
         track: T,
         chassis: C,
