@@ -1,6 +1,7 @@
 //! Declare your own vehicle: a light tracked carrier (0.12 m shoes, a
 //! 9-tooth front sprocket, four sprung road wheels, two return rollers
-//! carrying the upper run, a fixed rear idler placed for 55 links),
+//! carrying the upper run, a rear idler on a tensioner arm that takes up
+//! the track's slack),
 //! declared in one `model!` block and run with one call, writing
 //! `out/custom_vehicle/carrier.csv`.
 //!
@@ -32,7 +33,10 @@ trackgen::model! {
                   stiffness: 1.5e4, damping: 300.0, preload: 1.2e3 },
         },
         roller top[2] { at: [(-0.75, 0.12), (-1.75, 0.12)], mass: 5.0, inertia: 0.02, radius: 0.08 },
-        idler rear { at: (-2.6, -0.08), mass: 20.0, inertia: 0.4, radius: 0.18 },
+        idler rear { at: (-2.6, -0.08), mass: 20.0, inertia: 0.4, radius: 0.18,
+            arm { pivot: (-2.6, 0.12), mass: 3.0, inertia: 0.02,        // a tensioner,
+                  stiffness: 2e4, damping: 600.0, preload: -2e3,         // set by the assembly
+                  travel: (-0.6, 0.6) } },                               // within ±0.6 rad
         track {
             links: 55,
             link { mass: 6.0, inertia: 0.01, u1: (-0.06, 0.0), u2: (0.06, 0.0) },
