@@ -678,31 +678,26 @@ fn vehicle_setup_edges_are_accepted() {
     assert_eq!(<M113Track as RecursiveModel<TRACK_DOF>>::BODIES, 64);
 }
 
-trackgen::model! {
-    /// A carrier whose upper run sags freely (no tensioner arm) onto a
-    /// return roller: 52 shoes fit.
-    pub vehicle Sagging52 {
-        chassis { mass: 1000.0, inertia: 500.0 },
-        sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.245, teeth: 10 },
-        road_wheel rw1 { at: (-0.6, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
-        road_wheel rw2 { at: (-2.4, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
-        idler rear { at: (-3.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.25 },
-        roller top { at: (-1.5, 0.05), mass: 10.0, inertia: 0.1, radius: 0.1 },
-        track { links: 52, link { mass: 18.0, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) } },
-    }
-
-    /// The same with 54 shoes: the sag that closes the loop reaches into a
-    /// road wheel.
-    pub vehicle Sagging54 {
-        chassis { mass: 1000.0, inertia: 500.0 },
-        sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.245, teeth: 10 },
-        road_wheel rw1 { at: (-0.6, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
-        road_wheel rw2 { at: (-2.4, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
-        idler rear { at: (-3.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.25 },
-        roller top { at: (-1.5, 0.05), mass: 10.0, inertia: 0.1, radius: 0.1 },
-        track { links: 54, link { mass: 18.0, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) } },
-    }
+/// Declares a carrier whose upper run sags freely (no tensioner arm)
+/// onto a return roller, with `$n` shoes.
+macro_rules! sagging {
+    ($($name:ident $n:literal),* $(,)?) => { trackgen::model! { $(
+        /// A carrier with a freely sagging upper run over a roller.
+        pub vehicle $name {
+            chassis { mass: 1000.0, inertia: 500.0 },
+            sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.245, teeth: 10 },
+            road_wheel rw1 { at: (-0.6, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
+            road_wheel rw2 { at: (-2.4, -0.35), mass: 30.0, inertia: 2.0, radius: 0.3 },
+            idler rear { at: (-3.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.25 },
+            roller top { at: (-1.5, 0.05), mass: 10.0, inertia: 0.1, radius: 0.1 },
+            track { links: $n, link { mass: 18.0, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) } },
+        }
+    )* } };
 }
+
+// 52 shoes fit; with 54 the sag that closes the loop would reach a road
+// wheel.
+sagging!(Sagging52 52, Sagging54 54);
 
 /// Regression: a wrap whose sagging span passed through a wheel was
 /// returned as a start, and the run began with shoes centimetres inside

@@ -32,17 +32,9 @@ impl GroundContact {
         loads: &mut [BodyLoad],
         mut each: impl FnMut(usize, &ContactForce),
     ) {
-        let extent = shoe.extent();
-        let (low, high) = links
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
-                (lo.min(l.position.x), hi.max(l.position.x))
-            });
-        // A NaN position compares false below and is looked at: its force
-        // is NaN, and the run stops with the cause.
-        let highest = self.terrain.max_height(low - extent, high + extent);
+        let clear = clear_of(&self.terrain, links, shoe);
         for (i, link) in links.iter().enumerate() {
-            if link.position.y - extent > highest {
+            if clear(link) {
                 continue;
             }
             for local in &shoe.ground_points {
@@ -80,4 +72,25 @@ impl GroundContact {
             }
         }
     }
+}
+
+/// A test of whether a link's bounding circle clears the highest point of
+/// `terrain` under the whole track (found once, over the track's extent):
+/// such a link touches nothing, so a contact pass costs one comparison
+/// per link plus the links actually near the ground. A NaN position
+/// compares false and is looked at: its force is NaN, and the run stops
+/// with the cause.
+pub(crate) fn clear_of(
+    terrain: &Terrain,
+    links: &[BodyState],
+    shoe: &ShoeGeometry,
+) -> impl Fn(&BodyState) -> bool {
+    let extent = shoe.extent();
+    let (low, high) = links
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
+            (lo.min(l.position.x), hi.max(l.position.x))
+        });
+    let highest = terrain.max_height(low - extent, high + extent);
+    move |link| link.position.y - extent > highest
 }

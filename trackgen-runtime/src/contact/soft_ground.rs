@@ -300,19 +300,12 @@ impl SoftGround {
         mut each: impl FnMut(usize, &ContactForce),
     ) {
         let points = shoe.ground_points.len();
-        // As on rigid ground: a link whose bounding circle clears the
-        // highest undisturbed surface under the track (ruts lie below it)
-        // touches nothing.
-        let extent = shoe.extent();
-        let (low, high) = links
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
-                (lo.min(l.position.x), hi.max(l.position.x))
-            });
-        let highest = self.terrain.max_height(low - extent, high + extent);
+        // As on rigid ground, against the undisturbed surface (ruts lie
+        // below it).
+        let clear = super::ground::clear_of(&self.terrain, links, shoe);
         let tan_phi = self.soil.tan_phi();
         for (i, link) in links.iter().enumerate() {
-            if link.position.y - extent > highest {
+            if clear(link) {
                 shear_rate[i * points..(i + 1) * points].fill(0.0);
                 continue;
             }
