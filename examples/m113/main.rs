@@ -28,7 +28,7 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::contact::Terrain;
-use trackgen::simulate::{Output, Simulated, StreamFailure, simulate_into};
+use trackgen::simulate::{Background, Output, Simulated, StreamFailure, simulate_into};
 use trackgen::vehicle::VehicleSystem;
 use trackgen::vehicles::m113::{self, M113};
 use trackgen::vehicles::marder::{self, Marder};
@@ -152,17 +152,20 @@ where
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
     )?);
     let started = Instant::now();
-    let mut sink = outputs.sink();
-    let outcome = simulate_into(
-        &mut system,
-        args.integrator(),
-        0.0,
-        args.duration,
-        Output::Every(0.01),
-        &mut sink,
-        &mut |t| bar.set_position((t * 1000.0) as u64),
-    );
-    drop(sink);
+    // The files are written on a second thread while the run goes on.
+    let outcome = std::thread::scope(|scope| {
+        let recorders = &mut outputs.recorders;
+        let mut sink = Background::spawn(scope, move || recorders.sink());
+        simulate_into(
+            &mut system,
+            args.integrator(),
+            0.0,
+            args.duration,
+            Output::Every(0.01),
+            &mut sink,
+            &mut |t| bar.set_position((t * 1000.0) as u64),
+        )
+    });
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
     let (report, failure) = match outcome {
@@ -176,7 +179,7 @@ where
     // A run that stopped at its start has nothing to summarise or draw.
     let started = report.rows >= 2;
     let written = if started {
-        report::print(&outputs.summary, &report, wall, args.tolerance());
+        report::print(&outputs.recorders.summary, &report, wall, args.tolerance());
         let ground = scene::Ground {
             terrain: terrain.clone(),
             rut: system

@@ -38,6 +38,13 @@ pub struct Outputs {
     /// Its title, in the animation.
     title: String,
     scene: Scene,
+    /// What the run feeds: apart from the scene, so that they can be fed
+    /// on another thread.
+    pub recorders: Recorders,
+}
+
+/// The sinks of a run.
+pub struct Recorders {
     all_csv: CsvSink<File>,
     all_arrow: ArrowSink<File>,
     main_csv: Select<CsvSink<File>>,
@@ -46,6 +53,19 @@ pub struct Outputs {
     picture_columns: Vec<String>,
     thinned: Thinned,
     at_bump: Nearest,
+}
+
+impl Recorders {
+    /// Everything a run feeds, as one sink.
+    pub fn sink(&mut self) -> Tee<'_> {
+        let pictures = Tee::new().and(&mut self.thinned).and(&mut self.at_bump);
+        Tee::new()
+            .and(&mut self.all_csv)
+            .and(&mut self.all_arrow)
+            .and(&mut self.main_csv)
+            .and(&mut self.summary)
+            .and(Select::new(self.picture_columns.clone(), pictures))
+    }
 }
 
 impl Outputs {
@@ -70,30 +90,21 @@ impl Outputs {
             name,
             title,
             scene,
-            all_csv: CsvSink::create(dir.join("all.csv"))?,
-            all_arrow: ArrowSink::create(dir.join("all.arrow"))?,
-            main_csv: Select::new(
-                MAIN_COLUMNS,
-                CsvSink::create(dir.join(format!("{name}.csv")))?,
-            ),
-            summary: Summary::new(),
-            picture_columns,
-            thinned: Thinned::new(PICTURE_ROWS),
-            // The chassis centroid a metre short of the bump: the front
-            // wheels on it.
-            at_bump: Nearest::new("x", bump_at - 1.0),
+            recorders: Recorders {
+                all_csv: CsvSink::create(dir.join("all.csv"))?,
+                all_arrow: ArrowSink::create(dir.join("all.arrow"))?,
+                main_csv: Select::new(
+                    MAIN_COLUMNS,
+                    CsvSink::create(dir.join(format!("{name}.csv")))?,
+                ),
+                summary: Summary::new(),
+                picture_columns,
+                thinned: Thinned::new(PICTURE_ROWS),
+                // The chassis centroid a metre short of the bump: the front
+                // wheels on it.
+                at_bump: Nearest::new("x", bump_at - 1.0),
+            },
         })
-    }
-
-    /// Everything a run feeds, as one sink.
-    pub fn sink(&mut self) -> Tee<'_> {
-        let pictures = Tee::new().and(&mut self.thinned).and(&mut self.at_bump);
-        Tee::new()
-            .and(&mut self.all_csv)
-            .and(&mut self.all_arrow)
-            .and(&mut self.main_csv)
-            .and(&mut self.summary)
-            .and(Select::new(self.picture_columns.clone(), pictures))
     }
 
     /// Draws the plots, the frame at the bump and the animation (when the
@@ -101,14 +112,18 @@ impl Outputs {
     /// written.
     pub fn draw(&self, ground: &Ground) -> Result<Vec<String>, Box<dyn Error>> {
         let mut written = self.data_files();
-        let kept = self.thinned.results();
+        let kept = self.recorders.thinned.results();
         if kept.len() < 2 {
             return Ok(written);
         }
         let plot = format!("{}.svg", self.name);
         plots::draw(kept, &self.dir.join(&plot))?;
         written.push(plot);
-        if let Some(frame) = self.scene.frames(self.at_bump.results(), 0.0).first() {
+        if let Some(frame) = self
+            .scene
+            .frames(self.recorders.at_bump.results(), 0.0)
+            .first()
+        {
             std::fs::write(self.dir.join("frame.svg"), super::scene::svg(frame, ground))?;
             written.push("frame.svg".to_string());
         }

@@ -17,8 +17,8 @@ use arrow_ipc::reader::FileReader;
 use nalgebra::DVector;
 use trackgen_runtime::integrate::{Integrator, OdeSystem};
 use trackgen_runtime::simulate::{
-    ArrowSink, CsvSink, Output, Results, RunError, Select, Simulated, SimulationError, Sink,
-    SinkError, Summary, Tee, Thinned, simulate, simulate_into,
+    ArrowSink, Background, CsvSink, Output, Results, RunError, Select, Simulated, SimulationError,
+    Sink, SinkError, Summary, Tee, Thinned, simulate, simulate_into,
 };
 
 const OMEGA: f64 = 2.0 * std::f64::consts::PI;
@@ -226,6 +226,99 @@ fn a_failing_run_leaves_flushed_files_with_every_row_before_the_failure() {
     assert_eq!((names, bits(&columns)), (want_names, bits(&want)));
     let message = failure.to_string();
     assert!(message.contains("51 rows written"), "{message}");
+}
+
+#[test]
+fn a_background_sink_writes_what_the_run_gives_it_and_finishes_a_failed_run() {
+    // A finished run: the same CSV and rows as in memory.
+    let reference = in_memory(2.0, None);
+    let (mut csv, mut kept) = (CsvSink::new(Vec::new()), Results::default());
+    let report = std::thread::scope(|scope| {
+        let mut sink = Background::spawn(scope, || Tee::new().and(&mut csv).and(&mut kept));
+        simulate_into(
+            &mut Oscillator { fail_at: None },
+            rk4(),
+            0.0,
+            2.0,
+            Output::Every(INTERVAL),
+            &mut sink,
+            &mut |_| {},
+        )
+    })
+    .expect("the run finishes");
+    assert_eq!(report.rows, reference.len());
+    assert_eq!(csv.into_inner().unwrap(), results_csv(&reference));
+    assert_eq!(results_csv(&kept), results_csv(&reference));
+
+    // A run that fails: every row before the failure is written out.
+    let fail_at = 0.5053;
+    let reference = in_memory(2.0, Some(fail_at));
+    let mut csv = CsvSink::new(Vec::new());
+    let failure = std::thread::scope(|scope| {
+        let mut sink = Background::spawn(scope, || &mut csv);
+        simulate_into(
+            &mut Oscillator {
+                fail_at: Some(fail_at),
+            },
+            rk4(),
+            0.0,
+            2.0,
+            Output::Every(INTERVAL),
+            &mut sink,
+            &mut |_| {},
+        )
+    })
+    .expect_err("a NaN load stops the run");
+    assert!(failure.finish.is_none(), "the file was finished");
+    assert_eq!(failure.report.rows, 51);
+    assert_eq!(csv.into_inner().unwrap(), results_csv(&reference));
+}
+
+#[test]
+fn a_background_sink_that_cannot_write_stops_the_run_soon_after() {
+    // As `a_sink_that_cannot_write_stops_the_run_with_an_io_error`, the
+    // failing writer now on another thread: the run hears of it at a later
+    // row, at most the 256 rows in flight (2.56 s of output) after.
+    let direct = {
+        let mut sink = CsvSink::new(Full { room: 10_000 });
+        simulate_into(
+            &mut Oscillator { fail_at: None },
+            rk4(),
+            0.0,
+            100.0,
+            Output::Every(INTERVAL),
+            &mut sink,
+            &mut |_| {},
+        )
+        .expect_err("the disk is full")
+    };
+    let RunError::Sink { t: direct_t, .. } = direct.error else {
+        panic!("a sink error, got {}", direct.error);
+    };
+    let failure = std::thread::scope(|scope| {
+        let mut sink = Background::spawn(scope, || CsvSink::new(Full { room: 10_000 }));
+        simulate_into(
+            &mut Oscillator { fail_at: None },
+            rk4(),
+            0.0,
+            100.0,
+            Output::Every(INTERVAL),
+            &mut sink,
+            &mut |_| {},
+        )
+    })
+    .expect_err("the disk is full");
+    let RunError::Sink { t, source } = &failure.error else {
+        panic!("a sink error, got {}", failure.error);
+    };
+    assert!(
+        matches!(source, SinkError::Io { source, .. } if source.kind() == io::ErrorKind::StorageFull),
+        "{source}"
+    );
+    assert!(
+        *t >= direct_t && *t <= direct_t + 257.0 * INTERVAL + 1e-9,
+        "heard of at t = {t}, the writer failed at row t = {direct_t}"
+    );
 }
 
 /// A writer that takes `room` bytes, then fails as a full disk does.

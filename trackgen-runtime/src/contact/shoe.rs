@@ -47,12 +47,22 @@ impl ShoeGeometry {
 
     /// The largest distance of any feature from the link centroid, m: the
     /// radius of the link's bounding circle for culling.
+    /// Every contact pair culls with it at every evaluation, so the
+    /// squares are compared and one root taken per kind of feature.
     pub fn extent(&self) -> f64 {
-        self.ground_points
-            .iter()
-            .chain(self.inner_face.iter())
-            .map(|p| p.norm())
-            .chain(self.pins.iter().map(|p| p.norm() + self.pin_radius))
-            .fold(0.0, f64::max)
+        let farthest = |points: &[Vector2<f64>]| {
+            points
+                .iter()
+                .map(|p| p.norm_squared())
+                .fold(0.0, f64::max)
+                .sqrt()
+        };
+        let faces = farthest(&self.ground_points).max(farthest(&self.inner_face));
+        let pins = if self.pins.is_empty() {
+            0.0
+        } else {
+            farthest(&self.pins) + self.pin_radius
+        };
+        faces.max(pins)
     }
 }

@@ -35,7 +35,9 @@ pub use results::{Results, Sample, Switch};
 pub use run::{Simulated, simulate, simulate_with_progress};
 #[cfg(feature = "arrow")]
 pub use sink::ArrowSink;
-pub use sink::{ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned};
+pub use sink::{
+    Background, ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned,
+};
 pub use stream::{RunError, RunReport, StreamFailure, simulate_into};
 pub use track::TrackSystem;
 pub use tree::TreeSystem;

@@ -14,9 +14,12 @@
 //!   (for plots of long runs).
 //! * [`Select`]: some columns only, passed on to another sink.
 //! * [`Tee`]: one run feeding several sinks.
+//! * [`Background`]: another sink, on its own thread, so writing overlaps
+//!   the run.
 
 #[cfg(feature = "arrow")]
 mod arrow_sink;
+mod background;
 mod csv_sink;
 mod select;
 mod summary;
@@ -27,6 +30,7 @@ use std::path::{Path, PathBuf};
 
 #[cfg(feature = "arrow")]
 pub use arrow_sink::ArrowSink;
+pub use background::Background;
 pub use csv_sink::CsvSink;
 pub use select::Select;
 pub use summary::{ColumnSummary, Summary};
