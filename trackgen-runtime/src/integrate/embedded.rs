@@ -100,19 +100,45 @@ fn weighted_rms(
     rtol: f64,
 ) -> f64 {
     let n = v.len().max(1) as f64;
-    let sum: f64 = (0..v.len())
-        .map(|i| {
+    // On slices: nalgebra's own iterators are strided, and cost more here
+    // than the sums.
+    let sum: f64 = v
+        .as_slice()
+        .iter()
+        .zip(y0.as_slice().iter().zip(y1.as_slice()))
+        .map(|(&v, (&y0, &y1))| {
+            let scale = atol + rtol * y0.abs().max(y1.abs());
+            let r = v / scale;
             // A zero is no error whatever the scale: with `atol = 0` a
             // component that is exactly 0 has a scale of 0, and 0/0 = NaN
             // would reject every step down to underflow.
-            if v[i] == 0.0 {
-                return 0.0;
-            }
-            let scale = atol + rtol * y0[i].abs().max(y1[i].abs());
-            (v[i] / scale).powi(2)
+            if v == 0.0 { 0.0 } else { r * r }
         })
         .sum();
     (sum / n).sqrt()
+}
+
+/// `out = base + Σ w_j k_j` (base 0 if `None`) over the nonzero weights, on
+/// plain slices: nalgebra's `copy_from` and `axpy` took a generic
+/// element-by-element path that cost a step as much as a sixth of an
+/// evaluation of the M113.
+fn combine<'a>(
+    out: &mut DVector<f64>,
+    base: Option<&DVector<f64>>,
+    terms: impl IntoIterator<Item = (f64, &'a DVector<f64>)>,
+) {
+    let out = out.as_mut_slice();
+    match base {
+        Some(base) => out.copy_from_slice(base.as_slice()),
+        None => out.fill(0.0),
+    }
+    for (w, k) in terms {
+        if w != 0.0 {
+            for (o, &k) in out.iter_mut().zip(k.as_slice()) {
+                *o += w * k;
+            }
+        }
+    }
 }
 
 const SAFETY: f64 = 0.9;
@@ -248,12 +274,14 @@ impl Embedded {
     ) -> Result<f64, SimulationError> {
         let tableau = self.tableau;
         for s in 1..tableau.c.len() {
-            self.trial.copy_from(y);
-            for (j, &a) in tableau.a[s].iter().enumerate() {
-                if a != 0.0 {
-                    self.trial.axpy(h * a, &self.stages[j], 1.0);
-                }
-            }
+            combine(
+                &mut self.trial,
+                Some(y),
+                tableau.a[s]
+                    .iter()
+                    .zip(&self.stages)
+                    .map(|(&a, k)| (h * a, k)),
+            );
             super::evaluate(
                 system,
                 &mut self.stats,
@@ -262,12 +290,11 @@ impl Embedded {
                 &mut self.stages[s],
             )?;
         }
-        self.error.fill(0.0);
-        for (j, &e) in tableau.e.iter().enumerate() {
-            if e != 0.0 {
-                self.error.axpy(h * e, &self.stages[j], 1.0);
-            }
-        }
+        combine(
+            &mut self.error,
+            None,
+            tableau.e.iter().zip(&self.stages).map(|(&e, k)| (h * e, k)),
+        );
         Ok(self.norm(&self.error, y, &self.trial))
     }
 
@@ -300,10 +327,10 @@ impl Embedded {
                 let [y0, y1, f0, f1] = &mut self.dense[..] else {
                     unreachable!("Hermite output has four coefficients")
                 };
-                y0.copy_from(y);
-                y1.copy_from(&self.trial);
-                f0.copy_from(&self.stages[0]);
-                f1.copy_from(&self.stages[last]);
+                y0.copy_from_slice(y.as_slice());
+                y1.copy_from_slice(self.trial.as_slice());
+                f0.copy_from_slice(self.stages[0].as_slice());
+                f1.copy_from_slice(self.stages[last].as_slice());
             }
         }
     }

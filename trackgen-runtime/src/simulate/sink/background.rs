@@ -7,15 +7,21 @@ use std::thread::{Scope, ScopedJoinHandle};
 use super::{Sink, SinkError};
 use crate::simulate::Switch;
 
-/// Rows handed over but not yet taken: enough that the run never waits on
-/// a sink that keeps up, few enough that memory stays bounded (a row of the
-/// M113's ~300 columns is 2.4 kB) when one does not.
-const ROWS_IN_FLIGHT: usize = 256;
+/// Rows handed over together: waking the worker for every row cost the
+/// run's thread more than the rows' copying (a twentieth of the M113's
+/// main job, in the kernel's wake-ups).
+const BATCH_ROWS: usize = 16;
+
+/// Batches handed over but not yet taken: 256 rows, enough that the run
+/// never waits on a sink that keeps up, few enough that memory stays
+/// bounded (a row of the M113's ~300 columns is 2.4 kB) when one does not.
+const BATCHES_IN_FLIGHT: usize = 16;
 
 /// What the run hands the worker, in order.
 enum Message {
     Begin(Vec<String>),
-    Row(f64, Vec<f64>),
+    /// Rows: their times, and their values one after another.
+    Rows(Vec<f64>, Vec<f64>),
     Switch(Switch),
 }
 
@@ -41,8 +47,9 @@ enum Message {
 /// # }
 /// ```
 ///
-/// Rows are copied and queued (at most 256 in flight; the run waits when
-/// the sink falls that far behind). The sink's errors keep their meaning
+/// Rows are copied and queued in batches of 16 (at most 256 rows in flight
+/// and a batch being filled; the run waits when the sink falls that far
+/// behind). The sink's errors keep their meaning
 /// with a delay: the worker stops at its first error and finishes its
 /// sink, so the rows before it are written out; the run learns of it at
 /// its next `row` (which fails with that error and so stops the run) or at
@@ -51,6 +58,9 @@ enum Message {
 pub struct Background<'scope> {
     /// `None` once the worker has been joined.
     running: Option<Running<'scope>>,
+    /// The batch being filled: times, and values row after row.
+    times: Vec<f64>,
+    values: Vec<f64>,
 }
 
 struct Running<'scope> {
@@ -74,11 +84,24 @@ impl<'scope> Background<'scope> {
         F: FnOnce() -> S + Send + 'scope,
         S: Sink,
     {
-        let (sender, receiver) = sync_channel(ROWS_IN_FLIGHT);
+        let (sender, receiver) = sync_channel(BATCHES_IN_FLIGHT);
         let worker = scope.spawn(move || work(make(), receiver));
         Background {
             running: Some(Running { sender, worker }),
+            times: Vec::with_capacity(BATCH_ROWS),
+            values: Vec::new(),
         }
+    }
+
+    /// Hands over the rows gathered so far, if any.
+    fn flush(&mut self) -> Result<(), SinkError> {
+        if self.times.is_empty() {
+            return Ok(());
+        }
+        let times = std::mem::replace(&mut self.times, Vec::with_capacity(BATCH_ROWS));
+        let capacity = self.values.len();
+        let values = std::mem::replace(&mut self.values, Vec::with_capacity(capacity));
+        self.send(Message::Rows(times, values))
     }
 
     /// Hands `message` to the worker; if it has stopped, its error.
@@ -113,7 +136,14 @@ fn work<S: Sink>(mut sink: S, receiver: Receiver<Message>) -> Result<(), SinkErr
     for message in receiver {
         outcome = match message {
             Message::Begin(columns) => sink.begin(&columns),
-            Message::Row(t, values) => sink.row(t, &values),
+            Message::Rows(times, values) => {
+                // A batch's rows are of one width (see `row`).
+                let width = values.len() / times.len().max(1);
+                times
+                    .iter()
+                    .enumerate()
+                    .try_for_each(|(k, &t)| sink.row(t, &values[k * width..(k + 1) * width]))
+            }
             Message::Switch(switch) => sink.switch(&switch),
         };
         if outcome.is_err() {
@@ -136,23 +166,45 @@ impl Sink for Background<'_> {
     }
 
     fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
-        self.send(Message::Row(t, values.to_vec()))
+        if self.running.is_none() {
+            return Err(stopped());
+        }
+        // Rows of unequal widths go in batches of their own, so the worker
+        // can split them (and its sink refuses them as it would directly).
+        if !self.times.is_empty() && self.values.len() != self.times.len() * values.len() {
+            self.flush()?;
+        }
+        self.times.push(t);
+        self.values.extend_from_slice(values);
+        if self.times.len() == BATCH_ROWS {
+            self.flush()?;
+        }
+        Ok(())
     }
 
     fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
+        self.flush()?;
         self.send(Message::Switch(*switch))
     }
 
     /// Waits for the worker to write every row and finish its sink.
     fn finish(&mut self) -> Result<(), SinkError> {
-        self.join()
+        let flushed = self.flush();
+        let joined = self.join();
+        match flushed {
+            // A failed hand-over already joined and reported the worker.
+            Err(e) => Err(e),
+            Ok(()) => joined,
+        }
     }
 }
 
 impl Drop for Background<'_> {
-    /// A sink dropped unfinished still closes its queue, so the scope's
-    /// join does not wait forever; its outcome is then lost.
+    /// A sink dropped unfinished hands over its last rows and closes its
+    /// queue, so the scope's join does not wait forever; the worker still
+    /// finishes its sink, but the outcome is lost.
     fn drop(&mut self) {
+        let _ = self.flush();
         if let Some(Running { sender, .. }) = self.running.take() {
             drop(sender);
         }
