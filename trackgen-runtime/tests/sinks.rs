@@ -17,8 +17,9 @@ use arrow_ipc::reader::FileReader;
 use nalgebra::DVector;
 use trackgen_runtime::integrate::{Integrator, OdeSystem};
 use trackgen_runtime::simulate::{
-    ArrowSink, Background, CsvSink, Output, Results, RunError, Select, Simulated, SimulationError,
-    Sink, SinkError, Summary, Tee, Thinned, simulate, simulate_into,
+    ArrowSink, Background, CsvSink, Output, Results, RunError, RunReport, Select, Simulated,
+    SimulationError, Sink, SinkError, StreamFailure, Summary, Tee, Thinned, simulate,
+    simulate_into,
 };
 
 const OMEGA: f64 = 2.0 * std::f64::consts::PI;
@@ -72,6 +73,24 @@ fn in_memory(duration: f64, fail_at: Option<f64>) -> Results {
         Ok(r) => r,
         Err(f) => f.results,
     }
+}
+
+/// The oscillator (its derivative NaN after `fail_at`) streamed for
+/// `duration` s into `sink`.
+fn stream(
+    sink: &mut dyn Sink,
+    duration: f64,
+    fail_at: Option<f64>,
+) -> Result<RunReport, StreamFailure> {
+    simulate_into(
+        &mut Oscillator { fail_at },
+        rk4(),
+        0.0,
+        duration,
+        Output::Every(INTERVAL),
+        sink,
+        &mut |_| {},
+    )
 }
 
 fn results_csv(results: &Results) -> Vec<u8> {
@@ -138,16 +157,7 @@ fn streamed_csv_is_the_in_memory_csv_byte_for_byte() {
     let mut csv = CsvSink::new(Vec::new());
     let mut kept = Results::default();
     let mut sinks = Tee::new().and(&mut csv).and(&mut kept);
-    let report = simulate_into(
-        &mut Oscillator { fail_at: None },
-        rk4(),
-        0.0,
-        2.0,
-        Output::Every(INTERVAL),
-        &mut sinks,
-        &mut |_| {},
-    )
-    .expect("the run finishes");
+    let report = stream(&mut sinks, 2.0, None).expect("the run finishes");
     drop(sinks);
     assert_eq!(report.rows, reference.len());
     assert_eq!(report.last_time, Some(2.0));
@@ -166,16 +176,7 @@ fn arrow_file_reads_back_with_the_same_columns_and_values() {
     let reference = in_memory(2.0, None);
     // 201 rows in batches of 64: three full ones and a partial one.
     let mut arrow = ArrowSink::new(Vec::new()).with_batch_rows(64);
-    simulate_into(
-        &mut Oscillator { fail_at: None },
-        rk4(),
-        0.0,
-        2.0,
-        Output::Every(INTERVAL),
-        &mut arrow,
-        &mut |_| {},
-    )
-    .expect("the run finishes");
+    stream(&mut arrow, 2.0, None).expect("the run finishes");
     let (names, columns, batches) = read_arrow(arrow.into_inner().unwrap());
     let (want_names, want) = columns_of(&reference);
     assert_eq!(names, want_names);
@@ -197,18 +198,7 @@ fn a_failing_run_leaves_flushed_files_with_every_row_before_the_failure() {
     let mut csv = CsvSink::create(&csv_path).unwrap();
     let mut arrow = ArrowSink::create(&arrow_path).unwrap().with_batch_rows(16);
     let mut sinks = Tee::new().and(&mut csv).and(&mut arrow);
-    let failure = simulate_into(
-        &mut Oscillator {
-            fail_at: Some(fail_at),
-        },
-        rk4(),
-        0.0,
-        2.0,
-        Output::Every(INTERVAL),
-        &mut sinks,
-        &mut |_| {},
-    )
-    .expect_err("a NaN load stops the run");
+    let failure = stream(&mut sinks, 2.0, Some(fail_at)).expect_err("a NaN load stops the run");
     drop(sinks);
     let RunError::Simulation(SimulationError::NonFinite { t, .. }) = failure.error else {
         panic!("a non-finite failure, got {}", failure.error);
@@ -235,15 +225,7 @@ fn a_background_sink_writes_what_the_run_gives_it_and_finishes_a_failed_run() {
     let (mut csv, mut kept) = (CsvSink::new(Vec::new()), Results::default());
     let report = std::thread::scope(|scope| {
         let mut sink = Background::spawn(scope, || Tee::new().and(&mut csv).and(&mut kept));
-        simulate_into(
-            &mut Oscillator { fail_at: None },
-            rk4(),
-            0.0,
-            2.0,
-            Output::Every(INTERVAL),
-            &mut sink,
-            &mut |_| {},
-        )
+        stream(&mut sink, 2.0, None)
     })
     .expect("the run finishes");
     assert_eq!(report.rows, reference.len());
@@ -256,17 +238,7 @@ fn a_background_sink_writes_what_the_run_gives_it_and_finishes_a_failed_run() {
     let mut csv = CsvSink::new(Vec::new());
     let failure = std::thread::scope(|scope| {
         let mut sink = Background::spawn(scope, || &mut csv);
-        simulate_into(
-            &mut Oscillator {
-                fail_at: Some(fail_at),
-            },
-            rk4(),
-            0.0,
-            2.0,
-            Output::Every(INTERVAL),
-            &mut sink,
-            &mut |_| {},
-        )
+        stream(&mut sink, 2.0, Some(fail_at))
     })
     .expect_err("a NaN load stops the run");
     assert!(failure.finish.is_none(), "the file was finished");
@@ -282,33 +254,24 @@ fn a_background_sink_that_cannot_write_stops_the_run_soon_after() {
     // writing and the batch being filled (288 rows, 2.88 s of output) after.
     let direct = {
         let mut sink = CsvSink::new(Full { room: 10_000 });
-        simulate_into(
-            &mut Oscillator { fail_at: None },
-            rk4(),
-            0.0,
-            100.0,
-            Output::Every(INTERVAL),
-            &mut sink,
-            &mut |_| {},
-        )
-        .expect_err("the disk is full")
+        stream(&mut sink, 100.0, None).expect_err("the disk is full")
     };
-    let RunError::Sink { t: direct_t, .. } = direct.error else {
-        panic!("a sink error, got {}", direct.error);
-    };
+    let direct_t = stopped_by_a_full_disk(&direct);
     let failure = std::thread::scope(|scope| {
         let mut sink = Background::spawn(scope, || CsvSink::new(Full { room: 10_000 }));
-        simulate_into(
-            &mut Oscillator { fail_at: None },
-            rk4(),
-            0.0,
-            100.0,
-            Output::Every(INTERVAL),
-            &mut sink,
-            &mut |_| {},
-        )
+        stream(&mut sink, 100.0, None)
     })
     .expect_err("the disk is full");
+    let t = stopped_by_a_full_disk(&failure);
+    assert!(
+        t >= direct_t && t <= direct_t + 288.0 * INTERVAL + 1e-9,
+        "heard of at t = {t}, the writer failed at row t = {direct_t}"
+    );
+}
+
+/// The time of the row at which `failure` stopped its run, checking it was
+/// a sink's I/O error of a full disk.
+fn stopped_by_a_full_disk(failure: &StreamFailure) -> f64 {
     let RunError::Sink { t, source } = &failure.error else {
         panic!("a sink error, got {}", failure.error);
     };
@@ -316,10 +279,7 @@ fn a_background_sink_that_cannot_write_stops_the_run_soon_after() {
         matches!(source, SinkError::Io { source, .. } if source.kind() == io::ErrorKind::StorageFull),
         "{source}"
     );
-    assert!(
-        *t >= direct_t && *t <= direct_t + 288.0 * INTERVAL + 1e-9,
-        "heard of at t = {t}, the writer failed at row t = {direct_t}"
-    );
+    *t
 }
 
 /// A writer that takes `room` bytes, then fails as a full disk does.
@@ -350,30 +310,12 @@ fn a_sink_that_cannot_write_stops_the_run_with_an_io_error() {
     let mut sinks = Tee::new()
         .and(&mut kept)
         .and(CsvSink::new(Full { room: 10_000 }));
-    let failure = simulate_into(
-        &mut Oscillator { fail_at: None },
-        rk4(),
-        0.0,
-        100.0,
-        Output::Every(INTERVAL),
-        &mut sinks,
-        &mut |_| {},
-    )
-    .expect_err("the disk is full");
+    let failure = stream(&mut sinks, 100.0, None).expect_err("the disk is full");
     drop(sinks);
-    let RunError::Sink { t, source } = &failure.error else {
-        panic!("a sink error, got {}", failure.error);
-    };
-    assert!(
-        matches!(source, SinkError::Io { source, .. } if source.kind() == io::ErrorKind::StorageFull),
-        "{source}"
-    );
-    assert!(
-        *t > 0.5 && *t < 10.0,
-        "stopped at t = {t}, long before 100 s"
-    );
+    let t = stopped_by_a_full_disk(&failure);
+    assert!(t > 0.5 && t < 10.0, "stopped at t = {t}, long before 100 s");
     // The sink before the failing one kept the row it failed on.
-    assert_eq!(kept.times().last().copied(), Some(*t));
+    assert_eq!(kept.times().last().copied(), Some(t));
     assert_eq!(
         failure.report.rows + 1,
         kept.len(),
@@ -385,16 +327,7 @@ fn a_sink_that_cannot_write_stops_the_run_with_an_io_error() {
 fn select_passes_on_named_columns_and_refuses_unknown_ones() {
     let reference = in_memory(0.5, None);
     let mut selected = Select::new(["energy", "x"], Results::default());
-    simulate_into(
-        &mut Oscillator { fail_at: None },
-        rk4(),
-        0.0,
-        0.5,
-        Output::Every(INTERVAL),
-        &mut selected,
-        &mut |_| {},
-    )
-    .unwrap();
+    stream(&mut selected, 0.5, None).unwrap();
     let got = selected.into_inner();
     assert_eq!(got.columns(), ["energy", "x"]);
     assert_eq!(got.times(), reference.times());
@@ -403,16 +336,7 @@ fn select_passes_on_named_columns_and_refuses_unknown_ones() {
 
     let mut csv = CsvSink::new(Vec::new());
     let mut unknown = Select::new(["x", "speed"], &mut csv);
-    let failure = simulate_into(
-        &mut Oscillator { fail_at: None },
-        rk4(),
-        0.0,
-        0.5,
-        Output::Every(INTERVAL),
-        &mut unknown,
-        &mut |_| {},
-    )
-    .expect_err("no column `speed`");
+    let failure = stream(&mut unknown, 0.5, None).expect_err("no column `speed`");
     assert!(
         matches!(&failure.error, RunError::Sink { t: 0.0, source: SinkError::Columns(m) } if m.contains("`speed`")),
         "{}",
