@@ -144,6 +144,51 @@ fn lever(tree: &Tree, b: usize, c: usize) -> TokenStream {
     }
 }
 
+/// What child `c` adds to its parent's sums: its lever `u_c`, and `K_c u_c`
+/// and `β_c = k_c − ω_b² K_c λ_c`, bound.
+struct Child {
+    ux: TokenStream,
+    uy: TokenStream,
+    kux: Lin,
+    kuy: Lin,
+    betax: Lin,
+    betay: Lin,
+}
+
+/// Binds child `c`'s lever from `b` (whose `ω_b²` is `ww`) and its terms
+/// ([`Child`]) into `out`.
+fn child_terms(
+    tree: &Tree,
+    b: usize,
+    c: usize,
+    child: &Up,
+    ww: &TokenStream,
+    out: &mut TokenStream,
+) -> Child {
+    let ctag = &tree.bodies[c].tag;
+    out.extend(lever(tree, b, c));
+    let (ux, uy) = (var_tokens("ux", ctag), var_tokens("uy", ctag));
+    let (lx, ly) = (var_tokens("lx", ctag), var_tokens("ly", ctag));
+    let ku = times(&child.k, (&ux, &uy));
+    let kl = times(&child.k, (&lx, &ly));
+    out.extend(bind("kux", ctag, &ku[0]));
+    out.extend(bind("kuy", ctag, &ku[1]));
+    let beta = [
+        child.bias[0].clone().minus(kl[0].clone().times(ww)),
+        child.bias[1].clone().minus(kl[1].clone().times(ww)),
+    ];
+    out.extend(bind("betax", ctag, &beta[0]));
+    out.extend(bind("betay", ctag, &beta[1]));
+    Child {
+        ux,
+        uy,
+        kux: var("kux", ctag),
+        kuy: var("kuy", ctag),
+        betax: var("betax", ctag),
+        betay: var("betay", ctag),
+    }
+}
+
 /// Body `b`'s pass up: its statements and what they bind.
 fn body_up(tree: &Tree, b: usize, up: &[Option<Up>]) -> (TokenStream, Up) {
     let body = &tree.bodies[b];
@@ -194,23 +239,14 @@ fn body_up(tree: &Tree, b: usize, up: &[Option<Up>]) -> (TokenStream, Up) {
     ];
     for &c in children {
         let child = up[c].as_ref().expect("children go up first");
-        let ctag = &tree.bodies[c].tag;
-        out.extend(lever(tree, b, c));
-        let (ux, uy) = (var_tokens("ux", ctag), var_tokens("uy", ctag));
-        let (lx, ly) = (var_tokens("lx", ctag), var_tokens("ly", ctag));
-        // K_c u_c, K_c λ_c, β_c = k_c − ω_b² K_c λ_c, bound.
-        let ku = times(&child.k, (&ux, &uy));
-        let kl = times(&child.k, (&lx, &ly));
-        out.extend(bind("kux", ctag, &ku[0]));
-        out.extend(bind("kuy", ctag, &ku[1]));
-        let beta = [
-            child.bias[0].clone().minus(kl[0].clone().times(&ww)),
-            child.bias[1].clone().minus(kl[1].clone().times(&ww)),
-        ];
-        out.extend(bind("betax", ctag, &beta[0]));
-        out.extend(bind("betay", ctag, &beta[1]));
-        let (kux, kuy) = (var("kux", ctag), var("kuy", ctag));
-        let (betax, betay) = (var("betax", ctag), var("betay", ctag));
+        let Child {
+            ux,
+            uy,
+            kux,
+            kuy,
+            betax,
+            betay,
+        } = child_terms(tree, b, c, child, &ww, &mut out);
         d = d.plus(kux.clone().times(&ux)).plus(kuy.clone().times(&uy));
         g = [
             g[0].clone().minus(kux.clone()),
@@ -292,22 +328,14 @@ fn root(tree: &Tree, up: &[Option<Up>], rt: &TokenStream) -> TokenStream {
     ];
     for &c in tree.children(0) {
         let child = up[c].as_ref().expect("children go up first");
-        let ctag = &tree.bodies[c].tag;
-        out.extend(lever(tree, 0, c));
-        let (ux, uy) = (var_tokens("ux", ctag), var_tokens("uy", ctag));
-        let (lx, ly) = (var_tokens("lx", ctag), var_tokens("ly", ctag));
-        let ku = times(&child.k, (&ux, &uy));
-        let kl = times(&child.k, (&lx, &ly));
-        out.extend(bind("kux", ctag, &ku[0]));
-        out.extend(bind("kuy", ctag, &ku[1]));
-        let beta = [
-            child.bias[0].clone().minus(kl[0].clone().times(&ww)),
-            child.bias[1].clone().minus(kl[1].clone().times(&ww)),
-        ];
-        out.extend(bind("betax", ctag, &beta[0]));
-        out.extend(bind("betay", ctag, &beta[1]));
-        let (kux, kuy) = (var("kux", ctag), var("kuy", ctag));
-        let (betax, betay) = (var("betax", ctag), var("betay", ctag));
+        let Child {
+            ux,
+            uy,
+            kux,
+            kuy,
+            betax,
+            betay,
+        } = child_terms(tree, 0, c, child, &ww, &mut out);
         a = [
             a[0].clone().plus(child.k[0].clone()),
             a[1].clone().plus(child.k[1].clone()),

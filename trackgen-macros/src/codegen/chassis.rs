@@ -65,15 +65,10 @@ fn chassis_type(
     let dof = tree.len() + 2;
     let n = tree.len();
     let statements = super::articulated::tree_dynamics(&tree);
+    let loads = super::recursive::loads_or_zero(n, &rt);
     let tree_dynamics = super::flat::flatten(quote! {
         ::core::assert_eq!(trig.len(), #n, "one (sin θ, cos θ) per body");
-        let no_loads = [#rt::runtime::BodyLoad::ZERO; #n];
-        let loads: &[#rt::runtime::BodyLoad] = if loads.is_empty() {
-            &no_loads
-        } else {
-            ::core::assert_eq!(loads.len(), #n, "one load per body, or none");
-            loads
-        };
+        #loads
         #statements
         ::core::result::Result::Ok(())
     });

@@ -40,16 +40,7 @@ pub fn recursive_impl(
     let qd = quote!(qd: &#rt::nalgebra::SVector<f64, #dof>);
     let vec_out = quote!(out: &mut [#rt::nalgebra::Vector2<f64>]);
     let check_out = quote!(::core::assert_eq!(out.len(), #n, "one entry per body"););
-    // Missing loads are zero loads; a slice of the wrong length is a bug.
-    let loads = quote! {
-        let no_loads = [#rt::runtime::BodyLoad::ZERO; #n];
-        let loads: &[#rt::runtime::BodyLoad] = if loads.is_empty() {
-            &no_loads
-        } else {
-            ::core::assert_eq!(loads.len(), #n, "one load per body, or none");
-            loads
-        };
-    };
+    let loads = loads_or_zero(n, &rt);
     // Straight-line bodies, thousands of `let`s long for a large track:
     // flat scopes (see `flatten`).
     let body_positions = flatten(quote! { #check_out #trig #positions #store_r });
@@ -183,5 +174,19 @@ pub fn recursive_impl(
                 #potential_energy
             }
         }
+    }
+}
+
+/// `loads` rebound as `n` bodies' loads: missing loads are zero loads; a
+/// slice of another length is a bug.
+pub(super) fn loads_or_zero(n: usize, rt: &TokenStream) -> TokenStream {
+    quote! {
+        let no_loads = [#rt::runtime::BodyLoad::ZERO; #n];
+        let loads: &[#rt::runtime::BodyLoad] = if loads.is_empty() {
+            &no_loads
+        } else {
+            ::core::assert_eq!(loads.len(), #n, "one load per body, or none");
+            loads
+        };
     }
 }

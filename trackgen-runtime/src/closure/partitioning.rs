@@ -208,15 +208,7 @@ impl Partition {
         };
         self.independent = independent_coordinates(D, self.pair);
         let mut trig = vec![(0.0, 1.0); links];
-        model
-            .recover_closure(
-                q,
-                qd,
-                self.pair,
-                self.tolerance,
-                self.options.newton_max_iterations,
-                &mut trig,
-            )
+        self.recover(model, (q, qd), &mut trig)
             .map_err(|(iterations, residual)| {
                 if residual == 0.0 {
                     SimulationError::SingularMatrix {
@@ -233,6 +225,25 @@ impl Partition {
             })?;
         self.guess = [q[2 + self.pair[0]], q[2 + self.pair[1]]];
         Ok(())
+    }
+
+    /// The model's generated closure recovery for the current pair, from
+    /// the dependent angles in `q`: its iterations, or on failure its
+    /// iterations and residual (a residual of 0: `C_d` singular).
+    fn recover<M: TrackModel<D>, const D: usize>(
+        &self,
+        model: &M,
+        (q, qd): (&mut SVector<f64, D>, &mut SVector<f64, D>),
+        trig: &mut [(f64, f64)],
+    ) -> Result<usize, (usize, f64)> {
+        model.recover_closure(
+            q,
+            qd,
+            self.pair,
+            self.tolerance,
+            self.options.newton_max_iterations,
+            trig,
+        )
     }
 
     /// `[z, ż]` of `(q_i, q̇_i)` into `y` (and so `[ż, z̈]` of
@@ -268,15 +279,7 @@ impl Partition {
         let [k, l] = self.pair;
         q[2 + k] = self.guess[0];
         q[2 + l] = self.guess[1];
-        model
-            .recover_closure(
-                q,
-                qd,
-                self.pair,
-                self.tolerance,
-                self.options.newton_max_iterations,
-                trig,
-            )
+        self.recover(model, (q, qd), trig)
             .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
                 t,
                 iterations,
