@@ -881,7 +881,7 @@ fn pin_on_tooth_tip_and_outside() {
 /// `nearest_gap` for a sprocket at (1, −0.5) turned by 2 rad: a point at
 /// angle 2 + fβ belongs to the gap at 2 + (k + ½)β, the half-integer
 /// nearest to f; and, for random points and turns, it is the nearest of
-/// all ten gap centres.
+/// all the gap centres, for sprockets of 3 to 100 teeth.
 #[test]
 fn nearest_gap_by_hand_and_by_search() {
     let profile = ToothProfile::m113();
@@ -908,26 +908,38 @@ fn nearest_gap_by_hand_and_by_search() {
             1e-12,
         );
     }
+    // Every tooth count: odd and even, up to the most the gap table holds
+    // (60, and 61 whose table is 64 long) and beyond it (62, 100), where
+    // each pin's gap direction is computed instead.
     let mut rng = Lcg::new(31);
-    for _ in 0..500 {
-        let s = at_rest(
-            v(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)),
-            rng.uniform(-20.0, 20.0),
-        );
-        let p = s.position + dir(rng.uniform(-PI, PI)) * rng.uniform(0.05, 0.5);
-        let got = profile.nearest_gap(&s, p);
-        let best = min_of(
-            (0..10)
-                .map(|k| s.position + dir(s.angle + (k as f64 + 0.5) * beta) * 0.3)
-                .map(|g| (g - p).norm()),
-        );
-        close("nearest", (got - p).norm(), best, 1e-12);
-        close(
-            "on the arc-centre circle",
-            (got - s.position).norm(),
-            0.3,
-            1e-12,
-        );
+    for teeth in [3, 7, 10, 15, 60, 61, 62, 100] {
+        let profile = ToothProfile::scaled(teeth, 0.154);
+        let (beta, radius) = (profile.pitch_angle(), profile.arc_centre_radius);
+        for _ in 0..500 {
+            let s = at_rest(
+                v(rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0)),
+                rng.uniform(-20.0, 20.0),
+            );
+            let p = s.position + dir(rng.uniform(-PI, PI)) * rng.uniform(0.05, 2.0 * radius);
+            let got = profile.nearest_gap(&s, p);
+            let best = min_of(
+                (0..teeth)
+                    .map(|k| s.position + dir(s.angle + (k as f64 + 0.5) * beta) * radius)
+                    .map(|g| (g - p).norm()),
+            );
+            close(
+                &format!("nearest of {teeth}"),
+                (got - p).norm(),
+                best,
+                1e-12,
+            );
+            close(
+                "on the arc-centre circle",
+                (got - s.position).norm(),
+                radius,
+                1e-12,
+            );
+        }
     }
 }
 
