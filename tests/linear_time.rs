@@ -256,3 +256,65 @@ fn partitioned_equations_agree_on_the_manifold() {
         assert_close("q̈_i", fast.qdd.as_slice(), dense.as_slice(), 1e-10, 0.0);
     }
 }
+
+/// The generated solve works in this thread's tables
+/// (`dynamics::elimination::with_tables`), which keep the last solve's
+/// numbers: it writes every entry before reading it, so tables left full
+/// of NaN change nothing, bit for bit; and one made while they are taken
+/// (a solve within a solve) gets tables of its own, the same numbers.
+#[test]
+fn solves_share_no_numbers_through_their_tables() {
+    use trackgen::dynamics::elimination::with_tables;
+    fn solve<M: TrackModel<D>, const D: usize>(
+        model: &M,
+        (q, qd): (&SVector<f64, D>, &SVector<f64, D>),
+    ) -> (SVector<f64, D>, Vec<Vector2<f64>>) {
+        let trig: Vec<(f64, f64)> = (0..M::BODIES).map(|i| q[2 + i].sin_cos()).collect();
+        let (mut qdd, mut forces) = (SVector::zeros(), vec![Vector2::zeros(); M::BODIES]);
+        model
+            .linear_time_dynamics(&trig, qd, &[], ClosingJoint::CLOSED, &mut qdd, &mut forces)
+            .unwrap();
+        (qdd, forces)
+    }
+    fn poison() {
+        with_tables::<64, 63, _>(|links, joints| {
+            for link in links.iter_mut() {
+                link.p1 = [f64::NAN; 2];
+                link.p2 = [f64::NAN; 2];
+                link.moment = f64::NAN;
+                link.a2 = [f64::NAN; 3];
+                link.a1 = [f64::NAN; 3];
+                link.coupling = [f64::NAN; 4];
+                link.e2 = [f64::NAN; 2];
+                link.e1 = [f64::NAN; 2];
+            }
+            for joint in joints.iter_mut() {
+                joint.fac = [f64::NAN; 4];
+                joint.yr = [f64::NAN; 2];
+                joint.yz = [f64::NAN; 4];
+            }
+        });
+    }
+    let mut rng = Lcg::new(37);
+    let (q, qd) = rng.state::<6>();
+    let (q64, qd64) = rng.state::<66>();
+    let first = solve(&Hetero4Partitioned, (&q, &qd));
+    let first64 = solve(&Hetero64Partitioned, (&q64, &qd64));
+    assert!(
+        first
+            .0
+            .iter()
+            .chain(first64.0.iter())
+            .all(|v| v.is_finite())
+    );
+    poison();
+    assert_eq!(solve(&Hetero4Partitioned, (&q, &qd)), first, "4 links");
+    poison();
+    assert_eq!(
+        solve(&Hetero64Partitioned, (&q64, &qd64)),
+        first64,
+        "64 links"
+    );
+    let nested = with_tables::<64, 63, _>(|_, _| solve(&Hetero4Partitioned, (&q, &qd)));
+    assert_eq!(nested, first, "a solve within a solve");
+}

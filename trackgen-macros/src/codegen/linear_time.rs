@@ -180,15 +180,15 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
     // b_m = L_nᵀ at joint n − 1).
     let row_j = quote! {
         let k = j + 1;
-        let mut d = [a2[j][0] + a1[k][0], a2[j][1] + a1[k][1], a2[j][2] + a1[k][2]];
-        let mut r = [e2[j][0] - e1[k][0], e2[j][1] - e1[k][1]];
+        let mut d = [links[j].a2[0] + links[k].a1[0], links[j].a2[1] + links[k].a1[1], links[j].a2[2] + links[k].a1[2]];
+        let mut r = [links[j].e2[0] - links[k].e1[0], links[j].e2[1] - links[k].e1[1]];
         let mut z = [0.0f64; 4];
         if CLOSED {
             if j == 0 {
-                z = cl[0];
+                z = links[0].coupling;
             }
             if j + 1 == M {
-                let b = cl[N - 1];
+                let b = links[N - 1].coupling;
                 z = [z[0] + b[0], z[1] + b[2], z[2] + b[1], z[3] + b[3]];
             }
         }
@@ -197,7 +197,7 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
     let constrained = if n >= 3 {
         quote! {
             #rt::runtime::dynamics::ClosingJoint::Constrained { stabilisation } => {
-                solve::<true>(trig, qd, loads, stabilisation, <#v2>::zeros(), qdd, joint_forces)
+                solve::<true>(trig, qd, loads, stabilisation, <#v2>::zeros(), qdd, joint_forces, links, joints)
             }
         }
     } else {
@@ -232,6 +232,8 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 cut: #v2,
                 qdd: &mut #rt::nalgebra::SVector<f64, #dof>,
                 joint_forces: &mut [#v2; #n],
+                links: &mut [#elimination::LinkTerms; #n],
+                joints: &mut [#elimination::JointTerms; #m],
             ) -> ::core::result::Result<(), #rt::runtime::DynamicsError> {
                 const N: usize = #n;
                 const M: usize = #m;
@@ -239,9 +241,6 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 use #elimination::{Sweep, back};
                 // Per link, independent of the others (vectorised): levers,
                 // blocks and right-side terms.
-                let (mut p1, mut p2, mut tq) = ([[0.0f64; 2]; N], [[0.0f64; 2]; N], [0.0f64; N]);
-                let (mut a2, mut a1) = ([[0.0f64; 3]; N], [[0.0f64; 3]; N]);
-                let (mut cl, mut e2, mut e1) = ([[0.0f64; 4]; N], [[0.0f64; 2]; N], [[0.0f64; 2]; N]);
                 let mut force_first = [0.0f64; 2];
                 let loaded = !loads.is_empty();
                 for i in 0..N {
@@ -254,14 +253,16 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                         (0.0, 0.0, 0.0)
                     };
                     #link_terms
-                    p1[i] = [p1x, p1y];
-                    p2[i] = [p2x, p2y];
-                    tq[i] = moment;
-                    a2[i] = link_a2;
-                    a1[i] = link_a1;
-                    cl[i] = link_l;
-                    e2[i] = link_e2;
-                    e1[i] = link_e1;
+                    links[i] = #elimination::LinkTerms {
+                        p1: [p1x, p1y],
+                        p2: [p2x, p2y],
+                        moment,
+                        a2: link_a2,
+                        a1: link_a1,
+                        coupling: link_l,
+                        e2: link_e2,
+                        e1: link_e1,
+                    };
                     if i == 0 {
                         force_first = [fx, fy];
                     }
@@ -270,33 +271,32 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                     // Across the cut: `cut` on link n at ū2ⁿ, reversed on
                     // link 1 at ū1¹; their right-side terms change by
                     // −(p ΔT/J + ΔF/m).
-                    let last = [p2[N - 1][0] * cut.x + p2[N - 1][1] * cut.y, 0.0];
-                    let first = -(p1[0][0] * cut.x + p1[0][1] * cut.y);
-                    let (dj, dm) = (#ij_last * last[0], #im_last);
-                    for (side, p) in [(&mut e2[N - 1], p2[N - 1]), (&mut e1[N - 1], p1[N - 1])] {
-                        side[0] -= p[0] * dj + cut.x * dm;
-                        side[1] -= p[1] * dj + cut.y * dm;
+                    let on_last = links[N - 1].p2[0] * cut.x + links[N - 1].p2[1] * cut.y;
+                    let on_first = -(links[0].p1[0] * cut.x + links[0].p1[1] * cut.y);
+                    {
+                        let link = &mut links[N - 1];
+                        let (dj, dm) = (#ij_last * on_last, #im_last);
+                        for (side, p) in [(&mut link.e2, link.p2), (&mut link.e1, link.p1)] {
+                            side[0] -= p[0] * dj + cut.x * dm;
+                            side[1] -= p[1] * dj + cut.y * dm;
+                        }
+                        link.moment += on_last;
                     }
-                    let (dj, dm) = (#ij_first * first, #im_first_cut);
-                    for (side, p) in [(&mut e2[0], p2[0]), (&mut e1[0], p1[0])] {
-                        side[0] -= p[0] * dj - cut.x * dm;
-                        side[1] -= p[1] * dj - cut.y * dm;
+                    {
+                        let link = &mut links[0];
+                        let (dj, dm) = (#ij_first * on_first, #im_first_cut);
+                        for (side, p) in [(&mut link.e2, link.p2), (&mut link.e1, link.p1)] {
+                            side[0] -= p[0] * dj - cut.x * dm;
+                            side[1] -= p[1] * dj - cut.y * dm;
+                        }
+                        link.moment += on_first;
                     }
-                    tq[N - 1] += last[0];
-                    tq[0] += first;
                     force_first = [force_first[0] - cut.x, force_first[1] - cut.y];
                 }
                 // Twisted elimination ("burn at both ends"): joints 0 … h−1
                 // eliminated downward and M−1 … h+1 upward, interleaved (two
                 // independent chains for the processor to overlap), meeting
-                // at joint h. `fac[l]` is the factor of coupling block l
-                // (between joints l − 1 and l): `Lₗ Dₗ₋₁⁻¹` from above,
-                // `Lₗᵀ Ďₗ⁻¹` from below. `yr[j]`, `yz[j]`: the reduced right
-                // side and the closing joint's two columns, then the
-                // solution.
-                let mut fac = [[0.0f64; 4]; M];
-                let mut yr = [[0.0f64; 2]; M];
-                let mut yz = [[0.0f64; 4]; M];
+                // at joint h (the joints' terms: `JointTerms`).
                 let h = M / 2;
                 // Joints below h (the upward sweep): M − 1 − h ≤ h of them.
                 let below = M.saturating_sub(1 + h);
@@ -307,17 +307,17 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                         let j = t;
                         #row_j
                         if j > 0 {
-                            down.eliminate_into::<CLOSED>(true, cl[j], &mut fac[j], &mut d, &mut r, &mut z);
+                            down.eliminate_into::<CLOSED>(true, links[j].coupling, &mut joints[j].fac, &mut d, &mut r, &mut z);
                         }
-                        down.keep::<CLOSED>(j, d, r, z, &mut yr[j], &mut yz[j])?;
+                        down.keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
                     }
                     if t < below {
                         let j = M - 1 - t;
                         #row_j
                         if j + 1 < M {
-                            up.eliminate_into::<CLOSED>(false, cl[j + 1], &mut fac[j + 1], &mut d, &mut r, &mut z);
+                            up.eliminate_into::<CLOSED>(false, links[j + 1].coupling, &mut joints[j + 1].fac, &mut d, &mut r, &mut z);
                         }
-                        up.keep::<CLOSED>(j, d, r, z, &mut yr[j], &mut yz[j])?;
+                        up.keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
                     }
                 }
                 if M > 0 {
@@ -325,38 +325,38 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                     let j = h;
                     #row_j
                     if j > 0 {
-                        down.eliminate_into::<CLOSED>(true, cl[j], &mut fac[j], &mut d, &mut r, &mut z);
+                        down.eliminate_into::<CLOSED>(true, links[j].coupling, &mut joints[j].fac, &mut d, &mut r, &mut z);
                     }
                     if j + 1 < M {
-                        up.eliminate_into::<CLOSED>(false, cl[j + 1], &mut fac[j + 1], &mut d, &mut r, &mut z);
+                        up.eliminate_into::<CLOSED>(false, links[j + 1].coupling, &mut joints[j + 1].fac, &mut d, &mut r, &mut z);
                     }
-                    Sweep::default().keep::<CLOSED>(j, d, r, z, &mut yr[j], &mut yz[j])?;
+                    Sweep::default().keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
                 }
                 // Outward from the meeting joint, both ways at once:
                 // xⱼ = yⱼ − fac[l]ᵀ x_(neighbour nearer h).
                 for t in 1..=h {
                     let j = h - t;
-                    back::<CLOSED, M>(&fac[j + 1], j, j + 1, &mut yr, &mut yz);
+                    back::<CLOSED, M>(joints, j, j + 1, j + 1);
                     if t <= below {
                         let j = h + t;
-                        back::<CLOSED, M>(&fac[j], j, j - 1, &mut yr, &mut yz);
+                        back::<CLOSED, M>(joints, j, j - 1, j);
                     }
                 }
                 // The closing joint's force: the Schur complement of the
                 // bordered system, (C − Bᵀ Z) y = s − Bᵀ x.
                 let closing = if CLOSED {
-                    let (a, b) = (a2[N - 1], a1[0]);
+                    let (a, b) = (links[N - 1].a2, links[0].a1);
                     let (mut d00, mut d01, mut d11) = (a[0] + b[0], a[1] + b[1], a[2] + b[2]);
                     let mut d10 = d01;
                     let mut r = [
-                        e2[N - 1][0] - e1[0][0] - stabilisation.x,
-                        e2[N - 1][1] - e1[0][1] - stabilisation.y,
+                        links[N - 1].e2[0] - links[0].e1[0] - stabilisation.x,
+                        links[N - 1].e2[1] - links[0].e1[1] - stabilisation.y,
                     ];
                     // b₀ = L₁ at joint 0, b_m = L_nᵀ at joint n − 1, as
                     // 2 × 2 row-major (b[2r + c]).
-                    let last = cl[N - 1];
-                    for (b, at) in [(cl[0], 0usize), ([last[0], last[2], last[1], last[3]], M.saturating_sub(1))] {
-                        let (z, x) = (yz[at], yr[at]);
+                    let last = links[N - 1].coupling;
+                    for (b, at) in [(links[0].coupling, 0usize), ([last[0], last[2], last[1], last[3]], M.saturating_sub(1))] {
+                        let (z, x) = (joints[at].yz, joints[at].yr);
                         d00 -= b[0] * z[0] + b[2] * z[2];
                         d01 -= b[0] * z[1] + b[2] * z[3];
                         d10 -= b[1] * z[0] + b[3] * z[2];
@@ -375,7 +375,7 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 // Each joint's force λⱼ = xⱼ − Zⱼ y, then the accelerations
                 // aᵢ = Wᵢ (Fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁).
                 for j in 0..M {
-                    let (x, z) = (yr[j], yz[j]);
+                    let (x, z) = (joints[j].yr, joints[j].yz);
                     joint_forces[j] = if CLOSED {
                         <#v2>::new(
                             x[0] - z[0] * closing.x - z[1] * closing.y,
@@ -392,8 +392,8 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                     let ahead = acting(i);
                     let behind = acting((i + N - 1) % N);
                     qdd[2 + i] = #ij_i
-                        * (tq[i] + p2[i][0] * ahead.x + p2[i][1] * ahead.y
-                            - p1[i][0] * behind.x - p1[i][1] * behind.y);
+                        * (links[i].moment + links[i].p2[0] * ahead.x + links[i].p2[1] * ahead.y
+                            - links[i].p1[0] * behind.x - links[i].p1[1] * behind.y);
                 }
                 let (ahead, behind) = (acting(0), acting(N - 1));
                 qdd[0] = #im_first * (force_first[0] + ahead.x - behind.x);
@@ -407,12 +407,12 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 loads.is_empty() || loads.len() == #n,
                 "one load per link, or none"
             );
-            match closing {
+            #elimination::with_tables::<#n, #m, _>(|links, joints| match closing {
                 #constrained
                 #rt::runtime::dynamics::ClosingJoint::Cut { force } => {
-                    solve::<false>(trig, qd, loads, <#v2>::zeros(), force, qdd, joint_forces)
+                    solve::<false>(trig, qd, loads, <#v2>::zeros(), force, qdd, joint_forces, links, joints)
                 }
-            }
+            })
         }
     }
 }
