@@ -6,7 +6,7 @@ use std::error::Error;
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
-use trackgen::simulate::{ArrowSink, CsvSink, Select, Summary, Tee, Thinned};
+use trackgen::simulate::{ArrowSink, CsvSink, Results, Select, Summary, Tee, Thinned};
 
 use super::nearest::Nearest;
 use super::scene::{Ground, Scene};
@@ -116,9 +116,28 @@ impl Outputs {
         if kept.len() < 2 {
             return Ok(written);
         }
+        // The plots on a second thread while this one draws the scene:
+        // the two are independent, and the machine has the cores.
         let plot = format!("{}.svg", self.name);
-        plots::draw(kept, &self.dir.join(&plot))?;
+        let plot_path = self.dir.join(&plot);
+        let (plotted, scene) = std::thread::scope(|scope| {
+            let plotting = scope.spawn(|| plots::draw(kept, &plot_path).map_err(|e| e.to_string()));
+            let scene = self.draw_scene(kept, ground);
+            let plotted = plotting
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            (plotted, scene)
+        });
+        plotted?;
         written.push(plot);
+        written.extend(scene?);
+        Ok(written)
+    }
+
+    /// `frame.svg` (at the bump) and `animation.html` (the run), returning
+    /// the names written.
+    fn draw_scene(&self, kept: &Results, ground: &Ground) -> Result<Vec<String>, Box<dyn Error>> {
+        let mut written = Vec::new();
         if let Some(frame) = self
             .scene
             .frames(self.recorders.at_bump.results(), 0.0)
