@@ -76,6 +76,41 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     }
 }
 
+impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
+    /// [`derivative`](OdeSystem::derivative) given every body's
+    /// `(sin θ, cos θ)` at `y`, worked out already by the caller (a
+    /// vehicle's contact pass needs them too).
+    pub(crate) fn derivative_with_trig(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        trig: &[(f64, f64)],
+        dy: &mut [f64],
+    ) -> Result<(), SimulationError> {
+        derivative_at(&self.model, &mut self.loads, trig, t, y, dy)
+    }
+}
+
+/// `ẏ = [q̇_i, q̈_i]` at `y = [q_i, q̇_i]`, with the bodies' trigonometry.
+fn derivative_at<M: RecursiveModel<D>, const D: usize>(
+    model: &M,
+    loads: &mut Loads<D>,
+    trig: &[(f64, f64)],
+    t: f64,
+    y: &[f64],
+    dy: &mut [f64],
+) -> Result<(), SimulationError> {
+    let (q, qd) = TreeSystem::<M, D>::split(y);
+    let loads = loads.fill(t, &q, &qd);
+    let mut qdd = SVector::zeros();
+    model
+        .tree_dynamics(trig, &qd, loads, &mut qdd)
+        .map_err(|source| SimulationError::Dynamics { t, source })?;
+    dy[..D].copy_from_slice(&y[D..2 * D]);
+    dy[D..].copy_from_slice(qdd.as_slice());
+    Ok(())
+}
+
 impl<M: ChassisModel<D>, const D: usize> TreeSystem<M, D> {
     /// A chassis starting at `(q_i, q̇_i)`, its columns named after the
     /// frame (`chassis`), the declared parts (`theta_sprocket`, …) and
@@ -99,16 +134,8 @@ impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
-        let (q, qd) = Self::split(y);
         crate::sin_cos_each(&y[2..D], &mut self.trig);
-        let loads = self.loads.fill(t, &q, &qd);
-        let mut qdd = SVector::zeros();
-        self.model
-            .tree_dynamics(&self.trig, &qd, loads, &mut qdd)
-            .map_err(|source| SimulationError::Dynamics { t, source })?;
-        dy[..D].copy_from_slice(&y[D..2 * D]);
-        dy[D..].copy_from_slice(qdd.as_slice());
-        Ok(())
+        derivative_at(&self.model, &mut self.loads, &self.trig, t, y, dy)
     }
 }
 

@@ -459,7 +459,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         let (dyt, dyc) = self.bodies.split_mut(dy_bodies);
         let (track, chassis) = self.bodies.parts_mut();
         track.derivative_recovered(t, dyt)?;
-        chassis.derivative(t, yc, dyc)?;
+        // The chassis' trigonometry is the contact pass's, at this state.
+        chassis.derivative_with_trig(t, yc, &self.scratch.part_trig, dyc)?;
         let (qt, qdt, _) = self.track().recovered();
         extra[0] = s.integral_rate;
         extra[1] = s.torque * self.sprocket_omega(&qdc);
