@@ -363,9 +363,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
     /// chassis when driving forward, so the joint after the seated run is
     /// on the tight span (the top run, pulled into the sprocket) and the
     /// one before it on the slack span.
+    /// `trig` holds every link's `(sin θ, cos θ)` at `qt`.
     fn sprocket_spans(
         &self,
-        qt: &SVector<f64, DT>,
+        (qt, trig): (&SVector<f64, DT>, &[(f64, f64)]),
         qc: &SVector<f64, DC>,
     ) -> Option<(usize, usize)> {
         let part = &C::PARTS[self.sprocket?];
@@ -377,7 +378,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         let n = T::BODIES;
         let off: Vec<f64> = (0..n)
             .map(|j| {
-                let joint = links[j] + crate::planar::rotate(qt[2 + j], self.forward_joints[j]);
+                let (sin, cos) = trig[j];
+                let u = self.forward_joints[j];
+                let joint = links[j] + Vector2::new(cos * u.x - sin * u.y, sin * u.x + cos * u.y);
                 ((joint - centre).norm() - self.sprocket_radius).abs()
             })
             .collect();
@@ -491,13 +494,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         track.accelerations(t)?;
         let mut all = Vec::with_capacity(T::BODIES);
         track.tensions(&mut all);
-        let (qt, qdt, _) = self.track().recovered();
+        let (qt, qdt, trig) = self.track().recovered();
         let (qt, qdt) = (*qt, *qdt);
+        let spans = self.sprocket_spans((&qt, trig), &qc);
         let tension = all
             .get(self.config.tension_link - 1)
             .copied()
             .unwrap_or(f64::NAN);
-        let (slack, tight) = match self.sprocket_spans(&qt, &qc) {
+        let (slack, tight) = match spans {
             Some((before, after)) => (all.get(before).copied(), all.get(after).copied()),
             None => (None, None),
         };
