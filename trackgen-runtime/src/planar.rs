@@ -5,7 +5,12 @@ use nalgebra::Vector2;
 /// `A(θ) v`, the rotation of a body-fixed vector into the global frame.
 #[inline]
 pub fn rotate(theta: f64, v: Vector2<f64>) -> Vector2<f64> {
-    let (s, c) = theta.sin_cos();
+    rotate_by(theta.sin_cos(), v)
+}
+
+/// `A(θ) v` given `(sin θ, cos θ)`, worked out already.
+#[inline]
+pub(crate) fn rotate_by((s, c): (f64, f64), v: Vector2<f64>) -> Vector2<f64> {
     Vector2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }
 

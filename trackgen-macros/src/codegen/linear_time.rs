@@ -336,10 +336,10 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 // xⱼ = yⱼ − fac[l]ᵀ x_(neighbour nearer h).
                 for t in 1..=h {
                     let j = h - t;
-                    back::<CLOSED, M>(joints, j, j + 1, j + 1);
+                    back::<CLOSED, M>(joints, j, j + 1);
                     if t <= below {
                         let j = h + t;
-                        back::<CLOSED, M>(joints, j, j - 1, j);
+                        back::<CLOSED, M>(joints, j, j - 1);
                     }
                 }
                 // The closing joint's force: the Schur complement of the

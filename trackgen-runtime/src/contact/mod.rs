@@ -72,10 +72,7 @@ impl BodyState {
     /// The global offset `A ū` of body point `ū` from the centroid.
     #[inline]
     pub fn arm(&self, local: Vector2<f64>) -> Vector2<f64> {
-        Vector2::new(
-            self.cos * local.x - self.sin * local.y,
-            self.sin * local.x + self.cos * local.y,
-        )
+        crate::planar::rotate_by((self.sin, self.cos), local)
     }
 
     /// Global position of body point `ū`.

@@ -98,16 +98,20 @@ thread_local! {
 pub fn with_tables<const N: usize, const M: usize, R>(
     solve: impl FnOnce(&mut [LinkTerms; N], &mut [JointTerms; M]) -> R,
 ) -> R {
-    WORKSPACE.with(|kept| match kept.try_borrow_mut() {
-        Ok(mut kept) => {
-            let (links, joints) = kept.tables::<N, M>();
-            solve(links, joints)
-        }
-        Err(_) => {
-            let mut own = Workspace::default();
-            let (links, joints) = own.tables::<N, M>();
-            solve(links, joints)
-        }
+    WORKSPACE.with(|kept| {
+        let (mut borrowed, mut own);
+        let workspace: &mut Workspace = match kept.try_borrow_mut() {
+            Ok(kept) => {
+                borrowed = kept;
+                &mut borrowed
+            }
+            Err(_) => {
+                own = Workspace::default();
+                &mut own
+            }
+        };
+        let (links, joints) = workspace.tables::<N, M>();
+        solve(links, joints)
     })
 }
 
@@ -200,17 +204,12 @@ impl Sweep {
 }
 
 /// The back substitution `xⱼ = yⱼ − facᵀ x_nb` of joint `j` from its
-/// neighbour `nb` (nearer the sweeps' meeting joint) through the factor
-/// of coupling block `l` (the one between them), for the right side and
-/// the closing joint's columns, in place.
+/// neighbour `nb` (nearer the sweeps' meeting joint), through the factor
+/// of the coupling block between them (kept by the later joint of the
+/// two), for the right side and the closing joint's columns, in place.
 #[inline(always)]
-pub fn back<const CLOSED: bool, const M: usize>(
-    joints: &mut [JointTerms; M],
-    j: usize,
-    nb: usize,
-    l: usize,
-) {
-    let [f00, f01, f10, f11] = joints[l].fac;
+pub fn back<const CLOSED: bool, const M: usize>(joints: &mut [JointTerms; M], j: usize, nb: usize) {
+    let [f00, f01, f10, f11] = joints[j.max(nb)].fac;
     let (x, z) = (joints[nb].yr, joints[nb].yz);
     let y = &mut joints[j];
     y.yr[0] -= f00 * x[0] + f10 * x[1];

@@ -74,9 +74,7 @@ impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     pub(crate) fn set_external(&mut self, loads: &[BodyLoad]) {
         self.loads.set_external(loads);
     }
-}
 
-impl<M: RecursiveModel<D>, const D: usize> TreeSystem<M, D> {
     /// [`derivative`](OdeSystem::derivative) given every body's
     /// `(sin θ, cos θ)` at `y`, worked out already by the caller (a
     /// vehicle's contact pass needs them too).

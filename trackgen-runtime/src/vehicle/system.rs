@@ -378,9 +378,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>
         let n = T::BODIES;
         let off: Vec<f64> = (0..n)
             .map(|j| {
-                let (sin, cos) = trig[j];
-                let u = self.forward_joints[j];
-                let joint = links[j] + Vector2::new(cos * u.x - sin * u.y, sin * u.x + cos * u.y);
+                let joint = links[j] + crate::planar::rotate_by(trig[j], self.forward_joints[j]);
                 ((joint - centre).norm() - self.sprocket_radius).abs()
             })
             .collect();
