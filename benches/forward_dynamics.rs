@@ -17,7 +17,8 @@ use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
 use trackgen::TrackModel;
-use trackgen::dynamics::{ClosingJoint, LinearTimeSolver, forward_dynamics};
+use trackgen::ClosingJoint;
+use trackgen::dynamics::{LinearTimeSolver, forward_dynamics};
 use trackgen::nalgebra::{SVector, Vector2};
 
 mod support;

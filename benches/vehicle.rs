@@ -17,6 +17,7 @@ use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use rayon::prelude::*;
 use std::hint::black_box;
 use std::time::Duration;
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
@@ -25,8 +26,8 @@ use trackgen::vehicles::m113::{self, M113};
 
 /// The M113 at rest, speed controller on, ready to run.
 fn vehicle_at_rest() -> m113::M113System {
-    let drive = m113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
-    m113::system(Terrain::Flat { height: 0.0 }, drive).unwrap()
+    let drive = M113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
+    M113::system(Terrain::Flat { height: 0.0 }, drive).unwrap()
 }
 
 fn half_second(mut system: m113::M113System) -> trackgen::simulate::Results {
@@ -69,11 +70,7 @@ fn vehicle(c: &mut Criterion) {
         move || {
             let drive = M113::speed_drive(|t| 2.0 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
             let mut config = M113::config(Terrain::Flat { height: 0.0 }, drive);
-            if let Some(soil) = soil {
-                config
-                    .on_soil(soil.soil(), m113::TRACK_WIDTH, m113::SHOE_PITCH)
-                    .unwrap();
-            }
+            config.soil = soil.map(|s| s.soil());
             M113::system_with(config).unwrap()
         }
     };

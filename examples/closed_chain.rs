@@ -15,7 +15,8 @@ use trackgen::RecursiveModel;
 use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::{SVector, Vector2};
-use trackgen::simulate::{Output, Results, TrackSystem, simulate};
+use trackgen::simulate::{Output, Results, simulate};
+use trackgen::system::TrackSystem;
 
 trackgen::model! {
     /// 32 M113 shoes, free in the plane.

@@ -17,6 +17,7 @@
 use std::error::Error;
 use std::path::PathBuf;
 
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{EnergyBalance, Output, simulate};

@@ -28,6 +28,7 @@ use std::path::PathBuf;
 use clap::Parser;
 use plotters::prelude::*;
 use rayon::prelude::*;
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
@@ -60,9 +61,7 @@ const TRACK_SPEED: f64 = 1.5;
 
 fn run(preset: SoilPreset, drive: Drive, pull: f64, duration: f64) -> Result<Results, String> {
     let mut config = M113::config(Terrain::Flat { height: 0.0 }, drive);
-    config
-        .on_soil(preset.soil(), m113::TRACK_WIDTH, m113::SHOE_PITCH)
-        .map_err(|e| e.to_string())?;
+    config.soil = Some(preset.soil());
     config.drawbar_pull = pull;
     let mut system = M113::system_with(config).map_err(|e| e.to_string())?;
     let integrator = Integrator::Bs23 {
@@ -93,7 +92,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let soil = args.soil.soil();
     let r_p = m113::SHOE_PITCH / (2.0 * (std::f64::consts::PI / 10.0).sin());
     // The vehicle at rest: its weight on the soil and its contact length.
-    let rest = run(args.soil, m113::speed_drive(|_| 0.0), 0.0, 3.0)?;
+    let rest = run(args.soil, M113::speed_drive(|_| 0.0), 0.0, 3.0)?;
     let weight = tail_mean(&rest, "ground_normal", 0.5);
     let length = contact_length(&rest);
     let compaction = soil.compaction_resistance(weight, m113::TRACK_WIDTH, length);
@@ -116,7 +115,7 @@ fn main() -> Result<(), Box<dyn Error>> {
     let rows: Vec<Result<(f64, f64, f64, f64), String>> = loads
         .par_iter()
         .map(|&pull| {
-            let drive = m113::speed_drive(|t| TRACK_SPEED * t.clamp(0.0, 1.0));
+            let drive = M113::speed_drive(|t| TRACK_SPEED * t.clamp(0.0, 1.0));
             let results = run(args.soil, drive, pull, duration)?;
             let speed = tail_mean(&results, "speed", 2.0);
             let track_speed = -tail_mean(&results, "sprocket_speed", 2.0) * r_p;
@@ -163,12 +162,12 @@ fn contact_length(results: &Results) -> f64 {
     let columns = results.columns();
     let start = columns.iter().position(|c| c == "track.x").expect("track");
     let last = results.sample(results.len() - 1);
-    let q = SVector::<f64, { m113::TRACK_DOF }>::from_column_slice(
-        &last.values[start..start + m113::TRACK_DOF],
+    let q = SVector::<f64, { M113::TRACK_DOF }>::from_column_slice(
+        &last.values[start..start + M113::TRACK_DOF],
     );
     let mut centres = vec![Vector2::zeros(); 64];
     m113::M113Track.body_positions(&q, &mut centres);
-    let shoe = M113::shoe();
+    let shoe = M113::geometry().shoe;
     let bearing = centres
         .iter()
         .enumerate()

@@ -29,17 +29,14 @@ use trackgen::contact::{NormalLaw, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DMatrix, DVector};
 use trackgen::simulate::{Output, Simulated, simulate};
-use trackgen::vehicle::{BuildError, VehicleConfig, VehicleSystem};
+use trackgen::vehicle::{VehicleConfig, build};
 use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
-use trackgen::{ChassisModel, TrackModel};
+use trackgen::Vehicle;
 
-/// A vehicle to study: its declared configuration, driven from rest to
-/// 3 m/s, and how to build it from a configuration.
-struct Subject<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> {
-    name: &'static str,
-    config: fn() -> VehicleConfig,
-    build: fn(VehicleConfig) -> Result<VehicleSystem<T, DT, C, DC>, BuildError>,
+/// The vehicle's declared configuration, driven from rest to 3 m/s.
+fn config<V: Vehicle>() -> VehicleConfig {
+    V::config(Terrain::Flat { height: 0.0 }, V::speed_drive(ramp))
 }
 
 fn ramp(t: f64) -> f64 {
@@ -64,14 +61,13 @@ fn damped(law: NormalLaw, factor: f64) -> NormalLaw {
     }
 }
 
-fn run<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
-    subject: &Subject<T, DT, C, DC>,
+fn run<V: Vehicle>(
     label: &str,
     config: VehicleConfig,
     tol: f64,
     duration: f64,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let mut system = (subject.build)(config)?;
+    let mut system = build::<V>(config)?;
     let integrator = Integrator::Bs23 {
         rtol: tol,
         atol: tol,
@@ -116,44 +112,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
     if marder {
-        study(
-            &Subject {
-                name: "Marder",
-                config: || Marder::config(Terrain::Flat { height: 0.0 }, Marder::speed_drive(ramp)),
-                build: Marder::system_with,
-            },
-            quick,
-        )
+        study::<Marder>(quick)
     } else {
-        study(
-            &Subject {
-                name: "M113",
-                config: || M113::config(Terrain::Flat { height: 0.0 }, M113::speed_drive(ramp)),
-                build: M113::system_with,
-            },
-            quick,
-        )
+        study::<M113>(quick)
     }
 }
 
-fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
-    subject: &Subject<T, DT, C, DC>,
-    quick: bool,
-) -> Result<(), Box<dyn std::error::Error>> {
-    let config = subject.config;
+fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
+    let config = config::<V>;
     let (duration, tolerances): (f64, &[f64]) = if quick {
         (0.5, &[1e-3])
     } else {
         (4.0, &[1e-4, 3e-4, 1e-3, 3e-3, 1e-2])
     };
     for &tol in tolerances {
-        run(subject, subject.name, config(), tol, duration)?;
+        run::<V>(V::NAME, config(), tol, duration)?;
     }
     let mut no_rim_friction = config();
     no_rim_friction.wheels.friction.mu = 0.0;
     no_rim_friction.sprocket.friction.mu = 0.0;
-    run(
-        subject,
+    run::<V>(
         "no rim or sprocket friction",
         no_rim_friction,
         1e-3,
@@ -163,13 +141,12 @@ fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
     no_friction.wheels.friction.mu = 0.0;
     no_friction.sprocket.friction.mu = 0.0;
     no_friction.ground.friction.mu = 0.0;
-    run(subject, "no friction at all", no_friction, 1e-3, duration)?;
+    run::<V>("no friction at all", no_friction, 1e-3, duration)?;
     let mut less_damping = config();
     less_damping.ground.normal = damped(less_damping.ground.normal, 0.1);
     less_damping.wheels.normal = damped(less_damping.wheels.normal, 0.1);
     less_damping.sprocket.normal = damped(less_damping.sprocket.normal, 0.1);
-    run(
-        subject,
+    run::<V>(
         "contact damping / 10",
         less_damping,
         1e-3,
@@ -177,7 +154,7 @@ fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
     )?;
 
     // The Jacobian at the end of the default run.
-    let mut system = (subject.build)(config())?;
+    let mut system = build::<V>(config())?;
     let integrator = Integrator::Bs23 {
         rtol: 1e-3,
         atol: 1e-3,
@@ -213,7 +190,7 @@ fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
                     "  J[{0},{0}] = {1:.1} ({2})",
                     i,
                     jacobian[(i, i)],
-                    state_name(DT, DC, i)
+                    state_name::<V>(i)
                 );
             }
         }
@@ -230,7 +207,7 @@ fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
         let top: Vec<String> = parts
             .iter()
             .take(6)
-            .map(|(i, v)| format!("{} {:+.2}", state_name(DT, DC, *i), v))
+            .map(|(i, v)| format!("{} {:+.2}", state_name::<V>(*i), v))
             .collect();
         println!("  mode {:.1}: {}", e.re, top.join(", "));
     }
@@ -249,8 +226,8 @@ fn study<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
 /// A name for state `i`: the track's independent coordinates and rates
 /// (the partitioned track integrates all but a dependent pair), the
 /// chassis' coordinates and rates, then the books' three extra states.
-fn state_name(dt: usize, dc: usize, i: usize) -> String {
-    let dt = dt - 2;
+fn state_name<V: Vehicle>(i: usize) -> String {
+    let (dt, dc) = (V::TRACK_DOF - 2, V::CHASSIS_DOF);
     match i {
         i if i < dt => format!("track z{i}"),
         i if i < 2 * dt => format!("track z{}'", i - dt),

@@ -42,10 +42,11 @@ use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicles::m113;
+use trackgen::vehicles::m113::M113;
 
 /// `println!` that ignores a closed stdout (a log gone, `| head`): the
 /// report is a courtesy, the rows in the CSV are the results.
@@ -162,8 +163,8 @@ fn run(speed: f64, bump: f64) -> Result<Figures, String> {
         width: 1.0,
         height: bump,
     };
-    let drive = m113::speed_drive(move |t: f64| speed * ((t - 0.5) / 1.5).clamp(0.0, 1.0));
-    let mut system = m113::system(terrain, drive).map_err(|e| e.to_string())?;
+    let drive = M113::speed_drive(move |t: f64| speed * ((t - 0.5) / 1.5).clamp(0.0, 1.0));
+    let mut system = M113::system(terrain, drive).map_err(|e| e.to_string())?;
     let duration = 2.0 + 12.0 / speed;
     let results = simulate(
         &mut system,

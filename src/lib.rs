@@ -167,6 +167,5 @@ pub use trackgen_runtime::__private::nalgebra;
 /// Paths the generated code uses. Not public API.
 #[doc(hidden)]
 pub mod __private {
-    pub use trackgen_runtime as runtime;
     pub use trackgen_runtime::__private::*;
 }

@@ -8,11 +8,12 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::DVector;
 use trackgen::simulate::Simulated;
-use trackgen::vehicles::m113;
+use trackgen::vehicles::m113::{self, M113};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;
@@ -47,8 +48,8 @@ fn allocations_in(f: impl FnOnce()) -> usize {
 
 #[test]
 fn evaluations_and_steps_allocate_nothing() {
-    let drive = m113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
-    let mut system = m113::system(
+    let drive = M113::speed_drive(|t| 3.0 * t.clamp(0.0, 1.0));
+    let mut system = M113::system(
         Terrain::Bump {
             centre: 5.0,
             width: 1.0,

@@ -38,15 +38,19 @@
 mod support;
 
 use proptest::prelude::*;
-use trackgen::assembly::{AssemblyError, LinkCounts, PitchCircle, SlackLimit, Wrap, wrap};
-use trackgen::closure::ClosureMethod;
-use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{ShoeGeometry, Terrain};
+use trackgen::assembly::{
+    Assembled, AssemblyError, LinkCounts, PitchCircle, SlackLimit, Touching, Wrap, assemble, wrap,
+};
+use trackgen::contact::Terrain;
+use trackgen::contact::sprocket::pitch_radius;
 use trackgen::nalgebra::{SVector, Vector2};
-use trackgen::simulate::SimulationError;
-use trackgen::vehicle::{Assembled, Drive, VehicleConfig, VehicleSystem, assemble};
-use trackgen::vehicles::m113::{CHASSIS_DOF, M113Chassis, M113Track, TRACK_DOF};
-use trackgen::{RecursiveModel, TrackModel, rotate};
+use trackgen::vehicle::{ConfigError, Drive, Geometry, VehicleConfig, VehicleDynamics, VehicleSystem};
+use trackgen::vehicles::m113::{M113, M113Chassis, M113Track};
+use trackgen::{RecursiveModel, TrackModel, Vehicle, rotate};
+
+/// The M113's coordinate counts.
+const TRACK_DOF: usize = M113::TRACK_DOF;
+const CHASSIS_DOF: usize = M113::CHASSIS_DOF;
 
 /// Declares closed tracks of 0.2 m links.
 macro_rules! rings {
@@ -521,12 +525,12 @@ carriers!(
 macro_rules! place {
     ($vehicle:ident, $track:ident, $chassis:ident) => {{
         let flat = Terrain::Flat { height: 0.0 };
-        let config = $vehicle::config(flat.clone(), Drive::Free);
+        let geometry = $vehicle::geometry();
         let placed = assemble(
             &$track,
             &$chassis,
-            &config.shoe,
-            &config.sprocket.profile,
+            &geometry.shoe,
+            &geometry.sprocket,
             &flat,
             0.0,
             0.001,
@@ -592,89 +596,80 @@ fn a_tensioner_takes_up_the_slack_over_its_travel() {
 // ---------------------------------------------------------------------
 // Vehicle set-up.
 
-fn config(tension_link: usize, teeth: u32) -> VehicleConfig {
-    let mut config = VehicleConfig::m113(Terrain::Flat { height: 0.0 }, Drive::Free);
+fn config(tension_link: usize) -> VehicleConfig {
+    let mut config = M113::config(Terrain::Flat { height: 0.0 }, Drive::Free);
     config.tension_link = tension_link;
-    config.sprocket.profile.teeth = teeth;
     config
 }
 
 fn setup(
     q: (SVector<f64, TRACK_DOF>, SVector<f64, CHASSIS_DOF>),
+    geometry: Geometry,
     config: VehicleConfig,
-) -> Result<f64, SimulationError> {
-    VehicleSystem::new(
-        M113Track,
-        M113Chassis,
-        q.0,
-        q.1,
-        ClosureMethod::Declared,
-        config,
-    )
-    .map(|s| s.sprocket_radius())
+) -> Result<f64, ConfigError> {
+    let start = Assembled {
+        track: q.0,
+        chassis: q.1,
+        tensioner: None,
+    };
+    VehicleSystem::new(M113Track, M113Chassis, &start, geometry, config)
+        .map(|s| s.sprocket_pitch_radius())
 }
 
-/// `tension_link` must name a link (1 to 64), and the sprocket needs 3
-/// teeth: set-up errors, checked before anything else (the coordinates
-/// here are not even a closed loop), with their messages.
+/// `tension_link` must name a link (1 to 64), and a tooth profile must
+/// have the compiled sprocket's teeth: typed errors, checked before
+/// anything else (the coordinates here are not even a closed loop), with
+/// their messages.
 #[test]
 fn vehicle_setup_errors() {
     let zeros = (SVector::zeros(), SVector::zeros());
-    for (link, teeth, message) in [
-        (
-            0,
-            10,
-            "invalid simulation set-up: tension_link 0 is not a link (1 to 64)",
-        ),
-        (
-            65,
-            10,
-            "invalid simulation set-up: tension_link 65 is not a link (1 to 64)",
-        ),
-        (
-            1000,
-            2,
-            "invalid simulation set-up: tension_link 1000 is not a link (1 to 64)",
-        ),
-        (
-            1,
-            2,
-            "invalid simulation set-up: a sprocket needs at least 3 teeth, the profile has 2",
-        ),
-        (
-            64,
-            0,
-            "invalid simulation set-up: a sprocket needs at least 3 teeth, the profile has 0",
-        ),
-    ] {
-        let e = setup(zeros, config(link, teeth)).unwrap_err();
-        assert!(matches!(e, SimulationError::Setup(_)), "{e:?}");
-        assert_eq!(e.to_string(), message);
-        assert_eq!(e.time(), None);
+    for link in [0, 65, 1000] {
+        let e = setup(zeros, M113::geometry(), config(link)).unwrap_err();
+        assert_eq!(e, ConfigError::TensionLink { link, links: 64 });
+        assert_eq!(
+            e.to_string(),
+            format!("tension_link {link} is not a link (1 to 64)")
+        );
     }
+    let mut nine = M113::geometry();
+    nine.sprocket.teeth = 9;
+    let e = setup(zeros, nine, config(1)).unwrap_err();
+    assert_eq!(
+        e,
+        ConfigError::Teeth {
+            profile: 9,
+            declared: 10
+        }
+    );
+    assert_eq!(
+        e.to_string(),
+        "the tooth profile has 9 teeth; the declared sprocket has 10"
+    );
 }
 
-/// The edges are accepted: the last link, and a three-tooth sprocket,
-/// whose pitch radius is `p / (2 sin 60°)`.
+/// The edges are accepted: the last link; the pitch radius is
+/// `p / (2 sin(π/N))` (for three teeth `p / (2 sin 60°)`).
 #[test]
 fn vehicle_setup_edges_are_accepted() {
     let a = assemble(
         &M113Track,
         &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
+        &M113::geometry().shoe,
+        &M113::geometry().sprocket,
         &Terrain::Flat { height: 0.0 },
         0.0,
         0.001,
     )
     .unwrap();
     let q = (a.track, a.chassis);
-    let radius = setup(q, config(64, 3)).unwrap();
+    for link in [1, 64] {
+        let radius = setup(q, M113::geometry(), config(link)).unwrap();
+        let want = 0.154 / (2.0 * (std::f64::consts::PI / 10.0).sin());
+        assert!((radius - want).abs() <= 1e-15 * want, "{radius} vs {want}");
+    }
+    let three = pitch_radius(3, 0.154);
     let want = 0.154 / (2.0 * (std::f64::consts::PI / 3.0).sin());
-    assert!((radius - want).abs() <= 1e-15 * want, "{radius} vs {want}");
-    let radius = setup(q, config(1, 10)).unwrap();
-    let want = 0.154 / (2.0 * (std::f64::consts::PI / 10.0).sin());
-    assert!((radius - want).abs() <= 1e-15 * want, "{radius} vs {want}");
+    assert!((three - want).abs() <= 1e-15 * want, "{three} vs {want}");
     assert_eq!(<M113Track as RecursiveModel<TRACK_DOF>>::BODIES, 64);
 }
 
@@ -710,7 +705,7 @@ sagging!(Sagging52 52, Sagging54 54);
 /// error naming the link and the depth.
 #[test]
 fn a_start_inside_a_wheel_or_the_ground_is_an_error() {
-    let (shoe, profile) = (ShoeGeometry::m113(), ToothProfile::m113());
+    let (shoe, profile) = (M113::geometry().shoe, M113::geometry().sprocket);
     let flat = Terrain::Flat { height: 0.0 };
     assemble(
         &Sagging52Track,
@@ -747,7 +742,7 @@ fn a_start_inside_a_wheel_or_the_ground_is_an_error() {
     let e = assemble(&M113Track, &M113Chassis, &shoe, &profile, &bump, 0.0, 0.001).unwrap_err();
     match &e {
         AssemblyError::StartsInside { what, link, depth } => {
-            assert_eq!(what, "the ground", "{e}");
+            assert_eq!(*what, Touching::Ground, "{e}");
             assert!((1..=64).contains(link), "{e}");
             assert!(*depth > 0.01, "{e}");
         }

@@ -13,7 +13,7 @@
 //!   Lagrange, `Q_i(q, q̇) − Q_i(q, 0) = ∂T/∂q − Ṁ_i q̇`, both sides from
 //!   differences of `kinetic_energy` and of `M_i q̇`;
 //! * at rest, `Q_i = −∂V/∂q_i` for gravity, and with the arms' torques
-//!   (`trackgen::suspension::add_arm_torques`) as loads,
+//!   (`trackgen::vehicle::arms::apply`) as loads,
 //!   `Q_i = −∂(V + arm_energy)/∂q_i`; the torques themselves are
 //!   `−∂(arm_energy)/∂θ` body by body, and in motion the dampers take
 //!   exactly `arm_dissipation` of power.
@@ -48,7 +48,7 @@ mod support;
 
 use support::{Lcg, assert_close};
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
-use trackgen::suspension::{add_arm_torques, arm_dissipation, arm_energy};
+use support::arms::{add_arm_torques, arm_dissipation, arm_energy};
 use trackgen::vehicles::m113::M113Chassis;
 use trackgen::{BodyLoad, ChassisModel, RecursiveModel};
 
@@ -173,7 +173,7 @@ fn check_structure<M: ChassisModel<D>, const D: usize>(m: &M, arms: usize) {
             part.name
         );
         assert!(
-            arm.stiffness > 0.0 && arm.damping > 0.0,
+            arm.spring.stiffness > 0.0 && arm.spring.damping > 0.0,
             "{}: sprung",
             part.name
         );

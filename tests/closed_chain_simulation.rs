@@ -10,11 +10,13 @@ mod support;
 use support::{Lcg, max_abs, max_of, min_of};
 use trackgen::TrackModel;
 use trackgen::closure::{
-    ClosureMethod, MultiplierOptions, PartitionOptions, PenaltyJoint, multipliers,
+    ClosureMethod, MultiplierOptions, PartitionOptions, multipliers,
 };
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
-use trackgen::simulate::{Output, Results, SimulationError, TrackSystem, simulate};
+use trackgen::laws::PenaltyJoint;
+use trackgen::simulate::{Output, Results, SimulationError, simulate};
+use trackgen::system::TrackSystem;
 
 trackgen::model! {
     /// 20 M113 shoes in zero gravity.

@@ -11,7 +11,7 @@
 //!   (mid-face and at its end, at rest and moving): point, normal, force,
 //!   the reaction on the wheel, moment balance; nothing from the wrong side
 //!   or out of reach; loads are added to, not overwritten;
-//! * sprocket (`SprocketContact::apply`, `ToothProfile::m113()`): seated
+//! * sprocket (`SprocketContact::apply`, `M113::geometry().sprocket`): seated
 //!   pins touch nothing, a pin pushed into a flank or across the tip circle
 //!   gets the depth and normal by hand, nothing outside the tip circle;
 //!   `nearest_gap` by hand for a turned sprocket, and against all ten gaps;
@@ -52,16 +52,20 @@
 
 mod support;
 
+use support::contact::{GroundContact, WheelContact, SprocketContact};
+
 use std::f64::consts::PI;
 
 use support::{Lcg, assert_close, max_abs, min_of};
-use trackgen::contact::ground::GroundContact;
-use trackgen::contact::sprocket::{SprocketContact, ToothProfile};
-use trackgen::contact::wheel::WheelContact;
-use trackgen::contact::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
+use trackgen::Vehicle;
+use trackgen::contact::sprocket::ToothProfile;
+use trackgen::contact::{BodyState, ContactForce, Friction, NormalLaw, Terrain};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
 use trackgen::reference::ReferenceModel;
-use trackgen::vehicles::m113::{M113Track, TRACK_DOF};
+use trackgen::vehicles::m113::{M113, M113Track};
+
+/// The M113 track's coordinates.
+const TRACK_DOF: usize = M113::TRACK_DOF;
 use trackgen::{BodyLoad, RecursiveModel};
 
 fn v(x: f64, y: f64) -> Vector2<f64> {
@@ -107,7 +111,7 @@ fn ground_on(ground: &GroundContact, link: &BodyState) -> (Vec<ContactForce>, Bo
     let mut contacts = vec![];
     ground.apply(
         std::slice::from_ref(link),
-        &ShoeGeometry::m113(),
+        &M113::geometry().shoe,
         &mut loads,
         |i, c| {
             assert_eq!(i, 0);
@@ -278,7 +282,7 @@ fn ground_ramp_by_hand_and_by_gradient() {
 /// flat ground gets nothing and its load stays as it was.
 #[test]
 fn ground_culling_never_skips_a_touching_point() {
-    let shoe = ShoeGeometry::m113();
+    let shoe = M113::geometry().shoe;
     let extent = shoe.extent();
     // The inner face's corners are the farthest features.
     close("extent", extent, f64::hypot(0.077, 0.03), 1e-15);
@@ -366,7 +370,7 @@ fn ground_point_by_hand(
 /// without culling, and the contacts are reported for the right links.
 #[test]
 fn ground_matches_an_unculled_evaluation() {
-    let shoe = ShoeGeometry::m113();
+    let shoe = M113::geometry().shoe;
     let mut rng = Lcg::new(21);
     let mut table = vec![(-3.0, 0.0)];
     let mut x = -3.0;
@@ -470,7 +474,7 @@ fn rim_on(
     pair.apply(
         (wheel, radius),
         std::slice::from_ref(link),
-        &ShoeGeometry::m113(),
+        &M113::geometry().shoe,
         &mut loads,
         &mut wheel_load,
         |i, c| {
@@ -684,7 +688,7 @@ fn rim_at_corner_wrong_side_and_out_of_reach() {
 
 fn sprocket_pair(law: NormalLaw) -> SprocketContact {
     SprocketContact {
-        profile: ToothProfile::m113(),
+        profile: M113::geometry().sprocket,
         normal: law,
         friction: Friction { mu: 0.4, slip: 0.5 },
     }
@@ -707,7 +711,7 @@ fn sprocket_on(
     pair.apply(
         sprocket,
         std::slice::from_ref(link),
-        &ShoeGeometry::m113(),
+        &M113::geometry().shoe,
         &mut loads,
         &mut sprocket_load,
         |i, c| {
@@ -884,7 +888,7 @@ fn pin_on_tooth_tip_and_outside() {
 /// all the gap centres, for sprockets of 3 to 100 teeth.
 #[test]
 fn nearest_gap_by_hand_and_by_search() {
-    let profile = ToothProfile::m113();
+    let profile = M113::geometry().sprocket;
     let beta = profile.pitch_angle();
     close("pitch angle", beta, 36f64.to_radians(), 1e-15);
     let centre = v(1.0, -0.5);

@@ -41,12 +41,13 @@
 
 mod support;
 
+use support::contact::{GroundContact, WheelContact, SprocketContact};
+
 use support::{Lcg, max_of, min_of};
+use trackgen::vehicles::m113::M113;
+use trackgen::Vehicle;
 use trackgen::BodyLoad;
-use trackgen::contact::ground::GroundContact;
-use trackgen::contact::sprocket::{SprocketContact, ToothProfile};
-use trackgen::contact::wheel::WheelContact;
-use trackgen::contact::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
+use trackgen::contact::{BodyState, ContactForce, Friction, NormalLaw, Terrain};
 use trackgen::nalgebra::Vector2;
 
 fn rel_close(label: &str, got: f64, want: f64, rel: f64) {
@@ -384,7 +385,7 @@ fn random_body(rng: &mut Lcg, position: Vector2<f64>, angle: f64, speed: f64) ->
 /// inner face by 0.5-5 mm at a random point of it.
 #[test]
 fn wheel_contact_dissipation_balances_the_books() {
-    let shoe = ShoeGeometry::m113();
+    let shoe = M113::geometry().shoe;
     let radius = 0.3;
     let mut rng = Lcg::new(11);
     let mut clipped = 0;
@@ -447,7 +448,7 @@ fn wheel_contact_dissipation_balances_the_books() {
 /// ground point pressed 0.5-5 mm below the profile.
 #[test]
 fn ground_contact_dissipation_balances_the_books() {
-    let shoe = ShoeGeometry::m113();
+    let shoe = M113::geometry().shoe;
     let terrains = [
         Terrain::Flat { height: 0.1 },
         Terrain::Ramp {
@@ -552,8 +553,8 @@ fn ground_contact_dissipation_balances_the_books() {
 /// pushed 0.5-3 mm into the flank at 20-55° from the gap's inward radial.
 #[test]
 fn sprocket_contact_dissipation_balances_the_books() {
-    let shoe = ShoeGeometry::m113();
-    let profile = ToothProfile::m113();
+    let shoe = M113::geometry().shoe;
+    let profile = M113::geometry().sprocket;
     let mut rng = Lcg::new(13);
     let mut checked = 0;
     for law in pair_laws() {
@@ -633,7 +634,7 @@ fn sprocket_contact_dissipation_balances_the_books() {
 /// rate is dissipated (the energy released by the spring is lost), by hand.
 #[test]
 fn separating_contact_does_not_pull_and_dissipates_by_hand() {
-    let shoe = ShoeGeometry::m113();
+    let shoe = M113::geometry().shoe;
     let pair = WheelContact {
         normal: NormalLaw::KelvinVoigt {
             stiffness: 1e7,

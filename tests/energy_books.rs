@@ -15,11 +15,12 @@
 mod support;
 
 use support::vehicle::m113_with;
+use trackgen::Vehicle;
 use trackgen::closure::ClosureMethod;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{EnergyBalance, Output, RESIDUAL_FLOOR, Results, Sink, Summary, simulate};
-use trackgen::vehicles::m113;
+use trackgen::vehicles::m113::M113;
 
 /// Results with the three book columns, one row per `(t, energy, work,
 /// dissipated)`.
@@ -99,7 +100,7 @@ fn the_bound_follows_the_tolerance_with_a_floor() {
 
 #[test]
 fn a_driven_m113_carries_closed_books() {
-    let drive = m113::speed_drive(|t| 2.0 * (t / 1.5).min(1.0));
+    let drive = M113::speed_drive(|t| 2.0 * (t / 1.5).min(1.0));
     let mut vehicle = m113_with(
         Terrain::Flat { height: 0.0 },
         drive,

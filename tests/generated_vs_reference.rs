@@ -190,7 +190,7 @@ fn description_of_a_penalty_track_carries_its_spring() {
     let desc = Hetero10Penalty.description();
     assert_eq!(
         desc.loop_joint.unwrap().closure,
-        trackgen::Closure::Penalty(trackgen::closure::PenaltyJoint {
+        trackgen::Closure::Penalty(trackgen::laws::PenaltyJoint {
             stiffness: 2.5e5,
             damping: 40.0
         })

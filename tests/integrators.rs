@@ -30,10 +30,12 @@
 mod support;
 
 use support::max_of;
-use trackgen::closure::{ClosureMethod, PartitionOptions, PenaltyJoint, multipliers};
+use trackgen::closure::{ClosureError, ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
-use trackgen::simulate::{Output, SimulationError, TrackSystem, TreeSystem, simulate};
+use trackgen::laws::PenaltyJoint;
+use trackgen::simulate::{Output, SimulationError, simulate};
+use trackgen::system::{TrackSystem, TreeSystem};
 use trackgen::{BodyLoad, RecursiveModel};
 
 /// Gravity of the tumbler, declared explicitly: the exact solution uses it.
@@ -404,11 +406,7 @@ fn newton_failure_is_a_typed_error() {
     );
     assert!(matches!(
         result,
-        Err(SimulationError::NewtonFailed {
-            t: 0.0,
-            iterations: 1,
-            ..
-        })
+        Err(ClosureError::StartNotClosed { iterations: 1, .. })
     ));
 }
 
@@ -463,7 +461,7 @@ fn bad_settings_are_setup_errors() {
         let mut system = TrackSystem::new(Loop6, q, qd, ClosureMethod::Declared).unwrap();
         let failure = simulate(&mut system, integrator, t0, t_end, output).unwrap_err();
         assert!(
-            matches!(failure.error, SimulationError::Setup(_)),
+            matches!(failure.error, SimulationError::Settings(_)),
             "{integrator:?}: {}",
             failure.error
         );

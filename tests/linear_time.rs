@@ -27,8 +27,9 @@ mod support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close, max_abs};
-use trackgen::closure::PenaltyJoint;
-use trackgen::dynamics::{ClosingJoint, LinearTimeSolver, forward_dynamics, track_dynamics};
+use trackgen::laws::PenaltyJoint;
+use trackgen::ClosingJoint;
+use trackgen::dynamics::{LinearTimeSolver, forward_dynamics, track_dynamics};
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::{BodyLoad, TrackModel};
 
@@ -264,7 +265,7 @@ fn partitioned_equations_agree_on_the_manifold() {
 /// (a solve within a solve) gets tables of its own, the same numbers.
 #[test]
 fn solves_share_no_numbers_through_their_tables() {
-    use trackgen::dynamics::elimination::with_tables;
+    use trackgen::__private::elimination::with_tables;
     fn solve<M: TrackModel<D>, const D: usize>(
         model: &M,
         (q, qd): (&SVector<f64, D>, &SVector<f64, D>),

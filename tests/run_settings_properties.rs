@@ -56,13 +56,14 @@
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use proptest::prelude::*;
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::DVector;
 use trackgen::simulate::{
     Output, Results, Simulated, SimulationError, SimulationFailure, Switch, simulate,
 };
-use trackgen::vehicles::m113;
+use trackgen::vehicles::m113::M113;
 
 /// Right-hand-side evaluations a case may spend.
 const BUDGET: u64 = 5000;
@@ -82,9 +83,10 @@ impl<S: OdeSystem> OdeSystem for Budgeted<S> {
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         if self.left == 0 {
             self.spent = true;
-            return Err(SimulationError::Setup(
-                "the test's evaluation budget is spent".into(),
-            ));
+            return Err(SimulationError::Stopped {
+                t,
+                reason: "the test's evaluation budget is spent",
+            });
         }
         self.left -= 1;
         self.inner.derivative(t, y, dy)
@@ -230,7 +232,7 @@ fn run(case: &Case) -> Outcome {
         },
     };
     let speed = case.speed;
-    let system = match m113::system(terrain, m113::speed_drive(move |_| speed)) {
+    let system = match M113::system(terrain, M113::speed_drive(move |_| speed)) {
         Ok(s) => s,
         Err(e) => return Outcome::Refused(e.to_string()),
     };
@@ -316,7 +318,7 @@ fn check(case: &Case) -> Result<(), TestCaseError> {
         match &result {
             Err(f) => {
                 prop_assert!(
-                    matches!(f.error, SimulationError::Setup(_)) && f.results.is_empty(),
+                    matches!(f.error, SimulationError::Settings(_)) && f.results.is_empty(),
                     "invalid {what}: expected a set-up error before any sample, got {} with {} samples",
                     f.error,
                     f.results.len()
@@ -364,7 +366,7 @@ fn check(case: &Case) -> Result<(), TestCaseError> {
                 );
             } else {
                 prop_assert!(
-                    !matches!(f.error, SimulationError::Setup(_)),
+                    !matches!(f.error, SimulationError::Settings(_)),
                     "valid settings refused: {message}"
                 );
             }
@@ -592,12 +594,9 @@ proptest! {
 /// of zero wavelength is flat.
 #[test]
 fn terrain_with_a_non_finite_parameter_is_refused() {
-    use trackgen::assembly::AssemblyError;
-    use trackgen::closure::ClosureMethod;
-    use trackgen::contact::ShoeGeometry;
+    use trackgen::assembly::{AssemblyError, assemble};
     use trackgen::contact::TerrainError;
-    use trackgen::contact::sprocket::ToothProfile;
-    use trackgen::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
+    use trackgen::vehicle::{ConfigError, Drive, VehicleSystem};
     use trackgen::vehicles::m113::{M113Chassis, M113Track};
 
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
@@ -687,7 +686,7 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
                 }
                 other => panic!("{terrain:?}: {other}"),
             }
-            let built = m113::system(terrain.clone(), Drive::Free);
+            let built = M113::system(terrain.clone(), Drive::Free);
             let message = built.err().map(|e| e.to_string()).unwrap_or_default();
             assert!(
                 message.contains(kind) && message.contains(parameter),
@@ -696,8 +695,8 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
             let assembled = assemble(
                 &M113Track,
                 &M113Chassis,
-                &ShoeGeometry::m113(),
-                &ToothProfile::m113(),
+                &M113::geometry().shoe,
+                &M113::geometry().sprocket,
                 &terrain,
                 0.0,
                 0.001,
@@ -710,8 +709,8 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
             let a = assemble(
                 &M113Track,
                 &M113Chassis,
-                &ShoeGeometry::m113(),
-                &ToothProfile::m113(),
+                &M113::geometry().shoe,
+                &M113::geometry().sprocket,
                 &Terrain::Flat { height: 0.0 },
                 0.0,
                 0.001,
@@ -720,13 +719,14 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
             let system = VehicleSystem::new(
                 M113Track,
                 M113Chassis,
-                a.track,
-                a.chassis,
-                ClosureMethod::Declared,
-                VehicleConfig::m113(terrain.clone(), Drive::Free),
+                &a,
+                M113::geometry(),
+                M113::config(terrain.clone(), Drive::Free),
             );
             assert!(
-                matches!(&system, Err(SimulationError::Setup(m)) if m.contains(parameter)),
+                matches!(&system, Err(ConfigError::Terrain(TerrainError::NonFiniteParameter {
+                    parameter: p, ..
+                })) if *p == parameter),
                 "{terrain:?}: VehicleSystem::new gives {:?}",
                 system.err()
             );
@@ -770,7 +770,7 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
         assert_eq!(fine.check(), Ok(()), "{fine:?}");
         // The wall of a 1000:1 ramp right ahead of the sprocket is inside
         // the assembled track: a typed refusal of the start, not a panic.
-        match m113::system(fine.clone(), Drive::Free) {
+        match M113::system(fine.clone(), Drive::Free) {
             Ok(_) => {}
             Err(e) => assert!(
                 matches!(fine, Terrain::Ramp { slope, .. } if slope > 10.0)
@@ -815,9 +815,9 @@ fn non_finite_drive_demand_stops_the_run_typed() {
     for integrator in integrators {
         for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
             // From the start: refused at the first row, at t = 0.
-            let mut system = m113::system(
+            let mut system = M113::system(
                 Terrain::Flat { height: 0.0 },
-                m113::speed_drive(move |_| bad),
+                M113::speed_drive(move |_| bad),
             )
             .unwrap();
             let f = simulate(&mut system, integrator, 0.0, 0.05, Output::Every(0.01)).unwrap_err();
@@ -832,7 +832,7 @@ fn non_finite_drive_demand_stops_the_run_typed() {
             // From t = 0.03 on: the rows before are kept.
             let target = move |t: f64| if t < 0.03 { 1.0 } else { bad };
             let mut system =
-                m113::system(Terrain::Flat { height: 0.0 }, m113::speed_drive(target)).unwrap();
+                M113::system(Terrain::Flat { height: 0.0 }, M113::speed_drive(target)).unwrap();
             let f = simulate(&mut system, integrator, 0.0, 0.05, Output::Every(0.01)).unwrap_err();
             assert!(
                 names_the_target(&f.error, "target speed"),
@@ -852,7 +852,7 @@ fn non_finite_drive_demand_stops_the_run_typed() {
         }
     }
     let schedule = Drive::Torque(Box::new(|t| if t < 0.03 { 100.0 } else { f64::NAN }));
-    let mut system = m113::system(Terrain::Flat { height: 0.0 }, schedule).unwrap();
+    let mut system = M113::system(Terrain::Flat { height: 0.0 }, schedule).unwrap();
     let f = simulate(
         &mut system,
         Integrator::Rk4 { step: 1e-3 },
@@ -885,7 +885,7 @@ fn speed_drive_with_a_bad_limit_or_gain_is_refused_not_a_panic() {
         (f64::NAN, 6000.0, 2e4, "gains"),
         (3000.0, f64::INFINITY, 2e4, "gains"),
     ] {
-        let built = m113::system(Terrain::Flat { height: 0.0 }, drive(p, i, limit));
+        let built = M113::system(Terrain::Flat { height: 0.0 }, drive(p, i, limit));
         let message = built.err().map(|e| e.to_string()).unwrap_or_default();
         assert!(
             message.contains(mention),
@@ -897,7 +897,7 @@ fn speed_drive_with_a_bad_limit_or_gain_is_refused_not_a_panic() {
     }
     // An infinite limit is no limit: valid.
     assert!(
-        m113::system(
+        M113::system(
             Terrain::Flat { height: 0.0 },
             drive(3000.0, 6000.0, f64::INFINITY)
         )
@@ -914,32 +914,29 @@ fn speed_drive_with_a_bad_limit_or_gain_is_refused_not_a_panic() {
 /// (nor any tooth in a shoe), and the first row must be finite.
 #[test]
 fn span_tensions_stay_finite_when_the_track_is_off_the_teeth() {
-    use trackgen::closure::ClosureMethod;
-    use trackgen::contact::ShoeGeometry;
-    use trackgen::contact::sprocket::ToothProfile;
-    use trackgen::vehicle::{VehicleConfig, VehicleSystem, assemble};
+    use trackgen::assembly::assemble;
+    use trackgen::vehicle::VehicleSystem;
     use trackgen::vehicles::m113::{M113Chassis, M113Track};
 
     let flat = Terrain::Flat { height: 0.0 };
     let start = assemble(
         &M113Track,
         &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
+        &M113::geometry().shoe,
+        &M113::geometry().sprocket,
         &flat,
         0.0,
         0.001,
     )
     .unwrap();
-    let mut chassis = start.chassis;
-    chassis[1] += 1.0;
+    let mut lifted = start;
+    lifted.chassis[1] += 1.0;
     let mut system = VehicleSystem::new(
         M113Track,
         M113Chassis,
-        start.track,
-        chassis,
-        ClosureMethod::Declared,
-        VehicleConfig::m113(flat, m113::speed_drive(|_| 1.0)),
+        &lifted,
+        M113::geometry(),
+        M113::config(flat, M113::speed_drive(|_| 1.0)),
     )
     .unwrap();
     let results = simulate(
@@ -970,23 +967,21 @@ fn span_tensions_stay_finite_when_the_track_is_off_the_teeth() {
 /// the run.)
 #[test]
 fn a_terrain_that_overflows_the_contact_stops_the_run_typed() {
-    use trackgen::closure::ClosureMethod;
-    use trackgen::contact::ShoeGeometry;
-    use trackgen::contact::sprocket::ToothProfile;
-    use trackgen::vehicle::{VehicleConfig, VehicleSystem, assemble};
+    use trackgen::assembly::assemble;
+    use trackgen::vehicle::VehicleSystem;
     use trackgen::vehicles::m113::{M113Chassis, M113Track};
 
     let terrain = Terrain::Sine {
         amplitude: -0.12631214995546478,
         wavelength: 1e-300,
     };
-    let refused = m113::system(terrain.clone(), m113::speed_drive(|_| 1.0));
+    let refused = M113::system(terrain.clone(), M113::speed_drive(|_| 1.0));
     assert!(refused.is_err_and(|e| e.to_string().contains("inside the ground")));
     let flat = assemble(
         &M113Track,
         &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
+        &M113::geometry().shoe,
+        &M113::geometry().sprocket,
         &Terrain::Flat { height: 0.0 },
         0.0,
         0.001,
@@ -995,10 +990,9 @@ fn a_terrain_that_overflows_the_contact_stops_the_run_typed() {
     let mut system = VehicleSystem::new(
         M113Track,
         M113Chassis,
-        flat.track,
-        flat.chassis,
-        ClosureMethod::Declared,
-        VehicleConfig::m113(terrain, m113::speed_drive(|_| 1.0)),
+        &flat,
+        M113::geometry(),
+        M113::config(terrain, M113::speed_drive(|_| 1.0)),
     )
     .unwrap();
     let f = simulate(

@@ -13,6 +13,8 @@
 
 mod support;
 
+use trackgen::vehicles::m113::M113;
+use trackgen::Vehicle;
 use trackgen::BodyLoad;
 use trackgen::contact::soft_ground::SoftGround;
 use trackgen::contact::soil::{Soil, SoilError, SoilPreset};
@@ -20,11 +22,41 @@ use trackgen::contact::{BodyState, ContactForce, ShoeGeometry, Terrain};
 use trackgen::nalgebra::Vector2;
 
 use support::Lcg;
+use support::contact::soil_forces;
 
 const WIDTH: f64 = 0.38;
 
-fn ground(soil: Soil, terrain: Terrain) -> SoftGround {
-    SoftGround::new(soil, terrain, WIDTH, 0.154, &ShoeGeometry::m113()).unwrap()
+/// The soil over its undisturbed surface.
+struct Ground {
+    soil: SoftGround,
+    terrain: Terrain,
+}
+
+impl std::ops::Deref for Ground {
+    type Target = SoftGround;
+    fn deref(&self) -> &SoftGround {
+        &self.soil
+    }
+}
+
+impl std::ops::DerefMut for Ground {
+    fn deref_mut(&mut self) -> &mut SoftGround {
+        &mut self.soil
+    }
+}
+
+impl Ground {
+    /// [`SoftGround::press`] over this surface.
+    fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
+        self.soil.press(&self.terrain, links, shoe, shear)
+    }
+}
+
+fn ground(soil: Soil, terrain: Terrain) -> Ground {
+    Ground {
+        soil: SoftGround::new(soil, WIDTH, 0.154, &M113::geometry().shoe).unwrap(),
+        terrain,
+    }
 }
 
 /// One M113 shoe, level, its ground points at sinkage `z` at rest.
@@ -32,16 +64,16 @@ fn shoe_at(z: f64, x: f64, velocity: Vector2<f64>, omega: f64, angle: f64) -> Bo
     BodyState::new(Vector2::new(x, 0.03 - z), angle, velocity, omega)
 }
 
-fn evaluate(ground: &SoftGround, shoe: &BodyState, j: [f64; 2]) -> (BodyLoad, Vec<ContactForce>) {
+fn evaluate(ground: &Ground, shoe: &BodyState, j: [f64; 2]) -> (BodyLoad, Vec<ContactForce>) {
     let mut loads = [BodyLoad::ZERO];
     let mut rate = [0.0; 2];
     let mut contacts = Vec::new();
-    ground.apply(
+    soil_forces(
+        (&ground.soil, &ground.terrain),
         std::slice::from_ref(shoe),
-        &ShoeGeometry::m113(),
+        &M113::geometry().shoe,
         &mut loads,
-        &j,
-        &mut rate,
+        (&j, &mut rate),
         |_, c| contacts.push(*c),
     );
     (loads[0], contacts)
@@ -182,7 +214,7 @@ fn the_rut_makes_a_second_pass_sink_less() {
     let soil = SoilPreset::SandyLoam.soil();
     let mut g = ground(soil, Terrain::Flat { height: 0.0 });
     let load = 4e3; // N on each patch
-    let sinkage = |g: &SoftGround| {
+    let sinkage = |g: &Ground| {
         let (mut lo, mut hi) = (0.0, 0.5);
         while hi - lo > 1e-12 {
             let mid = 0.5 * (lo + hi);
@@ -207,7 +239,7 @@ fn the_rut_makes_a_second_pass_sink_less() {
     let (_, before) = evaluate(&g, &shoe, j);
     // Pressing where the shoe stands leaves the force there as it was
     // (Bekker's at the new yield point): no restart needed.
-    assert!(!g.press(std::slice::from_ref(&shoe), &ShoeGeometry::m113(), &mut j));
+    assert!(!g.press(std::slice::from_ref(&shoe), &M113::geometry().shoe, &mut j));
     assert_eq!(j, [0.02; 2], "loaded points keep their shear displacement");
     let (_, after) = evaluate(&g, &shoe, j);
     for (b, a) in before.iter().zip(&after) {
@@ -249,7 +281,7 @@ fn the_rut_makes_a_second_pass_sink_less() {
     assert!(second > fresh, "second pass {second} m, fresh {fresh} m");
     // Lifted off the ground: the shear displacement resets.
     let lifted = shoe_at(-0.05, 1.0, Vector2::zeros(), 0.0, 0.0);
-    assert!(!g.press(std::slice::from_ref(&lifted), &ShoeGeometry::m113(), &mut j));
+    assert!(!g.press(std::slice::from_ref(&lifted), &M113::geometry().shoe, &mut j));
     assert_eq!(j, [0.0; 2]);
     let profile: Vec<(f64, f64)> = g.rut.profile().collect();
     assert!(!profile.is_empty() && profile.iter().all(|&(_, z)| z > 0.0 && z < first));
@@ -257,16 +289,15 @@ fn the_rut_makes_a_second_pass_sink_less() {
 
 #[test]
 fn bad_soft_ground_is_a_clear_error() {
-    let shoe = ShoeGeometry::m113();
-    let flat = Terrain::Flat { height: 0.0 };
+    let shoe = M113::geometry().shoe;
     let bad = Soil {
         n: -1.0,
         ..SoilPreset::Snow.soil()
     };
     assert!(matches!(
-        SoftGround::new(bad, flat.clone(), WIDTH, 0.154, &shoe),
+        SoftGround::new(bad, WIDTH, 0.154, &shoe),
         Err(SoilError::OutOfRange { name: "n", .. })
     ));
-    let err = SoftGround::new(SoilPreset::Snow.soil(), flat, 0.0, 0.154, &shoe).unwrap_err();
+    let err = SoftGround::new(SoilPreset::Snow.soil(), 0.0, 0.154, &shoe).unwrap_err();
     assert!(err.to_string().contains("track width"), "{err}");
 }

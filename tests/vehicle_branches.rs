@@ -47,14 +47,17 @@
 
 mod support;
 
-use trackgen::closure::{ClosureMethod, MultiplierOptions, PenaltyJoint};
+use trackgen::Vehicle;
+use trackgen::closure::{ClosureMethod, MultiplierOptions};
+use trackgen::laws::PenaltyJoint;
 use trackgen::contact::Terrain;
-use trackgen::dynamics::{ClosingJoint, forward_dynamics};
+use trackgen::ClosingJoint;
+use trackgen::dynamics::forward_dynamics;
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::vehicle::Drive;
-use trackgen::vehicles::m113;
+use trackgen::vehicles::m113::{self, M113};
 use trackgen::{BodyLoad, RecursiveModel, TrackModel};
 
 use support::vehicle::{Books, m113_with};
@@ -76,7 +79,7 @@ fn last(results: &Results, column: &str) -> f64 {
 /// vehicle the same way, each with closed energy books.
 #[test]
 fn closure_methods_agree_on_the_vehicle() {
-    let drive = || m113::speed_drive(|t| 2.0 * ((t - 0.3) / 0.5).clamp(0.0, 1.0));
+    let drive = || M113::speed_drive(|t| 2.0 * ((t - 0.3) / 0.5).clamp(0.0, 1.0));
     let integrator = Integrator::Dopri5 {
         rtol: 1e-6,
         atol: 1e-6,

@@ -209,7 +209,7 @@ fn sprung_chassis_matches_reference_route() {
 /// the dampers at rest): central differences, h = 1e-6, 1e-7 relative.
 #[test]
 fn arm_torques_derive_from_the_spring_energy() {
-    use trackgen::suspension::{add_arm_torques, arm_energy};
+    use support::arms::{add_arm_torques, arm_energy};
     use trackgen::vehicles::m113::M113Chassis;
     const D: usize = 16;
     let mut rng = Lcg::new(24);

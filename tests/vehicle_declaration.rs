@@ -3,9 +3,9 @@
 //! overrides of `VehicleConfig`, each a number that could fail.
 //!
 //! Tolerances, and why:
-//! - **Declared = runtime M113 figures**: exact. The declaration and
-//!   `ShoeGeometry::m113`, `ToothProfile::m113`, `VehicleConfig::m113`
-//!   spell the same literals; any difference is a transcription error.
+//! - **Declared = the spec's M113 figures** (`shared/spec/m113.md`, the
+//!   shoe, sprocket and track width written out here again): exact; any
+//!   difference is a transcription error.
 //! - **Scaled profile** (`ToothProfile::scaled(10, 0.154)` against the
 //!   M113's 0.2605, 0.3 and 0.089 m): 2e-4 m. Its proportions are rounded
 //!   to two figures (0.073, 0.33 and 0.48), which at the M113's pitch
@@ -25,11 +25,14 @@
 
 mod support;
 
+use trackgen::Vehicle;
 use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{NormalLaw, ShoeGeometry, Terrain};
+use trackgen::contact::{ContactLaws, Friction, NormalLaw, ShoeGeometry, Terrain};
 use trackgen::integrate::Integrator;
-use trackgen::simulate::{Output, Results, SimulationError, simulate};
-use trackgen::vehicle::{BuildError, Drive, VehicleConfig};
+use trackgen::laws::ParameterError;
+use trackgen::nalgebra::Vector2;
+use trackgen::simulate::{Output, Results, simulate};
+use trackgen::vehicle::{BuildError, ConfigError, Drive, VehicleConfig};
 use trackgen::vehicles::m113::{self, M113, M113Chassis};
 
 use support::vehicle::Books;
@@ -38,24 +41,51 @@ const FLAT: Terrain = Terrain::Flat { height: 0.0 };
 
 #[test]
 fn m113_declaration_carries_the_m113_figures() {
+    let v = |x, y| Vector2::new(x, y);
+    let geometry = M113::geometry();
+    assert_eq!(
+        geometry.shoe,
+        ShoeGeometry {
+            ground_points: vec![v(-0.06, -0.03), v(0.06, -0.03)],
+            inner_face: [v(-0.077, 0.03), v(0.077, 0.03)],
+            pins: vec![v(0.0535, 0.0), v(-0.061, 0.0)],
+            pin_radius: 0.015,
+            width: Some(0.381),
+        }
+    );
+    assert_eq!(
+        geometry.sprocket,
+        ToothProfile {
+            teeth: 10,
+            addendum: 0.2605,
+            arc_centre_radius: 0.3,
+            arc_radius: 0.089,
+        }
+    );
     let declared = M113::config(FLAT, Drive::Free);
-    let runtime = VehicleConfig::m113(FLAT, Drive::Free);
-    assert_eq!(declared.shoe, ShoeGeometry::m113());
-    assert_eq!(M113::shoe(), ShoeGeometry::m113());
-    assert_eq!(declared.sprocket.profile, ToothProfile::m113());
-    assert_eq!(declared.ground, runtime.ground);
-    assert_eq!(declared.wheels, runtime.wheels);
-    assert_eq!(declared.sprocket, runtime.sprocket);
-    assert_eq!(declared.tension_link, runtime.tension_link);
-    let arms = declared.arms.expect("the declaration lists its arms");
+    let hunt_crossley = |stiffness, chi| NormalLaw::HuntCrossley {
+        stiffness,
+        exponent: 1.0,
+        chi,
+    };
+    assert_eq!(
+        declared.ground,
+        ContactLaws {
+            normal: hunt_crossley(2e6, 2.0),
+            friction: Friction { mu: 0.8, slip: 0.1 },
+        }
+    );
+    let rim = ContactLaws {
+        normal: hunt_crossley(1e7, 0.5),
+        friction: Friction { mu: 0.4, slip: 0.5 },
+    };
+    assert_eq!((declared.wheels, declared.sprocket), (rim, rim));
+    assert_eq!(declared.tension_link, 1);
+    let arms = &declared.arms;
     assert_eq!(arms.len(), 6, "five road-wheel arms and the tensioner");
     assert_eq!(arms[0].body, M113Chassis::RW1_ARM);
     assert_eq!(arms[5].body, M113Chassis::IDLER_ARM);
-    assert_eq!(arms[0].stiffness, m113::TORSION_STIFFNESS);
-    assert_eq!(
-        (M113::TRACK_DOF, M113::CHASSIS_DOF),
-        (m113::TRACK_DOF, m113::CHASSIS_DOF)
-    );
+    assert_eq!(arms[0].spring.stiffness, m113::TORSION_STIFFNESS);
     assert_eq!((M113::TRACK_DOF, M113::CHASSIS_DOF), (66, 16));
     match M113::speed_drive(|_| 1.0) {
         Drive::Speed {
@@ -66,21 +96,12 @@ fn m113_declaration_carries_the_m113_figures() {
         } => assert_eq!((proportional, integral, max_torque), (3000.0, 6000.0, 2e4)),
         _ => panic!("a speed drive"),
     }
-    // The defaults of an undeclared pair are the M113's too.
-    assert_eq!(
-        VehicleConfig::GROUND_LAW,
-        NormalLaw::HuntCrossley {
-            stiffness: 2e6,
-            exponent: 1.0,
-            chi: 2.0
-        }
-    );
 }
 
 #[test]
 fn scaled_profile_has_the_m113_proportions() {
     let scaled = ToothProfile::scaled(10, m113::SHOE_PITCH);
-    let m113 = ToothProfile::m113();
+    let m113 = M113::geometry().sprocket;
     assert_eq!(scaled.teeth, 10);
     for (what, got, want) in [
         ("tip", scaled.addendum, m113.addendum),
@@ -139,7 +160,7 @@ fn arm_deflection(results: &Results) -> f64 {
 fn arm_rates_are_overridden_at_run_time() {
     let base = driven(M113::config(FLAT, drive()));
     let mut same = M113::config(FLAT, drive());
-    same.arms = Some(same.arms.take().expect("declared arms"));
+    same.arms = std::mem::take(&mut same.arms);
     let same = driven(same);
     assert_eq!(base.times(), same.times());
     assert_eq!(
@@ -148,15 +169,9 @@ fn arm_rates_are_overridden_at_run_time() {
     );
 
     let mut stiff = M113::config(FLAT, drive());
-    for arm in stiff
-        .arms
-        .as_mut()
-        .expect("declared arms")
-        .iter_mut()
-        .take(5)
-    {
-        arm.stiffness *= 2.0;
-        arm.damping *= 2.0;
+    for arm in stiff.arms.iter_mut().take(5) {
+        arm.spring.stiffness *= 2.0;
+        arm.spring.damping *= 2.0;
     }
     let stiff = driven(stiff);
     let books = Books::of(&stiff);
@@ -174,16 +189,32 @@ fn arm_rates_are_overridden_at_run_time() {
 }
 
 #[test]
-fn bad_arm_overrides_are_setup_errors() {
+fn bad_arm_overrides_are_config_errors() {
     let mut missing = M113::config(FLAT, Drive::Free);
-    missing.arms.as_mut().expect("declared arms").pop();
+    missing.arms.pop();
+    let error = M113::system_with(missing).err().expect("refused");
+    assert!(
+        matches!(&error, BuildError::Config(ConfigError::Arms { configured, declared })
+            if configured.len() == 5 && declared.len() == 6),
+        "{error}"
+    );
     let mut negative = M113::config(FLAT, Drive::Free);
-    negative.arms.as_mut().expect("declared arms")[2].damping = -1.0;
-    for (config, needle) in [(missing, "bodies"), (negative, "damping -1")] {
-        let error = M113::system_with(config).err().expect("refused");
-        assert!(
-            matches!(&error, BuildError::Setup(SimulationError::Setup(m)) if m.contains(needle)),
-            "{error}"
-        );
-    }
+    negative.arms[2].spring.damping = -1.0;
+    let error = M113::system_with(negative).err().expect("refused");
+    assert!(
+        matches!(
+            &error,
+            BuildError::Config(ConfigError::Arm {
+                body,
+                source: ParameterError { name: "damping", value, .. },
+            }) if *body == negative_body() && *value == -1.0
+        ),
+        "{error}"
+    );
+    assert!(error.to_string().contains("damping"), "{error}");
+}
+
+/// The body of the third declared arm.
+fn negative_body() -> usize {
+    M113::config(FLAT, Drive::Free).arms[2].body
 }

@@ -54,16 +54,15 @@
 
 mod support;
 
-use trackgen::RecursiveModel;
-use trackgen::assembly::AssemblyError;
+use trackgen::assembly::{AssemblyError, assemble};
 use trackgen::closure::ClosureMethod;
-use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{ShoeGeometry, Terrain, TerrainError};
+use trackgen::contact::{Terrain, TerrainError};
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::{Drive, assemble};
-use trackgen::vehicles::m113::{self, M113Chassis, M113Track};
+use trackgen::vehicle::Drive;
+use trackgen::vehicles::m113::{self, M113, M113Chassis, M113Track};
+use trackgen::{RecursiveModel, Vehicle};
 
 use support::vehicle::{Books, m113_pitch_radius, m113_weight, m113_with, mean, window};
 use support::{max_abs, max_of};
@@ -81,7 +80,7 @@ fn integrator() -> Integrator {
 /// Runs the M113 on flat ground for `duration` s under `drive`.
 fn run(drive: Drive, duration: f64) -> Results {
     let mut system =
-        m113::system(Terrain::Flat { height: 0.0 }, drive).expect("the M113 assembles");
+        M113::system(Terrain::Flat { height: 0.0 }, drive).expect("the M113 assembles");
     simulate(
         &mut system,
         integrator(),
@@ -97,7 +96,7 @@ fn run(drive: Drive, duration: f64) -> Results {
 /// (bounds in the file's header).
 #[test]
 fn settles_into_static_equilibrium() {
-    let results = run(m113::speed_drive(|_| 0.0), 10.0);
+    let results = run(M113::speed_drive(|_| 0.0), 10.0);
     let (t0, t1) = (9.5, 10.0);
     let speed = max_abs(window(&results, "speed", t0, t1));
     let heave = max_abs(window(&results, "chassis.vy", t0, t1));
@@ -121,7 +120,7 @@ fn settles_into_static_equilibrium() {
 fn driven_run_balances_energy_reaches_speed_and_stays_shallow() {
     let target = 2.0;
     let results = run(
-        m113::speed_drive(move |t| target * ((t - 0.5) / 1.5).clamp(0.0, 1.0)),
+        M113::speed_drive(move |t| target * ((t - 0.5) / 1.5).clamp(0.0, 1.0)),
         8.0,
     );
     let books = Books::of(&results);
@@ -174,8 +173,8 @@ fn main_job_settings_over_the_bump() {
         width: 1.0,
         height: 0.1,
     };
-    let drive = m113::speed_drive(|t| 3.0 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
-    let mut system = m113::system(terrain, drive).expect("the M113 assembles");
+    let drive = M113::speed_drive(|t| 3.0 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
+    let mut system = M113::system(terrain, drive).expect("the M113 assembles");
     let results = simulate(
         &mut system,
         Integrator::Bs23 {
@@ -208,7 +207,7 @@ fn main_job_settings_over_the_bump() {
 }
 
 /// The recorded chassis coordinates at sample `k`.
-fn chassis_q(results: &Results, k: usize) -> SVector<f64, { m113::CHASSIS_DOF }> {
+fn chassis_q(results: &Results, k: usize) -> SVector<f64, { M113::CHASSIS_DOF }> {
     let first = results
         .columns()
         .iter()
@@ -218,7 +217,7 @@ fn chassis_q(results: &Results, k: usize) -> SVector<f64, { m113::CHASSIS_DOF }>
 }
 
 /// The recorded track coordinates at sample `k`.
-fn track_q(results: &Results, k: usize) -> SVector<f64, { m113::TRACK_DOF }> {
+fn track_q(results: &Results, k: usize) -> SVector<f64, { M113::TRACK_DOF }> {
     let first = results
         .columns()
         .iter()
@@ -240,7 +239,7 @@ fn tight_span_tension_matches_sprocket_statics() {
         start: 2.5,
         slope,
     };
-    let drive = m113::speed_drive(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
+    let drive = M113::speed_drive(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
     let mut system = m113_with(terrain, drive, ClosureMethod::Declared);
     let results = simulate(&mut system, integrator(), 0.0, 6.0, Output::Every(0.005)).unwrap();
     let r_p = m113_pitch_radius();
@@ -312,7 +311,7 @@ trackgen::model! {
 #[test]
 fn bad_inputs_are_clear_errors() {
     let flat = Terrain::Flat { height: 0.0 };
-    let (shoe, profile) = (ShoeGeometry::m113(), ToothProfile::m113());
+    let (shoe, profile) = (M113::geometry().shoe, M113::geometry().sprocket);
     let short = assemble(&ShortTrack, &ShortChassis, &shoe, &profile, &flat, 0.0, 0.0).unwrap_err();
     assert!(
         matches!(short, AssemblyError::TrackTooShort { links: 20, .. }),

@@ -30,11 +30,12 @@
 
 mod support;
 
+use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::vehicle::Drive;
-use trackgen::vehicles::marder::{self, Marder};
+use trackgen::vehicles::marder::Marder;
 
 use support::vehicle::{Books, mean, window};
 use support::{max_abs, max_of};
@@ -77,7 +78,7 @@ fn weight() -> f64 {
 /// after 5 s).
 #[test]
 fn marder_settles_with_the_ground_carrying_its_weight() {
-    let results = run(marder::speed_drive(|_| 0.0), 5.0);
+    let results = run(Marder::speed_drive(|_| 0.0), 5.0);
     let (t0, t1) = (4.5, 5.0);
     let speed = max_abs(window(&results, "speed", t0, t1));
     let heave = max_abs(window(&results, "chassis.vy", t0, t1));
@@ -99,7 +100,7 @@ fn marder_settles_with_the_ground_carrying_its_weight() {
 fn marder_drives_to_speed_with_closed_books() {
     let target = 3.0;
     let results = run(
-        marder::speed_drive(move |t| target * ((t - 1.0) / 2.0).clamp(0.0, 1.0)),
+        Marder::speed_drive(move |t| target * ((t - 1.0) / 2.0).clamp(0.0, 1.0)),
         7.0,
     );
     let books = Books::of(&results);

@@ -9,8 +9,9 @@ use trackgen::ChassisModel;
 use trackgen::closure::ClosureMethod;
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
-use trackgen::simulate::{Output, Pair, Results, TrackSystem, TreeSystem, simulate};
-use trackgen::suspension::{add_arm_torques, arm_energy};
+use trackgen::simulate::{Output, Results, simulate};
+use trackgen::system::{Pair, TrackSystem, TreeSystem};
+use support::arms::{add_arm_torques, arm_energy};
 use trackgen::vehicles::m113::{M113Chassis, M113Track};
 
 /// The motor's torque, N m: on the sprocket, and its reaction on the frame.
@@ -58,7 +59,7 @@ fn net_work(results: &Results, prefix: &str) -> Vec<f64> {
         if let Some(arm) = &part.arm {
             let wa = column(&format!("omega_{}_arm", part.name));
             for i in 0..t.len() {
-                power[i] -= arm.damping * (wa[i] - wf[i]).powi(2);
+                power[i] -= arm.spring.damping * (wa[i] - wf[i]).powi(2);
             }
         }
     }

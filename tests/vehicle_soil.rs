@@ -42,7 +42,9 @@
 
 mod support;
 
-use trackgen::contact::soft_ground::SoftGround;
+use trackgen::Vehicle;
+use trackgen::VehicleDynamics;
+use trackgen::contact::soft_ground::{Rut, SoftGround};
 use trackgen::contact::soil::SoilPreset;
 use trackgen::contact::{BodyState, ShoeGeometry, Terrain};
 use trackgen::integrate::Integrator;
@@ -52,6 +54,7 @@ use trackgen::vehicle::{Drive, VehicleConfig};
 use trackgen::vehicles::m113::{self, M113, M113System, M113Track};
 use trackgen::{BodyLoad, RecursiveModel, rotate};
 
+use support::contact::soil_forces;
 use support::vehicle::{Books, mean, window};
 
 fn integrator(tolerance: f64) -> Integrator {
@@ -68,9 +71,7 @@ fn on_dry_sand(drive: Drive, damping: Option<f64>) -> VehicleConfig {
     if let Some(r) = damping {
         soil.damping = r;
     }
-    config
-        .on_soil(soil, m113::TRACK_WIDTH, m113::SHOE_PITCH)
-        .expect("a valid soil");
+    config.soil = Some(soil);
     config
 }
 
@@ -80,12 +81,12 @@ fn sunk_points(results: &Results) -> Vec<(f64, f64)> {
     let columns = results.columns();
     let start = columns.iter().position(|c| c == "track.x").unwrap();
     let last = results.sample(results.len() - 1);
-    let q = SVector::<f64, { m113::TRACK_DOF }>::from_column_slice(
-        &last.values[start..start + m113::TRACK_DOF],
+    let q = SVector::<f64, { M113::TRACK_DOF }>::from_column_slice(
+        &last.values[start..start + M113::TRACK_DOF],
     );
     let mut centres = vec![Vector2::zeros(); 64];
     M113Track.body_positions(&q, &mut centres);
-    let shoe = ShoeGeometry::m113();
+    let shoe = M113::geometry().shoe;
     let mut out = Vec::new();
     for (j, c) in centres.iter().enumerate() {
         for g in &shoe.ground_points {
@@ -100,7 +101,7 @@ fn sunk_points(results: &Results) -> Vec<(f64, f64)> {
 
 #[test]
 fn static_sinkage_on_dry_sand_is_bekkers() {
-    let config = on_dry_sand(m113::speed_drive(|_| 0.0), Some(1e6));
+    let config = on_dry_sand(M113::speed_drive(|_| 0.0), Some(1e6));
     let mut system = M113::system_with(config).unwrap();
     let results = simulate(
         &mut system,
@@ -139,10 +140,10 @@ fn track_rig(slip: f64) -> f64 {
             Vector2::new(-pitch / 4.0, 0.0),
             Vector2::new(pitch / 4.0, 0.0),
         ],
-        ..ShoeGeometry::m113()
+        ..M113::geometry().shoe
     };
-    let mut ground =
-        SoftGround::new(soil, Terrain::Flat { height: 0.0 }, width, pitch, &shoe).unwrap();
+    let flat = Terrain::Flat { height: 0.0 };
+    let mut ground = SoftGround::new(soil, width, pitch, &shoe).unwrap();
     let z0 = soil.static_sinkage(weight, width, length);
     let track_speed = 4.0;
     let speed = (1.0 - slip) * track_speed;
@@ -177,7 +178,14 @@ fn track_rig(slip: f64) -> f64 {
             })
             .collect();
         let mut loads = vec![BodyLoad::ZERO; shoes];
-        ground.apply(&states, &shoe, &mut loads, &shear, &mut rate, |_, _| {});
+        soil_forces(
+            (&ground, &flat),
+            &states,
+            &shoe,
+            &mut loads,
+            (&shear, &mut rate),
+            |_, _| {},
+        );
         if t > 1.2 * length / track_speed {
             force.push(loads.iter().map(|l| l.force.x).sum::<f64>());
         }
@@ -198,7 +206,7 @@ fn track_rig(slip: f64) -> f64 {
                 BodyState::new(Vector2::new(speed * t - s, y), 0.0, Vector2::zeros(), 0.0)
             })
             .collect();
-        ground.press(&moved, &shoe, &mut shear);
+        ground.press(&flat, &moved, &shoe, &mut shear);
     }
     force.iter().sum::<f64>() / force.len() as f64
 }
@@ -219,14 +227,12 @@ fn tractive_effort_under_uniform_pressure_follows_wong() {
 
 /// Drives the M113 at 1.5 m/s from rest for 4 s over dry sand (the rut
 /// `rut` left before, if any); returns the system and its results.
-fn pass(rut: Option<SoftGround>) -> (M113System, Results) {
+fn pass(rut: Option<Rut>) -> (M113System, Results) {
     let mut config = on_dry_sand(
-        m113::speed_drive(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0)),
+        M113::speed_drive(|t| 1.5 * ((t - 0.5) / 1.0).clamp(0.0, 1.0)),
         None,
     );
-    if let Some(rut) = rut {
-        config.soil = Some(rut);
-    }
+    config.rut = rut;
     let mut system = M113::system_with(config).unwrap();
     let results = simulate(&mut system, integrator(1e-4), 0.0, 4.0, Output::Every(0.01))
         .expect("the run completes");
@@ -234,10 +240,8 @@ fn pass(rut: Option<SoftGround>) -> (M113System, Results) {
 }
 
 /// The deepest plastic sinkage the rut holds over `x ∈ [a, b]`, m.
-fn rut_depth(ground: &SoftGround, a: f64, b: f64) -> f64 {
-    ground
-        .rut
-        .profile()
+fn rut_depth(rut: &Rut, a: f64, b: f64) -> f64 {
+    rut.profile()
         .filter(|(x, _)| (a..=b).contains(x))
         .map(|(_, z)| z)
         .fold(0.0, f64::max)
@@ -246,12 +250,12 @@ fn rut_depth(ground: &SoftGround, a: f64, b: f64) -> f64 {
 #[test]
 fn a_second_pass_over_the_rut_sinks_less() {
     let (first, results) = pass(None);
-    let ground = first.config().soil.clone().unwrap();
-    let made = rut_depth(&ground, 0.0, 2.0);
+    let rut = first.rut().expect("on soil").clone();
+    let made = rut_depth(&rut, 0.0, 2.0);
     let deepest_first = mean(&window(&results, "ground_penetration", 3.0, 4.0));
     // The second vehicle starts where the first did, on its rut.
-    let (second, results) = pass(Some(ground));
-    let after = rut_depth(second.config().soil.as_ref().unwrap(), 0.0, 2.0);
+    let (second, results) = pass(Some(rut));
+    let after = rut_depth(second.rut().expect("on soil"), 0.0, 2.0);
     let deepest_second = mean(&window(&results, "ground_penetration", 3.0, 4.0));
     eprintln!(
         "rut {made} m, deepened by {} m; deepest sinkage {deepest_first} then {deepest_second} m",

@@ -28,13 +28,13 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::contact::Terrain;
+use trackgen::model::PartKind;
 use trackgen::simulate::{Background, Output, Simulated, StreamFailure, simulate_into};
-use trackgen::vehicle::VehicleSystem;
-use trackgen::vehicles::m113::{self, M113};
-use trackgen::vehicles::marder::{self, Marder};
-use trackgen::{ChassisModel, TrackModel};
+use trackgen::vehicles::m113::M113;
+use trackgen::vehicles::marder::Marder;
+use trackgen::{Vehicle, VehicleDynamics};
 
-use cli::{Args, Ground, Vehicle};
+use cli::{Args, Ground};
 use outputs::Outputs;
 use scene::Scene;
 
@@ -57,50 +57,60 @@ fn main() {
 }
 
 fn run(args: &Args) -> Result<(), Box<dyn Error>> {
+    match args.vehicle {
+        cli::Vehicle::M113 => drive::<M113>(args),
+        cli::Vehicle::Marder => drive::<Marder>(args),
+    }
+}
+
+/// What the vehicle is, from its declared parts: `M113 (one side): 64
+/// shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner
+/// arm`.
+fn about<V: Vehicle>() -> String {
+    type S<V> = <V as Vehicle>::System;
+    let parts = S::<V>::parts();
+    let count = |kind| parts.iter().filter(|p| p.kind == kind).count();
+    let mut words = vec![
+        format!("{} shoes", S::<V>::track_dof() - 2),
+        "sprocket".to_string(),
+    ];
+    let wheels = count(PartKind::RoadWheel);
+    let sprung = parts
+        .iter()
+        .all(|p| p.kind != PartKind::RoadWheel || p.arm.is_some());
+    words.push(format!(
+        "{wheels} road wheels{}",
+        if sprung { " on torsion arms" } else { "" }
+    ));
+    match count(PartKind::Roller) {
+        0 => {}
+        n => words.push(format!("{n} return rollers")),
+    }
+    for idler in parts.iter().filter(|p| p.kind == PartKind::Idler) {
+        words.push(match idler.arm {
+            Some(_) => "idler on a tensioner arm".to_string(),
+            None => "idler".to_string(),
+        });
+    }
+    format!("{} (one side): {}", V::NAME, words.join(", "))
+}
+
+/// Assembles the vehicle `V` with the options given, runs it, streaming
+/// its outputs, and reports.
+fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     let terrain = Terrain::Bump {
         centre: args.bump_at,
         width: 1.0,
         height: args.bump_height,
     };
     let assembling = Instant::now();
-    match args.vehicle {
-        Vehicle::M113 => {
-            let mut config = M113::config(terrain.clone(), M113::speed_drive(args.speed_profile()));
-            if let Ground::Soil(soil) = args.terrain {
-                config.on_soil(soil.soil(), m113::TRACK_WIDTH, m113::SHOE_PITCH)?;
-            }
-            let system = M113::system_with(config)?;
-            let about = "M113 (one side): 64 shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner arm";
-            drive_vehicle(args, system, about, assembling, terrain)
-        }
-        Vehicle::Marder => {
-            let mut config =
-                Marder::config(terrain.clone(), Marder::speed_drive(args.speed_profile()));
-            if let Ground::Soil(soil) = args.terrain {
-                config.on_soil(soil.soil(), marder::TRACK_WIDTH, marder::SHOE_PITCH)?;
-            }
-            let system = Marder::system_with(config)?;
-            let about = "Marder (one side): 77 shoes, sprocket, 6 road wheels on torsion arms, 3 return rollers, idler on a tensioner arm";
-            drive_vehicle(args, system, about, assembling, terrain)
-        }
+    let mut config = V::config(terrain.clone(), V::speed_drive(args.speed_profile()));
+    if let Ground::Soil(soil) = args.terrain {
+        config.soil = Some(soil.soil());
     }
-}
-
-/// Runs an assembled vehicle with the options given, streaming its
-/// outputs, and reports.
-fn drive_vehicle<T, const DT: usize, C, const DC: usize>(
-    args: &Args,
-    mut system: VehicleSystem<T, DT, C, DC>,
-    about: &str,
-    assembling: Instant,
-    terrain: Terrain,
-) -> Result<(), Box<dyn Error>>
-where
-    T: TrackModel<DT> + Copy + 'static,
-    C: ChassisModel<DC> + Copy + 'static,
-{
+    let mut system = V::system_with(config)?;
     let assembly = assembling.elapsed().as_secs_f64();
-    let (track, chassis) = (*system.track().model(), *system.chassis().model());
+    let about = about::<V>();
     let name = args.vehicle.name();
     let title = format!(
         "{} driving over a {}",
@@ -113,7 +123,7 @@ where
     );
     let mut outputs = Outputs::create(
         &args.out(),
-        (name, title, Scene::of(track, chassis)),
+        (name, title, Scene::of::<V>()),
         &system.columns(),
         args.bump_at,
     )?;

@@ -2,9 +2,9 @@
 
 use trackgen::contact::Terrain;
 use trackgen::model::PartKind;
-use trackgen::nalgebra::{SVector, Vector2};
+use trackgen::nalgebra::Vector2;
 use trackgen::simulate::Results;
-use trackgen::{ChassisModel, TrackModel, rotate};
+use trackgen::{Vehicle, VehicleDynamics, rotate};
 
 /// One picture's worth of geometry.
 #[derive(Debug, Clone)]
@@ -32,49 +32,40 @@ impl Scene {
     /// The scene of a vehicle declared with `model!`: its wheels, arms
     /// and track from the compiled models, and a side view of a hull drawn
     /// over its running gear.
-    pub fn of<T, const DT: usize, C, const DC: usize>(track: T, chassis: C) -> Scene
-    where
-        T: TrackModel<DT> + 'static,
-        C: ChassisModel<DC> + 'static,
-    {
-        let hull = hull(&chassis);
-        let description = track.description();
-        let spans = description.link_spans().expect("a track has link spans");
-        let links = spans.len();
-        // Each link's rear joint, in its own frame.
-        let rear: Vec<Vector2<f64>> = (0..links)
-            .map(|j| match j {
-                0 => description.loop_joint.expect("a closed track").first_u1,
-                _ => description.bodies[j].at_self,
-            })
-            .collect();
+    pub fn of<V: Vehicle>() -> Scene {
+        type S<V> = <V as Vehicle>::System;
+        let hull = hull::<V>();
+        let joints = S::<V>::track_description()
+            .joints()
+            .expect("a track has joints");
+        let links = joints.len();
+        let chassis = S::<V>::chassis_description();
+        let bodies = chassis.len();
         let frame = move |t: f64, qt: &[f64], qc: &[f64]| {
-            let qt = SVector::<f64, DT>::from_column_slice(qt);
-            let qc = SVector::<f64, DC>::from_column_slice(qc);
             let mut centres = vec![Vector2::zeros(); links];
-            track.body_positions(&qt, &mut centres);
+            S::<V>::track_positions(qt, &mut centres);
+            // Each link's rear joint.
             let mut joints: Vec<(f64, f64)> = (0..links)
-                .map(|j| centres[j] + rotate(qt[2 + j], rear[j]))
+                .map(|j| centres[j] + rotate(qt[2 + j], joints[j].0))
                 .map(|p| (p.x, p.y))
                 .collect();
             joints.push(joints[0]);
-            let mut bodies = vec![Vector2::zeros(); C::BODIES];
-            chassis.body_positions(&qc, &mut bodies);
-            let description = chassis.description();
+            let mut positions = vec![Vector2::zeros(); bodies];
+            S::<V>::chassis_positions(qc, &mut positions);
             let mut wheels = Vec::new();
             let mut arms = Vec::new();
-            for part in C::PARTS {
-                let c = bodies[part.body];
+            for part in S::<V>::parts() {
+                let c = positions[part.body];
                 wheels.push((c.x, c.y, part.radius));
                 if let Some(arm) = &part.arm {
-                    let body = &description.bodies[arm.body];
-                    let pivot = bodies[arm.body] + rotate(qc[2 + arm.body], body.at_self);
+                    let body = &chassis.bodies[arm.body];
+                    let pivot = positions[arm.body] + rotate(qc[2 + arm.body], body.at_self);
                     arms.push(((pivot.x, pivot.y), (c.x, c.y)));
                 }
             }
             let hull = hull
                 .iter()
-                .map(|p| bodies[0] + rotate(qc[2], *p))
+                .map(|p| positions[0] + rotate(qc[2], *p))
                 .map(|p| (p.x, p.y))
                 .collect();
             Frame {
@@ -87,7 +78,7 @@ impl Scene {
             }
         };
         Scene {
-            dofs: (DT, DC),
+            dofs: (S::<V>::track_dof(), S::<V>::chassis_dof()),
             frame: Box::new(frame),
         }
     }
@@ -138,10 +129,15 @@ impl Scene {
 /// A side view of a hull over the running gear, in the chassis' centroid
 /// frame: from behind the rearmost wheel to past the foremost, its belly
 /// clear of the track's upper run, a sloped glacis at the front.
-fn hull<C: ChassisModel<DC>, const DC: usize>(chassis: &C) -> Vec<Vector2<f64>> {
-    let mut bodies = vec![Vector2::zeros(); C::BODIES];
-    chassis.body_positions(&SVector::zeros(), &mut bodies);
-    let parts = || C::PARTS.iter().map(|p| (bodies[p.body], p.radius, p.kind));
+fn hull<V: Vehicle>() -> Vec<Vector2<f64>> {
+    type S<V> = <V as Vehicle>::System;
+    let mut bodies = vec![Vector2::zeros(); S::<V>::chassis_description().len()];
+    S::<V>::chassis_positions(&vec![0.0; S::<V>::chassis_dof()], &mut bodies);
+    let parts = || {
+        S::<V>::parts()
+            .iter()
+            .map(|p| (bodies[p.body], p.radius, p.kind))
+    };
     let front = parts().map(|(c, r, _)| c.x + r).fold(f64::MIN, f64::max) + 0.15;
     let rear = parts().map(|(c, r, _)| c.x - r).fold(f64::MAX, f64::min) - 0.05;
     let belly = parts()

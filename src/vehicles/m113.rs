@@ -11,13 +11,12 @@
 //! m²) is an assumption of this model; see [`TENSIONER_ARM`].
 //!
 //! Everything that makes it run is declared with it: shoe, sprocket
-//! profile, contact laws and drive gains. [`system`] assembles it on a
-//! terrain, ready to simulate ([`M113::system`]; [`M113::config`] gives
-//! the run-time settings to change first, for [`M113::system_with`]);
-//! [`speed_drive`] is a speed controller tuned for it.
-
-use crate::contact::Terrain;
-use crate::vehicle::Drive;
+//! profile, contact laws and drive gains. As a [`Vehicle`](crate::Vehicle),
+//! `M113::system(terrain, drive)` assembles it on a terrain, ready to
+//! simulate (`M113::config` gives the run-time settings to change first,
+//! for `M113::system_with`), and `M113::speed_drive` is a speed controller
+//! tuned for it: proportional gain 3000 N m s/rad and integral gain
+//! 6000 N m/rad on the sprocket speed, torque limited to 20 kN m.
 
 /// Shoe pitch (pin to pin), m.
 pub const SHOE_PITCH: f64 = 0.154;
@@ -95,9 +94,10 @@ crate::model! {
             inner_offset: 0.03,
             pins: [(0.0535, 0.0), (-0.061, 0.0)],
             pin_radius: 0.015,
+            width: TRACK_WIDTH,
         },
         // Hunt-Crossley with exponent 1 throughout (see
-        // `VehicleConfig::m113` for why these values).
+        // `VehicleConfig::GROUND_LAW` and the others for why these values).
         contact {
             ground { stiffness: 2e6, chi: 2.0, mu: 0.8, slip: 0.1 },
             wheels { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
@@ -107,28 +107,4 @@ crate::model! {
         // is ~250 kg m²: a closed loop of about 12 rad/s, well damped.
         drive { proportional: 3000.0, integral: 6000.0, max_torque: 2e4 },
     }
-}
-
-/// Number of track coordinates `q_i` (64 links + 2).
-pub const TRACK_DOF: usize = M113::TRACK_DOF;
-/// Number of chassis coordinates `q_i` (14 bodies + 2).
-pub const CHASSIS_DOF: usize = M113::CHASSIS_DOF;
-
-/// A PI speed drive tuned for the M113 ([`M113::speed_drive`]):
-/// proportional gain 3000 N m s/rad and integral gain 6000 N m/rad on the
-/// sprocket speed, torque limited to 20 kN m. `target` is the forward
-/// speed wanted, m/s, against time, s.
-pub fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive {
-    M113::speed_drive(target)
-}
-
-/// The M113 assembled on `terrain` (chassis centroid at x = 0, shoes 1 mm
-/// above the ground), its loop closed by partitioning, with its declared
-/// contact ([`M113::config`]) and `drive`: ready for
-/// [`simulate`](crate::simulate::simulate).
-pub fn system(
-    terrain: Terrain,
-    drive: Drive,
-) -> Result<M113System, Box<dyn std::error::Error + Send + Sync>> {
-    Ok(M113::system(terrain, drive)?)
 }

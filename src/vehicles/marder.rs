@@ -31,13 +31,12 @@
 //! simple engine's in its one gear, `2400 / 0.1708 / 2 ≈ 7026` N m per
 //! sprocket (the spec's example).
 //!
-//! Everything that makes it run is declared with it; [`system`] assembles
-//! it on a terrain ([`Marder::system`]; [`Marder::config`] gives the
-//! run-time settings to change first, for [`Marder::system_with`]), and
-//! [`speed_drive`] is a speed controller tuned for it.
-
-use crate::contact::Terrain;
-use crate::vehicle::Drive;
+//! Everything that makes it run is declared with it; as a
+//! [`Vehicle`](crate::Vehicle), `Marder::system(terrain, drive)` assembles
+//! it on a terrain (`Marder::config` gives the run-time settings to change
+//! first, for `Marder::system_with`), and `Marder::speed_drive` is a speed
+//! controller tuned for it: proportional gain 4000 N m s/rad and integral
+//! gain 8000 N m/rad on the sprocket speed, torque limited to 7026 N m.
 
 /// Shoe pitch (pin to pin), m.
 pub const SHOE_PITCH: f64 = 0.17;
@@ -137,6 +136,7 @@ crate::model! {
             inner_offset: 0.03,
             pins: [(0.0535, 0.0), (-0.061, 0.0)],
             pin_radius: 0.015,
+            width: TRACK_WIDTH,
         },
         // The M113's laws (Hunt-Crossley, exponent 1): no Marder figures.
         contact {
@@ -151,28 +151,4 @@ crate::model! {
         // idler's rim friction).
         drive { proportional: 4000.0, integral: 8000.0, max_torque: 7026.0 },
     }
-}
-
-/// Number of track coordinates `q_i` (77 links + 2).
-pub const TRACK_DOF: usize = Marder::TRACK_DOF;
-/// Number of chassis coordinates `q_i`.
-pub const CHASSIS_DOF: usize = Marder::CHASSIS_DOF;
-
-/// A PI speed drive tuned for the Marder ([`Marder::speed_drive`]):
-/// proportional gain 4000 N m s/rad and integral gain 8000 N m/rad on
-/// the sprocket speed, torque limited to 7026 N m. `target` is the forward
-/// speed wanted, m/s, against time, s.
-pub fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive {
-    Marder::speed_drive(target)
-}
-
-/// The Marder assembled on `terrain` (chassis centroid at x = 0, shoes
-/// 1 mm above the ground), its loop closed by partitioning, with its
-/// declared contact ([`Marder::config`]) and `drive`: ready for
-/// [`simulate`](crate::simulate::simulate).
-pub fn system(
-    terrain: Terrain,
-    drive: Drive,
-) -> Result<MarderSystem, Box<dyn std::error::Error + Send + Sync>> {
-    Ok(Marder::system(terrain, drive)?)
 }

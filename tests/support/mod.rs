@@ -1,6 +1,7 @@
 //! Shared helpers of the integration tests.
 #![allow(dead_code)]
 
+pub mod contact;
 pub mod vehicle;
 
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector};
@@ -102,5 +103,36 @@ impl Lcg {
         });
         let qd = SVector::from_fn(|_, _| self.uniform(-3.0, 3.0));
         (q, qd)
+    }
+}
+
+/// The compiled arms of a chassis through the runtime's arm element
+/// (`trackgen::vehicle::arms`): their torques as loads, their energy,
+/// their dampers' power.
+pub mod arms {
+    use trackgen::nalgebra::SVector;
+    use trackgen::vehicle::arms::{apply, declared};
+    use trackgen::{BodyLoad, ChassisModel};
+
+    /// Adds every compiled arm's torque to `loads`.
+    pub fn add_arm_torques<M: ChassisModel<D>, const D: usize>(
+        q: &SVector<f64, D>,
+        qd: &SVector<f64, D>,
+        loads: &mut [BodyLoad],
+    ) {
+        assert_eq!(loads.len(), M::BODIES, "one load per body");
+        apply(&declared::<M, D>(), q, qd, loads);
+    }
+
+    /// The compiled springs' energy `Σ ½ k φ² − preload φ`, J.
+    pub fn arm_energy<M: ChassisModel<D>, const D: usize>(q: &SVector<f64, D>) -> f64 {
+        let mut loads = vec![BodyLoad::ZERO; M::BODIES];
+        apply(&declared::<M, D>(), q, &SVector::zeros(), &mut loads).potential
+    }
+
+    /// The compiled dampers' power `Σ c φ̇²`, W.
+    pub fn arm_dissipation<M: ChassisModel<D>, const D: usize>(qd: &SVector<f64, D>) -> f64 {
+        let mut loads = vec![BodyLoad::ZERO; M::BODIES];
+        apply(&declared::<M, D>(), &SVector::zeros(), qd, &mut loads).dissipation
     }
 }

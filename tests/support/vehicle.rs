@@ -1,38 +1,22 @@
 //! Helpers of the vehicle tests: building the M113 with any closure and
-//! drive, and reading its energy books and time windows from the results.
+//! drive (through the one path users call, `trackgen::vehicle::build`),
+//! and reading its energy books and time windows from the results.
 
-use trackgen::RecursiveModel;
 use trackgen::closure::ClosureMethod;
-use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{ShoeGeometry, Terrain};
+use trackgen::contact::Terrain;
 use trackgen::simulate::Results;
-use trackgen::vehicle::{Drive, VehicleConfig, VehicleSystem, assemble};
-use trackgen::vehicles::m113::{self, M113Chassis, M113System, M113Track};
+use trackgen::vehicle::{Drive, build};
+use trackgen::vehicles::m113::{self, M113, M113Chassis, M113System, M113Track};
+use trackgen::{RecursiveModel, Vehicle};
 
 use super::{max_abs, min_of};
 
-/// The M113 assembled on `terrain` (chassis centroid at x = 0, 1 mm
-/// clearance, as `m113::system`), its loop closed by `closure`.
+/// The M113 as it ships (`M113::system`: its declared configuration,
+/// assembled with its tensioner set), its loop closed by `closure`.
 pub fn m113_with(terrain: Terrain, drive: Drive, closure: ClosureMethod) -> M113System {
-    let a = assemble(
-        &M113Track,
-        &M113Chassis,
-        &ShoeGeometry::m113(),
-        &ToothProfile::m113(),
-        &terrain,
-        0.0,
-        0.001,
-    )
-    .expect("the M113 assembles");
-    VehicleSystem::new(
-        M113Track,
-        M113Chassis,
-        a.track,
-        a.chassis,
-        closure,
-        VehicleConfig::m113(terrain, drive),
-    )
-    .expect("the M113 is a valid system")
+    let mut config = M113::config(terrain, drive);
+    config.closure = closure;
+    build::<M113>(config).expect("the M113 builds")
 }
 
 /// The M113's weight, N, from the masses declared in

@@ -12,9 +12,9 @@ pub fn expand(input: TokenStream) -> TokenStream {
     };
     match lower::lower(parsed) {
         Ok(model) => codegen::generate(&model),
-        Err((error, names)) => {
+        Err((error, items)) => {
             let mut out = error.to_compile_error();
-            out.extend(codegen::stubs(&names));
+            out.extend(codegen::stubs(&items));
             out
         }
     }

@@ -114,6 +114,8 @@ pub struct Shoe {
     pub inner_offset: Num,
     pub pins: Vec<Vec2>,
     pub pin_radius: Num,
+    /// The track's width, m, if declared (soft soil needs it).
+    pub width: Option<Num>,
 }
 
 /// A declared contact pair: a normal law replacing the default, and

@@ -125,14 +125,90 @@ pub enum SimulationError {
         /// The failure.
         source: DynamicsError,
     },
-    /// The simulation was set up wrongly (before any step).
-    #[error("invalid simulation set-up: {0}")]
-    Setup(String),
+    /// A state handed to a system had the wrong number of values (a
+    /// programming error of the caller).
+    #[error("a state of {got} values for a system of {expected} at t = {t} s")]
+    StateLength {
+        /// Time, s.
+        t: f64,
+        /// Values given.
+        got: usize,
+        /// The system's dimension.
+        expected: usize,
+    },
+    /// A system recorded a row of the wrong width (a programming error of
+    /// its [`Simulated::observe`](crate::system::Simulated::observe)).
+    #[error("the system recorded {got} values at t = {t} s for its {expected} columns")]
+    RecordWidth {
+        /// Time, s.
+        t: f64,
+        /// Values recorded.
+        got: usize,
+        /// Columns named.
+        expected: usize,
+    },
+    /// The system stopped the run for a reason of its own (a condition a
+    /// user-defined [`OdeSystem`](crate::integrate::OdeSystem) watches).
+    #[error("the system stopped the run at t = {t} s: {reason}")]
+    Stopped {
+        /// Time, s.
+        t: f64,
+        /// Why, in words.
+        reason: &'static str,
+    },
+    /// The run's settings make no run (before any step).
+    #[error("invalid run settings: {0}")]
+    Settings(#[from] SettingsError),
+}
+
+/// Run settings that would hang a run or make it meaningless.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SettingsError {
+    /// The interval is not from a finite start to a later finite end.
+    #[error("the run must go from a finite t0 to a later finite t_end, got {t0} to {t_end}")]
+    Interval {
+        /// Start, s.
+        t0: f64,
+        /// End, s.
+        t_end: f64,
+    },
+    /// A fixed step that is not finite and positive (or too small to
+    /// advance t).
+    #[error("the step must be finite and positive, got {step}")]
+    Step {
+        /// The step, s.
+        step: f64,
+    },
+    /// Tolerances negative, not finite, or both zero.
+    #[error(
+        "tolerances must be non-negative, finite and not both zero, got rtol {rtol}, atol {atol}"
+    )]
+    Tolerances {
+        /// Relative tolerance.
+        rtol: f64,
+        /// Absolute tolerance.
+        atol: f64,
+    },
+    /// A largest step that is not positive.
+    #[error("max_step must be positive, got {max_step}")]
+    MaxStep {
+        /// The largest step, s.
+        max_step: f64,
+    },
+    /// An output interval that is not finite and positive.
+    #[error("the output interval must be finite and positive, got {interval}")]
+    OutputInterval {
+        /// The interval, s.
+        interval: f64,
+    },
+    /// Output times not finite, or decreasing.
+    #[error("output times must be finite and non-decreasing")]
+    OutputTimes,
 }
 
 impl SimulationError {
-    /// The simulation time at which the error happened (`None` for a set-up
-    /// error).
+    /// The simulation time at which the error happened (`None` for bad
+    /// settings).
     pub fn time(&self) -> Option<f64> {
         match self {
             SimulationError::NonFinite { t, .. }
@@ -142,8 +218,11 @@ impl SimulationError {
             | SimulationError::StepSizeUnderflow { t, .. }
             | SimulationError::SingularPartition { t, .. }
             | SimulationError::SingularMatrix { t, .. }
-            | SimulationError::Dynamics { t, .. } => Some(*t),
-            SimulationError::Setup(_) => None,
+            | SimulationError::Dynamics { t, .. }
+            | SimulationError::StateLength { t, .. }
+            | SimulationError::RecordWidth { t, .. }
+            | SimulationError::Stopped { t, .. } => Some(*t),
+            SimulationError::Settings(_) => None,
         }
     }
 }

@@ -370,7 +370,7 @@ fn root(tree: &Tree, up: &[Option<Up>], rt: &TokenStream) -> TokenStream {
         let (c00, c01, c02) = (a11 * a22 - a12 * a12, a02 * a12 - a01 * a22, a01 * a12 - a02 * a11);
         let det = a00 * c00 + a01 * c01 + a02 * c02;
         if !(det > 0.0 && det.is_finite()) {
-            return ::core::result::Result::Err(#rt::runtime::DynamicsError::MassMatrixNotPositiveDefinite);
+            return ::core::result::Result::Err(#rt::DynamicsError::MassMatrixNotPositiveDefinite);
         }
         let (c11, c12, c22) = (a00 * a22 - a02 * a02, a01 * a02 - a00 * a12, a00 * a11 - a01 * a01);
         let #ajx = (c00 * r0 + c01 * r1 + c02 * r2) / det;

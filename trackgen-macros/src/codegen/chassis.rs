@@ -98,8 +98,9 @@ fn chassis_type(
                 let (k, c, t) = (&a.stiffness, &a.damping, &a.preload);
                 let (low, high) = (&a.travel.x, &a.travel.y);
                 quote! {
-                    ::core::option::Option::Some(#rt::runtime::ArmSpring {
-                        body: #arm_body, stiffness: #k, damping: #c, preload: #t,
+                    ::core::option::Option::Some(#rt::ArmSpring {
+                        body: #arm_body,
+                        spring: #rt::TorsionSpring { stiffness: #k, damping: #c, preload: #t },
                         travel: (#low, #high),
                     })
                 }
@@ -107,8 +108,8 @@ fn chassis_type(
             _ => quote!(::core::option::Option::None),
         };
         quote! {
-            #rt::runtime::ChassisPart {
-                name: #label, kind: #rt::runtime::PartKind::#kind, body: #body, radius: #radius, teeth: #teeth,
+            #rt::ChassisPart {
+                name: #label, kind: #rt::PartKind::#kind, body: #body, radius: #radius, teeth: #teeth,
                 arm: #arm,
             }
         }
@@ -144,8 +145,8 @@ fn chassis_type(
 
         #recursive
 
-        impl #rt::runtime::ChassisModel<#dof> for #name {
-            const PARTS: &'static [#rt::runtime::ChassisPart] = &[#(#parts),*];
+        impl #rt::ChassisModel<#dof> for #name {
+            const PARTS: &'static [#rt::ChassisPart] = &[#(#parts),*];
         }
     }
 }

@@ -172,9 +172,9 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
         e(fields.inv_mass.at(quote!(0usize))),
         e(fields.inv_mass.at(quote!(#m))),
     );
-    let singular = quote!(#rt::runtime::DynamicsError::SingularJointSystem);
+    let singular = quote!(#rt::DynamicsError::SingularJointSystem);
     let v2 = quote!(#rt::nalgebra::Vector2::<f64>);
-    let elimination = quote!(#rt::runtime::dynamics::elimination);
+    let elimination = quote!(#rt::elimination);
     // Joint j's row: its blocks from its two links' terms, and for a
     // constrained loop the closing joint's columns (b₀ = L₁ at joint 0,
     // b_m = L_nᵀ at joint n − 1).
@@ -196,14 +196,14 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
     // A loop of fewer than 3 links cannot close.
     let constrained = if n >= 3 {
         quote! {
-            #rt::runtime::dynamics::ClosingJoint::Constrained { stabilisation } => {
+            #rt::ClosingJoint::Constrained { stabilisation } => {
                 solve::<true>(trig, qd, loads, stabilisation, <#v2>::zeros(), qdd, joint_forces, links, joints)
             }
         }
     } else {
         quote! {
-            #rt::runtime::dynamics::ClosingJoint::Constrained { .. } => {
-                ::core::result::Result::Err(#rt::runtime::DynamicsError::WrongLength {
+            #rt::ClosingJoint::Constrained { .. } => {
+                ::core::result::Result::Err(#rt::DynamicsError::WrongLength {
                     what: "links of a closed loop (at least 3)",
                     expected: 3,
                     got: #n,
@@ -216,25 +216,25 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
             &self,
             trig: &[(f64, f64)],
             qd: &#rt::nalgebra::SVector<f64, #dof>,
-            loads: &[#rt::runtime::BodyLoad],
-            closing: #rt::runtime::dynamics::ClosingJoint,
+            loads: &[#rt::BodyLoad],
+            closing: #rt::ClosingJoint,
             qdd: &mut #rt::nalgebra::SVector<f64, #dof>,
             joint_forces: &mut [#v2],
-        ) -> ::core::result::Result<(), #rt::runtime::DynamicsError> {
+        ) -> ::core::result::Result<(), #rt::DynamicsError> {
             // Spec §5, specialised for a constrained (`CLOSED`) or a cut
             // loop; see `trackgen-macros/src/codegen/linear_time.rs`.
             #[inline(always)]
             fn solve<const CLOSED: bool>(
                 trig: &[(f64, f64); #n],
                 qd: &#rt::nalgebra::SVector<f64, #dof>,
-                loads: &[#rt::runtime::BodyLoad],
+                loads: &[#rt::BodyLoad],
                 stabilisation: #v2,
                 cut: #v2,
                 qdd: &mut #rt::nalgebra::SVector<f64, #dof>,
                 joint_forces: &mut [#v2; #n],
                 links: &mut [#elimination::LinkTerms; #n],
                 joints: &mut [#elimination::JointTerms; #m],
-            ) -> ::core::result::Result<(), #rt::runtime::DynamicsError> {
+            ) -> ::core::result::Result<(), #rt::DynamicsError> {
                 const N: usize = #n;
                 const M: usize = #m;
                 #tables
@@ -409,7 +409,7 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
             );
             #elimination::with_tables::<#n, #m, _>(|links, joints| match closing {
                 #constrained
-                #rt::runtime::dynamics::ClosingJoint::Cut { force } => {
+                #rt::ClosingJoint::Cut { force } => {
                     solve::<false>(trig, qd, loads, <#v2>::zeros(), force, qdd, joint_forces, links, joints)
                 }
             })

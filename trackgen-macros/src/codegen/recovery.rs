@@ -58,17 +58,17 @@ pub fn cut_dynamics(track: &Track) -> TokenStream {
                     gap += <#v2>::new(ax, ay);
                     rate += <#v2>::new(-ay, ax) * qd[2 + j];
                 }
-                let joint = #rt::runtime::closure::PenaltyJoint { stiffness: #stiffness, damping: #damping };
-                #rt::runtime::dynamics::ClosingJoint::Cut { force: joint.force(gap, rate) }
+                let joint = #rt::PenaltyJoint { stiffness: #stiffness, damping: #damping };
+                #rt::ClosingJoint::Cut { force: joint.force(gap, rate) }
             }}
         }
-        _ => quote!(#rt::runtime::dynamics::ClosingJoint::OPEN),
+        _ => quote!(#rt::ClosingJoint::OPEN),
     };
     quote! {
         ::core::assert_eq!(trig.len(), #n, "one (sin θ, cos θ) per link");
         let closing = #closing;
         let mut forces = [<#v2>::zeros(); #n];
-        #rt::runtime::TrackModel::linear_time_dynamics(self, trig, qd, loads, closing, qdd, &mut forces)
+        #rt::TrackModel::linear_time_dynamics(self, trig, qd, loads, closing, qdd, &mut forces)
     }
 }
 
@@ -105,7 +105,7 @@ pub fn recovery(track: &Track) -> TokenStream {
             let trig: &mut [(f64, f64); N] = trig.try_into().expect("one (sin θ, cos θ) per link");
             let [k, l] = pair;
             ::core::assert!(k != l && k < N && l < N, "the dependent pair: two different links");
-            #rt::runtime::sin_cos_each(&q.as_slice()[2..], trig);
+            #rt::sin_cos_each(&q.as_slice()[2..], trig);
             // C and C_q q̇ over every link, then without the pair's share.
             let (mut cx, mut cy, mut vx, mut vy) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
             for j in 0..N {
@@ -126,7 +126,7 @@ pub fn recovery(track: &Track) -> TokenStream {
             // det C_d = aₖₓ a_l_y − aₖ_y a_lₓ, C_d⁻¹ = [[a_lₓ, a_l_y], [−aₖₓ, −aₖ_y]] / det.
             let mut iteration = 0usize;
             let (ak, al) = loop {
-                let (tk, tl) = (#rt::runtime::sin_cos(q[2 + k]), #rt::runtime::sin_cos(q[2 + l]));
+                let (tk, tl) = (#rt::sin_cos(q[2 + k]), #rt::sin_cos(q[2 + l]));
                 let (ak, al) = (turn(tk, dk), turn(tl, dl));
                 let (gx, gy) = (rest.0 + ak.0 + al.0, rest.1 + ak.1 + al.1);
                 let residual = (gx * gx + gy * gy).sqrt();

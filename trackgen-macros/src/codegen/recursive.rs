@@ -81,10 +81,10 @@ pub fn recursive_impl(
     let potential_energy = flatten(quote! { #trig #positions #potential #extra_potential });
     quote! {
         #[allow(unused_variables, clippy::all, clippy::pedantic)]
-        impl #rt::runtime::RecursiveModel<#dof> for #name {
+        impl #rt::RecursiveModel<#dof> for #name {
             const BODIES: usize = #n;
 
-            fn description(&self) -> #rt::runtime::TreeDescription {
+            fn description(&self) -> #rt::TreeDescription {
                 #description
             }
 
@@ -107,7 +107,7 @@ pub fn recursive_impl(
                 velocities: &mut [#rt::nalgebra::Vector2<f64>],
             ) {
                 let mut trig = [(0.0f64, 1.0f64); #n];
-                #rt::runtime::sin_cos_each(&q.as_slice()[2..], &mut trig);
+                #rt::sin_cos_each(&q.as_slice()[2..], &mut trig);
                 self.body_states_with_trig(&trig, q, qd, positions, velocities);
             }
 
@@ -138,7 +138,7 @@ pub fn recursive_impl(
                 &self,
                 #q,
                 #qd,
-                loads: &[#rt::runtime::BodyLoad],
+                loads: &[#rt::BodyLoad],
                 out: &mut #rt::nalgebra::SVector<f64, #dof>,
             ) {
                 #generalized_forces
@@ -149,7 +149,7 @@ pub fn recursive_impl(
                 &self,
                 #q,
                 #qd,
-                loads: &[#rt::runtime::BodyLoad],
+                loads: &[#rt::BodyLoad],
                 mass: &mut #rt::nalgebra::SMatrix<f64, #dof, #dof>,
                 forces: &mut #rt::nalgebra::SVector<f64, #dof>,
             ) {
@@ -160,9 +160,9 @@ pub fn recursive_impl(
                 &self,
                 trig: &[(f64, f64)],
                 #qd,
-                loads: &[#rt::runtime::BodyLoad],
+                loads: &[#rt::BodyLoad],
                 qdd: &mut #rt::nalgebra::SVector<f64, #dof>,
-            ) -> ::core::result::Result<(), #rt::runtime::DynamicsError> {
+            ) -> ::core::result::Result<(), #rt::DynamicsError> {
                 #tree_dynamics
             }
 
@@ -181,8 +181,8 @@ pub fn recursive_impl(
 /// slice of another length is a bug.
 pub(super) fn loads_or_zero(n: usize, rt: &TokenStream) -> TokenStream {
     quote! {
-        let no_loads = [#rt::runtime::BodyLoad::ZERO; #n];
-        let loads: &[#rt::runtime::BodyLoad] = if loads.is_empty() {
+        let no_loads = [#rt::BodyLoad::ZERO; #n];
+        let loads: &[#rt::BodyLoad] = if loads.is_empty() {
             &no_loads
         } else {
             ::core::assert_eq!(loads.len(), #n, "one load per body, or none");

@@ -1,18 +1,171 @@
-//! After an error: a unit struct for every name that parsed, so code that
-//! mentions the type reports nothing more than the real error.
+//! After an error: every item a declaration would generate, as a stub, so
+//! that code using any of them reports nothing more than the real error
+//! (thiserror-impl's way). The stubs' methods are never run: the crate
+//! does not compile.
+//!
+//! A track becomes its unit struct with `LINKS` and the model traits for
+//! any coordinate count; a vehicle also `NameTrack`, `NameChassis` (with
+//! the body-index constants of the parts that parsed), `TRACK_DOF`,
+//! `CHASSIS_DOF`, `TRACK`, `CHASSIS`, `NameSystem` and, if it has a shoe,
+//! its `Vehicle` impl.
 
 use proc_macro2::TokenStream;
-use quote::quote;
+use quote::{format_ident, quote};
 use syn::{Ident, Visibility};
 
-pub fn stubs(names: &[(Visibility, Ident)]) -> TokenStream {
-    names
-        .iter()
-        .map(|(vis, name)| {
-            quote! {
+use super::runtime;
+use crate::ir::{Item, ItemKind};
+
+pub fn stubs(items: &[Item]) -> TokenStream {
+    items.iter().map(stub).collect()
+}
+
+fn stub(item: &Item) -> TokenStream {
+    let (vis, name) = (&item.vis, &item.name);
+    match &item.kind {
+        ItemKind::Track(track) => {
+            let links = track.links.len();
+            let mut out = unit(vis, name);
+            out.extend(quote! {
+                impl #name {
+                    #[allow(dead_code)]
+                    pub const LINKS: usize = #links;
+                }
+            });
+            out.extend(models(name, false));
+            out
+        }
+        ItemKind::Vehicle(vehicle) => {
+            let track = format_ident!("{}Track", name);
+            let chassis = format_ident!("{}Chassis", name);
+            let links = vehicle.track.links.len();
+            let dofs = (links + 2, vehicle.chassis.len() + 2);
+            let mut out = unit(vis, name);
+            out.extend(unit(vis, &track));
+            out.extend(unit(vis, &chassis));
+            // A part named twice is one of the errors: its constant once.
+            let mut seen = std::collections::BTreeSet::new();
+            let parts = vehicle
+                .parts
+                .iter()
+                .zip(&vehicle.part_bodies)
+                .filter(|(p, _)| seen.insert(p.name.to_string()))
+                .map(|(p, &(body, arm))| {
+                    let konst = format_ident!("{}", p.name.to_string().to_uppercase());
+                    let arm = arm.map(|arm| {
+                        let konst = format_ident!("{}_ARM", p.name.to_string().to_uppercase());
+                        quote!(pub const #konst: usize = #arm;)
+                    });
+                    quote!(pub const #konst: usize = #body; #arm)
+                });
+            out.extend(quote! {
                 #[allow(dead_code)]
-                #vis struct #name;
+                impl #name {
+                    pub const TRACK: #track = #track;
+                    pub const CHASSIS: #chassis = #chassis;
+                }
+                #[allow(dead_code)]
+                impl #track {
+                    pub const LINKS: usize = #links;
+                }
+                #[allow(dead_code)]
+                impl #chassis {
+                    pub const FRAME: usize = 0;
+                    #(#parts)*
+                }
+            });
+            out.extend(models(&track, false));
+            out.extend(models(&chassis, true));
+            out.extend(super::running::common(vis, name, (&track, &chassis), dofs));
+            if vehicle.running.is_some() {
+                out.extend(vehicle_impl(name, (&track, &chassis), dofs));
             }
-        })
-        .collect()
+            out
+        }
+    }
+}
+
+fn unit(vis: &Visibility, name: &Ident) -> TokenStream {
+    quote! {
+        #[allow(dead_code)]
+        #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Hash)]
+        #vis struct #name;
+    }
+}
+
+/// `RecursiveModel` and `TrackModel` (or `ChassisModel`) for any
+/// coordinate count.
+fn models(name: &Ident, chassis: bool) -> TokenStream {
+    let rt = runtime();
+    let never = quote!(::core::unreachable!("the declaration did not compile"));
+    let v = quote!(#rt::nalgebra::SVector<f64, D>);
+    let last = if chassis {
+        quote! {
+            impl<const D: usize> #rt::ChassisModel<D> for #name {
+                const PARTS: &'static [#rt::ChassisPart] = &[];
+            }
+        }
+    } else {
+        quote! {
+            #[allow(unused_variables)]
+            impl<const D: usize> #rt::TrackModel<D> for #name {
+                const CLOSURE: #rt::Closure = #rt::Closure::Open;
+                fn closure(&self, q: &#v) -> #rt::nalgebra::Vector2<f64> { #never }
+                fn closure_jacobian(&self, q: &#v) -> #rt::nalgebra::SMatrix<f64, 2, D> { #never }
+                fn closure_gamma(&self, q: &#v, qd: &#v) -> #rt::nalgebra::Vector2<f64> { #never }
+                fn recover_closure(
+                    &self, q: &mut #v, qd: &mut #v, pair: [usize; 2], tolerance: f64,
+                    max_iterations: usize, trig: &mut [(f64, f64)],
+                ) -> ::core::result::Result<usize, (usize, f64)> { #never }
+                fn closure_columns(&self, trig: &[(f64, f64)], out: &mut [#rt::nalgebra::Vector2<f64>]) { #never }
+                fn linear_time_dynamics(
+                    &self, trig: &[(f64, f64)], qd: &#v, loads: &[#rt::BodyLoad],
+                    closing: #rt::ClosingJoint, qdd: &mut #v,
+                    joint_forces: &mut [#rt::nalgebra::Vector2<f64>],
+                ) -> ::core::result::Result<(), #rt::DynamicsError> { #never }
+            }
+        }
+    };
+    quote! {
+        #[allow(unused_variables)]
+        impl<const D: usize> #rt::RecursiveModel<D> for #name {
+            const BODIES: usize = 0;
+            fn description(&self) -> #rt::TreeDescription { #never }
+            fn body_positions(&self, q: &#v, out: &mut [#rt::nalgebra::Vector2<f64>]) { #never }
+            fn body_velocities(&self, q: &#v, qd: &#v, out: &mut [#rt::nalgebra::Vector2<f64>]) { #never }
+            fn velocity_terms(&self, q: &#v, qd: &#v, out: &mut [#rt::nalgebra::Vector2<f64>]) { #never }
+            fn mass_matrix(&self, q: &#v, out: &mut #rt::nalgebra::SMatrix<f64, D, D>) { #never }
+            fn generalized_forces(&self, q: &#v, qd: &#v, loads: &[#rt::BodyLoad], out: &mut #v) { #never }
+            fn tree_dynamics(
+                &self, trig: &[(f64, f64)], qd: &#v, loads: &[#rt::BodyLoad], qdd: &mut #v,
+            ) -> ::core::result::Result<(), #rt::DynamicsError> { #never }
+            fn kinetic_energy(&self, q: &#v, qd: &#v) -> f64 { #never }
+            fn potential_energy(&self, q: &#v) -> f64 { #never }
+        }
+        #last
+    }
+}
+
+/// The `Vehicle` impl of a vehicle with a shoe.
+fn vehicle_impl(name: &Ident, (track, chassis): (&Ident, &Ident), (dt, dc): (usize, usize)) -> TokenStream {
+    let rt = runtime();
+    let never = quote!(::core::unreachable!("the declaration did not compile"));
+    let system = format_ident!("{}System", name);
+    let label = name.to_string();
+    quote! {
+        #[allow(unused_variables)]
+        impl #rt::Vehicle for #name {
+            const NAME: &'static str = #label;
+            const TRACK_DOF: usize = #dt;
+            const CHASSIS_DOF: usize = #dc;
+            type Track = #track;
+            type Chassis = #chassis;
+            type System = #system;
+            fn geometry() -> #rt::Geometry { #never }
+            fn config(terrain: #rt::Terrain, drive: #rt::Drive) -> #rt::VehicleConfig { #never }
+            fn speed_drive(
+                target: impl ::core::ops::Fn(f64) -> f64 + ::core::marker::Send + 'static,
+            ) -> #rt::Drive { #never }
+        }
+    }
 }

@@ -68,16 +68,16 @@ pub fn track_type(
     let n = tree.len();
     let dof = n + 2;
     let closure = match &track.closure {
-        Closure::Open => quote!(#rt::runtime::Closure::Open),
-        Closure::Partitioned => quote!(#rt::runtime::Closure::Partitioned),
+        Closure::Open => quote!(#rt::Closure::Open),
+        Closure::Partitioned => quote!(#rt::Closure::Partitioned),
         Closure::Penalty { stiffness, damping } => {
-            quote!(#rt::runtime::Closure::Penalty(#rt::runtime::closure::PenaltyJoint { stiffness: #stiffness, damping: #damping }))
+            quote!(#rt::Closure::Penalty(#rt::PenaltyJoint { stiffness: #stiffness, damping: #damping }))
         }
     };
     let (first, last) = (&track.links[0].u1, &track.links[n - 1].u2);
     let (fx, fy, lx, ly) = (&first.x, &first.y, &last.x, &last.y);
     let loop_joint = quote! {
-        ::core::option::Option::Some(#rt::runtime::LoopJoint {
+        ::core::option::Option::Some(#rt::LoopJoint {
             closure: #closure,
             first_u1: #rt::nalgebra::Vector2::new(#fx, #fy),
             last_u2: #rt::nalgebra::Vector2::new(#lx, #ly),
@@ -109,8 +109,8 @@ pub fn track_type(
         #recursive
 
         #[allow(unused_variables, clippy::all, clippy::pedantic)]
-        impl #rt::runtime::TrackModel<#dof> for #name {
-            const CLOSURE: #rt::runtime::Closure = #closure;
+        impl #rt::TrackModel<#dof> for #name {
+            const CLOSURE: #rt::Closure = #closure;
             #closure_fns
             #linear_time
             #recovery
@@ -120,14 +120,16 @@ pub fn track_type(
 
 /// `½ k |C|²` for a penalty-closed track, with positions' trig bound.
 fn penalty_energy(track: &Track, tree: &Tree) -> Option<TokenStream> {
-    let Closure::Penalty { stiffness, .. } = &track.closure else {
+    let Closure::Penalty { stiffness, damping } = &track.closure else {
         return None;
     };
+    let rt = runtime();
     let gap = gap(tree, track);
     let (x, y) = (gap.x.tokens(), gap.y.tokens());
-    Some(
-        quote! {{ let gap_x = #x; let gap_y = #y; 0.5 * #stiffness * (gap_x * gap_x + gap_y * gap_y) }},
-    )
+    Some(quote! {
+        #rt::PenaltyJoint { stiffness: #stiffness, damping: #damping }
+            .energy(#rt::nalgebra::Vector2::new(#x, #y))
+    })
 }
 
 /// `C = Σ Aʲ d̄ʲ` (spec §2).

@@ -116,7 +116,7 @@ impl Tree {
         let (n, from_slice) = (self.len(), self.trig_from_slice());
         quote! {
             let mut trig = [(0.0f64, 1.0f64); #n];
-            #rt::runtime::sin_cos_each(&q.as_slice()[2..], &mut trig);
+            #rt::sin_cos_each(&q.as_slice()[2..], &mut trig);
             #from_slice
         }
     }
@@ -460,9 +460,14 @@ impl Tree {
         out.extend(gap.bind(&(format_ident!("gap_x"), format_ident!("gap_y"))));
         out.extend(rate.bind(&(format_ident!("rate_x"), format_ident!("rate_y"))));
         let (k, c) = (&penalty.stiffness, &penalty.damping);
+        let rt = super::runtime();
+        // The runtime's law, the one owner of `F = −k C − c Ċ`.
         out.extend(quote! {
-            let pen_x = -(#k) * gap_x - (#c) * rate_x;
-            let pen_y = -(#k) * gap_y - (#c) * rate_y;
+            let pen = #rt::PenaltyJoint { stiffness: #k, damping: #c }.force(
+                #rt::nalgebra::Vector2::new(gap_x, gap_y),
+                #rt::nalgebra::Vector2::new(rate_x, rate_y),
+            );
+            let (pen_x, pen_y) = (pen.x, pen.y);
         });
         for j in 0..penalty.spans.len() {
             let (kx, ky) = pair("k", &self.bodies[j].tag);
@@ -523,7 +528,7 @@ impl Tree {
             };
             let (px, py, sx, sy) = (&b.at_parent.x, &b.at_parent.y, &b.at_self.x, &b.at_self.y);
             quote! {
-                #rt::runtime::BodyDescription {
+                #rt::BodyDescription {
                     mass: #m, inertia: #j, parent: #parent,
                     at_parent: #rt::nalgebra::Vector2::new(#px, #py),
                     at_self: #rt::nalgebra::Vector2::new(#sx, #sy),
@@ -532,7 +537,7 @@ impl Tree {
         });
         let (gx, gy) = (&self.gravity.x, &self.gravity.y);
         quote! {
-            #rt::runtime::TreeDescription {
+            #rt::TreeDescription {
                 bodies: ::std::vec![#(#bodies),*],
                 gravity: #rt::nalgebra::Vector2::new(#gx, #gy),
                 loop_joint: #loop_joint,

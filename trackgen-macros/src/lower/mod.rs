@@ -54,9 +54,9 @@ impl Errors {
     }
 }
 
-/// Lowers a parsed input. On error, also returns the names that did parse,
-/// so stubs can be emitted for them.
-pub fn lower(input: Input) -> Result<Model, (syn::Error, Vec<(syn::Visibility, Ident)>)> {
+/// Lowers a parsed input. On error, also returns the items as far as they
+/// lowered, so stubs can be emitted for everything they would generate.
+pub fn lower(input: Input) -> Result<Model, (syn::Error, Vec<Item>)> {
     let mut errors = Errors::default();
     let mut items = Vec::new();
     let mut names: BTreeMap<String, Ident> = BTreeMap::new();
@@ -68,7 +68,7 @@ pub fn lower(input: Input) -> Result<Model, (syn::Error, Vec<(syn::Visibility, I
     }
     match errors.finish() {
         Ok(()) => Ok(Model { items }),
-        Err(e) => Err((e, items.into_iter().map(|i| (i.vis, i.name)).collect())),
+        Err(e) => Err((e, items)),
     }
 }
 

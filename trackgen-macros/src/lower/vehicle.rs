@@ -652,20 +652,22 @@ impl Cx<'_> {
         })
     }
 
-    /// `shoe { ground_points, inner_offset, pins, pin_radius }`.
+    /// `shoe { ground_points, inner_offset, pins, pin_radius, width? }`.
     fn shoe(&mut self, block: &crate::parse::Block) -> Option<Shoe> {
-        let keys = ["ground_points", "inner_offset", "pins", "pin_radius"];
+        let keys = ["ground_points", "inner_offset", "pins", "pin_radius", "width"];
         let fields = self.fields("shoe", block, &keys);
         self.sections("shoe", block, &[]);
         let ground_points = self.points(&fields, "ground_points", true);
         let inner_offset = self.positive(&fields, "inner_offset", true);
         let pins = self.points(&fields, "pins", true);
         let pin_radius = self.positive(&fields, "pin_radius", true);
+        let width = self.positive(&fields, "width", false);
         Some(Shoe {
             ground_points: ground_points?,
             inner_offset: inner_offset?,
             pins: pins?,
             pin_radius: pin_radius?,
+            width,
         })
     }
 

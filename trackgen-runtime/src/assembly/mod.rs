@@ -18,15 +18,48 @@
 
 mod belt;
 mod path;
+mod vehicle;
 
 use std::fmt;
 
 use nalgebra::{SVector, Vector2};
 use thiserror::Error;
 
-use crate::model::TrackModel;
+use crate::model::{PartKind, TrackModel};
 pub(crate) use belt::longest_upper_span;
 use path::{Path, Place};
+pub use vehicle::{Assembled, START_PENETRATION, assemble};
+
+/// What an assembled start puts a shoe inside.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Touching {
+    /// The ground.
+    Ground,
+    /// A part pinned to the chassis.
+    Part {
+        /// What it is.
+        kind: PartKind,
+        /// Its declared name.
+        name: &'static str,
+    },
+}
+
+impl fmt::Display for Touching {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Touching::Ground => f.write_str("the ground"),
+            Touching::Part { kind, name } => {
+                let kind = match kind {
+                    PartKind::Sprocket => "sprocket",
+                    PartKind::Idler => "idler",
+                    PartKind::RoadWheel => "road wheel",
+                    PartKind::Roller => "roller",
+                };
+                write!(f, "{kind} `{name}`")
+            }
+        }
+    }
+}
 
 /// A wheel the track wraps, as its pitch circle: the circle the joints lie
 /// on where the track runs round it.
@@ -154,17 +187,16 @@ pub enum AssemblyError {
         /// The closest landing, m of belt.
         gap: f64,
     },
-    /// The assembled start puts a shoe deeper than
-    /// [`START_PENETRATION`](crate::vehicle::START_PENETRATION) into a
-    /// wheel, the sprocket or the ground.
+    /// The assembled start puts a shoe deeper than [`START_PENETRATION`]
+    /// into a wheel, the sprocket or the ground.
     #[error(
         "the assembled track starts {:.1} mm inside {what} (link {link}); a start may be at most {:.0} mm deep",
         depth * 1e3,
-        crate::vehicle::START_PENETRATION * 1e3
+        START_PENETRATION * 1e3
     )]
     StartsInside {
-        /// What the shoe is inside (`the ground`, `road wheel \`rw3\``, …).
-        what: String,
+        /// What the shoe is inside.
+        what: Touching,
         /// The link, numbered from 1.
         link: usize,
         /// How deep, m.
@@ -174,6 +206,10 @@ pub enum AssemblyError {
     /// parameter, a bad table).
     #[error(transparent)]
     Terrain(#[from] crate::contact::TerrainError),
+    /// The track's links differ in length: its sprocket and pitch circles
+    /// need one pitch.
+    #[error(transparent)]
+    Pitch(#[from] crate::model::PitchError),
 }
 
 /// The most the upper run may sag: a quarter of a span's length, below

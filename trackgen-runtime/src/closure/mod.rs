@@ -9,17 +9,62 @@
 //!   integrated with the multiplier form of spec §2, with Baumgarte
 //!   stabilisation and a projection onto `C = 0`, `C_q q̇ = 0` after each
 //!   step.
-//! * **Penalty** ([`penalty`], paper Fig. 5): the closing joint is cut and
+//! * **Penalty** ([`PenaltyJoint`], paper Fig. 5): the closing joint is cut and
 //!   replaced by a spring-damper; the chain is open and the loop closes only
 //!   as well as the spring is stiff.
 
 pub mod multipliers;
 pub mod partitioning;
-pub mod penalty;
 
 pub use multipliers::{MultiplierOptions, ProjectionFailure};
-pub use partitioning::PartitionOptions;
-pub use penalty::PenaltyJoint;
+pub use partitioning::{PartitionOptions, Switch};
+
+use thiserror::Error;
+
+use crate::laws::{ParameterError, PenaltyJoint};
+
+/// Why a track's loop cannot be closed as asked, at the start of a run.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum ClosureError {
+    /// A closure method was chosen for a track declared open.
+    #[error("the track is declared `closure: open`; declare it `partitioned` to close its loop")]
+    DeclaredOpen,
+    /// A closure method was chosen for a track declared with a penalty
+    /// joint.
+    #[error(
+        "the track is declared with a penalty joint; declare it `partitioned` to choose the closure method at run time"
+    )]
+    DeclaredPenalty,
+    /// A run-time penalty joint with a parameter out of range.
+    #[error("penalty joint: {0}")]
+    Penalty(#[from] ParameterError),
+    /// The partition's starting pair is not two different links.
+    #[error("initial_pair {pair:?}: two different links from 1 to {links}")]
+    InitialPair {
+        /// The pair asked for (numbered from 1).
+        pair: [usize; 2],
+        /// The number of links.
+        links: usize,
+    },
+    /// The dependent pair's Newton-Raphson did not close the loop at the
+    /// start.
+    #[error(
+        "the start does not close: Newton-Raphson left |C| = {residual:e} m after {iterations} iterations"
+    )]
+    StartNotClosed {
+        /// Iterations taken.
+        iterations: usize,
+        /// `|C|` at the last iterate, m.
+        residual: f64,
+    },
+    /// The starting pair's block `C_d` is singular.
+    #[error("the starting pair's C_d is singular (the two links parallel)")]
+    SingularStart,
+    /// The start could not be projected onto the closure (multipliers, a
+    /// run-time penalty joint).
+    #[error("the initial state cannot be projected onto the loop closure: {0}")]
+    Projection(#[from] ProjectionFailure),
+}
 
 /// How a simulation closes a track's loop.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -42,11 +42,13 @@ impl MultiplierOptions {
 }
 
 /// Why a projection onto the closure failed.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
 pub enum ProjectionFailure {
     /// `C_q C_qᵀ` is singular (every link of the loop parallel).
+    #[error("C_q C_qᵀ is singular (every link of the loop parallel)")]
     Singular,
     /// Gauss-Newton did not reach the tolerance.
+    #[error("Gauss-Newton left |C| = {residual:e} m after {iterations} iterations")]
     NotConverged {
         /// Iterations taken.
         iterations: usize,

@@ -1,10 +1,29 @@
 //! Generalised coordinate partitioning with switching of the dependent
 //! pair (spec §2; Wehage & Haug; the paper's eqs. (18)-(21)).
 
-use nalgebra::{DMatrix, DVector, Matrix2, SMatrix, SVector, Vector2};
+#[cfg(feature = "oracle")]
+use nalgebra::{DMatrix, DVector, Matrix2};
+use nalgebra::{SMatrix, SVector, Vector2};
 
+use super::ClosureError;
+use crate::error::SimulationError;
 use crate::model::TrackModel;
-use crate::simulate::{SimulationError, Switch};
+
+/// A change of the dependent coordinates of a partitioned track (spec §2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Switch {
+    /// Time, s.
+    pub t: f64,
+    /// The dependent links before (numbered from 1).
+    pub from: [usize; 2],
+    /// The dependent links after.
+    pub to: [usize; 2],
+    /// `|sin|` between the columns of `C_d` of the old pair, which fell
+    /// below the switching threshold.
+    pub conditioning: f64,
+    /// The same for the new pair.
+    pub new_conditioning: f64,
+}
 
 /// Settings of the partitioning method.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -89,6 +108,7 @@ pub(crate) fn best_pair(columns: &[Vector2<f64>]) -> ([usize; 2], f64) {
 }
 
 /// `C_d`, the 2 × 2 block of `C_q` under the dependent angles.
+#[cfg(feature = "oracle")]
 fn block<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> Matrix2<f64> {
     Matrix2::from_columns(&[column(cq, pair[0]), column(cq, pair[1])])
 }
@@ -99,7 +119,9 @@ fn block<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> Matrix2<f
 /// dependent links `pair` (0-based). `None` if a matrix is singular.
 ///
 /// O(n³): the cross-check of the simulation, which takes `z̈` from the
-/// linear-time route (on the closure manifold the two agree).
+/// linear-time route (on the closure manifold the two agree). A test
+/// oracle: built with the `oracle` feature.
+#[cfg(feature = "oracle")]
 pub fn accelerations<const D: usize>(
     mass: &SMatrix<f64, D, D>,
     forces: &SVector<f64, D>,
@@ -132,6 +154,7 @@ pub fn accelerations<const D: usize>(
 }
 
 /// Column `c` of `C_q` (zero for the root's translation).
+#[cfg(feature = "oracle")]
 fn column_any<const D: usize>(cq: &SMatrix<f64, 2, D>, c: usize) -> Vector2<f64> {
     cq.fixed_view::<2, 1>(0, c).into_owned()
 }
@@ -193,17 +216,13 @@ impl Partition {
         model: &M,
         q: &mut SVector<f64, D>,
         qd: &mut SVector<f64, D>,
-    ) -> Result<(), SimulationError> {
+    ) -> Result<(), ClosureError> {
         let links = D - 2;
         self.pair = match self.options.initial_pair {
             Some([a, b]) if a != b && (1..=links).contains(&a) && (1..=links).contains(&b) => {
                 [a - 1, b - 1]
             }
-            Some(p) => {
-                return Err(SimulationError::Setup(format!(
-                    "initial_pair {p:?}: two different links from 1 to {links}"
-                )));
-            }
+            Some(pair) => return Err(ClosureError::InitialPair { pair, links }),
             None => best_pair(&columns(&model.closure_jacobian(q))).0,
         };
         self.independent = independent_coordinates(D, self.pair);
@@ -211,13 +230,9 @@ impl Partition {
         self.recover(model, (q, qd), &mut trig)
             .map_err(|(iterations, residual)| {
                 if residual == 0.0 {
-                    SimulationError::SingularMatrix {
-                        t: 0.0,
-                        what: "C_d at the start",
-                    }
+                    ClosureError::SingularStart
                 } else {
-                    SimulationError::NewtonFailed {
-                        t: 0.0,
+                    ClosureError::StartNotClosed {
                         iterations,
                         residual,
                     }

@@ -1,75 +1,47 @@
-//! Link-ground contact: each shoe's ground points against the terrain.
+//! Where the shoes' ground points meet the terrain.
 
 use nalgebra::Vector2;
 
-use super::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry, Terrain};
-use crate::model::BodyLoad;
+use super::{BodyState, Contact, ShoeGeometry, Terrain};
 
-/// The ground: a terrain profile with its contact laws.
-#[derive(Debug, Clone, PartialEq)]
-pub struct GroundContact {
-    /// The profile.
-    pub terrain: Terrain,
-    /// Normal law per contact point.
-    pub normal: NormalLaw,
-    /// Friction per contact point.
-    pub friction: Friction,
-}
-
-impl GroundContact {
-    /// Forces on the links from the ground, added to `loads` (one per
-    /// link); every active contact is passed to `each`.
-    ///
-    /// Links whose bounding circle clears the highest terrain under the
-    /// whole track are skipped without looking at their points, so the cost
-    /// is one comparison per link plus the links actually near the ground
-    /// (the terrain's highest point is found once, over the track's
-    /// extent).
-    pub fn apply(
-        &self,
-        links: &[BodyState],
-        shoe: &ShoeGeometry,
-        loads: &mut [BodyLoad],
-        mut each: impl FnMut(usize, &ContactForce),
-    ) {
-        let clear = clear_of(&self.terrain, links, shoe);
-        for (i, link) in links.iter().enumerate() {
-            if clear(link) {
+/// Every shoe ground point below `terrain`, link by link and the shoe's
+/// points in order, appended to `out`.
+///
+/// Penetration is measured vertically, `δ = h(x) − y`: continuous over
+/// kinks, and its exact rate is `−v·g` with `g = (−h′, 1)`, so the elastic
+/// force `g F(δ)` is exactly the gradient of the contact's potential and
+/// the energy books balance on any terrain.
+///
+/// Links whose bounding circle clears the highest terrain under the whole
+/// track are skipped without looking at their points ([`clear_of`]), so
+/// the cost is one comparison per link plus the links actually near the
+/// ground.
+pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: &mut Vec<Contact>) {
+    let clear = clear_of(terrain, links, shoe);
+    for (i, link) in links.iter().enumerate() {
+        if clear(link) {
+            continue;
+        }
+        for (k, local) in shoe.ground_points.iter().enumerate() {
+            let arm = link.arm(*local);
+            let point = link.position + arm;
+            let (h, slope) = terrain.height_and_slope(point.x);
+            let depth = h - point.y;
+            if depth <= 0.0 {
                 continue;
             }
-            for local in &shoe.ground_points {
-                let arm = link.arm(*local);
-                let point = link.position + arm;
-                let (h, slope) = self.terrain.height_and_slope(point.x);
-                // Penetration below the profile, δ = h(x) − y: continuous
-                // over kinks, and its exact rate is −v·g with g = (−h′, 1),
-                // so the elastic force g·F(δ) is exactly the gradient of
-                // the contact's potential and the energy books balance on
-                // any terrain.
-                let penetration = h - point.y;
-                if penetration <= 0.0 {
-                    continue;
-                }
-                let velocity = link.velocity_at(arm);
-                let g = Vector2::new(-slope, 1.0);
-                let rate = -velocity.dot(&g);
-                let normal = self.normal.force(penetration, rate);
-                let tangent = Vector2::new(g.y, -g.x) / g.norm();
-                let slip = velocity.dot(&tangent);
-                let friction = self.friction.force(normal * g.norm(), slip);
-                let force = g * normal + tangent * friction;
-                let contact = ContactForce {
-                    point,
-                    force,
-                    normal: normal * g.norm(),
-                    penetration,
-                    dissipation: (normal - self.normal.elastic_force(penetration)) * rate
-                        - friction * slip,
-                    potential: self.normal.potential(penetration),
-                };
-                loads[i] = loads[i].plus(BodyLoad::force_at(force, arm));
-                each(i, &contact);
-            }
+            let gradient = Vector2::new(-slope, 1.0);
+            out.push(Contact {
+                link: i,
+                other: None,
+                feature: k,
+                point,
+                arm,
+                depth,
+                gradient,
+                gradient_norm: gradient.norm(),
+                velocity: link.velocity_at(arm),
+            });
         }
     }
 }

@@ -1,15 +1,26 @@
 //! Contact between the track and the world (paper part II, which we design
-//! here; spec §4): the normal and friction laws, the terrain, and the three
-//! contact pairs — link and ground, link and wheel (road wheels, idler,
-//! rollers), link pins and sprocket teeth; and the terramechanics laws of
-//! soft soil ([`soil`]).
+//! here; spec §4), in two stages:
 //!
-//! Every pair evaluates forces from positions and velocities only, and
-//! returns them as [`BodyLoad`](crate::BodyLoad)s on both bodies, so the
-//! subsystems stay decoupled everywhere else (spec §3).
+//! 1. **Detection** ([`ground`], [`wheel`], [`sprocket`]): from the bodies'
+//!    states, every [`Contact`] — which link and which other body, the
+//!    point, how deep, which way the normal force pushes and how fast the
+//!    link's point moves against the other's. Geometry only: the assembly
+//!    measures its start with the same functions.
+//! 2. **Response** ([`ContactLaws::respond`], and on soft soil
+//!    [`soft_ground`]): the laws ([`crate::laws`]) turn each contact into a
+//!    [`ContactForce`] — the force with the elastic energy it stores and
+//!    the power it dissipates — applied to both bodies' loads.
+//!
+//! The pairs: the shoes' ground points against a terrain, the shoes' inner
+//! faces against wheel rims (road wheels, idler, rollers), the shoes' pins
+//! against the sprocket's teeth; and the terramechanics laws of soft soil
+//! ([`soil`]). Forces come from positions and velocities only, as
+//! [`BodyLoad`](crate::BodyLoad)s on both bodies, so the subsystems stay
+//! decoupled everywhere else (spec §3).
 
+mod detect;
 pub mod ground;
-pub mod law;
+mod respond;
 pub mod shoe;
 pub mod soft_ground;
 pub mod soil;
@@ -17,13 +28,18 @@ pub mod sprocket;
 pub mod terrain;
 pub mod wheel;
 
-pub use law::{Friction, NormalLaw};
+pub use crate::laws::{Friction, NormalLaw};
+pub use detect::Contact;
+pub use respond::{ContactForce, ContactLaws};
 pub use shoe::ShoeGeometry;
 pub use terrain::{Terrain, TerrainError};
 
 use nalgebra::Vector2;
 
-/// A body in motion: where it is and how fast it moves.
+use crate::planar::{Rotation, spin};
+
+/// A body in motion: where it is and how fast it moves, its rotation
+/// computed once.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BodyState {
     /// Centroid, m.
@@ -34,9 +50,8 @@ pub struct BodyState {
     pub velocity: Vector2<f64>,
     /// Angular velocity, rad/s.
     pub omega: f64,
-    /// `sin` and `cos` of the angle, computed once.
-    sin: f64,
-    cos: f64,
+    /// `A(θ)`, by its `(sin θ, cos θ)`.
+    rotation: Rotation,
 }
 
 impl BodyState {
@@ -50,7 +65,7 @@ impl BodyState {
     pub fn with_sin_cos(
         position: Vector2<f64>,
         angle: f64,
-        (sin, cos): (f64, f64),
+        sin_cos: (f64, f64),
         velocity: Vector2<f64>,
         omega: f64,
     ) -> Self {
@@ -59,20 +74,29 @@ impl BodyState {
             angle,
             velocity,
             omega,
-            sin,
-            cos,
+            rotation: Rotation::from_sin_cos(sin_cos),
         }
+    }
+
+    /// The body at rest: no velocity.
+    pub fn at_rest(position: Vector2<f64>, angle: f64) -> Self {
+        Self::new(position, angle, Vector2::zeros(), 0.0)
     }
 
     /// `(sin θ, cos θ)`.
     pub fn sin_cos(&self) -> (f64, f64) {
-        (self.sin, self.cos)
+        self.rotation.sin_cos()
+    }
+
+    /// `A(θ)`.
+    pub fn rotation(&self) -> Rotation {
+        self.rotation
     }
 
     /// The global offset `A ū` of body point `ū` from the centroid.
     #[inline]
     pub fn arm(&self, local: Vector2<f64>) -> Vector2<f64> {
-        crate::planar::rotate_by((self.sin, self.cos), local)
+        self.rotation.apply(local)
     }
 
     /// Global position of body point `ū`.
@@ -85,7 +109,31 @@ impl BodyState {
     /// centroid: `Ṙ + ω × arm`.
     #[inline]
     pub fn velocity_at(&self, arm: Vector2<f64>) -> Vector2<f64> {
-        self.velocity + Vector2::new(-arm.y, arm.x) * self.omega
+        self.velocity + spin(self.omega, arm)
+    }
+}
+
+/// The contact of link `i` with the chassis body `body` (`other` its
+/// state) at `point`, whose unit `normal` pushes the link out, `depth`
+/// deep: the arms from both centroids and the relative velocity of the
+/// two material points there.
+#[inline]
+pub(crate) fn between(
+    (i, link): (usize, &BodyState),
+    (body, other): (usize, &BodyState),
+    (feature, point, normal, depth): (usize, Vector2<f64>, Vector2<f64>, f64),
+) -> Contact {
+    let arm = point - link.position;
+    Contact {
+        link: i,
+        other: Some(body),
+        feature,
+        point,
+        arm,
+        depth,
+        gradient: normal,
+        gradient_norm: 1.0,
+        velocity: link.velocity_at(arm) - other.velocity_at(point - other.position),
     }
 }
 
@@ -213,72 +261,4 @@ mod tests {
             }
         }
     }
-}
-
-/// One contact's force on the first body of the pair, at a global point.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContactForce {
-    /// Contact point, m.
-    pub point: Vector2<f64>,
-    /// Force on the first body (the track link), N.
-    pub force: Vector2<f64>,
-    /// Normal component (≥ 0), N.
-    pub normal: f64,
-    /// Penetration, m.
-    pub penetration: f64,
-    /// Power the contact dissipates (damping and friction), W.
-    pub dissipation: f64,
-    /// Elastic energy stored in the contact, J.
-    pub potential: f64,
-}
-
-impl ContactForce {
-    /// A contact's force from its laws: normal `n` (unit, on the first
-    /// body), relative velocity `v` of the first body's point against the
-    /// second's.
-    pub(crate) fn evaluate(
-        normal_law: &NormalLaw,
-        friction: &Friction,
-        point: Vector2<f64>,
-        n: Vector2<f64>,
-        penetration: f64,
-        v: Vector2<f64>,
-    ) -> ContactForce {
-        let rate = -v.dot(&n);
-        let fn_ = normal_law.force(penetration, rate);
-        let t = Vector2::new(-n.y, n.x);
-        let slip = v.dot(&t);
-        let ft = friction.force(fn_, slip);
-        // Power lost: the normal force beyond its elastic part times the
-        // closing rate, and friction against slip.
-        let dissipation = (fn_ - normal_law.elastic_force(penetration)) * rate - ft * slip;
-        ContactForce {
-            point,
-            force: n * fn_ + t * ft,
-            normal: fn_,
-            penetration,
-            dissipation,
-            potential: normal_law.potential(penetration),
-        }
-    }
-}
-
-/// A contact between a link and another body (a wheel, the sprocket) at
-/// `point` with `normal` (unit, on the link): the force from the laws on the
-/// relative velocity, added to the link's load and, reversed, to the
-/// other's.
-pub(crate) fn exchange(
-    (normal_law, friction): (&NormalLaw, &Friction),
-    (link, link_load): (&BodyState, &mut crate::model::BodyLoad),
-    (other, other_load): (&BodyState, &mut crate::model::BodyLoad),
-    (point, normal, penetration): (Vector2<f64>, Vector2<f64>, f64),
-) -> ContactForce {
-    use crate::model::BodyLoad;
-    let (link_arm, other_arm) = (point - link.position, point - other.position);
-    let relative = link.velocity_at(link_arm) - other.velocity_at(other_arm);
-    let contact =
-        ContactForce::evaluate(normal_law, friction, point, normal, penetration, relative);
-    *link_load = link_load.plus(BodyLoad::force_at(contact.force, link_arm));
-    *other_load = other_load.plus(BodyLoad::force_at(-contact.force, other_arm));
-    contact
 }

@@ -19,26 +19,13 @@ pub struct ShoeGeometry {
     pub pins: Vec<Vector2<f64>>,
     /// Radius of those cylinders, m.
     pub pin_radius: f64,
+    /// The track's width across the shoe, m, if declared: what soft soil's
+    /// pressure–sinkage law needs (the planar model does not otherwise see
+    /// it).
+    pub width: Option<f64>,
 }
 
 impl ShoeGeometry {
-    /// The M113 single-pin shoe (`shared/spec/m113.md`): pitch 0.154 m,
-    /// height 0.06 m with the pin axis at mid-height (so the faces are
-    /// 0.03 m either side of the pitch line), sprocket cylinders of radius
-    /// 0.015 m at x = +0.0535 and −0.061 m. The ground face touches at two
-    /// points 0.12 m apart. The same figures as the `shoe` of the M113's
-    /// declaration (`trackgen::vehicles::m113`, `M113::shoe()`), which is
-    /// their home; this copy serves runtime-level tests, and
-    /// `tests/vehicle_declaration.rs` holds the two equal.
-    pub fn m113() -> ShoeGeometry {
-        ShoeGeometry {
-            ground_points: vec![Vector2::new(-0.06, -0.03), Vector2::new(0.06, -0.03)],
-            inner_face: [Vector2::new(-0.077, 0.03), Vector2::new(0.077, 0.03)],
-            pins: vec![Vector2::new(0.0535, 0.0), Vector2::new(-0.061, 0.0)],
-            pin_radius: 0.015,
-        }
-    }
-
     /// Distance from the pitch line to the inner face, m: how far the
     /// track's pitch line runs outside a wheel's rim.
     pub fn inner_offset(&self) -> f64 {

@@ -34,7 +34,9 @@
 //! pressing its patch deeper sees the same pressure before and after, so
 //! the force has no jump at the step.
 //!
-//! [`VehicleSystem`](crate::vehicle::VehicleSystem) drives on it when
+//! The ground's contacts are those [`ground`](super::ground) detection finds
+//! below the undisturbed surface; [`SoftGround::respond`] is the soil's law
+//! at each. [`VehicleSystem`](crate::vehicle::VehicleSystem) drives on it when
 //! [`VehicleConfig::soil`](crate::vehicle::VehicleConfig::soil) is set:
 //! the shear displacements are integrated states, and the rut is pressed
 //! after every accepted step. Checked on its own in `tests/soft_ground.rs`
@@ -43,9 +45,8 @@
 
 use nalgebra::Vector2;
 
-use super::soil::{Soil, SoilError, SoilMemory};
-use super::{BodyState, ContactForce, ShoeGeometry, Terrain};
-use crate::model::BodyLoad;
+use super::soil::{ShearLaw, Soil, SoilError, SoilMemory};
+use super::{BodyState, Contact, ContactForce, ShoeGeometry, Terrain};
 
 /// The plastic memory of the ground along x: a [`SoilMemory`] per cell of
 /// `cell` m, fresh soil where nothing has pressed. The cells are one
@@ -172,13 +173,14 @@ impl Rut {
     }
 }
 
-/// Soft ground under the track.
+/// Soft ground under the track: the soil, and what it remembers. Its
+/// undisturbed surface is the vehicle's terrain, passed in.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SoftGround {
     /// The soil.
     pub soil: Soil,
-    /// The undisturbed surface.
-    pub terrain: Terrain,
+    /// Its shear laws, `tan φ` worked out once.
+    shear: ShearLaw,
     /// The track's width `b`, m (Bekker's law needs it; the planar model
     /// does not otherwise see it).
     pub width: f64,
@@ -209,7 +211,6 @@ impl SoftGround {
     /// rut cells of [`DEFAULT_RUT_CELL`]. The soil is checked.
     pub fn new(
         soil: Soil,
-        terrain: Terrain,
         width: f64,
         shoe_length: f64,
         shoe: &ShoeGeometry,
@@ -226,7 +227,7 @@ impl SoftGround {
         }
         Ok(SoftGround {
             soil,
-            terrain,
+            shear: soil.shear_law(),
             width,
             patch_area: width * shoe_length / shoe.ground_points.len().max(1) as f64,
             rut: Rut::new(DEFAULT_RUT_CELL),
@@ -251,12 +252,10 @@ impl SoftGround {
     /// and its rate (m/s), and the surface's gradient `g = (−h′, 1)`.
     fn state(
         &self,
-        point: Vector2<f64>,
+        (z, slope): (f64, f64),
         velocity: Vector2<f64>,
         (memory, floor_slope): (SoilMemory, f64),
-    ) -> (f64, f64, f64, f64, Vector2<f64>) {
-        let (h, slope) = self.terrain.height_and_slope(point.x);
-        let z = h - point.y;
+    ) -> (f64, f64, f64, Vector2<f64>) {
         let elastic = memory.pressure(&self.soil, z, self.width);
         // Reloading a rut, the stored energy `A K_e (z − z_p(x))²/2` also
         // changes along x where the rut's floor slopes: its gradient adds
@@ -280,89 +279,59 @@ impl SoftGround {
         } else {
             0.0
         };
-        (elastic + damping, elastic, z, rate, g)
+        (elastic + damping, elastic, rate, g)
     }
 
-    /// Forces on the links from the soil, added to `loads` (one per link).
-    /// `shear` holds each ground point's shear displacement `j` (m; link
-    /// by link, the shoe's points in order, signed along the surface's
-    /// forward tangent), `shear_rate` receives `j̇` of each: the slip
-    /// velocity while the point is below the undisturbed surface (in the
-    /// soil, bearing or not), 0 otherwise.
-    /// Every loaded point is passed to `each`.
-    pub fn apply(
+    /// The soil's force at a ground contact (found by
+    /// [`ground::detect`](super::ground::detect) against the undisturbed
+    /// surface): the pressure on the point's patch (with damping) along the
+    /// surface's gradient, and the Janosi–Hanamoto shear at the point's
+    /// shear displacement `shear` (m, signed along the surface's forward
+    /// tangent), opposing it. Returns the force (`None` while the soil
+    /// bears nothing there) and `j̇`, the slip velocity along the surface:
+    /// below the surface the shoe shears the soil it sits in, bearing or
+    /// not (between road wheels a shoe may rest lightly in its rut), as
+    /// Wong's `j = i x` along the whole contact.
+    #[inline]
+    pub fn respond(
         &self,
-        links: &[BodyState],
-        shoe: &ShoeGeometry,
-        loads: &mut [BodyLoad],
-        shear: &[f64],
-        shear_rate: &mut [f64],
-        mut each: impl FnMut(usize, &ContactForce),
-    ) {
-        let points = shoe.ground_points.len();
-        // As on rigid ground, against the undisturbed surface (ruts lie
-        // below it).
-        let clear = super::ground::clear_of(&self.terrain, links, shoe);
-        let tan_phi = self.soil.tan_phi();
-        for (i, link) in links.iter().enumerate() {
-            if clear(link) {
-                shear_rate[i * points..(i + 1) * points].fill(0.0);
-                continue;
-            }
-            for (k, local) in shoe.ground_points.iter().enumerate() {
-                let slot = i * points + k;
-                shear_rate[slot] = 0.0;
-                let arm = link.arm(*local);
-                let point = link.position + arm;
-                let velocity = link.velocity_at(arm);
-                let memory = self.memory_at(slot, point.x);
-                let (p, elastic, z, rate, g) = self.state(point, velocity, memory);
-                if z <= 0.0 {
-                    continue;
-                }
-                let t = Vector2::new(g.y, -g.x) / g.norm();
-                let slip = velocity.dot(&t);
-                // Below the surface the shoe shears the soil it sits in,
-                // bearing or not (between road wheels a shoe may rest
-                // lightly in its rut): `j` follows the slip, as Wong's
-                // `j = i x` along the whole contact.
-                shear_rate[slot] = slip;
-                if p <= 0.0 {
-                    continue;
-                }
-                // τ(|j|) against the displacement: 1 − e^{−|j|/K} ~ |j|/K
-                // near 0, so `τ sign(j)` is smooth through j = 0.
-                let j = shear[slot];
-                // Janosi–Hanamoto (`Soil::shear_stress`), tan φ once.
-                let tau = (self.soil.cohesion + p * tan_phi)
-                    * -(-j.abs() / self.soil.shear_modulus).exp_m1();
-                let tangential = -tau * self.patch_area * j.signum();
-                let force = g * (p * self.patch_area) + t * tangential;
-                loads[i] = loads[i].plus(BodyLoad::force_at(force, arm));
-                // Pressing fresh ground (beyond the deepest sinkage), the
-                // work goes into plastic flow except what the elastic
-                // spring-back `p²/(2 K_e)` per unit area stores: with
-                // p = B(z) = k zⁿ, that is B ż (1 − B′/K_e), B′ = n B / z.
-                let plastic = if z > memory.0.deepest(&self.soil) {
-                    elastic * (1.0 - self.soil.n * elastic / z / self.soil.unloading_stiffness)
-                } else {
-                    0.0
-                };
-                each(
-                    i,
-                    &ContactForce {
-                        point,
-                        force,
-                        normal: p * self.patch_area * g.norm(),
-                        penetration: z,
-                        dissipation: ((p - elastic) + plastic) * rate * self.patch_area
-                            - tangential * slip,
-                        potential: self.patch_area * elastic * elastic
-                            / (2.0 * self.soil.unloading_stiffness),
-                    },
-                );
-            }
+        contact: &Contact,
+        points: usize,
+        shear: f64,
+    ) -> (Option<ContactForce>, f64) {
+        let slot = contact.link * points + contact.feature;
+        let z = contact.depth;
+        let memory = self.memory_at(slot, contact.point.x);
+        let (p, elastic, rate, g) =
+            self.state((z, -contact.gradient.x), contact.velocity, memory);
+        let t = Vector2::new(g.y, -g.x) / g.norm();
+        let slip = contact.velocity.dot(&t);
+        if p <= 0.0 {
+            return (None, slip);
         }
+        // τ(|j|) against the displacement: 1 − e^{−|j|/K} ~ |j|/K near 0,
+        // so `τ sign(j)` is smooth through j = 0.
+        let tau = self.shear.stress(p, shear);
+        let tangential = -tau * self.patch_area * shear.signum();
+        let force = g * (p * self.patch_area) + t * tangential;
+        // Pressing fresh ground (beyond the deepest sinkage), the work goes
+        // into plastic flow except what the elastic spring-back `p²/(2 K_e)`
+        // per unit area stores: with p = B(z) = k zⁿ, that is
+        // B ż (1 − B′/K_e), B′ = n B / z.
+        let plastic = if z > memory.0.deepest(&self.soil) {
+            elastic * (1.0 - self.soil.n * elastic / z / self.soil.unloading_stiffness)
+        } else {
+            0.0
+        };
+        let force = ContactForce {
+            point: contact.point,
+            force,
+            normal: p * self.patch_area * g.norm(),
+            penetration: z,
+            dissipation: ((p - elastic) + plastic) * rate * self.patch_area - tangential * slip,
+            potential: self.patch_area * elastic * elastic / (2.0 * self.soil.unloading_stiffness),
+        };
+        (Some(force), slip)
     }
 
     /// After an accepted step: what the ground remembers, brought up to
@@ -376,7 +345,13 @@ impl SoftGround {
     /// undisturbed surface has its shear displacement reset. Returns whether the force at the links' state changed
     /// (an unloaded point whose new memory would make it bear): then the
     /// integrator must restart.
-    pub fn press(&mut self, links: &[BodyState], shoe: &ShoeGeometry, shear: &mut [f64]) -> bool {
+    pub fn press(
+        &mut self,
+        terrain: &Terrain,
+        links: &[BodyState],
+        shoe: &ShoeGeometry,
+        shear: &mut [f64],
+    ) -> bool {
         let points = shoe.ground_points.len();
         // A patch is written over its own footprint along the track.
         let patch_length = self.patch_area / self.width;
@@ -395,7 +370,7 @@ impl SoftGround {
             for (k, local) in shoe.ground_points.iter().enumerate() {
                 let slot = i * points + k;
                 let point = link.point(*local);
-                let z = self.terrain.height(point.x) - point.y;
+                let z = terrain.height(point.x) - point.y;
                 let patch = &mut self.patches[slot];
                 if patch.memory.pressure(&self.soil, z, self.width) > 0.0 {
                     let pressed = patch.memory.pressed_to(&self.soil, z, self.width);

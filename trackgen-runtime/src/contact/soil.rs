@@ -194,14 +194,24 @@ impl Soil {
 
     /// Mohr–Coulomb strength at normal pressure `p` (Pa): `c + p tan φ`, Pa.
     pub fn shear_strength(&self, p: f64) -> f64 {
-        self.cohesion + p * self.tan_phi()
+        self.shear_law().strength(p)
     }
 
     /// Janosi–Hanamoto: the shear stress (Pa) mobilised at pressure `p`
     /// (Pa) by a shear displacement of magnitude `j` (m),
     /// `(c + p tan φ)(1 − e^{−j/K})`.
     pub fn shear_stress(&self, p: f64, j: f64) -> f64 {
-        self.shear_strength(p) * -(-j.abs() / self.shear_modulus).exp_m1()
+        self.shear_law().stress(p, j)
+    }
+
+    /// The shear laws with `tan φ` worked out once, for evaluating them
+    /// many times.
+    pub fn shear_law(&self) -> ShearLaw {
+        ShearLaw {
+            cohesion: self.cohesion,
+            tan_phi: self.tan_phi(),
+            shear_modulus: self.shear_modulus,
+        }
     }
 
     /// Spec "Closed-form checks" (a): the sinkage (m) of a rigid track of
@@ -233,6 +243,33 @@ impl Soil {
             1.0 + (-x).exp_m1() / x
         };
         limit * mobilised
+    }
+}
+
+/// Mohr–Coulomb strength and Janosi–Hanamoto shear, the one owner of both
+/// ([`Soil::shear_law`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShearLaw {
+    /// Cohesion `c`, Pa.
+    pub cohesion: f64,
+    /// `tan φ`.
+    pub tan_phi: f64,
+    /// Shear deformation modulus `K`, m.
+    pub shear_modulus: f64,
+}
+
+impl ShearLaw {
+    /// Mohr–Coulomb strength at normal pressure `p` (Pa): `c + p tan φ`, Pa.
+    #[inline]
+    pub fn strength(&self, p: f64) -> f64 {
+        self.cohesion + p * self.tan_phi
+    }
+
+    /// The shear stress (Pa) mobilised at pressure `p` (Pa) by a shear
+    /// displacement of magnitude `|j|` (m): `(c + p tan φ)(1 − e^{−|j|/K})`.
+    #[inline]
+    pub fn stress(&self, p: f64, j: f64) -> f64 {
+        self.strength(p) * -(-j.abs() / self.shear_modulus).exp_m1()
     }
 }
 

@@ -1,5 +1,5 @@
-//! Sprocket engagement: the shoes' pins against an arc tooth profile (the
-//! M113's), so that drive torque becomes track tension.
+//! Sprocket engagement: where the shoes' pins meet an arc tooth profile,
+//! so that drive torque becomes track tension.
 //!
 //! The profile is a circle of radius `addendum` with a circular gap cut
 //! between every two teeth: gap `k` is the arc of radius `arc_radius`
@@ -13,8 +13,7 @@
 
 use nalgebra::Vector2;
 
-use super::{BodyState, ContactForce, Friction, NormalLaw, ShoeGeometry};
-use crate::model::BodyLoad;
+use super::{BodyState, Contact, ShoeGeometry};
 
 /// The pitch radius of a sprocket of `teeth` teeth for a chain of `pitch`
 /// (m, pin to pin): the circumradius of the `teeth`-gon of side `pitch`,
@@ -38,19 +37,6 @@ pub struct ToothProfile {
 }
 
 impl ToothProfile {
-    /// The M113 sprocket (`shared/spec/m113.md`): 10 teeth, addendum
-    /// 0.2605 m, arcs of 0.089 m centred 0.3 m out. The same figures as
-    /// the sprocket of the M113's declaration (`M113::tooth_profile()`),
-    /// their home; `tests/vehicle_declaration.rs` holds the two equal.
-    pub fn m113() -> ToothProfile {
-        ToothProfile {
-            teeth: 10,
-            addendum: 0.2605,
-            arc_centre_radius: 0.3,
-            arc_radius: 0.089,
-        }
-    }
-
     /// A profile of `teeth` teeth for shoes of `pitch` (m, pin to pin) in
     /// the M113's proportions: with `R = p / (2 sin(π/teeth))` the pitch
     /// radius, the tip circle at `R + 0.073 p`, gap arcs centred
@@ -156,9 +142,8 @@ impl Gaps {
     fn nearest(&self, sprocket: &BodyState, p: Vector2<f64>) -> Vector2<f64> {
         // Adding 1.5·2⁵² rounds to an integer without a library call.
         const TO_INT: f64 = 6_755_399_441_055_744.0;
-        let r = p - sprocket.position;
-        let (s, c) = sprocket.sin_cos();
-        let (x, y) = (c * r.x + s * r.y, c * r.y - s * r.x);
+        let local = sprocket.rotation().apply_inverse(p - sprocket.position);
+        let (x, y) = (local.x, local.y);
         let k = (rough_angle(y, x) / self.pitch - 0.5 + TO_INT) - TO_INT;
         let (sin, cos) = self.direction(k);
         let (sb, cb) = self.turn;
@@ -171,7 +156,7 @@ impl Gaps {
                 best = candidate;
             }
         }
-        let direction = Vector2::new(c * best.0 - s * best.1, s * best.0 + c * best.1);
+        let direction = sprocket.rotation().apply(Vector2::new(best.0, best.1));
         sprocket.position + direction * self.arc_centre_radius
     }
 }
@@ -196,71 +181,57 @@ fn rough_angle(y: f64, x: f64) -> f64 {
     }
 }
 
-/// The sprocket's contact laws and profile.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct SprocketContact {
-    /// The teeth.
-    pub profile: ToothProfile,
-    /// Normal law.
-    pub normal: NormalLaw,
-    /// Friction.
-    pub friction: Friction,
-}
-
-impl SprocketContact {
-    /// Forces between the sprocket and the pins of every link near it: on
-    /// the links into `link_loads`, the reactions into `sprocket_load`.
-    pub fn apply(
-        &self,
-        sprocket: &BodyState,
-        links: &[BodyState],
-        shoe: &ShoeGeometry,
-        link_loads: &mut [BodyLoad],
-        sprocket_load: &mut BodyLoad,
-        mut each: impl FnMut(usize, &ContactForce),
-    ) {
-        let reach = self.profile.addendum + shoe.extent();
-        let pin_reach = self.profile.addendum + shoe.pin_radius;
-        let gaps = Gaps::of(&self.profile);
-        super::each_near(links, sprocket.position, reach, |i, link| {
-            for local in &shoe.pins {
-                let pin_arm = link.arm(*local);
-                let pin = link.position + pin_arm;
-                if (pin - sprocket.position).norm_squared() > pin_reach * pin_reach {
-                    continue;
-                }
-                // Inside the addendum circle, outside the gap's arc: in a
-                // tooth. The pin leaves it the shorter way, back into the
-                // gap or out across the tip circle.
-                let gap = gaps.nearest(sprocket, pin);
-                let (out, radial) = (pin - gap, pin - sprocket.position);
-                let (distance, from_centre) = (out.norm(), radial.norm());
-                let into_flank = distance + shoe.pin_radius - self.profile.arc_radius;
-                let into_tip = self.profile.addendum + shoe.pin_radius - from_centre;
-                if into_flank <= 0.0 || into_tip <= 0.0 || distance == 0.0 || from_centre == 0.0 {
-                    continue;
-                }
-                let (penetration, normal, point) = if into_flank <= into_tip {
-                    (
-                        into_flank,
-                        -out / distance,
-                        gap + out / distance * self.profile.arc_radius,
-                    )
-                } else {
-                    (
-                        into_tip,
-                        radial / from_centre,
-                        sprocket.position + radial / from_centre * self.profile.addendum,
-                    )
-                };
-                let contact = super::exchange(
-                    (&self.normal, &self.friction),
-                    (link, &mut link_loads[i]),
-                    (sprocket, sprocket_load),
-                    (point, normal, penetration),
-                );
-                each(i, &contact);
+/// The contacts of the sprocket `body` (its state) with the pins of every
+/// link near it, appended to `out`. A pin reaching into a tooth is pushed
+/// out the shorter way: back toward its gap's arc centre (depth
+/// `|p − g| + r_pin − r_arc`) or radially out across the tip circle (depth
+/// `r_add + r_pin − |p − c|`), so the force grows from zero wherever a pin
+/// enters.
+pub fn detect(
+    (sprocket, body): (&BodyState, usize),
+    profile: &ToothProfile,
+    links: &[BodyState],
+    shoe: &ShoeGeometry,
+    out: &mut Vec<Contact>,
+) {
+    let reach = profile.addendum + shoe.extent();
+    let pin_reach = profile.addendum + shoe.pin_radius;
+    let gaps = Gaps::of(profile);
+    super::each_near(links, sprocket.position, reach, |i, link| {
+        for (k, local) in shoe.pins.iter().enumerate() {
+            let pin = link.position + link.arm(*local);
+            if (pin - sprocket.position).norm_squared() > pin_reach * pin_reach {
+                continue;
             }
-        });
-    }
+            // Inside the addendum circle, outside the gap's arc: in a
+            // tooth. The pin leaves it the shorter way, back into the gap
+            // or out across the tip circle.
+            let gap = gaps.nearest(sprocket, pin);
+            let (out_of_gap, radial) = (pin - gap, pin - sprocket.position);
+            let (distance, from_centre) = (out_of_gap.norm(), radial.norm());
+            let into_flank = distance + shoe.pin_radius - profile.arc_radius;
+            let into_tip = profile.addendum + shoe.pin_radius - from_centre;
+            if into_flank <= 0.0 || into_tip <= 0.0 || distance == 0.0 || from_centre == 0.0 {
+                continue;
+            }
+            let (depth, normal, point) = if into_flank <= into_tip {
+                (
+                    into_flank,
+                    -out_of_gap / distance,
+                    gap + out_of_gap / distance * profile.arc_radius,
+                )
+            } else {
+                (
+                    into_tip,
+                    radial / from_centre,
+                    sprocket.position + radial / from_centre * profile.addendum,
+                )
+            };
+            out.push(super::between(
+                (i, link),
+                (body, sprocket),
+                (k, point, normal, depth),
+            ));
+        }
+    });
 }

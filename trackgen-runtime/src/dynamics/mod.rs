@@ -18,14 +18,17 @@
 //! 1000 links), so every route runs on a 2 MiB thread for any track the
 //! macro accepts.
 
-mod closing;
+mod declared;
 mod dense;
-pub mod elimination;
+pub(crate) mod elimination;
 mod generated;
+#[cfg(feature = "oracle")]
 mod linear_time;
 
-pub use closing::{ClosingJoint, track_dynamics};
+pub use declared::track_dynamics;
 pub use dense::Accelerations;
+#[cfg(feature = "oracle")]
 pub(crate) use dense::{solve_closed, solve_open};
 pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
+#[cfg(feature = "oracle")]
 pub use linear_time::LinearTimeSolver;

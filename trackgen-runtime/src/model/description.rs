@@ -1,5 +1,6 @@
-use crate::closure::penalty::PenaltyJoint;
 use nalgebra::Vector2;
+
+use crate::laws::{PenaltyJoint, TorsionSpring};
 
 /// How a track loop is closed (spec §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -123,10 +124,12 @@ impl TreeDescription {
         self.bodies.len() + 2
     }
 
-    /// `d̄ʲ = ū2ʲ − ū1ʲ` of every link of a track, the vectors whose rotated
-    /// sum is the loop closure `C(q_i)` (spec §2). `None` for a tree that is
-    /// not a chain with a loop joint.
-    pub fn link_spans(&self) -> Option<Vec<Vector2<f64>>> {
+    /// The joint points of every link of a track, in its own frame:
+    /// `(ū1ʲ, ū2ʲ)`, the joint to the previous link and to the next (for
+    /// link 1, `ū1` is its side of the closing joint; for link n, `ū2`).
+    /// `None` for a tree that is not a chain with a loop joint. The one
+    /// place the joints are read from a description.
+    pub fn joints(&self) -> Option<Vec<(Vector2<f64>, Vector2<f64>)>> {
         let joint = self.loop_joint?;
         let n = self.bodies.len();
         Some(
@@ -142,11 +145,54 @@ impl TreeDescription {
                     } else {
                         self.bodies[j + 1].at_parent
                     };
-                    u2 - u1
+                    (u1, u2)
                 })
                 .collect(),
         )
     }
+
+    /// `d̄ʲ = ū2ʲ − ū1ʲ` of every link of a track, the vectors whose rotated
+    /// sum is the loop closure `C(q_i)` (spec §2). `None` for a tree that is
+    /// not a chain with a loop joint.
+    pub fn link_spans(&self) -> Option<Vec<Vector2<f64>>> {
+        Some(self.joints()?.into_iter().map(|(u1, u2)| u2 - u1).collect())
+    }
+
+    /// The track's pitch, joint to joint, m, when every link has the same
+    /// (to 1e-9 of it): what a sprocket's teeth, a tooth profile and a
+    /// shoe's footprint assume. Links of different lengths are a
+    /// [`PitchError`] naming the shortest and longest.
+    pub fn pitch(&self) -> Result<f64, PitchError> {
+        let spans = self.link_spans().ok_or(PitchError::NotATrack)?;
+        let lengths = spans.iter().map(|s| s.norm());
+        let (shortest, longest) = lengths.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
+            (lo.min(l), hi.max(l))
+        });
+        let first = spans.first().map_or(f64::NAN, |s| s.norm());
+        if longest - shortest <= 1e-9 * longest {
+            Ok(first)
+        } else {
+            Err(PitchError::Uneven { shortest, longest })
+        }
+    }
+}
+
+/// Why a description has no single pitch.
+#[derive(Debug, Clone, Copy, PartialEq, thiserror::Error)]
+pub enum PitchError {
+    /// Not a chain with a loop joint.
+    #[error("the tree is not a track (no loop joint)")]
+    NotATrack,
+    /// The links are of different lengths.
+    #[error(
+        "the track's links differ in length ({shortest} m to {longest} m): a sprocket needs one pitch"
+    )]
+    Uneven {
+        /// The shortest link, joint to joint, m.
+        shortest: f64,
+        /// The longest, m.
+        longest: f64,
+    },
 }
 
 /// What a body pinned to the chassis is.
@@ -171,7 +217,11 @@ pub struct ChassisPart {
     pub kind: PartKind,
     /// Index of the part's body in the chassis tree (the chassis frame is 0).
     pub body: usize,
-    /// Rolling (for a sprocket: pitch) radius, m.
+    /// The rim radius as declared, m: what road wheels, idler and rollers
+    /// roll the track's inner face on. A sprocket's is its declared
+    /// `radius` (drawn, not used by the contact: its teeth are its
+    /// [`ToothProfile`](crate::contact::sprocket::ToothProfile) and its
+    /// pitch radius follows from the teeth and the track's pitch).
     pub radius: f64,
     /// Number of sprocket teeth; 0 for other parts.
     pub teeth: u32,
@@ -180,24 +230,19 @@ pub struct ChassisPart {
 }
 
 /// An arm between the chassis and a part (a road wheel's trailing arm, an
-/// idler's tensioner arm) with a torsion spring-damper about its pivot:
-/// the torque on the arm is `τ = preload − k φ − c φ̇`, with `φ` the arm's
-/// angle relative to the chassis from its design position (counter-clockwise
-/// positive); the chassis takes `−τ`.
+/// idler's tensioner arm) with a torsion spring-damper about its pivot
+/// ([`TorsionSpring`]): the torque on the arm is `τ = preload − k φ − c φ̇`,
+/// with `φ` the arm's angle relative to the chassis from its design
+/// position (counter-clockwise positive); the chassis takes `−τ`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ArmSpring {
     /// Index of the arm's body in the chassis tree.
     pub body: usize,
-    /// `k`, N m/rad.
-    pub stiffness: f64,
-    /// `c`, N m s/rad.
-    pub damping: f64,
-    /// Torque at the design position, N m.
-    pub preload: f64,
+    /// The spring-damper about the pivot.
+    pub spring: TorsionSpring,
     /// The range of `φ` (rad, `low ≤ 0 ≤ high`) the assembly may set the
     /// arm to: for an idler's tensioner, the travel over which it takes up
-    /// the track's slack ([`assemble`](crate::vehicle::assemble)). Declared
-    /// as the arm's `travel`, default `(−π/2, π/2)`. Not a stop: the
-    /// simulation does not limit the arm.
+    /// the track's slack. Declared as the arm's `travel`, default
+    /// `(−π/2, π/2)`. Not a stop: the simulation does not limit the arm.
     pub travel: (f64, f64),
 }

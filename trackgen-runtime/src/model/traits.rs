@@ -1,8 +1,7 @@
 use nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
 
-use super::{BodyLoad, ChassisPart, Closure, TreeDescription};
+use super::{BodyLoad, ChassisPart, ClosingJoint, Closure, TreeDescription};
 use crate::DynamicsError;
-use crate::dynamics::ClosingJoint;
 
 /// A body tree in recursive coordinates, compiled to code (spec §1, §3).
 ///

@@ -11,41 +11,26 @@
 
 mod energy;
 mod error;
-mod loads;
-mod observe;
 mod output;
-mod pair;
 mod results;
 mod run;
 mod sink;
 mod stream;
-mod track;
-mod tree;
 
-pub use crate::error::SimulationError;
+pub use crate::closure::Switch;
+pub use crate::error::{SettingsError, SimulationError};
+pub use crate::system::Simulated;
 pub use energy::{
     DISSIPATED, ENERGY, EnergyBalance, EnergyBalanceError, MOTOR_WORK, RESIDUAL_FLOOR,
     RESIDUAL_PER_TOLERANCE,
 };
 pub use error::SimulationFailure;
-pub use observe::{Momentum, momentum};
 pub use output::Output;
-pub use pair::Pair;
-pub use results::{Results, Sample, Switch};
-pub use run::{Simulated, simulate, simulate_with_progress};
+pub use results::{Results, Sample};
+pub use run::{simulate, simulate_with_progress};
 #[cfg(feature = "arrow")]
 pub use sink::ArrowSink;
 pub use sink::{
     Background, ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned,
 };
 pub use stream::{RunError, RunReport, StreamFailure, simulate_into};
-pub use track::TrackSystem;
-pub use tree::TreeSystem;
-
-/// Applied loads as a function of time and state: `(t, q_i, q̇_i, loads)`,
-/// one [`BodyLoad`](crate::BodyLoad) per body. The slice holds the loads
-/// already acting (contact, in a vehicle): add to it (`+=`).
-pub type LoadFn<const D: usize> = Box<
-    dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad])
-        + Send,
->;

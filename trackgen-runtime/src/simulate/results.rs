@@ -1,24 +1,8 @@
 use std::io;
 use std::path::Path;
 
-use super::{CsvSink, Select, Sink, SinkError};
+use super::{CsvSink, Select, Sink, SinkError, Switch};
 use crate::integrate::Stats;
-
-/// A change of the dependent coordinates of a partitioned track (spec §2).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Switch {
-    /// Time, s.
-    pub t: f64,
-    /// The dependent links before (numbered from 1).
-    pub from: [usize; 2],
-    /// The dependent links after.
-    pub to: [usize; 2],
-    /// `|sin|` between the columns of `C_d` of the old pair, which fell
-    /// below the switching threshold.
-    pub conditioning: f64,
-    /// The same for the new pair.
-    pub new_conditioning: f64,
-}
 
 /// The time series of a run: one row of named quantities per output time,
 /// the partition switches, and the integrator's counters. Kept whole when a

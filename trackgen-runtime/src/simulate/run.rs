@@ -1,33 +1,9 @@
 use nalgebra::DVector;
 
-use super::{Output, Results, RunError, SimulationError, SimulationFailure, Sink, Switch};
-use crate::integrate::{Integrator, OdeSystem, Stats};
-
-/// A system a simulation can run: an [`OdeSystem`] that also knows its
-/// initial state, what to record, and what to do between steps.
-pub trait Simulated: OdeSystem {
-    /// The state at the start.
-    fn initial_state(&self) -> DVector<f64>;
-
-    /// Names of the recorded quantities.
-    fn columns(&self) -> Vec<String>;
-
-    /// Appends the recorded quantities at `(t, y)` to `row`.
-    fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError>;
-
-    /// Called after every accepted step; may change the coordinates of the
-    /// state (re-partitioning, projection), telling `switched` of every
-    /// re-partitioning. Returns whether it changed the state, so the
-    /// integrator restarts.
-    fn after_step(
-        &mut self,
-        _t: f64,
-        _y: &mut [f64],
-        _switched: &mut dyn FnMut(Switch),
-    ) -> Result<bool, SimulationError> {
-        Ok(false)
-    }
-}
+use super::{Output, Results, RunError, SimulationError, SimulationFailure, Sink};
+use crate::error::SettingsError;
+use crate::integrate::{Integrator, Stats};
+use crate::system::Simulated;
 
 /// Integrates `system` from `t0` to `t_end` (s), recording at `output`.
 ///
@@ -69,10 +45,15 @@ pub fn simulate_with_progress(
     match outcome {
         Ok(()) => Ok(results),
         Err(RunError::Simulation(error)) => Err(SimulationFailure { error, results }),
-        // In-memory results take every row the run checked; kept typed all
-        // the same.
-        Err(RunError::Sink { t, source }) => Err(SimulationFailure {
-            error: SimulationError::Setup(format!("recording at t = {t} s: {source}")),
+        // Fresh in-memory results take every row the run has checked
+        // (its width is checked before the sink sees it): the one error
+        // they could give is that width.
+        Err(RunError::Sink { t, .. }) => Err(SimulationFailure {
+            error: SimulationError::RecordWidth {
+                t,
+                got: results.columns().len(),
+                expected: results.columns().len(),
+            },
             results,
         }),
     }
@@ -94,7 +75,7 @@ pub(super) fn drive(
         return (Err(RunError::Sink { t: t0, source }), Stats::default());
     }
     if let Err(error) = validate(integrator, t0, t_end, output) {
-        return (Err(error.into()), Stats::default());
+        return (Err(SimulationError::from(error).into()), Stats::default());
     }
     let mut stepper = integrator.stepper(system.dimension());
     let outcome = run(
@@ -127,10 +108,11 @@ fn run(
         row.clear();
         system.observe(t, y.as_slice(), &mut row)?;
         if row.len() != width {
-            return Err(RunError::Simulation(SimulationError::Setup(format!(
-                "the system recorded {} values at t = {t} s for its {width} columns",
-                row.len()
-            ))));
+            return Err(RunError::Simulation(SimulationError::RecordWidth {
+                t,
+                got: row.len(),
+                expected: width,
+            }));
         }
         // Every system's results hold numbers only; the state is finite
         // here (checked after each step), so a NaN is the observation's.
@@ -209,23 +191,21 @@ fn run(
     Ok(())
 }
 
-/// Settings that would hang a run or make it meaningless are set-up errors.
+/// Settings that would hang a run or make it meaningless are errors before
+/// any step.
 fn validate(
     integrator: Integrator,
     t0: f64,
     t_end: f64,
     output: &Output,
-) -> Result<(), SimulationError> {
-    let setup = |m: String| Err(SimulationError::Setup(m));
+) -> Result<(), SettingsError> {
     if !(t0.is_finite() && t_end.is_finite() && t0 < t_end) {
-        return setup(format!(
-            "the run must go from a finite t0 to a later finite t_end, got {t0} to {t_end}"
-        ));
+        return Err(SettingsError::Interval { t0, t_end });
     }
     match integrator {
         Integrator::Rk4 { step } | Integrator::Rosenbrock2 { step } => {
             if !(step.is_finite() && step > 0.0 && t0 + step > t0) {
-                return setup(format!("the step must be finite and positive, got {step}"));
+                return Err(SettingsError::Step { step });
             }
         }
         Integrator::Dopri5 {
@@ -244,23 +224,21 @@ fn validate(
                 && rtol.is_finite()
                 && atol.is_finite())
             {
-                return setup(format!(
-                    "tolerances must be non-negative, finite and not both zero, got rtol {rtol}, atol {atol}"
-                ));
+                return Err(SettingsError::Tolerances { rtol, atol });
             }
             if max_step.is_nan() || max_step <= 0.0 {
-                return setup(format!("max_step must be positive, got {max_step}"));
+                return Err(SettingsError::MaxStep { max_step });
             }
         }
     }
     match output {
-        Output::Every(dt) if !(dt.is_finite() && *dt > 0.0 && t0 + dt > t0) => setup(format!(
-            "the output interval must be finite and positive, got {dt}"
-        )),
+        Output::Every(dt) if !(dt.is_finite() && *dt > 0.0 && t0 + dt > t0) => {
+            Err(SettingsError::OutputInterval { interval: *dt })
+        }
         Output::Times(times)
             if !times.iter().all(|t| t.is_finite()) || times.windows(2).any(|w| w[1] < w[0]) =>
         {
-            setup("output times must be finite and non-decreasing".to_string())
+            Err(SettingsError::OutputTimes)
         }
         _ => Ok(()),
     }

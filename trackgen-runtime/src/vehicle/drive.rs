@@ -1,6 +1,27 @@
 //! What turns the sprocket: a torque schedule or a speed controller.
 
-use crate::simulate::SimulationError;
+use thiserror::Error;
+
+use crate::error::SimulationError;
+
+/// Settings of a drive that make no controller.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum DriveError {
+    /// A gain is NaN or infinite.
+    #[error("the speed drive's gains must be finite, got proportional {proportional}, integral {integral}")]
+    Gains {
+        /// N m s/rad.
+        proportional: f64,
+        /// N m/rad.
+        integral: f64,
+    },
+    /// The torque limit is NaN or negative.
+    #[error("the speed drive's torque limit must be zero or more, got {max_torque}")]
+    TorqueLimit {
+        /// N m.
+        max_torque: f64,
+    },
+}
 
 /// The sprocket drive: its torque acts on the sprocket and, reversed, on
 /// the chassis frame.
@@ -64,7 +85,7 @@ impl Drive {
 
     /// Why the settings of the drive make no controller: gains that are NaN
     /// or infinite, a torque limit that is NaN or negative.
-    pub fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), DriveError> {
         if let Drive::Speed {
             proportional,
             integral,
@@ -73,14 +94,15 @@ impl Drive {
         } = self
         {
             if !(proportional.is_finite() && integral.is_finite()) {
-                return Err(format!(
-                    "the speed drive's gains must be finite, got proportional {proportional}, integral {integral}"
-                ));
+                return Err(DriveError::Gains {
+                    proportional: *proportional,
+                    integral: *integral,
+                });
             }
             if max_torque.is_nan() || *max_torque < 0.0 {
-                return Err(format!(
-                    "the speed drive's torque limit must be zero or more, got {max_torque}"
-                ));
+                return Err(DriveError::TorqueLimit {
+                    max_torque: *max_torque,
+                });
             }
         }
         Ok(())

@@ -5,7 +5,7 @@ use std::sync::mpsc::{Receiver, SyncSender, sync_channel};
 use std::thread::{Scope, ScopedJoinHandle};
 
 use super::{Sink, SinkError};
-use crate::simulate::Switch;
+use crate::closure::Switch;
 
 /// Rows handed over together: waking the worker for every row cost the
 /// run's thread more than the rows' copying (a twentieth of the M113's

@@ -1,7 +1,7 @@
 //! One run, several sinks.
 
 use super::{Sink, SinkError};
-use crate::simulate::Switch;
+use crate::closure::Switch;
 
 /// Feeds every row to each of its sinks, in the order they were added:
 /// `Tee::new().and(&mut csv).and(&mut arrow).and(&mut summary)`. The first

@@ -1,8 +1,9 @@
 use nalgebra::{DVector, SVector};
 
+use super::Simulated;
 use super::loads::Loads;
-use super::observe::{masses, mechanics_columns, record_mechanics};
-use super::{Simulated, SimulationError};
+use super::mechanics::{masses, mechanics_columns, record_mechanics};
+use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
 use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
 

@@ -1,7 +1,30 @@
+//! What every body tree records: its coordinates and rates, its energy
+//! and its momentum.
+
 use nalgebra::{SVector, Vector2};
 
+use super::record;
 use crate::model::RecursiveModel;
 use crate::planar::cross;
+
+record! {
+    /// The mechanical quantities a body tree records after its coordinates
+    /// and rates.
+    pub struct Mechanics {
+        /// Kinetic energy, J.
+        kinetic,
+        /// Potential energy (gravity, and a penalty spring's), J.
+        potential,
+        /// Their sum, J.
+        energy,
+        /// Linear momentum, x, kg m/s.
+        momentum_x,
+        /// Linear momentum, y, kg m/s.
+        momentum_y,
+        /// Angular momentum about the global origin, kg m²/s.
+        angular_momentum,
+    }
+}
 
 /// Linear and angular momentum of a body tree.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -65,23 +88,12 @@ pub(crate) fn coordinate_columns(
         .collect()
 }
 
-/// Names of the mechanical quantities every body tree records after its
-/// coordinates and rates.
-const MECHANICS: [&str; 6] = [
-    "kinetic",
-    "potential",
-    "energy",
-    "momentum_x",
-    "momentum_y",
-    "angular_momentum",
-];
-
 /// Columns of a body tree: coordinates, rates (bodies named by `name`),
-/// then [`MECHANICS`].
+/// then [`Mechanics::COLUMNS`].
 pub(crate) fn mechanics_columns(n: usize, name: impl Fn(usize) -> String) -> Vec<String> {
     let mut c = coordinate_columns(n, false, &name);
     c.extend(coordinate_columns(n, true, &name));
-    c.extend(MECHANICS.map(String::from));
+    c.extend(Mechanics::COLUMNS.iter().map(|c| c.to_string()));
     c
 }
 
@@ -99,12 +111,13 @@ pub(crate) fn record_mechanics<M: RecursiveModel<D>, const D: usize>(
     let kinetic = model.kinetic_energy(q, qd);
     let potential = model.potential_energy(q) + extra_potential;
     let p = momentum(model, masses, q, qd);
-    row.extend([
+    Mechanics {
         kinetic,
         potential,
-        kinetic + potential,
-        p.linear.x,
-        p.linear.y,
-        p.angular,
-    ]);
+        energy: kinetic + potential,
+        momentum_x: p.linear.x,
+        momentum_y: p.linear.y,
+        angular_momentum: p.angular,
+    }
+    .extend_row(row);
 }

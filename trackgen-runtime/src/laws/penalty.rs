@@ -1,8 +1,11 @@
 //! The secondary joint of the paper's Fig. 5: the closing joint cut, a
 //! spring-damper across the cut. [`PenaltyJoint`] is the one owner of its
-//! law: the force, the elastic energy and the power it dissipates.
+//! law: the force, the elastic energy and the power it dissipates; the
+//! generated code of a penalty-closed track calls it too.
 
 use nalgebra::{SMatrix, SVector, Vector2};
+
+use super::{ParameterError, Response};
 
 /// A spring-damper between the two points of the cut closing joint,
 /// `P_n = Rⁿ + Aⁿ ū2ⁿ` on link n and `P_1 = R¹ + A¹ ū1¹` on link 1.
@@ -36,6 +39,16 @@ impl PenaltyJoint {
         self.damping * rate.norm_squared()
     }
 
+    /// Force, energy and dissipation together.
+    #[inline]
+    pub fn respond(&self, gap: Vector2<f64>, rate: Vector2<f64>) -> Response<Vector2<f64>> {
+        Response {
+            force: self.force(gap, rate),
+            potential: self.energy(gap),
+            dissipation: self.dissipation(rate),
+        }
+    }
+
     /// Its generalised forces `C_qᵀ F` at `(q_i, q̇_i)`: `C_qᵀ` maps the
     /// force at the gap to generalised forces by virtual work.
     pub fn generalized_forces<const D: usize>(
@@ -49,14 +62,8 @@ impl PenaltyJoint {
 
     /// A spring that closes the loop: stiffness positive and damping zero
     /// or more, both finite.
-    pub fn check(&self) -> Result<(), String> {
-        let (k, c) = (self.stiffness, self.damping);
-        if k > 0.0 && k.is_finite() && c >= 0.0 && c.is_finite() {
-            Ok(())
-        } else {
-            Err(format!(
-                "penalty stiffness must be positive and damping non-negative, got k = {k}, c = {c}"
-            ))
-        }
+    pub fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("stiffness", self.stiffness, 0.0, true)?;
+        ParameterError::check("damping", self.damping, 0.0, false)
     }
 }

@@ -1,15 +1,30 @@
 use nalgebra::{DVector, SVector, Vector2};
 
 use super::loads::Loads;
-use super::observe::{masses, mechanics_columns, record_mechanics};
-use super::{Simulated, SimulationError, Switch};
+use super::mechanics::{masses, mechanics_columns, record_mechanics};
+use super::{Simulated, record};
 use crate::closure::partitioning::{self, Partition};
 use crate::closure::{
-    ClosureMethod, MultiplierOptions, PenaltyJoint, ProjectionFailure, multipliers,
+    ClosureError, ClosureMethod, MultiplierOptions, ProjectionFailure, Switch, multipliers,
 };
-use crate::dynamics::ClosingJoint;
+use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
-use crate::model::{BodyLoad, Closure, TrackModel};
+use crate::laws::PenaltyJoint;
+use crate::model::{BodyLoad, ClosingJoint, Closure, TrackModel};
+use crate::planar::Rotation;
+
+record! {
+    /// What a track records after its bodies' [`Mechanics`](super::Mechanics).
+    pub struct TrackRecord {
+        /// `|C|`, the gap at the closing joint, m.
+        closure_error,
+        /// `|C_q q̇|`, its rate, m/s.
+        closure_rate_error,
+        /// `|sin|` between the columns of the dependent pair's `C_d`
+        /// (partitioning), or of the best pair's (otherwise).
+        conditioning,
+    }
+}
 
 /// How this track is closed, resolved from the declaration and the chosen
 /// [`ClosureMethod`].
@@ -74,7 +89,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         q: SVector<f64, D>,
         qd: SVector<f64, D>,
         method: ClosureMethod,
-    ) -> Result<Self, SimulationError> {
+    ) -> Result<Self, ClosureError> {
         let description = model.description();
         let spans = description.link_spans().unwrap_or_default();
         let loop_length = spans
@@ -87,16 +102,8 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 Mode::Partitioned(Partition::new(Default::default(), loop_length))
             }
             (ClosureMethod::Declared, _) => Mode::AsDeclared,
-            (_, Closure::Open) => {
-                return Err(SimulationError::Setup(
-                    "the track is declared `closure: open`; declare it `partitioned` to close its loop".into(),
-                ));
-            }
-            (_, Closure::Penalty(_)) => {
-                return Err(SimulationError::Setup(
-                    "the track is declared with a penalty joint; declare it `partitioned` to choose the closure method at run time".into(),
-                ));
-            }
+            (_, Closure::Open) => return Err(ClosureError::DeclaredOpen),
+            (_, Closure::Penalty(_)) => return Err(ClosureError::DeclaredPenalty),
             (ClosureMethod::Partitioning(options), Closure::Partitioned) => {
                 Mode::Partitioned(Partition::new(options, loop_length))
             }
@@ -104,7 +111,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 Mode::Multipliers(options)
             }
             (ClosureMethod::Penalty(joint), Closure::Partitioned) => {
-                joint.check().map_err(SimulationError::Setup)?;
+                joint.check()?;
                 Mode::Penalty(joint)
             }
         };
@@ -170,11 +177,11 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// (after a step, for its last stage's), it is not recovered again.
     pub(crate) fn recover(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         if y.len() != self.y0.len() {
-            return Err(SimulationError::Setup(format!(
-                "a state of {} values for a system of {}",
-                y.len(),
-                self.y0.len()
-            )));
+            return Err(SimulationError::StateLength {
+                t,
+                got: y.len(),
+                expected: self.y0.len(),
+            });
         }
         let kept = &mut self.recovered;
         if kept.valid && kept.y == y {
@@ -240,7 +247,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         &mut self,
         mut q: SVector<f64, D>,
         mut qd: SVector<f64, D>,
-    ) -> Result<DVector<f64>, SimulationError> {
+    ) -> Result<DVector<f64>, ClosureError> {
         let tolerance = self.loop_length * MultiplierOptions::default().tolerance;
         match &mut self.mode {
             Mode::Partitioned(partition) => {
@@ -254,11 +261,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                     Mode::Multipliers(options) => self.loop_length * options.tolerance,
                     _ => tolerance,
                 };
-                multipliers::project(&self.model, &mut q, &mut qd, tolerance).map_err(|failure| {
-                    SimulationError::Setup(format!(
-                        "the initial state cannot be projected onto the loop closure: {failure:?}"
-                    ))
-                })?;
+                multipliers::project(&self.model, &mut q, &mut qd, tolerance)?;
                 Ok(DVector::from_iterator(
                     2 * D,
                     q.iter().chain(qd.iter()).copied(),
@@ -320,8 +323,8 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         out.clear();
         let trig = &self.recovered.trig;
         out.extend(self.joint_forces.iter().zip(&self.spans).zip(trig).map(
-            |((force, span), &(s, c))| {
-                let axis = Vector2::new(c * span.x - s * span.y, s * span.x + c * span.y);
+            |((force, span), &trig)| {
+                let axis = Rotation::from_sin_cos(trig).apply(*span);
                 force.dot(&axis) / span.norm()
             },
         ));
@@ -366,7 +369,7 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
 
     fn columns(&self) -> Vec<String> {
         let mut c = mechanics_columns(M::BODIES, |b| (b + 1).to_string());
-        c.extend(["closure_error", "closure_rate_error", "conditioning"].map(String::from));
+        c.extend(TrackRecord::COLUMNS.iter().map(|c| c.to_string()));
         c
     }
 
@@ -387,7 +390,12 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
             }
             _ => partitioning::best_pair(&self.columns).1,
         };
-        row.extend([gap.norm(), (cq * qd).norm(), conditioning]);
+        TrackRecord {
+            closure_error: gap.norm(),
+            closure_rate_error: (cq * qd).norm(),
+            conditioning,
+        }
+        .extend_row(row);
         Ok(())
     }
 

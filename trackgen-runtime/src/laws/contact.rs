@@ -1,4 +1,8 @@
-//! Normal and tangential contact laws.
+//! Normal and tangential contact laws: a contact's force from its
+//! penetration `δ` and slip, with the energy it stores and the power it
+//! dissipates.
+
+use super::{ParameterError, Response};
 
 /// Normal force from penetration `δ` (m) and its rate `δ̇` (m/s, positive
 /// closing). The force never pulls: it is clipped at zero.
@@ -110,6 +114,63 @@ impl Friction {
         } else {
             -self.mu * normal * slip_velocity / scale
         }
+    }
+}
+
+impl NormalLaw {
+    /// The force (N, per unit of the contact's gradient), the elastic
+    /// energy (J) and the power dissipated (W, the force beyond its elastic
+    /// part times the closing rate) at penetration `δ` (m) closing at
+    /// `rate` (m/s).
+    #[inline]
+    pub fn respond(&self, penetration: f64, rate: f64) -> Response<f64> {
+        let force = self.force(penetration, rate);
+        Response {
+            force,
+            potential: self.potential(penetration),
+            dissipation: (force - self.elastic_force(penetration)) * rate,
+        }
+    }
+
+    /// A law that pushes: stiffness positive, exponent positive, damping
+    /// (`χ` or `c`) zero or more, all finite.
+    pub fn check(&self) -> Result<(), ParameterError> {
+        match *self {
+            NormalLaw::KelvinVoigt { stiffness, damping } => {
+                ParameterError::check("stiffness", stiffness, 0.0, true)?;
+                ParameterError::check("damping", damping, 0.0, false)
+            }
+            NormalLaw::HuntCrossley {
+                stiffness,
+                exponent,
+                chi,
+            } => {
+                ParameterError::check("stiffness", stiffness, 0.0, true)?;
+                ParameterError::check("exponent", exponent, 0.0, true)?;
+                ParameterError::check("chi", chi, 0.0, false)
+            }
+        }
+    }
+}
+
+impl Friction {
+    /// The friction force (N, along the slip direction) under normal force
+    /// `normal` (N) at slip speed `slip_velocity` (m/s), and the power it
+    /// dissipates, `−F v` (W); it stores nothing.
+    #[inline]
+    pub fn respond(&self, normal: f64, slip_velocity: f64) -> Response<f64> {
+        let force = self.force(normal, slip_velocity);
+        Response {
+            force,
+            potential: 0.0,
+            dissipation: -(force * slip_velocity),
+        }
+    }
+
+    /// A coefficient and a regularisation speed of zero or more, finite.
+    pub fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("mu", self.mu, 0.0, false)?;
+        ParameterError::check("slip", self.slip, 0.0, false)
     }
 }
 

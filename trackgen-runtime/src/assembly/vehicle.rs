@@ -4,14 +4,13 @@
 
 use nalgebra::{SVector, Vector2};
 
-use crate::assembly::{
-    self, AssemblyError, LinkCounts, PitchCircle, SlackLimit, excess, links_round, wrap, wrap_at,
+use super::{
+    AssemblyError, LinkCounts, PitchCircle, SlackLimit, Touching, excess, links_round, wrap,
+    wrap_at,
 };
-use crate::contact::ground::GroundContact;
-use crate::contact::sprocket::{SprocketContact, ToothProfile};
-use crate::contact::wheel::WheelContact;
-use crate::contact::{BodyState, Friction, NormalLaw, ShoeGeometry, Terrain};
-use crate::model::{BodyLoad, ChassisModel, PartKind, TrackModel};
+use crate::contact::sprocket::{self, ToothProfile};
+use crate::contact::{BodyState, Contact, ShoeGeometry, Terrain, ground, wheel};
+use crate::model::{ChassisModel, PartKind, TrackModel};
 
 /// Initial coordinates of a vehicle.
 #[derive(Debug, Clone, PartialEq)]
@@ -22,8 +21,8 @@ pub struct Assembled<const DT: usize, const DC: usize> {
     pub chassis: SVector<f64, DC>,
     /// The tensioner as set: its arm's body and the angle (rad, from the
     /// declared position) at which the track fits. A track adjuster sets
-    /// the spring's rest angle there too
-    /// ([`VehicleConfig::adjust_tensioner`](super::VehicleConfig::adjust_tensioner)).
+    /// the spring's rest angle there too (as
+    /// [`build`](crate::vehicle::build) does).
     pub tensioner: Option<(usize, f64)>,
 }
 
@@ -34,7 +33,7 @@ const TENSIONED_SAG: f64 = 0.005;
 /// The sag curvature (1/m) that makes the longest upper span of `wheels`
 /// sag [`TENSIONED_SAG`] of its length (`s ≈ κ L²/8`).
 fn tensioned(wheels: &[PitchCircle]) -> f64 {
-    let longest = assembly::longest_upper_span(wheels);
+    let longest = super::longest_upper_span(wheels);
     if longest > 0.0 {
         8.0 * TENSIONED_SAG / longest
     } else {
@@ -64,7 +63,7 @@ fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
         .map(|(i, part)| {
             let radius = match part.kind {
                 // The joints sit in the gaps: a regular polygon of the pitch.
-                PartKind::Sprocket => crate::contact::sprocket::pitch_radius(profile.teeth, pitch),
+                PartKind::Sprocket => sprocket::pitch_radius(profile.teeth, pitch),
                 // The shoes' inner faces (chords) rest on the rim.
                 _ => (part.radius + shoe.inner_offset()).hypot(pitch / 2.0),
             };
@@ -99,10 +98,7 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
     clearance: f64,
 ) -> Result<Assembled<DT, DC>, AssemblyError> {
     terrain.check()?;
-    let pitch = track
-        .description()
-        .link_spans()
-        .map_or(0.0, |s| s[0].norm());
+    let pitch = track.description().pitch()?;
     let mut qc = SVector::<f64, DC>::zeros();
     qc[0] = x;
     let sprocket_index = |circles: &[(usize, PitchCircle)]| {
@@ -180,7 +176,7 @@ fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
     wheels: impl Fn(f64) -> Vec<PitchCircle>,
     (low, high): (f64, f64),
 ) -> Result<(f64, f64), AssemblyError> {
-    let pitches = assembly::pitches(track);
+    let pitches = super::pitches(track);
     let fit = |phi: f64| {
         let w = wheels(phi);
         excess(&w, tensioned(&w), &pitches)
@@ -200,9 +196,9 @@ fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
             distance(a).total_cmp(&distance(b))
         });
     if let Some(w) = bracket {
-        let phi = assembly::bisect(w[0], w[1], &fit);
+        let phi = super::bisect(w[0], w[1], &fit);
         let gap = fit(phi).abs();
-        if gap > assembly::LANDING {
+        if gap > super::LANDING {
             return Err(AssemblyError::Unclosed {
                 links: pitches.len(),
                 gap,
@@ -211,7 +207,7 @@ fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
         let w = wheels(phi);
         return Ok((phi, tensioned(&w)));
     }
-    let pitch = assembly::mean(&pitches);
+    let pitch = super::mean(&pitches);
     let counts: Vec<f64> = angles
         .iter()
         .map(|&a| {
@@ -254,8 +250,9 @@ fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
 /// its static load, so a start within it is not a jolt.
 pub const START_PENETRATION: f64 = 2e-3;
 
-/// The deepest penetration of each contact pair at the assembled start,
-/// checked against [`START_PENETRATION`].
+/// The deepest contact of the assembled start, by contact
+/// [detection](crate::contact) (geometry only, no law), checked against
+/// [`START_PENETRATION`].
 fn check_start<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
     track: &T,
     chassis: &C,
@@ -268,7 +265,7 @@ fn check_start<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC
         positions
             .iter()
             .zip(angles)
-            .map(|(r, a)| BodyState::new(*r, *a, Vector2::zeros(), 0.0))
+            .map(|(r, a)| BodyState::at_rest(*r, *a))
             .collect()
     };
     let mut r = vec![Vector2::zeros(); T::BODIES];
@@ -277,59 +274,39 @@ fn check_start<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC
     let mut r = vec![Vector2::zeros(); C::BODIES];
     chassis.body_positions(qc, &mut r);
     let bodies = at_rest(&r, &qc.as_slice()[2..]);
-    // Geometry only: any law reports the penetration.
-    let normal = NormalLaw::KelvinVoigt {
-        stiffness: 1.0,
-        damping: 0.0,
-    };
-    let friction = Friction { mu: 0.0, slip: 1.0 };
-    let mut loads = vec![BodyLoad::ZERO; T::BODIES];
-    let mut other = BodyLoad::ZERO;
-    let mut deepest: Option<(String, usize, f64)> = None;
-    let mut keep = |what: &dyn Fn() -> String, link: usize, depth: f64| {
-        if depth > deepest.as_ref().map_or(START_PENETRATION, |d| d.2) {
-            deepest = Some((what(), link + 1, depth));
-        }
-    };
-    GroundContact {
-        terrain: terrain.clone(),
-        normal,
-        friction,
-    }
-    .apply(&links, shoe, &mut loads, |i, c| {
-        keep(&|| "the ground".to_string(), i, c.penetration)
-    });
+    let mut contacts: Vec<Contact> = Vec::new();
+    ground::detect(terrain, &links, shoe, &mut contacts);
+    let mut touching = vec![Touching::Ground; contacts.len()];
     for part in C::PARTS {
         let body = &bodies[part.body];
-        let kind = match part.kind {
-            PartKind::Sprocket => "sprocket",
-            PartKind::Idler => "idler",
-            PartKind::RoadWheel => "road wheel",
-            PartKind::Roller => "roller",
-        };
-        let name = || format!("{kind} `{}`", part.name);
         if part.kind == PartKind::Sprocket {
-            SprocketContact {
-                profile: *profile,
-                normal,
-                friction,
-            }
-            .apply(body, &links, shoe, &mut loads, &mut other, |i, c| {
-                keep(&name, i, c.penetration)
-            });
+            sprocket::detect((body, part.body), profile, &links, shoe, &mut contacts);
         } else {
-            WheelContact { normal, friction }.apply(
-                (body, part.radius),
-                &links,
-                shoe,
-                &mut loads,
-                &mut other,
-                |i, c| keep(&name, i, c.penetration),
-            );
+            wheel::detect((body, part.body, part.radius), &links, shoe, &mut contacts);
         }
+        touching.resize(
+            contacts.len(),
+            Touching::Part {
+                kind: part.kind,
+                name: part.name,
+            },
+        );
     }
+    // The first of the deepest, in detection order.
+    let deepest = contacts
+        .iter()
+        .zip(touching)
+        .filter(|(c, _)| c.depth > START_PENETRATION)
+        .fold(None::<(&Contact, Touching)>, |best, (c, what)| match best {
+            Some(b) if b.0.depth >= c.depth => Some(b),
+            _ => Some((c, what)),
+        });
     match deepest {
-        Some((what, link, depth)) => Err(AssemblyError::StartsInside { what, link, depth }),
+        Some((c, what)) => Err(AssemblyError::StartsInside {
+            what,
+            link: c.link + 1,
+            depth: c.depth,
+        }),
         None => Ok(()),
     }
 }

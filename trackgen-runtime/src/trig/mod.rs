@@ -27,7 +27,7 @@
 /// The largest `|x|` reduced here, rad: `2¹⁹ π/2`, fdlibm's bound for the
 /// three-part reduction (a track's links turn through 2π each lap; an
 /// hour at 3 m/s on the M113 is ~7000 rad).
-pub const FAST_RANGE: f64 = 823_549.6;
+pub(crate) const FAST_RANGE: f64 = 823_549.6;
 
 // The constants by their bits, as fdlibm gives them.
 const INV_PIO2: f64 = std::f64::consts::FRAC_2_PI;
@@ -172,3 +172,6 @@ fn kernel_cos(x: f64, y: f64) -> f64 {
     let w = 1.0 - hz;
     w + (((1.0 - w) - hz) + (z * r - x * y))
 }
+
+#[cfg(test)]
+mod tests;

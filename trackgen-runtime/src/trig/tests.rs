@@ -9,7 +9,7 @@
 //! signed zeros. Beyond `FAST_RANGE`, infinities and NaN it must be the
 //! standard library's result (or NaN for NaN).
 
-use trackgen_runtime::{FAST_RANGE, sin_cos};
+use super::{FAST_RANGE, sin_cos};
 
 /// Distance in units in the last place between two finite values of the
 /// same sign (or a zero).

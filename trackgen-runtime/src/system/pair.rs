@@ -1,6 +1,8 @@
 use nalgebra::DVector;
 
-use super::{Simulated, SimulationError, Switch};
+use super::Simulated;
+use crate::closure::Switch;
+use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
 
 /// Two subsystems integrated together, their states side by side in one

@@ -1,0 +1,83 @@
+//! A contact's response: the normal law and friction turn a detected
+//! [`Contact`] into a force with its energy terms, applied to both
+//! bodies' loads.
+
+use nalgebra::Vector2;
+
+use super::Contact;
+use crate::laws::{Friction, NormalLaw};
+use crate::model::BodyLoad;
+
+/// The laws of one contact pair: normal law and friction.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactLaws {
+    /// The normal law.
+    pub normal: NormalLaw,
+    /// The friction.
+    pub friction: Friction,
+}
+
+/// One contact's force on the link, with what it stores and dissipates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactForce {
+    /// Contact point, m.
+    pub point: Vector2<f64>,
+    /// Force on the link, N (the other body takes its reverse).
+    pub force: Vector2<f64>,
+    /// Normal component (≥ 0), N.
+    pub normal: f64,
+    /// Penetration, m.
+    pub penetration: f64,
+    /// Power the contact dissipates (damping and friction), W.
+    pub dissipation: f64,
+    /// Elastic energy stored in the contact, J.
+    pub potential: f64,
+}
+
+impl ContactLaws {
+    /// The force of `contact` under these laws: the normal law at the
+    /// penetration and its rate `δ̇ = −v·g` gives the force along `g`;
+    /// friction, under the normal force `F |g|`, acts along the tangent
+    /// against the slip `v·t`. The power lost is the normal force beyond
+    /// its elastic part times the closing rate, and friction against slip.
+    #[inline]
+    pub fn respond(&self, contact: &Contact) -> ContactForce {
+        let rate = contact.rate();
+        let normal = self.normal.respond(contact.depth, rate);
+        let tangent = contact.tangent();
+        let slip = contact.velocity.dot(&tangent);
+        let friction = self.friction.respond(normal.force * contact.gradient_norm, slip);
+        ContactForce {
+            point: contact.point,
+            force: contact.gradient * normal.force + tangent * friction.force,
+            normal: normal.force * contact.gradient_norm,
+            penetration: contact.depth,
+            dissipation: normal.dissipation + friction.dissipation,
+            potential: normal.potential,
+        }
+    }
+
+    /// Zero coefficients and rates of zero or more, finite.
+    pub fn check(&self) -> Result<(), crate::laws::ParameterError> {
+        self.normal.check()?;
+        self.friction.check()
+    }
+}
+
+impl ContactForce {
+    /// Adds the force to the link's load at the contact's arm and its
+    /// reverse to the other body's (if any) at the point's offset from
+    /// that body's centroid `other_position`.
+    #[inline]
+    pub fn apply(
+        &self,
+        contact: &Contact,
+        link_load: &mut BodyLoad,
+        other: Option<(&mut BodyLoad, Vector2<f64>)>,
+    ) {
+        *link_load = link_load.plus(BodyLoad::force_at(self.force, contact.arm));
+        if let Some((load, position)) = other {
+            *load = load.plus(BodyLoad::force_at(-self.force, contact.point - position));
+        }
+    }
+}

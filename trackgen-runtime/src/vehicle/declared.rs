@@ -1,0 +1,139 @@
+//! A declared vehicle as a type ([`Vehicle`]), what any of them offers in
+//! motion whatever its coordinate counts ([`VehicleDynamics`]), and the one
+//! recipe that builds any of them ([`build`]).
+
+use nalgebra::Vector2;
+
+use super::{BuildError, Drive, VehicleConfig};
+use crate::contact::soft_ground::Rut;
+use crate::contact::sprocket::ToothProfile;
+use crate::contact::{ShoeGeometry, Terrain};
+use crate::model::{ChassisPart, TreeDescription};
+use crate::system::Simulated;
+
+/// A vehicle's contact geometry, compiled with its masses from the
+/// declaration's `shoe` and sprocket: what its shoes touch the world with
+/// and what its sprocket's teeth are. Fixed for the vehicle (the laws that
+/// act on it are in [`VehicleConfig`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Geometry {
+    /// The shoes' contact features.
+    pub shoe: ShoeGeometry,
+    /// The sprocket's teeth, from its declared `teeth` (the same number
+    /// as its [`ChassisPart::teeth`]) and radii.
+    pub sprocket: ToothProfile,
+}
+
+/// A vehicle declared with `trackgen::model!`: its compiled track and
+/// chassis, their coordinate counts, its contact geometry and declared
+/// configuration. Generated for every `vehicle` with a `shoe`; a vehicle
+/// is then one call away ([`system`](Self::system)), and code written for
+/// any `V: Vehicle` runs every declared vehicle.
+///
+/// ```ignore
+/// use trackgen::Vehicle;
+/// let mut vehicle = M113::system(Terrain::Flat { height: 0.0 }, M113::speed_drive(|_| 2.0))?;
+/// ```
+pub trait Vehicle: Copy + Default + Send + Sync + 'static {
+    /// The name declared.
+    const NAME: &'static str;
+    /// Track coordinates `q_i` (links + 2).
+    const TRACK_DOF: usize;
+    /// Chassis coordinates `q_i` (bodies + 2).
+    const CHASSIS_DOF: usize;
+    /// The compiled track (`NameTrack`, a
+    /// [`TrackModel<TRACK_DOF>`](crate::TrackModel)).
+    type Track: Copy + Default + Send + Sync + 'static;
+    /// The compiled chassis (`NameChassis`, a
+    /// [`ChassisModel<CHASSIS_DOF>`](crate::ChassisModel)).
+    type Chassis: Copy + Default + Send + Sync + 'static;
+    /// The vehicle in motion (`NameSystem`).
+    type System: VehicleDynamics;
+
+    /// The contact geometry as declared.
+    fn geometry() -> Geometry;
+
+    /// The declared contact laws, friction and arm springs on `terrain`,
+    /// driven by `drive`: every field public, to change before
+    /// [`system_with`](Self::system_with) (no rebuild needed).
+    fn config(terrain: Terrain, drive: Drive) -> VehicleConfig;
+
+    /// A PI speed drive with the declared gains and torque limit: `target`
+    /// is the forward speed wanted, m/s, against time, s.
+    fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive;
+
+    /// The vehicle assembled on `terrain` with its declared
+    /// [`config`](Self::config) and `drive`: [`build`] of that.
+    fn system(terrain: Terrain, drive: Drive) -> Result<Self::System, BuildError> {
+        build::<Self>(Self::config(terrain, drive))
+    }
+
+    /// The vehicle assembled with `config`: [`build`].
+    fn system_with(config: VehicleConfig) -> Result<Self::System, BuildError> {
+        build::<Self>(config)
+    }
+}
+
+/// Builds any declared vehicle from a configuration, the one recipe: the
+/// configuration checked against the compiled model, the track wrapped
+/// round the wheels on `config`'s terrain (chassis centroid at x = 0,
+/// shoes 1 mm above the ground, [`assemble`](crate::assembly::assemble)),
+/// the tensioner's spring rest angle moved to where the assembly set its
+/// arm (a track adjuster's job: the tensioner then pushes with its declared
+/// preload), the loop closed by `config.closure`. Ready for
+/// [`simulate`](crate::simulate::simulate).
+///
+/// [`BuildError::Assembly`] when no start fits, [`BuildError::Config`] for
+/// a configuration that makes no vehicle.
+pub fn build<V: Vehicle>(config: VehicleConfig) -> Result<V::System, BuildError> {
+    V::System::build_from(V::geometry(), config)
+}
+
+/// A vehicle in motion, whatever its coordinate counts: what generic code
+/// over [`Vehicle`] needs of [`V::System`](Vehicle::System) besides
+/// simulating it. Implemented by
+/// [`VehicleSystem`](super::VehicleSystem) for every track and chassis.
+pub trait VehicleDynamics: Simulated + Send + Sized {
+    /// [`build`]'s work for this system's track and chassis; call
+    /// [`build`].
+    #[doc(hidden)]
+    fn build_from(geometry: Geometry, config: VehicleConfig) -> Result<Self, BuildError>;
+
+    /// The configuration it runs with.
+    fn config(&self) -> &VehicleConfig;
+
+    /// Its contact geometry.
+    fn geometry(&self) -> &Geometry;
+
+    /// The sprocket's pitch radius, m: track speed over sprocket speed at
+    /// a seated joint, `p / (2 sin(π/N))` (0 without a sprocket).
+    fn sprocket_pitch_radius(&self) -> f64;
+
+    /// The soft soil's memory, if the vehicle drives on soil: the rut it
+    /// has left so far.
+    fn rut(&self) -> Option<&Rut>;
+
+    /// The parts pinned to the chassis, as declared.
+    fn parts() -> &'static [ChassisPart];
+
+    /// The track's description (masses and joints).
+    fn track_description() -> TreeDescription;
+
+    /// The chassis' description.
+    fn chassis_description() -> TreeDescription;
+
+    /// Track coordinates (`q_i`, links + 2).
+    fn track_dof() -> usize;
+
+    /// Chassis coordinates (`q_i`, bodies + 2).
+    fn chassis_dof() -> usize;
+
+    /// The links' centroids from the track's `q_i` (a slice of
+    /// [`track_dof`](Self::track_dof) values: a recorded row's, say), one
+    /// per link into `out`.
+    fn track_positions(q: &[f64], out: &mut [Vector2<f64>]);
+
+    /// The chassis bodies' centroids from its `q_i`, one per body into
+    /// `out`.
+    fn chassis_positions(q: &[f64], out: &mut [Vector2<f64>]);
+}

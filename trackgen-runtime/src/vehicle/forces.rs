@@ -1,0 +1,184 @@
+//! Stages 2 and 3 of a vehicle's evaluation: contact detection, then the
+//! force elements, each giving its load with what it stores and
+//! dissipates, booked in one place ([`Books`]).
+
+use nalgebra::SVector;
+
+use super::workspace::Workspace;
+use super::{Geometry, VehicleConfig, arms};
+use crate::contact::soft_ground::SoftGround;
+use crate::contact::{ContactForce, ground, sprocket, wheel};
+use crate::error::SimulationError;
+use crate::model::{BodyLoad, ChassisModel, PartKind};
+
+/// What the force elements did at one evaluation: the energy books' terms
+/// (elastic energy stored, power dissipated, the drive's torque) and what
+/// the vehicle records of its contacts.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct Books {
+    /// The normal force of the ground on the track, summed, N.
+    pub ground_normal: f64,
+    /// The deepest ground contact, m.
+    pub ground_penetration: f64,
+    /// The deepest rim contact, m.
+    pub wheel_penetration: f64,
+    /// The deepest tooth contact, m.
+    pub sprocket_penetration: f64,
+    /// Elastic energy in the contacts (and soil), J.
+    pub potential: f64,
+    /// Elastic energy in the arms' springs, J.
+    pub arm_potential: f64,
+    /// Power dissipated: contacts, soil, arm dampers, drawbar, W.
+    pub dissipation: f64,
+    /// The drive's torque on the sprocket, N m.
+    pub torque: f64,
+    /// The rate of the drive controller's integral, rad/s.
+    pub integral_rate: f64,
+}
+
+impl Books {
+    /// Books a contact's energy terms; returns its penetration.
+    #[inline]
+    fn contact(&mut self, force: &ContactForce) -> f64 {
+        self.potential += force.potential;
+        self.dissipation += force.dissipation;
+        force.penetration
+    }
+
+    /// Books a ground contact.
+    #[inline]
+    fn ground(&mut self, force: &ContactForce) {
+        self.ground_normal += force.normal;
+        let depth = self.contact(force);
+        self.ground_penetration = self.ground_penetration.max(depth);
+    }
+}
+
+/// Stage 2, detection: every contact of the links (their states in
+/// `work`) with the ground and with each part, into `work.contacts`.
+pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
+    work: &mut Workspace,
+    config: &VehicleConfig,
+    geometry: &Geometry,
+) {
+    let Workspace {
+        links,
+        parts,
+        contacts,
+        ..
+    } = work;
+    contacts.clear();
+    let shoe = &geometry.shoe;
+    ground::detect(&config.terrain, links, shoe, contacts);
+    for part in C::PARTS {
+        let body = &parts[part.body];
+        if part.kind == PartKind::Sprocket {
+            sprocket::detect((body, part.body), &geometry.sprocket, links, shoe, contacts);
+        } else {
+            wheel::detect((body, part.body, part.radius), links, shoe, contacts);
+        }
+    }
+}
+
+/// The drive's place on the chassis: the sprocket's body and its pitch
+/// radius (track speed over sprocket speed), m.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Sprocket {
+    pub body: usize,
+    pub pitch_radius: f64,
+}
+
+impl Sprocket {
+    /// The sprocket's speed relative to the chassis, rad/s.
+    #[inline]
+    pub fn omega<const DC: usize>(&self, qdc: &SVector<f64, DC>) -> f64 {
+        qdc[2 + self.body] - qdc[2]
+    }
+}
+
+/// Stage 3, the force elements, into `work`'s loads and books: every
+/// contact's law (rigid ground, or the soil at shear displacements
+/// `shear`), the arms' springs and dampers, the drawbar and the drive
+/// (at controller integral `integral`).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn respond<const DC: usize>(
+    work: &mut Workspace,
+    t: f64,
+    config: &VehicleConfig,
+    (soil, points, shear): (Option<&SoftGround>, usize, &[f64]),
+    sprocket: Option<Sprocket>,
+    (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
+    integral: f64,
+) -> Result<(), SimulationError> {
+    let Workspace {
+        parts,
+        contacts,
+        track_loads,
+        chassis_loads,
+        shear_rate,
+        books,
+        ..
+    } = work;
+    track_loads.fill(BodyLoad::ZERO);
+    chassis_loads.fill(BodyLoad::ZERO);
+    shear_rate.fill(0.0);
+    *books = Books::default();
+    let sprocket_body = sprocket.map(|s| s.body);
+    for contact in contacts.iter() {
+        let link_load = &mut track_loads[contact.link];
+        match (contact.other, soil) {
+            (None, None) => {
+                let force = config.ground.respond(contact);
+                force.apply(contact, link_load, None);
+                books.ground(&force);
+            }
+            (None, Some(soil)) => {
+                let slot = contact.link * points + contact.feature;
+                let (force, rate) = soil.respond(contact, points, shear[slot]);
+                shear_rate[slot] = rate;
+                if let Some(force) = force {
+                    force.apply(contact, link_load, None);
+                    books.ground(&force);
+                }
+            }
+            (Some(body), _) => {
+                let on_teeth = Some(body) == sprocket_body;
+                let laws = if on_teeth {
+                    &config.sprocket
+                } else {
+                    &config.wheels
+                };
+                let force = laws.respond(contact);
+                let other = (&mut chassis_loads[body], parts[body].position);
+                force.apply(contact, link_load, Some(other));
+                let depth = books.contact(&force);
+                let deepest = if on_teeth {
+                    &mut books.sprocket_penetration
+                } else {
+                    &mut books.wheel_penetration
+                };
+                *deepest = deepest.max(depth);
+            }
+        }
+    }
+    let arm_books = arms::apply(&config.arms, qc, qdc, chassis_loads);
+    books.arm_potential = arm_books.potential;
+    // The drawbar pulls the chassis back at its centroid; the power it
+    // takes out, `F v`, is booked as dissipated.
+    chassis_loads[0].force.x -= config.drawbar_pull;
+    books.dissipation += config.drawbar_pull * qdc[0];
+    books.dissipation += arm_books.dissipation;
+    if let Some(sprocket) = sprocket {
+        let (torque, rate) = config.drive.checked_torque(
+            t,
+            sprocket.omega(qdc),
+            sprocket.pitch_radius,
+            integral,
+        )?;
+        chassis_loads[sprocket.body].moment += torque;
+        chassis_loads[0].moment -= torque;
+        books.torque = torque;
+        books.integral_rate = rate;
+    }
+    Ok(())
+}

@@ -1,0 +1,89 @@
+//! What a vehicle records, by name and value together, and the spans'
+//! tensions it reads off the sprocket.
+
+use nalgebra::Vector2;
+
+use crate::contact::BodyState;
+use crate::system::record;
+
+record! {
+    /// What a vehicle records at each output time, after its track's and
+    /// chassis' own columns (`track.…`, `chassis.…`).
+    pub struct VehicleRecord {
+        /// Chassis centroid x, m.
+        x,
+        /// Chassis centroid y, m.
+        y,
+        /// Chassis pitch, rad (counter-clockwise: nose up driving forward).
+        pitch,
+        /// Chassis centroid speed along x, m/s.
+        speed,
+        /// Sprocket speed relative to the chassis, rad/s (negative driving
+        /// forward).
+        sprocket_speed,
+        /// The drive's torque on the sprocket, N m.
+        sprocket_torque,
+        /// Tension in the joint after the configured link, N.
+        tension,
+        /// Tension in the span leaving the sprocket's seated run on the
+        /// tight side, N.
+        tension_tight,
+        /// Tension on the slack side, N.
+        tension_slack,
+        /// The ground's normal force on the track, N.
+        ground_normal,
+        /// The deepest ground contact, m.
+        ground_penetration,
+        /// The deepest rim contact, m.
+        wheel_penetration,
+        /// The deepest tooth contact, m.
+        sprocket_penetration,
+        /// Mechanical energy: kinetic, gravity, springs, contacts, J.
+        energy,
+        /// The motor's work since the start, J.
+        motor_work,
+        /// The work dissipated since the start, J.
+        dissipated,
+    }
+}
+
+/// How far a joint may sit from the sprocket's pitch circle and count as
+/// seated in a gap, m.
+const SEATED: f64 = 0.02;
+
+/// The joints just before and just after the run of joints seated on the
+/// sprocket (within [`SEATED`] of its pitch circle), in link order; when
+/// none is (the track has jumped the teeth), the joint nearest the pitch
+/// circle stands for the run, so that a run that goes on has span
+/// tensions to record. `None` only if every joint is seated. The loop is
+/// numbered counter-clockwise and runs clockwise round the chassis when
+/// driving forward, so the joint after the seated run is on the tight
+/// span (the top run, pulled into the sprocket) and the one before it on
+/// the slack span.
+///
+/// `links` are the links' states, `forward_joints` every link's `ū2`,
+/// `centre` and `radius` the sprocket's centre and pitch radius (m);
+/// `offsets` is scratch (one per link).
+pub(super) fn sprocket_spans(
+    links: &[BodyState],
+    forward_joints: &[Vector2<f64>],
+    (centre, radius): (Vector2<f64>, f64),
+    offsets: &mut Vec<f64>,
+) -> Option<(usize, usize)> {
+    let n = links.len();
+    offsets.clear();
+    offsets.extend(
+        links
+            .iter()
+            .zip(forward_joints)
+            .map(|(link, u2)| ((link.point(*u2) - centre).norm() - radius).abs()),
+    );
+    let nearest = offsets.iter().copied().fold(f64::INFINITY, f64::min);
+    let seated = |j: usize| offsets[j] < SEATED || offsets[j] <= nearest;
+    let first = (0..n).find(|&j| seated(j) && !seated((j + n - 1) % n))?;
+    let last = (0..n)
+        .map(|k| (first + k) % n)
+        .take_while(|&j| seated(j))
+        .last()?;
+    Some(((first + n - 1) % n, (last + 1) % n))
+}

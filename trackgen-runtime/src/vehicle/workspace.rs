@@ -1,0 +1,89 @@
+//! What a vehicle's evaluation works in, allocated once when the vehicle is
+//! built and reused by every evaluation (no allocation in the right-hand
+//! side), and its first stage: the bodies' kinematics.
+
+use nalgebra::{SVector, Vector2};
+
+use super::forces::Books;
+use crate::contact::{BodyState, Contact};
+use crate::model::{BodyLoad, RecursiveModel};
+
+/// The buffers of an evaluation, filled stage by stage.
+pub(super) struct Workspace {
+    /// Every link's state (kinematics).
+    pub links: Vec<BodyState>,
+    /// Every chassis body's state.
+    pub parts: Vec<BodyState>,
+    /// `(sin θ, cos θ)` of every chassis body.
+    pub part_trig: Vec<(f64, f64)>,
+    /// Scratch for the generated body states.
+    pub positions: Vec<Vector2<f64>>,
+    /// Scratch for the generated body velocities.
+    pub velocities: Vec<Vector2<f64>>,
+    /// Every contact found (detection), in order: the ground's, then each
+    /// part's in the order of the chassis' parts.
+    pub contacts: Vec<Contact>,
+    /// The loads on the links (force elements).
+    pub track_loads: Vec<BodyLoad>,
+    /// The loads on the chassis bodies.
+    pub chassis_loads: Vec<BodyLoad>,
+    /// `dj/dt` of every shoe ground point on soft soil.
+    pub shear_rate: Vec<f64>,
+    /// What the force elements stored, dissipated and did, at the last
+    /// evaluation.
+    pub books: Books,
+    /// Every joint's tension (recording).
+    pub tensions: Vec<f64>,
+    /// Every joint's distance from the sprocket's pitch circle (recording).
+    pub offsets: Vec<f64>,
+}
+
+impl Workspace {
+    /// Buffers for `links` links, `bodies` chassis bodies and
+    /// `shear_states` soil shear states.
+    pub fn new(links: usize, bodies: usize, shear_states: usize) -> Workspace {
+        let resting = BodyState::at_rest(Vector2::zeros(), 0.0);
+        let largest = links.max(bodies);
+        Workspace {
+            links: vec![resting; links],
+            parts: vec![resting; bodies],
+            part_trig: vec![(0.0, 1.0); bodies],
+            positions: vec![Vector2::zeros(); largest],
+            velocities: vec![Vector2::zeros(); largest],
+            contacts: Vec::with_capacity(8 * links),
+            track_loads: vec![BodyLoad::ZERO; links],
+            chassis_loads: vec![BodyLoad::ZERO; bodies],
+            shear_rate: vec![0.0; shear_states],
+            books: Books::default(),
+            tensions: Vec::with_capacity(links),
+            offsets: Vec::with_capacity(links),
+        }
+    }
+
+    /// Stage 1, kinematics: every link's state from the track's recovered
+    /// `(q_i, q̇_i)` and trigonometry `link_trig`, and every chassis body's
+    /// from `(q_i, q̇_i)` (its trigonometry computed here, once, and kept
+    /// for the chassis' dynamics).
+    pub fn kinematics<T, const DT: usize, C, const DC: usize>(
+        &mut self,
+        (track, qt, qdt, link_trig): (&T, &SVector<f64, DT>, &SVector<f64, DT>, &[(f64, f64)]),
+        (chassis, qc, qdc): (&C, &SVector<f64, DC>, &SVector<f64, DC>),
+    ) where
+        T: RecursiveModel<DT>,
+        C: RecursiveModel<DC>,
+    {
+        let n = T::BODIES;
+        let (r, v) = (&mut self.positions[..n], &mut self.velocities[..n]);
+        track.body_states_with_trig(link_trig, qt, qdt, r, v);
+        for (b, link) in self.links.iter_mut().enumerate() {
+            *link = BodyState::with_sin_cos(r[b], qt[2 + b], link_trig[b], v[b], qdt[2 + b]);
+        }
+        let m = C::BODIES;
+        let (r, v) = (&mut self.positions[..m], &mut self.velocities[..m]);
+        crate::sin_cos_each(&qc.as_slice()[2..], &mut self.part_trig);
+        chassis.body_states_with_trig(&self.part_trig, qc, qdc, r, v);
+        for (b, part) in self.parts.iter_mut().enumerate() {
+            *part = BodyState::with_sin_cos(r[b], qc[2 + b], self.part_trig[b], v[b], qdc[2 + b]);
+        }
+    }
+}
