@@ -16,8 +16,8 @@
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
-use trackgen::TrackModel;
 use trackgen::ClosingJoint;
+use trackgen::TrackModel;
 use trackgen::dynamics::{LinearTimeSolver, forward_dynamics};
 use trackgen::nalgebra::{SVector, Vector2};
 

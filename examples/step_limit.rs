@@ -25,6 +25,7 @@
 
 use std::time::Instant;
 
+use trackgen::Vehicle;
 use trackgen::contact::{NormalLaw, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DMatrix, DVector};
@@ -32,7 +33,6 @@ use trackgen::simulate::{Output, Simulated, simulate};
 use trackgen::vehicle::{VehicleConfig, build};
 use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
-use trackgen::Vehicle;
 
 /// The vehicle's declared configuration, driven from rest to 3 m/s.
 fn config<V: Vehicle>() -> VehicleConfig {
@@ -146,12 +146,7 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
     less_damping.ground.normal = damped(less_damping.ground.normal, 0.1);
     less_damping.wheels.normal = damped(less_damping.wheels.normal, 0.1);
     less_damping.sprocket.normal = damped(less_damping.sprocket.normal, 0.1);
-    run::<V>(
-        "contact damping / 10",
-        less_damping,
-        1e-3,
-        duration,
-    )?;
+    run::<V>("contact damping / 10", less_damping, 1e-3, duration)?;
 
     // The Jacobian at the end of the default run.
     let mut system = build::<V>(config())?;

@@ -169,3 +169,9 @@ pub use trackgen_runtime::__private::nalgebra;
 pub mod __private {
     pub use trackgen_runtime::__private::*;
 }
+
+/// README's Rust blocks, compiled (and run, where not marked `no_run`) as
+/// doctests, so the README shows code that builds.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

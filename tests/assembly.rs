@@ -44,7 +44,9 @@ use trackgen::assembly::{
 use trackgen::contact::Terrain;
 use trackgen::contact::sprocket::pitch_radius;
 use trackgen::nalgebra::{SVector, Vector2};
-use trackgen::vehicle::{ConfigError, Drive, Geometry, VehicleConfig, VehicleDynamics, VehicleSystem};
+use trackgen::vehicle::{
+    ConfigError, Drive, Geometry, VehicleConfig, VehicleDynamics, VehicleSystem,
+};
 use trackgen::vehicles::m113::{M113, M113Chassis, M113Track};
 use trackgen::{RecursiveModel, TrackModel, Vehicle, rotate};
 

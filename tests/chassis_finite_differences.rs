@@ -46,9 +46,9 @@
 
 mod support;
 
+use support::arms::{add_arm_torques, arm_dissipation, arm_energy};
 use support::{Lcg, assert_close};
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
-use support::arms::{add_arm_torques, arm_dissipation, arm_energy};
 use trackgen::vehicles::m113::M113Chassis;
 use trackgen::{BodyLoad, ChassisModel, RecursiveModel};
 

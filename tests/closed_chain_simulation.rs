@@ -9,12 +9,10 @@ mod support;
 
 use support::{Lcg, max_abs, max_of, min_of};
 use trackgen::TrackModel;
-use trackgen::closure::{
-    ClosureMethod, MultiplierOptions, PartitionOptions, multipliers,
-};
+use trackgen::closure::{ClosureMethod, MultiplierOptions, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
-use trackgen::nalgebra::SVector;
 use trackgen::laws::PenaltyJoint;
+use trackgen::nalgebra::SVector;
 use trackgen::simulate::{Output, Results, SimulationError, simulate};
 use trackgen::system::TrackSystem;
 

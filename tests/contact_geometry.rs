@@ -52,7 +52,7 @@
 
 mod support;
 
-use support::contact::{GroundContact, WheelContact, SprocketContact};
+use support::contact::{GroundContact, SprocketContact, WheelContact};
 
 use std::f64::consts::PI;
 

@@ -41,14 +41,14 @@
 
 mod support;
 
-use support::contact::{GroundContact, WheelContact, SprocketContact};
+use support::contact::{GroundContact, SprocketContact, WheelContact};
 
 use support::{Lcg, max_of, min_of};
-use trackgen::vehicles::m113::M113;
-use trackgen::Vehicle;
 use trackgen::BodyLoad;
+use trackgen::Vehicle;
 use trackgen::contact::{BodyState, ContactForce, Friction, NormalLaw, Terrain};
 use trackgen::nalgebra::Vector2;
+use trackgen::vehicles::m113::M113;
 
 fn rel_close(label: &str, got: f64, want: f64, rel: f64) {
     assert!(

@@ -108,7 +108,11 @@ fn runtime_modules_import_only_downward() {
     let mut checked = 0;
     for file in &files {
         let relative = file.strip_prefix(&src).expect("under src");
-        let first = relative.iter().next().and_then(|c| c.to_str()).unwrap_or("");
+        let first = relative
+            .iter()
+            .next()
+            .and_then(|c| c.to_str())
+            .unwrap_or("");
         let module = first.trim_end_matches(".rs");
         if module == "lib" {
             // The crate root declares every module and re-exports across
@@ -116,7 +120,10 @@ fn runtime_modules_import_only_downward() {
             continue;
         }
         let own = layer(module).unwrap_or_else(|| {
-            panic!("{}: module `{module}` is in no layer: add it to LAYERS", relative.display())
+            panic!(
+                "{}: module `{module}` is in no layer: add it to LAYERS",
+                relative.display()
+            )
         });
         let text = std::fs::read_to_string(file).expect("a source file");
         for (n, line) in text.lines().enumerate() {
@@ -141,22 +148,32 @@ fn runtime_modules_import_only_downward() {
         }
     }
     assert!(checked > 100, "paths checked: {checked}");
-    assert!(wrong.is_empty(), "imports that run upward:\n{}", wrong.join("\n"));
+    assert!(
+        wrong.is_empty(),
+        "imports that run upward:\n{}",
+        wrong.join("\n")
+    );
 }
 
 /// The test's own reading of paths, on lines that would fail it.
 #[test]
 fn the_reading_of_paths_finds_what_it_must() {
-    assert_eq!(targets("use crate::simulate::{SimulationError, Switch};"), ["simulate"]);
+    assert_eq!(
+        targets("use crate::simulate::{SimulationError, Switch};"),
+        ["simulate"]
+    );
     assert_eq!(
         targets("use crate::{ContactLaws, sin_cos};"),
         ["ContactLaws", "sin_cos"]
     );
-    assert_eq!(targets("    let x = crate::sin_cos_each(a, b); // crate::vehicle"), [
-        "sin_cos_each",
-        "vehicle"
-    ]);
-    assert_eq!(targets(code("    let x = 1; // crate::vehicle")), Vec::<String>::new());
+    assert_eq!(
+        targets("    let x = crate::sin_cos_each(a, b); // crate::vehicle"),
+        ["sin_cos_each", "vehicle"]
+    );
+    assert_eq!(
+        targets(code("    let x = 1; // crate::vehicle")),
+        Vec::<String>::new()
+    );
     assert!(layer("vehicle") > layer("contact"));
     assert_eq!(layer("sin_cos"), layer("trig"));
     assert_eq!(layer("nowhere"), None);

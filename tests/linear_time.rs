@@ -27,9 +27,9 @@ mod support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close, max_abs};
-use trackgen::laws::PenaltyJoint;
 use trackgen::ClosingJoint;
 use trackgen::dynamics::{LinearTimeSolver, forward_dynamics, track_dynamics};
+use trackgen::laws::PenaltyJoint;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::{BodyLoad, TrackModel};
 

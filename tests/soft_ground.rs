@@ -13,13 +13,13 @@
 
 mod support;
 
-use trackgen::vehicles::m113::M113;
-use trackgen::Vehicle;
 use trackgen::BodyLoad;
+use trackgen::Vehicle;
 use trackgen::contact::soft_ground::SoftGround;
 use trackgen::contact::soil::{Soil, SoilError, SoilPreset};
 use trackgen::contact::{BodyState, ContactForce, ShoeGeometry, Terrain};
 use trackgen::nalgebra::Vector2;
+use trackgen::vehicles::m113::M113;
 
 use support::Lcg;
 use support::contact::soil_forces;
@@ -262,7 +262,7 @@ fn the_rut_makes_a_second_pass_sink_less() {
         while hi - lo > 1e-12 {
             let mid = 0.5 * (lo + hi);
             let (_, contacts) = evaluate(
-                &half,
+                half,
                 &shoe_at(mid, 1.0, Vector2::zeros(), 0.0, 0.0),
                 [0.0; 2],
             );
@@ -281,7 +281,11 @@ fn the_rut_makes_a_second_pass_sink_less() {
     assert!(second > fresh, "second pass {second} m, fresh {fresh} m");
     // Lifted off the ground: the shear displacement resets.
     let lifted = shoe_at(-0.05, 1.0, Vector2::zeros(), 0.0, 0.0);
-    assert!(!g.press(std::slice::from_ref(&lifted), &M113::geometry().shoe, &mut j));
+    assert!(!g.press(
+        std::slice::from_ref(&lifted),
+        &M113::geometry().shoe,
+        &mut j
+    ));
     assert_eq!(j, [0.0; 2]);
     let profile: Vec<(f64, f64)> = g.rut.profile().collect();
     assert!(!profile.is_empty() && profile.iter().all(|&(_, z)| z > 0.0 && z < first));

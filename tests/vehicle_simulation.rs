@@ -4,6 +4,7 @@
 
 mod support;
 
+use support::arms::{add_arm_torques, arm_energy};
 use support::max_abs;
 use trackgen::ChassisModel;
 use trackgen::closure::ClosureMethod;
@@ -11,7 +12,6 @@ use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::system::{Pair, TrackSystem, TreeSystem};
-use support::arms::{add_arm_torques, arm_energy};
 use trackgen::vehicles::m113::{M113Chassis, M113Track};
 
 /// The motor's torque, N m: on the sprocket, and its reaction on the frame.

@@ -14,7 +14,8 @@ struct Mm(f64);
 impl std::fmt::Display for Mm {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let tenths = (self.0 * 1e4).round();
-        if !(tenths.abs() < 1e15) {
+        // Not `>=`: a NaN takes the plain path too.
+        if tenths.abs().partial_cmp(&1e15) != Some(std::cmp::Ordering::Less) {
             return write!(f, "{:.4}", self.0);
         }
         let sign = if tenths < 0.0 { "-" } else { "" };

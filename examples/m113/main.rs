@@ -162,7 +162,9 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
     )?);
     let started = Instant::now();
-    // The files are written on a second thread while the run goes on.
+    // The files are written on a second thread while the run goes on. (A
+    // failed stream carries its report by value, as the API returns it.)
+    #[allow(clippy::result_large_err)]
     let outcome = std::thread::scope(|scope| {
         let recorders = &mut outputs.recorders;
         let mut sink = Background::spawn(scope, move || recorders.sink());

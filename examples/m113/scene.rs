@@ -21,11 +21,14 @@ pub struct Frame {
     pub hull: Vec<(f64, f64)>,
 }
 
+/// A frame at time `t` from the track's and the chassis' coordinates.
+type FrameOf = Box<dyn Fn(f64, &[f64], &[f64]) -> Frame>;
+
 /// How to draw a vehicle from its recorded coordinates.
 pub struct Scene {
     /// Track and chassis coordinates.
     dofs: (usize, usize),
-    frame: Box<dyn Fn(f64, &[f64], &[f64]) -> Frame>,
+    frame: FrameOf,
 }
 
 impl Scene {

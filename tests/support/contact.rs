@@ -177,6 +177,13 @@ impl SprocketContact {
             friction: self.friction,
         };
         let pair = (&laws, &self.profile);
-        tooth_forces(pair, sprocket_state, links, shoe, (loads, sprocket_load), each);
+        tooth_forces(
+            pair,
+            sprocket_state,
+            links,
+            shoe,
+            (loads, sprocket_load),
+            each,
+        );
     }
 }

@@ -55,7 +55,7 @@ fn check_spanned(text: &str) -> Result<(), TestCaseError> {
         .map_err(|_| TestCaseError::fail(format!("the expander panicked on: {text}")))?;
     for span in error_spans(&out) {
         prop_assert!(
-            span.start().line >= 2 && span.byte_range().len() > 0,
+            span.start().line >= 2 && !span.byte_range().is_empty(),
             "an error at the call site ({:?}) for: {}",
             span.start(),
             text

@@ -76,6 +76,9 @@ pub mod __private {
     pub mod elimination {
         pub use crate::dynamics::elimination::{JointTerms, LinkTerms, Sweep, back, with_tables};
     }
+    pub use crate::DynamicsError;
+    pub use crate::contact::{ContactLaws, Terrain};
+    pub use crate::laws::{Friction, NormalLaw};
     pub use crate::laws::{PenaltyJoint, TorsionSpring};
     pub use crate::model::{
         ArmSpring, BodyDescription, BodyLoad, ChassisModel, ChassisPart, ClosingJoint, Closure,
@@ -83,7 +86,4 @@ pub mod __private {
     };
     pub use crate::trig::{sin_cos, sin_cos_each};
     pub use crate::vehicle::{Drive, Geometry, Vehicle, VehicleConfig, VehicleSystem};
-    pub use crate::DynamicsError;
-    pub use crate::contact::{ContactLaws, Terrain};
-    pub use crate::laws::{Friction, NormalLaw};
 }

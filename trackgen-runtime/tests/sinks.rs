@@ -9,6 +9,9 @@
 //! `fail_at` is between output times, so which rows precede the failure
 //! does not hang on rounding.
 
+// A failed stream carries its report and error by value, as the API returns it.
+#![allow(clippy::result_large_err)]
+
 use std::io::{self, Cursor};
 use std::path::PathBuf;
 

@@ -103,9 +103,9 @@ pub fn tree_dynamics(tree: &Tree) -> TokenStream {
     }
     out.extend(root(tree, &up, &rt));
     // Down the tree: each child's joint acceleration, then its α.
-    for b in 1..n {
+    for (b, u) in up.iter().enumerate().skip(1) {
         let tag = &tree.bodies[b].tag;
-        let u = up[b].as_ref().expect("every body went up");
+        let u = u.as_ref().expect("every body went up");
         let alpha = match &u.g {
             Some([gx, gy]) => gx
                 .clone()

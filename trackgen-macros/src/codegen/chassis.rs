@@ -145,6 +145,9 @@ fn chassis_type(
 
         #recursive
 
+        // Folded numbers (a default travel of ±π/2) may be close to a
+        // named constant: they are meant as written.
+        #[allow(clippy::approx_constant)]
         impl #rt::ChassisModel<#dof> for #name {
             const PARTS: &'static [#rt::ChassisPart] = &[#(#parts),*];
         }

@@ -43,6 +43,7 @@ pub fn running(
     quote! {
         #common
 
+        #[allow(clippy::approx_constant)]
         impl #rt::Vehicle for #name {
             const NAME: &'static str = #label;
             const TRACK_DOF: usize = #dt;

@@ -147,7 +147,11 @@ fn models(name: &Ident, chassis: bool) -> TokenStream {
 }
 
 /// The `Vehicle` impl of a vehicle with a shoe.
-fn vehicle_impl(name: &Ident, (track, chassis): (&Ident, &Ident), (dt, dc): (usize, usize)) -> TokenStream {
+fn vehicle_impl(
+    name: &Ident,
+    (track, chassis): (&Ident, &Ident),
+    (dt, dc): (usize, usize),
+) -> TokenStream {
     let rt = runtime();
     let never = quote!(::core::unreachable!("the declaration did not compile"));
     let system = format_ident!("{}System", name);

@@ -654,7 +654,13 @@ impl Cx<'_> {
 
     /// `shoe { ground_points, inner_offset, pins, pin_radius, width? }`.
     fn shoe(&mut self, block: &crate::parse::Block) -> Option<Shoe> {
-        let keys = ["ground_points", "inner_offset", "pins", "pin_radius", "width"];
+        let keys = [
+            "ground_points",
+            "inner_offset",
+            "pins",
+            "pin_radius",
+            "width",
+        ];
         let fields = self.fields("shoe", block, &keys);
         self.sections("shoe", block, &[]);
         let ground_points = self.points(&fields, "ground_points", true);

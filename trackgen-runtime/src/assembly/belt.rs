@@ -254,12 +254,12 @@ pub(crate) fn belt(wheels: &[PitchCircle], kappa: f64) -> Option<Belt> {
                 .filter(|w| !ends.contains(w))
                 .any(|w| spans[i].cuts(w))
         });
-        return Some(Belt {
+        Some(Belt {
             path: Path::new(pieces),
             touching,
             sag,
             cuts,
-        });
+        })
     }
 }
 

@@ -184,6 +184,8 @@ fn near_mask(block: &[BodyState], centre: Vector2<f64>, reach2: f64) -> u64 {
 
 /// [`near_mask`] a link at a time, in plain arithmetic.
 #[inline]
+// `!(d² > r²)` is meant: true for NaN, so a NaN state is looked at.
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
 fn near_mask_portable(block: &[BodyState], centre: Vector2<f64>, reach2: f64) -> u64 {
     let mut near = 0u64;
     for (k, link) in block.iter().enumerate() {

@@ -46,7 +46,9 @@ impl ContactLaws {
         let normal = self.normal.respond(contact.depth, rate);
         let tangent = contact.tangent();
         let slip = contact.velocity.dot(&tangent);
-        let friction = self.friction.respond(normal.force * contact.gradient_norm, slip);
+        let friction = self
+            .friction
+            .respond(normal.force * contact.gradient_norm, slip);
         ContactForce {
             point: contact.point,
             force: contact.gradient * normal.force + tangent * friction.force,

@@ -302,8 +302,7 @@ impl SoftGround {
         let slot = contact.link * points + contact.feature;
         let z = contact.depth;
         let memory = self.memory_at(slot, contact.point.x);
-        let (p, elastic, rate, g) =
-            self.state((z, -contact.gradient.x), contact.velocity, memory);
+        let (p, elastic, rate, g) = self.state((z, -contact.gradient.x), contact.velocity, memory);
         let t = Vector2::new(g.y, -g.x) / g.norm();
         let slip = contact.velocity.dot(&t);
         if p <= 0.0 {

@@ -165,9 +165,10 @@ impl TreeDescription {
     pub fn pitch(&self) -> Result<f64, PitchError> {
         let spans = self.link_spans().ok_or(PitchError::NotATrack)?;
         let lengths = spans.iter().map(|s| s.norm());
-        let (shortest, longest) = lengths.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
-            (lo.min(l), hi.max(l))
-        });
+        let (shortest, longest) = lengths
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
+                (lo.min(l), hi.max(l))
+            });
         let first = spans.first().map_or(f64::NAN, |s| s.norm());
         if longest - shortest <= 1e-9 * longest {
             Ok(first)

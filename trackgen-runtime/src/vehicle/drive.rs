@@ -8,7 +8,9 @@ use crate::error::SimulationError;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum DriveError {
     /// A gain is NaN or infinite.
-    #[error("the speed drive's gains must be finite, got proportional {proportional}, integral {integral}")]
+    #[error(
+        "the speed drive's gains must be finite, got proportional {proportional}, integral {integral}"
+    )]
     Gains {
         /// N m s/rad.
         proportional: f64,

@@ -169,12 +169,10 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += config.drawbar_pull * qdc[0];
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
-        let (torque, rate) = config.drive.checked_torque(
-            t,
-            sprocket.omega(qdc),
-            sprocket.pitch_radius,
-            integral,
-        )?;
+        let (torque, rate) =
+            config
+                .drive
+                .checked_torque(t, sprocket.omega(qdc), sprocket.pitch_radius, integral)?;
         chassis_loads[sprocket.body].moment += torque;
         chassis_loads[0].moment -= torque;
         books.torque = torque;

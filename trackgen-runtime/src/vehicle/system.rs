@@ -179,8 +179,10 @@ where
         let track = self.bodies.first();
         let (qt, qdt, link_trig) = track.recovered();
         self.work.kinematics(
-            (track.model(), qt, qdt, link_trig),
-            (self.bodies.second().model(), &qc, &qdc),
+            (track.model(), link_trig),
+            (qt, qdt),
+            self.bodies.second().model(),
+            (&qc, &qdc),
         );
         forces::detect::<C, DC>(&mut self.work, &self.config, &self.geometry);
         let points = self.geometry.shoe.ground_points.len();

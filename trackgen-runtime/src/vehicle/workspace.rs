@@ -66,8 +66,10 @@ impl Workspace {
     /// for the chassis' dynamics).
     pub fn kinematics<T, const DT: usize, C, const DC: usize>(
         &mut self,
-        (track, qt, qdt, link_trig): (&T, &SVector<f64, DT>, &SVector<f64, DT>, &[(f64, f64)]),
-        (chassis, qc, qdc): (&C, &SVector<f64, DC>, &SVector<f64, DC>),
+        (track, link_trig): (&T, &[(f64, f64)]),
+        (qt, qdt): (&SVector<f64, DT>, &SVector<f64, DT>),
+        chassis: &C,
+        (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
     ) where
         T: RecursiveModel<DT>,
         C: RecursiveModel<DC>,
