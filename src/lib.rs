@@ -94,10 +94,11 @@
 //!
 //! ### Running keys, units and defaults
 //!
-//! * `shoe` (all four keys required): `ground_points` (m, a non-empty
+//! * `shoe` (four keys required, `width` optional): `ground_points` (m, a non-empty
 //!   list), `inner_offset` (m, positive; the running face spans the first
 //!   link's `u1.x` to `u2.x` at this height), `pins` (m, a non-empty list),
-//!   `pin_radius` (m, positive). Without a `shoe` the vehicle has its
+//!   `pin_radius` (m, positive), `width` (m, positive: the track's width,
+//!   which soft soil needs). Without a `shoe` the vehicle has its
 //!   dynamics only, and `contact` or `drive` is an error.
 //! * Sprocket profile: `tip_radius`, `gap_radius`, `gap_centre` (m,
 //!   positive; the gaps must reach inside the tip circle and be wider
@@ -113,12 +114,11 @@
 //!   `chi` (s/m, ≥ 0) and `exponent` (positive, default 1): Hunt-Crossley
 //!   `F = k δⁿ (1 + χ δ̇)`; or `stiffness` (N/m) with `damping` (N s/m,
 //!   ≥ 0): Kelvin-Voigt. Friction: `mu` (≥ 0) and `slip` (m/s, ≥ 0, the
-//!   regularisation speed). Defaults, the M113's
-//!   ([`VehicleConfig::m113`](vehicle::VehicleConfig::m113) says why):
-//!   ground Hunt-Crossley 2e6 N/m, χ 2 s/m, μ 0.8 over 0.1 m/s; wheels and
-//!   sprocket 1e7 N/m, χ 0.5 s/m, μ 0.4 over 0.5 m/s
+//!   regularisation speed). Defaults: ground Hunt-Crossley 2e6 N/m, χ
+//!   2 s/m, μ 0.8 over 0.1 m/s; wheels and sprocket 1e7 N/m, χ 0.5 s/m,
+//!   μ 0.4 over 0.5 m/s
 //!   ([`VehicleConfig::GROUND_LAW`](vehicle::VehicleConfig::GROUND_LAW) and
-//!   the other constants).
+//!   the other constants say why).
 //! * `drive`: the speed controller of `Name::speed_drive`,
 //!   `proportional` (N m s/rad, ≥ 0, default 3000), `integral` (N m/rad,
 //!   ≥ 0, default 6000), `max_torque` (N m, positive, default 2e4).
@@ -134,18 +134,24 @@
 //! [`ChassisModel`], with a body-index constant per part, `NameChassis::RW1`,
 //! and per arm, `NameChassis::RW1_ARM`), the constants `Name::TRACK_DOF`
 //! and `Name::CHASSIS_DOF`, and `NameSystem`, its
-//! [`VehicleSystem`](vehicle::VehicleSystem). With a `shoe` it also gets:
+//! [`VehicleSystem`](vehicle::VehicleSystem). With a `shoe` it is a
+//! [`Vehicle`]:
 //!
-//! * `Name::config(terrain, drive) -> VehicleConfig`: the declared shoe,
-//!   profile, contact laws, friction and arm springs (`arms`), every field
-//!   public, so that contact, friction, spring and damper rates, the
-//!   terrain and the drive can be changed at run time, without
+//! * `Name::geometry()`: the shoe and the sprocket's tooth profile, compiled;
+//! * `Name::config(terrain, drive) -> VehicleConfig`: the declared contact
+//!   laws, friction and arm springs (`arms`), every field public, so that
+//!   contact, friction, spring and damper rates, soft soil, the terrain,
+//!   the drive and the closure method can be changed at run time, without
 //!   recompiling (the masses, inertias and geometry are compiled in);
 //! * `Name::speed_drive(target)`: a PI speed drive with the declared gains;
 //! * `Name::system(terrain, drive)?` and `Name::system_with(config)?`: the
-//!   vehicle assembled (chassis centroid at x = 0, shoes 1 mm above the
-//!   ground), ready for [`simulate`](simulate::simulate);
-//! * `Name::shoe()` and `Name::tooth_profile()`.
+//!   vehicle built by the runtime's one recipe,
+//!   [`vehicle::build`] (chassis centroid at x = 0, shoes
+//!   1 mm above the ground, the tensioner set), ready for
+//!   [`simulate`](simulate::simulate).
+//!
+//! After an error in a declaration every one of these items still exists,
+//! as a stub, so nothing but the real error is reported.
 //!
 //! [`vehicles::m113`] is the default vehicle, declared this way.
 //! Run `cargo expand` (or read the insta snapshots in

@@ -14,6 +14,7 @@ use quote::ToTokens;
 use syn::Ident;
 
 mod keys;
+mod running;
 mod track;
 mod tree;
 mod vehicle;

@@ -1,5 +1,5 @@
-//! Lowering a `vehicle`: chassis, parts (repeated parts expanded), arms,
-//! and what makes it run (shoe, sprocket profile, contact laws, drive).
+//! Lowering a `vehicle`: chassis, parts (repeated parts expanded), arms;
+//! what makes it run is [`super::running`]'s.
 
 use std::collections::BTreeMap;
 
@@ -9,10 +9,9 @@ use syn::spanned::Spanned;
 use syn::{Expr, Ident, Lit, LitInt};
 
 use super::Cx;
-use super::keys::{Bound, Fields, strip};
-use crate::ir::{
-    Arm, Closure, ConstCheck, ContactPair, NormalLaw, Part, PartKind, Running, Shoe, Track, Vehicle,
-};
+use super::keys::{Fields, strip};
+use super::running::Profile;
+use crate::ir::{Arm, Closure, ConstCheck, Part, PartKind, Track, Vehicle};
 use crate::num::{Num, Vec2};
 
 /// The shortest arm, m: a pivot closer than this to its part's centre is
@@ -22,29 +21,14 @@ const MIN_ARM_LENGTH: f64 = 1e-9;
 /// The most parts one repeated block declares.
 const MAX_REPEAT: usize = 64;
 
-/// Default speed drive: proportional gain, N m s/rad.
-const DEFAULT_PROPORTIONAL: f64 = 3000.0;
-/// Default speed drive: integral gain, N m/rad.
-const DEFAULT_INTEGRAL: f64 = 6000.0;
-/// Default speed drive: torque limit, N m.
-const DEFAULT_MAX_TORQUE: f64 = 2e4;
-
-/// The contact pairs of a `contact { … }` section, in [`Running::contact`]'s
-/// order.
-const PAIRS: [&str; 3] = ["ground", "wheels", "sprocket"];
-
-/// The declared sprocket profile: tip radius, gap arc radius, gap arc
-/// centre distance.
-type Profile = [Option<Num>; 3];
-
 /// The vehicle-level sections that appear at most once, unnamed.
 #[derive(Default)]
-struct Singles<'a> {
-    chassis: Option<&'a crate::parse::Block>,
-    track: Option<&'a crate::parse::Block>,
-    shoe: Option<(&'a Ident, &'a crate::parse::Block)>,
-    contact: Option<&'a crate::parse::Block>,
-    drive: Option<&'a crate::parse::Block>,
+pub(super) struct Singles<'a> {
+    pub(super) chassis: Option<&'a crate::parse::Block>,
+    pub(super) track: Option<&'a crate::parse::Block>,
+    pub(super) shoe: Option<(&'a Ident, &'a crate::parse::Block)>,
+    pub(super) contact: Option<&'a crate::parse::Block>,
+    pub(super) drive: Option<&'a crate::parse::Block>,
 }
 
 impl Cx<'_> {
@@ -551,7 +535,12 @@ impl Cx<'_> {
     }
 
     /// A non-empty list of points `[(x, y), …]`, m.
-    fn points(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Vec<Vec2>> {
+    pub(super) fn points(
+        &mut self,
+        fields: &Fields,
+        key: &str,
+        required: bool,
+    ) -> Option<Vec<Vec2>> {
         let Some(expr) = fields.map.get(key) else {
             if required {
                 self.missing(fields, key);
@@ -576,187 +565,6 @@ impl Cx<'_> {
             .map(|e| self.eval_point(e, key).ok())
             .collect();
         points.into_iter().collect()
-    }
-
-    /// What makes the vehicle run, from its `shoe`, `contact` and `drive`
-    /// sections and the sprocket's profile; `None` without a shoe.
-    fn running(
-        &mut self,
-        singles: &Singles,
-        has_sprocket: bool,
-        profile: Profile,
-    ) -> Option<Running> {
-        let Some((shoe_kw, shoe_block)) = singles.shoe else {
-            for (section, block) in [("contact", singles.contact), ("drive", singles.drive)] {
-                if let Some(block) = block {
-                    self.errors.at(
-                        block.span,
-                        format!(
-                            "`{section}` is used by the vehicle's `config` and `system`, which need a \
-                             `shoe {{ ground_points: […], inner_offset: …, pins: […], pin_radius: … }}` section"
-                        ),
-                    );
-                }
-            }
-            return None;
-        };
-        if !has_sprocket {
-            self.errors.at(
-                shoe_kw.span(),
-                "a vehicle with a `shoe` runs: it needs a `sprocket` to drive it",
-            );
-        }
-        let shoe = self.shoe(shoe_block);
-        let contact = match singles.contact {
-            Some(block) => self.contact(block),
-            None => Default::default(),
-        };
-        let drive = singles
-            .drive
-            .map(|block| self.fields("drive", block, &["proportional", "integral", "max_torque"]));
-        if let Some(block) = singles.drive {
-            self.sections("drive", block, &[]);
-        }
-        let mut gain = |key: &str, bound: Bound, default: f64| {
-            drive
-                .as_ref()
-                .and_then(|f| self.bounded(f, key, false, bound))
-                .unwrap_or(Num::Known(default))
-        };
-        let proportional = gain("proportional", Bound::NonNegative, DEFAULT_PROPORTIONAL);
-        let integral = gain("integral", Bound::NonNegative, DEFAULT_INTEGRAL);
-        let max_torque = gain("max_torque", Bound::Positive, DEFAULT_MAX_TORQUE);
-        let shoe = shoe?;
-        if let (Some(pin), Some(gap)) = (
-            shoe.pin_radius.known(),
-            profile[1].as_ref().and_then(Num::known),
-        ) && pin >= gap
-        {
-            self.errors.at(
-                shoe_block.span,
-                format!(
-                    "the pins (radius {pin} m) do not fit the sprocket's gaps (radius {gap} m)"
-                ),
-            );
-        }
-        let [tip_radius, gap_radius, gap_centre] = profile;
-        Some(Running {
-            shoe,
-            tip_radius,
-            gap_radius,
-            gap_centre,
-            contact,
-            proportional,
-            integral,
-            max_torque,
-        })
-    }
-
-    /// `shoe { ground_points, inner_offset, pins, pin_radius, width? }`.
-    fn shoe(&mut self, block: &crate::parse::Block) -> Option<Shoe> {
-        let keys = [
-            "ground_points",
-            "inner_offset",
-            "pins",
-            "pin_radius",
-            "width",
-        ];
-        let fields = self.fields("shoe", block, &keys);
-        self.sections("shoe", block, &[]);
-        let ground_points = self.points(&fields, "ground_points", true);
-        let inner_offset = self.positive(&fields, "inner_offset", true);
-        let pins = self.points(&fields, "pins", true);
-        let pin_radius = self.positive(&fields, "pin_radius", true);
-        let width = self.positive(&fields, "width", false);
-        Some(Shoe {
-            ground_points: ground_points?,
-            inner_offset: inner_offset?,
-            pins: pins?,
-            pin_radius: pin_radius?,
-            width,
-        })
-    }
-
-    /// `contact { ground { … }, wheels { … }, sprocket { … } }`.
-    fn contact(&mut self, block: &crate::parse::Block) -> [ContactPair; 3] {
-        use crate::parse::Entry;
-        self.fields("contact", block, &[]);
-        let mut out: [ContactPair; 3] = Default::default();
-        let mut seen = [false; 3];
-        for entry in self.sections("contact", block, &PAIRS) {
-            let Entry::Section {
-                kind, name, body, ..
-            } = entry
-            else {
-                continue;
-            };
-            if let Some(name) = name {
-                self.errors
-                    .at(name.span(), format!("`{kind}` takes no name"));
-            }
-            let i = PAIRS
-                .iter()
-                .position(|p| kind == p)
-                .expect("filtered by sections()");
-            if std::mem::replace(&mut seen[i], true) {
-                self.errors
-                    .at(kind.span(), format!("duplicate `{kind}` in contact"));
-                continue;
-            }
-            out[i] = self.pair(body);
-        }
-        out
-    }
-
-    /// One contact pair: a normal law (`stiffness` with `chi` and optional
-    /// `exponent` for Hunt-Crossley, or with `damping` for Kelvin-Voigt)
-    /// and friction (`mu`, `slip`), each part optional.
-    fn pair(&mut self, block: &crate::parse::Block) -> ContactPair {
-        let keys = ["stiffness", "exponent", "chi", "damping", "mu", "slip"];
-        let fields = self.fields("contact pair", block, &keys);
-        self.sections("contact pair", block, &[]);
-        let has = |k: &str| fields.map.contains_key(k);
-        let normal = if !(has("stiffness") || has("chi") || has("damping") || has("exponent")) {
-            None
-        } else if has("damping") && (has("chi") || has("exponent")) {
-            let key = if has("chi") { "chi" } else { "exponent" };
-            self.errors.spanned(
-                fields.map[key],
-                format!(
-                    "`{key}` belongs to the Hunt-Crossley law and `damping` to the Kelvin-Voigt law: give one law"
-                ),
-            );
-            None
-        } else if has("damping") {
-            let stiffness = self.positive(&fields, "stiffness", true);
-            let damping = self.bounded(&fields, "damping", true, Bound::NonNegative);
-            Some(NormalLaw::KelvinVoigt {
-                stiffness: stiffness.unwrap_or(Num::ZERO),
-                damping: damping.unwrap_or(Num::ZERO),
-            })
-        } else {
-            let stiffness = self.positive(&fields, "stiffness", true);
-            let exponent = self
-                .positive(&fields, "exponent", false)
-                .unwrap_or(Num::Known(1.0));
-            if !has("chi") {
-                self.errors.at(
-                    fields.span,
-                    "missing key `chi` (Hunt-Crossley, s/m) or `damping` (Kelvin-Voigt, N s/m) in contact pair",
-                );
-            }
-            let chi = self.bounded(&fields, "chi", false, Bound::NonNegative);
-            Some(NormalLaw::HuntCrossley {
-                stiffness: stiffness.unwrap_or(Num::ZERO),
-                exponent,
-                chi: chi.unwrap_or(Num::ZERO),
-            })
-        };
-        ContactPair {
-            normal,
-            mu: self.bounded(&fields, "mu", false, Bound::NonNegative),
-            slip: self.bounded(&fields, "slip", false, Bound::NonNegative),
-        }
     }
 }
 

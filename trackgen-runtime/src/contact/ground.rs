@@ -13,7 +13,7 @@ use super::{BodyState, Contact, ShoeGeometry, Terrain};
 /// the energy books balance on any terrain.
 ///
 /// Links whose bounding circle clears the highest terrain under the whole
-/// track are skipped without looking at their points ([`clear_of`]), so
+/// track are skipped without looking at their points, so
 /// the cost is one comparison per link plus the links actually near the
 /// ground.
 pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: &mut Vec<Contact>) {

@@ -3,7 +3,7 @@
 use nalgebra::Vector2;
 
 /// How the joint between link n and link 1 enters a track's linear-time
-/// dynamics ([`TrackModel::linear_time_dynamics`]).
+/// dynamics ([`TrackModel::linear_time_dynamics`](super::TrackModel::linear_time_dynamics)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum ClosingJoint {
     /// A constraint: the loop stays closed, `C_q q̈ = γ_c − stabilisation`

@@ -1,5 +1,5 @@
 //! Subsystems in motion: a body tree or a closed track as a first-order
-//! system `y' = f(t, y)` ([`OdeSystem`](crate::integrate::OdeSystem)) that
+//! system `y' = f(t, y)` ([`crate::integrate::OdeSystem`]) that
 //! also knows its start, what it records and what to do between steps
 //! ([`Simulated`]). A vehicle ([`crate::vehicle`]) is made of two of them;
 //! [`crate::simulate`] runs any of them.

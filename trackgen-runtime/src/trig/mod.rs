@@ -55,7 +55,8 @@ const C5: f64 = f64::from_bits(0x3E21_EE9E_BDB4_B1C4);
 const C6: f64 = f64::from_bits(0xBDA8_FAE9_BE88_38D4);
 
 /// `(sin x, cos x)`, within one unit in the last place (see the module
-/// docs); `f64::sin_cos` beyond [`FAST_RANGE`].
+/// docs); `f64::sin_cos` beyond 2¹⁹ π/2 (fdlibm's bound for the three-part
+/// reduction).
 #[inline]
 pub fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() > FAST_RANGE {
@@ -99,7 +100,7 @@ fn reduced_sin_cos(x: f64) -> (f64, f64) {
 }
 
 /// [`sin_cos`] of every angle (rad) into `out`: one vectorised pass, then
-/// the standard library for any beyond [`FAST_RANGE`].
+/// the standard library for any beyond 2¹⁹ π/2.
 ///
 /// On x86-64 processors with AVX2 the pass runs four angles at a time
 /// (chosen at run time); the arithmetic is the same operations in the same
