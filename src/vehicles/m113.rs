@@ -99,7 +99,7 @@ crate::model! {
         // Hunt-Crossley with exponent 1 throughout (see
         // `VehicleConfig::GROUND_LAW` and the others for why these values).
         contact {
-            ground { stiffness: 2e6, chi: 2.0, mu: 0.8, slip: 0.1 },
+            ground { stiffness: 2e6, chi: 2.0, mu: 0.8 },     // stiction: tangential fitted
             wheels { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
             sprocket { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
         },

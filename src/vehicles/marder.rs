@@ -140,7 +140,7 @@ crate::model! {
         },
         // The M113's laws (Hunt-Crossley, exponent 1): no Marder figures.
         contact {
-            ground { stiffness: 2e6, chi: 2.0, mu: 0.8, slip: 0.1 },
+            ground { stiffness: 2e6, chi: 2.0, mu: 0.8 },     // stiction: tangential fitted
             wheels { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
             sprocket { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },
         },

@@ -118,13 +118,18 @@ pub struct Shoe {
     pub width: Option<Num>,
 }
 
-/// A declared contact pair: a normal law replacing the default, and
-/// friction fields replacing the default's.
+/// A declared contact pair: a normal law replacing the fitted one, and
+/// friction fields replacing the fitted ones (on the ground, `slip` asks
+/// for regularised friction, the tangential keys tune stiction).
 #[derive(Default)]
 pub struct ContactPair {
     pub normal: Option<NormalLaw>,
     pub mu: Option<Num>,
     pub slip: Option<Num>,
+    /// N/m.
+    pub tangential_stiffness: Option<Num>,
+    /// N s/m.
+    pub tangential_damping: Option<Num>,
 }
 
 pub enum NormalLaw {

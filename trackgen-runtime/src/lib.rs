@@ -85,5 +85,8 @@ pub mod __private {
         LoopJoint, PartKind, RecursiveModel, TrackModel, TreeDescription,
     };
     pub use crate::trig::{sin_cos, sin_cos_each};
-    pub use crate::vehicle::{Drive, Geometry, Vehicle, VehicleConfig, VehicleSystem};
+    pub use crate::vehicle::{
+        ContactFit, DeclaredContact, DeclaredPair, Drive, Geometry, Vehicle, VehicleConfig,
+        VehicleSystem,
+    };
 }

@@ -26,24 +26,82 @@ pub fn running(
         return common;
     };
     let (dt, dc) = dofs;
-    let system = quote::format_ident!("{}System", name);
-    let label = name.to_string();
     let geometry = geometry(run, sprocket, track, dt);
-    let pairs = [quote!(ground), quote!(wheels), quote!(sprocket)]
-        .iter()
-        .zip(&run.contact)
-        .map(|(field, pair)| contact_pair(field, pair))
-        .collect::<TokenStream>();
+    let [ground, wheels, sprocket_pair] = &run.contact;
+    let (ground, wheels, sprocket_pair) = (
+        declared_pair(ground),
+        declared_pair(wheels),
+        declared_pair(sprocket_pair),
+    );
     let Running {
         proportional,
         integral,
         max_torque,
         ..
     } = run;
+    let bodies = VehicleBodies {
+        geometry,
+        config: quote! {
+            let arms = <#chassis as #rt::ChassisModel<#dc>>::PARTS
+                .iter()
+                .filter_map(|part| part.arm)
+                .collect();
+            let fit = #rt::ContactFit::of(
+                &<#track as #rt::RecursiveModel<#dt>>::description(&#track),
+                &<#chassis as #rt::RecursiveModel<#dc>>::description(&#chassis),
+                <#chassis as #rt::ChassisModel<#dc>>::PARTS,
+                &<Self as #rt::Vehicle>::geometry(),
+            );
+            let laws = fit.laws(&#rt::DeclaredContact {
+                ground: #ground,
+                wheels: #wheels,
+                sprocket: #sprocket_pair,
+            });
+            #rt::VehicleConfig::new(terrain, drive, arms, laws)
+        },
+        speed_drive: quote! {
+            #rt::Drive::Speed {
+                target: ::std::boxed::Box::new(target),
+                proportional: #proportional,
+                integral: #integral,
+                max_torque: #max_torque,
+            }
+        },
+    };
+    let vehicle = vehicle_impl(name, (track, chassis), dofs, &bodies);
     quote! {
         #common
+        #vehicle
+    }
+}
 
-        #[allow(clippy::approx_constant)]
+/// The bodies of a `Vehicle` impl's three methods.
+pub struct VehicleBodies {
+    pub geometry: TokenStream,
+    pub config: TokenStream,
+    pub speed_drive: TokenStream,
+}
+
+/// The `Vehicle` impl of `name` with these method bodies (the real ones,
+/// or a stub's after an error).
+pub fn vehicle_impl(
+    name: &Ident,
+    (track, chassis): (&Ident, &Ident),
+    (dt, dc): (usize, usize),
+    bodies: &VehicleBodies,
+) -> TokenStream {
+    let rt = runtime();
+    let system = quote::format_ident!("{}System", name);
+    let label = name.to_string();
+    let VehicleBodies {
+        geometry,
+        config,
+        speed_drive,
+    } = bodies;
+    quote! {
+        // Folded numbers (a default travel of ±π/2) may be close to a
+        // named constant: they are meant as written.
+        #[allow(clippy::approx_constant, unused_variables)]
         impl #rt::Vehicle for #name {
             const NAME: &'static str = #label;
             const TRACK_DOF: usize = #dt;
@@ -57,25 +115,13 @@ pub fn running(
             }
 
             fn config(terrain: #rt::Terrain, drive: #rt::Drive) -> #rt::VehicleConfig {
-                let arms = <#chassis as #rt::ChassisModel<#dc>>::PARTS
-                    .iter()
-                    .filter_map(|part| part.arm)
-                    .collect();
-                #[allow(unused_mut)]
-                let mut config = #rt::VehicleConfig::new(terrain, drive, arms);
-                #pairs
-                config
+                #config
             }
 
             fn speed_drive(
                 target: impl ::core::ops::Fn(f64) -> f64 + ::core::marker::Send + 'static,
             ) -> #rt::Drive {
-                #rt::Drive::Speed {
-                    target: ::std::boxed::Box::new(target),
-                    proportional: #proportional,
-                    integral: #integral,
-                    max_torque: #max_torque,
-                }
+                #speed_drive
             }
         }
     }
@@ -167,35 +213,39 @@ fn sprocket_teeth(vehicle: &Vehicle) -> Option<u32> {
         .map(|p| p.teeth)
 }
 
-/// The statements setting one pair's declared law and friction.
-fn contact_pair(field: &TokenStream, pair: &ContactPair) -> TokenStream {
+/// A `DeclaredPair` literal: what the declaration gives, `None` for the
+/// rest.
+fn declared_pair(pair: &ContactPair) -> TokenStream {
     let rt = runtime();
-    let law = pair.normal.as_ref().map(|law| {
-        let law = match law {
-            NormalLaw::HuntCrossley {
-                stiffness,
-                exponent,
-                chi,
-            } => quote! {
-                #rt::NormalLaw::HuntCrossley {
-                    stiffness: #stiffness, exponent: #exponent, chi: #chi,
-                }
-            },
-            NormalLaw::KelvinVoigt { stiffness, damping } => quote! {
-                #rt::NormalLaw::KelvinVoigt {
-                    stiffness: #stiffness, damping: #damping,
-                }
-            },
-        };
-        quote!(config.#field.normal = #law;)
-    });
-    let mu = pair
-        .mu
-        .as_ref()
-        .map(|v| quote!(config.#field.friction.mu = #v;));
-    let slip = pair
-        .slip
-        .as_ref()
-        .map(|v| quote!(config.#field.friction.slip = #v;));
-    quote!(#law #mu #slip)
+    let option = |v: Option<TokenStream>| match v {
+        Some(v) => quote!(::core::option::Option::Some(#v)),
+        None => quote!(::core::option::Option::None),
+    };
+    let normal = option(pair.normal.as_ref().map(|law| match law {
+        NormalLaw::HuntCrossley {
+            stiffness,
+            exponent,
+            chi,
+        } => quote! {
+            #rt::NormalLaw::HuntCrossley { stiffness: #stiffness, exponent: #exponent, chi: #chi }
+        },
+        NormalLaw::KelvinVoigt { stiffness, damping } => quote! {
+            #rt::NormalLaw::KelvinVoigt { stiffness: #stiffness, damping: #damping }
+        },
+    }));
+    let number = |v: &Option<crate::num::Num>| option(v.as_ref().map(|v| quote!(#v)));
+    let (mu, slip) = (number(&pair.mu), number(&pair.slip));
+    let (stiffness, damping) = (
+        number(&pair.tangential_stiffness),
+        number(&pair.tangential_damping),
+    );
+    quote! {
+        #rt::DeclaredPair {
+            normal: #normal,
+            mu: #mu,
+            slip: #slip,
+            tangential_stiffness: #stiffness,
+            tangential_damping: #damping,
+        }
+    }
 }

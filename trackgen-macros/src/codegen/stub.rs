@@ -147,29 +147,12 @@ fn models(name: &Ident, chassis: bool) -> TokenStream {
 }
 
 /// The `Vehicle` impl of a vehicle with a shoe.
-fn vehicle_impl(
-    name: &Ident,
-    (track, chassis): (&Ident, &Ident),
-    (dt, dc): (usize, usize),
-) -> TokenStream {
-    let rt = runtime();
+fn vehicle_impl(name: &Ident, parts: (&Ident, &Ident), dofs: (usize, usize)) -> TokenStream {
     let never = quote!(::core::unreachable!("the declaration did not compile"));
-    let system = format_ident!("{}System", name);
-    let label = name.to_string();
-    quote! {
-        #[allow(unused_variables)]
-        impl #rt::Vehicle for #name {
-            const NAME: &'static str = #label;
-            const TRACK_DOF: usize = #dt;
-            const CHASSIS_DOF: usize = #dc;
-            type Track = #track;
-            type Chassis = #chassis;
-            type System = #system;
-            fn geometry() -> #rt::Geometry { #never }
-            fn config(terrain: #rt::Terrain, drive: #rt::Drive) -> #rt::VehicleConfig { #never }
-            fn speed_drive(
-                target: impl ::core::ops::Fn(f64) -> f64 + ::core::marker::Send + 'static,
-            ) -> #rt::Drive { #never }
-        }
-    }
+    let bodies = super::running::VehicleBodies {
+        geometry: never.clone(),
+        config: never.clone(),
+        speed_drive: never,
+    };
+    super::running::vehicle_impl(name, parts, dofs, &bodies)
 }

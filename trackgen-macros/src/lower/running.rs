@@ -148,17 +148,49 @@ impl Cx<'_> {
                     .at(kind.span(), format!("duplicate `{kind}` in contact"));
                 continue;
             }
-            out[i] = self.pair(body);
+            out[i] = self.pair(body, i == 0);
         }
         out
     }
 
     /// One contact pair: a normal law (`stiffness` with `chi` and optional
     /// `exponent` for Hunt-Crossley, or with `damping` for Kelvin-Voigt)
-    /// and friction (`mu`, `slip`), each part optional.
-    fn pair(&mut self, block: &crate::parse::Block) -> ContactPair {
-        let keys = ["stiffness", "exponent", "chi", "damping", "mu", "slip"];
+    /// and friction (`mu`, `slip`), each part optional. On the `ground`,
+    /// friction is stiction unless `slip` asks for regularised Coulomb
+    /// friction: its `tangential_stiffness` and `tangential_damping` are
+    /// optional too (and an error with `slip`, or on another pair).
+    fn pair(&mut self, block: &crate::parse::Block, ground: bool) -> ContactPair {
+        let keys = [
+            "stiffness",
+            "exponent",
+            "chi",
+            "damping",
+            "mu",
+            "slip",
+            "tangential_stiffness",
+            "tangential_damping",
+        ];
         let fields = self.fields("contact pair", block, &keys);
+        for key in ["tangential_stiffness", "tangential_damping"] {
+            let Some(expr) = fields.map.get(key) else {
+                continue;
+            };
+            if !ground {
+                self.errors.spanned(
+                    expr,
+                    format!(
+                        "`{key}` is stiction's, which only the `ground` pair has: rims and teeth take regularised friction (`mu`, `slip`)"
+                    ),
+                );
+            } else if fields.map.contains_key("slip") {
+                self.errors.spanned(
+                    expr,
+                    format!(
+                        "`{key}` belongs to friction with stiction and `slip` to regularised friction: give one"
+                    ),
+                );
+            }
+        }
         self.sections("contact pair", block, &[]);
         let has = |k: &str| fields.map.contains_key(k);
         let normal = if !(has("stiffness") || has("chi") || has("damping") || has("exponent")) {
@@ -201,6 +233,8 @@ impl Cx<'_> {
             normal,
             mu: self.bounded(&fields, "mu", false, Bound::NonNegative),
             slip: self.bounded(&fields, "slip", false, Bound::NonNegative),
+            tangential_stiffness: self.positive(&fields, "tangential_stiffness", false),
+            tangential_damping: self.positive(&fields, "tangential_damping", false),
         }
     }
 }

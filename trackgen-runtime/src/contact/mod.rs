@@ -30,7 +30,7 @@ pub mod wheel;
 
 pub use crate::laws::{Friction, NormalLaw};
 pub use detect::Contact;
-pub use respond::{ContactForce, ContactLaws};
+pub use respond::{ContactForce, ContactLaws, GroundFriction, GroundLaws};
 pub use shoe::ShoeGeometry;
 pub use terrain::{Terrain, TerrainError};
 

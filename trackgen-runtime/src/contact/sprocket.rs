@@ -23,6 +23,24 @@ pub fn pitch_radius(teeth: u32, pitch: f64) -> f64 {
     pitch / (2.0 * (std::f64::consts::PI / teeth as f64).sin())
 }
 
+/// The track's mean speed, m/s, driven by a sprocket of `teeth` teeth
+/// turning at `omega` (rad/s) on links of `pitch` (m): one pitch per tooth
+/// passing, `N p ω / (2π)`. A seated joint moves at `ω R` on the pitch
+/// circle, but the chain leaves the sprocket along the polygon's chords,
+/// so over a turn it advances by the polygon's perimeter `N p`, not by
+/// `2π R` (1.6 % less for 10 teeth; chordal action). The one measure of
+/// track speed: a slip is measured against it, and the speed drive aims
+/// for it.
+pub fn track_speed(teeth: u32, pitch: f64, omega: f64) -> f64 {
+    rolling_radius(teeth, pitch) * omega
+}
+
+/// The sprocket's rolling radius, m: its mean track speed per unit of its
+/// speed, `N p / (2π)` ([`track_speed`]).
+pub fn rolling_radius(teeth: u32, pitch: f64) -> f64 {
+    teeth as f64 * pitch / (2.0 * std::f64::consts::PI)
+}
+
 /// An arc tooth profile, m.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToothProfile {

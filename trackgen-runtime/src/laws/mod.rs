@@ -5,7 +5,9 @@
 //!
 //! * [`penalty`]: the cut closing joint's spring-damper (paper Fig. 5).
 //! * [`contact`]: normal laws (Hunt-Crossley, Kelvin-Voigt) and
-//!   regularised Coulomb friction.
+//!   regularised Coulomb friction;
+//! * [`stiction`]: friction with stiction, an elastic tangential contact
+//!   with a Coulomb limit, its deflection a state.
 //! * [`torsion`]: the torsion spring-damper of a sprung arm.
 //!
 //! The laws know nothing of bodies or geometry: they take a deflection
@@ -14,10 +16,12 @@
 
 pub mod contact;
 pub mod penalty;
+pub mod stiction;
 pub mod torsion;
 
 pub use contact::{Friction, NormalLaw};
 pub use penalty::PenaltyJoint;
+pub use stiction::{Stiction, TangentialResponse};
 pub use torsion::TorsionSpring;
 
 /// What a law gives at a state: its force (a scalar along the law's own

@@ -3,11 +3,12 @@
 //! a drawbar load and how the track's loop is closed. The geometry (masses,
 //! joints, wheels, shoes, teeth) is compiled in ([`Geometry`](super::Geometry)).
 
+use super::fitted::ContactLawSet;
 use super::{ConfigError, Drive};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
 use crate::contact::soil::Soil;
-use crate::contact::{ContactLaws, Friction, NormalLaw, Terrain};
+use crate::contact::{ContactLaws, GroundLaws, Terrain};
 use crate::model::ArmSpring;
 
 /// How a vehicle meets the world. Nothing here enters the mass matrix:
@@ -19,8 +20,9 @@ use crate::model::ArmSpring;
 pub struct VehicleConfig {
     /// The ground's profile (the undisturbed surface, on soft soil).
     pub terrain: Terrain,
-    /// Shoes on rigid ground.
-    pub ground: ContactLaws,
+    /// Shoes on rigid ground: the normal law, and friction with stiction
+    /// (a tangential state per ground point) or regularised.
+    pub ground: GroundLaws,
     /// Shoes' inner faces on road wheels, idler and rollers.
     pub wheels: ContactLaws,
     /// Shoes' pins on the sprocket's teeth.
@@ -53,57 +55,21 @@ pub struct VehicleConfig {
 }
 
 impl VehicleConfig {
-    /// The default normal law of shoes on the ground: Hunt-Crossley,
-    /// `k` = 2e6 N/m per shoe point, exponent 1, `χ` = 2 s/m.
-    ///
-    /// Hunt-Crossley with exponent 1 (`F = k δ (1 + χ δ̇)`) has no force
-    /// jump when a contact opens or closes, which would make an adaptive
-    /// integrator stumble at each of the thousands of contact changes of a
-    /// run. The stiffness keeps a 10-tonne vehicle's static penetrations
-    /// within a few millimetres; `χ` damps the contacts without making the
-    /// light shoes' rotation the stiffest mode of the model.
-    pub const GROUND_LAW: NormalLaw = NormalLaw::HuntCrossley {
-        stiffness: 2e6,
-        exponent: 1.0,
-        chi: 2.0,
-    };
-    /// The default friction of shoes on the ground: μ = 0.8 over 0.1 m/s
-    /// of slip (regularised where it carries the traction).
-    pub const GROUND_FRICTION: Friction = Friction { mu: 0.8, slip: 0.1 };
-    /// The default normal law of the track on wheel rims and sprocket
-    /// teeth: Hunt-Crossley, `k` = 1e7 N/m, exponent 1, `χ` = 0.5 s/m.
-    pub const RIM_LAW: NormalLaw = NormalLaw::HuntCrossley {
-        stiffness: 1e7,
-        exponent: 1.0,
-        chi: 0.5,
-    };
-    /// The default friction of the track on rims and teeth: μ = 0.4 over
-    /// 0.5 m/s of slip. Regularised more widely than the ground's: there it
-    /// only spins the wheels up and rubs the flanks, and the friction slope
-    /// `μ F_n / v_s` on a light shoe under a loaded rim is the stiffest mode
-    /// of a vehicle (measured on the M113: the explicit integrator's step
-    /// grows 1.75× from 0.2 to 0.5 m/s).
-    pub const RIM_FRICTION: Friction = Friction { mu: 0.4, slip: 0.5 };
-
-    /// A vehicle on `terrain`, driven by `drive`, with these arms and the
-    /// default contact laws ([`GROUND_LAW`](Self::GROUND_LAW),
-    /// [`GROUND_FRICTION`](Self::GROUND_FRICTION), [`RIM_LAW`](Self::RIM_LAW)
-    /// and [`RIM_FRICTION`](Self::RIM_FRICTION) on wheels and sprocket), on
-    /// rigid ground, tension recorded at link 1, the loop closed as
-    /// declared.
-    pub fn new(terrain: Terrain, drive: Drive, arms: Vec<ArmSpring>) -> VehicleConfig {
-        let rim = ContactLaws {
-            normal: Self::RIM_LAW,
-            friction: Self::RIM_FRICTION,
-        };
+    /// A vehicle on `terrain`, driven by `drive`, with these arms and
+    /// contact laws (a declared vehicle's: the declared, the rest fitted to
+    /// it, [`ContactFit`](super::ContactFit)), on rigid ground, tension
+    /// recorded at link 1, the loop closed as declared.
+    pub fn new(
+        terrain: Terrain,
+        drive: Drive,
+        arms: Vec<ArmSpring>,
+        laws: ContactLawSet,
+    ) -> VehicleConfig {
         VehicleConfig {
             terrain,
-            ground: ContactLaws {
-                normal: Self::GROUND_LAW,
-                friction: Self::GROUND_FRICTION,
-            },
-            wheels: rim,
-            sprocket: rim,
+            ground: laws.ground,
+            wheels: laws.wheels,
+            sprocket: laws.sprocket,
             soil: None,
             rut: None,
             arms,
@@ -121,14 +87,10 @@ impl VehicleConfig {
     pub fn check(&self) -> Result<(), ConfigError> {
         self.terrain.check()?;
         self.drive.check()?;
-        for (pair, laws) in [
-            ("ground", &self.ground),
-            ("wheels", &self.wheels),
-            ("sprocket", &self.sprocket),
-        ] {
-            laws.check()
-                .map_err(|source| ConfigError::Contact { pair, source })?;
-        }
+        let pair = |pair| move |source| ConfigError::Contact { pair, source };
+        self.ground.check().map_err(pair("ground"))?;
+        self.wheels.check().map_err(pair("wheels"))?;
+        self.sprocket.check().map_err(pair("sprocket"))?;
         for arm in &self.arms {
             arm.spring.check().map_err(|source| ConfigError::Arm {
                 body: arm.body,

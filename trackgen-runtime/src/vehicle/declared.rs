@@ -105,9 +105,15 @@ pub trait VehicleDynamics: Simulated + Send + Sized {
     /// Its contact geometry.
     fn geometry(&self) -> &Geometry;
 
-    /// The sprocket's pitch radius, m: track speed over sprocket speed at
-    /// a seated joint, `p / (2 sin(π/N))` (0 without a sprocket).
+    /// The sprocket's pitch radius, m: where the seated joints lie,
+    /// `p / (2 sin(π/N))` (0 without a sprocket).
     fn sprocket_pitch_radius(&self) -> f64;
+
+    /// The sprocket's rolling radius, m: the track's mean speed per unit
+    /// of sprocket speed, `N p / (2π)`
+    /// ([`track_speed`](crate::contact::sprocket::track_speed); 0 without a
+    /// sprocket).
+    fn sprocket_rolling_radius(&self) -> f64;
 
     /// The soft soil's memory, if the vehicle drives on soil: the rut it
     /// has left so far.

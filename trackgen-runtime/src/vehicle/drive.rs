@@ -35,8 +35,9 @@ pub enum Drive {
     /// A PI controller on the sprocket's speed relative to the chassis,
     /// tracking a forward speed `target(t)` (m/s): driving forward, the
     /// loop (numbered counter-clockwise) runs clockwise round the chassis,
-    /// so the sprocket's wanted speed is `−target / r` with `r` its pitch
-    /// radius. The torque is limited to `±max_torque` and the integral
+    /// so the sprocket's wanted speed is `−target / r` with `r` its rolling
+    /// radius `N p / (2π)`, the track's mean speed per unit of sprocket
+    /// speed ([`track_speed`](crate::contact::sprocket::track_speed)). The torque is limited to `±max_torque` and the integral
     /// held while the limit is active (anti-windup). A target that is NaN
     /// or infinite stops a run ([`Drive::checked_torque`]); gains must be
     /// finite and the limit zero or more ([`Drive::check`]).

@@ -7,7 +7,7 @@ use nalgebra::SVector;
 use super::workspace::Workspace;
 use super::{Geometry, VehicleConfig, arms};
 use crate::contact::soft_ground::SoftGround;
-use crate::contact::{ContactForce, ground, sprocket, wheel};
+use crate::contact::{ContactForce, GroundFriction, ground, sprocket, wheel};
 use crate::error::SimulationError;
 use crate::model::{BodyLoad, ChassisModel, PartKind};
 
@@ -80,12 +80,15 @@ pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
     }
 }
 
-/// The drive's place on the chassis: the sprocket's body and its pitch
-/// radius (track speed over sprocket speed), m.
+/// The drive's place on the chassis: the sprocket's body, its pitch
+/// radius (m: where the seated joints lie) and its rolling radius (m:
+/// the track's mean speed per unit of its speed,
+/// [`track_speed`](crate::contact::sprocket::track_speed)).
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Sprocket {
     pub body: usize,
     pub pitch_radius: f64,
+    pub rolling_radius: f64,
 }
 
 impl Sprocket {
@@ -97,15 +100,17 @@ impl Sprocket {
 }
 
 /// Stage 3, the force elements, into `work`'s loads and books: every
-/// contact's law (rigid ground, or the soil at shear displacements
-/// `shear`), the arms' springs and dampers, the drawbar and the drive
-/// (at controller integral `integral`).
+/// contact's law (rigid ground, or the soil), with the ground points'
+/// tangential states `tangential` (stiction deflections, or the soil's
+/// shear displacements; one per ground point, link by link), the arms'
+/// springs and dampers, the drawbar and the drive (at controller integral
+/// `integral`).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn respond<const DC: usize>(
     work: &mut Workspace,
     t: f64,
     config: &VehicleConfig,
-    (soil, points, shear): (Option<&SoftGround>, usize, &[f64]),
+    (soil, points, tangential): (Option<&SoftGround>, usize, &[f64]),
     sprocket: Option<Sprocket>,
     (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
     integral: f64,
@@ -115,27 +120,34 @@ pub(super) fn respond<const DC: usize>(
         contacts,
         track_loads,
         chassis_loads,
-        shear_rate,
+        tangential_rate,
+        touched,
         books,
         ..
     } = work;
     track_loads.fill(BodyLoad::ZERO);
     chassis_loads.fill(BodyLoad::ZERO);
-    shear_rate.fill(0.0);
+    tangential_rate.fill(0.0);
+    touched.fill(false);
     *books = Books::default();
     let sprocket_body = sprocket.map(|s| s.body);
     for contact in contacts.iter() {
         let link_load = &mut track_loads[contact.link];
+        let slot = contact.link * points + contact.feature;
         match (contact.other, soil) {
             (None, None) => {
-                let force = config.ground.respond(contact);
+                let z = tangential.get(slot).copied().unwrap_or(0.0);
+                let (force, rate) = config.ground.respond(contact, z);
+                if let Some(r) = tangential_rate.get_mut(slot) {
+                    *r = rate;
+                    touched[slot] = true;
+                }
                 force.apply(contact, link_load, None);
                 books.ground(&force);
             }
             (None, Some(soil)) => {
-                let slot = contact.link * points + contact.feature;
-                let (force, rate) = soil.respond(contact, points, shear[slot]);
-                shear_rate[slot] = rate;
+                let (force, rate) = soil.respond(contact, points, tangential[slot]);
+                tangential_rate[slot] = rate;
                 if let Some(force) = force {
                     force.apply(contact, link_load, None);
                     books.ground(&force);
@@ -161,6 +173,17 @@ pub(super) fn respond<const DC: usize>(
             }
         }
     }
+    // Ground points off the ground: their stiction deflections relax.
+    if let (None, GroundFriction::Stiction(stiction)) = (soil, config.ground.friction) {
+        for ((z, rate), touched) in tangential.iter().zip(tangential_rate.iter_mut()).zip(touched) {
+            if !*touched {
+                let relaxing = stiction.relax(*z);
+                *rate = relaxing.rate;
+                books.potential += relaxing.potential;
+                books.dissipation += relaxing.dissipation;
+            }
+        }
+    }
     let arm_books = arms::apply(&config.arms, qc, qdc, chassis_loads);
     books.arm_potential = arm_books.potential;
     // The drawbar pulls the chassis back at its centroid; the power it
@@ -172,7 +195,7 @@ pub(super) fn respond<const DC: usize>(
         let (torque, rate) =
             config
                 .drive
-                .checked_torque(t, sprocket.omega(qdc), sprocket.pitch_radius, integral)?;
+                .checked_torque(t, sprocket.omega(qdc), sprocket.rolling_radius, integral)?;
         chassis_loads[sprocket.body].moment += torque;
         chassis_loads[0].moment -= torque;
         books.torque = torque;

@@ -17,6 +17,7 @@ mod config;
 mod declared;
 mod drive;
 mod error;
+mod fitted;
 mod forces;
 mod record;
 mod system;
@@ -26,5 +27,23 @@ pub use config::VehicleConfig;
 pub use declared::{Geometry, Vehicle, VehicleDynamics, build};
 pub use drive::{Drive, DriveError};
 pub use error::{BuildError, ConfigError};
+pub use fitted::{
+    BEARING_BAND, ContactFit, ContactLawSet, DeclaredContact, DeclaredPair, GROUND_DAMPING_RATIO,
+    GROUND_DEPTH, GROUND_MU, RIM_DAMPING_RATIO, RIM_DEPTH, RIM_FRICTION_RATE, RIM_MU,
+    TANGENTIAL_DAMPING_RATIO,
+};
 pub use record::VehicleRecord;
 pub use system::VehicleSystem;
+
+/// The slip of a track driving at `track_speed` (m/s, its mean speed,
+/// [`track_speed`](crate::contact::sprocket::track_speed)) under a hull
+/// moving at `speed` (m/s): `1 − v / v_t`, 0 for a track that carries the
+/// hull at its own speed, positive when the track spins faster (driving),
+/// negative when the hull outruns it. NaN for a track at rest.
+pub fn slip(speed: f64, track_speed: f64) -> f64 {
+    if track_speed == 0.0 {
+        f64::NAN
+    } else {
+        1.0 - speed / track_speed
+    }
+}

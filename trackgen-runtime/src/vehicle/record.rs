@@ -21,6 +21,12 @@ record! {
         /// Sprocket speed relative to the chassis, rad/s (negative driving
         /// forward).
         sprocket_speed,
+        /// The track's mean speed relative to the chassis, m/s (positive
+        /// driving forward): one pitch per tooth,
+        /// [`track_speed`](crate::contact::sprocket::track_speed). A track
+        /// that does not slip carries the chassis at this speed; the slip
+        /// is [`slip`](super::slip)`(speed, track_speed)`.
+        track_speed,
         /// The drive's torque on the sprocket, N m.
         sprocket_torque,
         /// Tension in the joint after the configured link, N.

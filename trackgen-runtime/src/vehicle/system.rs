@@ -12,7 +12,7 @@ use crate::assembly::{self, Assembled};
 use crate::closure::Switch;
 use crate::contact::BodyState;
 use crate::contact::soft_ground::{Rut, SoftGround};
-use crate::contact::sprocket::pitch_radius;
+use crate::contact::sprocket::{pitch_radius, rolling_radius};
 use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
 use crate::model::{ChassisModel, ChassisPart, PartKind, TrackModel, TreeDescription};
@@ -26,9 +26,11 @@ use crate::system::{Pair, Simulated, TrackSystem, TreeSystem};
 /// State: the track's, the chassis' `[q_i, q̇_i]`, then the drive
 /// controller's integral (rad), the motor's work and the dissipated work
 /// (J, integrated alongside so the energy balance is exact to the
-/// integration tolerance); on soft soil, then the shear displacement `j`
-/// (m) of every shoe ground point, link by link, grown by the point's
-/// slip speed while it is in the soil and reset when it leaves it.
+/// integration tolerance); then a tangential state per shoe ground point,
+/// link by link: on rigid ground with stiction its deflection `z` (m,
+/// [`Stiction`](crate::laws::Stiction)), on soft soil its shear
+/// displacement `j` (m), grown by the point's slip speed while it is in
+/// the soil and reset when it leaves it; none with regularised friction.
 ///
 /// Every recorded quantity is finite: one that is not (see
 /// [`observe`](Simulated::observe)) stops the run with a
@@ -104,7 +106,7 @@ where
                 Some(ground)
             }
         };
-        let shear_states = if soil.is_some() {
+        let tangential_states = if soil.is_some() || config.ground.friction.has_state() {
             T::BODIES * geometry.shoe.ground_points.len()
         } else {
             0
@@ -115,6 +117,7 @@ where
             .map(|part| Sprocket {
                 body: part.body,
                 pitch_radius: pitch_radius(part.teeth, pitch),
+                rolling_radius: rolling_radius(part.teeth, pitch),
             });
         let forward_joints = description
             .joints()
@@ -125,11 +128,11 @@ where
         let bodies = Pair::new(track, "track", chassis, "chassis");
         let start = bodies.initial_state();
         let y0 = DVector::from_iterator(
-            start.len() + EXTRA_STATES + shear_states,
+            start.len() + EXTRA_STATES + tangential_states,
             start
                 .iter()
                 .copied()
-                .chain(std::iter::repeat_n(0.0, EXTRA_STATES + shear_states)),
+                .chain(std::iter::repeat_n(0.0, EXTRA_STATES + tangential_states)),
         );
         Ok(VehicleSystem {
             bodies,
@@ -138,7 +141,7 @@ where
             soil,
             sprocket,
             forward_joints,
-            work: Workspace::new(T::BODIES, C::BODIES, shear_states),
+            work: Workspace::new(T::BODIES, C::BODIES, tangential_states),
             y0,
         })
     }
@@ -153,12 +156,12 @@ where
         self.bodies.second()
     }
 
-    /// The bodies' part of a state, the three extra states and the shear
-    /// displacements.
+    /// The bodies' part of a state, the three extra states and the ground
+    /// points' tangential states.
     fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; EXTRA_STATES], &'y [f64]) {
         let (bodies, extra) = y.split_at(self.bodies.dimension());
-        let (extra, shear) = extra.split_at(EXTRA_STATES);
-        (bodies, [extra[0], extra[1], extra[2]], shear)
+        let (extra, tangential) = extra.split_at(EXTRA_STATES);
+        (bodies, [extra[0], extra[1], extra[2]], tangential)
     }
 
     /// The loads at a state, stage by stage: the track's coordinates
@@ -172,7 +175,7 @@ where
         t: f64,
         y: &[f64],
     ) -> Result<(SVector<f64, DC>, SVector<f64, DC>), SimulationError> {
-        let (bodies, [integral, ..], shear) = self.split(y);
+        let (bodies, [integral, ..], tangential) = self.split(y);
         let (yt, yc) = self.bodies.split(bodies);
         self.bodies.parts_mut().0.recover(t, yt)?;
         let (qc, qdc) = TreeSystem::<C, DC>::split(yc);
@@ -190,7 +193,7 @@ where
             &mut self.work,
             t,
             &self.config,
-            (self.soil.as_ref(), points, shear),
+            (self.soil.as_ref(), points, tangential),
             self.sprocket,
             (&qc, &qdc),
             integral,
@@ -293,6 +296,10 @@ where
         self.sprocket.map_or(0.0, |s| s.pitch_radius)
     }
 
+    fn sprocket_rolling_radius(&self) -> f64 {
+        self.sprocket.map_or(0.0, |s| s.rolling_radius)
+    }
+
     fn rut(&self) -> Option<&Rut> {
         self.soil.as_ref().map(|s| &s.rut)
     }
@@ -348,7 +355,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         extra[0] = books.integral_rate;
         extra[1] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
         extra[2] = books.dissipation + self.track().closure_energy(qt, qdt).1;
-        extra[EXTRA_STATES..].copy_from_slice(&self.work.shear_rate);
+        extra[EXTRA_STATES..].copy_from_slice(&self.work.tangential_rate);
         Ok(())
     }
 }
@@ -406,6 +413,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             pitch: qc[2],
             speed: qdc[0],
             sprocket_speed: self.sprocket.map_or(0.0, |s| s.omega(&qdc)),
+            track_speed: self
+                .sprocket
+                .map_or(0.0, |s| -s.rolling_radius * s.omega(&qdc)),
             sprocket_torque: books.torque,
             tension: tension(Some(self.config.tension_link - 1)).unwrap_or(f64::NAN),
             tension_tight: tight.unwrap_or(f64::NAN),

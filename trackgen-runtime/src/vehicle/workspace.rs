@@ -27,8 +27,12 @@ pub(super) struct Workspace {
     pub track_loads: Vec<BodyLoad>,
     /// The loads on the chassis bodies.
     pub chassis_loads: Vec<BodyLoad>,
-    /// `dj/dt` of every shoe ground point on soft soil.
-    pub shear_rate: Vec<f64>,
+    /// The rate of every shoe ground point's tangential state: its
+    /// stiction deflection on rigid ground, its shear displacement on soft
+    /// soil.
+    pub tangential_rate: Vec<f64>,
+    /// Whether each ground point touched at this evaluation.
+    pub touched: Vec<bool>,
     /// What the force elements stored, dissipated and did, at the last
     /// evaluation.
     pub books: Books,
@@ -40,8 +44,8 @@ pub(super) struct Workspace {
 
 impl Workspace {
     /// Buffers for `links` links, `bodies` chassis bodies and
-    /// `shear_states` soil shear states.
-    pub fn new(links: usize, bodies: usize, shear_states: usize) -> Workspace {
+    /// `tangential` tangential states.
+    pub fn new(links: usize, bodies: usize, tangential: usize) -> Workspace {
         let resting = BodyState::at_rest(Vector2::zeros(), 0.0);
         let largest = links.max(bodies);
         Workspace {
@@ -53,7 +57,8 @@ impl Workspace {
             contacts: Vec::with_capacity(8 * links),
             track_loads: vec![BodyLoad::ZERO; links],
             chassis_loads: vec![BodyLoad::ZERO; bodies],
-            shear_rate: vec![0.0; shear_states],
+            tangential_rate: vec![0.0; tangential],
+            touched: vec![false; tangential],
             books: Books::default(),
             tensions: Vec::with_capacity(links),
             offsets: Vec::with_capacity(links),

@@ -1,0 +1,115 @@
+//! Friction with stiction: an elastic tangential contact with a Coulomb
+//! limit.
+//!
+//! The tangential spring-dashpot with history of discrete-element contact
+//! (Cundall & Strack, *Géotechnique* 29(1), 1979; the form with the
+//! dashpot inside the Coulomb limit is Luding's, *Granular Matter* 10,
+//! 2008, §2.4), written in rate form so that its history is an integrated
+//! state, as this project's integrators need: a Kelvin-Voigt element
+//! (stiffness `k`, damping `c`) in series with a rigid Coulomb slider.
+//! The contact point's slip velocity `v` (of the body's material point
+//! against the ground, along the tangent) is the element's stretch rate
+//! `ż` plus the slider's slip rate `s`:
+//!
+//! * **sticking**, `|k z + c v| ≤ μ F_n`: the slider holds, `s = 0`,
+//!   `ż = v`, the force on the body is `−(k z + c v)`. A body at rest
+//!   under a tangential load below the limit stays at rest: the spring
+//!   holds the load at a deflection `z = F/k`, and nothing creeps (a
+//!   regularised Coulomb law needs a sliding speed to carry any load);
+//! * **sliding**, beyond: the element's force is held at the limit,
+//!   `k z + c ż = σ μ F_n` (`σ` the sign of `k z + c v`), so
+//!   `s = σ (|k z + c v| − μ F_n)/c` and `ż = v − s`; the force on the
+//!   body is `−σ μ F_n`, Coulomb's exactly.
+//!
+//! The force is continuous across the two (the slip rate grows from zero),
+//! never exceeds `μ F_n` — when the normal force falls the deflection
+//! relaxes at once through the damper, and a contact that lifts
+//! (`F_n = 0`) pushes nothing, its deflection relaxing as `ż = −k z/c`.
+//! Energy: the spring stores `½ k z²`; the power dissipated is
+//! `c ż² + μ F_n |s|` (the damper and the slider), never negative, and the
+//! power the body puts in, `−F v`, is exactly their sum with the stored
+//! energy's rate, so the books balance by construction.
+
+use super::ParameterError;
+
+/// The elastic-Coulomb tangential law of a contact point.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stiction {
+    /// Friction coefficient `μ` (static and sliding alike).
+    pub mu: f64,
+    /// Tangential stiffness `k`, N/m: the load a sticking contact carries
+    /// per metre of deflection.
+    pub stiffness: f64,
+    /// Tangential damping `c`, N s/m (positive: the slider's slip rate is
+    /// the excess force over it).
+    pub damping: f64,
+}
+
+/// What [`Stiction`] gives at a state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TangentialResponse {
+    /// The force on the body along the tangent, N (opposing its slip).
+    pub force: f64,
+    /// `ż`, the deflection's rate, m/s.
+    pub rate: f64,
+    /// Elastic energy in the spring, `½ k z²`, J.
+    pub potential: f64,
+    /// Power dissipated by the damper and the slider, W.
+    pub dissipation: f64,
+    /// Whether the contact slides.
+    pub sliding: bool,
+}
+
+impl Stiction {
+    /// The law at deflection `z` (m), slip velocity `v` (m/s, the body's
+    /// point against the ground along the tangent) and normal force
+    /// `normal` (N, ≥ 0).
+    #[inline]
+    pub fn respond(&self, z: f64, v: f64, normal: f64) -> TangentialResponse {
+        let (k, c) = (self.stiffness, self.damping);
+        let potential = 0.5 * k * z * z;
+        let stick = k * z + c * v;
+        let limit = self.mu * normal;
+        if stick.abs() <= limit {
+            return TangentialResponse {
+                force: -stick,
+                rate: v,
+                potential,
+                dissipation: c * v * v,
+                sliding: false,
+            };
+        }
+        let sigma = stick.signum();
+        let slip = (stick.abs() - limit) / c;
+        let rate = v - sigma * slip;
+        TangentialResponse {
+            force: -sigma * limit,
+            rate,
+            potential,
+            dissipation: c * rate * rate + limit * slip,
+            sliding: true,
+        }
+    }
+
+    /// The law off contact: no force, the deflection relaxing through the
+    /// damper, `ż = −k z / c`, its energy dissipated.
+    #[inline]
+    pub fn relax(&self, z: f64) -> TangentialResponse {
+        let rate = -self.stiffness * z / self.damping;
+        TangentialResponse {
+            force: 0.0,
+            rate,
+            potential: 0.5 * self.stiffness * z * z,
+            dissipation: self.damping * rate * rate,
+            sliding: true,
+        }
+    }
+
+    /// A coefficient of zero or more, a positive stiffness and damping, all
+    /// finite.
+    pub fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("mu", self.mu, 0.0, false)?;
+        ParameterError::check("tangential stiffness", self.stiffness, 0.0, true)?;
+        ParameterError::check("tangential damping", self.damping, 0.0, true)
+    }
+}
