@@ -757,3 +757,52 @@ fn a_start_inside_a_wheel_or_the_ground_is_an_error() {
     );
     let _ = (Sagging52, Sagging54);
 }
+
+/// A profile that cannot drive its track is refused when the vehicle is
+/// built from a hand-made geometry, by the rules the compiler applies to a
+/// declaration (`trackgen_sprocket`), with what would work: gaps far too
+/// wide for the sprocket, and pins at the links' centres, between the
+/// gaps.
+#[test]
+fn profiles_that_cannot_drive_are_config_errors() {
+    use trackgen::contact::sprocket::ProfileProblem;
+    let a = assemble(
+        &M113Track,
+        &M113Chassis,
+        &M113::geometry().shoe,
+        &M113::geometry().sprocket,
+        &Terrain::Flat { height: 0.0 },
+        0.0,
+        0.001,
+    )
+    .unwrap();
+    let q = (a.track, a.chassis);
+    let mut wide = M113::geometry();
+    wide.sprocket.arc_radius = 0.5;
+    let e = setup(q, wide, config(1)).unwrap_err();
+    assert!(
+        matches!(e, ConfigError::Profile(ProfileProblem::GapsOverlap { largest, .. })
+            if (largest - 0.3 * (std::f64::consts::PI / 10.0).sin()).abs() < 1e-12),
+        "{e}"
+    );
+    let mut centred = M113::geometry();
+    centred.shoe.pins = vec![Vector2::new(0.0, 0.0)];
+    let e = setup(q, centred, config(1)).unwrap_err();
+    match &e {
+        ConfigError::Profile(ProfileProblem::PinInTooth {
+            pin: 1,
+            from_joint,
+            seats_within,
+            wider_gap: None,
+            ..
+        }) => {
+            assert!((from_joint - 0.077).abs() < 1e-12, "{e}");
+            // √((ρ − r_pin)² − (d − R)²) for the M113's figures.
+            let r = 0.154 / (2.0 * (std::f64::consts::PI / 10.0).sin());
+            let want = ((0.089f64 - 0.015).powi(2) - (0.3 - r).powi(2)).sqrt();
+            assert!((seats_within - want).abs() < 1e-12, "{e}");
+        }
+        other => panic!("{other}"),
+    }
+    assert!(e.to_string().contains("move `pins` to within 0.0538 m of a joint"), "{e}");
+}

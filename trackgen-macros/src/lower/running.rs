@@ -1,10 +1,14 @@
 //! Lowering what makes a vehicle run: its `shoe`, the sprocket's profile,
 //! `contact` laws and `drive` gains.
 
+use proc_macro2::Span;
+use syn::spanned::Spanned;
+use trackgen_sprocket::{Engagement, Radii};
+
 use super::Cx;
 use super::keys::Bound;
 use super::vehicle::Singles;
-use crate::ir::{ContactPair, NormalLaw, Running, Shoe};
+use crate::ir::{ContactPair, NormalLaw, Running, Shoe, Track};
 use crate::num::Num;
 
 /// Default speed drive: proportional gain, N m s/rad.
@@ -19,8 +23,47 @@ const DEFAULT_MAX_TORQUE: f64 = 2e4;
 const PAIRS: [&str; 3] = ["ground", "wheels", "sprocket"];
 
 /// The declared sprocket profile: tip radius, gap arc radius, gap arc
-/// centre distance.
-pub(super) type Profile = [Option<Num>; 3];
+/// centre distance, each with the span of its value; and the teeth with
+/// theirs.
+#[derive(Default)]
+pub(super) struct Profile {
+    pub radii: [Option<Num>; 3],
+    pub spans: [Option<Span>; 3],
+    pub teeth: Option<(u32, Span)>,
+}
+
+impl Profile {
+    /// The radii, the declared or `scaled` for a track of `pitch`, when
+    /// the macro knows them all.
+    fn known_radii(&self, pitch: Option<f64>) -> Option<Radii> {
+        let (teeth, _) = self.teeth?;
+        let scaled = pitch.map(|p| trackgen_sprocket::scaled(teeth, p));
+        let pick = |i: usize, default: Option<f64>| match &self.radii[i] {
+            Some(v) => v.known(),
+            None => default,
+        };
+        Some(Radii {
+            addendum: pick(0, scaled.map(|r| r.addendum))?,
+            arc_radius: pick(1, scaled.map(|r| r.arc_radius))?,
+            arc_centre_radius: pick(2, scaled.map(|r| r.arc_centre_radius))?,
+        })
+    }
+
+    /// Where to point at a gap's problem: the declared gap radius, else
+    /// the gap centre, else the teeth.
+    fn gap_span(&self) -> Option<Span> {
+        self.spans[1]
+            .or(self.spans[2])
+            .or(self.spans[0])
+            .or(self.teeth.map(|t| t.1))
+    }
+}
+
+/// The spans of the shoe's keys the sprocket's checks point at.
+struct ShoeSpans {
+    pins: Span,
+    pin_radius: Span,
+}
 
 impl Cx<'_> {
     /// What makes the vehicle run, from its `shoe`, `contact` and `drive`
@@ -30,8 +73,10 @@ impl Cx<'_> {
         singles: &Singles,
         has_sprocket: bool,
         profile: Profile,
+        track: &Track,
     ) -> Option<Running> {
         let Some((shoe_kw, shoe_block)) = singles.shoe else {
+            self.check_engagement(&profile, None, track);
             for (section, block) in [("contact", singles.contact), ("drive", singles.drive)] {
                 if let Some(block) = block {
                     self.errors.at(
@@ -52,6 +97,7 @@ impl Cx<'_> {
             );
         }
         let shoe = self.shoe(shoe_block);
+        self.check_engagement(&profile, shoe.as_ref().map(|(s, spans)| (s, spans)), track);
         let contact = match singles.contact {
             Some(block) => self.contact(block),
             None => Default::default(),
@@ -71,20 +117,8 @@ impl Cx<'_> {
         let proportional = gain("proportional", Bound::NonNegative, DEFAULT_PROPORTIONAL);
         let integral = gain("integral", Bound::NonNegative, DEFAULT_INTEGRAL);
         let max_torque = gain("max_torque", Bound::Positive, DEFAULT_MAX_TORQUE);
-        let shoe = shoe?;
-        if let (Some(pin), Some(gap)) = (
-            shoe.pin_radius.known(),
-            profile[1].as_ref().and_then(Num::known),
-        ) && pin >= gap
-        {
-            self.errors.at(
-                shoe_block.span,
-                format!(
-                    "the pins (radius {pin} m) do not fit the sprocket's gaps (radius {gap} m)"
-                ),
-            );
-        }
-        let [tip_radius, gap_radius, gap_centre] = profile;
+        let (shoe, _) = shoe?;
+        let [tip_radius, gap_radius, gap_centre] = profile.radii;
         Some(Running {
             shoe,
             tip_radius,
@@ -97,8 +131,81 @@ impl Cx<'_> {
         })
     }
 
+    /// The sprocket's checks (`trackgen_sprocket`, the rules the runtime
+    /// applies too) on what the macro can evaluate: gaps that do not
+    /// overlap, stay inside the sprocket and cut into the tip circle; pins
+    /// narrower than the gaps; every pin of a seated link in a gap. Each
+    /// problem at the key to change, with the range that would work.
+    fn check_engagement(
+        &mut self,
+        profile: &Profile,
+        shoe: Option<(&Shoe, &ShoeSpans)>,
+        track: &Track,
+    ) {
+        let Some((teeth, teeth_span)) = profile.teeth else {
+            return;
+        };
+        // The pitch and joints of the links, when every link's are known
+        // and alike (the runtime refuses links of different lengths).
+        let joints: Option<Vec<((f64, f64), (f64, f64))>> = track
+            .links
+            .iter()
+            .map(|l| {
+                Some((
+                    (l.u1.x.known()?, l.u1.y.known()?),
+                    (l.u2.x.known()?, l.u2.y.known()?),
+                ))
+            })
+            .collect();
+        let span = |(a, b): &((f64, f64), (f64, f64))| (b.0 - a.0).hypot(b.1 - a.1);
+        let first = joints
+            .filter(|j| {
+                j.first().is_some_and(|first| {
+                    j.iter()
+                        .all(|l| (span(l) - span(first)).abs() <= 1e-9 * span(first))
+                })
+            })
+            .and_then(|j| j.first().copied());
+        let Some(radii) = profile.known_radii(first.as_ref().map(span)) else {
+            return;
+        };
+        let mut fine = true;
+        if let Err(problem) = radii.check(teeth) {
+            self.errors.at(profile.gap_span().unwrap_or(teeth_span), problem);
+            fine = false;
+        }
+        let Some((shoe, spans)) = shoe else {
+            return;
+        };
+        let Some(pin_radius) = shoe.pin_radius.known() else {
+            return;
+        };
+        if let Err(problem) = trackgen_sprocket::check_pin_radius(pin_radius, radii.arc_radius) {
+            self.errors.at(spans.pin_radius, problem);
+            fine = false;
+        }
+        let pins: Option<Vec<(f64, f64)>> = shoe
+            .pins
+            .iter()
+            .map(|p| Some((p.x.known()?, p.y.known()?)))
+            .collect();
+        let (true, Some(pins), Some((u1, u2))) = (fine, pins, first) else {
+            return;
+        };
+        let engagement = Engagement {
+            teeth,
+            radii,
+            joints: [u1, u2],
+            pins: &pins,
+            pin_radius,
+        };
+        if let Err(problem) = engagement.check() {
+            self.errors.at(spans.pins, problem);
+        }
+    }
+
     /// `shoe { ground_points, inner_offset, pins, pin_radius, width? }`.
-    fn shoe(&mut self, block: &crate::parse::Block) -> Option<Shoe> {
+    fn shoe(&mut self, block: &crate::parse::Block) -> Option<(Shoe, ShoeSpans)> {
         let keys = [
             "ground_points",
             "inner_offset",
@@ -113,13 +220,20 @@ impl Cx<'_> {
         let pins = self.points(&fields, "pins", true);
         let pin_radius = self.positive(&fields, "pin_radius", true);
         let width = self.positive(&fields, "width", false);
-        Some(Shoe {
-            ground_points: ground_points?,
-            inner_offset: inner_offset?,
-            pins: pins?,
-            pin_radius: pin_radius?,
-            width,
-        })
+        let spans = ShoeSpans {
+            pins: fields.map.get("pins").map_or(block.span, |e| e.span()),
+            pin_radius: fields.map.get("pin_radius").map_or(block.span, |e| e.span()),
+        };
+        Some((
+            Shoe {
+                ground_points: ground_points?,
+                inner_offset: inner_offset?,
+                pins: pins?,
+                pin_radius: pin_radius?,
+                width,
+            },
+            spans,
+        ))
     }
 
     /// `contact { ground { … }, wheels { … }, sprocket { … } }`.

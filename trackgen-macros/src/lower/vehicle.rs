@@ -52,7 +52,7 @@ impl Cx<'_> {
         let mut parts = Vec::new();
         let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
         let mut sprocket: Option<&Ident> = None;
-        let mut profile: Profile = [None, None, None];
+        let mut profile = Profile::default();
         let vehicle_name = name;
         for entry in sections {
             let Entry::Section {
@@ -182,7 +182,7 @@ impl Cx<'_> {
             bodies: Vec::new(),
         });
         track.gravity = gravity.clone();
-        let running = self.running(&singles, sprocket.is_some(), profile);
+        let running = self.running(&singles, sprocket.is_some(), profile, &track);
         let (chassis, part_bodies) = super::tree::chassis(&chassis_mass, &chassis_inertia, &parts);
         Vehicle {
             gravity,
@@ -300,25 +300,17 @@ impl Cx<'_> {
         let inertia = self.positive(&fields, "inertia", true);
         let radius = self.positive(&fields, "radius", true);
         let (teeth, profile) = if kind == PartKind::Sprocket {
-            let profile = [
-                self.positive(&fields, "tip_radius", false),
-                self.positive(&fields, "gap_radius", false),
-                self.positive(&fields, "gap_centre", false),
-            ];
-            if let [Some(tip), Some(gap), Some(centre)] = &profile
-                && let (Some(tip), Some(gap), Some(centre)) =
-                    (tip.known(), gap.known(), centre.known())
-                && centre - gap >= tip
-            {
-                self.errors.spanned(
-                    fields.map["gap_centre"],
-                    format!(
-                        "the gap arcs (radius {gap} m centred {centre} m out) do not reach inside \
-                         the tip circle ({tip} m): the sprocket would have no tooth flanks"
-                    ),
-                );
-            }
-            (self.teeth(&fields), Some(profile))
+            let keys = ["tip_radius", "gap_radius", "gap_centre"];
+            let radii = keys.map(|key| self.positive(&fields, key, false));
+            let spans = keys.map(|key| fields.map.get(key).map(|e| e.span()));
+            let teeth = self.teeth(&fields);
+            let teeth_span = fields.map.get("teeth").map(|e| e.span());
+            let profile = Profile {
+                radii,
+                spans,
+                teeth: teeth.zip(teeth_span),
+            };
+            (teeth, Some(profile))
         } else {
             (Some(0), None)
         };

@@ -127,9 +127,10 @@ pub enum AssemblyError {
     /// The assembled start puts a shoe deeper than [`START_PENETRATION`]
     /// into a wheel, the sprocket or the ground.
     #[error(
-        "the assembled track starts {:.1} mm inside {what} (link {link}); a start may be at most {:.0} mm deep",
+        "the assembled track starts {:.1} mm inside {what} (link {link}); a start may be at most {:.0} mm deep: {}",
         depth * 1e3,
-        START_PENETRATION * 1e3
+        START_PENETRATION * 1e3,
+        what.hint()
     )]
     StartsInside {
         /// What the shoe is inside.
@@ -161,6 +162,30 @@ pub enum Touching {
         /// Its declared name.
         name: &'static str,
     },
+}
+
+impl Touching {
+    /// What most likely puts an assembled shoe inside this, and the keys
+    /// of the declaration to change.
+    pub fn hint(&self) -> &'static str {
+        match self {
+            Touching::Ground => {
+                "the terrain rises into the track where it is assembled (chassis centroid at x = 0): \
+                 start on level ground, or move the terrain's feature ahead"
+            }
+            Touching::Part {
+                kind: PartKind::Sprocket,
+                ..
+            } => {
+                "the sprocket's teeth strike the shoes' pins: move `pins` toward the joints, or set \
+                 the sprocket's `gap_centre` and `gap_radius` so the gaps take them"
+            }
+            Touching::Part { .. } => {
+                "the rim reaches past the shoes' inner faces: raise the shoe's `inner_offset` \
+                 or reduce the part's `radius`"
+            }
+        }
+    }
 }
 
 impl fmt::Display for Touching {

@@ -15,13 +15,7 @@ use nalgebra::Vector2;
 
 use super::{BodyState, Contact, ShoeGeometry};
 
-/// The pitch radius of a sprocket of `teeth` teeth for a chain of `pitch`
-/// (m, pin to pin): the circumradius of the `teeth`-gon of side `pitch`,
-/// `p / (2 sin(π/teeth))`, m. Seated pins sit on this circle, so it is
-/// track speed over sprocket speed and tension difference over torque.
-pub fn pitch_radius(teeth: u32, pitch: f64) -> f64 {
-    pitch / (2.0 * (std::f64::consts::PI / teeth as f64).sin())
-}
+pub use trackgen_sprocket::{ProfileProblem, pitch_radius};
 
 /// The track's mean speed, m/s, driven by a sprocket of `teeth` teeth
 /// turning at `omega` (rad/s) on links of `pitch` (m): one pitch per tooth
@@ -63,15 +57,37 @@ impl ToothProfile {
     /// M113 (`p` = 0.154 m, 10 teeth) this gives 0.2605, 0.300 and
     /// 0.089 m, its figures.
     pub fn scaled(teeth: u32, pitch: f64) -> ToothProfile {
-        let half_angle = std::f64::consts::PI / teeth as f64;
-        let pitch_radius = pitch_radius(teeth, pitch);
-        let arc_centre_radius = pitch_radius + 0.33 * pitch;
+        let radii = trackgen_sprocket::scaled(teeth, pitch);
         ToothProfile {
             teeth,
-            addendum: pitch_radius + 0.073 * pitch,
-            arc_centre_radius,
-            arc_radius: 0.48 * 2.0 * arc_centre_radius * half_angle.sin(),
+            addendum: radii.addendum,
+            arc_centre_radius: radii.arc_centre_radius,
+            arc_radius: radii.arc_radius,
         }
+    }
+
+    /// Whether this profile can drive a track whose links have joints
+    /// `joints` (`ū1`, `ū2`, link frame) and whose shoes have pins `shoe`:
+    /// the rules of [`trackgen_sprocket::Engagement::check`], the same the
+    /// compiler applies to a declaration.
+    pub fn check(
+        &self,
+        joints: (Vector2<f64>, Vector2<f64>),
+        shoe: &ShoeGeometry,
+    ) -> Result<(), ProfileProblem> {
+        let pins: Vec<(f64, f64)> = shoe.pins.iter().map(|p| (p.x, p.y)).collect();
+        trackgen_sprocket::Engagement {
+            teeth: self.teeth,
+            radii: trackgen_sprocket::Radii {
+                addendum: self.addendum,
+                arc_centre_radius: self.arc_centre_radius,
+                arc_radius: self.arc_radius,
+            },
+            joints: [(joints.0.x, joints.0.y), (joints.1.x, joints.1.y)],
+            pins: &pins,
+            pin_radius: shoe.pin_radius,
+        }
+        .check()
     }
 
     /// The angular pitch of the teeth, rad.

@@ -79,6 +79,10 @@ pub enum ConfigError {
         /// The compiled count.
         declared: u32,
     },
+    /// The sprocket's profile cannot drive the track (its gaps, or the
+    /// shoes' pins in them), with what would.
+    #[error(transparent)]
+    Profile(#[from] crate::contact::sprocket::ProfileProblem),
     /// The loop cannot be closed as asked.
     #[error(transparent)]
     Closure(#[from] ClosureError),

@@ -87,13 +87,13 @@ where
         geometry: Geometry,
         mut config: VehicleConfig,
     ) -> Result<Self, ConfigError> {
-        check::<T, DT, C, DC>(&geometry, &config)?;
+        let description = track.description();
+        check::<T, DT, C, DC>(&geometry, &config, &description)?;
         if let Some((body, angle)) = start.tensioner {
             for arm in config.arms.iter_mut().filter(|a| a.body == body) {
                 arm.spring.preload += arm.spring.stiffness * angle;
             }
         }
-        let description = track.description();
         let pitch = description.pitch()?;
         let soil = match config.soil {
             None => None,
@@ -239,6 +239,7 @@ where
 fn check<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
     geometry: &Geometry,
     config: &VehicleConfig,
+    track: &TreeDescription,
 ) -> Result<(), ConfigError> {
     config.check()?;
     if config.tension_link == 0 || config.tension_link > T::BODIES {
@@ -248,13 +249,16 @@ fn check<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
         });
     }
     config.check_arms(&arms::declared::<C, DC>())?;
-    if let Some(part) = C::PARTS.iter().find(|p| p.kind == PartKind::Sprocket)
-        && geometry.sprocket.teeth != part.teeth
-    {
-        return Err(ConfigError::Teeth {
-            profile: geometry.sprocket.teeth,
-            declared: part.teeth,
-        });
+    if let Some(part) = C::PARTS.iter().find(|p| p.kind == PartKind::Sprocket) {
+        if geometry.sprocket.teeth != part.teeth {
+            return Err(ConfigError::Teeth {
+                profile: geometry.sprocket.teeth,
+                declared: part.teeth,
+            });
+        }
+        if let Some(&joints) = track.joints().as_ref().and_then(|j| j.first()) {
+            geometry.sprocket.check(joints, &geometry.shoe)?;
+        }
     }
     Ok(())
 }
@@ -265,7 +269,7 @@ where
     C: ChassisModel<DC> + Default + Send,
 {
     fn build_from(geometry: Geometry, config: VehicleConfig) -> Result<Self, BuildError> {
-        check::<T, DT, C, DC>(&geometry, &config)?;
+        check::<T, DT, C, DC>(&geometry, &config, &T::default().description())?;
         let start = assembly::assemble(
             &T::default(),
             &C::default(),
