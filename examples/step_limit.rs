@@ -140,7 +140,7 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
     let mut no_friction = config();
     no_friction.wheels.friction.mu = 0.0;
     no_friction.sprocket.friction.mu = 0.0;
-    no_friction.ground.friction.mu = 0.0;
+    no_friction.ground.friction = no_friction.ground.friction.with_mu(0.0);
     run::<V>("no friction at all", no_friction, 1e-3, duration)?;
     let mut less_damping = config();
     less_damping.ground.normal = damped(less_damping.ground.normal, 0.1);

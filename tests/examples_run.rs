@@ -480,19 +480,28 @@ fn m113_drives_in_reverse() {
             "--ramp",
             "0.3",
             "--duration",
-            "1.0",
+            "2.0",
             "--out",
             dir.to_str().unwrap(),
         ],
         &dir,
     );
     assert_success("m113 --speed -2", &out);
-    check_m113_outputs(&dir, 1.0);
+    check_m113_outputs(&dir, 2.0);
     let csv = Csv::read(&dir.join("m113.csv"));
-    let (speed, x) = (csv.column("speed"), csv.column("x"));
-    let (v, moved) = (*speed.last().unwrap(), x.last().unwrap() - x[0]);
-    assert!((v + 2.0).abs() <= 0.6, "final speed {v} m/s for -2");
-    assert!(moved < -0.5, "moved {moved} m in reverse");
+    let (t, speed, x) = (csv.column("t"), csv.column("speed"), csv.column("x"));
+    // The speed controller overshoots the step (to −2.74 m/s at 0.9 s)
+    // and has settled within ±0.07 m/s of the command after 1.5 s.
+    let settled: Vec<f64> = t
+        .iter()
+        .zip(&speed)
+        .filter(|(t, _)| **t >= 1.5)
+        .map(|(_, v)| *v)
+        .collect();
+    let v = settled.iter().sum::<f64>() / settled.len() as f64;
+    let moved = x.last().unwrap() - x[0];
+    assert!((v + 2.0).abs() <= 0.15, "mean speed {v} m/s over the last 0.5 s for -2");
+    assert!(moved < -2.0, "moved {moved} m in reverse");
 }
 
 /// A run that cannot start (a 0.4 m bump under the vehicle at rest, so

@@ -27,7 +27,10 @@ mod support;
 
 use trackgen::Vehicle;
 use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{ContactLaws, Friction, NormalLaw, ShoeGeometry, Terrain};
+use trackgen::contact::{
+    ContactLaws, Friction, GroundFriction, GroundLaws, NormalLaw, ShoeGeometry, Terrain,
+};
+use trackgen::laws::Stiction;
 use trackgen::integrate::Integrator;
 use trackgen::laws::ParameterError;
 use trackgen::nalgebra::Vector2;
@@ -68,13 +71,20 @@ fn m113_declaration_carries_the_m113_figures() {
         exponent: 1.0,
         chi,
     };
-    assert_eq!(
-        declared.ground,
-        ContactLaws {
-            normal: hunt_crossley(2e6, 2.0),
-            friction: Friction { mu: 0.8, slip: 0.1 },
-        }
-    );
+    // The ground's friction is stiction (no `slip` declared), its
+    // tangential spring fitted: the normal law's stiffness at the static
+    // depth, critically damped on an 18.02 kg shoe on its two points.
+    // (The mean shoe mass is summed over the 64 links: rounding, 1e-12.)
+    let GroundLaws {
+        normal,
+        friction: GroundFriction::Stiction(Stiction { mu, stiffness, damping }),
+    } = declared.ground
+    else {
+        panic!("stiction on the ground: {:?}", declared.ground)
+    };
+    assert_eq!((normal, mu, stiffness), (hunt_crossley(2e6, 2.0), 0.8, 2e6));
+    let want = (2.0 * 2e6 * 18.02f64).sqrt();
+    assert!((damping - want).abs() < 1e-12 * want, "{damping} vs {want}");
     let rim = ContactLaws {
         normal: hunt_crossley(1e7, 0.5),
         friction: Friction { mu: 0.4, slip: 0.5 },

@@ -581,7 +581,7 @@ fn tame_running() -> impl Strategy<Value = String> {
         prop::collection::vec((any::<bool>(), tame_number(), tame_number()), 0..3),
         proptest::option::of((tame_number(), tame_number(), tame_number())),
     )
-        .prop_map(|(n, (m, j, r), (offset, pin), laws, drive)| {
+        .prop_map(|(n, (m, j, r), (offset, _pin), laws, drive)| {
             let at: Vec<String> = (0..n).map(|i| format!("({:?}, -0.3)", -0.5 * (i + 1) as f64)).collect();
             let mut entries = vec![
                 format!(
@@ -589,9 +589,13 @@ fn tame_running() -> impl Strategy<Value = String> {
                      arm {{ pivot_offset: (0.2, 0.1), mass: {m}, inertia: {j}, stiffness: {r}, damping: 1.0 }} }}",
                     at.join(", ")
                 ),
+                // The pins by named constants: whether they seat in the
+                // random sprocket's gaps is the runtime's check there (a
+                // pin of known position and size is checked at compile
+                // time, `tests/ui/profile_*.rs`).
                 format!(
                     "shoe {{ ground_points: [(-0.05, -{offset:?}), (0.05, -{offset:?})], inner_offset: {offset:?}, \
-                     pins: [(0.0, 0.0)], pin_radius: {pin} }}"
+                     pins: [(PIN_X, 0.0)], pin_radius: PIN_RADIUS }}"
                 ),
             ];
             let pairs: Vec<String> = laws
