@@ -9,8 +9,10 @@
 //! For each load `F` (N, pulling the chassis back at its centroid) the
 //! vehicle starts at rest, its track speed ramped to 1.5 m/s over the
 //! first second, and runs 6 s; over the last 2 s the mean forward speed
-//! `v` and track speed `v_t = −ω r_p` give the slip `i = 1 − v / v_t`. In
-//! steady motion the drawbar pull equals `F`.
+//! `v` and the track's mean speed `v_t = N p ω / (2π)` (one pitch per
+//! tooth: the recorded `track_speed`) give the true slip
+//! `i = 1 − v / v_t` (`trackgen::vehicle::slip`). In steady motion the
+//! drawbar pull equals `F`.
 //!
 //! Wong's drawbar pull for the same vehicle is the tractive effort of a
 //! track under uniform pressure less the compaction resistance,
@@ -33,7 +35,7 @@ use trackgen::contact::Terrain;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::Drive;
+use trackgen::vehicle::{Drive, slip};
 use trackgen::vehicles::m113::{self, M113};
 
 /// Drawbar pull against slip on soft soil, beside Wong's curve.
@@ -90,7 +92,6 @@ fn tail_mean(results: &Results, column: &str, span: f64) -> f64 {
 fn main() -> Result<(), Box<dyn Error>> {
     let args = Args::parse();
     let soil = args.soil.soil();
-    let r_p = m113::SHOE_PITCH / (2.0 * (std::f64::consts::PI / 10.0).sin());
     // The vehicle at rest: its weight on the soil and its contact length.
     let rest = run(args.soil, M113::speed_drive(|_| 0.0), 0.0, 3.0)?;
     let weight = tail_mean(&rest, "ground_normal", 0.5);
@@ -118,8 +119,8 @@ fn main() -> Result<(), Box<dyn Error>> {
             let drive = M113::speed_drive(|t| TRACK_SPEED * t.clamp(0.0, 1.0));
             let results = run(args.soil, drive, pull, duration)?;
             let speed = tail_mean(&results, "speed", 2.0);
-            let track_speed = -tail_mean(&results, "sprocket_speed", 2.0) * r_p;
-            Ok((pull, 1.0 - speed / track_speed, speed, track_speed))
+            let track_speed = tail_mean(&results, "track_speed", 2.0);
+            Ok((pull, slip(speed, track_speed), speed, track_speed))
         })
         .collect();
     std::fs::create_dir_all(&args.out)?;

@@ -86,7 +86,10 @@ fn park<V: Vehicle>(grade: f64, regularised: bool, watch: f64) -> Result<Parked,
     let along = along_slope(&results, grade);
     let t0 = stop + 1.0;
     let at = |t: f64| {
-        let i = results.times().partition_point(|&s| s < t).min(along.len() - 1);
+        let i = results
+            .times()
+            .partition_point(|&s| s < t)
+            .min(along.len() - 1);
         along[i]
     };
     let s0 = at(t0);
@@ -99,7 +102,11 @@ fn park<V: Vehicle>(grade: f64, regularised: bool, watch: f64) -> Result<Parked,
         .collect();
     Ok(Parked {
         grade,
-        friction: if regularised { "regularised" } else { "stiction" },
+        friction: if regularised {
+            "regularised"
+        } else {
+            "stiction"
+        },
         path,
         moved: at(end) - at(t0 + settle),
         books: results.energy_balance().map_or(f64::NAN, |b| b.residual()),
@@ -113,7 +120,10 @@ fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
         results.column("x").unwrap_or_default(),
         results.column("y").unwrap_or_default(),
     );
-    x.iter().zip(&y).map(|(x, y)| (x + grade * y) / norm).collect()
+    x.iter()
+        .zip(&y)
+        .map(|(x, y)| (x + grade * y) / norm)
+        .collect()
 }
 
 fn plot(runs: &[Parked], path: &std::path::Path, title: &str) -> Result<(), Box<dyn Error>> {
@@ -126,7 +136,9 @@ fn plot(runs: &[Parked], path: &std::path::Path, title: &str) -> Result<(), Box<
     let (lo, hi) = runs
         .iter()
         .flat_map(|r| r.path.iter().map(|p| p.1 * 1e3))
-        .fold((-1.0, 1.0), |(lo, hi), s| (f64::min(lo, s), f64::max(hi, s)));
+        .fold((-1.0, 1.0), |(lo, hi), s| {
+            (f64::min(lo, s), f64::max(hi, s))
+        });
     let mut chart = ChartBuilder::on(&root)
         .caption(title, ("sans-serif", 20))
         .margin(12)
@@ -150,7 +162,11 @@ fn plot(runs: &[Parked], path: &std::path::Path, title: &str) -> Result<(), Box<
                 run.path.iter().map(|&(t, s)| (t, s * 1e3)),
                 style,
             ))?
-            .label(format!("{:.0} % grade, {}", 100.0 * run.grade, run.friction))
+            .label(format!(
+                "{:.0} % grade, {}",
+                100.0 * run.grade,
+                run.friction
+            ))
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color));
     }
     chart
@@ -219,10 +235,10 @@ fn main() -> Result<(), Box<dyn Error>> {
             },
             "--out" => out = args.next().map(PathBuf::from),
             _ => {
-                return Err(
-                    format!("unknown argument {arg:?} (--quick, --vehicle m113|marder, --out DIR)")
-                        .into(),
-                );
+                return Err(format!(
+                    "unknown argument {arg:?} (--quick, --vehicle m113|marder, --out DIR)"
+                )
+                .into());
             }
         }
     }

@@ -15,7 +15,9 @@
 //!   falls as `tol^(-1/3)` (third order); where a stiff mode's stability
 //!   sets it, the count stops falling;
 //! - at the main job's 1e-3, the same vehicle without rim and sprocket
-//!   friction, without any friction, and with every contact's damping
+//!   friction, without any friction, with the ground's friction
+//!   regularised (no stiction states; sliding speed 0.1 m/s, what the
+//!   vehicles declared before stiction), and with every contact's damping
 //!   (Hunt-Crossley's `χ`) a tenth: if a friction slope or a damping rate
 //!   set the step, removing it would lengthen the step;
 //! - and the stiffest eigenvalues of the right-hand side's Jacobian
@@ -26,8 +28,9 @@
 use std::time::Instant;
 
 use trackgen::Vehicle;
-use trackgen::contact::{NormalLaw, Terrain};
+use trackgen::contact::{Friction, GroundFriction, NormalLaw, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::nalgebra::linalg::Schur;
 use trackgen::nalgebra::{DMatrix, DVector};
 use trackgen::simulate::{Output, Simulated, simulate};
 use trackgen::vehicle::{VehicleConfig, build};
@@ -142,6 +145,12 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
     no_friction.sprocket.friction.mu = 0.0;
     no_friction.ground.friction = no_friction.ground.friction.with_mu(0.0);
     run::<V>("no friction at all", no_friction, 1e-3, duration)?;
+    let mut regularised = config();
+    regularised.ground.friction = GroundFriction::Regularised(Friction {
+        mu: regularised.ground.friction.mu(),
+        slip: 0.1,
+    });
+    run::<V>("ground regularised 0.1 m/s", regularised, 1e-3, duration)?;
     let mut less_damping = config();
     less_damping.ground.normal = damped(less_damping.ground.normal, 0.1);
     less_damping.wheels.normal = damped(less_damping.wheels.normal, 0.1);
@@ -175,7 +184,12 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
         system.derivative(t, yj.as_slice(), minus.as_mut_slice())?;
         jacobian.set_column(j, &((&plus - &minus) / (2.0 * h)));
     }
-    let mut eigenvalues: Vec<_> = jacobian.complex_eigenvalues().iter().copied().collect();
+    // The Schur decomposition with an iteration bound: with hundreds of
+    // states (one per ground point with stiction) the unbounded QR
+    // iteration of `complex_eigenvalues` may not return.
+    let schur = Schur::try_new(jacobian.clone(), 1e-12, 100 * n)
+        .ok_or("the Jacobian's Schur decomposition did not converge")?;
+    let mut eigenvalues: Vec<_> = schur.complex_eigenvalues().iter().copied().collect();
     eigenvalues.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
     println!("stiffest eigenvalues of the Jacobian at t = {t:.1} s (1/s):");
     if std::env::var("STEP_LIMIT_DIAGONAL").is_ok() {
@@ -220,14 +234,21 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
 
 /// A name for state `i`: the track's independent coordinates and rates
 /// (the partitioned track integrates all but a dependent pair), the
-/// chassis' coordinates and rates, then the books' three extra states.
+/// chassis' coordinates and rates, the books' three extra states, then
+/// the ground points' stiction deflections (link, point).
 fn state_name<V: Vehicle>(i: usize) -> String {
     let (dt, dc) = (V::TRACK_DOF - 2, V::CHASSIS_DOF);
+    let extra = 2 * (dt + dc);
+    let points = V::geometry().shoe.ground_points.len();
     match i {
         i if i < dt => format!("track z{i}"),
         i if i < 2 * dt => format!("track z{}'", i - dt),
         i if i < 2 * dt + dc => format!("chassis q{}", i - 2 * dt),
-        i if i < 2 * (dt + dc) => format!("chassis q{}'", i - 2 * dt - dc),
-        i => format!("extra {}", i - 2 * (dt + dc)),
+        i if i < extra => format!("chassis q{}'", i - 2 * dt - dc),
+        i if i < extra + 3 => format!("extra {}", i - extra),
+        i => {
+            let k = i - extra - 3;
+            format!("stiction link {} point {}", k / points + 1, k % points + 1)
+        }
     }
 }

@@ -804,5 +804,9 @@ fn profiles_that_cannot_drive_are_config_errors() {
         }
         other => panic!("{other}"),
     }
-    assert!(e.to_string().contains("move `pins` to within 0.0538 m of a joint"), "{e}");
+    assert!(
+        e.to_string()
+            .contains("move `pins` to within 0.0538 m of a joint"),
+        "{e}"
+    );
 }

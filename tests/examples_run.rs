@@ -500,7 +500,10 @@ fn m113_drives_in_reverse() {
         .collect();
     let v = settled.iter().sum::<f64>() / settled.len() as f64;
     let moved = x.last().unwrap() - x[0];
-    assert!((v + 2.0).abs() <= 0.15, "mean speed {v} m/s over the last 0.5 s for -2");
+    assert!(
+        (v + 2.0).abs() <= 0.15,
+        "mean speed {v} m/s over the last 0.5 s for -2"
+    );
     assert!(moved < -2.0, "moved {moved} m in reverse");
 }
 
@@ -1159,7 +1162,7 @@ fn custom_vehicle_runs_balances_its_energy_and_rides_on_its_rollers() {
 }
 
 /// `step_limit --quick`: the step study runs, prints a line per variant
-/// (four at the main job's tolerance) with finite books, and the stiffest
+/// (five at the main job's tolerance) with finite books, and the stiffest
 /// eigenvalues, each with its stability step; a bad argument is refused.
 #[test]
 fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
@@ -1169,7 +1172,7 @@ fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
     assert_success("step_limit --quick", &out);
     let stdout = text(&out.stdout);
     let variants = stdout.lines().filter(|l| l.contains(" steps ")).count();
-    assert_eq!(variants, 4, "one line per variant:\n{stdout}");
+    assert_eq!(variants, 5, "one line per variant:\n{stdout}");
     for line in stdout.lines().filter(|l| l.contains("books")) {
         let books: f64 = line
             .split("books")
@@ -1191,26 +1194,47 @@ fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
     assert_rejected("step_limit --slow", &bad, &["--slow"]);
 }
 
-/// `drawbar_pull --quick`: two drawbar loads on dry sand; the CSV has a
-/// row per load, the slip grows with the load and stays in (0, 1), Wong's
-/// pull at each slip is below the soil's Coulomb limit, and the SVG is
-/// drawn; a bad soil is refused with the list of presets.
+/// `drawbar_pull`: eight drawbar loads on dry sand, each held 6 s; the CSV
+/// has a row per load, the slip grows with the load and stays in (0, 1),
+/// and every point that slips 2 % or more (the true slip, against the
+/// track's mean speed) is within 15 % of Wong's curve less the compaction
+/// resistance (measured +0.7, +13.7, +12.9 and −4.1 %: the bound;
+/// below 2 % Wong's curve is steep and a rigid track's uniform pressure is
+/// no longer the simulated track's, see README); the SVG is drawn; a bad
+/// soil is refused with the list of presets.
 #[test]
-fn drawbar_pull_writes_its_curve() {
+fn drawbar_pull_follows_wong_beyond_two_percent_slip() {
     let drawbar = example("drawbar_pull");
     let dir = scratch("drawbar_pull");
-    let out = run(&drawbar, &["--quick", "--out", dir.to_str().unwrap()], &dir);
-    assert_success("drawbar_pull --quick", &out);
+    let out = run(&drawbar, &["--out", dir.to_str().unwrap()], &dir);
+    assert_success("drawbar_pull", &out);
     let csv = Csv::read(&dir.join("drawbar_pull.csv"));
     let (pull, slip, wong) = (
         csv.column("drawbar_pull_n"),
         csv.column("slip"),
         csv.column("wong_n"),
     );
-    assert_eq!(pull.len(), 2);
-    assert!(pull[0] < pull[1] && slip[0] < slip[1], "{pull:?} {slip:?}");
+    assert_eq!(pull.len(), 8);
+    assert!(
+        pull.windows(2).all(|p| p[0] < p[1]) && slip.windows(2).all(|s| s[0] < s[1]),
+        "{pull:?} {slip:?}"
+    );
     assert!(slip.iter().all(|s| (0.0..1.0).contains(s)), "{slip:?}");
-    assert!(wong.iter().all(|w| *w > 0.0 && *w < 31_000.0), "{wong:?}");
+    let beyond = slip.iter().filter(|s| **s >= 0.02).count();
+    assert!(beyond >= 3, "points slipping 2 % or more: {beyond}");
+    for k in 0..pull.len() {
+        if slip[k] >= 0.02 {
+            let error = (pull[k] - wong[k]) / wong[k];
+            assert!(
+                error.abs() < 0.15,
+                "{} N at slip {:.3}: Wong's {} N ({:+.1} %)",
+                pull[k],
+                slip[k],
+                wong[k],
+                100.0 * error
+            );
+        }
+    }
     check_svg(&dir.join("drawbar_pull.svg"));
     let out = run(
         &drawbar,

@@ -138,15 +138,18 @@ fn the_rules_give_the_m113_laws_of_its_own_scale() {
             "{what}: fitted {got}, by hand {hand}"
         );
     };
-    let (NormalLaw::HuntCrossley {
-        stiffness: kg,
-        chi: chig,
-        ..
-    }, NormalLaw::HuntCrossley {
-        stiffness: kr,
-        chi: chir,
-        ..
-    }) = (laws.ground.normal, laws.wheels.normal)
+    let (
+        NormalLaw::HuntCrossley {
+            stiffness: kg,
+            chi: chig,
+            ..
+        },
+        NormalLaw::HuntCrossley {
+            stiffness: kr,
+            chi: chir,
+            ..
+        },
+    ) = (laws.ground.normal, laws.wheels.normal)
     else {
         panic!("Hunt-Crossley laws")
     };

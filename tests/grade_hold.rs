@@ -48,7 +48,10 @@ fn integrator() -> Integrator {
 fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
     let norm = (1.0 + grade * grade).sqrt();
     let (x, y) = (results.column("x").unwrap(), results.column("y").unwrap());
-    x.iter().zip(&y).map(|(x, y)| (x + grade * y) / norm).collect()
+    x.iter()
+        .zip(&y)
+        .map(|(x, y)| (x + grade * y) / norm)
+        .collect()
 }
 
 /// The M113 driven onto a ramp of `grade` and stopped at `stop` s; the
@@ -80,11 +83,20 @@ fn parked_on_grades_below_mu_it_stays_put() {
         let end = STOP + 1.0 + 4.0 + 10.0;
         let (results, _) = park(grade, STOP, end);
         let along = along_slope(&results, grade);
-        let at = |t: f64| along[results.times().partition_point(|&s| s < t).min(along.len() - 1)];
+        let at = |t: f64| {
+            along[results
+                .times()
+                .partition_point(|&s| s < t)
+                .min(along.len() - 1)]
+        };
         let climbed = at(STOP) - at(0.0);
         assert!(climbed > 5.0, "{grade}: climbed {climbed} m");
         let moved = at(end) - at(end - 10.0);
-        eprintln!("{:.0} % grade: the hull moved {:.4} mm in 10 s", grade * 100.0, moved * 1e3);
+        eprintln!(
+            "{:.0} % grade: the hull moved {:.4} mm in 10 s",
+            grade * 100.0,
+            moved * 1e3
+        );
         assert!(
             moved.abs() < 1e-3,
             "{:.0} % grade: the parked hull moved {:.3} mm in 10 s",
@@ -108,7 +120,10 @@ fn above_mu_it_slides_with_its_books_closed() {
         last.values[start..start + n].to_vec()
     };
     let start = Assembled {
-        track: SVector::<f64, { M113::TRACK_DOF }>::from_column_slice(&column("track", M113::TRACK_DOF)),
+        track: SVector::<f64, { M113::TRACK_DOF }>::from_column_slice(&column(
+            "track",
+            M113::TRACK_DOF,
+        )),
         chassis: SVector::<f64, { M113::CHASSIS_DOF }>::from_column_slice(&column(
             "chassis",
             M113::CHASSIS_DOF,

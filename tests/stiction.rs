@@ -31,7 +31,7 @@
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::laws::Stiction;
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::{Output, SimulationError, Simulated, simulate};
+use trackgen::simulate::{Output, Simulated, SimulationError, simulate};
 
 const G: f64 = 9.81;
 
@@ -71,7 +71,9 @@ impl Simulated for Block {
     }
 
     fn columns(&self) -> Vec<String> {
-        ["x", "v", "z", "force", "sliding"].map(String::from).to_vec()
+        ["x", "v", "z", "force", "sliding"]
+            .map(String::from)
+            .to_vec()
     }
 
     fn observe(&mut self, _t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
@@ -149,7 +151,11 @@ fn a_block_slides_on_an_incline_above_mu() {
     }
     assert!(results.column("sliding").unwrap().iter().all(|&s| s == 1.0));
     let force = results.column("force").unwrap();
-    assert!(force.iter().all(|f| (f - 0.8 * 20.0 * G * c).abs() < 1e-9 * f));
+    assert!(
+        force
+            .iter()
+            .all(|f| (f - 0.8 * 20.0 * G * c).abs() < 1e-9 * f)
+    );
 }
 
 #[test]
@@ -183,7 +189,11 @@ fn a_load_ramp_deflects_the_spring_then_breaks_away_at_mu_w() {
         if t[k] < 0.99 * limit && t[k] > 1.0 {
             let c = law().damping;
             let want = (t[k] - c / 1e6) / 1e6;
-            assert!((x[k] - want).abs() < 1e-6 * want, "x {} vs F/k {want}", x[k]);
+            assert!(
+                (x[k] - want).abs() < 1e-6 * want,
+                "x {} vs F/k {want}",
+                x[k]
+            );
         }
     }
 }
@@ -194,7 +204,8 @@ fn the_books_close_along_any_motion() {
     // A forced motion: velocity and normal load varying, the load going
     // to zero (lift-off) and back, crossing stick and slip many times.
     let v = |t: f64| 0.02 * (7.0 * t).sin() + 0.01 * (2.3 * t).cos();
-    let normal = |t: f64| (150.0 * (1.0 + (3.1 * t).sin())).max(0.0) * (0.5 + 0.5 * (0.7 * t).cos());
+    let normal =
+        |t: f64| (150.0 * (1.0 + (3.1 * t).sin())).max(0.0) * (0.5 + 0.5 * (0.7 * t).cos());
     let n = 400_000;
     let dt = 20.0 / n as f64;
     let mut z = 0.0;
@@ -210,8 +221,13 @@ fn the_books_close_along_any_motion() {
         let r2 = step(t + dt / 2.0, z + dt / 2.0 * r1.rate);
         let r3 = step(t + dt, z + dt * r2.rate);
         let power = |r: &trackgen::laws::TangentialResponse, t: f64| -r.force * v(t);
-        work += dt / 6.0 * (power(&r0, t) + 2.0 * power(&r1, t + dt / 2.0) + 2.0 * power(&r2, t + dt / 2.0) + power(&r3, t + dt));
-        dissipated += dt / 6.0 * (r0.dissipation + 2.0 * r1.dissipation + 2.0 * r2.dissipation + r3.dissipation);
+        work += dt / 6.0
+            * (power(&r0, t)
+                + 2.0 * power(&r1, t + dt / 2.0)
+                + 2.0 * power(&r2, t + dt / 2.0)
+                + power(&r3, t + dt));
+        dissipated += dt / 6.0
+            * (r0.dissipation + 2.0 * r1.dissipation + 2.0 * r2.dissipation + r3.dissipation);
         least = least.min(r0.dissipation);
         if r0.sliding {
             sliding.0 += 1;
@@ -221,7 +237,10 @@ fn the_books_close_along_any_motion() {
         z += dt / 6.0 * (r0.rate + 2.0 * r1.rate + 2.0 * r2.rate + r3.rate);
     }
     let stored = 0.5 * law.stiffness * z * z;
-    assert!(sliding.0 > 1000 && sliding.1 > 1000, "stick and slip: {sliding:?}");
+    assert!(
+        sliding.0 > 1000 && sliding.1 > 1000,
+        "stick and slip: {sliding:?}"
+    );
     assert!(least >= 0.0, "dissipation {least}");
     assert!(
         (work - stored - dissipated).abs() < 1e-9 * work.abs(),

@@ -76,9 +76,19 @@ fn ratio<V: Vehicle>(speed: f64, regularised: bool) -> (f64, f64) {
 #[test]
 fn the_hull_moves_at_the_tracks_mean_speed() {
     let runs = [
-        ("M113", 2.0, ratio::<M113>(2.0, false), Some(ratio::<M113>(2.0, true).0)),
+        (
+            "M113",
+            2.0,
+            ratio::<M113>(2.0, false),
+            Some(ratio::<M113>(2.0, true).0),
+        ),
         ("M113", 3.0, ratio::<M113>(3.0, false), None),
-        ("Marder", 2.0, ratio::<Marder>(2.0, false), Some(ratio::<Marder>(2.0, true).0)),
+        (
+            "Marder",
+            2.0,
+            ratio::<Marder>(2.0, false),
+            Some(ratio::<Marder>(2.0, true).0),
+        ),
         ("Marder", 3.0, ratio::<Marder>(3.0, false), None),
     ];
     for (name, speed, (r, track), regularised) in runs {

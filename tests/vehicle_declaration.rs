@@ -30,9 +30,9 @@ use trackgen::contact::sprocket::ToothProfile;
 use trackgen::contact::{
     ContactLaws, Friction, GroundFriction, GroundLaws, NormalLaw, ShoeGeometry, Terrain,
 };
-use trackgen::laws::Stiction;
 use trackgen::integrate::Integrator;
 use trackgen::laws::ParameterError;
+use trackgen::laws::Stiction;
 use trackgen::nalgebra::Vector2;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::vehicle::{BuildError, ConfigError, Drive, VehicleConfig};
@@ -77,7 +77,12 @@ fn m113_declaration_carries_the_m113_figures() {
     // (The mean shoe mass is summed over the 64 links: rounding, 1e-12.)
     let GroundLaws {
         normal,
-        friction: GroundFriction::Stiction(Stiction { mu, stiffness, damping }),
+        friction:
+            GroundFriction::Stiction(Stiction {
+                mu,
+                stiffness,
+                damping,
+            }),
     } = declared.ground
     else {
         panic!("stiction on the ground: {:?}", declared.ground)

@@ -143,7 +143,11 @@ fn driven_run_balances_energy_reaches_speed_and_stays_shallow() {
     let omega = window(&results, "sprocket_speed", 3.0, 8.0);
     let recorded = window(&results, "track_speed", 3.0, 8.0);
     for (w, v) in omega.iter().zip(&recorded) {
-        assert!((-w * rolling - v).abs() <= 1e-12 * v.abs().max(1.0), "{v} vs {}", -w * rolling);
+        assert!(
+            (-w * rolling - v).abs() <= 1e-12 * v.abs().max(1.0),
+            "{v} vs {}",
+            -w * rolling
+        );
     }
     let track_speed = mean(&recorded);
     assert!(

@@ -119,7 +119,10 @@ pub enum ProfileProblem {
 impl fmt::Display for ProfileProblem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
-            ProfileProblem::GapsOverlap { gap_radius, largest } => write!(
+            ProfileProblem::GapsOverlap {
+                gap_radius,
+                largest,
+            } => write!(
                 f,
                 "the sprocket's gaps overlap: `gap_radius` {gap_radius} m is wider than half the space between two gaps' centres; at most {largest:.4} m for this `gap_centre` and `teeth`"
             ),
@@ -157,14 +160,14 @@ impl fmt::Display for ProfileProblem {
                     depth * 1e3
                 )?;
                 if seats_within > 0.0 {
-                    write!(
-                        f,
-                        "; move `pins` to within {seats_within:.4} m of a joint"
-                    )?;
+                    write!(f, "; move `pins` to within {seats_within:.4} m of a joint")?;
                 }
                 match wider_gap {
                     Some(gap) => write!(f, ", or widen `gap_radius` to {gap:.4} m"),
-                    None => write!(f, " (no gap wide enough to take it would leave the teeth between the gaps)"),
+                    None => write!(
+                        f,
+                        " (no gap wide enough to take it would leave the teeth between the gaps)"
+                    ),
                 }
             }
         }
@@ -240,7 +243,10 @@ impl Engagement<'_> {
         // link's rear joint is at angle −π/N and its front at +π/N (the
         // loop runs counter-clockwise round the sprocket, its inside, the
         // links' left, toward the centre).
-        let (a, b) = ((r * half.cos(), -r * half.sin()), (r * half.cos(), r * half.sin()));
+        let (a, b) = (
+            (r * half.cos(), -r * half.sin()),
+            (r * half.cos(), r * half.sin()),
+        );
         let gaps = [
             (d * half.cos(), -d * half.sin()),
             (d * half.cos(), d * half.sin()),
@@ -250,7 +256,10 @@ impl Engagement<'_> {
         let (cx, cy) = ((b.0 - a.0) / span, (b.1 - a.1) / span);
         let to_sprocket = |(px, py): (f64, f64)| {
             // Along and across the link, from ū1.
-            let (along, across) = ((px - x1) * ux + (py - y1) * uy, -(px - x1) * uy + (py - y1) * ux);
+            let (along, across) = (
+                (px - x1) * ux + (py - y1) * uy,
+                -(px - x1) * uy + (py - y1) * ux,
+            );
             (
                 a.0 + along * cx - across * cy,
                 a.1 + along * cy + across * cx,

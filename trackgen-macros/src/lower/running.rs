@@ -171,7 +171,8 @@ impl Cx<'_> {
         };
         let mut fine = true;
         if let Err(problem) = radii.check(teeth) {
-            self.errors.at(profile.gap_span().unwrap_or(teeth_span), problem);
+            self.errors
+                .at(profile.gap_span().unwrap_or(teeth_span), problem);
             fine = false;
         }
         let Some((shoe, spans)) = shoe else {
@@ -222,7 +223,10 @@ impl Cx<'_> {
         let width = self.positive(&fields, "width", false);
         let spans = ShoeSpans {
             pins: fields.map.get("pins").map_or(block.span, |e| e.span()),
-            pin_radius: fields.map.get("pin_radius").map_or(block.span, |e| e.span()),
+            pin_radius: fields
+                .map
+                .get("pin_radius")
+                .map_or(block.span, |e| e.span()),
         };
         Some((
             Shoe {

@@ -136,9 +136,9 @@ impl ContactFit {
         let shoe_mass = track.bodies.iter().map(|b| b.mass).sum::<f64>() / links as f64;
         let points_per_shoe = geometry.shoe.ground_points.len().max(1);
         let pitch = track.pitch().unwrap_or_else(|_| {
-            track
-                .link_spans()
-                .map_or(0.0, |s| s.iter().map(|d| d.norm()).sum::<f64>() / links as f64)
+            track.link_spans().map_or(0.0, |s| {
+                s.iter().map(|d| d.norm()).sum::<f64>() / links as f64
+            })
         });
         // The parts' centres at the design position, in the chassis frame.
         let centres = chassis_centres(chassis);
@@ -155,8 +155,14 @@ impl ContactFit {
             .iter()
             .filter(|&&(_, y, r)| y - r <= lowest + BEARING_BAND)
             .collect();
-        let front = bearing.iter().map(|w| w.0 + w.2).fold(f64::NEG_INFINITY, f64::max);
-        let rear = bearing.iter().map(|w| w.0 - w.2).fold(f64::INFINITY, f64::min);
+        let front = bearing
+            .iter()
+            .map(|w| w.0 + w.2)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let rear = bearing
+            .iter()
+            .map(|w| w.0 - w.2)
+            .fold(f64::INFINITY, f64::min);
         let length = (front - rear).max(pitch);
         ContactFit {
             weight: mass * g,
@@ -182,7 +188,8 @@ impl ContactFit {
     pub fn ground_normal(&self) -> NormalLaw {
         let k = self.ground_load() / GROUND_DEPTH;
         let n = self.points_per_shoe as f64;
-        let chi = 2.0 * GROUND_DAMPING_RATIO * (n * k * self.shoe_mass).sqrt() / (n * k * GROUND_DEPTH);
+        let chi =
+            2.0 * GROUND_DAMPING_RATIO * (n * k * self.shoe_mass).sqrt() / (n * k * GROUND_DEPTH);
         NormalLaw::HuntCrossley {
             stiffness: k,
             exponent: 1.0,
@@ -220,8 +227,9 @@ impl ContactFit {
         };
         let k = stiffness.unwrap_or(secant);
         let n = self.points_per_shoe as f64;
-        let c = damping
-            .unwrap_or_else(|| 2.0 * TANGENTIAL_DAMPING_RATIO * (n * k * self.shoe_mass).sqrt() / n);
+        let c = damping.unwrap_or_else(|| {
+            2.0 * TANGENTIAL_DAMPING_RATIO * (n * k * self.shoe_mass).sqrt() / n
+        });
         Stiction {
             mu,
             stiffness: k,

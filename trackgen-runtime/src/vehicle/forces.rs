@@ -54,6 +54,24 @@ impl Books {
     }
 }
 
+/// The unit (m) in which a vehicle integrates its ground points' stiction
+/// deflections: the deflection at which a point under its static load
+/// (`fit`'s) slides, `μ F / k`. A deflection of a tenth of a millimetre
+/// holds hundreds of newtons; in metres, against an absolute tolerance
+/// made for positions (1e-3 m), it would not be controlled at all (the
+/// books at Bogacki-Shampine 1e-2 were off by more than the work). In this
+/// unit its error is controlled as a fraction of the force it holds. 1 for
+/// regularised friction (no states) and on soft soil (the shear
+/// displacement, of the order of the soil's `K`, is integrated in m).
+pub(super) fn stiction_scale(friction: &GroundFriction, ground_load: f64) -> f64 {
+    match friction {
+        GroundFriction::Stiction(s) if s.stiffness > 0.0 => {
+            (s.mu.max(0.1) * ground_load / s.stiffness).max(f64::MIN_POSITIVE)
+        }
+        _ => 1.0,
+    }
+}
+
 /// Stage 2, detection: every contact of the links (their states in
 /// `work`) with the ground and with each part, into `work.contacts`.
 pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
@@ -101,7 +119,8 @@ impl Sprocket {
 
 /// Stage 3, the force elements, into `work`'s loads and books: every
 /// contact's law (rigid ground, or the soil), with the ground points'
-/// tangential states `tangential` (stiction deflections, or the soil's
+/// tangential states `tangential` (stiction deflections in units of
+/// `scale` m, see [`stiction_scale`], or the soil's
 /// shear displacements; one per ground point, link by link), the arms'
 /// springs and dampers, the drawbar and the drive (at controller integral
 /// `integral`).
@@ -110,7 +129,7 @@ pub(super) fn respond<const DC: usize>(
     work: &mut Workspace,
     t: f64,
     config: &VehicleConfig,
-    (soil, points, tangential): (Option<&SoftGround>, usize, &[f64]),
+    (soil, points, tangential, scale): (Option<&SoftGround>, usize, &[f64], f64),
     sprocket: Option<Sprocket>,
     (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
     integral: f64,
@@ -136,10 +155,10 @@ pub(super) fn respond<const DC: usize>(
         let slot = contact.link * points + contact.feature;
         match (contact.other, soil) {
             (None, None) => {
-                let z = tangential.get(slot).copied().unwrap_or(0.0);
+                let z = tangential.get(slot).map_or(0.0, |w| w * scale);
                 let (force, rate) = config.ground.respond(contact, z);
                 if let Some(r) = tangential_rate.get_mut(slot) {
-                    *r = rate;
+                    *r = rate / scale;
                     touched[slot] = true;
                 }
                 force.apply(contact, link_load, None);
@@ -175,10 +194,14 @@ pub(super) fn respond<const DC: usize>(
     }
     // Ground points off the ground: their stiction deflections relax.
     if let (None, GroundFriction::Stiction(stiction)) = (soil, config.ground.friction) {
-        for ((z, rate), touched) in tangential.iter().zip(tangential_rate.iter_mut()).zip(touched) {
+        for ((w, rate), touched) in tangential
+            .iter()
+            .zip(tangential_rate.iter_mut())
+            .zip(touched)
+        {
             if !*touched {
-                let relaxing = stiction.relax(*z);
-                *rate = relaxing.rate;
+                let relaxing = stiction.relax(w * scale);
+                *rate = relaxing.rate / scale;
                 books.potential += relaxing.potential;
                 books.dissipation += relaxing.dissipation;
             }
@@ -192,10 +215,12 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += config.drawbar_pull * qdc[0];
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
-        let (torque, rate) =
-            config
-                .drive
-                .checked_torque(t, sprocket.omega(qdc), sprocket.rolling_radius, integral)?;
+        let (torque, rate) = config.drive.checked_torque(
+            t,
+            sprocket.omega(qdc),
+            sprocket.rolling_radius,
+            integral,
+        )?;
         chassis_loads[sprocket.body].moment += torque;
         chassis_loads[0].moment -= torque;
         books.torque = torque;

@@ -7,7 +7,7 @@ use nalgebra::{DVector, SVector, Vector2};
 use super::forces::{self, Sprocket};
 use super::record::{VehicleRecord, sprocket_spans};
 use super::workspace::Workspace;
-use super::{BuildError, ConfigError, Geometry, VehicleConfig, VehicleDynamics, arms};
+use super::{BuildError, ConfigError, ContactFit, Geometry, VehicleConfig, VehicleDynamics, arms};
 use crate::assembly::{self, Assembled};
 use crate::closure::Switch;
 use crate::contact::BodyState;
@@ -44,6 +44,8 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     soil: Option<SoftGround>,
     /// The drive's sprocket, if the chassis has one.
     sprocket: Option<Sprocket>,
+    /// The unit of the stiction states, m ([`forces::stiction_scale`]).
+    stiction_scale: f64,
     /// `ū2` of every link: the joint to the next.
     forward_joints: Vec<Vector2<f64>>,
     /// What an evaluation works in, allocated once.
@@ -119,6 +121,13 @@ where
                 pitch_radius: pitch_radius(part.teeth, pitch),
                 rolling_radius: rolling_radius(part.teeth, pitch),
             });
+        let chassis_description = chassis.description();
+        let fit = ContactFit::of(&description, &chassis_description, C::PARTS, &geometry);
+        let stiction_scale = if soil.is_some() {
+            1.0
+        } else {
+            forces::stiction_scale(&config.ground.friction, fit.ground_load())
+        };
         let forward_joints = description
             .joints()
             .map(|joints| joints.into_iter().map(|(_, u2)| u2).collect())
@@ -140,6 +149,7 @@ where
             geometry,
             soil,
             sprocket,
+            stiction_scale,
             forward_joints,
             work: Workspace::new(T::BODIES, C::BODIES, tangential_states),
             y0,
@@ -193,7 +203,7 @@ where
             &mut self.work,
             t,
             &self.config,
-            (self.soil.as_ref(), points, tangential),
+            (self.soil.as_ref(), points, tangential, self.stiction_scale),
             self.sprocket,
             (&qc, &qdc),
             integral,
