@@ -30,7 +30,6 @@ use std::time::Instant;
 use trackgen::Vehicle;
 use trackgen::contact::{Friction, GroundFriction, NormalLaw, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::nalgebra::linalg::Schur;
 use trackgen::nalgebra::{DMatrix, DVector};
 use trackgen::simulate::{Output, Simulated, simulate};
 use trackgen::vehicle::{VehicleConfig, build};
@@ -184,12 +183,23 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
         system.derivative(t, yj.as_slice(), minus.as_mut_slice())?;
         jacobian.set_column(j, &((&plus - &minus) / (2.0 * h)));
     }
-    // The Schur decomposition with an iteration bound: with hundreds of
-    // states (one per ground point with stiction) the unbounded QR
-    // iteration of `complex_eigenvalues` may not return.
-    let schur = Schur::try_new(jacobian.clone(), 1e-12, 100 * n)
-        .ok_or("the Jacobian's Schur decomposition did not converge")?;
-    let mut eigenvalues: Vec<_> = schur.complex_eigenvalues().iter().copied().collect();
+    // The books' two quadratures (the motor's work, the dissipated work)
+    // feed nothing back: their eigenvalues are zero, but their rows (the
+    // power, of the order of the torque per unit of sprocket speed) would
+    // dominate the modes' vectors. The modes are those of the rest.
+    let books = 2 * (V::TRACK_DOF - 2 + V::CHASSIS_DOF) + 1;
+    let dynamic: Vec<usize> = (0..n).filter(|i| !(books..books + 2).contains(i)).collect();
+    let jacobian = jacobian.select_rows(&dynamic).select_columns(&dynamic);
+    let n = dynamic.len();
+    // faer's eigenvalues (nalgebra's Schur iteration, unshifted, can cycle
+    // on a Jacobian of hundreds of states).
+    let dense = faer::Mat::<f64>::from_fn(n, n, |i, j| jacobian[(i, j)]);
+    let mut eigenvalues: Vec<_> = dense
+        .eigenvalues()
+        .map_err(|e| format!("the Jacobian's eigenvalues: {e:?}"))?
+        .into_iter()
+        .map(|z| trackgen::nalgebra::Complex::new(z.re, z.im))
+        .collect();
     eigenvalues.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
     println!("stiffest eigenvalues of the Jacobian at t = {t:.1} s (1/s):");
     if std::env::var("STEP_LIMIT_DIAGONAL").is_ok() {
@@ -197,9 +207,9 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
             if jacobian[(i, i)].abs() > 1000.0 {
                 println!(
                     "  J[{0},{0}] = {1:.1} ({2})",
-                    i,
+                    dynamic[i],
                     jacobian[(i, i)],
-                    state_name::<V>(i)
+                    state_name::<V>(dynamic[i])
                 );
             }
         }
@@ -216,7 +226,7 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
         let top: Vec<String> = parts
             .iter()
             .take(6)
-            .map(|(i, v)| format!("{} {:+.2}", state_name::<V>(*i), v))
+            .map(|(i, v)| format!("{} {:+.2}", state_name::<V>(dynamic[*i]), v))
             .collect();
         println!("  mode {:.1}: {}", e.re, top.join(", "));
     }
@@ -234,7 +244,8 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
 
 /// A name for state `i`: the track's independent coordinates and rates
 /// (the partitioned track integrates all but a dependent pair), the
-/// chassis' coordinates and rates, the books' three extra states, then
+/// chassis' coordinates and rates, the drive's integral and the books'
+/// two quadratures, then
 /// the ground points' stiction deflections (link, point).
 fn state_name<V: Vehicle>(i: usize) -> String {
     let (dt, dc) = (V::TRACK_DOF - 2, V::CHASSIS_DOF);
@@ -245,7 +256,9 @@ fn state_name<V: Vehicle>(i: usize) -> String {
         i if i < 2 * dt => format!("track z{}'", i - dt),
         i if i < 2 * dt + dc => format!("chassis q{}", i - 2 * dt),
         i if i < extra => format!("chassis q{}'", i - 2 * dt - dc),
-        i if i < extra + 3 => format!("extra {}", i - extra),
+        i if i == extra => "drive integral".to_string(),
+        i if i == extra + 1 => "motor work".to_string(),
+        i if i == extra + 2 => "dissipated work".to_string(),
         i => {
             let k = i - extra - 3;
             format!("stiction link {} point {}", k / points + 1, k % points + 1)

@@ -110,15 +110,22 @@
 //!   centres (the M113's proportions).
 //! * `contact` pairs `ground` (shoe ground points on the terrain),
 //!   `wheels` (inner face on road wheels, idler, rollers) and `sprocket`
-//!   (pins on teeth). A normal law is `stiffness` (N/mⁿ, positive) with
-//!   `chi` (s/m, ≥ 0) and `exponent` (positive, default 1): Hunt-Crossley
-//!   `F = k δⁿ (1 + χ δ̇)`; or `stiffness` (N/m) with `damping` (N s/m,
-//!   ≥ 0): Kelvin-Voigt. Friction: `mu` (≥ 0) and `slip` (m/s, ≥ 0, the
-//!   regularisation speed). Defaults: ground Hunt-Crossley 2e6 N/m, χ
-//!   2 s/m, μ 0.8 over 0.1 m/s; wheels and sprocket 1e7 N/m, χ 0.5 s/m,
-//!   μ 0.4 over 0.5 m/s
-//!   ([`VehicleConfig::GROUND_LAW`](vehicle::VehicleConfig::GROUND_LAW) and
-//!   the other constants say why).
+//!   (pins on teeth), each part of each optional. A normal law is
+//!   `stiffness` (N/mⁿ, positive) with `chi` (s/m, ≥ 0) and `exponent`
+//!   (positive, default 1): Hunt-Crossley `F = k δⁿ (1 + χ δ̇)`; or
+//!   `stiffness` (N/m) with `damping` (N s/m, ≥ 0): Kelvin-Voigt.
+//!   Friction: `mu` (≥ 0). On the ground friction has stiction
+//!   ([`laws::Stiction`], a parked vehicle holds on a grade), with
+//!   optional `tangential_stiffness` (N/m, positive) and
+//!   `tangential_damping` (N s/m, positive); `slip` (m/s, ≥ 0) there asks
+//!   for regularised Coulomb friction instead. Rims and teeth take
+//!   regularised friction, `mu` and `slip`. What is left out is fitted to
+//!   the vehicle declared, by the rules of
+//!   [`vehicle::ContactFit`] (the rules, stated there: the ground's points sink
+//!   1 mm under the weight, a shoe bounces on them with damping ratio
+//!   0.4, its tangential spring the normal law's secant, critically
+//!   damped; rims sink 0.5 mm, damping ratio 0.1; `μ` 0.8 on the ground,
+//!   0.4 on rims and teeth).
 //! * `drive`: the speed controller of `Name::speed_drive`,
 //!   `proportional` (N m s/rad, ≥ 0, default 3000), `integral` (N m/rad,
 //!   ≥ 0, default 6000), `max_torque` (N m, positive, default 2e4).

@@ -10,14 +10,14 @@
 //!
 //! Tolerances, and why:
 //! - **Books**: within a tenth of the bound the main job holds its runs
-//!   to (1e-2, so 1e-3; measured 8.9e-4 fitted, 7.6e-4 hand-tuned, 3.0e-3
+//!   to (1e-2, so 1e-3; measured 8.0e-4 fitted, 7.6e-4 hand-tuned, 2.5e-3
 //!   with the M113's laws).
 //! - **Speed**: the right-hand side evaluations of the fitted run at most
 //!   twice those of the hand-tuned run (the evaluations are what a run
 //!   costs, the same per evaluation for both: so the real-time factor
-//!   within 2×, measured by a count, not a clock; measured 1.06×). The
+//!   within 2×, measured by a count, not a clock; measured 1.02×). The
 //!   M113's laws on the robot take more than twice as many (measured
-//!   4.2×): the check tells laws that do not fit.
+//!   4.7×): the check tells laws that do not fit.
 //! - **The rules on the M113**: its fitted ground stiffness, rim
 //!   stiffness, `χ` and rim regularisation within a factor 2 of the
 //!   figures its declaration gives by hand (2e6 N/m, 1e7 N/m, 2 and

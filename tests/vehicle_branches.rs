@@ -6,16 +6,16 @@
 //! - **Closure methods agree**: the M113 driven from rest for 1.5 s under
 //!   partitioning, multipliers and a run-time penalty spring (k = 1e8 N/m)
 //!   at Dormand-Prince 1e-6, on the M113 as it ships (its tensioner set):
-//!   final speed and position agree within 2e-3 relative (measured 4.4e-4
-//!   and 2.2e-5 for the penalty joint, which opens by a fraction of a
-//!   millimetre, 2e-7 for multipliers: contact makes the runs drift apart
+//!   final speed and position agree within 2e-3 relative (measured 1.3e-4
+//!   and 2.6e-5 for the penalty joint, which opens by a fraction of a
+//!   millimetre, 8e-7 for multipliers: contact makes the runs drift apart
 //!   at the integrator's tolerance); each closes its energy books within
-//!   1e-5 of the work (measured 3.6e-7–6.3e-7; the multipliers' Baumgarte
+//!   1e-5 of the work (measured 2.4e-7–9.5e-7; the multipliers' Baumgarte
 //!   and projection work is not in the books, and measured below that);
 //!   the constrained methods keep `|C|` below 1e-10 m, the penalty gap
 //!   stays below 1 mm. The recorded tension (from each method's joint
 //!   forces): under multipliers within 0.1 % of the largest tension sample
-//!   by sample (measured 0.01 %: the same equations, stabilised); the
+//!   by sample (measured below 0.01 %: the same equations, stabilised); the
 //!   penalty joint's 2 kHz ringing is aliased by the 0.01 s samples, so
 //!   only its mean over the run, within 0.5 % (measured 0.06 %; 0.4 % on
 //!   the slack track the tests once ran).
@@ -23,14 +23,15 @@
 //!   Bogacki-Shampine (1e-3), RK4 (2e-4 s) and ROS2 agrees with
 //!   Dormand-Prince 1e-7 in final speed within 1e-3 relative (Bs23, RK4:
 //!   a global error of the order of Bogacki-Shampine's local tolerance;
-//!   measured 2.4e-5 and 5.4e-7) — the speed is the integral of the net
+//!   measured 7.5e-5 and 4.9e-5, the stiction law's switch between stick
+//!   and slip costing RK4 its order) — the speed is the integral of the net
 //!   force, and each method is stable and consistent at these settings.
 //!   ROS2 (linearly implicit, L-stable, second order) is checked by
 //!   convergence: its speed error must fall by at least 3 when the step
-//!   halves from 1 ms to 0.5 ms (second order: 4; measured 8.1, 9.1e-3 →
-//!   1.1e-3 m/s). It damps the stiff contact modes numerically, which the
-//!   energy books see as unbooked dissipation (326 J at 1 ms): that
-//!   residual must fall too, by at least 1.5 (measured 1.9; it is not yet
+//!   halves from 1 ms to 0.5 ms (second order: 4; measured 5.7, 8.1e-3 →
+//!   1.4e-3 m/s). It damps the stiff contact modes numerically, which the
+//!   energy books see as unbooked dissipation (349 J at 1 ms): that
+//!   residual must fall too, by at least 1.5 (measured 2.0; it is not yet
 //!   in the asymptotic regime at these steps).
 //! - **Torque drive**: the recorded torque is the schedule to rounding
 //!   (1e-12 N m), and the motor's integrated work equals the trapezoid
@@ -38,8 +39,9 @@
 //!   `h² |(τω)″|/12` per unit time, is below 1e-5 of the work here).
 //! - **Torque limit**: the torque never exceeds the limit (exact: it is
 //!   clamped) and stays at it for over 0.2 s after a step command; with
-//!   the integral held while saturated, the track speed overshoots the
-//!   command by less than 15 % (measured 6.8 %; the same step without a
+//!   the integral held while saturated, the track's mean speed (the
+//!   recorded `track_speed`, what the controller aims for) overshoots the
+//!   command by less than 15 % (measured 6.6 %; the same step without a
 //!   limit overshoots 38 %, and a wound-up integral of the error over the
 //!   1 s of saturation, ~3 rad × 6000 N m/rad, would hold the full torque
 //!   long past the target), and its mean over the last second is within
@@ -128,7 +130,7 @@ fn closure_methods_agree_on_the_vehicle() {
     // The tension in link 1's joint from each method's joint forces.
     // Multipliers solve the same equations (their Baumgarte term and
     // projection aside): sample by sample within 0.1 % of the largest
-    // tension (measured 0.01 %). A penalty joint of 1e8 N/m on 18 kg links
+    // tension (measured below 0.01 %). A penalty joint of 1e8 N/m on 18 kg links
     // rings at ~2 kHz, which the 0.01 s samples alias, so only its mean
     // over the run is the same: within 0.5 % (measured 0.06 %).
     let scale = max_abs(tensions[0].iter().copied());
@@ -290,13 +292,8 @@ fn speed_drive_saturates_without_winding_up() {
     );
     let saturated = torque.iter().filter(|t| t.abs() == limit).count();
     assert!(saturated > 20, "saturated at {saturated} samples only");
-    let r_p = support::vehicle::m113_pitch_radius();
-    let track_speed: Vec<f64> = results
-        .column("sprocket_speed")
-        .unwrap()
-        .iter()
-        .map(|w| -w * r_p)
-        .collect();
+    // What the controller aims for: the track's mean speed.
+    let track_speed = results.column("track_speed").unwrap();
     let peak = max_of(track_speed.iter().copied());
     eprintln!(
         "saturated at {saturated} samples; track speed peaks {:.1} % over the command",

@@ -19,11 +19,14 @@
 //!   Bogacki-Shampine 1e-4, the main job's setting for the Marder
 //!   (`EnergyBalance::bound_for_tolerance(1e-4)`; measured ~1e-4); the
 //!   issue asks 2 %. Dissipation never decreases (exactly).
-//! - **Speed**: the track speed `−ω r_p` over the last second within 1 %
-//!   of the 3 m/s command (`r_p = p / (2 sin(π/12))` from the spec's pitch
-//!   and teeth, computed here; measured 0.36 %): a sprocket radius off by
-//!   the 9 % between the pitch radius and the declared 0.3 m tip fails.
-//!   Ground slip `1 − v / (−ω r_p)` between 0 and 3 %.
+//! - **Speed**: the track's mean speed `−ω N p / (2π)` (one pitch per
+//!   tooth, computed here from the recorded sprocket speed and the spec's
+//!   pitch and teeth) is the recorded `track_speed` (to 1e-12 relative)
+//!   and over the last 4 s (two of the chassis' surges on the track)
+//!   within 1 % of the 3 m/s command (measured 0.29 %; a drive aiming
+//!   with the declared 0.3 m tip radius, 9 % off, fails); the slip against
+//!   it, `1 − v / v_t`, within ±0.5 % (measured −0.36 %: the shoes walk a
+//!   little ahead, see `tests/track_speed.rs`).
 //! - **Closure** ≤ 1e-10 m throughout; penetrations: ground ≤ 25 mm, rims
 //!   ≤ 10 mm, teeth ≤ 6 mm (the heavier vehicle presses its shoes about
 //!   2.5 times as deep as the M113's on the same contact laws).
@@ -101,7 +104,7 @@ fn marder_drives_to_speed_with_closed_books() {
     let target = 3.0;
     let results = run(
         Marder::speed_drive(move |t| target * ((t - 1.0) / 2.0).clamp(0.0, 1.0)),
-        7.0,
+        9.0,
     );
     let books = Books::of(&results);
     eprintln!("books {:e} of {} J", books.relative(), books.work);
@@ -117,16 +120,27 @@ fn marder_drives_to_speed_with_closed_books() {
         "dissipated work fell by {:e} J between samples",
         -books.least_dissipation_step
     );
-    let r_p = 0.17 / (2.0 * (std::f64::consts::PI / 12.0).sin());
-    let (t0, t1) = (6.0, 7.0);
-    let track_speed = -mean(&window(&results, "sprocket_speed", t0, t1)) * r_p;
-    eprintln!("track speed {track_speed}");
+    // The track's mean speed: one pitch per tooth, from the recorded
+    // sprocket speed, the spec's pitch and the teeth.
+    let rolling = 12.0 * 0.17 / (2.0 * std::f64::consts::PI);
+    let (t0, t1) = (5.0, 9.0);
+    let omega = window(&results, "sprocket_speed", t0, t1);
+    let recorded = window(&results, "track_speed", t0, t1);
+    for (w, v) in omega.iter().zip(&recorded) {
+        assert!(
+            (-w * rolling - v).abs() <= 1e-12 * v.abs().max(1.0),
+            "{v} vs {}",
+            -w * rolling
+        );
+    }
+    let track_speed = mean(&recorded);
+    let slip = trackgen::vehicle::slip(mean(&window(&results, "speed", t0, t1)), track_speed);
+    eprintln!("track speed {track_speed}, slip {slip:.5}");
     assert!(
         (track_speed - target).abs() < 1e-2 * target,
-        "track speed −ω r_p = {track_speed:.4} m/s for {target} m/s commanded"
+        "track speed −ω N p/(2π) = {track_speed:.4} m/s for {target} m/s commanded"
     );
-    let slip = 1.0 - mean(&window(&results, "speed", t0, t1)) / track_speed;
-    assert!((0.0..0.03).contains(&slip), "ground slip {slip:.4}");
+    assert!(slip.abs() < 5e-3, "slip {slip:.4}");
     for (column, bound) in [
         ("ground_penetration", 0.025),
         ("wheel_penetration", 0.010),

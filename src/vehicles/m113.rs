@@ -96,8 +96,9 @@ crate::model! {
             pin_radius: 0.015,
             width: TRACK_WIDTH,
         },
-        // Hunt-Crossley with exponent 1 throughout (see
-        // `VehicleConfig::GROUND_LAW` and the others for why these values).
+        // Hunt-Crossley with exponent 1 throughout, close to what the
+        // fitted defaults give this vehicle (`vehicle::ContactFit`: 1.3e6,
+        // 2.1, 1.1e7, 0.5, 0.5).
         contact {
             ground { stiffness: 2e6, chi: 2.0, mu: 0.8 },     // stiction: tangential fitted
             wheels { stiffness: 1e7, chi: 0.5, mu: 0.4, slip: 0.5 },

@@ -11,6 +11,9 @@ use super::vehicle::Singles;
 use crate::ir::{ContactPair, NormalLaw, Running, Shoe, Track};
 use crate::num::Num;
 
+/// A link's two joint points `(ū1, ū2)`, m, link frame.
+type LinkJoints = ((f64, f64), (f64, f64));
+
 /// Default speed drive: proportional gain, N m s/rad.
 const DEFAULT_PROPORTIONAL: f64 = 3000.0;
 /// Default speed drive: integral gain, N m/rad.
@@ -147,7 +150,7 @@ impl Cx<'_> {
         };
         // The pitch and joints of the links, when every link's are known
         // and alike (the runtime refuses links of different lengths).
-        let joints: Option<Vec<((f64, f64), (f64, f64))>> = track
+        let joints: Option<Vec<LinkJoints>> = track
             .links
             .iter()
             .map(|l| {
@@ -157,7 +160,7 @@ impl Cx<'_> {
                 ))
             })
             .collect();
-        let span = |(a, b): &((f64, f64), (f64, f64))| (b.0 - a.0).hypot(b.1 - a.1);
+        let span = |(a, b): &LinkJoints| (b.0 - a.0).hypot(b.1 - a.1);
         let first = joints
             .filter(|j| {
                 j.first().is_some_and(|first| {

@@ -1,37 +1,8 @@
 //! Contact laws that fit the vehicle declared: where a declaration leaves
 //! a law out, its stiffness, damping and friction regularisation follow
 //! from the vehicle's own weight, shoes and wheels, by stated rules, so a
-//! 120 kg robot and a 25-tonne carrier each get laws of their own size.
-//!
-//! The rules (the figures from the compiled model at its design position):
-//!
-//! * **Ground, normal**: the weight `W` shared by the ground points under
-//!   the bearing wheels (those whose rims reach within
-//!   [`BEARING_BAND`] of the lowest: their span `L` plus a rim radius
-//!   each way holds `L / p` shoes of `n_p` points) sinks them
-//!   [`GROUND_DEPTH`] (1 mm): `k = W p / (n_p L δ)`. Hunt-Crossley,
-//!   exponent 1, with `χ` giving a shoe bouncing on its points the damping
-//!   ratio [`GROUND_DAMPING_RATIO`] (0.4) at that depth:
-//!   `χ = 2 ζ √(n_p k m_s) / (n_p k δ)`.
-//! * **Ground, friction**: stiction ([`Stiction`]), `μ` = 0.8, the
-//!   tangential stiffness the normal law's at the static depth (`k`, or
-//!   `k δⁿ⁻¹`), its damping critical for a shoe on its points
-//!   ([`TANGENTIAL_DAMPING_RATIO`]): `c = 2 ζ √(n_p k_t m_s) / n_p`.
-//! * **Rims and teeth, normal**: a bearing wheel's share of the weight on
-//!   two contacts sinks each [`RIM_DEPTH`] (0.5 mm):
-//!   `k = W / (2 N δ_r)`; `χ` for the damping ratio [`RIM_DAMPING_RATIO`]
-//!   (0.1) of a shoe on one such contact.
-//! * **Rims and teeth, friction**: `μ` = 0.4, regularised over the slip
-//!   speed at which its slope `μ F/v_s` on a shoe (`F` a contact's static
-//!   load) is [`RIM_FRICTION_RATE`] (250 /s): `v_s = μ F / (m_s λ)`. The
-//!   slope is a shoe's stiffest mode under a loaded rim, and sets an
-//!   explicit integrator's step; its friction only spins the wheels up and
-//!   rubs the flanks.
-//!
-//! For the M113 (55.7 kN, 21 shoes on 3.28 m of ground, 18 kg shoes) the
-//! rules give a ground stiffness of 1.3e6 N/m per point (`χ` 2.1 s/m), rims
-//! 1.1e7 N/m (`χ` 0.53 s/m, `v_s` 0.50 m/s): close to the figures its
-//! declaration gives by hand (2e6, 2, 1e7, 0.5, 0.5).
+//! 120 kg robot and a 25-tonne carrier each get laws of their own size
+//! (the rules: [`ContactFit`]).
 
 use super::Geometry;
 use crate::contact::{ContactLaws, GroundFriction, GroundLaws};
@@ -61,7 +32,37 @@ pub const GROUND_MU: f64 = 0.8;
 /// The default friction coefficient of the track on rims and teeth.
 pub const RIM_MU: f64 = 0.4;
 
-/// The figures of a vehicle the rules read.
+/// The figures of a vehicle its fitted contact laws are made from.
+///
+/// The rules (the figures from the compiled model at its design position):
+///
+/// * **Ground, normal**: the weight `W` shared by the ground points under
+///   the bearing wheels (those whose rims reach within
+///   [`BEARING_BAND`] of the lowest: their span `L` plus a rim radius
+///   each way holds `L / p` shoes of `n_p` points) sinks them
+///   [`GROUND_DEPTH`] (1 mm): `k = W p / (n_p L δ)`. Hunt-Crossley,
+///   exponent 1, with `χ` giving a shoe bouncing on its points the damping
+///   ratio [`GROUND_DAMPING_RATIO`] (0.4) at that depth:
+///   `χ = 2 ζ √(n_p k m_s) / (n_p k δ)`.
+/// * **Ground, friction**: stiction ([`Stiction`]), `μ` = 0.8, the
+///   tangential stiffness the normal law's at the static depth (`k`, or
+///   `k δⁿ⁻¹`), its damping critical for a shoe on its points
+///   ([`TANGENTIAL_DAMPING_RATIO`]): `c = 2 ζ √(n_p k_t m_s) / n_p`.
+/// * **Rims and teeth, normal**: a bearing wheel's share of the weight on
+///   two contacts sinks each [`RIM_DEPTH`] (0.5 mm):
+///   `k = W / (2 N δ_r)`; `χ` for the damping ratio [`RIM_DAMPING_RATIO`]
+///   (0.1) of a shoe on one such contact.
+/// * **Rims and teeth, friction**: `μ` = 0.4, regularised over the slip
+///   speed at which its slope `μ F/v_s` on a shoe (`F` a contact's static
+///   load) is [`RIM_FRICTION_RATE`] (250 /s): `v_s = μ F / (m_s λ)`. The
+///   slope is a shoe's stiffest mode under a loaded rim, and sets an
+///   explicit integrator's step; its friction only spins the wheels up and
+///   rubs the flanks.
+///
+/// For the M113 (55.7 kN, 21 shoes on 3.28 m of ground, 18 kg shoes) the
+/// rules give a ground stiffness of 1.3e6 N/m per point (`χ` 2.1 s/m), rims
+/// 1.1e7 N/m (`χ` 0.53 s/m, `v_s` 0.50 m/s): close to the figures its
+/// declaration gives by hand (2e6, 2, 1e7, 0.5, 0.5).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactFit {
     /// The vehicle's weight, N.
