@@ -31,56 +31,52 @@ use trackgen::vehicle::{ContactFit, DeclaredContact};
 use trackgen::vehicles::m113::M113;
 use trackgen::{Vehicle, VehicleDynamics};
 
-trackgen::model! {
-    /// A 120 kg robot, one side, with the contact laws fitted to it.
-    pub vehicle Robot {
-        chassis { mass: 95.0, inertia: 6.0, centroid: (-0.4, 0.05) },
-        sprocket drive { at: (0.0, 0.0), mass: 1.0, inertia: 0.003, radius: 0.07, teeth: 12 },
-        road_wheel rw[3] { at: [(-0.2, -0.075), (-0.4, -0.075), (-0.6, -0.075)],
-            mass: 1.2, inertia: 0.002, radius: 0.045 },
-        idler rear { at: (-0.81, -0.01), mass: 1.0, inertia: 0.002, radius: 0.065 },
-        track { links: 53, link { mass: 0.2, inertia: 5e-5, u1: (-0.02, 0.0), u2: (0.02, 0.0) } },
-        shoe { ground_points: [(-0.015, -0.008), (0.015, -0.008)], inner_offset: 0.008,
-               pins: [(0.0139, 0.0), (-0.0158, 0.0)], pin_radius: 0.0039 },
-        drive { proportional: 20.0, integral: 40.0, max_torque: 60.0 },
-    }
-
-    /// The same robot with the M113's laws.
-    pub vehicle M113LawRobot {
-        chassis { mass: 95.0, inertia: 6.0, centroid: (-0.4, 0.05) },
-        sprocket drive { at: (0.0, 0.0), mass: 1.0, inertia: 0.003, radius: 0.07, teeth: 12 },
-        road_wheel rw[3] { at: [(-0.2, -0.075), (-0.4, -0.075), (-0.6, -0.075)],
-            mass: 1.2, inertia: 0.002, radius: 0.045 },
-        idler rear { at: (-0.81, -0.01), mass: 1.0, inertia: 0.002, radius: 0.065 },
-        track { links: 53, link { mass: 0.2, inertia: 5e-5, u1: (-0.02, 0.0), u2: (0.02, 0.0) } },
-        shoe { ground_points: [(-0.015, -0.008), (0.015, -0.008)], inner_offset: 0.008,
-               pins: [(0.0139, 0.0), (-0.0158, 0.0)], pin_radius: 0.0039 },
-        contact {
-            ground { stiffness: 2e6, chi: 2.0 },
-            wheels { stiffness: 1e7, chi: 0.5, slip: 0.5 },
-            sprocket { stiffness: 1e7, chi: 0.5, slip: 0.5 },
-        },
-        drive { proportional: 20.0, integral: 40.0, max_torque: 60.0 },
-    }
-
-    /// The same robot with laws chosen by hand for its weight.
-    pub vehicle TunedRobot {
-        chassis { mass: 95.0, inertia: 6.0, centroid: (-0.4, 0.05) },
-        sprocket drive { at: (0.0, 0.0), mass: 1.0, inertia: 0.003, radius: 0.07, teeth: 12 },
-        road_wheel rw[3] { at: [(-0.2, -0.075), (-0.4, -0.075), (-0.6, -0.075)],
-            mass: 1.2, inertia: 0.002, radius: 0.045 },
-        idler rear { at: (-0.81, -0.01), mass: 1.0, inertia: 0.002, radius: 0.065 },
-        track { links: 53, link { mass: 0.2, inertia: 5e-5, u1: (-0.02, 0.0), u2: (0.02, 0.0) } },
-        shoe { ground_points: [(-0.015, -0.008), (0.015, -0.008)], inner_offset: 0.008,
-               pins: [(0.0139, 0.0), (-0.0158, 0.0)], pin_radius: 0.0039 },
-        contact {
-            ground { stiffness: 5e4, chi: 2.0 },
-            wheels { stiffness: 2.5e5, chi: 0.5 },
-            sprocket { stiffness: 2.5e5, chi: 0.5 },
-        },
-        drive { proportional: 20.0, integral: 40.0, max_torque: 60.0 },
-    }
+/// The robot, one side, with whatever `contact` section is given
+/// (the same masses, geometry and drive for all three).
+macro_rules! robot {
+    ($(#[$doc:meta])* $name:ident $(, $contact:tt)?) => {
+        trackgen::model! {
+            $(#[$doc])*
+            pub vehicle $name {
+                chassis { mass: 95.0, inertia: 6.0, centroid: (-0.4, 0.05) },
+                sprocket drive { at: (0.0, 0.0), mass: 1.0, inertia: 0.003, radius: 0.07, teeth: 12 },
+                road_wheel rw[3] { at: [(-0.2, -0.075), (-0.4, -0.075), (-0.6, -0.075)],
+                    mass: 1.2, inertia: 0.002, radius: 0.045 },
+                idler rear { at: (-0.81, -0.01), mass: 1.0, inertia: 0.002, radius: 0.065 },
+                track { links: 53, link { mass: 0.2, inertia: 5e-5, u1: (-0.02, 0.0), u2: (0.02, 0.0) } },
+                shoe { ground_points: [(-0.015, -0.008), (0.015, -0.008)], inner_offset: 0.008,
+                       pins: [(0.0139, 0.0), (-0.0158, 0.0)], pin_radius: 0.0039 },
+                $(contact $contact,)?
+                drive { proportional: 20.0, integral: 40.0, max_torque: 60.0 },
+            }
+        }
+    };
 }
+
+robot!(
+    /// A 120 kg robot, one side, with the contact laws fitted to it.
+    Robot
+);
+
+robot!(
+    /// The same robot with the M113's laws.
+    M113LawRobot,
+    {
+        ground { stiffness: 2e6, chi: 2.0 },
+        wheels { stiffness: 1e7, chi: 0.5, slip: 0.5 },
+        sprocket { stiffness: 1e7, chi: 0.5, slip: 0.5 },
+    }
+);
+
+robot!(
+    /// The same robot with laws chosen by hand for its weight.
+    TunedRobot,
+    {
+        ground { stiffness: 5e4, chi: 2.0 },
+        wheels { stiffness: 2.5e5, chi: 0.5 },
+        sprocket { stiffness: 2.5e5, chi: 0.5 },
+    }
+);
 
 /// Books (residual of the largest term) and evaluations of 3 s from rest
 /// to 0.5 m/s.
