@@ -20,6 +20,7 @@
 
 mod declared;
 mod dense;
+pub mod derivative;
 pub(crate) mod elimination;
 mod generated;
 #[cfg(feature = "oracle")]
@@ -29,6 +30,7 @@ pub use declared::track_dynamics;
 pub use dense::Accelerations;
 #[cfg(feature = "oracle")]
 pub(crate) use dense::{solve_closed, solve_open};
+pub use derivative::{StateJacobian, track_jacobian, tree_jacobian};
 pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
 #[cfg(feature = "oracle")]
 pub use linear_time::LinearTimeSolver;

@@ -1,0 +1,462 @@
+//! The derivative of a track's linear-time forward dynamics (spec §5):
+//! the equations factored once at a state, then solved for as many
+//! directions as asked, each in O(n).
+//!
+//! The unknowns of spec §5 are every link's absolute accelerations
+//! `aᵢ = (θ̈ⁱ, ẍⁱ, ÿⁱ)` and every joint's force `λⱼ`:
+//!
+//! ```text
+//! Nᵢ:  Mᵢ aᵢ − D⁺ᵢᵀ λᵢ + D⁻ᵢᵀ λᵢ₋₁ = Fᵢ
+//! Cⱼ:  D⁺ⱼ aⱼ − D⁻ₖ aₖ = κⱼ,   κⱼ = Aʲ ū2ʲ ωⱼ² − Aᵏ ū1ᵏ ωₖ²   (joint j: link j → k)
+//! ```
+//!
+//! with `D⁺ⱼ = [A_θʲ ū2ʲ | I₂]`, `D⁻ₖ = [A_θᵏ ū1ᵏ | I₂]`. Differentiated
+//! along a direction (`δθ`, `δω` of the links, `δF` of their loads), the
+//! same matrix meets new right sides:
+//!
+//! ```text
+//! Mᵢ δaᵢ − D⁺ᵢᵀ δλᵢ + D⁻ᵢᵀ δλᵢ₋₁ = δFᵢ + δD⁺ᵢᵀ λᵢ − δD⁻ᵢᵀ λᵢ₋₁
+//! D⁺ⱼ δaⱼ − D⁻ₖ δaₖ = δκⱼ − δD⁺ⱼ aⱼ + δD⁻ₖ aₖ
+//! ```
+//!
+//! where `δD` is local to its link (`∂(A_θ ū)/∂θ = −A ū`): the first line
+//! is a load (a moment `δp2·λᵢ − δp1·λᵢ₋₁` besides `δF`), the second a
+//! joint's right side. So the block-tridiagonal system for the `λ`
+//! (cyclic for a constrained loop: bordering) is factored once and each
+//! direction is one forward and one backward sweep, the way Pinocchio's
+//! `computeABADerivatives` reuses the articulated-body factorisation for
+//! its derivatives (Carpentier & Mansard, RSS 2018).
+
+use nalgebra::{Matrix2, Vector2};
+
+use crate::DynamicsError;
+use crate::model::{BodyLoad, ClosingJoint, TreeDescription};
+use crate::planar::Rotation;
+
+/// A link's constants.
+#[derive(Debug, Clone, Copy)]
+struct Link {
+    inv_mass: f64,
+    inv_inertia: f64,
+    mass: f64,
+    u1: Vector2<f64>,
+    u2: Vector2<f64>,
+}
+
+/// A link at the factored state: `A ū1`, `A ū2` (`a1`, `a2`), their
+/// derivatives `A_θ ū1`, `A_θ ū2` (`p1`, `p2`), `ω`, and the load with
+/// gravity (and a cut joint's force) in it.
+#[derive(Debug, Clone, Copy, Default)]
+struct AtState {
+    a1: Vector2<f64>,
+    a2: Vector2<f64>,
+    p1: Vector2<f64>,
+    p2: Vector2<f64>,
+    omega: f64,
+    force: Vector2<f64>,
+    moment: f64,
+}
+
+/// The quarter turn `(x, y) → (−y, x)`: `A_θ ū = ⟂(A ū)`.
+#[inline]
+fn perp(v: Vector2<f64>) -> Vector2<f64> {
+    Vector2::new(-v.y, v.x)
+}
+
+#[inline]
+fn outer(a: Vector2<f64>, b: Vector2<f64>) -> Matrix2<f64> {
+    a * b.transpose()
+}
+
+#[inline]
+fn inverse2(m: &Matrix2<f64>) -> Option<Matrix2<f64>> {
+    let det = m[(0, 0)] * m[(1, 1)] - m[(0, 1)] * m[(1, 0)];
+    (det != 0.0 && det.is_finite())
+        .then(|| Matrix2::new(m[(1, 1)], -m[(0, 1)], -m[(1, 0)], m[(0, 0)]) / det)
+}
+
+/// One direction along which to differentiate: per link, the change of
+/// its angle `δθ` (rad), of its angular velocity `δω` (rad/s) and of the
+/// load on it besides gravity `δF` (N, N m); for a constrained loop the
+/// change of the stabilisation on the closing joint (m/s²), for a cut one
+/// of the force across the cut (N). Absent slices are zero.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ChainDirection<'a> {
+    /// `δθ`, one per link, or empty.
+    pub angles: &'a [f64],
+    /// `δω`, one per link, or empty.
+    pub rates: &'a [f64],
+    /// `δF`, one per link, or empty.
+    pub loads: &'a [BodyLoad],
+    /// The change of the closing joint's stabilisation (constrained) or
+    /// cut force (cut).
+    pub closing: Vector2<f64>,
+}
+
+/// A track's linear-time equations factored at a state, for the
+/// derivative of its accelerations along any number of directions
+/// ([`ChainTangent::direction`]), O(n) each.
+#[derive(Debug, Clone)]
+pub struct ChainTangent {
+    links: Vec<Link>,
+    gravity: Vector2<f64>,
+    /// Whether the closing joint is a constraint (else cut).
+    closed: bool,
+    /// The force across a cut closing joint at the state.
+    cut_force: Vector2<f64>,
+    at: Vec<AtState>,
+    /// `λ`-system blocks: each joint's coupling to the previous (for joint
+    /// 0 of a constrained loop, to the closing joint).
+    lower: Vec<Matrix2<f64>>,
+    /// The closing joint's diagonal block.
+    closing_diagonal: Matrix2<f64>,
+    /// Elimination: `lowerⱼ inverseⱼ₋₁` and the reduced diagonals'
+    /// inverses, joints 0 … n−2.
+    factor: Vec<Matrix2<f64>>,
+    inverse: Vec<Matrix2<f64>>,
+    /// Bordering (constrained loop): the tridiagonal part's inverse
+    /// applied to the closing joint's columns, and the Schur complement's
+    /// inverse.
+    border: Vec<Matrix2<f64>>,
+    schur_inverse: Matrix2<f64>,
+    /// The solution at the state: accelerations `(θ̈, ẍ, ÿ)` per link and
+    /// the joint forces.
+    theta_dd: Vec<f64>,
+    linear_dd: Vec<Vector2<f64>>,
+    lambda: Vec<Vector2<f64>>,
+    /// Scratch of a direction.
+    rhs: Vec<Vector2<f64>>,
+    load: Vec<(Vector2<f64>, f64)>,
+}
+
+impl ChainTangent {
+    /// The tangent of the track described by `description` (a chain with
+    /// a loop joint: [`TreeDescription::joints`]). `None` for a tree that
+    /// is not a track.
+    pub fn new(description: &TreeDescription) -> Option<ChainTangent> {
+        let joints = description.joints()?;
+        let n = joints.len();
+        let links = description
+            .bodies
+            .iter()
+            .zip(&joints)
+            .map(|(body, &(u1, u2))| Link {
+                inv_mass: 1.0 / body.mass,
+                inv_inertia: 1.0 / body.inertia,
+                mass: body.mass,
+                u1,
+                u2,
+            })
+            .collect();
+        Some(ChainTangent {
+            links,
+            gravity: description.gravity,
+            closed: false,
+            cut_force: Vector2::zeros(),
+            at: vec![AtState::default(); n],
+            lower: vec![Matrix2::zeros(); n],
+            closing_diagonal: Matrix2::zeros(),
+            factor: vec![Matrix2::zeros(); n],
+            inverse: vec![Matrix2::zeros(); n],
+            border: vec![Matrix2::zeros(); n],
+            schur_inverse: Matrix2::zeros(),
+            theta_dd: vec![0.0; n],
+            linear_dd: vec![Vector2::zeros(); n],
+            lambda: vec![Vector2::zeros(); n],
+            rhs: vec![Vector2::zeros(); n],
+            load: vec![(Vector2::zeros(), 0.0); n],
+        })
+    }
+
+    /// Number of links.
+    pub fn links(&self) -> usize {
+        self.links.len()
+    }
+
+    /// Factors the equations at the state given by every link's
+    /// `(sin θ, cos θ)` (`trig`) and `ω` (`rates`), under `loads` besides
+    /// gravity (one per link, or none) and the closing joint as `closing`
+    /// acts; solves them there (the accelerations and joint forces every
+    /// direction needs). The same accelerations as the generated
+    /// [`linear_time_dynamics`](crate::TrackModel::linear_time_dynamics).
+    ///
+    /// # Panics
+    /// If `trig` or `rates` is not one per link, or `loads` neither one per
+    /// link nor empty (a programming error).
+    // Joint j couples links j and j + 1 (mod n): the loops index neighbours.
+    #[allow(clippy::needless_range_loop)]
+    pub fn factor(
+        &mut self,
+        trig: &[(f64, f64)],
+        rates: &[f64],
+        loads: &[BodyLoad],
+        closing: ClosingJoint,
+    ) -> Result<(), DynamicsError> {
+        let n = self.links.len();
+        assert_eq!(trig.len(), n, "one (sin, cos) per link");
+        assert_eq!(rates.len(), n, "one rate per link");
+        assert!(loads.is_empty() || loads.len() == n, "loads per link");
+        let (closed, stabilisation, cut) = match closing {
+            ClosingJoint::Constrained { stabilisation } => (true, stabilisation, Vector2::zeros()),
+            ClosingJoint::Cut { force } => (false, Vector2::zeros(), force),
+        };
+        if closed && n < 3 {
+            return Err(DynamicsError::WrongLength {
+                what: "links of a closed loop (at least 3)",
+                expected: 3,
+                got: n,
+            });
+        }
+        self.closed = closed;
+        self.cut_force = cut;
+        for (i, (link, at)) in self.links.iter().zip(self.at.iter_mut()).enumerate() {
+            let rotation = Rotation::from_sin_cos(trig[i]);
+            let (a1, a2) = (rotation.apply(link.u1), rotation.apply(link.u2));
+            let load = loads.get(i).copied().unwrap_or(BodyLoad::ZERO);
+            *at = AtState {
+                a1,
+                a2,
+                p1: perp(a1),
+                p2: perp(a2),
+                omega: rates[i],
+                force: self.gravity * link.mass + load.force,
+                moment: load.moment,
+            };
+        }
+        if !closed {
+            let (last, first) = (self.at[n - 1], self.at[0]);
+            self.at[n - 1].force += cut;
+            self.at[n - 1].moment += last.p2.dot(&cut);
+            self.at[0].force -= cut;
+            self.at[0].moment -= first.p1.dot(&cut);
+        }
+        // The blocks, joint j joining link j to link k = j + 1 (the closing
+        // joint, n − 1, link n − 1 to link 0).
+        let identity = Matrix2::identity();
+        let mut diagonal = vec![Matrix2::zeros(); n];
+        for j in 0..n {
+            let k = (j + 1) % n;
+            let (lj, lk) = (&self.links[j], &self.links[k]);
+            let (sj, sk) = (&self.at[j], &self.at[k]);
+            diagonal[j] = outer(sj.p2, sj.p2) * lj.inv_inertia
+                + outer(sk.p1, sk.p1) * lk.inv_inertia
+                + identity * (lj.inv_mass + lk.inv_mass);
+            self.lower[j] = -(outer(sj.p2, sj.p1) * lj.inv_inertia + identity * lj.inv_mass);
+        }
+        self.closing_diagonal = diagonal[n - 1];
+        let m = n - 1;
+        let singular = || DynamicsError::SingularClosure;
+        for j in 0..m {
+            let mut d = diagonal[j];
+            if j > 0 {
+                self.factor[j] = self.lower[j] * self.inverse[j - 1];
+                d -= self.factor[j] * self.lower[j].transpose();
+            }
+            self.inverse[j] = inverse2(&d).ok_or_else(singular)?;
+        }
+        if closed {
+            // The closing joint couples to joint 0 through link 0 and to
+            // joint m − 1 through link n − 1: B's two blocks.
+            let (b0, bm) = (self.lower[0], self.lower[n - 1].transpose());
+            let mut columns = vec![Matrix2::zeros(); m];
+            columns[0] += b0;
+            columns[m - 1] += bm;
+            self.solve_tridiagonal_matrix(&mut columns);
+            let schur = self.closing_diagonal
+                - b0.transpose() * columns[0]
+                - bm.transpose() * columns[m - 1];
+            self.schur_inverse = inverse2(&schur).ok_or_else(singular)?;
+            self.border = columns;
+        }
+        // The solution at the state.
+        let mut lambda = std::mem::take(&mut self.lambda);
+        for j in 0..n {
+            let k = (j + 1) % n;
+            let (sj, sk) = (self.at[j], self.at[k]);
+            lambda[j] = sj.a2 * (sj.omega * sj.omega) - sk.a1 * (sk.omega * sk.omega);
+            self.load[j] = (sj.force, sj.moment);
+        }
+        if closed {
+            lambda[n - 1] -= stabilisation;
+        }
+        self.solve_loaded(&mut lambda);
+        self.lambda = lambda;
+        for i in 0..n {
+            let (theta, linear) = self.accelerations_of(i, &self.lambda, self.load[i]);
+            self.theta_dd[i] = theta;
+            self.linear_dd[i] = linear;
+        }
+        Ok(())
+    }
+
+    /// `q̈_i` at the factored state: `(ẍ¹, ÿ¹, θ̈¹ … θ̈ⁿ)`, into `out`
+    /// (`n + 2` long).
+    pub fn accelerations(&self, out: &mut [f64]) {
+        out[0] = self.linear_dd[0].x;
+        out[1] = self.linear_dd[0].y;
+        out[2..].copy_from_slice(&self.theta_dd);
+    }
+
+    /// The joint forces at the factored state, as
+    /// [`linear_time_dynamics`](crate::TrackModel::linear_time_dynamics)
+    /// gives them (the last the closing joint's; zero when cut).
+    pub fn joint_forces(&self) -> &[Vector2<f64>] {
+        &self.lambda
+    }
+
+    /// The derivative of `q̈_i` along `direction`, into `out` (`n + 2`
+    /// long): `(δẍ¹, δÿ¹, δθ̈¹ … δθ̈ⁿ)`.
+    ///
+    /// # Panics
+    /// If a slice of `direction` is neither empty nor one per link, or
+    /// `out` not `n + 2` long (a programming error).
+    pub fn direction(&mut self, direction: &ChainDirection<'_>, out: &mut [f64]) {
+        let n = self.links.len();
+        assert!(direction.angles.is_empty() || direction.angles.len() == n);
+        assert!(direction.rates.is_empty() || direction.rates.len() == n);
+        assert!(direction.loads.is_empty() || direction.loads.len() == n);
+        assert_eq!(out.len(), n + 2);
+        let angle = |i: usize| direction.angles.get(i).copied().unwrap_or(0.0);
+        let rate = |i: usize| direction.rates.get(i).copied().unwrap_or(0.0);
+        // The loads: `δF`, and the moment of the joint forces on the
+        // turned lever arms, `δp2·λᵢ − δp1·λᵢ₋₁` (`δp = −A ū δθ`).
+        for i in 0..n {
+            let at = &self.at[i];
+            let given = direction.loads.get(i).copied().unwrap_or(BodyLoad::ZERO);
+            let (ahead, behind) = self.neighbours(i, &self.lambda);
+            let dtheta = angle(i);
+            let moment = given.moment + (-at.a2.dot(&ahead) + at.a1.dot(&behind)) * dtheta;
+            self.load[i] = (given.force, moment);
+        }
+        if !self.closed {
+            // The cut force on the turned arms, and its own change.
+            let (f, df) = (self.cut_force, direction.closing);
+            let (last, first) = (self.at[n - 1], self.at[0]);
+            let (dl, d0) = (angle(n - 1), angle(0));
+            self.load[n - 1].0 += df;
+            self.load[n - 1].1 += last.p2.dot(&df) - last.a2.dot(&f) * dl;
+            self.load[0].0 -= df;
+            self.load[0].1 -= first.p1.dot(&df) - first.a1.dot(&f) * d0;
+        }
+        // The joints' right sides: `δκⱼ − δD⁺ⱼ aⱼ + δD⁻ₖ aₖ`.
+        for j in 0..n {
+            let k = (j + 1) % n;
+            let (sj, sk) = (&self.at[j], &self.at[k]);
+            let (tj, tk) = (angle(j), angle(k));
+            let (wj, wk) = (sj.omega, sk.omega);
+            let dkappa = sj.p2 * (wj * wj * tj) + sj.a2 * (2.0 * wj * rate(j))
+                - sk.p1 * (wk * wk * tk)
+                - sk.a1 * (2.0 * wk * rate(k));
+            // δD⁺ⱼ aⱼ = δp2ⱼ θ̈ⱼ = −a2ⱼ θ̈ⱼ δθⱼ.
+            self.rhs[j] =
+                dkappa + sj.a2 * (self.theta_dd[j] * tj) - sk.a1 * (self.theta_dd[k] * tk);
+        }
+        if self.closed {
+            self.rhs[n - 1] -= direction.closing;
+        }
+        let mut dlambda = std::mem::take(&mut self.rhs);
+        self.solve_loaded(&mut dlambda);
+        let (theta0, linear0) = self.accelerations_of(0, &dlambda, self.load[0]);
+        out[0] = linear0.x;
+        out[1] = linear0.y;
+        out[2] = theta0;
+        for i in 1..n {
+            out[2 + i] = self.accelerations_of(i, &dlambda, self.load[i]).0;
+        }
+        self.rhs = dlambda;
+    }
+
+    /// The joint forces on either side of link `i`: the one ahead (its
+    /// joint to the next link) and behind, zero where a cut chain has
+    /// none.
+    #[inline]
+    fn neighbours(&self, i: usize, lambda: &[Vector2<f64>]) -> (Vector2<f64>, Vector2<f64>) {
+        let n = self.links.len();
+        let ahead = if i + 1 < n || self.closed {
+            lambda[i]
+        } else {
+            Vector2::zeros()
+        };
+        let behind = if i > 0 {
+            lambda[i - 1]
+        } else if self.closed {
+            lambda[n - 1]
+        } else {
+            Vector2::zeros()
+        };
+        (ahead, behind)
+    }
+
+    /// Link `i`'s `(θ̈, (ẍ, ÿ))` under joint forces `lambda` and load
+    /// `(force, moment)`: `Wᵢ (Fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁)`.
+    #[inline]
+    fn accelerations_of(
+        &self,
+        i: usize,
+        lambda: &[Vector2<f64>],
+        (force, moment): (Vector2<f64>, f64),
+    ) -> (f64, Vector2<f64>) {
+        let (link, at) = (&self.links[i], &self.at[i]);
+        let (ahead, behind) = self.neighbours(i, lambda);
+        (
+            (moment + at.p2.dot(&ahead) - at.p1.dot(&behind)) * link.inv_inertia,
+            (force + ahead - behind) * link.inv_mass,
+        )
+    }
+
+    /// Solves the `λ` system for joint right sides in `rhs` (replaced by
+    /// `λ`) once the loads in `self.load` are folded in:
+    /// `rhsⱼ − D⁺ⱼ Wⱼ Fⱼ + D⁻ₖ Wₖ Fₖ`.
+    fn solve_loaded(&self, rhs: &mut [Vector2<f64>]) {
+        let n = self.links.len();
+        for (j, r) in rhs.iter_mut().enumerate() {
+            let k = (j + 1) % n;
+            if j + 1 == n && !self.closed {
+                break;
+            }
+            let (lj, lk) = (&self.links[j], &self.links[k]);
+            let (fj, tj) = self.load[j];
+            let (fk, tk) = self.load[k];
+            *r += -(self.at[j].p2 * (tj * lj.inv_inertia) + fj * lj.inv_mass)
+                + (self.at[k].p1 * (tk * lk.inv_inertia) + fk * lk.inv_mass);
+        }
+        let m = n - 1;
+        if m > 0 {
+            for j in 1..m {
+                let previous = rhs[j - 1];
+                rhs[j] -= self.factor[j] * previous;
+            }
+            rhs[m - 1] = self.inverse[m - 1] * rhs[m - 1];
+            for j in (0..m - 1).rev() {
+                let next = rhs[j + 1];
+                rhs[j] = self.inverse[j] * (rhs[j] - self.lower[j + 1].transpose() * next);
+            }
+        }
+        if self.closed {
+            let (b0, bm) = (self.lower[0], self.lower[n - 1].transpose());
+            let s = rhs[n - 1] - b0.transpose() * rhs[0] - bm.transpose() * rhs[m - 1];
+            let y = self.schur_inverse * s;
+            for (x, z) in rhs[..m].iter_mut().zip(&self.border) {
+                *x -= z * y;
+            }
+            rhs[n - 1] = y;
+        } else {
+            rhs[n - 1] = Vector2::zeros();
+        }
+    }
+
+    /// The tridiagonal part's inverse applied to two columns per joint
+    /// (the bordering columns), in place.
+    fn solve_tridiagonal_matrix(&self, columns: &mut [Matrix2<f64>]) {
+        let m = columns.len();
+        for j in 1..m {
+            let previous = columns[j - 1];
+            columns[j] -= self.factor[j] * previous;
+        }
+        columns[m - 1] = self.inverse[m - 1] * columns[m - 1];
+        for j in (0..m - 1).rev() {
+            let next = columns[j + 1];
+            columns[j] = self.inverse[j] * (columns[j] - self.lower[j + 1].transpose() * next);
+        }
+    }
+}
