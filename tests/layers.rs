@@ -26,6 +26,7 @@ const LAYERS: &[&[&str]] = &[
     &["assembly"],
     &["vehicle"],
     &["simulate"],
+    &["analysis"],
 ];
 
 /// Items the crate root re-exports, and the module each comes from.

@@ -36,6 +36,7 @@
 
 #![warn(missing_docs)]
 
+pub mod analysis;
 pub mod assembly;
 pub mod closure;
 pub mod contact;

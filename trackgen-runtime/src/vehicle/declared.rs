@@ -2,12 +2,13 @@
 //! motion whatever its coordinate counts ([`VehicleDynamics`]), and the one
 //! recipe that builds any of them ([`build`]).
 
-use nalgebra::Vector2;
+use nalgebra::{DVector, Vector2};
 
-use super::{BuildError, Drive, VehicleConfig};
+use super::{BuildError, Drive, StateLayout, VehicleConfig};
 use crate::contact::soft_ground::Rut;
 use crate::contact::sprocket::ToothProfile;
 use crate::contact::{ShoeGeometry, Terrain};
+use crate::error::SimulationError;
 use crate::model::{ChassisPart, TreeDescription};
 use crate::system::Simulated;
 
@@ -118,6 +119,29 @@ pub trait VehicleDynamics: Simulated + Send + Sized {
     /// The soft soil's memory, if the vehicle drives on soil: the rut it
     /// has left so far.
     fn rut(&self) -> Option<&Rut>;
+
+    /// The arms' torsion springs and dampers it runs with (its
+    /// configuration's [`arms`](VehicleConfig::arms)), to change between
+    /// runs without rebuilding, or for a
+    /// [sensitivity](crate::analysis::equilibrium_sensitivity).
+    fn arms_mut(&mut self) -> &mut [crate::model::ArmSpring];
+
+    /// Where each quantity sits in the state.
+    fn layout(&self) -> StateLayout;
+
+    /// The full coordinates at the state `y`: the track's `q_i` (its loop
+    /// closure recovered under partitioning) and the chassis' `q_i`.
+    fn coordinates(
+        &mut self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(DVector<f64>, DVector<f64>), SimulationError>;
+
+    /// Starts the vehicle from `y` (an [equilibrium](crate::analysis::equilibrium),
+    /// say) instead of the assembled state: [`SimulationError::StateLength`]
+    /// for a state of the wrong length, [`SimulationError::NonFinite`] for
+    /// one that is not finite.
+    fn set_start(&mut self, y: &[f64]) -> Result<(), SimulationError>;
 
     /// The parts pinned to the chassis, as declared.
     fn parts() -> &'static [ChassisPart];

@@ -19,6 +19,7 @@ mod drive;
 mod error;
 mod fitted;
 mod forces;
+mod layout;
 mod record;
 mod system;
 mod workspace;
@@ -32,6 +33,7 @@ pub use fitted::{
     GROUND_DEPTH, GROUND_MU, RIM_DAMPING_RATIO, RIM_DEPTH, RIM_FRICTION_RATE, RIM_MU,
     TANGENTIAL_DAMPING_RATIO,
 };
+pub use layout::StateLayout;
 pub use record::VehicleRecord;
 pub use system::VehicleSystem;
 

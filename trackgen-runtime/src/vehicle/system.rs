@@ -7,7 +7,10 @@ use nalgebra::{DVector, SVector, Vector2};
 use super::forces::{self, Sprocket};
 use super::record::{VehicleRecord, sprocket_spans};
 use super::workspace::Workspace;
-use super::{BuildError, ConfigError, ContactFit, Geometry, VehicleConfig, VehicleDynamics, arms};
+use super::{
+    BuildError, ConfigError, ContactFit, Geometry, StateLayout, VehicleConfig, VehicleDynamics,
+    arms,
+};
 use crate::assembly::{self, Assembled};
 use crate::closure::Switch;
 use crate::contact::BodyState;
@@ -316,6 +319,72 @@ where
 
     fn rut(&self) -> Option<&Rut> {
         self.soil.as_ref().map(|s| &s.rut)
+    }
+
+    fn arms_mut(&mut self) -> &mut [crate::model::ArmSpring] {
+        &mut self.config.arms
+    }
+
+    fn layout(&self) -> StateLayout {
+        let track_coordinates: Vec<usize> = match self.track().dependent_pair() {
+            Some(pair) => (0..DT)
+                .filter(|&c| c < 2 || !pair.contains(&(c - 1)))
+                .collect(),
+            None => (0..DT).collect(),
+        };
+        let nt = track_coordinates.len();
+        let chassis = 2 * nt;
+        let integral = chassis + 2 * DC;
+        StateLayout {
+            track: 0..nt,
+            track_coordinates,
+            track_rates: nt..2 * nt,
+            chassis: chassis..chassis + DC,
+            chassis_rates: chassis + DC..integral,
+            integral,
+            books: [integral + 1, integral + 2],
+            tangential: integral + EXTRA_STATES..self.y0.len(),
+            sprocket: self.sprocket.map(|s| s.body),
+        }
+    }
+
+    fn coordinates(
+        &mut self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(DVector<f64>, DVector<f64>), SimulationError> {
+        if y.len() != self.y0.len() {
+            return Err(SimulationError::StateLength {
+                t,
+                got: y.len(),
+                expected: self.y0.len(),
+            });
+        }
+        let (yt, yc) = self.bodies.split(&y[..self.bodies.dimension()]);
+        let (qt, _) = self.bodies.parts_mut().0.coordinates(t, yt)?;
+        let (qc, _) = TreeSystem::<C, DC>::split(yc);
+        Ok((
+            DVector::from_column_slice(qt.as_slice()),
+            DVector::from_column_slice(qc.as_slice()),
+        ))
+    }
+
+    fn set_start(&mut self, y: &[f64]) -> Result<(), SimulationError> {
+        if y.len() != self.y0.len() {
+            return Err(SimulationError::StateLength {
+                t: 0.0,
+                got: y.len(),
+                expected: self.y0.len(),
+            });
+        }
+        if y.iter().any(|v| !v.is_finite()) {
+            return Err(SimulationError::NonFinite {
+                t: 0.0,
+                what: "the start state",
+            });
+        }
+        self.y0.copy_from_slice(y);
+        Ok(())
     }
 
     fn parts() -> &'static [ChassisPart] {

@@ -1,0 +1,226 @@
+//! The vehicle at rest (`trackgen::analysis::equilibrium`) and how its
+//! rest changes with a spring rate (`equilibrium_sensitivity`), checked
+//! against what the forward simulation does and against finite
+//! differences of equilibria.
+
+mod support;
+
+use trackgen::analysis::{
+    AnalysisError, Equilibrium, EquilibriumOptions, equilibrium, equilibrium_sensitivity,
+};
+use trackgen::contact::Terrain;
+use trackgen::contact::{Friction, GroundFriction};
+use trackgen::integrate::Integrator;
+use trackgen::integrate::OdeSystem;
+use trackgen::simulate::Simulated;
+use trackgen::simulate::{Output, simulate};
+use trackgen::vehicle::{Drive, build};
+use trackgen::vehicles::m113::M113;
+use trackgen::vehicles::marder::Marder;
+use trackgen::{Vehicle, VehicleDynamics};
+
+const FLAT: Terrain = Terrain::Flat { height: 0.0 };
+
+fn at_rest<V: Vehicle>() -> (V::System, Equilibrium) {
+    let mut system = V::system(FLAT, V::speed_drive(|_| 0.0)).expect("builds");
+    let rest = equilibrium(&mut system, &EquilibriumOptions::default()).expect("rests");
+    (system, rest)
+}
+
+/// At rest the ground carries the whole weight: the equilibrium's
+/// equations are the accelerations, and only gravity and the ground act
+/// on the vehicle from outside, so their balance is a check the Newton
+/// iteration never looks at. Its residual (10⁻⁸ m/s² on a 5.6e4 N
+/// vehicle of 5700 kg: 6e-8 N) bounds the mismatch: 10⁻⁹ relative.
+/// Then the vehicle is left there for 2 s: started from its equilibrium
+/// it does not move (the hull within 1 µm: the residual acceleration
+/// alone moves it ½ · 10⁻⁸ · 2² = 2·10⁻⁸ m, and the integrator's error at
+/// rest is nil).
+fn stands_still<V: Vehicle>() {
+    let (mut system, rest) = at_rest::<V>();
+    println!(
+        "{}: {} iterations, residual {:.1e}, ground {:.3} N, weight {:.3} N, height {:.6} m, pitch {:.6} rad, holding torque {:.2} N m",
+        V::NAME,
+        rest.iterations,
+        rest.residual,
+        rest.ground_force,
+        rest.weight,
+        rest.height,
+        rest.pitch,
+        rest.holding_torque
+    );
+    assert!(rest.residual < 1e-7, "residual {:e}", rest.residual);
+    let relative = (rest.ground_force - rest.weight).abs() / rest.weight;
+    assert!(
+        relative < 1e-9,
+        "ground force off the weight by {relative:e}"
+    );
+    system.set_start(rest.state.as_slice()).unwrap();
+    let results = simulate(
+        &mut system,
+        Integrator::Bs23 {
+            rtol: 1e-4,
+            atol: 1e-4,
+            max_step: 0.01,
+        },
+        0.0,
+        2.0,
+        Output::Every(0.1),
+    )
+    .expect("runs");
+    let moved = |column: &str| {
+        let values = results.column(column).unwrap();
+        values
+            .iter()
+            .map(|v| (v - values[0]).abs())
+            .fold(0.0, f64::max)
+    };
+    println!(
+        "  from rest over 2 s: hull moved {:.2e} m, pitched {:.2e} rad",
+        moved("y").max(moved("x")),
+        moved("pitch")
+    );
+    assert!(moved("y") < 1e-6 && moved("x") < 1e-6, "the hull moved");
+    assert!(moved("pitch") < 1e-6, "the hull pitched");
+}
+
+#[test]
+fn m113_stands_still_at_its_equilibrium() {
+    stands_still::<M113>();
+}
+
+#[test]
+fn marder_stands_still_at_its_equilibrium() {
+    stands_still::<Marder>();
+}
+
+/// A long settling run ends at the equilibrium. Ground friction
+/// regularised: with stiction the settled vehicle keeps whatever
+/// tangential loads it caught while settling (rest is then a family of
+/// states), while the equilibrium holds none; regularised friction lets
+/// those loads creep away, so the run's end is the equilibrium's state.
+/// The run: Dormand-Prince at 10⁻⁹, the drive holding, 40 s. Not 8: the
+/// hull's modes die within seconds (pitch 1.35 Hz at ζ 0.37), but the
+/// upper span rings as a string with almost nothing to damp it (3.1 Hz
+/// at ζ 0.003, `modes`): after 8 s its links still swing at 0.8 rad/s and
+/// the hull sits 0.2 mm and 1.3·10⁻⁴ rad off its rest; after 24 s,
+/// 3·10⁻⁶ m and 9·10⁻⁶ rad; after 40 s it is inside the bounds.
+/// The equilibrium is found from the run's end, its track phase (the
+/// sprocket's angle) kept: the rest of a track on its wheels depends on
+/// where the shoes sit under them. Bounds: 0.1 mm and 10⁻⁵ rad.
+#[test]
+fn settling_run_ends_at_the_equilibrium() {
+    let mut config = M113::config(FLAT, M113::speed_drive(|_| 0.0));
+    config.ground.friction = GroundFriction::Regularised(Friction {
+        mu: config.ground.friction.mu(),
+        slip: 0.1,
+    });
+    let mut system = build::<M113>(config).unwrap();
+    let duration = 40.0;
+    let mut stepper = Integrator::dopri5(1e-9).stepper(system.dimension());
+    let (mut t, mut settled) = (0.0, system.initial_state());
+    while t < duration {
+        stepper
+            .step(&mut system, &mut t, &mut settled, duration)
+            .unwrap();
+        if system
+            .after_step(t, settled.as_mut_slice(), &mut |_| {})
+            .unwrap()
+        {
+            stepper.restart();
+        }
+    }
+    let mut row = Vec::new();
+    system.observe(t, settled.as_slice(), &mut row).unwrap();
+    let column = |name: &str| row[system.columns().iter().position(|c| c == name).unwrap()];
+    let (height, pitch) = (column("y"), column("pitch"));
+    let options = EquilibriumOptions {
+        t: duration,
+        start: Some(settled.clone()),
+        relax: 0.0,
+        ..EquilibriumOptions::default()
+    };
+    let rest = equilibrium(&mut system, &options).unwrap();
+    let layout = system.layout();
+    let fastest = layout.rates().map(|i| settled[i].abs()).fold(0.0, f64::max);
+    println!(
+        "settled (fastest rate left {fastest:.1e}): height {height:.7} m, pitch {pitch:.8} rad; equilibrium {:.7} m, {:.8} rad ({} iterations): {:.2e} m, {:.2e} rad apart",
+        rest.height,
+        rest.pitch,
+        rest.iterations,
+        (height - rest.height).abs(),
+        (pitch - rest.pitch).abs()
+    );
+    assert!((height - rest.height).abs() < 1e-4);
+    assert!((pitch - rest.pitch).abs() < 1e-5);
+}
+
+/// The equilibrium's sensitivity to each road-wheel arm's torsion rate
+/// (`∂u/∂k = −(∂r/∂u)⁻¹ ∂r/∂k`) against central differences of
+/// equilibria at `k ± 1 %` (each found by Newton's method from the
+/// equilibrium, its phase kept). The differences' truncation error is
+/// `(δk)² ∂³u/∂k³ / 6`, of order 10⁻⁴ of the derivative for a response
+/// as smooth as `1/k`; the equilibria are found to 10⁻⁸ m/s², whose
+/// position error (10⁻⁸ / ω², ω ≥ 8 rad/s) is 10⁻¹⁰ m against changes of
+/// 10⁻⁴ m. Bound: 10⁻³ relative to the largest of the three arms'
+/// derivatives.
+#[test]
+fn sensitivity_to_torsion_rates_matches_finite_differences() {
+    let (mut system, rest) = at_rest::<M113>();
+    let from_rest = EquilibriumOptions {
+        start: Some(rest.state.clone()),
+        relax: 0.0,
+        ..EquilibriumOptions::default()
+    };
+    let mut scale: f64 = 0.0;
+    let mut checked = Vec::new();
+    for arm in [0, 2, 4] {
+        let exact = equilibrium_sensitivity(&mut system, &rest, arm).unwrap();
+        let k = system.arms_mut()[arm].spring.stiffness;
+        let dk = 0.01 * k;
+        let mut at = |stiffness: f64| {
+            system.arms_mut()[arm].spring.stiffness = stiffness;
+            let e = equilibrium(&mut system, &from_rest).unwrap();
+            system.arms_mut()[arm].spring.stiffness = k;
+            e
+        };
+        let (plus, minus) = (at(k + dk), at(k - dk));
+        let height = (plus.height - minus.height) / (2.0 * dk);
+        let pitch = (plus.pitch - minus.pitch) / (2.0 * dk);
+        println!(
+            "arm {arm}: ∂height/∂k {:.6e} (differences {height:.6e}), ∂pitch/∂k {:.6e} ({pitch:.6e}) per N m/rad",
+            exact.height, exact.pitch
+        );
+        scale = scale.max(exact.height.abs()).max(exact.pitch.abs());
+        checked.push((exact.height - height, exact.pitch - pitch));
+    }
+    for (dh, dp) in checked {
+        assert!(dh.abs() < 1e-3 * scale && dp.abs() < 1e-3 * scale);
+    }
+}
+
+/// What cannot rest gets a typed error, not a wrong answer.
+#[test]
+fn what_cannot_rest_is_refused() {
+    let mut free = M113::system(FLAT, Drive::Free).unwrap();
+    assert!(matches!(
+        equilibrium(&mut free, &EquilibriumOptions::default()),
+        Err(AnalysisError::NoHold { .. })
+    ));
+    let mut moving = M113::system(FLAT, M113::speed_drive(|_| 1.0)).unwrap();
+    assert!(matches!(
+        equilibrium(&mut moving, &EquilibriumOptions::default()),
+        Err(AnalysisError::Moving { .. })
+    ));
+    // Pulled by a drawbar with nothing but the ground's normal force to
+    // resist: no equilibrium holds, and the error says how far from one.
+    let mut config = M113::config(FLAT, M113::speed_drive(|_| 0.0));
+    config.drawbar_pull = 5000.0;
+    let mut pulled = build::<M113>(config).unwrap();
+    let error = equilibrium(&mut pulled, &EquilibriumOptions::default()).unwrap_err();
+    println!("pulled: {error}");
+    assert!(
+        matches!(error, AnalysisError::NotConverged { .. }),
+        "{error}"
+    );
+}

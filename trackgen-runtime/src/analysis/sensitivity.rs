@@ -1,0 +1,73 @@
+//! How a vehicle's rest changes with a spring rate: the equilibrium's
+//! derivative by the implicit function theorem.
+
+use nalgebra::DVector;
+
+use super::equilibrium::statics;
+use super::{AnalysisError, Equilibrium, state_jacobian};
+use crate::vehicle::VehicleDynamics;
+
+/// The derivative of an equilibrium with respect to one arm's torsion
+/// rate `k` (N m/rad), the spring's preload held.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ArmSensitivity {
+    /// The arm: its index in [`VehicleConfig::arms`](crate::vehicle::VehicleConfig::arms).
+    pub arm: usize,
+    /// `∂(hull height)/∂k`, m per N m/rad.
+    pub height: f64,
+    /// `∂(hull pitch)/∂k`, rad per N m/rad.
+    pub pitch: f64,
+    /// `∂y/∂k` of the whole state (zero for the coordinates an equilibrium
+    /// holds fixed: the chassis' x, the sprocket's angle), per N m/rad.
+    pub state: DVector<f64>,
+}
+
+/// The sensitivity of `equilibrium` (of `system`) to arm `arm`'s torsion
+/// rate: with `r(u, k) = 0` the equilibrium's equations
+/// ([`equilibrium`](super::equilibrium)), `∂u/∂k = −(∂r/∂u)⁻¹ ∂r/∂k`, both
+/// Jacobians by central differences (`∂r/∂k` with a step of 10⁻⁶ of the
+/// rate). One linear solve, against a Newton iteration per perturbed rate
+/// for finite differences of equilibria.
+pub fn equilibrium_sensitivity<S: VehicleDynamics>(
+    system: &mut S,
+    equilibrium: &Equilibrium,
+    arm: usize,
+) -> Result<ArmSensitivity, AnalysisError> {
+    let arms = system.arms_mut().len();
+    if arm >= arms {
+        return Err(AnalysisError::NoArm { arm, arms });
+    }
+    let layout = system.layout();
+    let sprocket = layout.sprocket_angle().ok_or(AnalysisError::NoSprocket)?;
+    let (unknowns, equations) = statics::<S>(&layout, sprocket);
+    let (t, y) = (equilibrium.t, &equilibrium.state);
+    let jacobian = state_jacobian(system, t, y.as_slice(), &unknowns)?.select_rows(&equations);
+    let k = system.arms_mut()[arm].spring.stiffness;
+    let h = 1e-6 * k.abs().max(1.0);
+    let rates = |system: &mut S, stiffness: f64| -> Result<DVector<f64>, AnalysisError> {
+        system.arms_mut()[arm].spring.stiffness = stiffness;
+        let mut dy = DVector::zeros(y.len());
+        let done = system.derivative(t, y.as_slice(), dy.as_mut_slice());
+        system.arms_mut()[arm].spring.stiffness = k;
+        done?;
+        Ok(DVector::from_iterator(
+            equations.len(),
+            equations.iter().map(|&i| dy[i]),
+        ))
+    };
+    let dr_dk = (rates(system, k + h)? - rates(system, k - h)?) / (2.0 * h);
+    let du = jacobian
+        .lu()
+        .solve(&(-dr_dk))
+        .ok_or(AnalysisError::Singular)?;
+    let mut state = DVector::zeros(y.len());
+    for (c, &i) in unknowns.iter().enumerate() {
+        state[i] = du[c];
+    }
+    Ok(ArmSensitivity {
+        arm,
+        height: state[layout.chassis.start + 1],
+        pitch: state[layout.chassis.start + 2],
+        state,
+    })
+}

@@ -1,0 +1,93 @@
+//! Where each quantity sits in a vehicle's state `y`: what an analysis of
+//! the state (its Jacobian, an equilibrium, the modes) needs to know of it.
+
+use std::ops::Range;
+
+/// The places in a vehicle's state `y` ([`VehicleSystem`](super::VehicleSystem)'s
+/// layout): the track's integrated coordinates and their rates, the
+/// chassis' coordinates and rates, the drive's integral, the books' two
+/// quadratures and the ground points' tangential states.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StateLayout {
+    /// The track's integrated coordinates, indices into `y`; their rates
+    /// follow at [`track_rates`](Self::track_rates).
+    pub track: Range<usize>,
+    /// The `q_i` index (`x¹, y¹, θ¹ … θⁿ`: 0 is `x¹`, `2 + k` link `k + 1`'s
+    /// angle) of each integrated track coordinate: all of them, or under
+    /// partitioning all but the dependent pair.
+    pub track_coordinates: Vec<usize>,
+    /// The track's integrated rates.
+    pub track_rates: Range<usize>,
+    /// The chassis' coordinates `q_i` (`x, y, θ` of the frame, then every
+    /// other body's absolute angle).
+    pub chassis: Range<usize>,
+    /// The chassis' rates.
+    pub chassis_rates: Range<usize>,
+    /// The speed drive's integral, rad.
+    pub integral: usize,
+    /// The books' quadratures: the motor's work and the dissipated work, J.
+    /// They feed nothing back.
+    pub books: [usize; 2],
+    /// The ground points' tangential states (stiction deflections or soil
+    /// shear displacements), link by link; empty with regularised friction.
+    pub tangential: Range<usize>,
+    /// The sprocket's chassis body, if the chassis has one: its coordinate
+    /// is `chassis.start + 2 + body`.
+    pub sprocket: Option<usize>,
+}
+
+impl StateLayout {
+    /// The coordinates of every body, track then chassis: indices into `y`.
+    pub fn positions(&self) -> impl Iterator<Item = usize> + '_ {
+        self.track.clone().chain(self.chassis.clone())
+    }
+
+    /// The rates, in the order of [`positions`](Self::positions).
+    pub fn rates(&self) -> impl Iterator<Item = usize> + '_ {
+        self.track_rates.clone().chain(self.chassis_rates.clone())
+    }
+
+    /// The states with dynamics: all but the books' quadratures (whose
+    /// eigenvalues are zero and whose rows, powers of the order of the
+    /// drive's torque, feed nothing back).
+    pub fn dynamic(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.tangential.end).filter(|i| !self.books.contains(i))
+    }
+
+    /// The index into `y` of the sprocket's angle, if there is a sprocket.
+    pub fn sprocket_angle(&self) -> Option<usize> {
+        self.sprocket.map(|b| self.chassis.start + 2 + b)
+    }
+
+    /// A name for state `i`, for tables: `track θ12`, `track ẏ1`,
+    /// `chassis q3'`, `drive integral`, `stiction link 4 point 2`.
+    pub fn name(&self, i: usize, points: usize) -> String {
+        let track = |k: usize| match self.track_coordinates[k] {
+            0 => "x1".to_string(),
+            1 => "y1".to_string(),
+            c => format!("θ{}", c - 1),
+        };
+        match i {
+            i if self.track.contains(&i) => format!("track {}", track(i - self.track.start)),
+            i if self.track_rates.contains(&i) => {
+                format!("track {}'", track(i - self.track_rates.start))
+            }
+            i if self.chassis.contains(&i) => format!("chassis q{}", i - self.chassis.start),
+            i if self.chassis_rates.contains(&i) => {
+                format!("chassis q{}'", i - self.chassis_rates.start)
+            }
+            i if i == self.integral => "drive integral".to_string(),
+            i if i == self.books[0] => "motor work".to_string(),
+            i if i == self.books[1] => "dissipated work".to_string(),
+            i => {
+                let k = i - self.tangential.start;
+                let points = points.max(1);
+                format!(
+                    "ground point: link {} point {}",
+                    k / points + 1,
+                    k % points + 1
+                )
+            }
+        }
+    }
+}
