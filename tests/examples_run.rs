@@ -402,6 +402,64 @@ fn m113_short_run_writes_its_outputs() {
     check_m113_outputs(&dir, 0.3);
 }
 
+/// `--modes --start equilibrium`: the rest and the table printed, the run
+/// starts there (it stands still until the drive starts: the hull's
+/// height over the settling time moves less than a micrometre), and
+/// `modes.csv` holds modes with finite frequencies, lowest first, the
+/// hull's bounce and pitch among them; `modes.svg` is drawn.
+#[test]
+fn m113_finds_its_rest_and_modes() {
+    let m113 = example("m113");
+    let dir = scratch("m113_modes");
+    let out = run(
+        &m113,
+        &[
+            "--modes",
+            "--start",
+            "equilibrium",
+            "--duration",
+            "0.3",
+            "--settle",
+            "0.2",
+            "--ramp",
+            "0.1",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --modes --start equilibrium", &out);
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("at rest in ") && stdout.contains("hull bounce"),
+        "{stdout}"
+    );
+    let csv = std::fs::read_to_string(dir.join("modes.csv")).expect("modes.csv");
+    let mut lines = csv.lines();
+    assert!(lines.next().unwrap().starts_with("frequency_hz,"), "{csv}");
+    let frequencies: Vec<f64> = lines
+        .map(|l| l.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert!(frequencies.len() > 100, "{} modes", frequencies.len());
+    assert!(frequencies.iter().all(|f| f.is_finite() && *f > 0.0));
+    assert!(frequencies.windows(2).all(|w| w[0] <= w[1]), "lowest first");
+    assert!(csv.contains("hull pitch") && csv.contains("hull bounce"));
+    check_svg(&dir.join("modes.svg"));
+    let main = Csv::read(&dir.join("m113.csv"));
+    let settling: Vec<f64> = main
+        .column("t")
+        .iter()
+        .zip(main.column("y"))
+        .filter(|(t, _)| **t <= 0.2)
+        .map(|(_, y)| y)
+        .collect();
+    let moved = settling
+        .iter()
+        .map(|v| (v - settling[0]).abs())
+        .fold(0.0, f64::max);
+    assert!(moved < 1e-6, "the hull moved {moved} m while held at rest");
+}
+
 #[test]
 fn m113_runs_with_dopri5() {
     let m113 = example("m113");
@@ -1254,6 +1312,27 @@ fn drawbar_pull_follows_wong_beyond_two_percent_slip() {
 /// friction lets it creep down by more than 10 mm (measured 400 mm in
 /// 10 s, about 80 mm in 2 s): the example shows the difference it was
 /// written to show. The CSV and SVG are written; a bad argument is refused.
+/// The torsion-rate sweep prints a row per rate for both vehicles, and
+/// the hull stands lower on stiffer bars (the declared preload
+/// outweighs the load: a softer bar turns further before it balances).
+#[test]
+fn torsion_modes_sweeps_both_vehicles() {
+    let out = run(&example("torsion_modes"), &[], &scratch("torsion_modes"));
+    assert_success("torsion_modes", &out);
+    let stdout = text(&out.stdout);
+    for vehicle in ["M113", "Marder"] {
+        let block = stdout.split(&format!("{vehicle}:")).nth(1).expect(vehicle);
+        let heights: Vec<f64> = block
+            .lines()
+            .skip(2)
+            .take(5)
+            .map(|l| l.split_whitespace().nth(2).unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(heights.len(), 5, "{block}");
+        assert!(heights.windows(2).all(|w| w[1] < w[0]), "{heights:?}");
+    }
+}
+
 #[test]
 fn grade_hold_holds_with_stiction_and_creeps_without() {
     let grade_hold = example("grade_hold");

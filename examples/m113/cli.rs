@@ -57,6 +57,18 @@ pub struct Args {
     /// Integrator.
     #[arg(long, value_enum, default_value_t = Method::Bs23)]
     pub integrator: Method,
+    /// Where the run starts: `assembled` (the track wrapped, shoes 1 mm
+    /// above the ground, then `--settle` seconds of settling) or
+    /// `equilibrium` (at rest on the ground, found by Newton's method: no
+    /// ringing left; the settling time still passes before the drive
+    /// starts, `--settle 0` to drive at once).
+    #[arg(long, value_enum, default_value_t = Start::Assembled)]
+    pub start: Start,
+    /// Also find the vehicle's modes at rest: print the lowest, write
+    /// `modes.csv` (every mode) and `modes.svg` (the vehicle displaced
+    /// along the six lowest).
+    #[arg(long)]
+    pub modes: bool,
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = folder)]
     pub out: Option<PathBuf>,
@@ -108,6 +120,16 @@ impl Vehicle {
             Vehicle::Marder => "marder",
         }
     }
+}
+
+/// Where a run starts.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Start {
+    /// As assembled: the track wrapped and tensioned, shoes 1 mm above the
+    /// ground.
+    Assembled,
+    /// At rest on the ground (`trackgen::analysis::equilibrium`).
+    Equilibrium,
 }
 
 /// The integrators offered.

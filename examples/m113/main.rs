@@ -16,6 +16,7 @@
 
 mod animation;
 mod cli;
+mod modes;
 mod nearest;
 mod outputs;
 mod plots;
@@ -34,7 +35,7 @@ use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
 use trackgen::{Vehicle, VehicleDynamics};
 
-use cli::{Args, Ground};
+use cli::{Args, Ground, Start};
 use outputs::Outputs;
 use scene::Scene;
 
@@ -104,11 +105,14 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
         height: args.bump_height,
     };
     let assembling = Instant::now();
-    let mut config = V::config(terrain.clone(), V::speed_drive(args.speed_profile()));
-    if let Ground::Soil(soil) = args.terrain {
-        config.soil = Some(soil.soil());
-    }
-    let mut system = V::system_with(config)?;
+    let config = || {
+        let mut config = V::config(terrain.clone(), V::speed_drive(args.speed_profile()));
+        if let Ground::Soil(soil) = args.terrain {
+            config.soil = Some(soil.soil());
+        }
+        config
+    };
+    let mut system = V::system_with(config())?;
     let assembly = assembling.elapsed().as_secs_f64();
     let about = about::<V>();
     let name = args.vehicle.name();
@@ -133,6 +137,24 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
         "assembled (track wrapped, tensioner set) in {:.0} ms",
         assembly * 1e3
     );
+    let rest_ground = scene::Ground {
+        terrain: terrain.clone(),
+        rut: Vec::new(),
+    };
+    let mut extra_files = Vec::new();
+    if args.start == Start::Equilibrium || args.modes {
+        // Finding the rest may switch the track's partition: a run from the
+        // assembled start needs a vehicle that has not been moved.
+        let mut resting = V::system_with(config())?;
+        let (rest, _) = modes::find_rest(&mut resting)?;
+        if args.modes {
+            extra_files = modes::report::<V>(&mut resting, &rest, outputs.dir(), &rest_ground)?;
+        }
+        if args.start == Start::Equilibrium {
+            system = resting;
+            system.set_start(rest.state.as_slice())?;
+        }
+    }
     let ramp = if args.ramp > 0.0 {
         format!("in {:.1} s", args.ramp)
     } else {
@@ -203,6 +225,7 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     } else {
         outputs.data_files()
     };
+    let written = [written, extra_files].concat();
     say!(
         "wrote {}/{{{}}} ({} rows)",
         outputs.dir().display(),

@@ -19,6 +19,8 @@ pub struct Frame {
     /// Chassis centroid and pitch.
     pub chassis: (f64, f64, f64),
     pub hull: Vec<(f64, f64)>,
+    /// What the picture says in its corner (`t = 1.00 s` when empty).
+    pub label: String,
 }
 
 /// A frame at time `t` from the track's and the chassis' coordinates.
@@ -78,6 +80,7 @@ impl Scene {
                 arms,
                 chassis: (qc[0], qc[1], qc[2]),
                 hull,
+                label: String::new(),
             }
         };
         Scene {
@@ -98,6 +101,11 @@ impl Scene {
         let mut names = block("track", self.dofs.0)?;
         names.extend(block("chassis", self.dofs.1)?);
         Some(names)
+    }
+
+    /// The frame at the track's coordinates `qt` and the chassis' `qc`.
+    pub fn frame(&self, t: f64, qt: &[f64], qc: &[f64]) -> Frame {
+        (self.frame)(t, qt, qc)
     }
 
     /// Frames every `dt` (s) of `results` (which hold [`columns`](Self::columns)).
@@ -264,9 +272,13 @@ pub fn svg(frame: &Frame, ground: &Ground) -> String {
             py(y)
         );
     }
+    let label = if frame.label.is_empty() {
+        format!("t = {:.2} s", frame.t)
+    } else {
+        frame.label.clone()
+    };
     s += &format!(
-        "<text x=\"10\" y=\"24\" font-family=\"sans-serif\" font-size=\"18\">t = {:.2} s</text>\n",
-        frame.t
+        "<text x=\"10\" y=\"24\" font-family=\"sans-serif\" font-size=\"18\">{label}</text>\n"
     );
     s + "</svg>\n"
 }

@@ -13,7 +13,9 @@ use crate::vehicle::VehicleDynamics;
 #[derive(Debug, Clone, PartialEq)]
 pub struct Share {
     /// What moves: `hull bounce`, `hull pitch`, `hull surge`, `road wheel
-    /// wheel_3 on its arm`, `sprocket`, `track links 12–20`.
+    /// rw3 on its arm`, `idler idler on its tensioner`, `sprocket`, `upper
+    /// track span (links 29–41)` (above the wheels' centres at rest, or
+    /// `lower`: the run on the ground and round the wheels).
     pub what: String,
     /// Its share of the mode's kinetic energy, 0 to 1.
     pub fraction: f64,
@@ -228,9 +230,8 @@ impl<S: VehicleDynamics> Bodies<S> {
         add("hull surge", m * dr_chassis[0].x.powi(2));
         add("hull bounce", m * dr_chassis[0].y.powi(2));
         add("hull pitch", i * dtheta(&qc_plus, &qc_minus, 0).powi(2));
-        for b in 1..nc {
-            let (m, i) = self.chassis[b];
-            let e = m * dr_chassis[b].norm_squared() + i * dtheta(&qc_plus, &qc_minus, b).powi(2);
+        for (b, (&(m, i), dr)) in self.chassis.iter().zip(&dr_chassis).enumerate().skip(1) {
+            let e = m * dr.norm_squared() + i * dtheta(&qc_plus, &qc_minus, b).powi(2);
             add(&self.groups[b], e);
         }
         let link_energy: Vec<f64> = (0..nt)

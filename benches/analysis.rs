@@ -1,0 +1,102 @@
+//! What the derivatives cost, side by side with what they replace.
+//!
+//! * `track_jacobian`: the track's exact `∂q̈/∂(q, q̇)`
+//!   (`dynamics::track_jacobian`, the linear-time solve's tangent, O(n)
+//!   per direction) at 64 and 128 links: the ratio shows O(n²).
+//! * `m113_state_jacobian`: one evaluation of the M113's right-hand side
+//!   against its state Jacobian over every state with dynamics
+//!   (`analysis::state_jacobian`, central differences: two evaluations a
+//!   column).
+//! * `m113_rest`: the M113 at rest by `analysis::equilibrium` against the
+//!   settling runs it replaces (1 s, the main job's, which still rings;
+//!   3 s), Bogacki-Shampine at 1e-3 as in the main job.
+//!
+//! `cargo bench --bench analysis`; numbers in README.md.
+
+mod support;
+
+use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
+use std::hint::black_box;
+use std::time::Duration;
+use support::{Track64, Track128, state};
+use trackgen::analysis::{EquilibriumOptions, equilibrium, state_jacobian};
+use trackgen::contact::Terrain;
+use trackgen::dynamics::track_jacobian;
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::simulate::{Output, Simulated, simulate};
+use trackgen::vehicles::m113::{M113, M113System};
+use trackgen::{TrackModel, Vehicle, VehicleDynamics};
+
+fn track<M: TrackModel<D>, const D: usize>(model: M) -> impl FnMut() {
+    let (q, qd) = state::<D>();
+    move || {
+        black_box(track_jacobian(&model, &q, &qd, &[]).unwrap());
+    }
+}
+
+fn at_rest() -> M113System {
+    M113::system(Terrain::Flat { height: 0.0 }, M113::speed_drive(|_| 0.0)).unwrap()
+}
+
+fn analysis(c: &mut Criterion) {
+    let mut group = c.benchmark_group("track_jacobian");
+    let mut t64 = track(Track64);
+    group.bench_function("64", |b| b.iter(&mut t64));
+    let mut t128 = track(Track128);
+    group.bench_function("128", |b| b.iter(&mut t128));
+    group.finish();
+
+    let mut system = at_rest();
+    let rest = equilibrium(&mut system, &EquilibriumOptions::default()).unwrap();
+    let states: Vec<usize> = system.layout().dynamic().collect();
+    let y = rest.state.clone();
+    let mut dy = vec![0.0; y.len()];
+    let mut group = c.benchmark_group("m113_state_jacobian");
+    group.bench_function("one_evaluation", |b| {
+        b.iter(|| {
+            system
+                .derivative(0.0, black_box(y.as_slice()), &mut dy)
+                .unwrap()
+        })
+    });
+    group.bench_function("central_differences", |b| {
+        b.iter(|| black_box(state_jacobian(&mut system, 0.0, y.as_slice(), &states).unwrap()))
+    });
+    group.finish();
+
+    let mut group = c.benchmark_group("m113_rest");
+    group.bench_function("equilibrium", |b| {
+        b.iter_batched(
+            at_rest,
+            |mut s| black_box(equilibrium(&mut s, &EquilibriumOptions::default()).unwrap()),
+            BatchSize::LargeInput,
+        )
+    });
+    for seconds in [1.0, 3.0] {
+        group.bench_function(format!("settle_{seconds}_s"), |b| {
+            b.iter_batched(
+                at_rest,
+                |mut s| {
+                    let integrator = Integrator::Bs23 {
+                        rtol: 1e-3,
+                        atol: 1e-3,
+                        max_step: 0.01,
+                    };
+                    let _ = s.initial_state();
+                    black_box(
+                        simulate(&mut s, integrator, 0.0, seconds, Output::Every(0.1)).unwrap(),
+                    )
+                },
+                BatchSize::LargeInput,
+            )
+        });
+    }
+    group.finish();
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().measurement_time(Duration::from_secs(5)).sample_size(20);
+    targets = analysis
+}
+criterion_main!(benches);
