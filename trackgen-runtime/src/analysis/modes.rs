@@ -243,8 +243,20 @@ impl<S: VehicleDynamics> Bodies<S> {
         let track_total: f64 = link_energy.iter().sum();
         if track_total > 0.0 {
             let (a, b) = span_holding_half(&link_energy);
+            // Above the wheels' centres or below them, at rest.
+            let (qt, qc) = system.coordinates(t, y.as_slice())?;
+            let links = centroids(&qt, nt, true);
+            let bodies = centroids(&qc, nc, false);
+            let axles = (1..nc).map(|b| bodies[b].y).sum::<f64>() / (nc.max(2) - 1) as f64;
+            let run: Vec<usize> = if a <= b {
+                (a..=b).collect()
+            } else {
+                (a..nt).chain(0..=b).collect()
+            };
+            let height = run.iter().map(|&k| links[k].y).sum::<f64>() / run.len() as f64;
+            let side = if height > axles { "upper" } else { "lower" };
             add(
-                &format!("track span (links {}–{})", a + 1, b + 1),
+                &format!("{side} track span (links {}–{})", a + 1, b + 1),
                 track_total,
             );
         }
