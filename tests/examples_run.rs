@@ -445,6 +445,11 @@ fn m113_finds_its_rest_and_modes() {
     assert!(frequencies.windows(2).all(|w| w[0] <= w[1]), "lowest first");
     assert!(csv.contains("hull pitch") && csv.contains("hull bounce"));
     check_svg(&dir.join("modes.svg"));
+    let page = std::fs::read_to_string(dir.join("modes.html")).expect("modes.html");
+    assert!(
+        page.contains("mode 1: ") && page.contains("mode 6: "),
+        "modes.html plays six modes"
+    );
     let main = Csv::read(&dir.join("m113.csv"));
     let settling: Vec<f64> = main
         .column("t")

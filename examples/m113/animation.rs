@@ -36,7 +36,8 @@ fn list(points: &[(f64, f64)]) -> String {
 }
 
 /// The page playing `frames` over `ground` (its rut drawn behind each
-/// frame's track front), headed `title`.
+/// frame's track front), headed `title`; a frame's label, if it has one,
+/// is shown in place of its time.
 pub fn html(frames: &[Frame], ground: &Ground, title: &str) -> String {
     let x0 = frames.iter().map(|f| f.chassis.0).fold(f64::MAX, f64::min) - 5.0;
     let x1 = frames.iter().map(|f| f.chassis.0).fold(f64::MIN, f64::max) + 5.0;
@@ -57,8 +58,9 @@ pub fn html(frames: &[Frame], ground: &Ground, title: &str) -> String {
             .collect();
         let _ = write!(
             data,
-            "{{\"t\":{:.3},\"j\":{},\"w\":[{}],\"a\":[{}],\"h\":{},\"c\":[{},{}]}}",
+            "{{\"t\":{:.3},\"l\":{:?},\"j\":{},\"w\":[{}],\"a\":[{}],\"h\":{},\"c\":[{},{}]}}",
             f.t,
+            f.label,
             list(&f.joints),
             wheels.join(","),
             arms.join(","),
@@ -112,7 +114,7 @@ function draw() {
   for (const w of f.w) { g.beginPath(); g.arc(X(w[0]), Y(w[1]), w[2] * sc, 0, 2 * Math.PI); g.fillStyle = '#555'; g.fill(); g.lineWidth = 2; g.strokeStyle = '#222'; g.stroke(); }
   poly(f.j, false); g.strokeStyle = '#222'; g.lineWidth = 5; g.stroke();
   g.fillStyle = '#ddd'; for (let i = 0; i < f.j.length; i += 2) { g.beginPath(); g.arc(X(f.j[i]), Y(f.j[i+1]), 2, 0, 2 * Math.PI); g.fill(); }
-  document.getElementById('t').textContent = 't = ' + f.t.toFixed(2) + ' s,  x = ' + cx.toFixed(2) + ' m';
+  document.getElementById('t').textContent = f.l ? f.l : 't = ' + f.t.toFixed(2) + ' s,  x = ' + cx.toFixed(2) + ' m';
   slider.value = k;
 }
 setInterval(() => { if (playing) { k = (k + 1) % F.length; draw(); } }, 40);

@@ -65,8 +65,8 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = Start::Assembled)]
     pub start: Start,
     /// Also find the vehicle's modes at rest: print the lowest, write
-    /// `modes.csv` (every mode) and `modes.svg` (the vehicle displaced
-    /// along the six lowest).
+    /// `modes.csv` (every mode), `modes.svg` (the vehicle displaced along
+    /// the six lowest) and `modes.html` (a page playing them).
     #[arg(long)]
     pub modes: bool,
     /// Output folder (created if missing); default `out/<vehicle>`.

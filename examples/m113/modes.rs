@@ -1,5 +1,5 @@
 //! The vehicle at rest and how it vibrates there: `--start equilibrium`
-//! and `--modes` (the table, `modes.csv`, `modes.svg`).
+//! and `--modes` (the table, `modes.csv`, `modes.svg`, `modes.html`).
 
 use std::error::Error;
 use std::path::Path;
@@ -8,6 +8,7 @@ use std::time::Instant;
 use trackgen::analysis::{Equilibrium, EquilibriumOptions, Mode, equilibrium, modes};
 use trackgen::{Vehicle, VehicleDynamics};
 
+use crate::animation;
 use crate::say;
 use crate::scene::{self, Scene};
 
@@ -91,7 +92,17 @@ pub fn report<V: Vehicle>(
         dir.join("modes.svg"),
         picture::<V>(system, rest, &oscillating, ground)?,
     )?;
-    Ok(vec!["modes.csv".to_string(), "modes.svg".to_string()])
+    let frames = animation_frames::<V>(system, rest, &oscillating)?;
+    let title = format!("{}: the lowest modes at rest", V::NAME);
+    std::fs::write(
+        dir.join("modes.html"),
+        animation::html(&frames, ground, &title),
+    )?;
+    Ok(vec![
+        "modes.csv".to_string(),
+        "modes.svg".to_string(),
+        "modes.html".to_string(),
+    ])
 }
 
 /// `hull pitch 56 %, track span (links 29–41) 28 %, …`
@@ -140,6 +151,52 @@ fn picture<V: Vehicle>(
         panels.push(scene::svg(&frame, ground));
     }
     Ok(stack(&panels))
+}
+
+/// Frames for the animation page: each of the lowest modes in turn, two
+/// cycles of its motion `Re(v e^{iφ})` (the mode's own phases between
+/// coordinates, its decay left out), at the picture's amplitude.
+fn animation_frames<V: Vehicle>(
+    system: &mut V::System,
+    rest: &Equilibrium,
+    modes: &[&Mode],
+) -> Result<Vec<scene::Frame>, Box<dyn Error>> {
+    const STEPS: usize = 24;
+    let scene = Scene::of::<V>();
+    let (t, y) = (rest.t, &rest.state);
+    let (qt0, qc0) = system.coordinates(t, y.as_slice())?;
+    let at_rest = scene.frame(t, qt0.as_slice(), qc0.as_slice());
+    let layout = system.layout();
+    let mut frames = Vec::new();
+    for (k, mode) in modes.iter().take(DRAWN).enumerate() {
+        let probe = 1e-4;
+        let (qt, qc) = system.coordinates(t, (y + &mode.shape * probe).as_slice())?;
+        let reach = largest_move(&at_rest, &scene.frame(t, qt.as_slice(), qc.as_slice())) / probe;
+        let scale = if reach > 0.0 {
+            DRAWN_AMPLITUDE / reach
+        } else {
+            0.0
+        };
+        for step in 0..2 * STEPS {
+            let phase = std::f64::consts::TAU * step as f64 / STEPS as f64;
+            let turn = trackgen::nalgebra::Complex::new(phase.cos(), phase.sin());
+            let mut moved = y.clone();
+            for i in layout.positions() {
+                moved[i] += scale * (mode.vector[i] * turn).re;
+            }
+            let (qt, qc) = system.coordinates(t, moved.as_slice())?;
+            let mut frame = scene.frame(t, qt.as_slice(), qc.as_slice());
+            frame.label = format!(
+                "mode {}: {:.2} Hz, damping {:.2}: {}",
+                k + 1,
+                mode.frequency,
+                mode.damping_ratio,
+                shares(mode, 2)
+            );
+            frames.push(frame);
+        }
+    }
+    Ok(frames)
 }
 
 /// The largest displacement of a track joint or wheel centre between two
