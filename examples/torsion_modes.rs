@@ -9,7 +9,9 @@
 
 use std::error::Error;
 
-use trackgen::analysis::{EquilibriumOptions, Mode, equilibrium, equilibrium_sensitivity, modes};
+use trackgen::analysis::{
+    EquilibriumOptions, equilibrium, equilibrium_sensitivity, mode_of, modes,
+};
 use trackgen::contact::Terrain;
 use trackgen::model::PartKind;
 use trackgen::vehicles::m113::M113;
@@ -23,22 +25,6 @@ fn road_wheel_arms<V: Vehicle>() -> Vec<usize> {
         .filter(|p| p.kind == PartKind::RoadWheel)
         .filter_map(|p| p.arm.as_ref().map(|a| a.body))
         .collect()
-}
-
-/// The oscillating mode holding the largest share of its energy in
-/// `motion` (`hull bounce`, `hull pitch`), if one holds any: where the
-/// hull's modes mix with the track's, the one most like it.
-fn most<'m>(modes: &'m [Mode], motion: &str) -> Option<&'m Mode> {
-    let share = |m: &Mode| {
-        m.shares
-            .iter()
-            .find(|s| s.what == motion)
-            .map_or(0.0, |s| s.fraction)
-    };
-    modes
-        .iter()
-        .filter(|m| m.oscillates() && share(m) > 0.0)
-        .max_by(|a, b| share(a).total_cmp(&share(b)))
 }
 
 fn sweep<V: Vehicle>() -> Result<(), Box<dyn Error>> {
@@ -61,12 +47,8 @@ fn sweep<V: Vehicle>() -> Result<(), Box<dyn Error>> {
         let rest = equilibrium(&mut system, &EquilibriumOptions::default())?;
         let modes = modes(&mut system, rest.t, &rest.state)?;
         let describe = |name| {
-            most(&modes, name).map_or("—".to_string(), |m| {
-                let share = m
-                    .shares
-                    .iter()
-                    .find(|s| s.what == name)
-                    .map_or(0.0, |s| s.fraction);
+            mode_of(&modes, name).map_or("—".to_string(), |m| {
+                let share = m.share_of(name);
                 format!(
                     "{:6.3} {:5.2} ({:2.0} %)",
                     m.frequency,

@@ -156,3 +156,47 @@ fn the_rules_give_the_m113_laws_of_its_own_scale() {
     within2("rim regularisation", laws.wheels.friction.slip, 0.5);
     assert!(matches!(laws.ground.friction, GroundFriction::Stiction(_)));
 }
+
+/// A vehicle nobody tuned the analysis for (the robot: rigid road wheels,
+/// contact laws fitted to it) rests and has modes: the equilibrium's
+/// ground force equals its weight (10⁻⁹ relative, as for the M113 in
+/// `tests/equilibrium.rs`), and its hull bounces and pitches on its
+/// contacts (`mode_of`: its pitch shares the mode with the upper span,
+/// which holds more of it, so no mode is *named* the hull's pitch).
+#[test]
+fn the_robot_rests_and_bounces_on_its_contacts() {
+    use trackgen::analysis::{EquilibriumOptions, equilibrium, mode_of, modes};
+    let mut robot = Robot::system(Terrain::Flat { height: 0.0 }, Robot::speed_drive(|_| 0.0))
+        .expect("the robot builds");
+    let rest = equilibrium(&mut robot, &EquilibriumOptions::default()).expect("the robot rests");
+    println!(
+        "robot at rest: {} iterations, ground {:.4} N of {:.4} N, hull at {:.5} m, pitch {:.5} rad",
+        rest.iterations, rest.ground_force, rest.weight, rest.height, rest.pitch
+    );
+    assert!((rest.ground_force - rest.weight).abs() < 1e-9 * rest.weight);
+    let modes = modes(&mut robot, rest.t, &rest.state).expect("modes");
+    for m in modes.iter().filter(|m| m.oscillates()).take(6) {
+        println!(
+            "  {:8.3} Hz  ζ {:.3}  {}",
+            m.frequency,
+            m.damping_ratio,
+            m.shares
+                .iter()
+                .take(3)
+                .map(|s| format!("{} {:.0} %", s.what, 100.0 * s.fraction))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    let bounce = mode_of(&modes, "hull bounce").expect("a hull bounce");
+    let pitch = mode_of(&modes, "hull pitch").expect("a hull pitch");
+    println!(
+        "bounce {:.3} Hz ({:.0} % of it), pitch {:.3} Hz ({:.0} %)",
+        bounce.frequency,
+        100.0 * bounce.share_of("hull bounce"),
+        pitch.frequency,
+        100.0 * pitch.share_of("hull pitch")
+    );
+    assert!(bounce.share_of("hull bounce") > 0.3 && pitch.share_of("hull pitch") > 0.3);
+    assert!(bounce.frequency.is_finite() && pitch.frequency.is_finite());
+}

@@ -5,7 +5,7 @@ use std::error::Error;
 use std::path::Path;
 use std::time::Instant;
 
-use trackgen::analysis::{Equilibrium, EquilibriumOptions, Mode, equilibrium, modes};
+use trackgen::analysis::{Equilibrium, EquilibriumOptions, Mode, equilibrium, mode_of, modes};
 use trackgen::{Vehicle, VehicleDynamics};
 
 use crate::animation;
@@ -66,6 +66,20 @@ pub fn report<V: Vehicle>(
             shares(mode, 3)
         );
     }
+    let hull: Vec<String> = ["hull bounce", "hull pitch"]
+        .iter()
+        .filter_map(|motion| {
+            mode_of(&modes, motion).map(|m| {
+                format!(
+                    "{motion} {:.3} Hz (damping {:.2}, {:.0} % of that mode)",
+                    m.frequency,
+                    m.damping_ratio,
+                    100.0 * m.share_of(motion)
+                )
+            })
+        })
+        .collect();
+    say!("  the hull: {}", hull.join("; "));
     let mut csv = csv::Writer::from_path(dir.join("modes.csv"))?;
     csv.write_record([
         "frequency_hz",

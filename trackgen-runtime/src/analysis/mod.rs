@@ -18,5 +18,5 @@ mod sensitivity;
 pub use equilibrium::{Equilibrium, EquilibriumOptions, equilibrium};
 pub use error::AnalysisError;
 pub use jacobian::{state_jacobian, step_for};
-pub use modes::{Mode, Share, linearise, modes};
+pub use modes::{Mode, Share, linearise, mode_of, modes};
 pub use sensitivity::{ArmSensitivity, equilibrium_sensitivity};

@@ -55,6 +55,28 @@ impl Mode {
     }
 }
 
+/// The oscillating mode holding the largest share of its kinetic energy
+/// in `motion` (a [`Share::what`]: `hull bounce`, `hull pitch`, `sprocket`
+/// …), if any holds some: where the hull's modes mix with the track's
+/// spans, the mode a test rig would call the hull's pitch even when a span
+/// holds more of it.
+pub fn mode_of<'m>(modes: &'m [Mode], motion: &str) -> Option<&'m Mode> {
+    modes
+        .iter()
+        .filter(|m| m.oscillates() && m.share_of(motion) > 0.0)
+        .max_by(|a, b| a.share_of(motion).total_cmp(&b.share_of(motion)))
+}
+
+impl Mode {
+    /// The share of its kinetic energy `motion` holds (0 if none).
+    pub fn share_of(&self, motion: &str) -> f64 {
+        self.shares
+            .iter()
+            .find(|s| s.what == motion)
+            .map_or(0.0, |s| s.fraction)
+    }
+}
+
 /// The state matrix `A = ∂f/∂y` at `(t, y)` over the states `states`
 /// (rows and columns, in that order): the linearisation `δẏ = A δy`.
 pub fn linearise<S: OdeSystem + ?Sized>(
