@@ -3,10 +3,10 @@
 
 use nalgebra::DVector;
 
-use super::{AnalysisError, state_jacobian};
+use super::AnalysisError;
+use super::statics::Statics;
 use crate::error::SimulationError;
 use crate::integrate::{Integrator, OdeSystem};
-use crate::model::PartKind;
 use crate::vehicle::{Drive, StateLayout, VehicleDynamics, VehicleRecord};
 
 /// How hard [`equilibrium`] tries.
@@ -88,29 +88,40 @@ pub struct Equilibrium {
 /// there needs no settling).
 ///
 /// Unknowns: every coordinate but the free ones, and the drive's integral.
-/// Held where they are: the chassis' x (on level ground the vehicle may
-/// stand anywhere), the sprocket's angle (the track may stand at any
+/// Held where they are: the chassis' x (the vehicle may stand anywhere
+/// along the ground), the sprocket's angle (the track may stand at any
 /// phase round its wheels; the held sprocket fixes it), and the spin of
 /// every other wheel on its axle (round rims turn freely). Equations:
-/// every acceleration zero but the chassis' along x, which follows from
-/// the others (at rest on level ground nothing outside pushes along x, so
-/// the momentum along x cannot change), and the wheels' spins (no torque
-/// acts on a round rim at rest). Rates, stiction deflections and books are zero: the
-/// equilibrium found holds no tangential load in friction (with stiction,
-/// any tangential load up to `μ F_n` could also rest; this is the rest of a
-/// vehicle lowered onto the ground, unstrained).
+/// every coordinate's acceleration zero but the wheels' spins (no torque
+/// acts on a round rim at rest). Rates and books are zero.
+///
+/// Friction: with stiction on rigid ground
+/// ([`GroundFriction::Stiction`](crate::contact::GroundFriction::Stiction)),
+/// every ground point in contact takes one shared tangential deflection,
+/// one more unknown, paired with the chassis' acceleration along x: the
+/// ground holds what pushes along it (a slope's share of the weight, a
+/// drawbar pull) with its points equally deflected, and holds nothing on
+/// level ground with nothing pulling. Friction is statically
+/// indeterminate (any deflections within `μ F_n` could rest); this is the
+/// rest of a vehicle let down onto the ground and then loaded along it
+/// uniformly. With regularised friction the chassis' x acceleration is left
+/// out (on level ground with nothing pulling it follows from the others:
+/// nothing outside pushes along x); on a slope or under a pull there is
+/// then no rest ([`AnalysisError::NotConverged`]: regularised friction
+/// holds nothing at rest).
 ///
 /// The start: the built state lowered rigidly until the ground carries
 /// the weight (bisection on the height, so the first Jacobian is not that
-/// of a vehicle in the air); then Newton's method with the Jacobian by
-/// central differences ([`state_jacobian`]) and a backtracking line search
-/// on the accelerations' norm.
+/// of a vehicle in the air), relaxed ([`EquilibriumOptions::relax`]); then
+/// Newton's method with the Jacobian by central differences
+/// ([`step_for`](super::step_for)), safeguarded by pseudo-transient
+/// continuation.
 ///
 /// Errors: [`AnalysisError::NoHold`], [`AnalysisError::Moving`] or
 /// [`AnalysisError::NoSprocket`] for a vehicle whose sprocket is not held,
 /// [`AnalysisError::SoftSoil`] on soil, [`AnalysisError::NotConverged`]
 /// naming the largest acceleration left (on a slope, or under a drawbar
-/// pull, there is no equilibrium without friction),
+/// pull, there is no equilibrium without stiction),
 /// [`AnalysisError::Singular`].
 pub fn equilibrium<S: VehicleDynamics>(
     system: &mut S,
@@ -135,7 +146,7 @@ pub fn equilibrium<S: VehicleDynamics>(
         }
     }
     let layout = system.layout();
-    let sprocket = layout.sprocket_angle().ok_or(AnalysisError::NoSprocket)?;
+    layout.sprocket_angle().ok_or(AnalysisError::NoSprocket)?;
     let weight = weight::<S>();
     let mut y = options
         .start
@@ -154,17 +165,9 @@ pub fn equilibrium<S: VehicleDynamics>(
     y[layout.books[0]] = 0.0;
     y[layout.books[1]] = 0.0;
 
-    let (unknowns, equations) = statics::<S>(&layout, sprocket);
     let n = y.len();
-    let mut rates = DVector::zeros(n);
-    let mut residual = |system: &mut S, y: &DVector<f64>| -> Result<DVector<f64>, AnalysisError> {
-        system.derivative(t, y.as_slice(), rates.as_mut_slice())?;
-        Ok(DVector::from_iterator(
-            equations.len(),
-            equations.iter().map(|&i| rates[i]),
-        ))
-    };
-    let mut r = residual(system, &y)?;
+    let mut statics = Statics::at(system, t, &y)?;
+    let mut r;
     let mut iterations = 0;
     // Newton's step `−J δ = r`, safeguarded by pseudo-transient
     // continuation (Kelley & Keyes 1998, "Convergence analysis of
@@ -174,12 +177,28 @@ pub fn equilibrium<S: VehicleDynamics>(
     // pseudo-time step `Δτ` (a stable implicit relaxation step), and `Δτ`
     // grows back as the residual falls (switched evolution relaxation).
     let mut inverse_dtau = 0.0;
-    while r.amax() > options.tolerance {
+    let points = system.geometry().shoe.ground_points.len();
+    loop {
+        // Which points touch, and what each holds, at this iterate: the
+        // shared deflection written again under them.
+        let u = statics.read(&y);
+        statics = Statics::at(system, t, &y)?;
+        statics.write(&u, &mut y);
+        r = statics.residual(system, t, &y)?;
+        if r.amax() <= options.tolerance {
+            break;
+        }
         if iterations == options.max_iterations {
-            return Err(not_converged(&layout, &equations, &r, iterations, system));
+            let k = r.iamax();
+            return Err(AnalysisError::NotConverged {
+                iterations,
+                residual: r[k].abs(),
+                state: statics.equation_name(k, points),
+            });
         }
         iterations += 1;
-        let jacobian = state_jacobian(system, t, y.as_slice(), &unknowns)?.select_rows(&equations);
+        let jacobian = statics.jacobian(system, t, &y)?;
+        let u = statics.read(&y);
         loop {
             let mut shifted = -&jacobian;
             for k in 0..shifted.nrows() {
@@ -190,20 +209,24 @@ pub fn equilibrium<S: VehicleDynamics>(
                 return Err(AnalysisError::Singular);
             }
             let mut trial = y.clone();
-            for (k, &i) in unknowns.iter().enumerate() {
-                trial[i] += step[k];
-            }
-            match residual(system, &trial) {
+            statics.write(&(&u + &step), &mut trial);
+            match statics.residual(system, t, &trial) {
                 Ok(rt) if rt.norm() < 10.0 * r.norm() => {
                     inverse_dtau *= (rt.norm() / r.norm()).clamp(0.1, 10.0);
                     y = trial;
-                    r = rt;
                     break;
                 }
                 _ if inverse_dtau < 1e3 * jacobian.diagonal().amax() => {
                     inverse_dtau = (4.0 * inverse_dtau).max(1e-6 * jacobian.diagonal().amax());
                 }
-                Ok(_) => return Err(not_converged(&layout, &equations, &r, iterations, system)),
+                Ok(_) => {
+                    let k = r.iamax();
+                    return Err(AnalysisError::NotConverged {
+                        iterations,
+                        residual: r[k].abs(),
+                        state: statics.equation_name(k, points),
+                    });
+                }
                 Err(e) => return Err(e),
             }
         }
@@ -213,12 +236,12 @@ pub fn equilibrium<S: VehicleDynamics>(
     // The equations left out (the chassis' x, the wheels' spins) follow
     // from the others only where nothing outside pushes along the ground:
     // a drawbar pull or a slope shows here.
+    let layout = &statics.layout;
     let (worst, residual) = layout
         .dynamic()
         .map(|i| (i, rates[i].abs()))
         .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a });
     if residual > 100.0 * options.tolerance {
-        let points = system.geometry().shoe.ground_points.len();
         return Err(AnalysisError::NotConverged {
             iterations,
             residual,
@@ -237,43 +260,6 @@ pub fn equilibrium<S: VehicleDynamics>(
         pitch: record.pitch,
         state: y,
     })
-}
-
-/// The unknowns of an equilibrium (indices into the state: every
-/// coordinate but the chassis' x and the sprocket's angle, and the drive's
-/// integral) and its equations (the accelerations of every coordinate but
-/// the chassis' x): see [`equilibrium`].
-pub(super) fn statics<S: VehicleDynamics>(
-    layout: &StateLayout,
-    sprocket: usize,
-) -> (Vec<usize>, Vec<usize>) {
-    // A wheel's spin on its axle: round rims turn freely at rest (nothing
-    // resists the angle, and friction acts on sliding only).
-    let spins: Vec<usize> = S::parts()
-        .iter()
-        .filter(|p| p.kind != PartKind::Sprocket)
-        .map(|p| 2 + p.body)
-        .collect();
-    let held = |c: usize| c == 0 || spins.contains(&c);
-    let unknowns = layout
-        .chassis
-        .clone()
-        .filter(|&i| !held(i - layout.chassis.start))
-        .filter(|&i| i != sprocket)
-        .chain(layout.track.clone())
-        .chain([layout.integral])
-        .collect();
-    // In the unknowns' order, each acceleration beside its coordinate; the
-    // sprocket's last, beside the integral that holds it.
-    let sprocket_rate = sprocket - layout.chassis.start + layout.chassis_rates.start;
-    let equations = layout
-        .chassis_rates
-        .clone()
-        .filter(|&i| !held(i - layout.chassis_rates.start) && i != sprocket_rate)
-        .chain(layout.track_rates.clone())
-        .chain([sprocket_rate])
-        .collect();
-    (unknowns, equations)
 }
 
 /// The vehicle's weight, N: every body of track and chassis under its
@@ -400,20 +386,4 @@ fn lower_onto_ground<S: VehicleDynamics>(
         y[i] -= high;
     }
     Ok(())
-}
-
-fn not_converged<S: VehicleDynamics>(
-    layout: &StateLayout,
-    equations: &[usize],
-    r: &DVector<f64>,
-    iterations: usize,
-    system: &S,
-) -> AnalysisError {
-    let k = r.iamax();
-    let points = system.geometry().shoe.ground_points.len();
-    AnalysisError::NotConverged {
-        iterations,
-        residual: r[k].abs(),
-        state: layout.name(equations[k], points),
-    }
 }

@@ -14,6 +14,7 @@ mod error;
 mod jacobian;
 mod modes;
 mod sensitivity;
+mod statics;
 
 pub use equilibrium::{Equilibrium, EquilibriumOptions, equilibrium};
 pub use error::AnalysisError;

@@ -3,8 +3,8 @@
 
 use nalgebra::DVector;
 
-use super::equilibrium::statics;
-use super::{AnalysisError, Equilibrium, state_jacobian};
+use super::statics::Statics;
+use super::{AnalysisError, Equilibrium};
 use crate::vehicle::VehicleDynamics;
 
 /// The derivative of an equilibrium with respect to one arm's torsion
@@ -18,12 +18,14 @@ pub struct ArmSensitivity {
     /// `∂(hull pitch)/∂k`, rad per N m/rad.
     pub pitch: f64,
     /// `∂y/∂k` of the whole state (zero for the coordinates an equilibrium
-    /// holds fixed: the chassis' x, the sprocket's angle), per N m/rad.
+    /// holds fixed: the chassis' x, the sprocket's angle, the wheels'
+    /// spins), per N m/rad.
     pub state: DVector<f64>,
 }
 
 /// The sensitivity of `equilibrium` (of `system`) to arm `arm`'s torsion
-/// rate: with `r(u, k) = 0` the equilibrium's equations
+/// rate (the ground points in contact and the free coordinates as at the
+/// equilibrium): with `r(u, k) = 0` the equilibrium's equations
 /// ([`equilibrium`](super::equilibrium)), `∂u/∂k = −(∂r/∂u)⁻¹ ∂r/∂k`, both
 /// Jacobians by central differences (`∂r/∂k` with a step of 10⁻⁶ of the
 /// rate). One linear solve, against a Newton iteration per perturbed rate
@@ -37,33 +39,28 @@ pub fn equilibrium_sensitivity<S: VehicleDynamics>(
     if arm >= arms {
         return Err(AnalysisError::NoArm { arm, arms });
     }
-    let layout = system.layout();
-    let sprocket = layout.sprocket_angle().ok_or(AnalysisError::NoSprocket)?;
-    let (unknowns, equations) = statics::<S>(&layout, sprocket);
     let (t, y) = (equilibrium.t, &equilibrium.state);
-    let jacobian = state_jacobian(system, t, y.as_slice(), &unknowns)?.select_rows(&equations);
+    let statics = Statics::at(system, t, y)?;
+    let jacobian = statics.jacobian(system, t, y)?;
     let k = system.arms_mut()[arm].spring.stiffness;
     let h = 1e-6 * k.abs().max(1.0);
     let rates = |system: &mut S, stiffness: f64| -> Result<DVector<f64>, AnalysisError> {
         system.arms_mut()[arm].spring.stiffness = stiffness;
-        let mut dy = DVector::zeros(y.len());
-        let done = system.derivative(t, y.as_slice(), dy.as_mut_slice());
+        let done = statics.residual(system, t, y);
         system.arms_mut()[arm].spring.stiffness = k;
-        done?;
-        Ok(DVector::from_iterator(
-            equations.len(),
-            equations.iter().map(|&i| dy[i]),
-        ))
+        done
     };
     let dr_dk = (rates(system, k + h)? - rates(system, k - h)?) / (2.0 * h);
     let du = jacobian
         .lu()
         .solve(&(-dr_dk))
         .ok_or(AnalysisError::Singular)?;
-    let mut state = DVector::zeros(y.len());
-    for (c, &i) in unknowns.iter().enumerate() {
-        state[i] = du[c];
-    }
+    // The state's change: the unknowns' through `write`, linear in them.
+    let base = statics.read(y);
+    let mut moved = y.clone();
+    statics.write(&(&base + &du), &mut moved);
+    let state = moved - y;
+    let layout = &statics.layout;
     Ok(ArmSensitivity {
         arm,
         height: state[layout.chassis.start + 1],

@@ -137,6 +137,17 @@ pub trait VehicleDynamics: Simulated + Send + Sized {
         y: &[f64],
     ) -> Result<(DVector<f64>, DVector<f64>), SimulationError>;
 
+    /// Whether the ground holds the shoes with stiction (rigid ground,
+    /// [`GroundFriction::Stiction`](crate::contact::GroundFriction::Stiction)):
+    /// its tangential states are then the stiction deflections.
+    fn holds_by_stiction(&self) -> bool;
+
+    /// What each ground point can hold by stiction at `y`, one per
+    /// tangential state (link by link): `None` off the ground, else the
+    /// largest deflection it keeps at rest, `μ F_n / k` in the tangential
+    /// states' unit (beyond it the point slides). Empty without stiction.
+    fn stiction_limits(&mut self, t: f64, y: &[f64]) -> Result<Vec<Option<f64>>, SimulationError>;
+
     /// Starts the vehicle from `y` (an [equilibrium](crate::analysis::equilibrium),
     /// say) instead of the assembled state: [`SimulationError::StateLength`]
     /// for a state of the wrong length, [`SimulationError::NonFinite`] for

@@ -153,6 +153,7 @@ pub(super) fn respond<const DC: usize>(
         chassis_loads,
         tangential_rate,
         touched,
+        ground_normal,
         books,
         ..
     } = work;
@@ -160,6 +161,7 @@ pub(super) fn respond<const DC: usize>(
     chassis_loads.fill(BodyLoad::ZERO);
     tangential_rate.fill(0.0);
     touched.fill(false);
+    ground_normal.fill(0.0);
     *books = Books::default();
     let sprocket_body = sprocket.map(|s| s.body);
     for contact in contacts.iter() {
@@ -172,6 +174,7 @@ pub(super) fn respond<const DC: usize>(
                 if let Some(r) = tangential_rate.get_mut(slot) {
                     *r = rate / scale;
                     touched[slot] = true;
+                    ground_normal[slot] = force.normal;
                 }
                 force.apply(contact, link_load, None);
                 books.ground(&force);

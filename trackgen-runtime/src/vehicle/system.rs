@@ -13,9 +13,9 @@ use super::{
 };
 use crate::assembly::{self, Assembled};
 use crate::closure::Switch;
-use crate::contact::BodyState;
 use crate::contact::soft_ground::{Rut, SoftGround};
 use crate::contact::sprocket::{pitch_radius, rolling_radius};
+use crate::contact::{BodyState, GroundFriction};
 use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
 use crate::model::{ChassisModel, ChassisPart, PartKind, TrackModel, TreeDescription};
@@ -367,6 +367,28 @@ where
             DVector::from_column_slice(qt.as_slice()),
             DVector::from_column_slice(qc.as_slice()),
         ))
+    }
+
+    fn holds_by_stiction(&self) -> bool {
+        self.soil.is_none() && self.config.ground.friction.has_state()
+    }
+
+    fn stiction_limits(&mut self, t: f64, y: &[f64]) -> Result<Vec<Option<f64>>, SimulationError> {
+        let GroundFriction::Stiction(stiction) = self.config.ground.friction else {
+            return Ok(Vec::new());
+        };
+        if self.soil.is_some() {
+            return Ok(Vec::new());
+        }
+        self.evaluate(t, y)?;
+        let unit = stiction.stiffness * self.stiction_scale;
+        Ok(self
+            .work
+            .touched
+            .iter()
+            .zip(&self.work.ground_normal)
+            .map(|(&touched, &normal)| touched.then(|| stiction.mu * normal / unit))
+            .collect())
     }
 
     fn set_start(&mut self, y: &[f64]) -> Result<(), SimulationError> {

@@ -33,6 +33,9 @@ pub(super) struct Workspace {
     pub tangential_rate: Vec<f64>,
     /// Whether each ground point touched at this evaluation.
     pub touched: Vec<bool>,
+    /// Each ground point's normal force at this evaluation, N (0 off the
+    /// ground).
+    pub ground_normal: Vec<f64>,
     /// What the force elements stored, dissipated and did, at the last
     /// evaluation.
     pub books: Books,
@@ -59,6 +62,7 @@ impl Workspace {
             chassis_loads: vec![BodyLoad::ZERO; bodies],
             tangential_rate: vec![0.0; tangential],
             touched: vec![false; tangential],
+            ground_normal: vec![0.0; tangential],
             books: Books::default(),
             tensions: Vec::with_capacity(links),
             offsets: Vec::with_capacity(links),
