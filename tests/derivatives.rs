@@ -20,7 +20,7 @@ include!("support/chains.rs");
 
 use support::{Lcg, assert_close};
 use trackgen::dynamics::derivative::{ChainDirection, ChainTangent, TreeDirection, TreeTangent};
-use trackgen::dynamics::{track_jacobian, tree_jacobian};
+use trackgen::dynamics::{StateJacobian, track_jacobian, tree_jacobian};
 use trackgen::model::{BodyLoad, ClosingJoint, Closure};
 use trackgen::nalgebra::{DMatrix, SVector, Vector2};
 use trackgen::vehicles::m113::{M113Chassis, M113Track};
@@ -98,56 +98,51 @@ fn differences<const D: usize>(
     (dq, dqd)
 }
 
-fn check_track<M: TrackModel<D> + Default, const D: usize>(name: &str, seed: u64) {
-    let model = M::default();
+/// The exact Jacobian against differences of `accelerations` at three
+/// random states under random loads of `scale` N.
+fn check<const D: usize>(
+    name: &str,
+    seed: u64,
+    (bodies, scale): (usize, f64),
+    exact: impl Fn(&SVector<f64, D>, &SVector<f64, D>, &[BodyLoad]) -> StateJacobian,
+    accelerations: impl Fn(&SVector<f64, D>, &SVector<f64, D>, &[BodyLoad]) -> SVector<f64, D>,
+) {
     let mut rng = Lcg::new(seed);
     for state in 0..3 {
         let (q, qd) = rng.state::<D>();
-        let loads = loads(&mut rng, M::BODIES, 200.0);
-        let exact = track_jacobian(&model, &q, &qd, &loads).unwrap();
-        let (dq, dqd) = differences(|q, qd| track_accelerations(&model, q, qd, &loads), &q, &qd);
-        let label = format!("{name} state {state}");
-        assert_close(
-            &format!("{label} ∂q̈/∂q"),
-            exact.coordinates.as_slice(),
-            dq.as_slice(),
-            REL,
-            1.0,
-        );
-        assert_close(
-            &format!("{label} ∂q̈/∂q̇"),
-            exact.rates.as_slice(),
-            dqd.as_slice(),
-            REL,
-            1.0,
-        );
+        let loads = loads(&mut rng, bodies, scale);
+        let exact = exact(&q, &qd, &loads);
+        let (dq, dqd) = differences(|q, qd| accelerations(q, qd, &loads), &q, &qd);
+        for (what, got, want) in [
+            ("∂q̈/∂q", &exact.coordinates, &dq),
+            ("∂q̈/∂q̇", &exact.rates, &dqd),
+        ] {
+            let label = format!("{name} state {state} {what}");
+            assert_close(&label, got.as_slice(), want.as_slice(), REL, 1.0);
+        }
     }
+}
+
+fn check_track<M: TrackModel<D> + Default, const D: usize>(name: &str, seed: u64) {
+    let model = M::default();
+    check(
+        name,
+        seed,
+        (M::BODIES, 200.0),
+        |q, qd, loads| track_jacobian(&model, q, qd, loads).unwrap(),
+        |q, qd, loads| track_accelerations(&model, q, qd, loads),
+    );
 }
 
 fn check_tree<M: RecursiveModel<D> + Default, const D: usize>(name: &str, seed: u64) {
     let model = M::default();
-    let mut rng = Lcg::new(seed);
-    for state in 0..3 {
-        let (q, qd) = rng.state::<D>();
-        let loads = loads(&mut rng, M::BODIES, 500.0);
-        let exact = tree_jacobian(&model, &q, &qd, &loads).unwrap();
-        let (dq, dqd) = differences(|q, qd| tree_accelerations(&model, q, qd, &loads), &q, &qd);
-        let label = format!("{name} state {state}");
-        assert_close(
-            &format!("{label} ∂q̈/∂q"),
-            exact.coordinates.as_slice(),
-            dq.as_slice(),
-            REL,
-            1.0,
-        );
-        assert_close(
-            &format!("{label} ∂q̈/∂q̇"),
-            exact.rates.as_slice(),
-            dqd.as_slice(),
-            REL,
-            1.0,
-        );
-    }
+    check(
+        name,
+        seed,
+        (M::BODIES, 500.0),
+        |q, qd, loads| tree_jacobian(&model, q, qd, loads).unwrap(),
+        |q, qd, loads| tree_accelerations(&model, q, qd, loads),
+    );
 }
 
 #[test]

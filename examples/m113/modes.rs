@@ -143,25 +143,10 @@ fn picture<V: Vehicle>(
     let at_rest = scene.frame(t, qt0.as_slice(), qc0.as_slice());
     let mut panels = Vec::new();
     for (k, mode) in modes.iter().take(DRAWN).enumerate() {
-        // Scale the shape so its largest point moves DRAWN_AMPLITUDE.
-        let probe = 1e-4;
-        let (qt, qc) = system.coordinates(t, (y + &mode.shape * probe).as_slice())?;
-        let moved = scene.frame(t, qt.as_slice(), qc.as_slice());
-        let reach = largest_move(&at_rest, &moved) / probe;
-        let scale = if reach > 0.0 {
-            DRAWN_AMPLITUDE / reach
-        } else {
-            0.0
-        };
+        let scale = drawn_scale(system, &scene, (rest, &at_rest), mode)?;
         let (qt, qc) = system.coordinates(t, (y + &mode.shape * scale).as_slice())?;
         let mut frame = scene.frame(t, qt.as_slice(), qc.as_slice());
-        frame.label = format!(
-            "mode {}: {:.2} Hz, damping {:.2}: {}",
-            k + 1,
-            mode.frequency,
-            mode.damping_ratio,
-            shares(mode, 2)
-        );
+        frame.label = label(k, mode);
         panels.push(scene::svg(&frame, ground));
     }
     Ok(stack(&panels))
@@ -183,14 +168,7 @@ fn animation_frames<V: Vehicle>(
     let layout = system.layout();
     let mut frames = Vec::new();
     for (k, mode) in modes.iter().take(DRAWN).enumerate() {
-        let probe = 1e-4;
-        let (qt, qc) = system.coordinates(t, (y + &mode.shape * probe).as_slice())?;
-        let reach = largest_move(&at_rest, &scene.frame(t, qt.as_slice(), qc.as_slice())) / probe;
-        let scale = if reach > 0.0 {
-            DRAWN_AMPLITUDE / reach
-        } else {
-            0.0
-        };
+        let scale = drawn_scale(system, &scene, (rest, &at_rest), mode)?;
         for step in 0..2 * STEPS {
             let phase = std::f64::consts::TAU * step as f64 / STEPS as f64;
             let turn = trackgen::nalgebra::Complex::new(phase.cos(), phase.sin());
@@ -200,17 +178,41 @@ fn animation_frames<V: Vehicle>(
             }
             let (qt, qc) = system.coordinates(t, moved.as_slice())?;
             let mut frame = scene.frame(t, qt.as_slice(), qc.as_slice());
-            frame.label = format!(
-                "mode {}: {:.2} Hz, damping {:.2}: {}",
-                k + 1,
-                mode.frequency,
-                mode.damping_ratio,
-                shares(mode, 2)
-            );
+            frame.label = label(k, mode);
             frames.push(frame);
         }
     }
     Ok(frames)
+}
+
+/// The label of mode `k` (from 0) in the pictures.
+fn label(k: usize, mode: &Mode) -> String {
+    format!(
+        "mode {}: {:.2} Hz, damping {:.2}: {}",
+        k + 1,
+        mode.frequency,
+        mode.damping_ratio,
+        shares(mode, 2)
+    )
+}
+
+/// The scale of `mode`'s shape that moves the vehicle's farthest-moving
+/// point by [`DRAWN_AMPLITUDE`] from `at_rest`.
+fn drawn_scale(
+    system: &mut impl VehicleDynamics,
+    scene: &Scene,
+    (rest, at_rest): (&Equilibrium, &scene::Frame),
+    mode: &Mode,
+) -> Result<f64, Box<dyn Error>> {
+    let (t, y) = (rest.t, &rest.state);
+    let probe = 1e-4;
+    let (qt, qc) = system.coordinates(t, (y + &mode.shape * probe).as_slice())?;
+    let reach = largest_move(at_rest, &scene.frame(t, qt.as_slice(), qc.as_slice())) / probe;
+    Ok(if reach > 0.0 {
+        DRAWN_AMPLITUDE / reach
+    } else {
+        0.0
+    })
 }
 
 /// The largest displacement of a track joint or wheel centre between two
