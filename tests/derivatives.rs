@@ -1,10 +1,10 @@
 //! The exact derivatives of the dynamics (`trackgen::dynamics::derivative`)
 //! against central differences of the generated right-hand sides, at
 //! random states and under random loads: the track's linear-time tangent
-//! on a constrained loop (the M113's 64 links, a 64-link heterogeneous
-//! chain), on a penalty-cut loop (whose joint force changes with the
+//! on a constrained loop (the M113's 64 links, the Marder's 77, a 64-link
+//! heterogeneous chain), on a penalty-cut loop (whose joint force changes with the
 //! state) and on an open chain; the chassis tree's tangent on the M113's
-//! chassis and on a rig with every kind of part and slanted gravity; and
+//! and the Marder's chassis; and
 //! a load direction (`∂q̈/∂F` along a change of every body's load)
 //! against the difference of two solves.
 //!
@@ -24,6 +24,7 @@ use trackgen::dynamics::{StateJacobian, track_jacobian, tree_jacobian};
 use trackgen::model::{BodyLoad, ClosingJoint, Closure};
 use trackgen::nalgebra::{DMatrix, SVector, Vector2};
 use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::vehicles::marder::{Marder, MarderChassis, MarderTrack};
 use trackgen::{RecursiveModel, TrackModel};
 
 const H: f64 = 1e-6;
@@ -163,6 +164,16 @@ fn penalty_cut_loop_derivatives_match_differences() {
 #[test]
 fn open_chain_derivatives_match_differences() {
     check_track::<Hetero64Open, 66>("64 heterogeneous links, open", 4);
+}
+
+#[test]
+fn marder_track_derivatives_match_differences() {
+    check_track::<MarderTrack, { Marder::TRACK_DOF }>("Marder track", 7);
+}
+
+#[test]
+fn marder_chassis_derivatives_match_differences() {
+    check_tree::<MarderChassis, { Marder::CHASSIS_DOF }>("Marder chassis", 8);
 }
 
 #[test]
