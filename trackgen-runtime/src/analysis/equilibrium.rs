@@ -80,6 +80,10 @@ pub struct Equilibrium {
     pub height: f64,
     /// The hull's pitch, rad.
     pub pitch: f64,
+    /// Whether the ground holds a load along it by stiction (a slope's
+    /// share of the weight, a drawbar pull): its points in contact then
+    /// share a tangential deflection ([`equilibrium`]).
+    pub friction_held: bool,
 }
 
 /// The vehicle `system` at rest on its ground, its sprocket held by the
@@ -95,20 +99,21 @@ pub struct Equilibrium {
 /// every coordinate's acceleration zero but the wheels' spins (no torque
 /// acts on a round rim at rest). Rates and books are zero.
 ///
-/// Friction: with stiction on rigid ground
+/// Friction: first the rest that holds nothing in friction (the chassis'
+/// acceleration along x left out: on level ground with nothing pulling it
+/// follows from the others). If the chassis' x then does not settle and
+/// the ground holds by stiction
 /// ([`GroundFriction::Stiction`](crate::contact::GroundFriction::Stiction)),
 /// every ground point in contact takes one shared tangential deflection,
 /// one more unknown, paired with the chassis' acceleration along x: the
 /// ground holds what pushes along it (a slope's share of the weight, a
-/// drawbar pull) with its points equally deflected, and holds nothing on
-/// level ground with nothing pulling. Friction is statically
+/// drawbar pull) with its points equally deflected, each up to its
+/// Coulomb limit ([`Equilibrium::friction_held`]). Friction is statically
 /// indeterminate (any deflections within `μ F_n` could rest); this is the
 /// rest of a vehicle let down onto the ground and then loaded along it
-/// uniformly. With regularised friction the chassis' x acceleration is left
-/// out (on level ground with nothing pulling it follows from the others:
-/// nothing outside pushes along x); on a slope or under a pull there is
-/// then no rest ([`AnalysisError::NotConverged`]: regularised friction
-/// holds nothing at rest).
+/// uniformly. With regularised friction, on a slope or under a pull there
+/// is no rest ([`AnalysisError::NotConverged`]: regularised friction holds
+/// nothing at rest).
 ///
 /// The start: the built state lowered rigidly until the ground carries
 /// the weight (bisection on the height, so the first Jacobian is not that
@@ -165,28 +170,100 @@ pub fn equilibrium<S: VehicleDynamics>(
     y[layout.books[0]] = 0.0;
     y[layout.books[1]] = 0.0;
 
-    let n = y.len();
-    let mut statics = Statics::at(system, t, &y)?;
-    let mut r;
-    let mut iterations = 0;
-    // Newton's step `−J δ = r`, safeguarded by pseudo-transient
-    // continuation (Kelley & Keyes 1998, "Convergence analysis of
-    // pseudo-transient continuation", SIAM J. Numer. Anal. 35): a step
-    // that raises the residual tenfold, or that the loop closure cannot
-    // recover, is retried as `(I/Δτ − J) δ = r` with a shorter
-    // pseudo-time step `Δτ` (a stable implicit relaxation step), and `Δτ`
-    // grows back as the residual falls (switched evolution relaxation).
-    let mut inverse_dtau = 0.0;
     let points = system.geometry().shoe.ground_points.len();
+    // First the rest that holds nothing in friction; then, if something
+    // pushes along the ground (the chassis' x does not settle) and the
+    // ground holds by stiction, the rest with the shared deflection.
+    let unstrained = newton(system, t, y.clone(), options, false);
+    let (y, statics, iterations, friction_held) = match unstrained {
+        Ok((y, statics, iterations))
+            if full_residual(system, t, &y, &statics)?.1 <= 100.0 * options.tolerance =>
+        {
+            (y, statics, iterations, false)
+        }
+        first if system.holds_by_stiction() => {
+            // From the relaxed state: the unstrained rest leans on what
+            // the friction would hold, a poorer start.
+            let done = first.map_or(0, |(_, _, iterations)| iterations);
+            let (y, statics, more) = newton(system, t, y, options, true)?;
+            (y, statics, done + more, true)
+        }
+        Ok((y, statics, iterations)) => (y, statics, iterations, false),
+        Err(e) => return Err(e),
+    };
+    // The equations left out (the chassis' x without stiction, the wheels'
+    // spins) follow from the others only where nothing outside pushes
+    // along the ground: a drawbar pull or a slope shows here.
+    let (worst, residual) = full_residual(system, t, &y, &statics)?;
+    if residual > 100.0 * options.tolerance {
+        return Err(AnalysisError::NotConverged {
+            iterations,
+            residual,
+            state: statics.layout.name(worst, points),
+        });
+    }
+    let record = record_at(system, t, &y)?;
+    Ok(Equilibrium {
+        t,
+        iterations,
+        residual,
+        holding_torque: record.sprocket_torque,
+        ground_force: record.ground_normal,
+        weight,
+        height: record.y,
+        pitch: record.pitch,
+        friction_held,
+        state: y,
+    })
+}
+
+/// The largest rate of any state with dynamics at `y`, and which.
+fn full_residual<S: VehicleDynamics>(
+    system: &mut S,
+    t: f64,
+    y: &DVector<f64>,
+    statics: &Statics,
+) -> Result<(usize, f64), AnalysisError> {
+    let mut rates = DVector::zeros(y.len());
+    system.derivative(t, y.as_slice(), rates.as_mut_slice())?;
+    Ok(statics
+        .layout
+        .dynamic()
+        .map(|i| (i, rates[i].abs()))
+        .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a }))
+}
+
+/// Newton's method on the statics from `y` (with the ground points'
+/// shared deflection as an unknown if `friction`): the state at rest, its
+/// statics and the iterations taken.
+///
+/// Newton's step `−J δ = r`, safeguarded by pseudo-transient continuation
+/// (Kelley & Keyes 1998, "Convergence analysis of pseudo-transient
+/// continuation", SIAM J. Numer. Anal. 35): a step that raises the
+/// residual tenfold, or that the loop closure cannot recover, is retried
+/// as `(I/Δτ − J) δ = r` with a shorter pseudo-time step `Δτ` (a stable
+/// implicit relaxation step), and `Δτ` grows back as the residual falls
+/// (switched evolution relaxation).
+fn newton<S: VehicleDynamics>(
+    system: &mut S,
+    t: f64,
+    mut y: DVector<f64>,
+    options: &EquilibriumOptions,
+    friction: bool,
+) -> Result<(DVector<f64>, Statics, usize), AnalysisError> {
+    let points = system.geometry().shoe.ground_points.len();
+    let mut statics = Statics::at(system, t, &y, friction)?;
+    let mut iterations = 0;
+    let mut inverse_dtau = 0.0;
     loop {
         // Which points touch, and what each holds, at this iterate: the
         // shared deflection written again under them.
         let u = statics.read(&y);
-        statics = Statics::at(system, t, &y)?;
+        statics = Statics::at(system, t, &y, friction)?;
         statics.write(&u, &mut y);
-        r = statics.residual(system, t, &y)?;
+        let r = statics.residual(system, t, &y)?;
         if r.amax() <= options.tolerance {
-            break;
+            return Ok((y, statics, iterations));
         }
         if iterations == options.max_iterations {
             let k = r.iamax();
@@ -231,35 +308,6 @@ pub fn equilibrium<S: VehicleDynamics>(
             }
         }
     }
-    let mut rates = DVector::zeros(n);
-    system.derivative(t, y.as_slice(), rates.as_mut_slice())?;
-    // The equations left out (the chassis' x, the wheels' spins) follow
-    // from the others only where nothing outside pushes along the ground:
-    // a drawbar pull or a slope shows here.
-    let layout = &statics.layout;
-    let (worst, residual) = layout
-        .dynamic()
-        .map(|i| (i, rates[i].abs()))
-        .fold((0, 0.0), |a, b| if b.1 > a.1 { b } else { a });
-    if residual > 100.0 * options.tolerance {
-        return Err(AnalysisError::NotConverged {
-            iterations,
-            residual,
-            state: layout.name(worst, points),
-        });
-    }
-    let record = record_at(system, t, &y)?;
-    Ok(Equilibrium {
-        t,
-        iterations,
-        residual,
-        holding_torque: record.sprocket_torque,
-        ground_force: record.ground_normal,
-        weight,
-        height: record.y,
-        pitch: record.pitch,
-        state: y,
-    })
 }
 
 /// The vehicle's weight, N: every body of track and chassis under its

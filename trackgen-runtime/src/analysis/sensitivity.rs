@@ -40,7 +40,9 @@ pub fn equilibrium_sensitivity<S: VehicleDynamics>(
         return Err(AnalysisError::NoArm { arm, arms });
     }
     let (t, y) = (equilibrium.t, &equilibrium.state);
-    let statics = Statics::at(system, t, y)?;
+    // The statics the equilibrium was found with: the shared deflection
+    // an unknown only where the ground holds a load along it.
+    let statics = Statics::at(system, t, y, equilibrium.friction_held)?;
     let jacobian = statics.jacobian(system, t, y)?;
     let k = system.arms_mut()[arm].spring.stiffness;
     let h = 1e-6 * k.abs().max(1.0);

@@ -31,12 +31,13 @@ pub(super) struct Statics {
 }
 
 impl Statics {
-    /// The statics of `system` at `y`: with stiction states, the points
-    /// touching the ground at `y` share the deflection.
+    /// The statics of `system` at `y`; with `friction` (and stiction
+    /// states), the points touching the ground at `y` share a deflection.
     pub fn at<S: VehicleDynamics>(
         system: &mut S,
         t: f64,
         y: &DVector<f64>,
+        friction: bool,
     ) -> Result<Statics, AnalysisError> {
         let layout = system.layout();
         let sprocket = layout.sprocket_angle().ok_or(AnalysisError::NoSprocket)?;
@@ -62,7 +63,7 @@ impl Statics {
             .chain(layout.track_rates.clone())
             .chain([sprocket_rate])
             .collect();
-        let friction = if system.holds_by_stiction() && !layout.tangential.is_empty() {
+        let friction = if friction && system.holds_by_stiction() && !layout.tangential.is_empty() {
             equations.push(layout.chassis_rates.start);
             let limits = system.stiction_limits(t, y.as_slice())?;
             Some(
