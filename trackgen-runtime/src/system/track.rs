@@ -315,11 +315,11 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
         Ok(&self.qdd)
     }
 
-    /// Every joint's force at the last evaluation: joint `j` joins link
-    /// `j` to link `j + 1` (the last, the closing joint, link `n` to link
-    /// 1) and this is its force on link `j` (link `j + 1` takes its
-    /// reverse), N, global frame. For a cut closing joint, the force
-    /// across the cut.
+    /// Every joint's force at the last evaluation, N, global frame: joint
+    /// `j` joins link `j` to link `j + 1` (the closing joint joins the last
+    /// link to the first), and this is its force on link `j`, link `j + 1`
+    /// taking its reverse. For a cut closing joint, the force across the
+    /// cut.
     pub fn joint_forces(&self) -> &[Vector2<f64>] {
         &self.joint_forces
     }
