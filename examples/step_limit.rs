@@ -21,20 +21,22 @@
 //!   (Hunt-Crossley's `χ`) a tenth: if a friction slope or a damping rate
 //!   set the step, removing it would lengthen the step;
 //! - and the stiffest eigenvalues of the right-hand side's Jacobian
-//!   (central differences) at the end, with the step at which
+//!   (`trackgen::analysis::linearise`: central differences over every
+//!   state with dynamics) at the end, with the step at which
 //!   Bogacki-Shampine's stability (`|h λ| ≤ 2.5` on the real axis) would
 //!   stop.
 
 use std::time::Instant;
 
-use trackgen::Vehicle;
+use trackgen::analysis::linearise;
 use trackgen::contact::{Friction, GroundFriction, NormalLaw, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::nalgebra::{DMatrix, DVector};
+use trackgen::nalgebra::DMatrix;
 use trackgen::simulate::{Output, Simulated, simulate};
 use trackgen::vehicle::{VehicleConfig, build};
 use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
+use trackgen::{Vehicle, VehicleDynamics};
 
 /// The vehicle's declared configuration, driven from rest to 3 m/s.
 fn config<V: Vehicle>() -> VehicleConfig {
@@ -171,26 +173,16 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
             stepper.restart();
         }
     }
-    let n = y.len();
-    let mut jacobian = DMatrix::zeros(n, n);
-    let (mut plus, mut minus) = (DVector::zeros(n), DVector::zeros(n));
-    for j in 0..n {
-        let h = 1e-7 * y[j].abs().max(1e-3);
-        let mut yj = y.clone();
-        yj[j] += h;
-        system.derivative(t, yj.as_slice(), plus.as_mut_slice())?;
-        yj[j] -= 2.0 * h;
-        system.derivative(t, yj.as_slice(), minus.as_mut_slice())?;
-        jacobian.set_column(j, &((&plus - &minus) / (2.0 * h)));
-    }
     // The books' two quadratures (the motor's work, the dissipated work)
     // feed nothing back: their eigenvalues are zero, but their rows (the
     // power, of the order of the torque per unit of sprocket speed) would
     // dominate the modes' vectors. The modes are those of the rest.
-    let books = 2 * (V::TRACK_DOF - 2 + V::CHASSIS_DOF) + 1;
-    let dynamic: Vec<usize> = (0..n).filter(|i| !(books..books + 2).contains(i)).collect();
-    let jacobian = jacobian.select_rows(&dynamic).select_columns(&dynamic);
+    let layout = system.layout();
+    let dynamic: Vec<usize> = layout.dynamic().collect();
+    let jacobian = linearise(&mut system, t, y.as_slice(), &dynamic)?;
     let n = dynamic.len();
+    let points = V::geometry().shoe.ground_points.len();
+    let state_name = |i: usize| layout.name(i, points);
     // faer's eigenvalues (nalgebra's Schur iteration, unshifted, can cycle
     // on a Jacobian of hundreds of states).
     let dense = faer::Mat::<f64>::from_fn(n, n, |i, j| jacobian[(i, j)]);
@@ -209,7 +201,7 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
                     "  J[{0},{0}] = {1:.1} ({2})",
                     dynamic[i],
                     jacobian[(i, i)],
-                    state_name::<V>(dynamic[i])
+                    state_name(dynamic[i])
                 );
             }
         }
@@ -226,7 +218,7 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
         let top: Vec<String> = parts
             .iter()
             .take(6)
-            .map(|(i, v)| format!("{} {:+.2}", state_name::<V>(dynamic[*i]), v))
+            .map(|(i, v)| format!("{} {:+.2}", state_name(dynamic[*i]), v))
             .collect();
         println!("  mode {:.1}: {}", e.re, top.join(", "));
     }
@@ -240,28 +232,4 @@ fn study<V: Vehicle>(quick: bool) -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     Ok(())
-}
-
-/// A name for state `i`: the track's independent coordinates and rates
-/// (the partitioned track integrates all but a dependent pair), the
-/// chassis' coordinates and rates, the drive's integral and the books'
-/// two quadratures, then
-/// the ground points' stiction deflections (link, point).
-fn state_name<V: Vehicle>(i: usize) -> String {
-    let (dt, dc) = (V::TRACK_DOF - 2, V::CHASSIS_DOF);
-    let extra = 2 * (dt + dc);
-    let points = V::geometry().shoe.ground_points.len();
-    match i {
-        i if i < dt => format!("track z{i}"),
-        i if i < 2 * dt => format!("track z{}'", i - dt),
-        i if i < 2 * dt + dc => format!("chassis q{}", i - 2 * dt),
-        i if i < extra => format!("chassis q{}'", i - 2 * dt - dc),
-        i if i == extra => "drive integral".to_string(),
-        i if i == extra + 1 => "motor work".to_string(),
-        i if i == extra + 2 => "dissipated work".to_string(),
-        i => {
-            let k = i - extra - 3;
-            format!("stiction link {} point {}", k / points + 1, k % points + 1)
-        }
-    }
 }

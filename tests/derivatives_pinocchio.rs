@@ -25,40 +25,12 @@
 mod support;
 include!("support/chains.rs");
 
-use serde_json::Value;
 use support::assert_close;
+use support::pinocchio::{case, column_major, floats};
 use trackgen::TrackModel;
 use trackgen::dynamics::derivative::{ChainTangent, TreeTangent};
 use trackgen::dynamics::{track_jacobian, tree_jacobian};
 use trackgen::nalgebra::SVector;
-
-fn cases() -> Vec<Value> {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/pinocchio_derivatives.json"
-    ))
-    .expect("reference data");
-    let data: Value = serde_json::from_str(&text).expect("valid JSON");
-    assert_eq!(data["source"], "Pinocchio 4.1.0");
-    data["cases"].as_array().unwrap().clone()
-}
-
-fn floats(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect()
-}
-
-/// A row-major JSON matrix as column-major values.
-fn column_major(v: &Value) -> Vec<f64> {
-    let rows: Vec<Vec<f64>> = v.as_array().unwrap().iter().map(floats).collect();
-    let (r, c) = (rows.len(), rows[0].len());
-    (0..c)
-        .flat_map(|j| rows.iter().map(move |row| row[j]).take(r))
-        .collect()
-}
 
 /// The largest difference over the largest reference entry.
 fn relative(got: &[f64], want: &[f64]) -> f64 {
@@ -70,10 +42,7 @@ fn relative(got: &[f64], want: &[f64]) -> f64 {
 }
 
 fn check<M: TrackModel<D>, const D: usize>(model: M, name: &str) {
-    let case = cases()
-        .into_iter()
-        .find(|c| c["name"] == name)
-        .expect("case present");
+    let case = case("pinocchio_derivatives.json", name);
     assert_eq!(
         M::CLOSURE.is_constrained(),
         case["closed"].as_bool().unwrap()

@@ -193,25 +193,8 @@ fn penalty_chains_agree_with_the_dense_route() {
 
 #[test]
 fn agrees_with_pinocchio() {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/pinocchio_chains.json"
-    ))
-    .unwrap();
-    let data: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let floats = |v: &serde_json::Value| {
-        v.as_array()
-            .unwrap()
-            .iter()
-            .map(|x| x.as_f64().unwrap())
-            .collect::<Vec<_>>()
-    };
-    let case = data["cases"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|c| c["name"] == "closed-10")
-        .unwrap();
+    let case = support::pinocchio::case("pinocchio_chains.json", "closed-10");
+    let floats = support::pinocchio::floats;
     let mut solver = LinearTimeSolver::new(&PinocchioClosed10);
     for state in case["states"].as_array().unwrap() {
         let q = SVector::<f64, 12>::from_column_slice(&floats(&state["q"]));

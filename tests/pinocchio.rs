@@ -11,37 +11,15 @@
 mod support;
 include!("support/chains.rs");
 
-use serde_json::Value;
 use support::assert_close;
+use support::pinocchio::{case, floats};
 use trackgen::nalgebra::{SMatrix, SVector};
 use trackgen::{RecursiveModel, TrackModel};
 
 const REL: f64 = 1e-12;
 
-fn cases() -> Vec<Value> {
-    let text = std::fs::read_to_string(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/data/pinocchio_chains.json"
-    ))
-    .expect("reference data");
-    let data: Value = serde_json::from_str(&text).expect("valid JSON");
-    assert_eq!(data["source"], "Pinocchio 4.1.0");
-    data["cases"].as_array().unwrap().clone()
-}
-
-fn floats(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect()
-}
-
 fn check<M: TrackModel<D>, const D: usize>(model: M, name: &str) {
-    let case = cases()
-        .into_iter()
-        .find(|c| c["name"] == name)
-        .expect("case present");
+    let case = case("pinocchio_chains.json", name);
     // The declaration was transcribed from the JSON: check it link by link.
     let desc = model.description();
     let links = case["links"].as_array().unwrap();
@@ -135,7 +113,7 @@ fn reference_route_matches_pinocchio() {
     ];
     for (name, desc) in models {
         let reference = ReferenceModel::new(desc);
-        let case = cases().into_iter().find(|c| c["name"] == name).unwrap();
+        let case = case("pinocchio_chains.json", name);
         for state in case["states"].as_array().unwrap() {
             let q = DVector::from_vec(floats(&state["q"]));
             let qd = DVector::from_vec(floats(&state["qd"]));

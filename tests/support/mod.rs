@@ -2,6 +2,7 @@
 #![allow(dead_code)]
 
 pub mod contact;
+pub mod pinocchio;
 pub mod vehicle;
 
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector};
