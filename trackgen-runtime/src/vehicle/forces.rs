@@ -152,7 +152,6 @@ pub(super) fn respond<const DC: usize>(
         track_loads,
         chassis_loads,
         tangential_rate,
-        touched,
         ground_normal,
         books,
         ..
@@ -160,8 +159,7 @@ pub(super) fn respond<const DC: usize>(
     track_loads.fill(BodyLoad::ZERO);
     chassis_loads.fill(BodyLoad::ZERO);
     tangential_rate.fill(0.0);
-    touched.fill(false);
-    ground_normal.fill(0.0);
+    ground_normal.fill(None);
     *books = Books::default();
     let sprocket_body = sprocket.map(|s| s.body);
     for contact in contacts.iter() {
@@ -173,8 +171,7 @@ pub(super) fn respond<const DC: usize>(
                 let (force, rate) = config.ground.respond(contact, z);
                 if let Some(r) = tangential_rate.get_mut(slot) {
                     *r = rate / scale;
-                    touched[slot] = true;
-                    ground_normal[slot] = force.normal;
+                    ground_normal[slot] = Some(force.normal);
                 }
                 force.apply(contact, link_load, None);
                 books.ground(&force);
@@ -209,12 +206,12 @@ pub(super) fn respond<const DC: usize>(
     }
     // Ground points off the ground: their stiction deflections relax.
     if let (None, GroundFriction::Stiction(stiction)) = (soil, config.ground.friction) {
-        for ((w, rate), touched) in tangential
+        for ((w, rate), normal) in tangential
             .iter()
             .zip(tangential_rate.iter_mut())
-            .zip(touched)
+            .zip(ground_normal.iter())
         {
-            if !*touched {
+            if normal.is_none() {
                 let relaxing = stiction.relax(w * scale);
                 *rate = relaxing.rate / scale;
                 books.potential += relaxing.potential;

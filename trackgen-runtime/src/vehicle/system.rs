@@ -384,10 +384,9 @@ where
         let unit = stiction.stiffness * self.stiction_scale;
         Ok(self
             .work
-            .touched
+            .ground_normal
             .iter()
-            .zip(&self.work.ground_normal)
-            .map(|(&touched, &normal)| touched.then(|| stiction.mu * normal / unit))
+            .map(|normal| normal.map(|n| stiction.mu * n / unit))
             .collect())
     }
 

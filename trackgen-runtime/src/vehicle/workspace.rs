@@ -31,11 +31,9 @@ pub(super) struct Workspace {
     /// stiction deflection on rigid ground, its shear displacement on soft
     /// soil.
     pub tangential_rate: Vec<f64>,
-    /// Whether each ground point touched at this evaluation.
-    pub touched: Vec<bool>,
-    /// Each ground point's normal force at this evaluation, N (0 off the
-    /// ground).
-    pub ground_normal: Vec<f64>,
+    /// Each ground point's normal force at this evaluation, N: `None` for
+    /// a point off the ground.
+    pub ground_normal: Vec<Option<f64>>,
     /// What the force elements stored, dissipated and did, at the last
     /// evaluation.
     pub books: Books,
@@ -61,8 +59,7 @@ impl Workspace {
             track_loads: vec![BodyLoad::ZERO; links],
             chassis_loads: vec![BodyLoad::ZERO; bodies],
             tangential_rate: vec![0.0; tangential],
-            touched: vec![false; tangential],
-            ground_normal: vec![0.0; tangential],
+            ground_normal: vec![None; tangential],
             books: Books::default(),
             tensions: Vec::with_capacity(links),
             offsets: Vec::with_capacity(links),
