@@ -189,6 +189,11 @@ impl Case {
                 rtol,
                 atol,
                 max_step,
+            }
+            | Integrator::Ros34pw2 {
+                rtol,
+                atol,
+                max_step,
             } => {
                 if !(rtol.is_finite() && atol.is_finite() && rtol >= 0.0 && atol >= 0.0)
                     || rtol + atol == 0.0
@@ -425,6 +430,13 @@ fn integrator() -> impl Strategy<Value = Integrator> {
         }),
         (tolerance(), tolerance(), max_step()).prop_map(|(rtol, atol, max_step)| {
             Integrator::Bs23 {
+                rtol,
+                atol,
+                max_step,
+            }
+        }),
+        (tolerance(), tolerance(), max_step()).prop_map(|(rtol, atol, max_step)| {
+            Integrator::Ros34pw2 {
                 rtol,
                 atol,
                 max_step,

@@ -140,6 +140,8 @@ pub enum Method {
     Bs23,
     /// Dormand-Prince 5(4).
     Dopri5,
+    /// ROS34PW2, linearly implicit (Rosenbrock-W 3(2)).
+    Ros34pw2,
 }
 
 impl Args {
@@ -168,6 +170,11 @@ impl Args {
                 max_step,
             },
             Method::Dopri5 => Integrator::Dopri5 {
+                rtol,
+                atol,
+                max_step,
+            },
+            Method::Ros34pw2 => Integrator::Ros34pw2 {
                 rtol,
                 atol,
                 max_step,

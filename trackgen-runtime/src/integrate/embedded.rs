@@ -92,7 +92,7 @@ pub(crate) const BOGACKI_SHAMPINE: Tableau = Tableau {
 
 /// The RMS of `v` weighted by `atol + rtol · max(|y0|, |y1|)` per
 /// component.
-fn weighted_rms(
+pub(crate) fn weighted_rms(
     v: &DVector<f64>,
     y0: &DVector<f64>,
     y1: &DVector<f64>,

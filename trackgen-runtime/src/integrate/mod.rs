@@ -28,10 +28,12 @@ mod embedded;
 mod fixed_step;
 mod rk4;
 mod rosenbrock;
+mod rosenbrock_w;
 
 pub use embedded::{Dopri5, Embedded};
 pub use rk4::Rk4;
 pub use rosenbrock::Rosenbrock2;
+pub use rosenbrock_w::{JacobianReuse, LinearAlgebraWork, Ros34pw2};
 
 use nalgebra::DVector;
 
@@ -51,6 +53,32 @@ pub trait OdeSystem {
     /// adaptive integrator (which retries a shorter one) and ends the run
     /// in a fixed-step one.
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError>;
+
+    /// Whether component `i` feeds nothing back: a running integral such as
+    /// the energy books, which no other component's rate reads. A linearly
+    /// implicit method leaves such components out of its Jacobian (their
+    /// rows may be large or kinked where a dissipation law switches branch,
+    /// and would only spoil their own quadrature) and integrates them with
+    /// its stages' explicit weights. None by default.
+    fn is_quadrature(&self, i: usize) -> bool {
+        let _ = i;
+        false
+    }
+
+    /// Writes `∂f/∂y` at `(t, y)` (whose `f` is `slope`) into `jacobian`,
+    /// column-major, and returns `true`; or returns `false` (the default)
+    /// and leaves it to the integrator's differences. Only the linearly
+    /// implicit methods ask.
+    fn jacobian(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        slope: &[f64],
+        jacobian: &mut [f64],
+    ) -> Result<bool, SimulationError> {
+        let _ = (t, y, slope, jacobian);
+        Ok(false)
+    }
 }
 
 /// `f(t, y)` into `dy`, counted, with `y` and `f` checked for NaN or
@@ -163,6 +191,16 @@ pub enum Integrator {
         /// Largest step, s (`f64::INFINITY` for none).
         max_step: f64,
     },
+    /// [`Ros34pw2`], adaptive, linearly implicit: for vehicles whose step
+    /// an explicit method's stability sets.
+    Ros34pw2 {
+        /// Relative tolerance per component.
+        rtol: f64,
+        /// Absolute tolerance per component.
+        atol: f64,
+        /// Largest step, s (`f64::INFINITY` for none).
+        max_step: f64,
+    },
     /// [`Rosenbrock2`] with a fixed step, s.
     Rosenbrock2 {
         /// Step, s.
@@ -194,6 +232,11 @@ impl Integrator {
                 atol,
                 max_step,
             } => Box::new(Embedded::bogacki_shampine(rtol, atol, max_step, dimension)),
+            Integrator::Ros34pw2 {
+                rtol,
+                atol,
+                max_step,
+            } => Box::new(Ros34pw2::new(rtol, atol, max_step, dimension)),
             Integrator::Rosenbrock2 { step } => Box::new(Rosenbrock2::new(step, dimension)),
         }
     }

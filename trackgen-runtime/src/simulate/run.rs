@@ -217,6 +217,11 @@ fn validate(
             rtol,
             atol,
             max_step,
+        }
+        | Integrator::Ros34pw2 {
+            rtol,
+            atol,
+            max_step,
         } => {
             if !(rtol >= 0.0
                 && atol >= 0.0

@@ -444,6 +444,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.y0.len()
     }
 
+    /// The books' two quadratures (the motor's work, the dissipated work),
+    /// as [`StateLayout::books`](super::StateLayout::books) places them.
+    fn is_quadrature(&self, i: usize) -> bool {
+        let integral = self.bodies.dimension();
+        i == integral + 1 || i == integral + 2
+    }
+
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let (_, qdc) = self.evaluate(t, y)?;
         let nb = self.bodies.dimension();
