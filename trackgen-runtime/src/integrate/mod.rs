@@ -1,7 +1,7 @@
 //! Time integrators for the first-order systems `y' = f(t, y)` that a
 //! simulation assembles.
 //!
-//! Three methods, each a [`Stepper`] driven one step at a time, because a
+//! Four methods, each a [`Stepper`] driven one step at a time, because a
 //! simulation must act between steps: re-partition the closed track and
 //! restart ([`Stepper::restart`]), write dense output, and stop with the
 //! results kept when something fails.
@@ -15,6 +15,9 @@
 //!   L-stable and second order for any Jacobian (a W-method), fixed step:
 //!   for the stiff contact and penalty forces, where explicit methods need
 //!   steps of the order of the stiffest period.
+//! * [`Ros34pw2`]: Rang & Angermann's ROS34PW2, a Rosenbrock-W method of
+//!   order 3(2), adaptive, with dense output; its Jacobian and
+//!   factorisation serve several steps ([`JacobianReuse`]).
 //!
 //! Why not a crate: `ode_solvers` 0.6 builds on nalgebra 0.34 (ours is
 //! 0.35), integrates a whole interval per call with an infallible `&self`
