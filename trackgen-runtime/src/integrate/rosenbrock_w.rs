@@ -189,7 +189,7 @@ const BETA: f64 = 0.04;
 const MIN_FACTOR: f64 = 0.2;
 const MAX_FACTOR: f64 = 5.0;
 
-/// ROS34PW2 (see [`Tableau`]), adaptive: error per step below 1 in the RMS
+/// ROS34PW2 (Rang & Angermann 2005), adaptive: error per step below 1 in the RMS
 /// norm weighted by `atol + rtol·|y|`, PI step control as
 /// [`Embedded`](super::Embedded), four evaluations of `f` a step, PETSc's
 /// third-order dense output.
