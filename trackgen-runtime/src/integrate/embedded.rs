@@ -1,5 +1,6 @@
 use nalgebra::DVector;
 
+use super::control::StepControl;
 use super::{OdeSystem, Stats, Stepper};
 use crate::error::SimulationError;
 
@@ -141,12 +142,6 @@ fn combine<'a>(
     }
 }
 
-const SAFETY: f64 = 0.9;
-/// PI controller: `β = 0.04`, `α = 1/(q+1) − 0.75 β` (Hairer's DOPRI5).
-const BETA: f64 = 0.04;
-const MIN_FACTOR: f64 = 0.2;
-const MAX_FACTOR: f64 = 5.0;
-
 /// An adaptive embedded Runge-Kutta method (Dormand-Prince 5(4) or
 /// Bogacki-Shampine 3(2)), first-same-as-last, with dense output between
 /// steps. The error of each step is kept below 1 in the RMS norm weighted by
@@ -159,11 +154,7 @@ pub struct Embedded {
     tableau: &'static Tableau,
     rtol: f64,
     atol: f64,
-    max_step: f64,
-    /// The next step to try; 0 until the first step picks one.
-    h: f64,
-    /// The last accepted step's error norm, for PI control.
-    previous_error: f64,
+    control: StepControl,
     /// Whether `stages[0]` holds `f` at the current state (first same as
     /// last, or the last call's start).
     f_now: bool,
@@ -209,9 +200,7 @@ impl Embedded {
             tableau,
             rtol,
             atol,
-            max_step,
-            h: 0.0,
-            previous_error: 1e-4,
+            control: StepControl::new(max_step, tableau.error_order),
             f_now: false,
             stages: vec![zero.clone(); tableau.c.len()],
             trial: zero.clone(),
@@ -239,7 +228,7 @@ impl Embedded {
         } else {
             0.01 * d0 / d1
         };
-        let h0 = h0.min(self.max_step);
+        let h0 = h0.min(self.control.max_step);
         self.trial.copy_from(y);
         self.trial.axpy(h0, &self.stages[0], 1.0);
         let [f0, f1, ..] = &mut self.stages[..] else {
@@ -259,7 +248,7 @@ impl Embedded {
         } else {
             (0.01 / d1.max(d2)).powf(0.2)
         };
-        (100.0 * h0).min(h1).min(self.max_step)
+        (100.0 * h0).min(h1).min(self.control.max_step)
     }
 
     /// Tries one step of length `h` from `(t, y)` with `f(t, y)` in
@@ -348,38 +337,17 @@ impl Stepper for Embedded {
             super::evaluate(system, &mut self.stats, *t, y, &mut self.stages[0])?;
             self.f_now = true;
         }
-        if self.h == 0.0 {
-            self.h = self.initial_step(system, *t, y);
+        if self.control.h == 0.0 {
+            self.control.h = self.initial_step(system, *t, y);
         }
         let mut rejected_last = false;
         loop {
-            let h = self.h.min(self.max_step).min(t_limit - *t);
-            if h <= 1e-14 * t.abs().max(1.0) {
-                return Err(SimulationError::StepSizeUnderflow {
-                    t: *t,
-                    step: h,
-                    cause: None,
-                });
-            }
+            let h = self.control.next(*t, t_limit)?;
             match self.attempt(system, *t, y, h) {
                 Ok(err) if err <= 1.0 => {
                     self.keep_dense_output(y, h);
                     self.span = (*t, *t + h);
-                    // PI step control (Gustafsson; Hairer's DOPRI5, β = 0.04):
-                    // the previous error damps the step's growth, which
-                    // keeps a step limited by stability from being
-                    // rejected every other time.
-                    let err = err.max(1e-10);
-                    let alpha = 1.0 / (self.tableau.error_order + 1.0) - 0.75 * BETA;
-                    let factor = (SAFETY * err.powf(-alpha) * self.previous_error.powf(BETA))
-                        .clamp(MIN_FACTOR, MAX_FACTOR);
-                    self.previous_error = err.max(1e-4);
-                    // After a rejection, do not grow the step at once.
-                    self.h = h * if rejected_last {
-                        factor.min(1.0)
-                    } else {
-                        factor
-                    };
+                    self.control.accept(h, err, rejected_last);
                     // First same as last: the slope at the solution starts
                     // the next step.
                     let last = self.stages.len() - 1;
@@ -389,28 +357,10 @@ impl Stepper for Embedded {
                     self.stats.accepted += 1;
                     return Ok(());
                 }
-                Ok(err) => {
+                outcome => {
                     self.stats.rejected += 1;
                     rejected_last = true;
-                    let factor = if err.is_finite() {
-                        (SAFETY * err.powf(-1.0 / (self.tableau.error_order + 1.0)))
-                            .clamp(MIN_FACTOR, 1.0)
-                    } else {
-                        MIN_FACTOR
-                    };
-                    self.h = h * factor;
-                }
-                Err(cause) => {
-                    self.stats.rejected += 1;
-                    rejected_last = true;
-                    self.h = h * 0.25;
-                    if self.h <= 1e-14 * t.abs().max(1.0) {
-                        return Err(SimulationError::StepSizeUnderflow {
-                            t: *t,
-                            step: self.h,
-                            cause: Some(Box::new(cause)),
-                        });
-                    }
+                    self.control.reject(*t, h, outcome)?;
                 }
             }
         }

@@ -27,6 +27,8 @@
 //! of the closure must shrink the step, not abort) together with a restart
 //! after re-partitioning; the methods themselves are a page each.
 
+mod control;
+mod differences;
 mod embedded;
 mod fixed_step;
 mod rk4;

@@ -1,5 +1,6 @@
 use nalgebra::{DMatrix, DVector};
 
+use super::differences::forward_jacobian;
 use super::fixed_step::FixedStep;
 use super::{OdeSystem, Stats, Stepper};
 use crate::error::SimulationError;
@@ -35,7 +36,7 @@ impl Rosenbrock2 {
         }
     }
 
-    /// `∂f/∂y` by forward differences, step `√ε · max(|yᵢ|, 1)`.
+    /// `∂f/∂y` by forward differences.
     fn jacobian(
         &mut self,
         system: &mut dyn OdeSystem,
@@ -45,15 +46,15 @@ impl Rosenbrock2 {
     ) -> Result<DMatrix<f64>, SimulationError> {
         let n = y.len();
         let mut jac = DMatrix::zeros(n, n);
-        let mut yp = y.clone();
-        let mut fp = DVector::zeros(n);
-        for i in 0..n {
-            let d = f64::EPSILON.sqrt() * y[i].abs().max(1.0);
-            yp[i] = y[i] + d;
-            self.state.eval(system, t, &yp, &mut fp)?;
-            jac.set_column(i, &((&fp - f0) / d));
-            yp[i] = y[i];
-        }
+        forward_jacobian(
+            system,
+            &mut self.state.stats,
+            (t, y, f0),
+            |_| false,
+            &mut y.clone(),
+            &mut DVector::zeros(n),
+            jac.as_mut_slice(),
+        )?;
         Ok(jac)
     }
 }

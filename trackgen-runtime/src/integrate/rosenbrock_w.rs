@@ -2,10 +2,14 @@
 //! systems use a Jacobian computed now and then and a factorisation kept
 //! while it serves.
 
+use std::sync::LazyLock;
+
 use faer::linalg::solvers::Solve;
 use faer::{ColMut, Mat};
 use nalgebra::DVector;
 
+use super::control::StepControl;
+use super::differences::forward_jacobian;
 use super::embedded::weighted_rms;
 use super::{OdeSystem, Stats, Stepper};
 use crate::error::SimulationError;
@@ -108,8 +112,8 @@ const ROS34PW2: Tableau = Tableau {
 /// ```
 ///
 /// with `a = α Γ⁻¹`, `c = −Γ⁻¹` below the diagonal, `m = bᵀ Γ⁻¹`. Derived
-/// from the published coefficients when the stepper is made, not copied.
-#[derive(Debug, Clone)]
+/// from the published coefficients once, not copied.
+#[derive(Debug)]
 struct Transformed {
     a: [[f64; 4]; 4],
     c: [[f64; 4]; 4],
@@ -184,14 +188,12 @@ impl Default for JacobianReuse {
     }
 }
 
-const SAFETY: f64 = 0.9;
-const BETA: f64 = 0.04;
-const MIN_FACTOR: f64 = 0.2;
-const MAX_FACTOR: f64 = 5.0;
+/// ROS34PW2 in the variables `U`, derived once.
+static TRANSFORMED: LazyLock<Transformed> = LazyLock::new(|| Transformed::of(&ROS34PW2));
 
-/// ROS34PW2 (Rang & Angermann 2005), adaptive: error per step below 1 in the RMS
-/// norm weighted by `atol + rtol·|y|`, PI step control as
-/// [`Embedded`](super::Embedded), four evaluations of `f` a step, PETSc's
+/// ROS34PW2 (Rang & Angermann 2005), adaptive: error per step below 1 in
+/// the RMS norm weighted by `atol + rtol·|y|`, the step controlled as
+/// [`Embedded`](super::Embedded)'s, four evaluations of `f` a step, PETSc's
 /// third-order dense output.
 ///
 /// The Jacobian `J` comes from [`OdeSystem::jacobian`] if the system gives
@@ -204,11 +206,8 @@ const MAX_FACTOR: f64 = 5.0;
 pub struct Ros34pw2 {
     rtol: f64,
     atol: f64,
-    max_step: f64,
     reuse: JacobianReuse,
-    tableau: Transformed,
-    h: f64,
-    previous_error: f64,
+    control: StepControl,
     /// Whether `f0` holds `f` at the current state.
     f_now: bool,
     f0: DVector<f64>,
@@ -264,11 +263,9 @@ impl Ros34pw2 {
         Ros34pw2 {
             rtol,
             atol,
-            max_step,
             reuse,
-            tableau: Transformed::of(&ROS34PW2),
-            h: 0.0,
-            previous_error: 1e-4,
+            // The embedded solution is second order.
+            control: StepControl::new(max_step, 2.0),
             f_now: false,
             f0: zero.clone(),
             stages: four(),
@@ -292,7 +289,7 @@ impl Ros34pw2 {
     /// `max_step = h` and loose tolerances, a fixed-step method (for
     /// measuring its order).
     pub fn with_first_step(mut self, h: f64) -> Self {
-        self.h = h;
+        self.control.h = h;
         self
     }
 
@@ -302,7 +299,8 @@ impl Ros34pw2 {
     }
 
     /// `J` at `(t, y)`, whose slope is `f0`: the system's own, or forward
-    /// differences with the step `√ε · max(|yⱼ|, 1)`.
+    /// differences (but for the quadratures' columns: nothing reads them);
+    /// the quadratures' rows and columns zero.
     fn compute_jacobian(
         &mut self,
         system: &mut dyn OdeSystem,
@@ -323,7 +321,16 @@ impl Ros34pw2 {
                 });
             }
         } else {
-            self.differences(system, t, y)?;
+            let quadrature = &self.quadrature;
+            forward_jacobian(
+                system,
+                &mut self.stats,
+                (t, y, &self.f0),
+                |j| quadrature[j],
+                &mut self.argument,
+                &mut self.slope,
+                &mut self.jacobian,
+            )?;
         }
         for (j, column) in self.jacobian.chunks_exact_mut(n).enumerate() {
             for (i, c) in column.iter_mut().enumerate() {
@@ -336,37 +343,8 @@ impl Ros34pw2 {
         Ok(())
     }
 
-    /// `J` by forward differences, column by column, but for the
-    /// quadratures' columns (nothing reads them: zero).
-    fn differences(
-        &mut self,
-        system: &mut dyn OdeSystem,
-        t: f64,
-        y: &DVector<f64>,
-    ) -> Result<(), SimulationError> {
-        let n = y.len();
-        self.argument.copy_from(y);
-        for j in 0..n {
-            if self.quadrature[j] {
-                continue;
-            }
-            let d = f64::EPSILON.sqrt() * y[j].abs().max(1.0);
-            self.argument[j] = y[j] + d;
-            super::evaluate(system, &mut self.stats, t, &self.argument, &mut self.slope)?;
-            self.argument[j] = y[j];
-            let column = &mut self.jacobian[j * n..(j + 1) * n];
-            for ((c, &fp), &f0) in column
-                .iter_mut()
-                .zip(self.slope.as_slice())
-                .zip(self.f0.as_slice())
-            {
-                *c = (fp - f0) / d;
-            }
-        }
-        Ok(())
-    }
-
-    /// Factorises `I − γ h J`; `false` if it is singular.
+    /// Factorises `I − γ h J`; a singular matrix is an error (the step is
+    /// rejected, and a shorter one makes it regular).
     fn factorise(&mut self, t: f64, h: f64) -> Result<(), SimulationError> {
         let n = self.f0.len();
         let jacobian = &self.jacobian;
@@ -429,7 +407,7 @@ impl Ros34pw2 {
         y: &DVector<f64>,
         h: f64,
     ) -> Result<f64, SimulationError> {
-        let tab = self.tableau.clone();
+        let tab: &Transformed = &TRANSFORMED;
         let Some((lu, _)) = &self.factorisation else {
             unreachable!("prepare factorises before a step")
         };
@@ -491,7 +469,7 @@ impl Ros34pw2 {
         } else {
             0.01 * d0 / d1
         };
-        h.min(self.max_step)
+        h.min(self.control.max_step)
     }
 }
 
@@ -507,41 +485,25 @@ impl Stepper for Ros34pw2 {
             super::evaluate(system, &mut self.stats, *t, y, &mut self.f0)?;
             self.f_now = true;
         }
-        if self.h == 0.0 {
-            self.h = self.initial_step(y);
+        if self.control.h == 0.0 {
+            self.control.h = self.initial_step(y);
         }
         let mut rejected_last = false;
         loop {
-            let h = self.h.min(self.max_step).min(t_limit - *t);
-            if h <= 1e-14 * t.abs().max(1.0) {
-                return Err(SimulationError::StepSizeUnderflow {
-                    t: *t,
-                    step: h,
-                    cause: None,
-                });
-            }
+            let h = self.control.next(*t, t_limit)?;
             let outcome = self
                 .prepare(system, *t, y, h)
                 .and_then(|()| self.attempt(system, *t, y, h));
             match outcome {
                 Ok(err) if err <= 1.0 => {
-                    let err = err.max(1e-10);
-                    let alpha = 1.0 / 3.0 - 0.75 * BETA;
-                    let factor = (SAFETY * err.powf(-alpha) * self.previous_error.powf(BETA))
-                        .clamp(MIN_FACTOR, MAX_FACTOR);
-                    self.previous_error = err.max(1e-4);
-                    self.h = h * if rejected_last {
-                        factor.min(1.0)
-                    } else {
-                        factor
-                    };
-                    self.dense_start.copy_from(y);
-                    for (d, s) in self.dense_stages.iter_mut().zip(&self.stages) {
-                        d.copy_from(s);
-                    }
+                    self.control.accept(h, err, rejected_last);
                     self.span = (*t, *t + h);
                     *t += h;
                     std::mem::swap(y, &mut self.trial);
+                    // Dense output keeps the start and the stages: the next
+                    // attempt overwrites both scratch copies.
+                    std::mem::swap(&mut self.dense_start, &mut self.trial);
+                    std::mem::swap(&mut self.dense_stages, &mut self.stages);
                     self.stats.accepted += 1;
                     if let Some(age) = &mut self.jacobian_age {
                         *age += 1;
@@ -554,28 +516,12 @@ impl Stepper for Ros34pw2 {
                 outcome => {
                     self.stats.rejected += 1;
                     rejected_last = true;
-                    let factor = match &outcome {
-                        Ok(err) if err.is_finite() => {
-                            (SAFETY * err.powf(-1.0 / 3.0)).clamp(MIN_FACTOR, 1.0)
-                        }
-                        Ok(_) => MIN_FACTOR,
-                        Err(_) => 0.25,
-                    };
-                    self.h = h * factor;
                     // A Jacobian that has served a step may be what failed:
                     // take a fresh one before shrinking further.
                     if self.jacobian_age.is_some_and(|age| age > 0) {
                         self.jacobian_age = None;
                     }
-                    if let Err(cause) = outcome
-                        && self.h <= 1e-14 * t.abs().max(1.0)
-                    {
-                        return Err(SimulationError::StepSizeUnderflow {
-                            t: *t,
-                            step: self.h,
-                            cause: Some(Box::new(cause)),
-                        });
-                    }
+                    self.control.reject(*t, h, outcome)?;
                 }
             }
         }
@@ -589,7 +535,7 @@ impl Stepper for Ros34pw2 {
         // y(θ) = y₀ + Σᵢ Bᵢ(θ) kᵢ with k = Γ⁻¹ U.
         let b: [f64; 4] =
             std::array::from_fn(|i| theta * (d[i][0] + theta * (d[i][1] + theta * d[i][2])));
-        let inv = &self.tableau.gamma_inverse;
+        let inv = &TRANSFORMED.gamma_inverse;
         let mut out = self.dense_start.clone();
         for (j, stage) in self.dense_stages.iter().enumerate() {
             let w: f64 = (j..4).map(|i| b[i] * inv[i][j]).sum();

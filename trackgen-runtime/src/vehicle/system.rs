@@ -57,8 +57,11 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
 }
 
 /// The drive's integral, the motor's work and the dissipated work: the
-/// three states a vehicle integrates after its bodies'.
+/// three states a vehicle integrates after its bodies', at these offsets.
 const EXTRA_STATES: usize = 3;
+const INTEGRAL: usize = 0;
+const MOTOR_WORK: usize = 1;
+const DISSIPATED: usize = 2;
 
 /// How deep below the ground the assembly puts the shoes, m (negative:
 /// 1 mm above it).
@@ -334,15 +337,16 @@ where
         };
         let nt = track_coordinates.len();
         let chassis = 2 * nt;
-        let integral = chassis + 2 * DC;
+        let integral = self.bodies.dimension();
+        debug_assert_eq!(integral, chassis + 2 * DC);
         StateLayout {
             track: 0..nt,
             track_coordinates,
             track_rates: nt..2 * nt,
             chassis: chassis..chassis + DC,
             chassis_rates: chassis + DC..integral,
-            integral,
-            books: [integral + 1, integral + 2],
+            integral: integral + INTEGRAL,
+            books: [integral + MOTOR_WORK, integral + DISSIPATED],
             tangential: integral + EXTRA_STATES..self.y0.len(),
             sprocket: self.sprocket.map(|s| s.body),
         }
@@ -444,11 +448,12 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.y0.len()
     }
 
-    /// The books' two quadratures (the motor's work, the dissipated work),
-    /// as [`StateLayout::books`](super::StateLayout::books) places them.
+    /// The books' two quadratures (the motor's work, the dissipated work).
     fn is_quadrature(&self, i: usize) -> bool {
-        let integral = self.bodies.dimension();
-        i == integral + 1 || i == integral + 2
+        matches!(
+            i.checked_sub(self.bodies.dimension()),
+            Some(MOTOR_WORK | DISSIPATED)
+        )
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -463,9 +468,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         chassis.derivative_with_trig(t, yc, &self.work.part_trig, dyc)?;
         let (qt, qdt, _) = self.track().recovered();
         let books = &self.work.books;
-        extra[0] = books.integral_rate;
-        extra[1] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
-        extra[2] = books.dissipation + self.track().closure_energy(qt, qdt).1;
+        extra[INTEGRAL] = books.integral_rate;
+        extra[MOTOR_WORK] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
+        extra[DISSIPATED] = books.dissipation + self.track().closure_energy(qt, qdt).1;
         extra[EXTRA_STATES..].copy_from_slice(&self.work.tangential_rate);
         Ok(())
     }
