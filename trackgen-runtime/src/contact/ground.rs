@@ -2,6 +2,7 @@
 
 use nalgebra::Vector2;
 
+use super::tangent::{GeometryTangent, LINK_POSE, body_point};
 use super::{BodyState, Contact, ShoeGeometry, Terrain};
 
 /// Every shoe ground point below `terrain`, link by link and the shoe's
@@ -43,6 +44,23 @@ pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: 
                 velocity: link.velocity_at(arm),
             });
         }
+    }
+}
+
+/// The derivatives of a ground contact's geometry ([`detect`]'s) with the
+/// link's pose: the point `p = R + A ū` moves as `[I | ⟂(A ū)]`, the depth
+/// `δ = h(p_x) − p_y` as `h′ ∂p_x − ∂p_y`, the gradient `(−h′, 1)` as
+/// `(−h″ ∂p_x, 0)`.
+pub fn tangent(terrain: &Terrain, contact: &Contact) -> GeometryTangent {
+    let point = body_point(contact.arm, LINK_POSE);
+    let slope = -contact.gradient.x;
+    let curvature = terrain.curvature(contact.point.x);
+    let mut gradient = GeometryTangent::ZERO.gradient;
+    gradient.set_row(0, &(point.row(0) * -curvature));
+    GeometryTangent {
+        point,
+        depth: point.row(0) * slope - point.row(1),
+        gradient,
     }
 }
 

@@ -25,6 +25,7 @@ pub mod shoe;
 pub mod soft_ground;
 pub mod soil;
 pub mod sprocket;
+pub mod tangent;
 pub mod terrain;
 pub mod wheel;
 
@@ -32,6 +33,7 @@ pub use crate::laws::{Friction, NormalLaw};
 pub use detect::Contact;
 pub use respond::{ContactForce, ContactLaws, GroundFriction, GroundLaws};
 pub use shoe::ShoeGeometry;
+pub use tangent::{ContactJacobian, GeometryTangent};
 pub use terrain::{Terrain, TerrainError};
 
 use nalgebra::Vector2;

@@ -13,6 +13,7 @@
 
 use nalgebra::Vector2;
 
+use super::tangent::{GeometryTangent, LINK_POSE, OTHER_POSE, body_point, dot_rows, unit_vector};
 use super::{BodyState, Contact, ShoeGeometry};
 
 pub use trackgen_sprocket::{ProfileProblem, pitch_radius};
@@ -268,4 +269,48 @@ pub fn detect(
             ));
         }
     });
+}
+
+/// The derivatives of a tooth contact's geometry ([`detect`]'s) with the
+/// link's and the sprocket's poses, on the branch detection took: on a
+/// gap's flank (the pin against the arc about the gap's centre `g`, which
+/// turns with the sprocket) `δ = |p − g| + r_pin − r_arc` along
+/// `−(p − g)/|p − g|`; across the tip circle `δ = r_add + r_pin − |p − c|`
+/// along `(p − c)/|p − c|`. The nearest gap is the same for small changes.
+pub fn tangent(
+    contact: &Contact,
+    link: &BodyState,
+    sprocket: &BodyState,
+    profile: &ToothProfile,
+    shoe: &ShoeGeometry,
+) -> GeometryTangent {
+    let pin_arm = link.arm(shoe.pins[contact.feature]);
+    let pin = link.position + pin_arm;
+    let d_pin = body_point(pin_arm, LINK_POSE);
+    let gap = profile.nearest_gap(sprocket, pin);
+    let (out_of_gap, radial) = (pin - gap, pin - sprocket.position);
+    let (distance, from_centre) = (out_of_gap.norm(), radial.norm());
+    let into_flank = distance + shoe.pin_radius - profile.arc_radius;
+    let into_tip = profile.addendum + shoe.pin_radius - from_centre;
+    if into_flank <= into_tip {
+        let d_gap = body_point(gap - sprocket.position, OTHER_POSE);
+        let d_out = d_pin - d_gap;
+        let u = out_of_gap / distance;
+        let d_u = unit_vector(u, distance, &d_out);
+        GeometryTangent {
+            point: d_gap + d_u * profile.arc_radius,
+            depth: dot_rows(u, &d_out),
+            gradient: -d_u,
+        }
+    } else {
+        let d_centre = body_point(Vector2::zeros(), OTHER_POSE);
+        let d_radial = d_pin - d_centre;
+        let u = radial / from_centre;
+        let d_u = unit_vector(u, from_centre, &d_radial);
+        GeometryTangent {
+            point: d_centre + d_u * profile.addendum,
+            depth: -dot_rows(u, &d_radial),
+            gradient: d_u,
+        }
+    }
 }

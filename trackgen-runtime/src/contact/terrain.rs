@@ -212,6 +212,37 @@ impl Terrain {
         }
     }
 
+    /// `h''(x)`, 1/m: the profile's curvature term, which turns a ground
+    /// contact's normal as its point moves (zero on the straight pieces of
+    /// ramps and tables, whose kinks have none).
+    #[inline]
+    pub fn curvature(&self, x: f64) -> f64 {
+        match self {
+            Terrain::Flat { .. } | Terrain::Ramp { .. } | Terrain::Table(_) => 0.0,
+            Terrain::Bump {
+                centre,
+                width,
+                height,
+            } => {
+                let u = x - centre;
+                if u.abs() >= width / 2.0 {
+                    0.0
+                } else {
+                    let k = 2.0 * std::f64::consts::PI / width;
+                    -height / 2.0 * k * k * (k * u).cos()
+                }
+            }
+            Terrain::Sine { wavelength, .. } if *wavelength == 0.0 => 0.0,
+            Terrain::Sine {
+                amplitude,
+                wavelength,
+            } => {
+                let k = 2.0 * std::f64::consts::PI / wavelength;
+                -amplitude * k * k * (k * x).sin()
+            }
+        }
+    }
+
     /// The highest point of the terrain over `[x0, x1]`, m: for culling.
     pub fn max_height(&self, x0: f64, x1: f64) -> f64 {
         match self {

@@ -3,6 +3,9 @@
 
 use nalgebra::Vector2;
 
+use super::tangent::{
+    GeometryTangent, LINK_POSE, OTHER_POSE, body_point, dot_rows, perp, unit_vector,
+};
 use super::{BodyState, Contact, ShoeGeometry};
 
 /// The contacts of the wheel `body` (its state, and its rim radius in m)
@@ -43,4 +46,46 @@ pub fn detect(
             (0, point, to_face / distance, depth),
         ));
     });
+}
+
+/// The derivatives of a rim contact's geometry ([`detect`]'s) with the
+/// link's and the wheel's poses. The face point nearest the centre `c` is
+/// `p = a + (b − a) s` with `s = (c − a)·(b − a)/|b − a|²` inside the face
+/// (an end, `a` or `b`, where `s` is clipped); `δ = r − |p − c|` and the
+/// normal `(p − c)/|p − c|`.
+pub fn tangent(
+    contact: &Contact,
+    link: &BodyState,
+    wheel: &BodyState,
+    shoe: &ShoeGeometry,
+) -> GeometryTangent {
+    let (arm_a, arm_b) = (link.arm(shoe.inner_face[0]), link.arm(shoe.inner_face[1]));
+    let (a, b) = (link.position + arm_a, link.position + arm_b);
+    let ab = b - a;
+    let length2 = ab.norm_squared();
+    let s = (wheel.position - a).dot(&ab) / length2;
+    let d_centre = body_point(nalgebra::Vector2::zeros(), OTHER_POSE);
+    let d_a = body_point(arm_a, LINK_POSE);
+    let point = if s <= 0.0 {
+        d_a
+    } else if s >= 1.0 {
+        body_point(arm_b, LINK_POSE)
+    } else {
+        // The face turns rigidly with the link: ∂(b − a) = ⟂(b − a) ∂θ.
+        let mut d_ab = GeometryTangent::ZERO.point;
+        let turned = perp(ab);
+        d_ab[(0, LINK_POSE + 2)] = turned.x;
+        d_ab[(1, LINK_POSE + 2)] = turned.y;
+        let d_s = (dot_rows(ab, &(d_centre - d_a)) + dot_rows(wheel.position - a, &d_ab)) / length2;
+        d_a + d_ab * s + ab * d_s
+    };
+    let to_face = contact.point - wheel.position;
+    let distance = to_face.norm();
+    let normal = to_face / distance;
+    let d_offset = point - d_centre;
+    GeometryTangent {
+        point,
+        depth: -dot_rows(normal, &d_offset),
+        gradient: unit_vector(normal, distance, &d_offset),
+    }
 }

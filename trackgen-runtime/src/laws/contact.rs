@@ -51,6 +51,31 @@ impl NormalLaw {
 }
 
 impl NormalLaw {
+    /// `(∂F/∂δ, ∂F/∂δ̇)` of [`force`](Self::force) at penetration `δ` (m)
+    /// closing at `rate` (m/s): N/m and N s/m. Zero out of contact and
+    /// where the force is clipped (it does not pull), as the force itself
+    /// is flat there.
+    #[inline]
+    pub fn slopes(&self, penetration: f64, rate: f64) -> (f64, f64) {
+        if penetration <= 0.0 || !(self.force(penetration, rate) > 0.0) {
+            return (0.0, 0.0);
+        }
+        match *self {
+            NormalLaw::KelvinVoigt { stiffness, damping } => (stiffness, damping),
+            NormalLaw::HuntCrossley {
+                stiffness,
+                exponent,
+                chi,
+            } => {
+                let elastic = stiffness * power(penetration, exponent);
+                (
+                    exponent * elastic / penetration * (1.0 + chi * rate),
+                    elastic * chi,
+                )
+            }
+        }
+    }
+
     /// The elastic part of the force, N (what a penetration at rest gives).
     pub fn elastic_force(&self, penetration: f64) -> f64 {
         if penetration <= 0.0 {
@@ -95,6 +120,24 @@ pub struct Friction {
 }
 
 impl Friction {
+    /// `(∂F/∂F_n, ∂F/∂v)` of [`force`](Self::force) under normal force
+    /// `normal` (N) at slip speed `slip_velocity` (m/s): the force's share
+    /// of the normal force, `−μ v/√(v² + v_s²)`, and the regularisation's
+    /// slope, `−μ F_n v_s²/(v² + v_s²)^{3/2}` (N s/m: what makes a rim's
+    /// friction stiff, `μ F_n / v_s` at zero slip). Zero for plain Coulomb
+    /// friction (`v_s = 0`), whose slope is zero but at zero slip.
+    #[inline]
+    pub fn slopes(&self, normal: f64, slip_velocity: f64) -> (f64, f64) {
+        let (v, s) = (slip_velocity, self.slip.abs());
+        let scale = v.hypot(s);
+        if scale == 0.0 || s == 0.0 {
+            return (0.0, 0.0);
+        }
+        let share = -self.mu * v / scale;
+        let slope = -self.mu * normal * (s / scale) * (s / scale) / scale;
+        (share, slope)
+    }
+
     /// The tangential force along the slip direction, N (opposing `slip`).
     #[inline]
     pub fn force(&self, normal: f64, slip_velocity: f64) -> f64 {

@@ -21,7 +21,7 @@ pub mod torsion;
 
 pub use contact::{Friction, NormalLaw};
 pub use penalty::PenaltyJoint;
-pub use stiction::{Stiction, TangentialResponse};
+pub use stiction::{Stiction, TangentialResponse, TangentialSlopes};
 pub use torsion::TorsionSpring;
 
 /// What a law gives at a state: its force (a scalar along the law's own

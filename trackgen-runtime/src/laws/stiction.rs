@@ -60,7 +60,49 @@ pub struct TangentialResponse {
     pub sliding: bool,
 }
 
+/// The first derivatives of [`Stiction::respond`] (or
+/// [`Stiction::relax`]) with respect to the deflection `z`, the slip
+/// velocity `v` and the normal force `F_n`.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TangentialSlopes {
+    /// `(∂F/∂z, ∂F/∂v, ∂F/∂F_n)`: N/m, N s/m, 1.
+    pub force: [f64; 3],
+    /// `(∂ż/∂z, ∂ż/∂v, ∂ż/∂F_n)`: 1/s, 1, m/(N s).
+    pub rate: [f64; 3],
+}
+
 impl Stiction {
+    /// [`respond`](Self::respond)'s first derivatives at the same
+    /// arguments. Sticking, `F = −(k z + c v)` and `ż = v`; sliding,
+    /// `F = −σ μ F_n` and `ż = v − σ(|k z + c v| − μ F_n)/c = (σ μ F_n −
+    /// k z)/c`, which no longer depends on `v`.
+    #[inline]
+    pub fn slopes(&self, z: f64, v: f64, normal: f64) -> TangentialSlopes {
+        let (k, c) = (self.stiffness, self.damping);
+        let stick = k * z + c * v;
+        let limit = self.mu * normal;
+        if stick.abs() <= limit {
+            return TangentialSlopes {
+                force: [-k, -c, 0.0],
+                rate: [0.0, 1.0, 0.0],
+            };
+        }
+        let sigma = stick.signum();
+        TangentialSlopes {
+            force: [0.0, 0.0, -sigma * self.mu],
+            rate: [-k / c, 0.0, sigma * self.mu / c],
+        }
+    }
+
+    /// [`relax`](Self::relax)'s first derivatives: only `∂ż/∂z = −k/c`.
+    #[inline]
+    pub fn relax_slopes(&self) -> TangentialSlopes {
+        TangentialSlopes {
+            force: [0.0; 3],
+            rate: [-self.stiffness / self.damping, 0.0, 0.0],
+        }
+    }
+
     /// The law at deflection `z` (m), slip velocity `v` (m/s, the body's
     /// point against the ground along the tangent) and normal force
     /// `normal` (N, ≥ 0).

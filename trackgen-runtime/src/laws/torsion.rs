@@ -24,6 +24,12 @@ impl TorsionSpring {
         self.preload - self.stiffness * phi - self.damping * rate
     }
 
+    /// `(∂τ/∂φ, ∂τ/∂φ̇) = (−k, −c)`: N m/rad, N m s/rad.
+    #[inline]
+    pub fn slopes(&self) -> (f64, f64) {
+        (-self.stiffness, -self.damping)
+    }
+
     /// The spring's potential `½ k φ² − preload φ`, J (zero at the design
     /// position), whose negative gradient is the elastic torque.
     #[inline]
