@@ -18,10 +18,10 @@ mod support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close};
+use trackgen::TrackModel;
 use trackgen::dynamics::ShiftedChain;
 use trackgen::nalgebra::{DMatrix, DVector, Matrix3, SVector, Vector3};
 use trackgen::vehicles::m113::M113Track;
-use trackgen::TrackModel;
 
 fn check<M: TrackModel<D>, const D: usize>(label: &str, model: M, seed: u64) {
     let n = M::BODIES;

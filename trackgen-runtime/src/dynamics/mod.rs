@@ -23,9 +23,9 @@ mod dense;
 pub mod derivative;
 pub(crate) mod elimination;
 mod generated;
-mod shifted;
 #[cfg(feature = "oracle")]
 mod linear_time;
+mod shifted;
 
 pub use declared::track_dynamics;
 pub use dense::Accelerations;
@@ -33,6 +33,6 @@ pub use dense::Accelerations;
 pub(crate) use dense::{solve_closed, solve_open};
 pub use derivative::{StateJacobian, track_jacobian, tree_jacobian};
 pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
-pub use shifted::ShiftedChain;
 #[cfg(feature = "oracle")]
 pub use linear_time::LinearTimeSolver;
+pub use shifted::ShiftedChain;

@@ -162,9 +162,8 @@ impl ShiftedChain {
         border[0] += self.lower[0];
         border[m - 1] += self.upper[m - 1];
         self.solve_tridiagonal(&mut border);
-        let schur = closing_diagonal
-            - self.upper[n - 1] * border[0]
-            - self.lower[n - 1] * border[m - 1];
+        let schur =
+            closing_diagonal - self.upper[n - 1] * border[0] - self.lower[n - 1] * border[m - 1];
         self.schur_inverse = schur.try_inverse().ok_or_else(singular)?;
         border.resize(n, Matrix2::zeros());
         self.border = border;

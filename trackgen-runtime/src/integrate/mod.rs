@@ -84,6 +84,31 @@ pub trait OdeSystem {
         let _ = (t, y, slope, jacobian);
         Ok(false)
     }
+
+    /// The system's own linear solves for a linearly implicit method, if
+    /// it has them at its current settings ([`ImplicitSolve`]); `None`
+    /// (the default) leaves the method to a Jacobian and a dense
+    /// factorisation.
+    fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
+        None
+    }
+}
+
+/// A system's own linear solves for a linearly implicit method:
+/// `(I − a W) x = b` for a matrix `W` the system chooses, built from its
+/// structure instead of a dense Jacobian. A Rosenbrock-W method
+/// ([`Ros34pw2`]) keeps its order for any `W`; a `W` that holds the
+/// system's stiff modes keeps it stable at steps far beyond them.
+pub trait ImplicitSolve {
+    /// Takes `W` at `(t, y)`.
+    fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError>;
+
+    /// Factors `I − a W` for the shift `a` (s) at the last linearisation.
+    fn factor(&mut self, t: f64, a: f64) -> Result<(), SimulationError>;
+
+    /// Solves `(I − a W) x = b` in place (`b` in, `x` out), with the last
+    /// factorisation.
+    fn solve(&mut self, t: f64, b: &mut [f64]) -> Result<(), SimulationError>;
 }
 
 /// `f(t, y)` into `dy`, counted, with `y` and `f` checked for NaN or

@@ -222,8 +222,12 @@ pub struct Ros34pw2 {
     jacobian_age: Option<u32>,
     /// [`OdeSystem::is_quadrature`] of each component, asked once.
     quadrature: Vec<bool>,
-    /// The factorisation of `I − γ h J` and the `h` it was made for.
-    factorisation: Option<(faer::linalg::solvers::PartialPivLu<f64>, f64)>,
+    /// Whether the system solves its own linear systems
+    /// ([`OdeSystem::implicit`]), asked at each Jacobian.
+    own: bool,
+    /// The factorisation of `I − γ h J` (`None` when the system keeps its
+    /// own) and the `h` it was made for.
+    factorisation: Option<(Option<faer::linalg::solvers::PartialPivLu<f64>>, f64)>,
     /// The accepted step's start, length and stages, for dense output.
     dense_start: DVector<f64>,
     dense_stages: [DVector<f64>; 4],
@@ -276,6 +280,7 @@ impl Ros34pw2 {
             jacobian: vec![0.0; dimension * dimension],
             jacobian_age: None,
             quadrature: Vec::new(),
+            own: false,
             factorisation: None,
             dense_start: zero.clone(),
             dense_stages: four(),
@@ -309,6 +314,13 @@ impl Ros34pw2 {
     ) -> Result<(), SimulationError> {
         self.work.jacobians += 1;
         self.factorisation = None;
+        if let Some(own) = system.implicit() {
+            own.linearise(t, y.as_slice())?;
+            self.own = true;
+            self.jacobian_age = Some(0);
+            return Ok(());
+        }
+        self.own = false;
         let n = y.len();
         if self.quadrature.len() != n {
             self.quadrature = (0..n).map(|i| system.is_quadrature(i)).collect();
@@ -345,7 +357,23 @@ impl Ros34pw2 {
 
     /// Factorises `I − γ h J`; a singular matrix is an error (the step is
     /// rejected, and a shorter one makes it regular).
-    fn factorise(&mut self, t: f64, h: f64) -> Result<(), SimulationError> {
+    fn factorise(
+        &mut self,
+        system: &mut dyn OdeSystem,
+        t: f64,
+        h: f64,
+    ) -> Result<(), SimulationError> {
+        if self.own {
+            let own = system.implicit().ok_or(SimulationError::SingularMatrix {
+                t,
+                what: "I − γhW of the Rosenbrock-W step (the system's own solves went away)",
+            })?;
+            self.factorisation = None;
+            own.factor(t, GAMMA * h)?;
+            self.work.factorisations += 1;
+            self.factorisation = Some((None, h));
+            return Ok(());
+        }
         let n = self.f0.len();
         let jacobian = &self.jacobian;
         let w = Mat::<f64>::from_fn(n, n, |i, j| {
@@ -366,7 +394,7 @@ impl Ros34pw2 {
                 what: "I − γhJ of the Rosenbrock-W step",
             });
         }
-        self.factorisation = Some((lu, h));
+        self.factorisation = Some((Some(lu), h));
         Ok(())
     }
 
@@ -393,7 +421,7 @@ impl Ros34pw2 {
             }
         };
         if refactor {
-            self.factorise(t, h)?;
+            self.factorise(system, t, h)?;
         }
         Ok(())
     }
@@ -436,7 +464,13 @@ impl Ros34pw2 {
             for (j, uj) in done.iter().enumerate() {
                 u.axpy(GAMMA * tab.c[i][j], uj, 1.0);
             }
-            lu.solve_in_place(ColMut::from_slice_mut(u.as_mut_slice()));
+            match lu {
+                Some(lu) => lu.solve_in_place(ColMut::from_slice_mut(u.as_mut_slice())),
+                None => system
+                    .implicit()
+                    .expect("the system's own solves, factored")
+                    .solve(t, u.as_mut_slice())?,
+            }
             if !super::all_finite(u.as_slice()) {
                 return Err(SimulationError::SingularMatrix {
                     t,

@@ -1,6 +1,7 @@
-use nalgebra::Vector2;
+use nalgebra::{DMatrix, Vector2};
 
 use crate::laws::{PenaltyJoint, TorsionSpring};
+use crate::planar::Rotation;
 
 /// How a track loop is closed (spec §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -117,6 +118,48 @@ impl TreeDescription {
     /// Whether the tree has no bodies.
     pub fn is_empty(&self) -> bool {
         self.bodies.is_empty()
+    }
+
+    /// The velocity transform `H` at the bodies' rotations `rotations`
+    /// (one per body) into `out` (`3 · bodies × (bodies + 2)`), rows
+    /// `(ẋ, ẏ, ω)` per body, so that a body's absolute velocity is its
+    /// rows times `q̇_i` (eqs. (6), (9)): its lever `∂Rᵇ/∂θₖ` on every
+    /// angle `k` is `A_θᵏ (ūₖ(toward b) − ūₖ(self))` for an ancestor `k`
+    /// and `−A_θᵇ ūᵇ` for `b` itself.
+    ///
+    /// # Panics
+    /// If `rotations` is not one per body or `out` not of that shape (a
+    /// programming error).
+    pub fn velocity_transform(&self, rotations: &[Rotation], out: &mut DMatrix<f64>) {
+        let bodies = &self.bodies;
+        let m = bodies.len();
+        assert_eq!(rotations.len(), m, "one rotation per body");
+        assert_eq!(
+            out.shape(),
+            (3 * m, m + 2),
+            "H is 3 rows per body by the dof"
+        );
+        let perp = |v: Vector2<f64>| Vector2::new(-v.y, v.x);
+        out.fill(0.0);
+        for b in 0..m {
+            out[(3 * b, 0)] = 1.0;
+            out[(3 * b + 1, 1)] = 1.0;
+            out[(3 * b + 2, 2 + b)] = 1.0;
+            // Walk up: body c (on the path) hangs from its parent p at p's
+            // `at_parent` of c, and c's own `at_self`.
+            let own = -perp(rotations[b].apply(bodies[b].at_self));
+            out[(3 * b, 2 + b)] += own.x;
+            out[(3 * b + 1, 2 + b)] += own.y;
+            let mut c = b;
+            while let Some(p) = bodies[c].parent {
+                let toward = rotations[p].apply(bodies[c].at_parent);
+                let own = rotations[p].apply(bodies[p].at_self);
+                let lever = perp(toward - own);
+                out[(3 * b, 2 + p)] += lever.x;
+                out[(3 * b + 1, 2 + p)] += lever.y;
+                c = p;
+            }
+        }
     }
 
     /// Number of recursive coordinates, `bodies + 2`.

@@ -111,6 +111,38 @@ impl Drive {
         Ok(())
     }
 
+    /// The first derivatives of [`torque`](Self::torque)'s torque and
+    /// integral rate with respect to the sprocket's speed `ω` and the
+    /// controller's integral `s`, at the same arguments: a speed drive's
+    /// `∂τ/∂ω = −P`, `∂τ/∂s = I`, `∂ṡ/∂ω = −1`, zero where the torque is
+    /// at its limit (the integral then held); zero for a torque schedule
+    /// and a free sprocket.
+    pub fn slopes(&self, t: f64, omega: f64, radius: f64, state: f64) -> DriveSlopes {
+        let Drive::Speed {
+            proportional,
+            integral,
+            ..
+        } = self
+        else {
+            return DriveSlopes::default();
+        };
+        let demand = self.demand(t);
+        let (torque, _) = self.respond(demand, omega, radius, state);
+        let error = -demand / radius - omega;
+        let wanted = proportional * error + integral * state;
+        let limited = torque != wanted;
+        // As `respond` holds the integral.
+        let held = limited && wanted.signum() == error.signum();
+        DriveSlopes {
+            torque: if limited {
+                [0.0, 0.0]
+            } else {
+                [-proportional, *integral]
+            },
+            rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
+        }
+    }
+
     /// The target speed (m/s) or the scheduled torque (N m) at `t`.
     fn demand(&self, t: f64) -> f64 {
         match self {
@@ -167,4 +199,14 @@ impl std::fmt::Debug for Drive {
                 .finish_non_exhaustive(),
         }
     }
+}
+
+/// [`Drive::slopes`]: the drive's torque and its controller's integral
+/// rate to first order.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DriveSlopes {
+    /// `(∂τ/∂ω, ∂τ/∂s)`: N m s/rad, N m/rad.
+    pub torque: [f64; 2],
+    /// `(∂ṡ/∂ω, ∂ṡ/∂s)`: 1, 1/s.
+    pub rate: [f64; 2],
 }

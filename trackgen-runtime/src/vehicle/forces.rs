@@ -240,3 +240,54 @@ pub(super) fn respond<const DC: usize>(
     }
     Ok(())
 }
+
+/// Stage 3 to first order, on rigid ground: every contact's Jacobian
+/// ([`ContactJacobian`], the derivatives of its loads on both bodies and
+/// of its deflection's rate over the two bodies' states and the
+/// deflection) into `work.jacobians`, one per contact in
+/// `work.contacts`'s order, at the state the last [`detect`] saw. The
+/// deflections are `tangential` in units of `scale` m
+/// ([`stiction_scale`]); the column and row of the deflection stay in
+/// metres.
+pub(super) fn linearise(
+    work: &mut Workspace,
+    config: &VehicleConfig,
+    geometry: &Geometry,
+    sprocket: Option<Sprocket>,
+    (points, tangential, scale): (usize, &[f64], f64),
+) {
+    let Workspace {
+        links,
+        parts,
+        contacts,
+        jacobians,
+        ..
+    } = work;
+    jacobians.clear();
+    let sprocket_body = sprocket.map(|s| s.body);
+    for contact in contacts.iter() {
+        let link = &links[contact.link];
+        let jacobian = match contact.other {
+            None => {
+                let slot = contact.link * points + contact.feature;
+                let z = tangential.get(slot).map_or(0.0, |w| w * scale);
+                let tangent = ground::tangent(&config.terrain, contact);
+                config.ground.linearise(contact, z, &tangent, link)
+            }
+            Some(body) if Some(body) == sprocket_body => {
+                let part = &parts[body];
+                let profile = &geometry.sprocket;
+                let tangent = sprocket::tangent(contact, link, part, profile, &geometry.shoe);
+                config
+                    .sprocket
+                    .linearise(contact, &tangent, link, Some(part))
+            }
+            Some(body) => {
+                let part = &parts[body];
+                let tangent = wheel::tangent(contact, link, part, &geometry.shoe);
+                config.wheels.linearise(contact, &tangent, link, Some(part))
+            }
+        };
+        jacobians.push(jacobian);
+    }
+}

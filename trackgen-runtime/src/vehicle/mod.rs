@@ -19,6 +19,7 @@ mod drive;
 mod error;
 mod fitted;
 mod forces;
+mod implicit;
 mod layout;
 mod record;
 mod system;
@@ -26,7 +27,7 @@ mod workspace;
 
 pub use config::VehicleConfig;
 pub use declared::{Geometry, Vehicle, VehicleDynamics, build};
-pub use drive::{Drive, DriveError};
+pub use drive::{Drive, DriveError, DriveSlopes};
 pub use error::{BuildError, ConfigError};
 pub use fitted::{
     BEARING_BAND, ContactFit, ContactLawSet, DeclaredContact, DeclaredPair, GROUND_DAMPING_RATIO,

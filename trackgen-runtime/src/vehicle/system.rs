@@ -5,6 +5,7 @@
 use nalgebra::{DVector, SVector, Vector2};
 
 use super::forces::{self, Sprocket};
+use super::implicit::{Implicit, Offsets, Setting};
 use super::record::{VehicleRecord, sprocket_spans};
 use super::workspace::Workspace;
 use super::{
@@ -17,7 +18,7 @@ use crate::contact::soft_ground::{Rut, SoftGround};
 use crate::contact::sprocket::{pitch_radius, rolling_radius};
 use crate::contact::{BodyState, GroundFriction};
 use crate::error::SimulationError;
-use crate::integrate::OdeSystem;
+use crate::integrate::{ImplicitSolve, OdeSystem};
 use crate::model::{ChassisModel, ChassisPart, PartKind, TrackModel, TreeDescription};
 use crate::system::{Pair, Simulated, TrackSystem, TreeSystem};
 
@@ -53,6 +54,9 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     forward_joints: Vec<Vector2<f64>>,
     /// What an evaluation works in, allocated once.
     work: Workspace,
+    /// The linearly implicit integrator's own solves
+    /// ([`ImplicitSolve`]), made at their first use.
+    implicit: Option<Implicit>,
     y0: DVector<f64>,
 }
 
@@ -158,6 +162,7 @@ where
             stiction_scale,
             forward_joints,
             work: Workspace::new(T::BODIES, C::BODIES, tangential_states),
+            implicit: None,
             y0,
         })
     }
@@ -456,6 +461,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         )
     }
 
+    /// The vehicle's own solves on rigid ground with its track closed by
+    /// partitioning (the declared way); on soft soil, or closed another
+    /// way, the integrator's dense Jacobian.
+    fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
+        let own = self.soil.is_none() && self.track().dependent_pair().is_some();
+        own.then_some(self as &mut dyn ImplicitSolve)
+    }
+
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let (_, qdc) = self.evaluate(t, y)?;
         let nb = self.bodies.dimension();
@@ -472,6 +485,115 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         extra[MOTOR_WORK] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
         extra[DISSIPATED] = books.dissipation + self.track().closure_energy(qt, qdt).1;
         extra[EXTRA_STATES..].copy_from_slice(&self.work.tangential_rate);
+        Ok(())
+    }
+}
+
+impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> ImplicitSolve
+    for VehicleSystem<T, DT, C, DC>
+{
+    /// The force elements' Jacobians at `(t, y)` ([`forces::linearise`]),
+    /// with the chassis' mass matrix and velocity transform and the
+    /// track's dependent pair: the vehicle's `W` (see [`Implicit`]).
+    fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
+        let (qc, qdc) = self.evaluate(t, y)?;
+        let (_, [integral, ..], tangential) = self.split(y);
+        let points = self.geometry.shoe.ground_points.len();
+        forces::linearise(
+            &mut self.work,
+            &self.config,
+            &self.geometry,
+            self.sprocket,
+            (points, tangential, self.stiction_scale),
+        );
+        let Some(pair) = self.track().dependent_pair() else {
+            return Err(SimulationError::SingularMatrix {
+                t,
+                what: "the vehicle's own W (its track is not closed by partitioning)",
+            });
+        };
+        let mut chassis_mass = nalgebra::SMatrix::<f64, DC, DC>::zeros();
+        self.chassis().model().mass_matrix(&qc, &mut chassis_mass);
+        let rotations: Vec<crate::planar::Rotation> = self
+            .work
+            .part_trig
+            .iter()
+            .map(|&t| crate::planar::Rotation::from_sin_cos(t))
+            .collect();
+        let drive = self.sprocket.map(|s| {
+            let slopes = self
+                .config
+                .drive
+                .slopes(t, s.omega(&qdc), s.rolling_radius, integral);
+            (s.body, slopes)
+        });
+        let relaxation = match (&self.soil, self.config.ground.friction) {
+            (None, GroundFriction::Stiction(stiction)) => Some(stiction.relax_slopes().rate[0]),
+            _ => None,
+        };
+        let nb = self.bodies.dimension();
+        // Partitioned: the track integrates all but the dependent pair.
+        let nt = DT - 2;
+        let implicit = match &mut self.implicit {
+            Some(implicit) => implicit,
+            slot => slot.insert(
+                Implicit::new(
+                    &self.bodies.first().model().description(),
+                    &self.bodies.second().model().description(),
+                    Offsets {
+                        track: 0,
+                        chassis: 2 * nt,
+                        integral: nb + INTEGRAL,
+                        tangential: nb + EXTRA_STATES,
+                    },
+                )
+                .ok_or(SimulationError::SingularMatrix {
+                    t,
+                    what: "the vehicle's own W (its track is not a loop)",
+                })?,
+            ),
+        };
+        let (_, _, trig) = self.bodies.first().recovered();
+        implicit
+            .linearise(
+                &self.work.contacts,
+                &self.work.jacobians,
+                &Setting {
+                    trig,
+                    pair: [pair[0] - 1, pair[1] - 1],
+                    rotations: &rotations,
+                    chassis_mass: chassis_mass.as_slice(),
+                    arms: &self.config.arms,
+                    drive,
+                    points: (points, self.stiction_scale, &self.work.ground_normal),
+                    relaxation,
+                },
+            )
+            .map_err(|source| SimulationError::Dynamics { t, source })
+    }
+
+    fn factor(&mut self, t: f64, a: f64) -> Result<(), SimulationError> {
+        let implicit = self
+            .implicit
+            .as_mut()
+            .ok_or(SimulationError::SingularMatrix {
+                t,
+                what: "the vehicle's own W (factored before it was linearised)",
+            })?;
+        implicit
+            .factor(a)
+            .map_err(|source| SimulationError::Dynamics { t, source })
+    }
+
+    fn solve(&mut self, t: f64, b: &mut [f64]) -> Result<(), SimulationError> {
+        let implicit = self
+            .implicit
+            .as_mut()
+            .ok_or(SimulationError::SingularMatrix {
+                t,
+                what: "the vehicle's own W (solved before it was linearised)",
+            })?;
+        implicit.solve(b);
         Ok(())
     }
 }

@@ -5,7 +5,7 @@
 use nalgebra::{SVector, Vector2};
 
 use super::forces::Books;
-use crate::contact::{BodyState, Contact};
+use crate::contact::{BodyState, Contact, ContactJacobian};
 use crate::model::{BodyLoad, RecursiveModel};
 
 /// The buffers of an evaluation, filled stage by stage.
@@ -23,6 +23,9 @@ pub(super) struct Workspace {
     /// Every contact found (detection), in order: the ground's, then each
     /// part's in the order of the chassis' parts.
     pub contacts: Vec<Contact>,
+    /// Every contact's Jacobian, in the order of `contacts`, when the
+    /// evaluation was linearised ([`forces::linearise`](super::forces::linearise)).
+    pub jacobians: Vec<ContactJacobian>,
     /// The loads on the links (force elements).
     pub track_loads: Vec<BodyLoad>,
     /// The loads on the chassis bodies.
@@ -56,6 +59,7 @@ impl Workspace {
             positions: vec![Vector2::zeros(); largest],
             velocities: vec![Vector2::zeros(); largest],
             contacts: Vec::with_capacity(8 * links),
+            jacobians: Vec::new(),
             track_loads: vec![BodyLoad::ZERO; links],
             chassis_loads: vec![BodyLoad::ZERO; bodies],
             tangential_rate: vec![0.0; tangential],

@@ -93,32 +93,10 @@ impl TreeTangent {
         }
     }
 
-    /// The lever `∂Rᵇ/∂θₖ` of every body `b` (rows) for every angle `k`:
-    /// `A_θᵏ (ūₖ(toward b) − ūₖ(self))` for an ancestor `k`, `−A_θᵇ ūᵇ` for
-    /// `b` itself, as the `(x, y)` rows of `H`.
+    /// `H` at the factored rotations ([`TreeDescription::velocity_transform`]).
     fn velocity_transform(&mut self) {
-        let bodies = &self.description.bodies;
-        let m = bodies.len();
-        self.h.fill(0.0);
-        for b in 0..m {
-            self.h[(3 * b, 0)] = 1.0;
-            self.h[(3 * b + 1, 1)] = 1.0;
-            self.h[(3 * b + 2, 2 + b)] = 1.0;
-            // Walk up: body c (on the path) hangs from its parent p at p's
-            // `at_parent` of c, and c's own `at_self`.
-            let own = -perp(self.rotation[b].apply(bodies[b].at_self));
-            self.h[(3 * b, 2 + b)] += own.x;
-            self.h[(3 * b + 1, 2 + b)] += own.y;
-            let mut c = b;
-            while let Some(p) = bodies[c].parent {
-                let toward = self.rotation[p].apply(bodies[c].at_parent);
-                let own = self.rotation[p].apply(bodies[p].at_self);
-                let lever = perp(toward - own);
-                self.h[(3 * b, 2 + p)] += lever.x;
-                self.h[(3 * b + 1, 2 + p)] += lever.y;
-                c = p;
-            }
-        }
+        self.description
+            .velocity_transform(&self.rotation, &mut self.h);
     }
 
     /// Each body's absolute acceleration at fixed `q̈_i` from the velocity

@@ -1,0 +1,575 @@
+//! A vehicle's own linear solves for a linearly implicit integrator
+//! ([`ImplicitSolve`](crate::integrate::ImplicitSolve)): `(I − a W) k = r`,
+//! `a = γ h`, for the matrix `W` made of the force elements' exact
+//! Jacobians through the mass matrix, in O(n) per solve.
+//!
+//! The state is the bodies' coordinates `q` (under partitioning, the
+//! track's independent ones `z`), their rates `v`, the drive's integral
+//! `s`, the books and the ground points' deflections `w`. `W` keeps the
+//! kinematic rows exactly (`q̇ = v`) and, for the accelerations, every
+//! force element's derivatives through the inverse mass matrix:
+//! `M⁻¹ (K, C, F_w, F_s)` with `K = ∂F/∂q`, `C = ∂F/∂v` of the contacts
+//! (their own [`ContactJacobian`](crate::contact::ContactJacobian)s), the
+//! arms' springs and dampers, the drive; the deflections' and the
+//! integral's rows are theirs exactly. It leaves out the derivatives of
+//! `M` and of the velocity terms (the inertia's share of the Jacobian,
+//! whose frequencies are the bodies' rotation rates, far from stiff), and
+//! the books (quadratures). A Rosenbrock-W method keeps its order for any
+//! `W`; this one holds what is stiff: contact friction and damping, the
+//! drive's gain, contact stiffness.
+//!
+//! Eliminating `k_q = r_q + a k_v` and the deflections' and integral's
+//! increments (each local to one link, or to the drive) leaves the
+//! velocity increments `x` of every body:
+//!
+//! ```text
+//! (M − a C − a² K − …) x = M r_v + a K r_q + …
+//! ```
+//!
+//! In the bodies' absolute coordinates the matrix is the masses plus a
+//! 3 × 3 block per contact: the ground's on its link alone, a rim's or a
+//! tooth's between a link and a chassis body. The track's part, with the
+//! loop's constraint, is [`ShiftedChain`]'s O(n) solve; the chassis'
+//! (a dozen coordinates) is dense, and the two meet through the rims and
+//! teeth by a Schur complement on the chassis: one chain solve per chassis
+//! coordinate when factored, two chain-sized sweeps per solve.
+
+use std::ops::AddAssign;
+
+use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
+
+use super::drive::DriveSlopes;
+use crate::DynamicsError;
+use crate::contact::ContactJacobian;
+use crate::contact::tangent::{DEFLECTION, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
+use crate::dynamics::ShiftedChain;
+use crate::model::{ArmSpring, TreeDescription};
+use crate::planar::Rotation;
+
+/// `⟂v`.
+#[inline]
+fn perp(v: Vector2<f64>) -> Vector2<f64> {
+    Vector2::new(-v.y, v.x)
+}
+
+/// A 3 × 3 block of a contact Jacobian's rows `rows` (a 3-row load) at
+/// columns `column..column + 3`.
+#[inline]
+fn block(rows: &crate::contact::tangent::Rows3, column: usize) -> Matrix3<f64> {
+    rows.fixed_view::<3, 3>(0, column).into_owned()
+}
+
+/// A rim's or tooth's coupling of link `link` and chassis body `body`:
+/// the link's load's derivatives with the body's pose and rates, and the
+/// body's with the link's.
+#[derive(Debug, Clone, Copy)]
+struct Coupling {
+    link: usize,
+    body: usize,
+    link_by_pose: Matrix3<f64>,
+    link_by_rate: Matrix3<f64>,
+    body_by_pose: Matrix3<f64>,
+    body_by_rate: Matrix3<f64>,
+}
+
+/// A ground point's deflection state `w` (index into the tangential
+/// states): touching, its link and the terms that tie the two; lifted,
+/// only its relaxation.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    state: usize,
+    /// `∂ẇ/∂w`.
+    by_self: f64,
+    /// Touching: the link, `∂F_link/∂w` and `∂ẇ/∂(link pose)`, `∂ẇ/∂(link rates)`.
+    link: Option<(usize, Vector3<f64>, Vector3<f64>, Vector3<f64>)>,
+}
+
+/// What the vehicle gives at a linearisation, besides its contacts.
+pub(super) struct Setting<'a> {
+    /// Every link's `(sin θ, cos θ)`.
+    pub trig: &'a [(f64, f64)],
+    /// The dependent pair of links (0-based).
+    pub pair: [usize; 2],
+    /// Every chassis body's rotation.
+    pub rotations: &'a [Rotation],
+    /// The chassis' mass matrix `M_i` at the state.
+    pub chassis_mass: &'a [f64],
+    /// The arms' springs.
+    pub arms: &'a [ArmSpring],
+    /// The drive's sprocket body and its slopes.
+    pub drive: Option<(usize, DriveSlopes)>,
+    /// The ground points per link, the deflections' unit (m) and which
+    /// points touch (their normal force; empty without deflection
+    /// states).
+    pub points: (usize, f64, &'a [Option<f64>]),
+    /// `∂ż/∂z` of a lifted point's relaxing deflection, with stiction.
+    pub relaxation: Option<f64>,
+}
+
+/// Where the parts of the vehicle's state sit: the track's integrated
+/// coordinates (`n`) and rates, the chassis' (`DC`) and rates, the
+/// integral, the books, the deflections.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Offsets {
+    pub track: usize,
+    pub chassis: usize,
+    pub integral: usize,
+    pub tangential: usize,
+}
+
+/// The vehicle's `W`, linearised at a state and factored for a shift `a`.
+pub(super) struct Implicit {
+    chain: ShiftedChain,
+    /// `(ū1, ū2)` of every link.
+    joints: Vec<(Vector2<f64>, Vector2<f64>)>,
+    /// `d̄ʲ` of every link.
+    spans: Vec<Vector2<f64>>,
+    /// Every link's `diag(m, m, J)`.
+    link_mass: Vec<Vector3<f64>>,
+    chassis: TreeDescription,
+    /// `DC`.
+    dof: usize,
+    offsets: Offsets,
+
+    // The linearisation.
+    trig: Vec<(f64, f64)>,
+    pair: [usize; 2],
+    independent: Vec<usize>,
+    /// `C_d⁻¹` of the dependent pair.
+    dependent_inverse: Matrix2<f64>,
+    /// `A_θ ū1`, `A_θ ū2` and `A_θ d̄` of every link.
+    levers: Vec<(Vector2<f64>, Vector2<f64>, Vector2<f64>)>,
+    link_by_pose: Vec<Matrix3<f64>>,
+    link_by_rate: Vec<Matrix3<f64>>,
+    body_by_pose: Vec<Matrix3<f64>>,
+    body_by_rate: Vec<Matrix3<f64>>,
+    couplings: Vec<Coupling>,
+    points: Vec<Point>,
+    chassis_mass: DMatrix<f64>,
+    /// The chassis' velocity transform, rows `(ẋ, ẏ, ω)` per body.
+    h: DMatrix<f64>,
+    /// `(body, ∂τ/∂φ, ∂τ/∂φ̇)` of every arm.
+    arms: Vec<(usize, f64, f64)>,
+    drive: Option<(usize, DriveSlopes)>,
+
+    // The factorisation.
+    shift: f64,
+    blocks: Vec<Matrix3<f64>>,
+    schur: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
+    /// `T⁻¹ E_tc H_c`: every link's increment per chassis coordinate.
+    coupled: Vec<Vec<Vector3<f64>>>,
+
+    // Scratch of a solve.
+    loads: Vec<Vector3<f64>>,
+    track_q: Vec<Vector3<f64>>,
+    track_v: Vec<Vector3<f64>>,
+    x: Vec<Vector3<f64>>,
+    full: Vec<f64>,
+    chassis_rhs: DVector<f64>,
+    body_q: Vec<Vector3<f64>>,
+}
+
+impl Implicit {
+    /// The operator of a vehicle whose track is `track` (a loop closed by
+    /// partitioning) and chassis `chassis`, its state laid out as
+    /// `offsets` says. `None` for a track that is not a loop.
+    pub fn new(
+        track: &TreeDescription,
+        chassis: &TreeDescription,
+        offsets: Offsets,
+    ) -> Option<Self> {
+        let chain = ShiftedChain::new(track)?;
+        let joints = track.joints()?;
+        let n = joints.len();
+        let m = chassis.len();
+        let dof = m + 2;
+        Some(Implicit {
+            chain,
+            spans: joints.iter().map(|(u1, u2)| u2 - u1).collect(),
+            joints,
+            link_mass: track
+                .bodies
+                .iter()
+                .map(|b| Vector3::new(b.mass, b.mass, b.inertia))
+                .collect(),
+            chassis: chassis.clone(),
+            dof,
+            offsets,
+            trig: vec![(0.0, 1.0); n],
+            pair: [0, 1],
+            independent: Vec::with_capacity(n),
+            dependent_inverse: Matrix2::identity(),
+            levers: vec![(Vector2::zeros(), Vector2::zeros(), Vector2::zeros()); n],
+            link_by_pose: vec![Matrix3::zeros(); n],
+            link_by_rate: vec![Matrix3::zeros(); n],
+            body_by_pose: vec![Matrix3::zeros(); m],
+            body_by_rate: vec![Matrix3::zeros(); m],
+            couplings: Vec::new(),
+            points: Vec::new(),
+            chassis_mass: DMatrix::zeros(dof, dof),
+            h: DMatrix::zeros(3 * m, dof),
+            arms: Vec::new(),
+            drive: None,
+            shift: f64::NAN,
+            blocks: vec![Matrix3::zeros(); n],
+            schur: None,
+            coupled: vec![vec![Vector3::zeros(); n]; dof],
+            loads: vec![Vector3::zeros(); n],
+            track_q: vec![Vector3::zeros(); n],
+            track_v: vec![Vector3::zeros(); n],
+            x: vec![Vector3::zeros(); n],
+            full: vec![0.0; n + 2],
+            chassis_rhs: DVector::zeros(dof),
+            body_q: vec![Vector3::zeros(); m],
+        })
+    }
+
+    /// Takes the linearisation: the contacts `contacts` (their link and
+    /// other body) with their Jacobians `jacobians`, and `setting`.
+    pub fn linearise(
+        &mut self,
+        contacts: &[crate::contact::Contact],
+        jacobians: &[ContactJacobian],
+        setting: &Setting<'_>,
+    ) -> Result<(), DynamicsError> {
+        let n = self.joints.len();
+        self.trig.copy_from_slice(setting.trig);
+        self.pair = setting.pair;
+        self.independent.clear();
+        self.independent
+            .extend((0..n + 2).filter(|&c| c < 2 || !setting.pair.contains(&(c - 2))));
+        for (i, lever) in self.levers.iter_mut().enumerate() {
+            let rotation = Rotation::from_sin_cos(self.trig[i]);
+            let (u1, u2) = self.joints[i];
+            *lever = (
+                perp(rotation.apply(u1)),
+                perp(rotation.apply(u2)),
+                perp(rotation.apply(self.spans[i])),
+            );
+        }
+        let [k, l] = self.pair;
+        let dependent = Matrix2::from_columns(&[self.levers[k].2, self.levers[l].2]);
+        self.dependent_inverse = dependent
+            .try_inverse()
+            .ok_or(DynamicsError::SingularClosure)?;
+        for m in [
+            &mut self.link_by_pose,
+            &mut self.link_by_rate,
+            &mut self.body_by_pose,
+            &mut self.body_by_rate,
+        ] {
+            m.iter_mut().for_each(|b| *b = Matrix3::zeros());
+        }
+        self.couplings.clear();
+        self.points.clear();
+        let (per_link, unit, touching) = setting.points;
+        // The points touching the ground, from their contacts; the rest
+        // relax (stiction) or carry nothing (no states).
+        for (contact, jacobian) in contacts.iter().zip(jacobians) {
+            let i = contact.link;
+            self.link_by_pose[i] += block(&jacobian.link, LINK_POSE);
+            self.link_by_rate[i] += block(&jacobian.link, LINK_RATE);
+            match contact.other {
+                Some(body) => {
+                    self.body_by_pose[body] += block(&jacobian.other, OTHER_POSE);
+                    self.body_by_rate[body] += block(&jacobian.other, OTHER_RATE);
+                    self.couplings.push(Coupling {
+                        link: i,
+                        body,
+                        link_by_pose: block(&jacobian.link, OTHER_POSE),
+                        link_by_rate: block(&jacobian.link, OTHER_RATE),
+                        body_by_pose: block(&jacobian.other, LINK_POSE),
+                        body_by_rate: block(&jacobian.other, LINK_RATE),
+                    });
+                }
+                None if !touching.is_empty() => {
+                    let state = i * per_link + contact.feature;
+                    // In the state's unit: w = z / unit.
+                    let by_state = jacobian.link.column(DEFLECTION) * unit;
+                    let rate = &jacobian.rate;
+                    self.points.push(Point {
+                        state,
+                        by_self: rate[DEFLECTION],
+                        link: Some((
+                            i,
+                            by_state.into_owned(),
+                            Vector3::new(rate[LINK_POSE], rate[LINK_POSE + 1], rate[LINK_POSE + 2])
+                                / unit,
+                            Vector3::new(rate[LINK_RATE], rate[LINK_RATE + 1], rate[LINK_RATE + 2])
+                                / unit,
+                        )),
+                    });
+                }
+                None => {}
+            }
+        }
+        if let Some(relax) = setting.relaxation {
+            for (state, normal) in touching.iter().enumerate() {
+                if normal.is_none() {
+                    self.points.push(Point {
+                        state,
+                        by_self: relax,
+                        link: None,
+                    });
+                }
+            }
+        }
+        self.chassis_mass.copy_from_slice(setting.chassis_mass);
+        self.chassis
+            .velocity_transform(setting.rotations, &mut self.h);
+        self.arms.clear();
+        self.arms.extend(setting.arms.iter().map(|arm| {
+            let (by_angle, by_rate) = arm.spring.slopes();
+            (arm.body, by_angle, by_rate)
+        }));
+        self.drive = setting.drive;
+        self.shift = f64::NAN;
+        self.schur = None;
+        Ok(())
+    }
+
+    /// Factors `I − a W` for the shift `a = γ h` (s).
+    pub fn factor(&mut self, a: f64) -> Result<(), DynamicsError> {
+        let dof = self.dof;
+        let a2 = a * a;
+        for (i, x) in self.blocks.iter_mut().enumerate() {
+            *x = Matrix3::from_diagonal(&self.link_mass[i])
+                - self.link_by_rate[i] * a
+                - self.link_by_pose[i] * a2;
+        }
+        // A touching point's deflection, eliminated: its increment
+        // `k_w = (r_w + a ∂ẇ/∂q k_q + a ∂ẇ/∂v x)/(1 − a ∂ẇ/∂w)` with
+        // `k_q = u_q + a x` feeds `a F_w k_w` back into its link.
+        for point in &self.points {
+            if let Some((i, by_state, by_pose, by_rate)) = point.link {
+                let gain = a / (1.0 - a * point.by_self);
+                self.blocks[i] -= by_state * (by_pose * a + by_rate).transpose() * (a * gain);
+            }
+        }
+        self.chain
+            .factor(&self.trig, &self.blocks)
+            .map_err(|_| DynamicsError::SingularClosure)?;
+        // The chassis: M − Hᵀ(a C + a² K)H, the arms, the drive.
+        let mut schur = self.chassis_mass.clone();
+        let m = self.chassis.len();
+        for b in 0..m {
+            let stiff = self.body_by_rate[b] * a + self.body_by_pose[b] * a2;
+            if stiff == Matrix3::zeros() {
+                continue;
+            }
+            let hb = self.h.rows(3 * b, 3);
+            schur -= hb.transpose() * stiff * hb;
+        }
+        for &(body, by_angle, by_rate) in &self.arms {
+            let weight = -(a * by_rate + a2 * by_angle);
+            add_relative(&mut schur, body, weight);
+        }
+        if let Some((body, slopes)) = self.drive {
+            let [torque_by_speed, torque_by_integral] = slopes.torque;
+            let [rate_by_speed, rate_by_integral] = slopes.rate;
+            let weight = -a * torque_by_speed
+                - a * torque_by_integral * a * rate_by_speed / (1.0 - a * rate_by_integral);
+            add_relative(&mut schur, body, weight);
+        }
+        // The track's answer to every chassis coordinate, through the rims
+        // and teeth: `Z = T⁻¹ E_tc H_c`, and `S = K_cc − H_cᵀ E_ct Z`.
+        for j in 0..dof {
+            self.loads.iter_mut().for_each(|f| *f = Vector3::zeros());
+            let mut any = false;
+            for c in &self.couplings {
+                let column = self.h.fixed_view::<3, 1>(3 * c.body, j).into_owned();
+                if column == Vector3::zeros() {
+                    continue;
+                }
+                any = true;
+                let e = -(c.link_by_rate * a + c.link_by_pose * a2);
+                self.loads[c.link] += e * column;
+            }
+            let z = &mut self.coupled[j];
+            if !any {
+                z.iter_mut().for_each(|x| *x = Vector3::zeros());
+                continue;
+            }
+            self.chain.solve(&self.loads, z);
+            for c in &self.couplings {
+                let e = -(c.body_by_rate * a + c.body_by_pose * a2);
+                let back = e * z[c.link];
+                let hb = self.h.rows(3 * c.body, 3);
+                let column = hb.transpose() * back;
+                for r in 0..dof {
+                    schur[(r, j)] -= column[r];
+                }
+            }
+        }
+        let lu = schur.lu();
+        if !lu.is_invertible() {
+            return Err(DynamicsError::SingularClosure);
+        }
+        self.schur = Some(lu);
+        self.shift = a;
+        Ok(())
+    }
+
+    /// The track's independent increments `z` (its integrated
+    /// coordinates, or rates) as every link's absolute increment `(x, y,
+    /// θ)`: the dependent pair from `C_q δq = 0`, then the velocity
+    /// transform's running sum (eq. (4) differentiated).
+    fn track_increments(&mut self, z: &[f64], out: &mut [Vector3<f64>]) {
+        let full = &mut self.full;
+        for (&c, &v) in self.independent.iter().zip(z) {
+            full[c] = v;
+        }
+        let [k, l] = self.pair;
+        full[2 + k] = 0.0;
+        full[2 + l] = 0.0;
+        let moved: Vector2<f64> = self
+            .levers
+            .iter()
+            .enumerate()
+            .map(|(j, lever)| lever.2 * full[2 + j])
+            .sum();
+        let dependent = -(self.dependent_inverse * moved);
+        full[2 + k] = dependent.x;
+        full[2 + l] = dependent.y;
+        let mut position = Vector2::new(full[0], full[1]);
+        let n = out.len();
+        for i in 0..n {
+            let angle = full[2 + i];
+            if i > 0 {
+                position -= self.levers[i].0 * angle;
+            }
+            out[i] = Vector3::new(position.x, position.y, angle);
+            position += self.levers[i].1 * angle;
+        }
+    }
+
+    /// Solves `(I − a W) k = r` in place (`r` the whole state's length),
+    /// with the factorisation of [`factor`](Self::factor).
+    ///
+    /// # Panics
+    /// If not factored (a programming error).
+    pub fn solve(&mut self, r: &mut [f64]) {
+        let a = self.shift;
+        let dof = self.dof;
+        let Offsets {
+            track,
+            chassis,
+            integral,
+            tangential,
+        } = self.offsets;
+        let nt = self.independent.len();
+        let n = self.joints.len();
+        let mut track_q = std::mem::take(&mut self.track_q);
+        let mut track_v = std::mem::take(&mut self.track_v);
+        self.track_increments(&r[track..track + nt], &mut track_q);
+        self.track_increments(&r[track + nt..track + 2 * nt], &mut track_v);
+        let (r_qc, r_vc) = (
+            DVector::from_column_slice(&r[chassis..chassis + dof]),
+            DVector::from_column_slice(&r[chassis + dof..chassis + 2 * dof]),
+        );
+        let hq = &self.h * &r_qc;
+        for (b, q) in self.body_q.iter_mut().enumerate() {
+            *q = Vector3::new(hq[3 * b], hq[3 * b + 1], hq[3 * b + 2]);
+        }
+        // The links' loads: M u_v + a K u_q (own and coupled), the
+        // deflections' share.
+        for i in 0..n {
+            self.loads[i] = track_v[i].component_mul(&self.link_mass[i])
+                + self.link_by_pose[i] * track_q[i] * a;
+        }
+        for c in &self.couplings {
+            self.loads[c.link] += c.link_by_pose * self.body_q[c.body] * a;
+        }
+        for point in &self.points {
+            let denominator = 1.0 - a * point.by_self;
+            if let Some((i, by_state, by_pose, _)) = point.link {
+                let free =
+                    (r[tangential + point.state] + a * by_pose.dot(&track_q[i])) / denominator;
+                self.loads[i] += by_state * (a * free);
+            }
+        }
+        // The chassis' right side: M r_v + Hᵀ a K u_q, the arms, the drive.
+        let mut g = &self.chassis_mass * &r_vc;
+        let m = self.chassis.len();
+        let mut forces = DVector::zeros(3 * m);
+        for b in 0..m {
+            let f = self.body_by_pose[b] * self.body_q[b] * a;
+            forces.fixed_rows_mut::<3>(3 * b).add_assign(&f);
+        }
+        for c in &self.couplings {
+            let f = c.body_by_pose * track_q[c.link] * a;
+            forces.fixed_rows_mut::<3>(3 * c.body).add_assign(&f);
+        }
+        for &(body, by_angle, _) in &self.arms {
+            let phi = r_qc[2 + body] - r_qc[2];
+            g[2 + body] += a * by_angle * phi;
+            g[2] -= a * by_angle * phi;
+        }
+        if let Some((body, slopes)) = self.drive {
+            let [_, torque_by_integral] = slopes.torque;
+            let [_, rate_by_integral] = slopes.rate;
+            let push = a * torque_by_integral * r[integral] / (1.0 - a * rate_by_integral);
+            g[2 + body] += push;
+            g[2] -= push;
+        }
+        // The track without the chassis' answer, and what it does to the
+        // chassis through the rims and teeth.
+        let mut x = std::mem::take(&mut self.x);
+        self.chain.solve(&self.loads, &mut x);
+        for c in &self.couplings {
+            let e = -(c.body_by_rate * a + c.body_by_pose * a * a);
+            forces
+                .fixed_rows_mut::<3>(3 * c.body)
+                .add_assign(&(-(e * x[c.link])));
+        }
+        g += self.h.transpose() * forces;
+        let lu = self.schur.as_ref().expect("factored before a solve");
+        let x_c = lu
+            .solve(&g)
+            .unwrap_or_else(|| DVector::from_element(dof, f64::NAN));
+        for (j, z) in self.coupled.iter().enumerate() {
+            for (xi, zi) in x.iter_mut().zip(z) {
+                *xi -= zi * x_c[j];
+            }
+        }
+        // Back to the state's increments.
+        for point in &self.points {
+            let denominator = 1.0 - a * point.by_self;
+            let slot = tangential + point.state;
+            r[slot] = match point.link {
+                Some((i, _, by_pose, by_rate)) => {
+                    (r[slot] + a * by_pose.dot(&(track_q[i] + x[i] * a)) + a * by_rate.dot(&x[i]))
+                        / denominator
+                }
+                None => r[slot] / denominator,
+            };
+        }
+        if let Some((body, slopes)) = self.drive {
+            let [rate_by_speed, rate_by_integral] = slopes.rate;
+            let speed = x_c[2 + body] - x_c[2];
+            r[integral] = (r[integral] + a * rate_by_speed * speed) / (1.0 - a * rate_by_integral);
+        }
+        for (slot, &c) in self.independent.iter().enumerate() {
+            let v = if c < 2 { x[0][c] } else { x[c - 2][2] };
+            r[track + nt + slot] = v;
+            r[track + slot] += a * v;
+        }
+        for j in 0..dof {
+            r[chassis + dof + j] = x_c[j];
+            r[chassis + j] += a * x_c[j];
+        }
+        self.track_q = track_q;
+        self.track_v = track_v;
+        self.x = x;
+    }
+}
+
+/// Adds `weight (e_b − e_0)(e_b − e_0)ᵀ` to a chassis matrix: a law on the
+/// angle of body `body` relative to the frame (coordinate 2).
+fn add_relative(matrix: &mut DMatrix<f64>, body: usize, weight: f64) {
+    let (b, c) = (2 + body, 2);
+    matrix[(b, b)] += weight;
+    matrix[(c, c)] += weight;
+    matrix[(b, c)] -= weight;
+    matrix[(c, b)] -= weight;
+}
