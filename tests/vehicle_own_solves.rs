@@ -11,20 +11,14 @@
 //!   to about 1e-7 of a column's scale; bound 1e-5 of it). `W` is read off
 //!   the solves themselves, `(x(a) − b)/a` at two tiny shifts combined by
 //!   Richardson (`W b + O(a² W³ b)`: 1e-8 relative at `a|λ| ~ 1e-4`).
-//! * **The solve is that W's**, at the shifts a step uses (`a|λ|` up to
-//!   10): `(I − a W) x = b` for random `b`, with `W` read off as above.
-//!   The residual is measured against the largest of its terms (`b`, `x`,
-//!   `a W x`; `x` reaches 10⁴ `|b|` where `b` moves a contact), of which
-//!   it is 1e-9 (`W`'s own error): bound 1e-6.
-//! * **W holds the stiff modes.** At a state driving at 2 m/s the stiffest
-//!   eigenvalues of the right-hand side's Jacobian (central differences,
-//!   every state with dynamics) and of `W`: the five stiffest within 5 %
-//!   (W leaves out only the inertia's derivatives, whose rates are the
-//!   bodies' turning rates, tens per second, against thousands here).
+//! * **Moving, W is the Jacobian but for the inertia's share**, entry by
+//!   entry (see the test for the bound and what is left out).
+//! * **W holds the stiff modes** at a step's shift: the stiffest
+//!   eigenvalues of `W` as a 1 ms step sees it (it turns the joints' rows
+//!   by `a ω`, so it depends on the step) against the Jacobian's.
 
 mod support;
 
-use support::Lcg;
 use trackgen::analysis::state_jacobian;
 use trackgen::contact::Terrain;
 use trackgen::integrate::{ImplicitSolve, Integrator, OdeSystem};
@@ -127,35 +121,58 @@ fn at_rest_w_is_the_jacobian_of_rates_deflections_and_integral() {
     at_rest::<Marder>();
 }
 
-#[test]
-fn the_solve_is_its_own_w_at_a_steps_shift() {
-    let (mut system, t, y) = state::<Marder>(1.5);
+/// `W` as a step of `h` (s) sees it: the solve's map `X = (I − a W)⁻¹`
+/// at `a = γ h`, inverted densely, `W = (I − X⁻¹)/a`.
+fn step_matrix(system: &mut impl OdeSystem, t: f64, y: &[f64], h: f64) -> DMatrix<f64> {
     let n = y.len();
+    let a = 0.435_866_521_508_459 * h;
+    own(system).linearise(t, y).expect("linearises");
+    own(system).factor(t, a).expect("factors");
+    let mut x = DMatrix::zeros(n, n);
+    for j in 0..n {
+        let mut e = vec![0.0; n];
+        e[j] = 1.0;
+        own(system).solve(t, &mut e).expect("solves");
+        x.set_column(j, &DVector::from_vec(e));
+    }
+    let inverse = x.try_inverse().expect("the solve's map is regular");
+    (DMatrix::identity(n, n) - inverse) / a
+}
+
+/// At a state driving at 2 m/s: `W` (at vanishing shift) against the
+/// right-hand side's Jacobian by central differences, every entry but the
+/// books'. `W` leaves out the chassis' geometric stiffness, the loop
+/// constraint's curvature (`δD q̈`, `δκ`) and the inertia's derivatives:
+/// measured, the largest difference is 6.4e-4 of the Jacobian's largest
+/// entry (1.0e4 /s² on a road wheel's own stiffness, 1.1e6; the largest
+/// entry 1.6e7); bound 2e-3, three times that.
+#[test]
+fn moving_w_is_the_jacobian_but_the_inertia_s_share() {
+    let (mut system, t, y) = state::<Marder>(1.5);
+    let layout = system.layout();
+    let states: Vec<usize> = (0..y.len()).filter(|i| !layout.books.contains(i)).collect();
     let w = own_matrix(&mut system, t, y.as_slice(), 1e-9);
-    let mut rng = Lcg::new(5);
-    for a in [1e-5, 1e-4, 1e-3] {
-        own(&mut system).factor(t, a).expect("factors");
-        for _ in 0..3 {
-            let b = DVector::from_fn(n, |_, _| rng.uniform(-1.0, 1.0));
-            let mut x = b.clone();
-            own(&mut system).solve(t, x.as_mut_slice()).expect("solves");
-            let wx = &w * &x * a;
-            let residual = &x - &wx - &b;
-            let scale = b.amax().max(x.amax()).max(wx.amax());
-            println!(
-                "a = {a}: |b| {:.2e}, |x| {:.2e}, |aWx| {:.2e}, residual {:.2e}",
-                b.amax(),
-                x.amax(),
-                wx.amax(),
-                residual.amax()
-            );
-            assert!(
-                residual.amax() <= 1e-6 * scale,
-                "a = {a}: (I − aW) x − b = {:e} against terms of {scale:e}",
-                residual.amax()
-            );
+    let j = state_jacobian(&mut system, t, y.as_slice(), &states).expect("differences");
+    let largest = states
+        .iter()
+        .enumerate()
+        .flat_map(|(c, _)| states.iter().map(move |&r| (r, c)))
+        .map(|(r, c)| j[(r, c)].abs())
+        .fold(0.0, f64::max);
+    let mut worst = (0.0, 0, 0);
+    for (c, &column) in states.iter().enumerate() {
+        for &r in &states {
+            let d = (w[(r, column)] - j[(r, c)]).abs();
+            if d > worst.0 {
+                worst = (d, r, column);
+            }
         }
     }
+    println!(
+        "W against the Jacobian: largest difference {:.3e} (∂f{}/∂y{}) of the largest entry {largest:.3e}",
+        worst.0, worst.1, worst.2
+    );
+    assert!(worst.0 <= 2e-3 * largest);
 }
 
 /// The `count` stiffest eigenvalues (most negative real part first).
@@ -169,11 +186,14 @@ fn stiffest(m: &DMatrix<f64>, count: usize) -> Vec<f64> {
     re
 }
 
+/// At the same state, the stiffest eigenvalues of `W` as a step of 1 ms
+/// sees it (a step of the Marder's main job at 1e-2: 1.8 ms mean) against
+/// the Jacobian's: the five stiffest within 0.5 % (measured 0.04 %).
 #[test]
 fn w_holds_the_stiffest_modes() {
     let (mut system, t, y) = state::<Marder>(1.5);
     let states: Vec<usize> = system.layout().dynamic().collect();
-    let w = own_matrix(&mut system, t, y.as_slice(), 1e-9)
+    let w = step_matrix(&mut system, t, y.as_slice(), 1e-3)
         .select_rows(&states)
         .select_columns(&states);
     let j = state_jacobian(&mut system, t, y.as_slice(), &states)
@@ -183,7 +203,7 @@ fn w_holds_the_stiffest_modes() {
     println!("stiffest eigenvalues (1/s): W {ew:.1?}, the Jacobian {ej:.1?}");
     for (a, b) in ew.iter().zip(&ej) {
         assert!(
-            (a - b).abs() <= 0.05 * b.abs(),
+            (a - b).abs() <= 0.005 * b.abs(),
             "stiffest eigenvalues: W {ew:?}, Jacobian {ej:?}"
         );
     }

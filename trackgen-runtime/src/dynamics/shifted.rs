@@ -33,8 +33,18 @@
 //! coordinates it is `B z` for the independent increments `z` of
 //! partitioning (spec §2), and the projected system `Bᵀ Hᵀ X H B z = Bᵀ Hᵀ f`
 //! is what this solves.
+//!
+//! The joints' rows may also carry the linearised velocity constraint of a
+//! moving chain: a link turned by `δθ` turns its joint levers, so the
+//! joints' relative velocity changes by `−A ū ω δθ` (`∂(A_θ ū)/∂θ = −A ū`).
+//! With `δθ = u + a x_θ` (the position increment), the rows become
+//! `D̃⁺ⱼ xⱼ − D̃⁻ₖ xₖ = cⱼ` with the levers `A_θ ū − a ω A ū` in `D̃` and
+//! `cⱼ` from `u` ([`factor`](ShiftedChain::factor)'s `turning`,
+//! [`solve`](ShiftedChain::solve)'s `joints`): the velocity increments
+//! then include what a turned configuration does to every link's
+//! velocity, which friction's slope multiplies.
 
-use nalgebra::{Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
+use nalgebra::{Matrix2, Matrix2x3, Matrix3, Matrix3x2, Vector2, Vector3};
 
 use crate::DynamicsError;
 use crate::model::TreeDescription;
@@ -46,23 +56,20 @@ fn perp(v: Vector2<f64>) -> Vector2<f64> {
     Vector2::new(-v.y, v.x)
 }
 
-/// `[I₂ | p]`: a joint's constraint row block on a link, `p = A_θ ū`.
-#[inline]
-fn joint_block(p: Vector2<f64>) -> Matrix2x3<f64> {
-    Matrix2x3::new(1.0, 0.0, p.x, 0.0, 1.0, p.y)
-}
-
 /// A closed track's joints with general link blocks, factored for
 /// [`solve`](Self::solve).
 #[derive(Debug, Clone)]
 pub struct ShiftedChain {
     /// `(ū1, ū2)` of every link, its frame.
     joints: Vec<(Vector2<f64>, Vector2<f64>)>,
-    /// `D⁻ᵢ` and `D⁺ᵢ` at the factored state.
-    behind: Vec<Matrix2x3<f64>>,
-    ahead: Vec<Matrix2x3<f64>>,
-    /// `Wᵢ = Xᵢ⁻¹`.
+    /// `A_θ ū1` and `A_θ ū2` of every link at the factored state: its
+    /// joint blocks are `D⁻ = [I₂ | p1]`, `D⁺ = [I₂ | p2]`.
+    levers: Vec<(Vector2<f64>, Vector2<f64>)>,
+    /// The levers of the joints' rows, `D̃` (the levers, turned).
+    row_levers: Vec<(Vector2<f64>, Vector2<f64>)>,
+    /// `Wᵢ = Xᵢ⁻¹`, and `Wᵢ D⁻ᵢᵀ`, `Wᵢ D⁺ᵢᵀ`.
     inverse_blocks: Vec<Matrix3<f64>>,
+    pulls: Vec<(Matrix3x2<f64>, Matrix3x2<f64>)>,
     /// Joint `j`'s coupling to joint `j − 1` (for joint 0, to the closing
     /// joint) and to joint `j + 1` (for the closing joint, to joint 0).
     lower: Vec<Matrix2<f64>>,
@@ -75,8 +82,24 @@ pub struct ShiftedChain {
     /// closing joint's column, and the Schur complement's inverse.
     border: Vec<Matrix2<f64>>,
     schur_inverse: Matrix2<f64>,
-    /// Scratch: the joint forces of a solve.
+    /// Scratch of a solve: `Wᵢ fᵢ` and the joint forces.
+    free: Vec<Vector3<f64>>,
     lambda: Vec<Vector2<f64>>,
+    /// Scratch of [`solve_columns`](Self::solve_columns).
+    free_columns: Vec<f64>,
+    lambda_columns: Vec<f64>,
+}
+
+/// `D v = v_xy + p v_θ` of a joint block `[I₂ | p]`.
+#[inline]
+fn constrain(p: Vector2<f64>, v: &Vector3<f64>) -> Vector2<f64> {
+    Vector2::new(v.x + p.x * v.z, v.y + p.y * v.z)
+}
+
+/// `[I₂ | p]` as a matrix.
+#[inline]
+fn joint_block(p: Vector2<f64>) -> Matrix2x3<f64> {
+    Matrix2x3::new(1.0, 0.0, p.x, 0.0, 1.0, p.y)
 }
 
 impl ShiftedChain {
@@ -87,16 +110,20 @@ impl ShiftedChain {
         let n = joints.len();
         Some(ShiftedChain {
             joints,
-            behind: vec![Matrix2x3::zeros(); n],
-            ahead: vec![Matrix2x3::zeros(); n],
+            levers: vec![(Vector2::zeros(), Vector2::zeros()); n],
+            row_levers: vec![(Vector2::zeros(), Vector2::zeros()); n],
             inverse_blocks: vec![Matrix3::zeros(); n],
+            pulls: vec![(Matrix3x2::zeros(), Matrix3x2::zeros()); n],
             lower: vec![Matrix2::zeros(); n],
             upper: vec![Matrix2::zeros(); n],
             factor: vec![Matrix2::zeros(); n],
             inverse: vec![Matrix2::zeros(); n],
             border: vec![Matrix2::zeros(); n],
             schur_inverse: Matrix2::zeros(),
+            free: vec![Vector3::zeros(); n],
             lambda: vec![Vector2::zeros(); n],
+            free_columns: Vec::new(),
+            lambda_columns: Vec::new(),
         })
     }
 
@@ -106,40 +133,56 @@ impl ShiftedChain {
     }
 
     /// Factors the equations at the links' `(sin θ, cos θ)` (`trig`) with
-    /// the link blocks `blocks` (`Xᵢ`, rows and columns `(x, y, θ)`).
+    /// the link blocks `blocks` (`Xᵢ`, rows and columns `(x, y, θ)`) and
+    /// the joints' rows' levers turned by `turning` (per link, what is
+    /// added to `A_θ ū1` and `A_θ ū2` in the rows; empty for none).
     /// [`DynamicsError::SingularClosure`] if a block or the joints' system
     /// is singular.
     ///
     /// # Panics
-    /// If `trig` or `blocks` is not one per link, or the chain has fewer
-    /// than 3 links (a programming error).
+    /// If `trig` or `blocks` is not one per link, `turning` neither that
+    /// nor empty, or the chain has fewer than 3 links (a programming
+    /// error).
     // Joint j couples links j and j + 1 (mod n): the loops index neighbours.
     #[allow(clippy::needless_range_loop)]
     pub fn factor(
         &mut self,
         trig: &[(f64, f64)],
         blocks: &[Matrix3<f64>],
+        turning: &[(Vector2<f64>, Vector2<f64>)],
     ) -> Result<(), DynamicsError> {
         let n = self.joints.len();
         assert!(n >= 3, "a closed loop of 3 links or more");
         assert_eq!(trig.len(), n, "one (sin, cos) per link");
         assert_eq!(blocks.len(), n, "one block per link");
+        assert!(turning.is_empty() || turning.len() == n, "turning per link");
         let singular = || DynamicsError::SingularClosure;
         for i in 0..n {
             let rotation = Rotation::from_sin_cos(trig[i]);
             let (u1, u2) = self.joints[i];
-            self.behind[i] = joint_block(perp(rotation.apply(u1)));
-            self.ahead[i] = joint_block(perp(rotation.apply(u2)));
-            self.inverse_blocks[i] = blocks[i].try_inverse().ok_or_else(singular)?;
+            let (p1, p2) = (perp(rotation.apply(u1)), perp(rotation.apply(u2)));
+            self.levers[i] = (p1, p2);
+            self.row_levers[i] = match turning.get(i) {
+                Some((t1, t2)) => (p1 + t1, p2 + t2),
+                None => (p1, p2),
+            };
+            let w = blocks[i].try_inverse().ok_or_else(singular)?;
+            self.inverse_blocks[i] = w;
+            self.pulls[i] = (
+                w * joint_block(p1).transpose(),
+                w * joint_block(p2).transpose(),
+            );
         }
         let mut closing_diagonal = Matrix2::zeros();
         for j in 0..n {
             let k = (j + 1) % n;
-            let (wj, wk) = (&self.inverse_blocks[j], &self.inverse_blocks[k]);
-            let d = self.ahead[j] * wj * self.ahead[j].transpose()
-                + self.behind[k] * wk * self.behind[k].transpose();
-            self.lower[j] = -(self.ahead[j] * wj * self.behind[j].transpose());
-            self.upper[j] = -(self.behind[k] * wk * self.ahead[k].transpose());
+            let (ahead_j, behind_k) = (
+                joint_block(self.row_levers[j].1),
+                joint_block(self.row_levers[k].0),
+            );
+            let d = ahead_j * self.pulls[j].1 + behind_k * self.pulls[k].0;
+            self.lower[j] = -(ahead_j * self.pulls[j].0);
+            self.upper[j] = -(behind_k * self.pulls[k].1);
             if j + 1 == n {
                 closing_diagonal = d;
                 continue;
@@ -192,23 +235,36 @@ impl ShiftedChain {
     }
 
     /// Solves the factored equations for the link loads `loads`
-    /// (`(F_x, F_y, M)` per link), writing every link's increment
-    /// `(x, y, θ)` into `out`.
+    /// (`(F_x, F_y, M)` per link, 3 values each) and the joints' right
+    /// sides `joints` (`cⱼ`, one per joint, or empty for zero), writing
+    /// every link's increment `(x, y, θ)` into `out` (3 values each).
     ///
     /// # Panics
-    /// If `loads` or `out` is not one per link (a programming error).
-    pub fn solve(&mut self, loads: &[Vector3<f64>], out: &mut [Vector3<f64>]) {
+    /// If `loads` or `out` is not 3 values per link, or `joints` neither
+    /// one per joint nor empty (a programming error).
+    pub fn solve(&mut self, loads: &[f64], joints: &[Vector2<f64>], out: &mut [f64]) {
         let n = self.joints.len();
-        assert_eq!(loads.len(), n, "one load per link");
-        assert_eq!(out.len(), n, "one increment per link");
+        assert_eq!(loads.len(), 3 * n, "one load per link");
+        assert_eq!(out.len(), 3 * n, "one increment per link");
+        assert!(
+            joints.is_empty() || joints.len() == n,
+            "one right side per joint"
+        );
         // xᵢ without joint forces, and the joints' right sides.
-        for (x, (w, f)) in out.iter_mut().zip(self.inverse_blocks.iter().zip(loads)) {
-            *x = w * f;
+        let mut free = std::mem::take(&mut self.free);
+        for ((x, w), f) in free
+            .iter_mut()
+            .zip(&self.inverse_blocks)
+            .zip(loads.chunks_exact(3))
+        {
+            *x = w * Vector3::new(f[0], f[1], f[2]);
         }
         let mut lambda = std::mem::take(&mut self.lambda);
         for j in 0..n {
             let k = (j + 1) % n;
-            lambda[j] = self.behind[k] * out[k] - self.ahead[j] * out[j];
+            lambda[j] = joints.get(j).copied().unwrap_or_else(Vector2::zeros)
+                + constrain(self.row_levers[k].0, &free[k])
+                - constrain(self.row_levers[j].1, &free[j]);
         }
         let m = n - 1;
         self.solve_tridiagonal(&mut lambda[..m]);
@@ -218,11 +274,130 @@ impl ShiftedChain {
             *l -= b * closing;
         }
         lambda[m] = closing;
-        for i in 0..n {
+        for (i, x) in out.chunks_exact_mut(3).enumerate() {
             let behind = lambda[(i + n - 1) % n];
-            let pull = self.ahead[i].transpose() * lambda[i] - self.behind[i].transpose() * behind;
-            out[i] += self.inverse_blocks[i] * pull;
+            let (from_behind, from_ahead) = &self.pulls[i];
+            let v = free[i] + from_ahead * lambda[i] - from_behind * behind;
+            x.copy_from_slice(v.as_slice());
         }
+        self.free = free;
         self.lambda = lambda;
+    }
+
+    /// [`solve`](Self::solve) for `k` right sides at once (the joints'
+    /// right sides zero), in place: `columns[(3 i + c) k + r]` is
+    /// component `c` (`F_x, F_y, M` in, `x, y, θ` out) of link `i` in
+    /// right side `r`. The sweeps run along the chain once, each step on
+    /// all `k` sides: what factoring a coupled system needs (one side per
+    /// coupled coordinate), several times faster than `k` solves.
+    ///
+    /// # Panics
+    /// If `columns` is not `3 n k` long (a programming error).
+    // Joint j couples links j and j + 1 (mod n): the loops index neighbours.
+    #[allow(clippy::needless_range_loop)]
+    pub fn solve_columns(&mut self, columns: &mut [f64], k: usize) {
+        let n = self.joints.len();
+        assert_eq!(columns.len(), 3 * n * k, "3 values per link per side");
+        let mut free = std::mem::take(&mut self.free_columns);
+        let mut lambda = std::mem::take(&mut self.lambda_columns);
+        free.resize(3 * n * k, 0.0);
+        lambda.resize(2 * n * k, 0.0);
+        // `Wᵢ fᵢ`.
+        for i in 0..n {
+            let w = &self.inverse_blocks[i];
+            let f = &columns[3 * i * k..3 * (i + 1) * k];
+            let (f0, rest) = f.split_at(k);
+            let (f1, f2) = rest.split_at(k);
+            let out = &mut free[3 * i * k..3 * (i + 1) * k];
+            for c in 0..3 {
+                let (w0, w1, w2) = (w[(c, 0)], w[(c, 1)], w[(c, 2)]);
+                for (r, o) in out[c * k..(c + 1) * k].iter_mut().enumerate() {
+                    *o = w0 * f0[r] + w1 * f1[r] + w2 * f2[r];
+                }
+            }
+        }
+        // The joints' right sides: `D̃⁻ₖ Wₖ fₖ − D̃⁺ⱼ Wⱼ fⱼ`.
+        for j in 0..n {
+            let next = (j + 1) % n;
+            let (p1, p2) = (self.row_levers[next].0, self.row_levers[j].1);
+            for c in 0..2 {
+                for r in 0..k {
+                    let ahead = free[(3 * next + c) * k + r] + p1[c] * free[(3 * next + 2) * k + r];
+                    let here = free[(3 * j + c) * k + r] + p2[c] * free[(3 * j + 2) * k + r];
+                    lambda[(2 * j + c) * k + r] = ahead - here;
+                }
+            }
+        }
+        // `λ ← M λ` and `λ_row ← λ_row − M λ_other` on 2 × k blocks.
+        fn apply(m: &Matrix2<f64>, v: &mut [f64], k: usize) {
+            let (v0, v1) = v.split_at_mut(k);
+            for r in 0..k {
+                let (a, b) = (v0[r], v1[r]);
+                v0[r] = m[(0, 0)] * a + m[(0, 1)] * b;
+                v1[r] = m[(1, 0)] * a + m[(1, 1)] * b;
+            }
+        }
+        fn subtract(m: &Matrix2<f64>, row: &mut [f64], other: &[f64], k: usize) {
+            let (r0, r1) = row.split_at_mut(k);
+            let (o0, o1) = other.split_at(k);
+            for r in 0..k {
+                r0[r] -= m[(0, 0)] * o0[r] + m[(0, 1)] * o1[r];
+                r1[r] -= m[(1, 0)] * o0[r] + m[(1, 1)] * o1[r];
+            }
+        }
+        let m = n - 1;
+        let block = 2 * k;
+        for j in 1..m {
+            let (before, after) = lambda.split_at_mut(block * j);
+            subtract(
+                &self.factor[j],
+                &mut after[..block],
+                &before[block * (j - 1)..],
+                k,
+            );
+        }
+        apply(
+            &self.inverse[m - 1],
+            &mut lambda[block * (m - 1)..block * m],
+            k,
+        );
+        for j in (0..m - 1).rev() {
+            let (here, after) = lambda.split_at_mut(block * (j + 1));
+            let row = &mut here[block * j..];
+            subtract(&self.upper[j], row, &after[..block], k);
+            apply(&self.inverse[j], row, k);
+        }
+        {
+            let (head, last) = lambda.split_at_mut(block * m);
+            subtract(&self.upper[m], last, &head[..block], k);
+            subtract(&self.lower[m], last, &head[block * (m - 1)..], k);
+            apply(&self.schur_inverse, last, k);
+            for j in 0..m {
+                subtract(
+                    &self.border[j],
+                    &mut head[block * j..block * (j + 1)],
+                    last,
+                    k,
+                );
+            }
+        }
+        // `xᵢ = Wᵢ fᵢ + Wᵢ D⁺ᵢᵀ λᵢ − Wᵢ D⁻ᵢᵀ λᵢ₋₁`.
+        for i in 0..n {
+            let behind = (i + n - 1) % n;
+            let (from_behind, from_ahead) = &self.pulls[i];
+            for c in 0..3 {
+                let (a0, a1) = (from_ahead[(c, 0)], from_ahead[(c, 1)]);
+                let (b0, b1) = (from_behind[(c, 0)], from_behind[(c, 1)]);
+                for r in 0..k {
+                    columns[(3 * i + c) * k + r] = free[(3 * i + c) * k + r]
+                        + a0 * lambda[2 * i * k + r]
+                        + a1 * lambda[(2 * i + 1) * k + r]
+                        - b0 * lambda[2 * behind * k + r]
+                        - b1 * lambda[(2 * behind + 1) * k + r];
+                }
+            }
+        }
+        self.free_columns = free;
+        self.lambda_columns = lambda;
     }
 }

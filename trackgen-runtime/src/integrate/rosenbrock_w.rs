@@ -235,6 +235,7 @@ pub struct Ros34pw2 {
     stats: Stats,
     /// Jacobians computed and matrices factorised.
     work: LinearAlgebraWork,
+    blame: Vec<f64>,
 }
 
 /// What the linearly implicit method spent beyond evaluations of `f`.
@@ -251,7 +252,14 @@ impl Ros34pw2 {
     /// A stepper with tolerances `rtol`, `atol`, step limit `max_step` (s)
     /// and the default [`JacobianReuse`], for `dimension` components.
     pub fn new(rtol: f64, atol: f64, max_step: f64, dimension: usize) -> Self {
-        Self::with_reuse(rtol, atol, max_step, dimension, JacobianReuse::default())
+        let mut reuse = JacobianReuse::default();
+        if let Ok(v) = std::env::var("ROSW_AGE") {
+            reuse.max_age = v.parse().unwrap();
+        }
+        if let Ok(v) = std::env::var("ROSW_RATIO") {
+            reuse.step_ratio = v.parse().unwrap();
+        }
+        Self::with_reuse(rtol, atol, max_step, dimension, reuse)
     }
 
     /// As [`new`](Self::new), with the Jacobian kept as `reuse` says.
@@ -287,6 +295,7 @@ impl Ros34pw2 {
             span: (0.0, 0.0),
             stats: Stats::default(),
             work: LinearAlgebraWork::default(),
+            blame: Vec::new(),
         }
     }
 
@@ -484,13 +493,19 @@ impl Ros34pw2 {
             self.trial.axpy(tab.m[i], &self.stages[i], 1.0);
             self.error.axpy(tab.error[i], &self.stages[i], 1.0);
         }
-        Ok(weighted_rms(
-            &self.error,
-            y,
-            &self.trial,
-            self.atol,
-            self.rtol,
-        ))
+        let e = weighted_rms(&self.error, y, &self.trial, self.atol, self.rtol);
+        if std::env::var("ROSW_STATS").is_ok() {
+            let n = y.len();
+            if self.blame.len() != n {
+                self.blame = vec![0.0; n];
+            }
+            for i in 0..n {
+                let sc = self.atol + self.rtol * y[i].abs().max(self.trial[i].abs());
+                let r = self.error[i] / sc;
+                self.blame[i] += r * r / n as f64;
+            }
+        }
+        Ok(e)
     }
 
     /// Hairer's starting step from the slope alone (the explicit methods'
@@ -552,7 +567,9 @@ impl Stepper for Ros34pw2 {
                     rejected_last = true;
                     // A Jacobian that has served a step may be what failed:
                     // take a fresh one before shrinking further.
-                    if self.jacobian_age.is_some_and(|age| age > 0) {
+                    if std::env::var("ROSW_KEEP").is_err()
+                        && self.jacobian_age.is_some_and(|age| age > 0)
+                    {
                         self.jacobian_age = None;
                     }
                     self.control.reject(*t, h, outcome)?;
@@ -587,5 +604,19 @@ impl Stepper for Ros34pw2 {
 
     fn stats(&self) -> Stats {
         self.stats
+    }
+}
+
+impl Drop for Ros34pw2 {
+    fn drop(&mut self) {
+        if std::env::var("ROSW_STATS").is_ok() {
+            eprintln!("ROSW stats {:?} work {:?}", self.stats, self.work);
+            let mut idx: Vec<usize> = (0..self.blame.len()).collect();
+            idx.sort_by(|&a, &b| self.blame[b].total_cmp(&self.blame[a]));
+            let total: f64 = self.blame.iter().sum();
+            for &i in idx.iter().take(15) {
+                eprintln!("  component {i}: {:.3}", self.blame[i] / total);
+            }
+        }
     }
 }

@@ -34,8 +34,6 @@
 //! teeth by a Schur complement on the chassis: one chain solve per chassis
 //! coordinate when factored, two chain-sized sweeps per solve.
 
-use std::ops::AddAssign;
-
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
 use super::drive::DriveSlopes;
@@ -88,8 +86,14 @@ struct Point {
 pub(super) struct Setting<'a> {
     /// Every link's `(sin θ, cos θ)`.
     pub trig: &'a [(f64, f64)],
+    /// Every link's angular velocity `ω`, rad/s.
+    pub rates: &'a [f64],
     /// The dependent pair of links (0-based).
     pub pair: [usize; 2],
+    /// Every joint's force at the state: `joint_forces[j]` the force link
+    /// `j + 1` exerts on link `j` (0-based; the last is the closing
+    /// joint's).
+    pub joint_forces: &'a [Vector2<f64>],
     /// Every chassis body's rotation.
     pub rotations: &'a [Rotation],
     /// The chassis' mass matrix `M_i` at the state.
@@ -139,6 +143,13 @@ pub(super) struct Implicit {
     dependent_inverse: Matrix2<f64>,
     /// `A_θ ū1`, `A_θ ū2` and `A_θ d̄` of every link.
     levers: Vec<(Vector2<f64>, Vector2<f64>, Vector2<f64>)>,
+    /// `A ū1 ω`, `A ū2 ω` of every link: how its joints' velocities turn
+    /// with it.
+    spin: Vec<(Vector2<f64>, Vector2<f64>)>,
+    /// What the factorisation adds to the joints' rows' levers, `−a` times
+    /// [`spin`](Self::spin), and a solve's joints' right sides.
+    turning: Vec<(Vector2<f64>, Vector2<f64>)>,
+    joint_rhs: Vec<Vector2<f64>>,
     link_by_pose: Vec<Matrix3<f64>>,
     link_by_rate: Vec<Matrix3<f64>>,
     body_by_pose: Vec<Matrix3<f64>>,
@@ -148,6 +159,8 @@ pub(super) struct Implicit {
     chassis_mass: DMatrix<f64>,
     /// The chassis' velocity transform, rows `(ẋ, ẏ, ω)` per body.
     h: DMatrix<f64>,
+    /// The coordinates each chassis body's rows of `h` touch.
+    reach: Vec<Vec<usize>>,
     /// `(body, ∂τ/∂φ, ∂τ/∂φ̇)` of every arm.
     arms: Vec<(usize, f64, f64)>,
     drive: Option<(usize, DriveSlopes)>,
@@ -156,17 +169,38 @@ pub(super) struct Implicit {
     shift: f64,
     blocks: Vec<Matrix3<f64>>,
     schur: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
-    /// `T⁻¹ E_tc H_c`: every link's increment per chassis coordinate.
-    coupled: Vec<Vec<Vector3<f64>>>,
+    /// `T⁻¹ E_tc H_c`: every link's increment `(x, y, θ)` per chassis
+    /// coordinate, `[(3 i + c) dof + q]` ([`ShiftedChain::solve_columns`]'s
+    /// layout), and the same column by column (`[q · 3n + 3 i + c]`).
+    coupled: Vec<f64>,
+    coupled_columns: Vec<f64>,
+    /// The chassis' matrix before the Schur complement's LU.
+    schur_matrix: DMatrix<f64>,
 
-    // Scratch of a solve.
-    loads: Vec<Vector3<f64>>,
-    track_q: Vec<Vector3<f64>>,
-    track_v: Vec<Vector3<f64>>,
-    x: Vec<Vector3<f64>>,
+    // Scratch of a solve (`3 n` or `3 m` values: `(x, y, θ)` per body).
+    loads: Vec<f64>,
+    track_q: Vec<f64>,
+    track_v: Vec<f64>,
+    x: Vec<f64>,
     full: Vec<f64>,
     chassis_rhs: DVector<f64>,
-    body_q: Vec<Vector3<f64>>,
+    body_q: Vec<f64>,
+    body_forces: Vec<f64>,
+    turned: Vec<f64>,
+}
+
+/// The `(x, y, θ)` of body `i` in a flat list.
+#[inline]
+fn at(v: &[f64], i: usize) -> Vector3<f64> {
+    Vector3::new(v[3 * i], v[3 * i + 1], v[3 * i + 2])
+}
+
+/// Adds `w` to body `i`'s `(x, y, θ)` in a flat list.
+#[inline]
+fn add(v: &mut [f64], i: usize, w: Vector3<f64>) {
+    v[3 * i] += w.x;
+    v[3 * i + 1] += w.y;
+    v[3 * i + 2] += w.z;
 }
 
 impl Implicit {
@@ -200,6 +234,9 @@ impl Implicit {
             independent: Vec::with_capacity(n),
             dependent_inverse: Matrix2::identity(),
             levers: vec![(Vector2::zeros(), Vector2::zeros(), Vector2::zeros()); n],
+            spin: vec![(Vector2::zeros(), Vector2::zeros()); n],
+            turning: vec![(Vector2::zeros(), Vector2::zeros()); n],
+            joint_rhs: vec![Vector2::zeros(); n],
             link_by_pose: vec![Matrix3::zeros(); n],
             link_by_rate: vec![Matrix3::zeros(); n],
             body_by_pose: vec![Matrix3::zeros(); m],
@@ -208,19 +245,24 @@ impl Implicit {
             points: Vec::new(),
             chassis_mass: DMatrix::zeros(dof, dof),
             h: DMatrix::zeros(3 * m, dof),
+            reach: vec![Vec::with_capacity(dof); m],
             arms: Vec::new(),
             drive: None,
             shift: f64::NAN,
             blocks: vec![Matrix3::zeros(); n],
             schur: None,
-            coupled: vec![vec![Vector3::zeros(); n]; dof],
-            loads: vec![Vector3::zeros(); n],
-            track_q: vec![Vector3::zeros(); n],
-            track_v: vec![Vector3::zeros(); n],
-            x: vec![Vector3::zeros(); n],
+            coupled: vec![0.0; 3 * n * dof],
+            coupled_columns: vec![0.0; 3 * n * dof],
+            schur_matrix: DMatrix::zeros(dof, dof),
+            loads: vec![0.0; 3 * n],
+            track_q: vec![0.0; 3 * n],
+            track_v: vec![0.0; 3 * n],
+            x: vec![0.0; 3 * n],
             full: vec![0.0; n + 2],
             chassis_rhs: DVector::zeros(dof),
-            body_q: vec![Vector3::zeros(); m],
+            body_q: vec![0.0; 3 * m],
+            body_forces: vec![0.0; 3 * m],
+            turned: vec![0.0; 3 * n],
         })
     }
 
@@ -238,14 +280,13 @@ impl Implicit {
         self.independent.clear();
         self.independent
             .extend((0..n + 2).filter(|&c| c < 2 || !setting.pair.contains(&(c - 2))));
-        for (i, lever) in self.levers.iter_mut().enumerate() {
+        for (i, (lever, spin)) in self.levers.iter_mut().zip(&mut self.spin).enumerate() {
             let rotation = Rotation::from_sin_cos(self.trig[i]);
             let (u1, u2) = self.joints[i];
-            *lever = (
-                perp(rotation.apply(u1)),
-                perp(rotation.apply(u2)),
-                perp(rotation.apply(self.spans[i])),
-            );
+            let (a1, a2) = (rotation.apply(u1), rotation.apply(u2));
+            *lever = (perp(a1), perp(a2), perp(rotation.apply(self.spans[i])));
+            let omega = setting.rates[i];
+            *spin = (a1 * omega, a2 * omega);
         }
         let [k, l] = self.pair;
         let dependent = Matrix2::from_columns(&[self.levers[k].2, self.levers[l].2]);
@@ -259,6 +300,20 @@ impl Implicit {
             &mut self.body_by_rate,
         ] {
             m.iter_mut().for_each(|b| *b = Matrix3::zeros());
+        }
+        // The joints' forces on the turning lever arms: a link turned by
+        // `δθ` turns `A ū2` and `A ū1` under the forces `λᵢ` (ahead) and
+        // `−λᵢ₋₁` (behind), a moment `(−A ū2·λᵢ + A ū1·λᵢ₋₁) δθ`. Under
+        // a track's tension this is a stiffness as large as a contact's.
+        for i in 0..n {
+            let rotation = Rotation::from_sin_cos(self.trig[i]);
+            let (u1, u2) = self.joints[i];
+            let (ahead, behind) = (
+                setting.joint_forces[i],
+                setting.joint_forces[(i + n - 1) % n],
+            );
+            self.link_by_pose[i][(2, 2)] +=
+                -rotation.apply(u2).dot(&ahead) + rotation.apply(u1).dot(&behind);
         }
         self.couplings.clear();
         self.points.clear();
@@ -317,6 +372,15 @@ impl Implicit {
         self.chassis_mass.copy_from_slice(setting.chassis_mass);
         self.chassis
             .velocity_transform(setting.rotations, &mut self.h);
+        for (b, reach) in self.reach.iter_mut().enumerate() {
+            reach.clear();
+            reach.extend((0..self.dof).filter(|&q| {
+                self.h
+                    .fixed_view::<3, 1>(3 * b, q)
+                    .iter()
+                    .any(|&v| v != 0.0)
+            }));
+        }
         self.arms.clear();
         self.arms.extend(setting.arms.iter().map(|arm| {
             let (by_angle, by_rate) = arm.spring.slopes();
@@ -346,19 +410,30 @@ impl Implicit {
                 self.blocks[i] -= by_state * (by_pose * a + by_rate).transpose() * (a * gain);
             }
         }
+        for (turning, (s1, s2)) in self.turning.iter_mut().zip(&self.spin) {
+            *turning = (-s1 * a, -s2 * a);
+        }
         self.chain
-            .factor(&self.trig, &self.blocks)
+            .factor(&self.trig, &self.blocks, &self.turning)
             .map_err(|_| DynamicsError::SingularClosure)?;
-        // The chassis: M − Hᵀ(a C + a² K)H, the arms, the drive.
-        let mut schur = self.chassis_mass.clone();
+        // The chassis: M − Hᵀ(a C + a² K)H, the arms, the drive. A body's
+        // rows of H touch the frame's coordinates and its own (and its
+        // arm's): a handful of columns each (`reach`).
+        let mut schur = std::mem::take(&mut self.schur_matrix);
+        schur.copy_from(&self.chassis_mass);
         let m = self.chassis.len();
         for b in 0..m {
             let stiff = self.body_by_rate[b] * a + self.body_by_pose[b] * a2;
             if stiff == Matrix3::zeros() {
                 continue;
             }
-            let hb = self.h.rows(3 * b, 3);
-            schur -= hb.transpose() * stiff * hb;
+            for &p in &self.reach[b] {
+                let hp = self.h.fixed_view::<3, 1>(3 * b, p).into_owned();
+                let row = hp.transpose() * stiff;
+                for &q in &self.reach[b] {
+                    schur[(p, q)] -= row.dot(&self.h.fixed_view::<3, 1>(3 * b, q).transpose());
+                }
+            }
         }
         for &(body, by_angle, by_rate) in &self.arms {
             let weight = -(a * by_rate + a2 * by_angle);
@@ -372,36 +447,40 @@ impl Implicit {
             add_relative(&mut schur, body, weight);
         }
         // The track's answer to every chassis coordinate, through the rims
-        // and teeth: `Z = T⁻¹ E_tc H_c`, and `S = K_cc − H_cᵀ E_ct Z`.
-        for j in 0..dof {
-            self.loads.iter_mut().for_each(|f| *f = Vector3::zeros());
-            let mut any = false;
-            for c in &self.couplings {
-                let column = self.h.fixed_view::<3, 1>(3 * c.body, j).into_owned();
-                if column == Vector3::zeros() {
-                    continue;
-                }
-                any = true;
-                let e = -(c.link_by_rate * a + c.link_by_pose * a2);
-                self.loads[c.link] += e * column;
-            }
-            let z = &mut self.coupled[j];
-            if !any {
-                z.iter_mut().for_each(|x| *x = Vector3::zeros());
-                continue;
-            }
-            self.chain.solve(&self.loads, z);
-            for c in &self.couplings {
-                let e = -(c.body_by_rate * a + c.body_by_pose * a2);
-                let back = e * z[c.link];
-                let hb = self.h.rows(3 * c.body, 3);
-                let column = hb.transpose() * back;
-                for r in 0..dof {
-                    schur[(r, j)] -= column[r];
+        // and teeth: `Z = T⁻¹ E_tc H_c` (all coordinates in one sweep), and
+        // `S = K_cc − H_cᵀ E_ct Z`.
+        let z = &mut self.coupled;
+        z.fill(0.0);
+        for c in &self.couplings {
+            let e = -(c.link_by_rate * a + c.link_by_pose * a2);
+            for &q in &self.reach[c.body] {
+                let load = e * self.h.fixed_view::<3, 1>(3 * c.body, q);
+                for (k, v) in load.iter().enumerate() {
+                    z[(3 * c.link + k) * dof + q] += v;
                 }
             }
         }
-        let lu = schur.lu();
+        self.chain.solve_columns(z, dof);
+        let rows = z.len() / dof;
+        for (row, values) in z.chunks_exact(dof).enumerate() {
+            for (q, &v) in values.iter().enumerate() {
+                self.coupled_columns[q * rows + row] = v;
+            }
+        }
+        for c in &self.couplings {
+            let e = -(c.body_by_rate * a + c.body_by_pose * a2);
+            let link = &z[3 * c.link * dof..3 * (c.link + 1) * dof];
+            for &p in &self.reach[c.body] {
+                // `H_pᵀ E_bl Z_l`, a row of dof.
+                let hp = self.h.fixed_view::<3, 1>(3 * c.body, p).transpose() * e;
+                for q in 0..dof {
+                    schur[(p, q)] -=
+                        hp[0] * link[q] + hp[1] * link[dof + q] + hp[2] * link[2 * dof + q];
+                }
+            }
+        }
+        let lu = schur.clone().lu();
+        self.schur_matrix = schur;
         if !lu.is_invertible() {
             return Err(DynamicsError::SingularClosure);
         }
@@ -414,7 +493,7 @@ impl Implicit {
     /// coordinates, or rates) as every link's absolute increment `(x, y,
     /// θ)`: the dependent pair from `C_q δq = 0`, then the velocity
     /// transform's running sum (eq. (4) differentiated).
-    fn track_increments(&mut self, z: &[f64], out: &mut [Vector3<f64>]) {
+    fn track_increments(&mut self, z: &[f64], out: &mut [f64]) {
         let full = &mut self.full;
         for (&c, &v) in self.independent.iter().zip(z) {
             full[c] = v;
@@ -432,14 +511,51 @@ impl Implicit {
         full[2 + k] = dependent.x;
         full[2 + l] = dependent.y;
         let mut position = Vector2::new(full[0], full[1]);
-        let n = out.len();
-        for i in 0..n {
+        for (i, out) in out.chunks_exact_mut(3).enumerate() {
             let angle = full[2 + i];
             if i > 0 {
                 position -= self.levers[i].0 * angle;
             }
-            out[i] = Vector3::new(position.x, position.y, angle);
+            out.copy_from_slice(&[position.x, position.y, angle]);
             position += self.levers[i].1 * angle;
+        }
+    }
+
+    /// The change of every link's absolute velocity `(ẋ, ẏ, ω)` when the
+    /// track's configuration moves by `positions` (every link's `(x, y,
+    /// θ)` increment, a consistent one) at fixed independent rates `ż`,
+    /// into `out`: the dependent pair's rates follow from `C_q q̇ = 0`
+    /// (`C_d δω_d = Σⱼ Aʲ d̄ʲ ωⱼ δθⱼ`, as `∂(A_θ d̄)/∂θ = −A d̄`), and each
+    /// turned lever `A_θ ū ω` changes by `−A ū ω δθ` down the chain.
+    fn convective(&self, positions: &[f64], out: &mut [f64]) {
+        let angle = |i: usize| positions[3 * i + 2];
+        let turned: Vector2<f64> = self
+            .spin
+            .iter()
+            .enumerate()
+            .map(|(j, (s1, s2))| (s2 - s1) * angle(j))
+            .sum();
+        let dependent = self.dependent_inverse * turned;
+        let [k, l] = self.pair;
+        let rate = |i: usize| {
+            if i == k {
+                dependent.x
+            } else if i == l {
+                dependent.y
+            } else {
+                0.0
+            }
+        };
+        let mut velocity = Vector2::zeros();
+        for (i, out) in out.chunks_exact_mut(3).enumerate() {
+            let (p1, p2, _) = self.levers[i];
+            let (s1, s2) = self.spin[i];
+            let (w, t) = (rate(i), angle(i));
+            if i > 0 {
+                velocity -= p1 * w - s1 * t;
+            }
+            out.copy_from_slice(&[velocity.x, velocity.y, w]);
+            velocity += p2 * w - s2 * t;
         }
     }
 
@@ -458,52 +574,117 @@ impl Implicit {
             tangential,
         } = self.offsets;
         let nt = self.independent.len();
-        let n = self.joints.len();
         let mut track_q = std::mem::take(&mut self.track_q);
         let mut track_v = std::mem::take(&mut self.track_v);
         self.track_increments(&r[track..track + nt], &mut track_q);
         self.track_increments(&r[track + nt..track + 2 * nt], &mut track_v);
-        let (r_qc, r_vc) = (
-            DVector::from_column_slice(&r[chassis..chassis + dof]),
-            DVector::from_column_slice(&r[chassis + dof..chassis + 2 * dof]),
-        );
-        let hq = &self.h * &r_qc;
-        for (b, q) in self.body_q.iter_mut().enumerate() {
-            *q = Vector3::new(hq[3 * b], hq[3 * b + 1], hq[3 * b + 2]);
-        }
-        // The links' loads: M u_v + a K u_q (own and coupled), the
-        // deflections' share.
-        for i in 0..n {
-            self.loads[i] = track_v[i].component_mul(&self.link_mass[i])
-                + self.link_by_pose[i] * track_q[i] * a;
-        }
-        for c in &self.couplings {
-            self.loads[c.link] += c.link_by_pose * self.body_q[c.body] * a;
-        }
-        for point in &self.points {
-            let denominator = 1.0 - a * point.by_self;
-            if let Some((i, by_state, by_pose, _)) = point.link {
-                let free =
-                    (r[tangential + point.state] + a * by_pose.dot(&track_q[i])) / denominator;
-                self.loads[i] += by_state * (a * free);
+        let (r_qc, r_vc) = r[chassis..chassis + 2 * dof].split_at(dof);
+        // The chassis bodies' position increments, `H r_q`, column by
+        // column (H is column-major).
+        let rows = self.h.nrows();
+        self.body_q.fill(0.0);
+        for (column, &v) in self.h.as_slice().chunks_exact(rows).zip(r_qc) {
+            if v != 0.0 {
+                for (q, h) in self.body_q.iter_mut().zip(column) {
+                    *q += h * v;
+                }
             }
         }
-        // The chassis' right side: M r_v + Hᵀ a K u_q, the arms, the drive.
-        let mut g = &self.chassis_mass * &r_vc;
-        let m = self.chassis.len();
-        let mut forces = DVector::zeros(3 * m);
-        for b in 0..m {
-            let f = self.body_by_pose[b] * self.body_q[b] * a;
-            forces.fixed_rows_mut::<3>(3 * b).add_assign(&f);
+        // The links' loads: M u_v + a K u_q (own and coupled), the
+        // deflections' share; the chassis bodies': a K u_q.
+        for (i, ((load, v), q)) in self
+            .loads
+            .chunks_exact_mut(3)
+            .zip(track_v.chunks_exact(3))
+            .zip(track_q.chunks_exact(3))
+            .enumerate()
+        {
+            let q = Vector3::new(q[0], q[1], q[2]) * a;
+            let f = Vector3::new(v[0], v[1], v[2]).component_mul(&self.link_mass[i])
+                + self.link_by_pose[i] * q;
+            load.copy_from_slice(f.as_slice());
+        }
+        // The velocities the configuration's increment turns, `V r_q`:
+        // the stage's velocity increments `x` are the bodies' whole
+        // velocity changes, `H B k_v + V k_q`, so `M V r_q` joins `M u_v`
+        // (`a M V k_v`, the inertia's convective share, is left out).
+        let mut turned = std::mem::take(&mut self.turned);
+        self.convective(&track_q, &mut turned);
+        for (i, (load, v)) in self
+            .loads
+            .chunks_exact_mut(3)
+            .zip(turned.chunks_exact(3))
+            .enumerate()
+        {
+            let m = self.link_mass[i];
+            load[0] += m.x * v[0];
+            load[1] += m.y * v[1];
+            load[2] += m.z * v[2];
+        }
+        self.turned = turned;
+        for (b, f) in self.body_forces.chunks_exact_mut(3).enumerate() {
+            let w = self.body_by_pose[b] * (at(&self.body_q, b) * a);
+            f.copy_from_slice(w.as_slice());
         }
         for c in &self.couplings {
-            let f = c.body_by_pose * track_q[c.link] * a;
-            forces.fixed_rows_mut::<3>(3 * c.body).add_assign(&f);
+            add(
+                &mut self.loads,
+                c.link,
+                c.link_by_pose * (at(&self.body_q, c.body) * a),
+            );
+            add(
+                &mut self.body_forces,
+                c.body,
+                c.body_by_pose * (at(&track_q, c.link) * a),
+            );
+        }
+        for point in &self.points {
+            if let Some((i, by_state, by_pose, _)) = point.link {
+                let free = (r[tangential + point.state] + a * by_pose.dot(&at(&track_q, i)))
+                    / (1.0 - a * point.by_self);
+                add(&mut self.loads, i, by_state * (a * free));
+            }
+        }
+        // The track without the chassis' answer, and what it does to the
+        // chassis through the rims and teeth.
+        // The joints' rows: a turned link turns its joints' velocities,
+        // `A ū ω δθ` with the position's part of `δθ` here.
+        let n = self.joints.len();
+        for j in 0..n {
+            let k = (j + 1) % n;
+            self.joint_rhs[j] =
+                self.spin[j].1 * track_q[3 * j + 2] - self.spin[k].0 * track_q[3 * k + 2];
+        }
+        let mut x = std::mem::take(&mut self.x);
+        self.chain.solve(&self.loads, &self.joint_rhs, &mut x);
+        for c in &self.couplings {
+            let e = c.body_by_rate * a + c.body_by_pose * (a * a);
+            add(&mut self.body_forces, c.body, e * at(&x, c.link));
+        }
+        // The chassis' right side: M r_v + Hᵀ (the bodies' loads), the
+        // arms, the drive; then its increments.
+        let g = &mut self.chassis_rhs;
+        g.fill(0.0);
+        for (column, &v) in self.chassis_mass.as_slice().chunks_exact(dof).zip(r_vc) {
+            for (g, m) in g.as_mut_slice().iter_mut().zip(column) {
+                *g += m * v;
+            }
+        }
+        for (g, column) in g
+            .as_mut_slice()
+            .iter_mut()
+            .zip(self.h.as_slice().chunks_exact(rows))
+        {
+            *g += column
+                .iter()
+                .zip(&self.body_forces)
+                .map(|(h, f)| h * f)
+                .sum::<f64>();
         }
         for &(body, by_angle, _) in &self.arms {
-            let phi = r_qc[2 + body] - r_qc[2];
-            g[2 + body] += a * by_angle * phi;
-            g[2] -= a * by_angle * phi;
+            let phi = a * by_angle * (r_qc[2 + body] - r_qc[2]);
+            g[2 + body] += phi;
+            g[2] -= phi;
         }
         if let Some((body, slopes)) = self.drive {
             let [_, torque_by_integral] = slopes.torque;
@@ -512,24 +693,18 @@ impl Implicit {
             g[2 + body] += push;
             g[2] -= push;
         }
-        // The track without the chassis' answer, and what it does to the
-        // chassis through the rims and teeth.
-        let mut x = std::mem::take(&mut self.x);
-        self.chain.solve(&self.loads, &mut x);
-        for c in &self.couplings {
-            let e = -(c.body_by_rate * a + c.body_by_pose * a * a);
-            forces
-                .fixed_rows_mut::<3>(3 * c.body)
-                .add_assign(&(-(e * x[c.link])));
-        }
-        g += self.h.transpose() * forces;
         let lu = self.schur.as_ref().expect("factored before a solve");
-        let x_c = lu
-            .solve(&g)
-            .unwrap_or_else(|| DVector::from_element(dof, f64::NAN));
-        for (j, z) in self.coupled.iter().enumerate() {
-            for (xi, zi) in x.iter_mut().zip(z) {
-                *xi -= zi * x_c[j];
+        if !lu.solve_mut(g) {
+            g.fill(f64::NAN);
+        }
+        // `x −= Z x_c`, a column of Z at a time (contiguous, no reduction:
+        // it vectorises).
+        let x_c = self.chassis_rhs.as_slice();
+        for (column, &v) in self.coupled_columns.chunks_exact(x.len()).zip(x_c) {
+            if v != 0.0 {
+                for (xi, z) in x.iter_mut().zip(column) {
+                    *xi -= z * v;
+                }
             }
         }
         // Back to the state's increments.
@@ -538,7 +713,8 @@ impl Implicit {
             let slot = tangential + point.state;
             r[slot] = match point.link {
                 Some((i, _, by_pose, by_rate)) => {
-                    (r[slot] + a * by_pose.dot(&(track_q[i] + x[i] * a)) + a * by_rate.dot(&x[i]))
+                    let xi = at(&x, i);
+                    (r[slot] + a * by_pose.dot(&(at(&track_q, i) + xi * a)) + a * by_rate.dot(&xi))
                         / denominator
                 }
                 None => r[slot] / denominator,
@@ -550,13 +726,13 @@ impl Implicit {
             r[integral] = (r[integral] + a * rate_by_speed * speed) / (1.0 - a * rate_by_integral);
         }
         for (slot, &c) in self.independent.iter().enumerate() {
-            let v = if c < 2 { x[0][c] } else { x[c - 2][2] };
+            let v = if c < 2 { x[c] } else { x[3 * (c - 2) + 2] };
             r[track + nt + slot] = v;
             r[track + slot] += a * v;
         }
-        for j in 0..dof {
-            r[chassis + dof + j] = x_c[j];
-            r[chassis + j] += a * x_c[j];
+        for (j, &v) in x_c.iter().enumerate() {
+            r[chassis + dof + j] = v;
+            r[chassis + j] += a * v;
         }
         self.track_q = track_q;
         self.track_v = track_v;

@@ -196,6 +196,7 @@ where
         t: f64,
         y: &[f64],
     ) -> Result<(SVector<f64, DC>, SVector<f64, DC>), SimulationError> {
+        self.work.at = None;
         let (bodies, [integral, ..], tangential) = self.split(y);
         let (yt, yc) = self.bodies.split(bodies);
         self.bodies.parts_mut().0.recover(t, yt)?;
@@ -222,7 +223,25 @@ where
         let (track, chassis) = self.bodies.parts_mut();
         track.set_external(&self.work.track_loads);
         chassis.set_external(&self.work.chassis_loads);
+        self.work.at = Some(t);
+        self.work.state.clear();
+        self.work.state.extend_from_slice(y);
         Ok((qc, qdc))
+    }
+
+    /// [`evaluate`](Self::evaluate), unless the workspace holds `(t, y)`'s
+    /// evaluation already (a linearisation right after the step's first
+    /// evaluation, at the same state).
+    fn evaluated(
+        &mut self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(SVector<f64, DC>, SVector<f64, DC>), SimulationError> {
+        if self.work.at == Some(t) && self.work.state == y {
+            let yc = self.bodies.split(&y[..self.bodies.dimension()]).1;
+            return Ok(TreeSystem::<C, DC>::split(yc));
+        }
+        self.evaluate(t, y)
     }
 
     /// After an accepted step on soft soil: the rut pressed wherever a
@@ -465,7 +484,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
     /// partitioning (the declared way); on soft soil, or closed another
     /// way, the integrator's dense Jacobian.
     fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
-        let own = self.soil.is_none() && self.track().dependent_pair().is_some();
+        let own = self.soil.is_none()
+            && self.track().dependent_pair().is_some()
+            && std::env::var("ROSW_DENSE").is_err();
         own.then_some(self as &mut dyn ImplicitSolve)
     }
 
@@ -496,7 +517,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
     /// with the chassis' mass matrix and velocity transform and the
     /// track's dependent pair: the vehicle's `W` (see [`Implicit`]).
     fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
-        let (qc, qdc) = self.evaluate(t, y)?;
+        let (qc, qdc) = self.evaluated(t, y)?;
+        // The joints' forces at the state.
+        self.bodies.parts_mut().0.accelerations(t)?;
         let (_, [integral, ..], tangential) = self.split(y);
         let points = self.geometry.shoe.ground_points.len();
         forces::linearise(
@@ -514,12 +537,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
         };
         let mut chassis_mass = nalgebra::SMatrix::<f64, DC, DC>::zeros();
         self.chassis().model().mass_matrix(&qc, &mut chassis_mass);
-        let rotations: Vec<crate::planar::Rotation> = self
-            .work
-            .part_trig
-            .iter()
-            .map(|&t| crate::planar::Rotation::from_sin_cos(t))
-            .collect();
+        let rotations = &mut self.work.part_rotations;
+        rotations.clear();
+        rotations.extend(
+            self.work
+                .part_trig
+                .iter()
+                .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
+        );
         let drive = self.sprocket.map(|s| {
             let slopes = self
                 .config
@@ -553,15 +578,18 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
                 })?,
             ),
         };
-        let (_, _, trig) = self.bodies.first().recovered();
+        let track = self.bodies.first();
+        let (_, qdt, trig) = track.recovered();
         implicit
             .linearise(
                 &self.work.contacts,
                 &self.work.jacobians,
                 &Setting {
                     trig,
+                    rates: &qdt.as_slice()[2..],
                     pair: [pair[0] - 1, pair[1] - 1],
-                    rotations: &rotations,
+                    joint_forces: track.joint_forces(),
+                    rotations: &self.work.part_rotations,
                     chassis_mass: chassis_mass.as_slice(),
                     arms: &self.config.arms,
                     drive,

@@ -16,6 +16,8 @@ pub(super) struct Workspace {
     pub parts: Vec<BodyState>,
     /// `(sin θ, cos θ)` of every chassis body.
     pub part_trig: Vec<(f64, f64)>,
+    /// The same as rotations, for a linearisation.
+    pub part_rotations: Vec<crate::planar::Rotation>,
     /// Scratch for the generated body states.
     pub positions: Vec<Vector2<f64>>,
     /// Scratch for the generated body velocities.
@@ -40,6 +42,11 @@ pub(super) struct Workspace {
     /// What the force elements stored, dissipated and did, at the last
     /// evaluation.
     pub books: Books,
+    /// The time and state of the evaluation the workspace holds (`None`
+    /// while one is under way, or after one failed).
+    pub at: Option<f64>,
+    /// The state of that evaluation.
+    pub state: Vec<f64>,
     /// Every joint's tension (recording).
     pub tensions: Vec<f64>,
     /// Every joint's distance from the sprocket's pitch circle (recording).
@@ -56,6 +63,7 @@ impl Workspace {
             links: vec![resting; links],
             parts: vec![resting; bodies],
             part_trig: vec![(0.0, 1.0); bodies],
+            part_rotations: Vec::with_capacity(bodies),
             positions: vec![Vector2::zeros(); largest],
             velocities: vec![Vector2::zeros(); largest],
             contacts: Vec::with_capacity(8 * links),
@@ -65,6 +73,8 @@ impl Workspace {
             tangential_rate: vec![0.0; tangential],
             ground_normal: vec![None; tangential],
             books: Books::default(),
+            at: None,
+            state: Vec::new(),
             tensions: Vec::with_capacity(links),
             offsets: Vec::with_capacity(links),
         }
