@@ -117,8 +117,10 @@ impl Pair for Ground {
     fn linearise(&self, x: &Inputs, contact: &Contact) -> ContactJacobian {
         let (link, _) = states(x);
         let geometry = ground::tangent(&self.terrain, contact);
+        let mut out = ContactJacobian::ZERO;
         self.laws
-            .linearise(contact, x[DEFLECTION], &geometry, &link)
+            .linearise(contact, x[DEFLECTION], &geometry, &link, &mut out);
+        out
     }
 
     fn near_kink(&self, x: &Inputs, contact: &Contact, margin: f64) -> bool {
@@ -175,8 +177,10 @@ impl Pair for Rim {
     fn linearise(&self, x: &Inputs, contact: &Contact) -> ContactJacobian {
         let (link, wheel_state) = states(x);
         let geometry = wheel::tangent(contact, &link, &wheel_state, &self.shoe);
+        let mut out = ContactJacobian::ZERO;
         self.laws
-            .linearise(contact, &geometry, &link, Some(&wheel_state))
+            .linearise(contact, &geometry, &link, Some(&wheel_state), &mut out);
+        out
     }
 
     fn near_kink(&self, x: &Inputs, contact: &Contact, margin: f64) -> bool {
@@ -254,8 +258,10 @@ impl Pair for Teeth {
         let (link, sprocket_state) = states(x);
         let geometry =
             sprocket::tangent(contact, &link, &sprocket_state, &self.profile, &self.shoe);
+        let mut out = ContactJacobian::ZERO;
         self.laws
-            .linearise(contact, &geometry, &link, Some(&sprocket_state))
+            .linearise(contact, &geometry, &link, Some(&sprocket_state), &mut out);
+        out
     }
 
     fn near_kink(&self, x: &Inputs, contact: &Contact, margin: f64) -> bool {

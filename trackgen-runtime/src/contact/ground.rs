@@ -2,7 +2,7 @@
 
 use nalgebra::Vector2;
 
-use super::tangent::{GeometryTangent, LINK_POSE, body_point};
+use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
 use super::{BodyState, Contact, ShoeGeometry, Terrain};
 
 /// Every shoe ground point below `terrain`, link by link and the shoe's
@@ -52,10 +52,10 @@ pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: 
 /// `δ = h(p_x) − p_y` as `h′ ∂p_x − ∂p_y`, the gradient `(−h′, 1)` as
 /// `(−h″ ∂p_x, 0)`.
 pub fn tangent(terrain: &Terrain, contact: &Contact) -> GeometryTangent {
-    let point = body_point(contact.arm, LINK_POSE);
+    let point = body_point(contact.arm, LINK);
     let slope = -contact.gradient.x;
     let curvature = terrain.curvature(contact.point.x);
-    let mut gradient = GeometryTangent::ZERO.gradient;
+    let mut gradient = PoseRows2::zeros();
     gradient.set_row(0, &(point.row(0) * -curvature));
     GeometryTangent {
         point,

@@ -13,7 +13,7 @@
 
 use nalgebra::Vector2;
 
-use super::tangent::{GeometryTangent, LINK_POSE, OTHER_POSE, body_point, dot_rows, unit_vector};
+use super::tangent::{GeometryTangent, LINK, OTHER, body_point, dot_rows, unit_vector};
 use super::{BodyState, Contact, ShoeGeometry};
 
 pub use trackgen_sprocket::{ProfileProblem, pitch_radius};
@@ -286,14 +286,14 @@ pub fn tangent(
 ) -> GeometryTangent {
     let pin_arm = link.arm(shoe.pins[contact.feature]);
     let pin = link.position + pin_arm;
-    let d_pin = body_point(pin_arm, LINK_POSE);
+    let d_pin = body_point(pin_arm, LINK);
     let gap = profile.nearest_gap(sprocket, pin);
     let (out_of_gap, radial) = (pin - gap, pin - sprocket.position);
     let (distance, from_centre) = (out_of_gap.norm(), radial.norm());
     let into_flank = distance + shoe.pin_radius - profile.arc_radius;
     let into_tip = profile.addendum + shoe.pin_radius - from_centre;
     if into_flank <= into_tip {
-        let d_gap = body_point(gap - sprocket.position, OTHER_POSE);
+        let d_gap = body_point(gap - sprocket.position, OTHER);
         let d_out = d_pin - d_gap;
         let u = out_of_gap / distance;
         let d_u = unit_vector(u, distance, &d_out);
@@ -303,7 +303,7 @@ pub fn tangent(
             gradient: -d_u,
         }
     } else {
-        let d_centre = body_point(Vector2::zeros(), OTHER_POSE);
+        let d_centre = body_point(Vector2::zeros(), OTHER);
         let d_radial = d_pin - d_centre;
         let u = radial / from_centre;
         let d_u = unit_vector(u, from_centre, &d_radial);

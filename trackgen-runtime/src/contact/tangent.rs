@@ -24,7 +24,9 @@
 //! [`Friction::slopes`]: crate::laws::Friction::slopes
 //! [`Stiction::slopes`]: crate::laws::Stiction::slopes
 
-use nalgebra::{SMatrix, Vector2};
+use std::ops::AddAssign;
+
+use nalgebra::{Matrix2, Matrix2x3, RowVector2, SMatrix, Vector2};
 
 use super::{BodyState, Contact, ContactLaws, GroundFriction, GroundLaws};
 
@@ -44,30 +46,32 @@ pub const DEFLECTION: usize = 12;
 
 /// The derivative of a scalar over a contact's [`INPUTS`].
 pub type Row = SMatrix<f64, 1, INPUTS>;
-/// The derivative of a planar vector, a row per component.
-pub type Rows2 = SMatrix<f64, 2, INPUTS>;
 /// The derivative of a load `(F_x, F_y, M)`, a row per component.
 pub type Rows3 = SMatrix<f64, 3, INPUTS>;
 
-/// The derivatives of a contact's geometry with the two bodies' poses (the
-/// rate columns are zero): what each detector gives beside its contact.
+/// How many pose coordinates a contact's geometry depends on: the link's
+/// `(x, y, θ)` (columns 0–2) and the other body's (3–5).
+pub const POSES: usize = 6;
+/// The geometry's column of the link's `x`.
+pub const LINK: usize = 0;
+/// The geometry's column of the other body's `x`.
+pub const OTHER: usize = 3;
+/// The derivative of a scalar over the two poses.
+pub type PoseRow = SMatrix<f64, 1, POSES>;
+/// The derivative of a planar vector over the two poses.
+pub type PoseRows2 = SMatrix<f64, 2, POSES>;
+
+/// The derivatives of a contact's geometry with the two bodies' poses
+/// (what each detector gives beside its contact; velocities do not move
+/// it).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GeometryTangent {
-    /// `∂p`, m per unit of each input.
-    pub point: Rows2,
+    /// `∂p`, m per unit of each pose coordinate.
+    pub point: PoseRows2,
     /// `∂δ`.
-    pub depth: Row,
+    pub depth: PoseRow,
     /// `∂g`.
-    pub gradient: Rows2,
-}
-
-impl GeometryTangent {
-    /// No change.
-    pub const ZERO: GeometryTangent = GeometryTangent {
-        point: Rows2::from_array_storage(nalgebra::ArrayStorage([[0.0; 2]; INPUTS])),
-        depth: Row::from_array_storage(nalgebra::ArrayStorage([[0.0; 1]; INPUTS])),
-        gradient: Rows2::from_array_storage(nalgebra::ArrayStorage([[0.0; 2]; INPUTS])),
-    };
+    pub gradient: PoseRows2,
 }
 
 /// A contact's load and rate to first order: their derivatives over the
@@ -84,6 +88,15 @@ pub struct ContactJacobian {
     pub rate: Row,
 }
 
+impl ContactJacobian {
+    /// No change.
+    pub const ZERO: ContactJacobian = ContactJacobian {
+        link: Rows3::from_array_storage(nalgebra::ArrayStorage([[0.0; 3]; INPUTS])),
+        other: Rows3::from_array_storage(nalgebra::ArrayStorage([[0.0; 3]; INPUTS])),
+        rate: Row::from_array_storage(nalgebra::ArrayStorage([[0.0; 1]; INPUTS])),
+    };
+}
+
 /// `⟂v = (−v_y, v_x)`.
 #[inline]
 pub(crate) fn perp(v: Vector2<f64>) -> Vector2<f64> {
@@ -92,8 +105,8 @@ pub(crate) fn perp(v: Vector2<f64>) -> Vector2<f64> {
 
 /// `⟂` of a vector's derivative, row-wise.
 #[inline]
-fn perp_rows(m: &Rows2) -> Rows2 {
-    let mut out = Rows2::zeros();
+fn perp_rows(m: &PoseRows2) -> PoseRows2 {
+    let mut out = PoseRows2::zeros();
     out.set_row(0, &(-m.row(1)));
     out.set_row(1, &m.row(0));
     out
@@ -101,24 +114,16 @@ fn perp_rows(m: &Rows2) -> Rows2 {
 
 /// `∂(a · b)` for a constant `a`: `a_x ∂b_x + a_y ∂b_y`.
 #[inline]
-pub(crate) fn dot_rows(a: Vector2<f64>, m: &Rows2) -> Row {
+pub(crate) fn dot_rows(a: Vector2<f64>, m: &PoseRows2) -> PoseRow {
     m.row(0) * a.x + m.row(1) * a.y
-}
-
-/// The unit row `∂x/∂x` of input `column`.
-#[inline]
-fn unit(column: usize) -> Row {
-    let mut r = Row::zeros();
-    r[column] = 1.0;
-    r
 }
 
 /// `∂(R + offset)` of a point fixed on a body whose pose starts at column
 /// `pose`, at global offset `offset = A ū` from its centroid:
 /// `[I | ⟂offset]` (`∂(A ū)/∂θ = ⟂(A ū)`).
 #[inline]
-pub(crate) fn body_point(offset: Vector2<f64>, pose: usize) -> Rows2 {
-    let mut m = Rows2::zeros();
+pub(crate) fn body_point(offset: Vector2<f64>, pose: usize) -> PoseRows2 {
+    let mut m = PoseRows2::zeros();
     m[(0, pose)] = 1.0;
     m[(1, pose + 1)] = 1.0;
     m[(0, pose + 2)] = -offset.y;
@@ -128,108 +133,149 @@ pub(crate) fn body_point(offset: Vector2<f64>, pose: usize) -> Rows2 {
 
 /// The derivative of a unit vector `u = d/|d|` from `d`'s: `(∂d − u (u·∂d))/|d|`.
 #[inline]
-pub(crate) fn unit_vector(u: Vector2<f64>, length: f64, d: &Rows2) -> Rows2 {
+pub(crate) fn unit_vector(u: Vector2<f64>, length: f64, d: &PoseRows2) -> PoseRows2 {
     (d - u * dot_rows(u, d)) / length
 }
 
-/// `∂v` of the relative velocity of the two material points at the
-/// contact point, from the point's derivative.
-fn velocity(point: &Rows2, p: Vector2<f64>, link: &BodyState, other: Option<&BodyState>) -> Rows2 {
-    let mut dv = Rows2::zeros();
-    let mut add = |body: &BodyState, pose: usize, rate: usize, sign: f64| {
-        let arm = p - body.position;
-        // `Ṙ + ω ⟂arm`, with the arm `p − R` moving as `∂p − ∂R`.
-        dv[(0, rate)] += sign;
-        dv[(1, rate + 1)] += sign;
-        let lever = perp(arm);
-        dv[(0, rate + 2)] += sign * lever.x;
-        dv[(1, rate + 2)] += sign * lever.y;
-        let mut d_arm = *point;
-        d_arm[(0, pose)] -= 1.0;
-        d_arm[(1, pose + 1)] -= 1.0;
-        dv += perp_rows(&d_arm) * (sign * body.omega);
-    };
-    add(link, LINK_POSE, LINK_RATE, 1.0);
+/// `∂(p − R)` of a contact point's arm from a body whose pose starts at
+/// geometry column `pose`.
+#[inline]
+fn arm_of(point: &PoseRows2, pose: usize) -> PoseRows2 {
+    let mut d = *point;
+    d[(0, pose)] -= 1.0;
+    d[(1, pose + 1)] -= 1.0;
+    d
+}
+
+/// The relative velocity `v` of the two material points at the contact
+/// to first order: its change with the poses (the points' arms turning,
+/// `ω ⟂(∂p − ∂R)` for each body) — with the rates it is `[I | ⟂arm]`
+/// for the link and the reverse for the other body.
+fn velocity(point: &PoseRows2, link: &BodyState, other: Option<&BodyState>) -> PoseRows2 {
+    let mut dv = perp_rows(&arm_of(point, LINK)) * link.omega;
     if let Some(other) = other {
-        add(other, OTHER_POSE, OTHER_RATE, -1.0);
+        dv -= perp_rows(&arm_of(point, OTHER)) * other.omega;
     }
     dv
 }
 
+/// A contact force's derivatives: with the poses, with the relative
+/// velocity `v` (2 × 2), with the deflection; and the deflection's rate's.
+struct ForceTangent {
+    force: Vector2<f64>,
+    by_pose: PoseRows2,
+    by_velocity: Matrix2<f64>,
+    by_deflection: Vector2<f64>,
+    rate_by_pose: PoseRow,
+    rate_by_velocity: RowVector2<f64>,
+    rate_by_deflection: f64,
+}
+
 /// The contact's gradient norm `|g|`, its unit tangent `t = ⟂g/|g|` and
-/// their derivatives.
-fn tangent_of(contact: &Contact, geometry: &GeometryTangent) -> (Row, Vector2<f64>, Rows2) {
+/// their derivatives with the poses (neither depends on `v`).
+fn tangent_of(contact: &Contact, geometry: &GeometryTangent) -> (PoseRow, Vector2<f64>, PoseRows2) {
     let (g, norm) = (contact.gradient, contact.gradient_norm);
     let d_norm = dot_rows(g, &geometry.gradient) / norm;
     let d_tangent = (perp_rows(&geometry.gradient) - perp(g) * (d_norm / norm)) / norm;
     (d_norm, contact.tangent(), d_tangent)
 }
 
-/// The loads' derivatives from the force on the link and its derivative:
-/// the link takes `F` at its arm `p − R_L`, the other body `−F` at
-/// `p − R_O`.
-fn loads(
-    contact: &Contact,
-    geometry: &GeometryTangent,
-    (link, other): (&BodyState, Option<&BodyState>),
-    force: Vector2<f64>,
-    d_force: &Rows2,
-    rate: Row,
-) -> ContactJacobian {
-    let moment = |arm: Vector2<f64>, pose: usize, sign: f64| {
-        let mut d_arm = geometry.point;
-        d_arm[(0, pose)] -= 1.0;
-        d_arm[(1, pose + 1)] -= 1.0;
-        // ∂(arm × F) = ∂arm × F + arm × ∂F.
-        (d_arm.row(0) * force.y - d_arm.row(1) * force.x + d_force.row(1) * arm.x
-            - d_force.row(0) * arm.y)
-            * sign
-    };
-    let mut on_link = Rows3::zeros();
-    on_link.fixed_rows_mut::<2>(0).copy_from(d_force);
-    on_link.set_row(2, &moment(contact.point - link.position, LINK_POSE, 1.0));
-    let mut on_other = Rows3::zeros();
-    if let Some(other) = other {
-        on_other.fixed_rows_mut::<2>(0).copy_from(&(-d_force));
-        on_other.set_row(2, &moment(contact.point - other.position, OTHER_POSE, -1.0));
-    }
-    ContactJacobian {
-        link: on_link,
-        other: on_other,
-        rate,
-    }
-}
-
-/// The normal force per unit gradient `N`, its derivative, and the
-/// closing rate's derivative, under `law` (the normal law of either kind
-/// of contact).
+/// The normal force per unit gradient `N` and its derivatives with the
+/// poses and with `v` (through the closing rate `δ̇ = −v·g`).
 fn normal_part(
     law: &crate::laws::NormalLaw,
     contact: &Contact,
     geometry: &GeometryTangent,
-    dv: &Rows2,
-) -> (f64, Row) {
+    dv: &PoseRows2,
+) -> (f64, PoseRow, RowVector2<f64>) {
     let rate = contact.rate();
     let d_rate = -(dot_rows(contact.gradient, dv) + dot_rows(contact.velocity, &geometry.gradient));
     let normal = law.force(contact.depth, rate);
     let (by_depth, by_rate) = law.slopes(contact.depth, rate);
-    (normal, geometry.depth * by_depth + d_rate * by_rate)
+    (
+        normal,
+        geometry.depth * by_depth + d_rate * by_rate,
+        -contact.gradient.transpose() * by_rate,
+    )
+}
+
+/// The loads' derivatives over the [`INPUTS`], into `out`, from the force
+/// on the link's: the link takes `F` at its arm `p − R_L`, the other body
+/// `−F` at `p − R_O`; the rates enter through `v`, `∂v/∂(ṘL, ωL) =
+/// [I | ⟂arm_L]` and the reverse for the other body.
+fn loads(
+    contact: &Contact,
+    geometry: &GeometryTangent,
+    (link, other): (&BodyState, Option<&BodyState>),
+    tangent: &ForceTangent,
+    out: &mut ContactJacobian,
+) {
+    let force = tangent.force;
+    // ∂F over the 13 inputs, and the moment rows.
+    let mut by_input = SMatrix::<f64, 2, INPUTS>::zeros();
+    by_input
+        .fixed_columns_mut::<3>(LINK_POSE)
+        .copy_from(&tangent.by_pose.fixed_columns::<3>(LINK));
+    by_input
+        .fixed_columns_mut::<3>(OTHER_POSE)
+        .copy_from(&tangent.by_pose.fixed_columns::<3>(OTHER));
+    let rates = |arm: Vector2<f64>| Matrix2x3::new(1.0, 0.0, -arm.y, 0.0, 1.0, arm.x);
+    let arm_link = contact.point - link.position;
+    by_input
+        .fixed_columns_mut::<3>(LINK_RATE)
+        .copy_from(&(tangent.by_velocity * rates(arm_link)));
+    by_input.set_column(DEFLECTION, &tangent.by_deflection);
+    let arm_other = other.map(|o| contact.point - o.position);
+    if let Some(arm) = arm_other {
+        by_input
+            .fixed_columns_mut::<3>(OTHER_RATE)
+            .copy_from(&(-(tangent.by_velocity * rates(arm))));
+    }
+    // ∂(arm × F) = ∂arm × F + arm × ∂F, with ∂arm only over the poses.
+    let moment = |arm: Vector2<f64>, pose: usize| -> Row {
+        let d_arm = arm_of(&geometry.point, pose);
+        let mut row = by_input.row(1) * arm.x - by_input.row(0) * arm.y;
+        let turning = d_arm.row(0) * force.y - d_arm.row(1) * force.x;
+        row.fixed_columns_mut::<3>(LINK_POSE)
+            .add_assign(&turning.fixed_columns::<3>(LINK));
+        row.fixed_columns_mut::<3>(OTHER_POSE)
+            .add_assign(&turning.fixed_columns::<3>(OTHER));
+        row
+    };
+    out.link.fixed_rows_mut::<2>(0).copy_from(&by_input);
+    out.link.set_row(2, &moment(arm_link, LINK));
+    match arm_other {
+        Some(arm) => {
+            out.other.fixed_rows_mut::<2>(0).copy_from(&(-by_input));
+            out.other.set_row(2, &(-moment(arm, OTHER)));
+        }
+        None => out.other = Rows3::zeros(),
+    }
+    let mut rate = Row::zeros();
+    rate.fixed_columns_mut::<3>(LINK_POSE)
+        .copy_from(&tangent.rate_by_pose.fixed_columns::<3>(LINK));
+    rate.fixed_columns_mut::<3>(LINK_RATE)
+        .copy_from(&(tangent.rate_by_velocity * rates(arm_link)));
+    rate[DEFLECTION] = tangent.rate_by_deflection;
+    out.rate = rate;
 }
 
 impl ContactLaws {
     /// The first derivatives of [`respond`](Self::respond)'s loads (applied
     /// as [`ContactForce::apply`](super::ContactForce::apply) applies them)
-    /// over the contact's [`INPUTS`], given the geometry's derivatives and
-    /// the states of the link and of the other body (`None`: the ground).
+    /// over the contact's [`INPUTS`], into `out`, given the geometry's
+    /// derivatives and the states of the link and of the other body
+    /// (`None`: the ground).
     pub fn linearise(
         &self,
         contact: &Contact,
         geometry: &GeometryTangent,
         link: &BodyState,
         other: Option<&BodyState>,
-    ) -> ContactJacobian {
-        let dv = velocity(&geometry.point, contact.point, link, other);
-        let (normal, d_normal) = normal_part(&self.normal, contact, geometry, &dv);
+        out: &mut ContactJacobian,
+    ) {
+        let dv = velocity(&geometry.point, link, other);
+        let (normal, d_normal, normal_by_v) = normal_part(&self.normal, contact, geometry, &dv);
         let (d_norm, tangent, d_tangent) = tangent_of(contact, geometry);
         let (v, g) = (contact.velocity, contact.gradient);
         let slip = v.dot(&tangent);
@@ -239,68 +285,76 @@ impl ContactLaws {
         let friction = self.friction.force(total, slip);
         let (by_normal, by_slip) = self.friction.slopes(total, slip);
         let d_friction = d_total * by_normal + d_slip * by_slip;
-        let force = g * normal + tangent * friction;
-        let d_force =
-            geometry.gradient * normal + g * d_normal + d_tangent * friction + tangent * d_friction;
-        loads(
-            contact,
-            geometry,
-            (link, other),
-            force,
-            &d_force,
-            Row::zeros(),
-        )
+        let friction_by_v =
+            normal_by_v * (contact.gradient_norm * by_normal) + tangent.transpose() * by_slip;
+        let force_tangent = ForceTangent {
+            force: g * normal + tangent * friction,
+            by_pose: geometry.gradient * normal
+                + g * d_normal
+                + d_tangent * friction
+                + tangent * d_friction,
+            by_velocity: g * normal_by_v + tangent * friction_by_v,
+            by_deflection: Vector2::zeros(),
+            rate_by_pose: PoseRow::zeros(),
+            rate_by_velocity: RowVector2::zeros(),
+            rate_by_deflection: 0.0,
+        };
+        loads(contact, geometry, (link, other), &force_tangent, out);
     }
 }
 
 impl GroundLaws {
     /// The first derivatives of [`respond`](Self::respond)'s load on the
     /// link and of the deflection's rate, over the contact's [`INPUTS`]
-    /// (the deflection `z`, m, in column [`DEFLECTION`]).
+    /// (the deflection `z`, m, in column [`DEFLECTION`]), into `out`.
     pub fn linearise(
         &self,
         contact: &Contact,
         z: f64,
         geometry: &GeometryTangent,
         link: &BodyState,
-    ) -> ContactJacobian {
+        out: &mut ContactJacobian,
+    ) {
         let stiction = match self.friction {
             GroundFriction::Regularised(friction) => {
                 let laws = ContactLaws {
                     normal: self.normal,
                     friction,
                 };
-                return laws.linearise(contact, geometry, link, None);
+                return laws.linearise(contact, geometry, link, None, out);
             }
             GroundFriction::Stiction(stiction) => stiction,
         };
-        let dv = velocity(&geometry.point, contact.point, link, None);
-        let (normal, d_normal) = normal_part(&self.normal, contact, geometry, &dv);
+        let dv = velocity(&geometry.point, link, None);
+        let (normal, d_normal, normal_by_v) = normal_part(&self.normal, contact, geometry, &dv);
         let (d_norm, tangent, d_tangent) = tangent_of(contact, geometry);
         let (forward, d_forward) = (-tangent, -d_tangent);
         let v = contact.velocity;
         let slip = v.dot(&forward);
         let d_slip = dot_rows(forward, &dv) + dot_rows(v, &d_forward);
+        let slip_by_v = forward.transpose();
         let total = normal * contact.gradient_norm;
         let d_total = d_normal * contact.gradient_norm + d_norm * normal;
+        let total_by_v = normal_by_v * contact.gradient_norm;
         let tangential = stiction.respond(z, slip, total);
         let slopes = stiction.slopes(z, slip, total);
-        let along = |[by_z, by_slip, by_normal]: [f64; 3]| {
-            unit(DEFLECTION) * by_z + d_slip * by_slip + d_total * by_normal
+        let [f_z, f_slip, f_normal] = slopes.force;
+        let [r_z, r_slip, r_normal] = slopes.rate;
+        let d_tangential = d_slip * f_slip + d_total * f_normal;
+        let tangential_by_v = slip_by_v * f_slip + total_by_v * f_normal;
+        let g = contact.gradient;
+        let force_tangent = ForceTangent {
+            force: g * normal + forward * tangential.force,
+            by_pose: geometry.gradient * normal
+                + g * d_normal
+                + d_forward * tangential.force
+                + forward * d_tangential,
+            by_velocity: g * normal_by_v + forward * tangential_by_v,
+            by_deflection: forward * f_z,
+            rate_by_pose: d_slip * r_slip + d_total * r_normal,
+            rate_by_velocity: slip_by_v * r_slip + total_by_v * r_normal,
+            rate_by_deflection: r_z,
         };
-        let d_tangential = along(slopes.force);
-        let force = contact.gradient * normal + forward * tangential.force;
-        let d_force = geometry.gradient * normal
-            + contact.gradient * d_normal
-            + d_forward * tangential.force
-            + forward * d_tangential;
-        loads(
-            contact,
-            geometry,
-            (link, None),
-            force,
-            &d_force,
-            along(slopes.rate),
-        )
+        loads(contact, geometry, (link, None), &force_tangent, out);
     }
 }

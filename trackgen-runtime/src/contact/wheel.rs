@@ -4,7 +4,7 @@
 use nalgebra::Vector2;
 
 use super::tangent::{
-    GeometryTangent, LINK_POSE, OTHER_POSE, body_point, dot_rows, perp, unit_vector,
+    GeometryTangent, LINK, OTHER, PoseRows2, body_point, dot_rows, perp, unit_vector,
 };
 use super::{BodyState, Contact, ShoeGeometry};
 
@@ -64,18 +64,18 @@ pub fn tangent(
     let ab = b - a;
     let length2 = ab.norm_squared();
     let s = (wheel.position - a).dot(&ab) / length2;
-    let d_centre = body_point(nalgebra::Vector2::zeros(), OTHER_POSE);
-    let d_a = body_point(arm_a, LINK_POSE);
+    let d_centre = body_point(nalgebra::Vector2::zeros(), OTHER);
+    let d_a = body_point(arm_a, LINK);
     let point = if s <= 0.0 {
         d_a
     } else if s >= 1.0 {
-        body_point(arm_b, LINK_POSE)
+        body_point(arm_b, LINK)
     } else {
         // The face turns rigidly with the link: ∂(b − a) = ⟂(b − a) ∂θ.
-        let mut d_ab = GeometryTangent::ZERO.point;
+        let mut d_ab = PoseRows2::zeros();
         let turned = perp(ab);
-        d_ab[(0, LINK_POSE + 2)] = turned.x;
-        d_ab[(1, LINK_POSE + 2)] = turned.y;
+        d_ab[(0, LINK + 2)] = turned.x;
+        d_ab[(1, LINK + 2)] = turned.y;
         let d_s = (dot_rows(ab, &(d_centre - d_a)) + dot_rows(wheel.position - a, &d_ab)) / length2;
         d_a + d_ab * s + ab * d_s
     };

@@ -302,6 +302,41 @@ impl ShiftedChain {
         let mut lambda = std::mem::take(&mut self.lambda_columns);
         free.resize(3 * n * k, 0.0);
         lambda.resize(2 * n * k, 0.0);
+        #[cfg(target_arch = "x86_64")]
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the processor has AVX2, checked just above.
+            unsafe { self.sweep_columns_avx2(columns, k, &mut free, &mut lambda) };
+        } else {
+            self.sweep_columns(columns, k, &mut free, &mut lambda);
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        self.sweep_columns(columns, k, &mut free, &mut lambda);
+        self.free_columns = free;
+        self.lambda_columns = lambda;
+    }
+
+    /// [`sweep_columns`](Self::sweep_columns) compiled for AVX2: four
+    /// sides at a time instead of two. Only the width of the vector
+    /// operations changes, not which run or in what order (no fused
+    /// multiply-add), so the results are the same bits.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx2")]
+    fn sweep_columns_avx2(
+        &self,
+        columns: &mut [f64],
+        k: usize,
+        free: &mut [f64],
+        lambda: &mut [f64],
+    ) {
+        self.sweep_columns(columns, k, free, lambda);
+    }
+
+    /// [`solve_columns`](Self::solve_columns)'s sweeps, with its scratch.
+    // Joint j couples links j and j + 1 (mod n): the loops index neighbours.
+    #[allow(clippy::needless_range_loop)]
+    #[inline(always)]
+    fn sweep_columns(&self, columns: &mut [f64], k: usize, free: &mut [f64], lambda: &mut [f64]) {
+        let n = self.joints.len();
         // `Wᵢ fᵢ`.
         for i in 0..n {
             let w = &self.inverse_blocks[i];
@@ -329,6 +364,7 @@ impl ShiftedChain {
             }
         }
         // `λ ← M λ` and `λ_row ← λ_row − M λ_other` on 2 × k blocks.
+        #[inline(always)]
         fn apply(m: &Matrix2<f64>, v: &mut [f64], k: usize) {
             let (v0, v1) = v.split_at_mut(k);
             for r in 0..k {
@@ -337,6 +373,7 @@ impl ShiftedChain {
                 v1[r] = m[(1, 0)] * a + m[(1, 1)] * b;
             }
         }
+        #[inline(always)]
         fn subtract(m: &Matrix2<f64>, row: &mut [f64], other: &[f64], k: usize) {
             let (r0, r1) = row.split_at_mut(k);
             let (o0, o1) = other.split_at(k);
@@ -397,7 +434,5 @@ impl ShiftedChain {
                 }
             }
         }
-        self.free_columns = free;
-        self.lambda_columns = lambda;
     }
 }

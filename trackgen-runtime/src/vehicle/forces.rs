@@ -7,7 +7,7 @@ use nalgebra::SVector;
 use super::workspace::Workspace;
 use super::{Geometry, VehicleConfig, arms};
 use crate::contact::soft_ground::SoftGround;
-use crate::contact::{ContactForce, GroundFriction, ground, sprocket, wheel};
+use crate::contact::{ContactForce, ContactJacobian, GroundFriction, ground, sprocket, wheel};
 use crate::error::SimulationError;
 use crate::model::{BodyLoad, ChassisModel, PartKind};
 
@@ -263,16 +263,16 @@ pub(super) fn linearise(
         jacobians,
         ..
     } = work;
-    jacobians.clear();
+    jacobians.resize(contacts.len(), ContactJacobian::ZERO);
     let sprocket_body = sprocket.map(|s| s.body);
-    for contact in contacts.iter() {
+    for (contact, out) in contacts.iter().zip(jacobians.iter_mut()) {
         let link = &links[contact.link];
-        let jacobian = match contact.other {
+        match contact.other {
             None => {
                 let slot = contact.link * points + contact.feature;
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);
                 let tangent = ground::tangent(&config.terrain, contact);
-                config.ground.linearise(contact, z, &tangent, link)
+                config.ground.linearise(contact, z, &tangent, link, out);
             }
             Some(body) if Some(body) == sprocket_body => {
                 let part = &parts[body];
@@ -280,14 +280,15 @@ pub(super) fn linearise(
                 let tangent = sprocket::tangent(contact, link, part, profile, &geometry.shoe);
                 config
                     .sprocket
-                    .linearise(contact, &tangent, link, Some(part))
+                    .linearise(contact, &tangent, link, Some(part), out);
             }
             Some(body) => {
                 let part = &parts[body];
                 let tangent = wheel::tangent(contact, link, part, &geometry.shoe);
-                config.wheels.linearise(contact, &tangent, link, Some(part))
+                config
+                    .wheels
+                    .linearise(contact, &tangent, link, Some(part), out);
             }
-        };
-        jacobians.push(jacobian);
+        }
     }
 }

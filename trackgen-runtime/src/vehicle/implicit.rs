@@ -174,8 +174,10 @@ pub(super) struct Implicit {
     /// layout), and the same column by column (`[q · 3n + 3 i + c]`).
     coupled: Vec<f64>,
     coupled_columns: Vec<f64>,
-    /// The chassis' matrix before the Schur complement's LU.
+    /// The chassis' matrix before the Schur complement's LU, and the
+    /// coupling's share of it row by row.
     schur_matrix: DMatrix<f64>,
+    schur_rows: Vec<f64>,
 
     // Scratch of a solve (`3 n` or `3 m` values: `(x, y, θ)` per body).
     loads: Vec<f64>,
@@ -254,6 +256,7 @@ impl Implicit {
             coupled: vec![0.0; 3 * n * dof],
             coupled_columns: vec![0.0; 3 * n * dof],
             schur_matrix: DMatrix::zeros(dof, dof),
+            schur_rows: vec![0.0; dof * dof],
             loads: vec![0.0; 3 * n],
             track_q: vec![0.0; 3 * n],
             track_v: vec![0.0; 3 * n],
@@ -461,22 +464,34 @@ impl Implicit {
             }
         }
         self.chain.solve_columns(z, dof);
+        // The same column by column, for the solves' `x −= Z x_c`.
         let rows = z.len() / dof;
-        for (row, values) in z.chunks_exact(dof).enumerate() {
-            for (q, &v) in values.iter().enumerate() {
-                self.coupled_columns[q * rows + row] = v;
+        for (q, column) in self.coupled_columns.chunks_exact_mut(rows).enumerate() {
+            for (value, row) in column.iter_mut().zip(z.chunks_exact(dof)) {
+                *value = row[q];
             }
         }
+        // Row by row into a row-major scratch (each update a contiguous
+        // row of dof), added to the column-major matrix at the end.
+        let rows_of = &mut self.schur_rows;
+        rows_of.fill(0.0);
         for c in &self.couplings {
             let e = -(c.body_by_rate * a + c.body_by_pose * a2);
             let link = &z[3 * c.link * dof..3 * (c.link + 1) * dof];
+            let (z0, rest) = link.split_at(dof);
+            let (z1, z2) = rest.split_at(dof);
             for &p in &self.reach[c.body] {
                 // `H_pᵀ E_bl Z_l`, a row of dof.
-                let hp = self.h.fixed_view::<3, 1>(3 * c.body, p).transpose() * e;
-                for q in 0..dof {
-                    schur[(p, q)] -=
-                        hp[0] * link[q] + hp[1] * link[dof + q] + hp[2] * link[2 * dof + q];
+                let w = self.h.fixed_view::<3, 1>(3 * c.body, p).transpose() * e;
+                let row = &mut rows_of[p * dof..(p + 1) * dof];
+                for (q, r) in row.iter_mut().enumerate() {
+                    *r += w[0] * z0[q] + w[1] * z1[q] + w[2] * z2[q];
                 }
+            }
+        }
+        for p in 0..dof {
+            for q in 0..dof {
+                schur[(p, q)] -= rows_of[p * dof + q];
             }
         }
         let lu = schur.clone().lu();

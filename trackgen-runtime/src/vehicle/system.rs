@@ -197,6 +197,7 @@ where
         y: &[f64],
     ) -> Result<(SVector<f64, DC>, SVector<f64, DC>), SimulationError> {
         self.work.at = None;
+        self.work.accelerated = false;
         let (bodies, [integral, ..], tangential) = self.split(y);
         let (yt, yc) = self.bodies.split(bodies);
         self.bodies.parts_mut().0.recover(t, yt)?;
@@ -484,9 +485,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
     /// partitioning (the declared way); on soft soil, or closed another
     /// way, the integrator's dense Jacobian.
     fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
-        let own = self.soil.is_none()
-            && self.track().dependent_pair().is_some()
-            && std::env::var("ROSW_DENSE").is_err();
+        let own = self.soil.is_none() && self.track().dependent_pair().is_some();
         own.then_some(self as &mut dyn ImplicitSolve)
     }
 
@@ -498,6 +497,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         let (dyt, dyc) = self.bodies.split_mut(dy_bodies);
         let (track, chassis) = self.bodies.parts_mut();
         track.derivative_recovered(t, dyt)?;
+        self.work.accelerated = true;
         // The chassis' trigonometry is the kinematics stage's, at this state.
         chassis.derivative_with_trig(t, yc, &self.work.part_trig, dyc)?;
         let (qt, qdt, _) = self.track().recovered();
@@ -518,8 +518,11 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
     /// track's dependent pair: the vehicle's `W` (see [`Implicit`]).
     fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let (qc, qdc) = self.evaluated(t, y)?;
-        // The joints' forces at the state.
-        self.bodies.parts_mut().0.accelerations(t)?;
+        // The joints' forces at the state, unless the evaluation there
+        // solved for them.
+        if !self.work.accelerated {
+            self.bodies.parts_mut().0.accelerations(t)?;
+        }
         let (_, [integral, ..], tangential) = self.split(y);
         let points = self.geometry.shoe.ground_points.len();
         forces::linearise(

@@ -47,6 +47,9 @@ pub(super) struct Workspace {
     pub at: Option<f64>,
     /// The state of that evaluation.
     pub state: Vec<f64>,
+    /// Whether the track's accelerations (and joint forces) were solved
+    /// at that state.
+    pub accelerated: bool,
     /// Every joint's tension (recording).
     pub tensions: Vec<f64>,
     /// Every joint's distance from the sprocket's pitch circle (recording).
@@ -75,6 +78,7 @@ impl Workspace {
             books: Books::default(),
             at: None,
             state: Vec::new(),
+            accelerated: false,
             tensions: Vec::with_capacity(links),
             offsets: Vec::with_capacity(links),
         }

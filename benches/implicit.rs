@@ -1,0 +1,84 @@
+//! What the linearly implicit integrator's linear algebra costs on a
+//! vehicle, against one evaluation of its right-hand side: the Marder
+//! driving at 2 m/s (1.5 s from rest), its own `W`
+//! (`integrate::ImplicitSolve`): linearising (the force elements'
+//! Jacobians, the chassis' matrices), factoring `I − a W` for a step of
+//! 1 ms, and one solve.
+//!
+//! `cargo bench --bench implicit`; numbers in README.md.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use std::hint::black_box;
+use trackgen::Vehicle;
+use trackgen::contact::Terrain;
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::simulate::Simulated;
+use trackgen::vehicle::build;
+use trackgen::vehicles::marder::Marder;
+
+fn implicit(c: &mut Criterion) {
+    let config = Marder::config(
+        Terrain::Flat { height: 0.0 },
+        Marder::speed_drive(|t| 2.0 * t.min(1.0)),
+    );
+    let mut system = build::<Marder>(config).unwrap();
+    let mut y = system.initial_state();
+    let mut stepper = Integrator::Bs23 {
+        rtol: 1e-4,
+        atol: 1e-4,
+        max_step: 0.01,
+    }
+    .stepper(system.dimension());
+    let mut t = 0.0;
+    while t < 1.5 {
+        stepper.step(&mut system, &mut t, &mut y, 1.5).unwrap();
+        if system.after_step(t, y.as_mut_slice(), &mut |_| {}).unwrap() {
+            stepper.restart();
+        }
+    }
+    let mut dy = vec![0.0; y.len()];
+    let a = 0.435_866_521_508_459 * 1e-3;
+    let mut group = c.benchmark_group("marder_implicit");
+    group.bench_function("evaluation", |b| {
+        b.iter(|| {
+            system
+                .derivative(t, black_box(y.as_slice()), &mut dy)
+                .unwrap()
+        })
+    });
+    group.bench_function("evaluation_and_linearisation", |b| {
+        b.iter(|| {
+            system
+                .derivative(t, black_box(y.as_slice()), &mut dy)
+                .unwrap();
+            system
+                .implicit()
+                .unwrap()
+                .linearise(t, y.as_slice())
+                .unwrap();
+        })
+    });
+    system
+        .implicit()
+        .unwrap()
+        .linearise(t, y.as_slice())
+        .unwrap();
+    group.bench_function("factor", |b| {
+        b.iter(|| system.implicit().unwrap().factor(t, black_box(a)).unwrap())
+    });
+    let mut x = dy.clone();
+    group.bench_function("solve", |b| {
+        b.iter(|| {
+            x.copy_from_slice(&dy);
+            system
+                .implicit()
+                .unwrap()
+                .solve(t, black_box(&mut x))
+                .unwrap()
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, implicit);
+criterion_main!(benches);
