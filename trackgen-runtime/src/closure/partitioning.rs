@@ -294,6 +294,12 @@ impl Partition {
         let [k, l] = self.pair;
         q[2 + k] = self.guess[0];
         q[2 + l] = self.guess[1];
+        // The pair's rates are recovered, but the recovery takes the loop's
+        // rate over every link and then the pair's share out: what was left
+        // here would reach the result's last bits, making it depend on the
+        // state evaluated before.
+        qd[2 + k] = 0.0;
+        qd[2 + l] = 0.0;
         self.recover(model, (q, qd), trig)
             .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
                 t,

@@ -450,10 +450,14 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                 let Mode::Partitioned(partition) = &mut self.mode else {
                     unreachable!("matched above")
                 };
-                match partition.accept(t, (&q, &qd), &self.columns, y)? {
+                let switch = partition.accept(t, (&q, &qd), &self.columns, y)?;
+                // Newton-Raphson now starts from the accepted pair: a
+                // recovery kept from the old start would make the next
+                // evaluation at this state depend on what was evaluated
+                // before it (the same root, other last bits).
+                self.recovered.valid = false;
+                match switch {
                     Some(switch) => {
-                        // The same state means other coordinates now.
-                        self.recovered.valid = false;
                         switched(switch);
                         Ok(true)
                     }
