@@ -46,16 +46,17 @@ pub struct Args {
     #[arg(long, default_value_t = 2.0, value_name = "SECONDS", value_parser = non_negative_seconds)]
     pub ramp: f64,
     /// Integrator tolerance, relative and absolute, from 1e-12 to 0.1;
-    /// default 1e-3 for the M113 and 1e-4 for the Marder. At 1e-3 the
-    /// M113's energy balance closes to ~0.3 % of the motor's work (the
-    /// vehicle tests hold a shortened bump course at these settings to
-    /// 0.5 %); at 1e-4, to ~0.02 %, at half the speed. The Marder's step is
-    /// held by its stiffest mode, not by accuracy, so 1e-4 costs it no
-    /// more than 1e-3 and closes its books to ~1e-4 (1 % at 1e-3).
+    /// default 1e-3 for Bogacki-Shampine and Dormand-Prince, 1e-2 for
+    /// ROS34PW2 (the two close the books to about 1e-3 of the motor's
+    /// work: the M113 with Bogacki-Shampine at 1e-3, the Marder with
+    /// ROS34PW2 at 1e-2); `auto` runs each method at its own. The books
+    /// are held to 10 × the tolerance of the loosest method that ran.
     #[arg(long, value_name = "TOL", value_parser = tolerance)]
     pub tolerance: Option<f64>,
-    /// Integrator.
-    #[arg(long, value_enum, default_value_t = Method::Bs23)]
+    /// Integrator: `auto` runs Bogacki-Shampine while accuracy sets its
+    /// step and ROS34PW2 while the stiffest mode would (checked at the
+    /// start and every second), and says which it ran.
+    #[arg(long, value_enum, default_value_t = Method::Auto)]
     pub integrator: Method,
     /// Where the run starts: `assembled` (the track wrapped, shoes 1 mm
     /// above the ground, then `--settle` seconds of settling) or
@@ -135,6 +136,8 @@ pub enum Start {
 /// The integrators offered.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Method {
+    /// Bogacki-Shampine or ROS34PW2, by the stiffness as the run goes.
+    Auto,
     /// Bogacki-Shampine 3(2): three evaluations a step, the fastest at
     /// loose tolerances.
     Bs23,
@@ -145,12 +148,24 @@ pub enum Method {
 }
 
 impl Args {
-    /// The tolerance given, or the vehicle's default.
-    pub fn tolerance(&self) -> f64 {
-        self.tolerance.unwrap_or(match self.vehicle {
-            Vehicle::M113 => 1e-3,
-            Vehicle::Marder => 1e-4,
-        })
+    /// The explicit methods' tolerance: given, or 1e-3.
+    pub fn explicit_tolerance(&self) -> f64 {
+        self.tolerance.unwrap_or(1e-3)
+    }
+
+    /// ROS34PW2's tolerance: given, or 1e-2.
+    pub fn implicit_tolerance(&self) -> f64 {
+        self.tolerance.unwrap_or(1e-2)
+    }
+
+    /// The tolerance the books are held to after a run whose integrator
+    /// made `implicit` of its accepted steps with ROS34PW2.
+    pub fn books_tolerance(&self, implicit: u64) -> f64 {
+        match self.integrator {
+            Method::Ros34pw2 => self.implicit_tolerance(),
+            Method::Auto if implicit > 0 => self.implicit_tolerance(),
+            _ => self.explicit_tolerance(),
+        }
     }
 
     /// The output folder given, or `out/<vehicle>`.
@@ -162,8 +177,17 @@ impl Args {
 
     /// The integrator at the chosen tolerance, steps of at most 10 ms.
     pub fn integrator(&self) -> Integrator {
-        let (rtol, atol, max_step) = (self.tolerance(), self.tolerance(), 0.01);
+        let max_step = 0.01;
+        let (rtol, atol) = match self.integrator {
+            Method::Ros34pw2 => (self.implicit_tolerance(), self.implicit_tolerance()),
+            _ => (self.explicit_tolerance(), self.explicit_tolerance()),
+        };
         match self.integrator {
+            Method::Auto => Integrator::Auto {
+                explicit_tolerance: self.explicit_tolerance(),
+                implicit_tolerance: self.implicit_tolerance(),
+                max_step,
+            },
             Method::Bs23 => Integrator::Bs23 {
                 rtol,
                 atol,

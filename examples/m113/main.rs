@@ -213,7 +213,8 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     // A run that stopped at its start has nothing to summarise or draw.
     let started = report.rows >= 2;
     let written = if started {
-        report::print(&outputs.recorders.summary, &report, wall, args.tolerance());
+        let tolerance = args.books_tolerance(report.stats.implicit);
+        report::print(&outputs.recorders.summary, &report, wall, tolerance);
         let ground = scene::Ground {
             terrain: terrain.clone(),
             rut: system

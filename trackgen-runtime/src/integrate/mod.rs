@@ -27,6 +27,7 @@
 //! of the closure must shrink the step, not abort) together with a restart
 //! after re-partitioning; the methods themselves are a page each.
 
+pub mod auto;
 mod control;
 mod differences;
 mod embedded;
@@ -35,6 +36,7 @@ mod rk4;
 mod rosenbrock;
 mod rosenbrock_w;
 
+pub use auto::{Auto, Check};
 pub use embedded::{Dopri5, Embedded};
 pub use rk4::Rk4;
 pub use rosenbrock::Rosenbrock2;
@@ -171,6 +173,9 @@ pub struct Stats {
     pub rejected: u64,
     /// Restarts after the state was changed between steps.
     pub restarts: u64,
+    /// Accepted steps made by a linearly implicit method (all of a
+    /// Rosenbrock run's; those after a switch of an [`Auto`] run).
+    pub implicit: u64,
 }
 
 /// A one-step method driven step by step.
@@ -192,6 +197,12 @@ pub trait Stepper {
 
     /// Counters so far.
     fn stats(&self) -> Stats;
+
+    /// The stiffness checks that chose the method ([`Auto`]); none for a
+    /// fixed method.
+    fn checks(&self) -> &[Check] {
+        &[]
+    }
 }
 
 /// Which integrator, with its settings.
@@ -231,6 +242,17 @@ pub enum Integrator {
         /// Largest step, s (`f64::INFINITY` for none).
         max_step: f64,
     },
+    /// [`Auto`]: Bogacki-Shampine while accuracy sets the step, ROS34PW2
+    /// while the stiffest mode would, checked at the start and every
+    /// second.
+    Auto {
+        /// Bogacki-Shampine's tolerance, relative and absolute.
+        explicit_tolerance: f64,
+        /// ROS34PW2's tolerance, relative and absolute.
+        implicit_tolerance: f64,
+        /// Largest step, s (`f64::INFINITY` for none).
+        max_step: f64,
+    },
     /// [`Rosenbrock2`] with a fixed step, s.
     Rosenbrock2 {
         /// Step, s.
@@ -267,6 +289,16 @@ impl Integrator {
                 atol,
                 max_step,
             } => Box::new(Ros34pw2::new(rtol, atol, max_step, dimension)),
+            Integrator::Auto {
+                explicit_tolerance,
+                implicit_tolerance,
+                max_step,
+            } => Box::new(Auto::new(
+                explicit_tolerance,
+                implicit_tolerance,
+                max_step,
+                dimension,
+            )),
             Integrator::Rosenbrock2 { step } => Box::new(Rosenbrock2::new(step, dimension)),
         }
     }

@@ -95,6 +95,9 @@ impl Stepper for Rosenbrock2 {
     }
 
     fn stats(&self) -> Stats {
-        self.state.stats
+        Stats {
+            implicit: self.state.stats.accepted,
+            ..self.state.stats
+        }
     }
 }

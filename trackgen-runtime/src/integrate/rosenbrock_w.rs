@@ -597,6 +597,9 @@ impl Stepper for Ros34pw2 {
     }
 
     fn stats(&self) -> Stats {
-        self.stats
+        Stats {
+            implicit: self.stats.accepted,
+            ..self.stats
+        }
     }
 }

@@ -139,24 +139,28 @@ impl TreeDescription {
             (3 * m, m + 2),
             "H is 3 rows per body by the dof"
         );
+        let rows = 3 * m;
         let perp = |v: Vector2<f64>| Vector2::new(-v.y, v.x);
-        out.fill(0.0);
+        // Column-major: entry (r, c) at `c · rows + r`.
+        let h = out.as_mut_slice();
+        h.fill(0.0);
         for b in 0..m {
-            out[(3 * b, 0)] = 1.0;
-            out[(3 * b + 1, 1)] = 1.0;
-            out[(3 * b + 2, 2 + b)] = 1.0;
+            let (x, y) = (3 * b, 3 * b + 1);
+            h[x] = 1.0;
+            h[rows + y] = 1.0;
+            h[(2 + b) * rows + 3 * b + 2] = 1.0;
             // Walk up: body c (on the path) hangs from its parent p at p's
             // `at_parent` of c, and c's own `at_self`.
             let own = -perp(rotations[b].apply(bodies[b].at_self));
-            out[(3 * b, 2 + b)] += own.x;
-            out[(3 * b + 1, 2 + b)] += own.y;
+            h[(2 + b) * rows + x] += own.x;
+            h[(2 + b) * rows + y] += own.y;
             let mut c = b;
             while let Some(p) = bodies[c].parent {
                 let toward = rotations[p].apply(bodies[c].at_parent);
                 let own = rotations[p].apply(bodies[p].at_self);
                 let lever = perp(toward - own);
-                out[(3 * b, 2 + p)] += lever.x;
-                out[(3 * b + 1, 2 + p)] += lever.y;
+                h[(2 + p) * rows + x] += lever.x;
+                h[(2 + p) * rows + y] += lever.y;
                 c = p;
             }
         }

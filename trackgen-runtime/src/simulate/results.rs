@@ -2,7 +2,7 @@ use std::io;
 use std::path::Path;
 
 use super::{CsvSink, Select, Sink, SinkError, Switch};
-use crate::integrate::Stats;
+use crate::integrate::{Check, Stats};
 
 /// The time series of a run: one row of named quantities per output time,
 /// the partition switches, and the integrator's counters. Kept whole when a
@@ -16,6 +16,9 @@ pub struct Results {
     pub switches: Vec<Switch>,
     /// Integrator counters.
     pub stats: Stats,
+    /// The stiffness checks that chose the method, with
+    /// [`Integrator::Auto`](crate::integrate::Integrator::Auto).
+    pub checks: Vec<Check>,
 }
 
 /// One output time of [`Results`].

@@ -2,7 +2,7 @@ use nalgebra::DVector;
 
 use super::{Output, Results, RunError, SimulationError, SimulationFailure, Sink};
 use crate::error::SettingsError;
-use crate::integrate::{Integrator, Stats};
+use crate::integrate::{Check, Integrator, Stats};
 use crate::system::Simulated;
 
 /// Integrates `system` from `t0` to `t_end` (s), recording at `output`.
@@ -32,7 +32,7 @@ pub fn simulate_with_progress(
     progress: &mut dyn FnMut(f64),
 ) -> Result<Results, SimulationFailure> {
     let mut results = Results::default();
-    let (outcome, stats) = drive(
+    let (outcome, stats, checks) = drive(
         system,
         integrator,
         t0,
@@ -42,6 +42,7 @@ pub fn simulate_with_progress(
         progress,
     );
     results.stats = stats;
+    results.checks = checks;
     match outcome {
         Ok(()) => Ok(results),
         Err(RunError::Simulation(error)) => Err(SimulationFailure { error, results }),
@@ -69,13 +70,21 @@ pub(super) fn drive(
     output: &Output,
     sink: &mut dyn Sink,
     progress: &mut dyn FnMut(f64),
-) -> (Result<(), RunError>, Stats) {
+) -> (Result<(), RunError>, Stats, Vec<Check>) {
     let columns = system.columns();
     if let Err(source) = sink.begin(&columns) {
-        return (Err(RunError::Sink { t: t0, source }), Stats::default());
+        return (
+            Err(RunError::Sink { t: t0, source }),
+            Stats::default(),
+            Vec::new(),
+        );
     }
     if let Err(error) = validate(integrator, t0, t_end, output) {
-        return (Err(SimulationError::from(error).into()), Stats::default());
+        return (
+            Err(SimulationError::from(error).into()),
+            Stats::default(),
+            Vec::new(),
+        );
     }
     let mut stepper = integrator.stepper(system.dimension());
     let outcome = run(
@@ -88,7 +97,7 @@ pub(super) fn drive(
         &columns,
         progress,
     );
-    (outcome, stepper.stats())
+    (outcome, stepper.stats(), stepper.checks().to_vec())
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -221,6 +230,11 @@ fn validate(
         | Integrator::Ros34pw2 {
             rtol,
             atol,
+            max_step,
+        }
+        | Integrator::Auto {
+            explicit_tolerance: rtol,
+            implicit_tolerance: atol,
             max_step,
         } => {
             if !(rtol >= 0.0

@@ -6,7 +6,7 @@ use thiserror::Error;
 
 use super::run::drive;
 use super::{Output, Simulated, SimulationError, Sink, SinkError, Switch};
-use crate::integrate::{Integrator, Stats};
+use crate::integrate::{Check, Integrator, Stats};
 
 /// What a streamed run did, besides its rows: how many it gave the sink,
 /// how many partition switches it made and the integrator's counters. The
@@ -22,6 +22,9 @@ pub struct RunReport {
     pub switches: usize,
     /// Integrator counters.
     pub stats: Stats,
+    /// The stiffness checks that chose the method, with
+    /// [`Integrator::Auto`](crate::integrate::Integrator::Auto).
+    pub checks: Vec<Check>,
 }
 
 /// Why a streamed run stopped early.
@@ -126,7 +129,7 @@ pub fn simulate_into(
         last_time: None,
         switches: 0,
     };
-    let (outcome, stats) = drive(
+    let (outcome, stats, checks) = drive(
         system,
         integrator,
         t0,
@@ -141,6 +144,7 @@ pub fn simulate_into(
         last_time: counted.last_time,
         switches: counted.switches,
         stats,
+        checks,
     };
     match (outcome, finished) {
         (Ok(()), Ok(())) => Ok(report),

@@ -247,7 +247,22 @@ impl Implicit {
             points: Vec::new(),
             chassis_mass: DMatrix::zeros(dof, dof),
             h: DMatrix::zeros(3 * m, dof),
-            reach: vec![Vec::with_capacity(dof); m],
+            // A body moves with the frame's coordinates and its own angle
+            // and its ancestors' (eq. (9)): the columns of its rows of H.
+            reach: (0..m)
+                .map(|b| {
+                    let mut reach = vec![0, 1, 2];
+                    let mut c = Some(b);
+                    while let Some(body) = c {
+                        if body != 0 {
+                            reach.push(2 + body);
+                        }
+                        c = chassis.bodies[body].parent;
+                    }
+                    reach.sort_unstable();
+                    reach
+                })
+                .collect(),
             arms: Vec::new(),
             drive: None,
             shift: f64::NAN,
@@ -279,10 +294,12 @@ impl Implicit {
     ) -> Result<(), DynamicsError> {
         let n = self.joints.len();
         self.trig.copy_from_slice(setting.trig);
+        if self.independent.is_empty() || self.pair != setting.pair {
+            self.independent.clear();
+            self.independent
+                .extend((0..n + 2).filter(|&c| c < 2 || !setting.pair.contains(&(c - 2))));
+        }
         self.pair = setting.pair;
-        self.independent.clear();
-        self.independent
-            .extend((0..n + 2).filter(|&c| c < 2 || !setting.pair.contains(&(c - 2))));
         for (i, (lever, spin)) in self.levers.iter_mut().zip(&mut self.spin).enumerate() {
             let rotation = Rotation::from_sin_cos(self.trig[i]);
             let (u1, u2) = self.joints[i];
@@ -375,15 +392,7 @@ impl Implicit {
         self.chassis_mass.copy_from_slice(setting.chassis_mass);
         self.chassis
             .velocity_transform(setting.rotations, &mut self.h);
-        for (b, reach) in self.reach.iter_mut().enumerate() {
-            reach.clear();
-            reach.extend((0..self.dof).filter(|&q| {
-                self.h
-                    .fixed_view::<3, 1>(3 * b, q)
-                    .iter()
-                    .any(|&v| v != 0.0)
-            }));
-        }
+
         self.arms.clear();
         self.arms.extend(setting.arms.iter().map(|arm| {
             let (by_angle, by_rate) = arm.spring.slopes();
