@@ -1393,3 +1393,43 @@ fn grade_hold_holds_with_stiction_and_creeps_without() {
         &["tiger", "m113|marder"],
     );
 }
+
+/// `stiff_vehicle --quick`: the Marder with stiffer friction and drive,
+/// 1 s on each integrator. Each run is a line with finite books; the
+/// stiffness holds Bogacki-Shampine's step (its evaluations at least 5 ×
+/// ROS34PW2's: measured 14 × over the 8 s run), and `auto` runs the
+/// implicit method (its evaluations within 1.2 × ROS34PW2's alone: the
+/// stiffness checks cost 41 evaluations each).
+#[test]
+fn stiff_vehicle_runs_the_implicit_method_where_stiffness_holds_the_step() {
+    let stiff = example("stiff_vehicle");
+    let dir = scratch("stiff_vehicle");
+    let out = run(&stiff, &["--quick"], &dir);
+    assert_success("stiff_vehicle --quick", &out);
+    let stdout = text(&out.stdout);
+    let evaluations = |label: &str| -> f64 {
+        let line = stdout
+            .lines()
+            .find(|l| l.starts_with(label))
+            .unwrap_or_else(|| panic!("no line for {label}:\n{stdout}"));
+        let books: f64 = line
+            .split("books")
+            .nth(1)
+            .and_then(|r| r.split_whitespace().next())
+            .and_then(|b| b.parse().ok())
+            .unwrap_or_else(|| panic!("no books in {line}"));
+        assert!(books.is_finite() && books.abs() < 0.1, "{line}");
+        line.split(" evaluations")
+            .next()
+            .and_then(|r| r.split_whitespace().last())
+            .and_then(|e| e.parse().ok())
+            .unwrap_or_else(|| panic!("no evaluations in {line}"))
+    };
+    let (explicit, implicit, auto) = (
+        evaluations("Bogacki-Shampine"),
+        evaluations("ROS34PW2"),
+        evaluations("auto"),
+    );
+    assert!(explicit >= 5.0 * implicit, "{stdout}");
+    assert!(auto <= 1.2 * implicit, "{stdout}");
+}
