@@ -20,6 +20,7 @@ mod error;
 mod fitted;
 mod forces;
 mod implicit;
+mod jacobian;
 mod layout;
 mod record;
 mod system;

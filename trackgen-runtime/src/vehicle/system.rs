@@ -6,6 +6,7 @@ use nalgebra::{DVector, SVector, Vector2};
 
 use super::forces::{self, Sprocket};
 use super::implicit::{Implicit, Offsets, Setting};
+use super::jacobian::{At, Tangent};
 use super::record::{VehicleRecord, sprocket_spans};
 use super::workspace::Workspace;
 use super::{
@@ -57,6 +58,8 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     /// The linearly implicit integrator's own solves
     /// ([`ImplicitSolve`]), made at their first use.
     implicit: Option<Implicit>,
+    /// The exact Jacobian's factored derivatives, made at their first use.
+    tangent: Option<Tangent>,
     y0: DVector<f64>,
 }
 
@@ -163,6 +166,7 @@ where
             forward_joints,
             work: Workspace::new(T::BODIES, C::BODIES, tangential_states),
             implicit: None,
+            tangent: None,
             y0,
         })
     }
@@ -272,6 +276,117 @@ where
             &self.geometry.shoe,
             &mut rest[EXTRA_STATES..],
         ))
+    }
+}
+
+impl<T, const DT: usize, C, const DC: usize> VehicleSystem<T, DT, C, DC>
+where
+    T: TrackModel<DT>,
+    C: ChassisModel<DC>,
+{
+    /// The drive's sprocket and slopes, and a lifted ground point's
+    /// relaxation rate, at the evaluation the workspace holds.
+    fn slopes(
+        &self,
+        t: f64,
+        qdc: &SVector<f64, DC>,
+        integral: f64,
+    ) -> (Option<(usize, super::DriveSlopes)>, Option<f64>) {
+        let drive = self.sprocket.map(|s| {
+            let slopes = self
+                .config
+                .drive
+                .slopes(t, s.omega(qdc), s.rolling_radius, integral);
+            (s.body, slopes)
+        });
+        let relaxation = match (&self.soil, self.config.ground.friction) {
+            (None, GroundFriction::Stiction(stiction)) => Some(stiction.relax_slopes().rate[0]),
+            _ => None,
+        };
+        (drive, relaxation)
+    }
+
+    /// Where the vehicle's own solves and Jacobian find the parts of its
+    /// state (partitioned: the track integrates all but the dependent
+    /// pair).
+    fn offsets(&self) -> Offsets {
+        let nb = self.bodies.dimension();
+        Offsets {
+            track: 0,
+            chassis: 2 * (DT - 2),
+            integral: nb + INTEGRAL,
+            tangential: nb + EXTRA_STATES,
+        }
+    }
+
+    /// The exact `∂f/∂y` at `(t, y)` into `out` (column-major), the track
+    /// closed by partitioning, on rigid ground.
+    fn exact_jacobian(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), SimulationError> {
+        let (qc, qdc) = self.evaluated(t, y)?;
+        let (_, [integral, ..], tangential) = self.split(y);
+        let points = self.geometry.shoe.ground_points.len();
+        forces::linearise(
+            &mut self.work,
+            &self.config,
+            &self.geometry,
+            self.sprocket,
+            (points, tangential, self.stiction_scale),
+        );
+        let Some(pair) = self.track().dependent_pair() else {
+            return Err(SimulationError::SingularMatrix {
+                t,
+                what: "the vehicle's exact Jacobian (its track is not closed by partitioning)",
+            });
+        };
+        let (drive, relaxation) = self.slopes(t, &qdc, integral);
+        let offsets = self.offsets();
+        let dimension = self.y0.len();
+        let tangent = match &mut self.tangent {
+            Some(tangent) => tangent,
+            slot => slot.insert(
+                Tangent::new(
+                    &self.bodies.first().model().description(),
+                    &self.bodies.second().model().description(),
+                    offsets,
+                )
+                .ok_or(SimulationError::SingularMatrix {
+                    t,
+                    what: "the vehicle's exact Jacobian (its track is not a loop)",
+                })?,
+            ),
+        };
+        let rotations = &mut self.work.part_rotations;
+        rotations.clear();
+        rotations.extend(
+            self.work
+                .part_trig
+                .iter()
+                .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
+        );
+        let track = self.bodies.first();
+        let (qt, qdt, trig) = track.recovered();
+        tangent
+            .jacobian(
+                &At {
+                    track: (qt.as_slice(), qdt.as_slice(), trig),
+                    pair: [pair[0] - 1, pair[1] - 1],
+                    chassis: (qc.as_slice(), qdc.as_slice(), &self.work.part_rotations),
+                    loads: (&self.work.track_loads, &self.work.chassis_loads),
+                    arms: &self.config.arms,
+                    drive,
+                    points: (points, self.stiction_scale, &self.work.ground_normal),
+                    relaxation,
+                },
+                (&self.work.contacts, &self.work.jacobians),
+                dimension,
+                out,
+            )
+            .map_err(|source| SimulationError::Dynamics { t, source })
     }
 }
 
@@ -484,6 +599,25 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
     /// The vehicle's own solves on rigid ground with its track closed by
     /// partitioning (the declared way); on soft soil, or closed another
     /// way, the integrator's dense Jacobian.
+    /// The exact `∂f/∂y` ([`Tangent`]: every force element's Jacobian
+    /// through the bodies' kinematics and the dynamics' own derivatives),
+    /// on rigid ground with the track closed by partitioning; `false`
+    /// elsewhere (the integrator then differences). The books' rows are
+    /// zero (quadratures: nothing reads them).
+    fn jacobian(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        _slope: &[f64],
+        jacobian: &mut [f64],
+    ) -> Result<bool, SimulationError> {
+        if self.soil.is_some() || self.track().dependent_pair().is_none() {
+            return Ok(false);
+        }
+        self.exact_jacobian(t, y, jacobian)?;
+        Ok(true)
+    }
+
     fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
         let own = self.soil.is_none() && self.track().dependent_pair().is_some();
         own.then_some(self as &mut dyn ImplicitSolve)
@@ -548,32 +682,15 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
                 .iter()
                 .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
         );
-        let drive = self.sprocket.map(|s| {
-            let slopes = self
-                .config
-                .drive
-                .slopes(t, s.omega(&qdc), s.rolling_radius, integral);
-            (s.body, slopes)
-        });
-        let relaxation = match (&self.soil, self.config.ground.friction) {
-            (None, GroundFriction::Stiction(stiction)) => Some(stiction.relax_slopes().rate[0]),
-            _ => None,
-        };
-        let nb = self.bodies.dimension();
-        // Partitioned: the track integrates all but the dependent pair.
-        let nt = DT - 2;
+        let (drive, relaxation) = self.slopes(t, &qdc, integral);
+        let offsets = self.offsets();
         let implicit = match &mut self.implicit {
             Some(implicit) => implicit,
             slot => slot.insert(
                 Implicit::new(
                     &self.bodies.first().model().description(),
                     &self.bodies.second().model().description(),
-                    Offsets {
-                        track: 0,
-                        chassis: 2 * nt,
-                        integral: nb + INTEGRAL,
-                        tangential: nb + EXTRA_STATES,
-                    },
+                    offsets,
                 )
                 .ok_or(SimulationError::SingularMatrix {
                     t,

@@ -1,0 +1,418 @@
+//! A vehicle's exact Jacobian `∂f/∂y`, column by column, from the
+//! derivatives of its stages: the bodies' kinematics (through the loop's
+//! partitioning), every force element's Jacobian beside its load
+//! ([`ContactJacobian`], the arms' and the drive's slopes), and the
+//! dynamics' own derivatives ([`ChainTangent`] for the track's linear-time
+//! solve, [`TreeTangent`] for the chassis), factored once at the state.
+//!
+//! A column is the change of `f` along one state component: the track's
+//! independent coordinates `z` (a change of `z` moves the dependent pair
+//! by `δq_d = −C_d⁻¹ C_z δz` and, at fixed `ż`, their rates by
+//! `C_d δω_d = Σⱼ Aʲ d̄ʲ ωⱼ δθⱼ`), their rates, the chassis' coordinates
+//! and rates, the drive's integral, the ground points' deflections. Each
+//! costs O(n): the links' states by running sums down the chain, each
+//! contact's load by its Jacobian, one sweep of the factored chain. The
+//! books' rows (quadratures, which nothing reads) are left zero.
+
+use nalgebra::{Matrix2, Vector2, Vector3};
+
+use super::drive::DriveSlopes;
+use crate::DynamicsError;
+use crate::contact::tangent::{DEFLECTION, INPUTS, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
+use crate::contact::{Contact, ContactJacobian};
+use crate::dynamics::derivative::{ChainDirection, ChainTangent, TreeDirection, TreeTangent};
+use crate::model::{ArmSpring, BodyLoad, ClosingJoint, TreeDescription};
+use crate::planar::Rotation;
+
+/// `⟂v`.
+#[inline]
+fn perp(v: Vector2<f64>) -> Vector2<f64> {
+    Vector2::new(-v.y, v.x)
+}
+
+/// What a vehicle gives its Jacobian at a state, besides its contacts.
+pub(super) struct At<'a> {
+    /// The track's recovered `q_i`, `q̇_i` and every link's `(sin, cos)`.
+    pub track: (&'a [f64], &'a [f64], &'a [(f64, f64)]),
+    /// The dependent pair (0-based links).
+    pub pair: [usize; 2],
+    /// The chassis' `q_i`, `q̇_i` and every body's rotation.
+    pub chassis: (&'a [f64], &'a [f64], &'a [Rotation]),
+    /// The loads on the links and on the chassis bodies at the state.
+    pub loads: (&'a [BodyLoad], &'a [BodyLoad]),
+    pub arms: &'a [ArmSpring],
+    /// The sprocket's body and the drive's slopes.
+    pub drive: Option<(usize, DriveSlopes)>,
+    /// Ground points per link, the deflections' unit (m), which points
+    /// touch, and a lifted point's `∂ż/∂z` (stiction).
+    pub points: (usize, f64, &'a [Option<f64>]),
+    pub relaxation: Option<f64>,
+}
+
+use super::implicit::Offsets;
+
+/// The factored derivatives and the scratch of the columns.
+pub(super) struct Tangent {
+    chain: ChainTangent,
+    tree: TreeTangent,
+    chassis: TreeDescription,
+    joints: Vec<(Vector2<f64>, Vector2<f64>)>,
+    spans: Vec<Vector2<f64>>,
+    offsets: Offsets,
+    // Per link at the state: `A ū1`, `A ū2`, `A d̄` and their turned
+    // `⟂(·)`; `ω`.
+    arms1: Vec<Vector2<f64>>,
+    arms2: Vec<Vector2<f64>>,
+    turned_spans: Vec<Vector2<f64>>,
+    omega: Vec<f64>,
+    dependent_inverse: Matrix2<f64>,
+    // Per chassis body: its rows of `H` and the levers' turning.
+    h: nalgebra::DMatrix<f64>,
+    // Scratch.
+    angles: Vec<f64>,
+    rates: Vec<f64>,
+    link_pose: Vec<Vector3<f64>>,
+    link_rate: Vec<Vector3<f64>>,
+    body_pose: Vec<Vector3<f64>>,
+    body_rate: Vec<Vector3<f64>>,
+    link_loads: Vec<BodyLoad>,
+    body_loads: Vec<BodyLoad>,
+    chassis_q: Vec<f64>,
+    chassis_qd: Vec<f64>,
+    track_qdd: Vec<f64>,
+    chassis_qdd: Vec<f64>,
+}
+
+impl Tangent {
+    /// The tangent of a vehicle with `track` and `chassis`, its state laid
+    /// out as `offsets`; `None` for a track that is not a loop.
+    pub fn new(
+        track: &TreeDescription,
+        chassis: &TreeDescription,
+        offsets: Offsets,
+    ) -> Option<Self> {
+        let joints = track.joints()?;
+        let n = joints.len();
+        let m = chassis.len();
+        Some(Tangent {
+            chain: ChainTangent::new(track)?,
+            tree: TreeTangent::new(chassis),
+            chassis: chassis.clone(),
+            spans: joints.iter().map(|(u1, u2)| u2 - u1).collect(),
+            joints,
+            offsets,
+            arms1: vec![Vector2::zeros(); n],
+            arms2: vec![Vector2::zeros(); n],
+            turned_spans: vec![Vector2::zeros(); n],
+            omega: vec![0.0; n],
+            dependent_inverse: Matrix2::identity(),
+            h: nalgebra::DMatrix::zeros(3 * m, m + 2),
+            angles: vec![0.0; n],
+            rates: vec![0.0; n],
+            link_pose: vec![Vector3::zeros(); n],
+            link_rate: vec![Vector3::zeros(); n],
+            body_pose: vec![Vector3::zeros(); m],
+            body_rate: vec![Vector3::zeros(); m],
+            link_loads: vec![BodyLoad::ZERO; n],
+            body_loads: vec![BodyLoad::ZERO; m],
+            chassis_q: vec![0.0; m + 2],
+            chassis_qd: vec![0.0; m + 2],
+            track_qdd: vec![0.0; n + 2],
+            chassis_qdd: vec![0.0; m + 2],
+        })
+    }
+
+    /// `∂f/∂y` at the state `at`, with its contacts and their Jacobians,
+    /// into `out` (column-major, `dimension × dimension`), column by
+    /// column for every state component.
+    pub fn jacobian(
+        &mut self,
+        at: &At<'_>,
+        (contacts, jacobians): (&[Contact], &[ContactJacobian]),
+        dimension: usize,
+        out: &mut [f64],
+    ) -> Result<(), DynamicsError> {
+        let n = self.joints.len();
+        let (qt, qdt, trig) = at.track;
+        let (qc, qdc, rotations) = at.chassis;
+        let dof = qc.len();
+        assert_eq!(out.len(), dimension * dimension, "a square Jacobian");
+        for i in 0..n {
+            let rotation = Rotation::from_sin_cos(trig[i]);
+            let (u1, u2) = self.joints[i];
+            self.arms1[i] = rotation.apply(u1);
+            self.arms2[i] = rotation.apply(u2);
+            self.turned_spans[i] = rotation.apply(self.spans[i]);
+            self.omega[i] = qdt[2 + i];
+        }
+        let [k, l] = at.pair;
+        self.dependent_inverse =
+            Matrix2::from_columns(&[perp(self.turned_spans[k]), perp(self.turned_spans[l])])
+                .try_inverse()
+                .ok_or(DynamicsError::SingularClosure)?;
+        self.chain
+            .factor(trig, &qdt[2..], at.loads.0, ClosingJoint::CLOSED)?;
+        self.tree.factor(qc, qdc, at.loads.1)?;
+        self.chassis.velocity_transform(rotations, &mut self.h);
+        let _ = qt;
+        out.fill(0.0);
+        let o = self.offsets;
+        let nt = n;
+        let independent: Vec<usize> = (0..n + 2)
+            .filter(|&c| c < 2 || !at.pair.contains(&(c - 2)))
+            .collect();
+        for column in 0..dimension {
+            let (track_q, track_v) = (o.track..o.track + nt, o.track + nt..o.track + 2 * nt);
+            let (chassis_q, chassis_v) = (
+                o.chassis..o.chassis + dof,
+                o.chassis + dof..o.chassis + 2 * dof,
+            );
+            let mut direction = Direction::default();
+            if track_q.contains(&column) {
+                direction.track = Some((independent[column - o.track], false));
+            } else if track_v.contains(&column) {
+                direction.track = Some((independent[column - track_v.start], true));
+            } else if chassis_q.contains(&column) {
+                direction.chassis = Some((column - o.chassis, false));
+            } else if chassis_v.contains(&column) {
+                direction.chassis = Some((column - chassis_v.start, true));
+            } else if column == o.integral {
+                direction.integral = true;
+            } else if column >= o.tangential {
+                direction.point = Some(column - o.tangential);
+            } else {
+                // The books: nothing depends on them.
+                continue;
+            }
+            let col = &mut out[column * dimension..(column + 1) * dimension];
+            self.column(at, (contacts, jacobians), &independent, direction, col)?;
+        }
+        Ok(())
+    }
+
+    /// One column: `f`'s change along `direction`.
+    fn column(
+        &mut self,
+        at: &At<'_>,
+        (contacts, jacobians): (&[Contact], &[ContactJacobian]),
+        independent: &[usize],
+        direction: Direction,
+        out: &mut [f64],
+    ) -> Result<(), DynamicsError> {
+        let n = self.joints.len();
+        let (_, qdc, _) = at.chassis;
+        let dof = qdc.len();
+        let o = self.offsets;
+        // The track: full angle and rate changes of every link.
+        self.angles.fill(0.0);
+        self.rates.fill(0.0);
+        let mut root = (Vector2::zeros(), Vector2::zeros());
+        if let Some((coordinate, rate)) = direction.track {
+            let [k, l] = at.pair;
+            let moved = if coordinate < 2 {
+                Vector2::zeros()
+            } else {
+                perp(self.turned_spans[coordinate - 2])
+            };
+            let dependent = -(self.dependent_inverse * moved);
+            let (target, root_of) = if rate {
+                (&mut self.rates, &mut root.1)
+            } else {
+                (&mut self.angles, &mut root.0)
+            };
+            if coordinate < 2 {
+                root_of[coordinate] = 1.0;
+            } else {
+                target[coordinate - 2] = 1.0;
+            }
+            target[k] = dependent.x;
+            target[l] = dependent.y;
+            if !rate {
+                // At fixed independent rates the pair's rates follow the
+                // configuration: C_d δω_d = Σⱼ Aʲ d̄ʲ ωⱼ δθⱼ.
+                let turned: Vector2<f64> = (0..n)
+                    .map(|j| self.turned_spans[j] * (self.omega[j] * self.angles[j]))
+                    .sum();
+                let rates = self.dependent_inverse * turned;
+                self.rates[k] = rates.x;
+                self.rates[l] = rates.y;
+            }
+        }
+        // Every link's pose and velocity change, down the chain:
+        // `R_{i+1} = Rᵢ + Aⁱ ū2ⁱ − A^{i+1} ū1^{i+1}` and its rate.
+        let (mut position, mut velocity) = root;
+        for i in 0..n {
+            let (a1, a2, w) = (self.arms1[i], self.arms2[i], self.omega[i]);
+            let (dt, dw) = (self.angles[i], self.rates[i]);
+            if i > 0 {
+                position -= perp(a1) * dt;
+                velocity -= perp(a1) * dw - a1 * (w * dt);
+            }
+            self.link_pose[i] = Vector3::new(position.x, position.y, dt);
+            self.link_rate[i] = Vector3::new(velocity.x, velocity.y, dw);
+            position += perp(a2) * dt;
+            velocity += perp(a2) * dw - a2 * (w * dt);
+        }
+        // The chassis.
+        self.chassis_q.fill(0.0);
+        self.chassis_qd.fill(0.0);
+        if let Some((coordinate, rate)) = direction.chassis {
+            if rate {
+                self.chassis_qd[coordinate] = 1.0;
+            } else {
+                self.chassis_q[coordinate] = 1.0;
+            }
+        }
+        self.body_motion(at);
+        // The loads' changes.
+        self.link_loads.fill(BodyLoad::ZERO);
+        self.body_loads.fill(BodyLoad::ZERO);
+        let (per_link, unit, touching) = at.points;
+        let deflection = direction.point;
+        let mut input = [0.0; INPUTS];
+        for (contact, jacobian) in contacts.iter().zip(jacobians) {
+            let i = contact.link;
+            input[LINK_POSE..LINK_POSE + 3].copy_from_slice(self.link_pose[i].as_slice());
+            input[LINK_RATE..LINK_RATE + 3].copy_from_slice(self.link_rate[i].as_slice());
+            match contact.other {
+                Some(b) => {
+                    input[OTHER_POSE..OTHER_POSE + 3].copy_from_slice(self.body_pose[b].as_slice());
+                    input[OTHER_RATE..OTHER_RATE + 3].copy_from_slice(self.body_rate[b].as_slice());
+                    input[DEFLECTION] = 0.0;
+                }
+                None => {
+                    input[OTHER_POSE..DEFLECTION].fill(0.0);
+                    let slot = i * per_link + contact.feature;
+                    input[DEFLECTION] = if deflection == Some(slot) { unit } else { 0.0 };
+                }
+            }
+            let input = nalgebra::SVector::<f64, INPUTS>::from_column_slice(&input);
+            let on_link = jacobian.link * input;
+            self.link_loads[i] = self.link_loads[i].plus(BodyLoad {
+                force: Vector2::new(on_link.x, on_link.y),
+                moment: on_link.z,
+            });
+            if let Some(b) = contact.other {
+                let on_body = jacobian.other * input;
+                self.body_loads[b] = self.body_loads[b].plus(BodyLoad {
+                    force: Vector2::new(on_body.x, on_body.y),
+                    moment: on_body.z,
+                });
+            } else if !touching.is_empty() {
+                let slot = i * per_link + contact.feature;
+                out[o.tangential + slot] += (jacobian.rate * input)[0] / unit;
+            }
+        }
+        // Lifted points' deflections relax on their own.
+        if let (Some(relax), Some(slot)) = (at.relaxation, deflection) {
+            if touching.get(slot).is_some_and(|t| t.is_none()) {
+                out[o.tangential + slot] += relax;
+            }
+        }
+        // The arms: τ = preload − k φ − c φ̇, φ = θ_b − θ_frame.
+        for arm in at.arms {
+            let (by_angle, by_rate) = arm.spring.slopes();
+            let b = arm.body;
+            let torque = by_angle * (self.chassis_q[2 + b] - self.chassis_q[2])
+                + by_rate * (self.chassis_qd[2 + b] - self.chassis_qd[2]);
+            self.body_loads[b].moment += torque;
+            self.body_loads[0].moment -= torque;
+        }
+        // The drive on the sprocket's speed relative to the frame, and its
+        // integral.
+        if let Some((s, slopes)) = at.drive {
+            let speed = self.chassis_qd[2 + s] - self.chassis_qd[2];
+            let integral = if direction.integral { 1.0 } else { 0.0 };
+            let torque = slopes.torque[0] * speed + slopes.torque[1] * integral;
+            self.body_loads[s].moment += torque;
+            self.body_loads[0].moment -= torque;
+            out[o.integral] = slopes.rate[0] * speed + slopes.rate[1] * integral;
+        }
+        // The dynamics.
+        self.chain.direction(
+            &ChainDirection {
+                angles: &self.angles,
+                rates: &self.rates,
+                loads: &self.link_loads,
+                closing: Vector2::zeros(),
+            },
+            &mut self.track_qdd,
+        );
+        self.tree.direction(
+            &TreeDirection {
+                coordinates: &self.chassis_q,
+                rates: &self.chassis_qd,
+                loads: &self.body_loads,
+            },
+            &mut self.chassis_qdd,
+        );
+        let nt = independent.len();
+        for (slot, &c) in independent.iter().enumerate() {
+            // ∂ż/∂y: the rates' own columns.
+            out[o.track + slot] = if c < 2 { root.1[c] } else { self.rates[c - 2] }
+                * if direction.track.is_some_and(|(_, rate)| rate) {
+                    1.0
+                } else {
+                    0.0
+                };
+            out[o.track + nt + slot] = self.track_qdd[c];
+        }
+        for j in 0..dof {
+            out[o.chassis + j] = self.chassis_qd[j];
+            out[o.chassis + dof + j] = self.chassis_qdd[j];
+        }
+        Ok(())
+    }
+
+    /// Every chassis body's pose and velocity change from the chassis'
+    /// coordinate and rate changes: `H δq` and `H δq̇ + (∂H/∂q δq) q̇`, a
+    /// lever `A_θᵖ u` turning by `−Aᵖ u δθₚ`.
+    fn body_motion(&mut self, at: &At<'_>) {
+        let (_, qdc, rotations) = at.chassis;
+        let bodies = &self.chassis.bodies;
+        let m = bodies.len();
+        let rows = self.h.nrows();
+        let h = self.h.as_slice();
+        for b in 0..m {
+            // Rows 3b … 3b + 2 of the column-major H times δq, δq̇.
+            let (mut pose, mut rate) = (Vector3::<f64>::zeros(), Vector3::<f64>::zeros());
+            for (j, (&dq, &dqd)) in self.chassis_q.iter().zip(&self.chassis_qd).enumerate() {
+                if dq == 0.0 && dqd == 0.0 {
+                    continue;
+                }
+                let column = &h[j * rows + 3 * b..j * rows + 3 * b + 3];
+                for r in 0..3 {
+                    pose[r] += column[r] * dq;
+                    rate[r] += column[r] * dqd;
+                }
+            }
+            // The levers turning with the configuration.
+            let own = rotations[b].apply(bodies[b].at_self);
+            let mut turning = own * (qdc[2 + b] * self.chassis_q[2 + b]);
+            let mut c = b;
+            while let Some(p) = bodies[c].parent {
+                let toward = rotations[p].apply(bodies[c].at_parent);
+                let lever = toward - rotations[p].apply(bodies[p].at_self);
+                turning -= lever * (qdc[2 + p] * self.chassis_q[2 + p]);
+                c = p;
+            }
+            rate[0] += turning.x;
+            rate[1] += turning.y;
+            self.body_pose[b] = Vector3::new(pose[0], pose[1], pose[2]);
+            self.body_rate[b] = Vector3::new(rate[0], rate[1], rate[2]);
+        }
+    }
+}
+
+/// Which state component a column varies.
+#[derive(Debug, Clone, Copy, Default)]
+struct Direction {
+    /// A track coordinate (`q_i` index) and whether its rate.
+    track: Option<(usize, bool)>,
+    /// A chassis coordinate and whether its rate.
+    chassis: Option<(usize, bool)>,
+    /// The drive's integral.
+    integral: bool,
+    /// A ground point's deflection.
+    point: Option<usize>,
+}
