@@ -124,19 +124,25 @@ pub fn recovery(track: &Track) -> TokenStream {
             let rate = (vx + ak.1 * wk + al.1 * wl, vy - ak.0 * wk - al.0 * wl);
             // Newton-Raphson on the pair. C_d's columns are A_θ d̄ = (−a_y, aₓ),
             // det C_d = aₖₓ a_l_y − aₖ_y a_lₓ, C_d⁻¹ = [[a_lₓ, a_l_y], [−aₖₓ, −aₖ_y]] / det.
+            // One step more once within the tolerance: converging
+            // quadratically, it takes the closure to rounding, so the
+            // result does not jump with the iterations taken (a state's
+            // accelerations smooth in the state, to the last digits).
             let mut iteration = 0usize;
+            let mut within = false;
             let (ak, al) = loop {
                 let (tk, tl) = (#rt::sin_cos(q[2 + k]), #rt::sin_cos(q[2 + l]));
                 let (ak, al) = (turn(tk, dk), turn(tl, dl));
                 let (gx, gy) = (rest.0 + ak.0 + al.0, rest.1 + ak.1 + al.1);
                 let residual = (gx * gx + gy * gy).sqrt();
-                if residual <= tolerance {
+                if residual <= tolerance && within {
                     trig[k] = tk;
                     trig[l] = tl;
                     break (ak, al);
                 }
+                within = residual <= tolerance;
                 let det = ak.0 * al.1 - ak.1 * al.0;
-                if iteration == max_iterations || !residual.is_finite() || det == 0.0 {
+                if (iteration >= max_iterations && !within) || !residual.is_finite() || det == 0.0 {
                     return ::core::result::Result::Err((iteration, residual));
                 }
                 q[2 + k] -= (al.0 * gx + al.1 * gy) / det;
