@@ -78,13 +78,25 @@ impl Mode {
 }
 
 /// The state matrix `A = ∂f/∂y` at `(t, y)` over the states `states`
-/// (rows and columns, in that order): the linearisation `δẏ = A δy`.
+/// (rows and columns, in that order): the linearisation `δẏ = A δy`. The
+/// system's exact Jacobian where it gives one ([`OdeSystem::jacobian`]: a
+/// vehicle on rigid ground closed by partitioning), central differences
+/// ([`state_jacobian`]) otherwise.
 pub fn linearise<S: OdeSystem + ?Sized>(
     system: &mut S,
     t: f64,
     y: &[f64],
     states: &[usize],
 ) -> Result<DMatrix<f64>, AnalysisError> {
+    let n = y.len();
+    let mut slope = vec![0.0; n];
+    system.derivative(t, y, &mut slope)?;
+    let mut full = vec![0.0; n * n];
+    if system.jacobian(t, y, &slope, &mut full)? {
+        return Ok(DMatrix::from_fn(states.len(), states.len(), |r, c| {
+            full[states[c] * n + states[r]]
+        }));
+    }
     Ok(state_jacobian(system, t, y, states)?.select_rows(states))
 }
 
