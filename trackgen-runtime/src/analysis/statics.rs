@@ -141,14 +141,37 @@ impl Statics {
         ))
     }
 
-    /// `∂r/∂u` at `y` by central differences ([`step_for`]; the shared
-    /// deflection, in the stiction states' unit, the same way).
+    /// `∂r/∂u` at `y`: the system's exact Jacobian's rows of the
+    /// equations and columns of the unknowns where it gives one
+    /// ([`OdeSystem::jacobian`]) and friction holds nothing; else central
+    /// differences ([`step_for`]; the shared deflection, in the stiction
+    /// states' unit, the same way). Held by friction, each ground point's
+    /// deflection is clipped at its Coulomb limit, and the rest has points
+    /// at their limits: differences that straddle the clip let Newton's
+    /// method settle there, the one-sided exact derivative makes it cycle
+    /// (measured on a 30 % grade: a residual stalled at 6.6e-8 against
+    /// the tolerance 1e-8, where the differences converge in 31
+    /// iterations).
+    ///
+    /// [`OdeSystem::jacobian`]: crate::integrate::OdeSystem::jacobian
     pub fn jacobian<S: VehicleDynamics>(
         &self,
         system: &mut S,
         t: f64,
         y: &DVector<f64>,
     ) -> Result<DMatrix<f64>, AnalysisError> {
+        let n = y.len();
+        let (mut slope, mut full) = (vec![0.0; n], vec![0.0; n * n]);
+        system.derivative(t, y.as_slice(), &mut slope)?;
+        if self.friction.is_none() && system.jacobian(t, y.as_slice(), &slope, &mut full)? {
+            let mut jacobian = DMatrix::zeros(self.equations.len(), self.len());
+            for (row, &r) in self.equations.iter().enumerate() {
+                for (k, &c) in self.unknowns.iter().enumerate() {
+                    jacobian[(row, k)] = full[c * n + r];
+                }
+            }
+            return Ok(jacobian);
+        }
         let u = self.read(y);
         let mut jacobian = DMatrix::zeros(self.equations.len(), self.len());
         let mut moved = y.clone();
