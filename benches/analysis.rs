@@ -4,9 +4,11 @@
 //!   (`dynamics::track_jacobian`, the linear-time solve's tangent, O(n)
 //!   per direction) at 64 and 128 links: the ratio shows O(n²).
 //! * `m113_state_jacobian`: one evaluation of the M113's right-hand side
-//!   against its state Jacobian over every state with dynamics
-//!   (`analysis::state_jacobian`, central differences: two evaluations a
-//!   column).
+//!   against its state Jacobian over every state with dynamics by central
+//!   differences (`analysis::state_jacobian`: two evaluations a column)
+//!   and exactly (`OdeSystem::jacobian`, every column of the state); the
+//!   yardstick of the exact one is forward differences, one evaluation
+//!   per state component plus one.
 //! * `m113_rest`: the M113 at rest by `analysis::equilibrium` against the
 //!   settling runs it replaces (1 s, the main job's, which still rings;
 //!   3 s), Bogacki-Shampine at 1e-3 as in the main job.
@@ -61,6 +63,18 @@ fn analysis(c: &mut Criterion) {
     });
     group.bench_function("central_differences", |b| {
         b.iter(|| black_box(state_jacobian(&mut system, 0.0, y.as_slice(), &states).unwrap()))
+    });
+    // Forward differences cost one evaluation per state component plus
+    // one (the yardstick): `one_evaluation` × (n + 1).
+    let n = y.len();
+    let mut full = vec![0.0; n * n];
+    let slope = dy.clone();
+    group.bench_function("exact", |b| {
+        b.iter(|| {
+            system
+                .jacobian(0.0, black_box(y.as_slice()), &slope, &mut full)
+                .unwrap()
+        })
     });
     group.finish();
 

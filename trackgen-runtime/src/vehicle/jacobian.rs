@@ -14,7 +14,7 @@
 //! contact's load by its Jacobian, one sweep of the factored chain. The
 //! books' rows (quadratures, which nothing reads) are left zero.
 
-use nalgebra::{Matrix2, Vector2, Vector3};
+use nalgebra::{Matrix2, SMatrix, SVector, Vector2, Vector3};
 
 use super::drive::DriveSlopes;
 use crate::DynamicsError;
@@ -51,6 +51,53 @@ pub(super) struct At<'a> {
 
 use super::implicit::Offsets;
 
+/// A contact's Jacobian arranged by what a column moves: rows the load on
+/// the link `(F_x, F_y, M)`, on the other body, and the deflection's rate;
+/// columns the link's pose and rates, or the other body's, or the
+/// deflection.
+#[derive(Debug, Clone, Copy)]
+struct Compact {
+    link: usize,
+    other: Option<usize>,
+    /// The ground point's deflection state, on rigid ground with
+    /// stiction.
+    slot: Option<usize>,
+    by_link: SMatrix<f64, 7, 6>,
+    by_other: SMatrix<f64, 7, 6>,
+    by_deflection: SVector<f64, 7>,
+}
+
+impl Compact {
+    fn of(contact: &Contact, jacobian: &ContactJacobian, slot: Option<usize>) -> Compact {
+        let mut rows = SMatrix::<f64, 7, INPUTS>::zeros();
+        rows.fixed_rows_mut::<3>(0).copy_from(&jacobian.link);
+        rows.fixed_rows_mut::<3>(3).copy_from(&jacobian.other);
+        rows.set_row(6, &jacobian.rate);
+        let mut by_link = SMatrix::<f64, 7, 6>::zeros();
+        by_link
+            .fixed_columns_mut::<3>(0)
+            .copy_from(&rows.fixed_columns::<3>(LINK_POSE));
+        by_link
+            .fixed_columns_mut::<3>(3)
+            .copy_from(&rows.fixed_columns::<3>(LINK_RATE));
+        let mut by_other = SMatrix::<f64, 7, 6>::zeros();
+        by_other
+            .fixed_columns_mut::<3>(0)
+            .copy_from(&rows.fixed_columns::<3>(OTHER_POSE));
+        by_other
+            .fixed_columns_mut::<3>(3)
+            .copy_from(&rows.fixed_columns::<3>(OTHER_RATE));
+        Compact {
+            link: contact.link,
+            other: contact.other,
+            slot,
+            by_link,
+            by_other,
+            by_deflection: rows.column(DEFLECTION).into_owned(),
+        }
+    }
+}
+
 /// The factored derivatives and the scratch of the columns.
 pub(super) struct Tangent {
     chain: ChainTangent,
@@ -81,6 +128,7 @@ pub(super) struct Tangent {
     chassis_qd: Vec<f64>,
     track_qdd: Vec<f64>,
     chassis_qdd: Vec<f64>,
+    compact: Vec<Compact>,
 }
 
 impl Tangent {
@@ -119,6 +167,7 @@ impl Tangent {
             chassis_qd: vec![0.0; m + 2],
             track_qdd: vec![0.0; n + 2],
             chassis_qdd: vec![0.0; m + 2],
+            compact: Vec::new(),
         })
     }
 
@@ -155,6 +204,14 @@ impl Tangent {
         self.tree.factor(qc, qdc, at.loads.1)?;
         self.chassis.velocity_transform(rotations, &mut self.h);
         let _ = qt;
+        let (per_link, _, touching) = at.points;
+        self.compact.clear();
+        self.compact
+            .extend(contacts.iter().zip(jacobians).map(|(contact, jacobian)| {
+                let slot = (contact.other.is_none() && !touching.is_empty())
+                    .then(|| contact.link * per_link + contact.feature);
+                Compact::of(contact, jacobian, slot)
+            }));
         out.fill(0.0);
         let o = self.offsets;
         let nt = n;
@@ -185,7 +242,7 @@ impl Tangent {
                 continue;
             }
             let col = &mut out[column * dimension..(column + 1) * dimension];
-            self.column(at, (contacts, jacobians), &independent, direction, col)?;
+            self.column(at, &independent, direction, col)?;
         }
         Ok(())
     }
@@ -194,7 +251,6 @@ impl Tangent {
     fn column(
         &mut self,
         at: &At<'_>,
-        (contacts, jacobians): (&[Contact], &[ContactJacobian]),
         independent: &[usize],
         direction: Direction,
         out: &mut [f64],
@@ -267,40 +323,71 @@ impl Tangent {
         // The loads' changes.
         self.link_loads.fill(BodyLoad::ZERO);
         self.body_loads.fill(BodyLoad::ZERO);
-        let (per_link, unit, touching) = at.points;
+        let (_, unit, touching) = at.points;
         let deflection = direction.point;
-        let mut input = [0.0; INPUTS];
-        for (contact, jacobian) in contacts.iter().zip(jacobians) {
-            let i = contact.link;
-            input[LINK_POSE..LINK_POSE + 3].copy_from_slice(self.link_pose[i].as_slice());
-            input[LINK_RATE..LINK_RATE + 3].copy_from_slice(self.link_rate[i].as_slice());
-            match contact.other {
-                Some(b) => {
-                    input[OTHER_POSE..OTHER_POSE + 3].copy_from_slice(self.body_pose[b].as_slice());
-                    input[OTHER_RATE..OTHER_RATE + 3].copy_from_slice(self.body_rate[b].as_slice());
-                    input[DEFLECTION] = 0.0;
-                }
-                None => {
-                    input[OTHER_POSE..DEFLECTION].fill(0.0);
-                    let slot = i * per_link + contact.feature;
-                    input[DEFLECTION] = if deflection == Some(slot) { unit } else { 0.0 };
+        // Each contact's load by what the column moves: the links' states
+        // (a track column), the bodies' (a chassis column: the rims and
+        // teeth alone), or one ground point's deflection.
+        let add = |c: &Compact,
+                   change: SVector<f64, 7>,
+                   loads: &mut [BodyLoad],
+                   bodies: &mut [BodyLoad],
+                   out: &mut [f64]| {
+            loads[c.link] = loads[c.link].plus(BodyLoad {
+                force: Vector2::new(change[0], change[1]),
+                moment: change[2],
+            });
+            if let Some(b) = c.other {
+                bodies[b] = bodies[b].plus(BodyLoad {
+                    force: Vector2::new(change[3], change[4]),
+                    moment: change[5],
+                });
+            }
+            if let Some(slot) = c.slot {
+                out[o.tangential + slot] += change[6] / unit;
+            }
+        };
+        if direction.track.is_some() {
+            for c in &self.compact {
+                let mut state = SVector::<f64, 6>::zeros();
+                state
+                    .fixed_rows_mut::<3>(0)
+                    .copy_from(&self.link_pose[c.link]);
+                state
+                    .fixed_rows_mut::<3>(3)
+                    .copy_from(&self.link_rate[c.link]);
+                add(
+                    c,
+                    c.by_link * state,
+                    &mut self.link_loads,
+                    &mut self.body_loads,
+                    out,
+                );
+            }
+        } else if direction.chassis.is_some() {
+            for c in &self.compact {
+                if let Some(b) = c.other {
+                    let mut state = SVector::<f64, 6>::zeros();
+                    state.fixed_rows_mut::<3>(0).copy_from(&self.body_pose[b]);
+                    state.fixed_rows_mut::<3>(3).copy_from(&self.body_rate[b]);
+                    add(
+                        c,
+                        c.by_other * state,
+                        &mut self.link_loads,
+                        &mut self.body_loads,
+                        out,
+                    );
                 }
             }
-            let input = nalgebra::SVector::<f64, INPUTS>::from_column_slice(&input);
-            let on_link = jacobian.link * input;
-            self.link_loads[i] = self.link_loads[i].plus(BodyLoad {
-                force: Vector2::new(on_link.x, on_link.y),
-                moment: on_link.z,
-            });
-            if let Some(b) = contact.other {
-                let on_body = jacobian.other * input;
-                self.body_loads[b] = self.body_loads[b].plus(BodyLoad {
-                    force: Vector2::new(on_body.x, on_body.y),
-                    moment: on_body.z,
-                });
-            } else if !touching.is_empty() {
-                let slot = i * per_link + contact.feature;
-                out[o.tangential + slot] += (jacobian.rate * input)[0] / unit;
+        } else if let Some(slot) = deflection {
+            for c in self.compact.iter().filter(|c| c.slot == Some(slot)) {
+                add(
+                    c,
+                    c.by_deflection * unit,
+                    &mut self.link_loads,
+                    &mut self.body_loads,
+                    out,
+                );
             }
         }
         // Lifted points' deflections relax on their own.
