@@ -20,7 +20,7 @@ use super::drive::DriveSlopes;
 use crate::DynamicsError;
 use crate::contact::tangent::{DEFLECTION, INPUTS, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
 use crate::contact::{Contact, ContactJacobian};
-use crate::dynamics::derivative::{ChainDirection, ChainTangent, TreeDirection, TreeTangent};
+use crate::dynamics::derivative::{ChainDirections, ChainTangent, TreeDirection, TreeTangent};
 use crate::model::{ArmSpring, BodyLoad, ClosingJoint, TreeDescription};
 use crate::planar::Rotation;
 
@@ -68,6 +68,26 @@ struct Compact {
 }
 
 impl Compact {
+    /// `by · state` in the rows this contact loads (its link's; the other
+    /// body's, if any; the deflection's rate, if it has one), the rest
+    /// zero.
+    #[inline]
+    fn rows(&self, by: &SMatrix<f64, 7, 6>, state: &SVector<f64, 6>) -> SVector<f64, 7> {
+        let mut change = SVector::<f64, 7>::zeros();
+        change
+            .fixed_rows_mut::<3>(0)
+            .copy_from(&(by.fixed_rows::<3>(0) * state));
+        if self.other.is_some() {
+            change
+                .fixed_rows_mut::<3>(3)
+                .copy_from(&(by.fixed_rows::<3>(3) * state));
+        }
+        if self.slot.is_some() {
+            change[6] = by.row(6).transpose().dot(state);
+        }
+        change
+    }
+
     fn of(contact: &Contact, jacobian: &ContactJacobian, slot: Option<usize>) -> Compact {
         let mut rows = SMatrix::<f64, 7, INPUTS>::zeros();
         rows.fixed_rows_mut::<3>(0).copy_from(&jacobian.link);
@@ -98,6 +118,10 @@ impl Compact {
     }
 }
 
+/// How many columns go through the dynamics together: enough to keep the
+/// chain's sweeps busy, few enough that a block's scratch stays in cache.
+const BLOCK: usize = 32;
+
 /// The factored derivatives and the scratch of the columns.
 pub(super) struct Tangent {
     chain: ChainTangent,
@@ -122,12 +146,15 @@ pub(super) struct Tangent {
     link_rate: Vec<Vector3<f64>>,
     body_pose: Vec<Vector3<f64>>,
     body_rate: Vec<Vector3<f64>>,
-    link_loads: Vec<BodyLoad>,
     body_loads: Vec<BodyLoad>,
     chassis_q: Vec<f64>,
     chassis_qd: Vec<f64>,
-    track_qdd: Vec<f64>,
     chassis_qdd: Vec<f64>,
+    // A block's columns, link-major: `i · columns + c`.
+    block_angles: Vec<f64>,
+    block_rates: Vec<f64>,
+    block_loads: Vec<BodyLoad>,
+    block_qdd: Vec<f64>,
     compact: Vec<Compact>,
 }
 
@@ -161,19 +188,25 @@ impl Tangent {
             link_rate: vec![Vector3::zeros(); n],
             body_pose: vec![Vector3::zeros(); m],
             body_rate: vec![Vector3::zeros(); m],
-            link_loads: vec![BodyLoad::ZERO; n],
             body_loads: vec![BodyLoad::ZERO; m],
             chassis_q: vec![0.0; m + 2],
             chassis_qd: vec![0.0; m + 2],
-            track_qdd: vec![0.0; n + 2],
+            block_angles: Vec::new(),
+            block_rates: Vec::new(),
+            block_loads: Vec::new(),
+            block_qdd: Vec::new(),
             chassis_qdd: vec![0.0; m + 2],
             compact: Vec::new(),
         })
     }
 
     /// `∂f/∂y` at the state `at`, with its contacts and their Jacobians,
-    /// into `out` (column-major, `dimension × dimension`), column by
-    /// column for every state component.
+    /// into `out` (column-major, `dimension × dimension`): each column's
+    /// motion and loads, then the dynamics' derivatives for a block of
+    /// columns at once (the chain's sweeps over every column of the
+    /// block, the chassis' load response as one solve with many right
+    /// sides). A lifted ground point's deflection moves nothing but its
+    /// own relaxation; the books' columns are zero.
     pub fn jacobian(
         &mut self,
         at: &At<'_>,
@@ -182,7 +215,7 @@ impl Tangent {
         out: &mut [f64],
     ) -> Result<(), DynamicsError> {
         let n = self.joints.len();
-        let (qt, qdt, trig) = at.track;
+        let (_, qdt, trig) = at.track;
         let (qc, qdc, rotations) = at.chassis;
         let dof = qc.len();
         assert_eq!(out.len(), dimension * dimension, "a square Jacobian");
@@ -203,7 +236,6 @@ impl Tangent {
             .factor(trig, &qdt[2..], at.loads.0, ClosingJoint::CLOSED)?;
         self.tree.factor(qc, qdc, at.loads.1)?;
         self.chassis.velocity_transform(rotations, &mut self.h);
-        let _ = qt;
         let (per_link, _, touching) = at.points;
         self.compact.clear();
         self.compact
@@ -214,10 +246,11 @@ impl Tangent {
             }));
         out.fill(0.0);
         let o = self.offsets;
-        let nt = n;
         let independent: Vec<usize> = (0..n + 2)
             .filter(|&c| c < 2 || !at.pair.contains(&(c - 2)))
             .collect();
+        let nt = independent.len();
+        let mut work = Vec::with_capacity(dimension);
         for column in 0..dimension {
             let (track_q, track_v) = (o.track..o.track + nt, o.track + nt..o.track + 2 * nt);
             let (chassis_q, chassis_v) = (
@@ -236,25 +269,128 @@ impl Tangent {
             } else if column == o.integral {
                 direction.integral = true;
             } else if column >= o.tangential {
-                direction.point = Some(column - o.tangential);
+                let slot = column - o.tangential;
+                if touching.get(slot).is_some_and(|t| t.is_none()) {
+                    // A lifted point's deflection relaxes on its own.
+                    if let Some(relax) = at.relaxation {
+                        out[column * dimension + column] = relax;
+                    }
+                    continue;
+                }
+                direction.point = Some(slot);
             } else {
                 // The books: nothing depends on them.
                 continue;
             }
-            let col = &mut out[column * dimension..(column + 1) * dimension];
-            self.column(at, &independent, direction, col)?;
+            work.push((column, direction));
+        }
+        // Blocks of one kind of column, so that a block moving no angle
+        // (or no rate) sweeps none.
+        let kind = |d: &Direction| d.track.map_or(0, |(_, rate)| 1 + usize::from(rate));
+        work.sort_by_key(|(_, direction)| kind(direction));
+        for group in work.chunk_by(|a, b| kind(&a.1) == kind(&b.1)) {
+            for block in group.chunks(BLOCK) {
+                self.block(at, &independent, block, dimension, out);
+            }
         }
         Ok(())
     }
 
-    /// One column: `f`'s change along `direction`.
+    /// The columns of `block`: each one's motion and loads, then the
+    /// dynamics for all of them.
+    fn block(
+        &mut self,
+        at: &At<'_>,
+        independent: &[usize],
+        block: &[(usize, Direction)],
+        dimension: usize,
+        out: &mut [f64],
+    ) {
+        let n = self.joints.len();
+        let (kb, m) = (block.len(), self.chassis.len());
+        let dof = m + 2;
+        let o = self.offsets;
+        for scratch in [&mut self.block_angles, &mut self.block_rates] {
+            scratch.resize(n * kb, 0.0);
+            scratch.fill(0.0);
+        }
+        self.block_loads.resize(n * kb, BodyLoad::ZERO);
+        self.block_loads.fill(BodyLoad::ZERO);
+        self.block_qdd.resize((n + 2) * kb, 0.0);
+        let mut body_loads = nalgebra::DMatrix::zeros(3 * m, kb);
+        for (b, &(column, direction)) in block.iter().enumerate() {
+            let col = &mut out[column * dimension..(column + 1) * dimension];
+            self.column(at, independent, direction, (b, kb), col);
+            // Into the block, link-major (what moved alone: a rate column
+            // turns no link, a chassis column moves none).
+            let scatter = |from: &[f64], to: &mut [f64]| {
+                for (i, &value) in from.iter().enumerate().filter(|(_, v)| **v != 0.0) {
+                    to[i * kb + b] = value;
+                }
+            };
+            if let Some((_, rate)) = direction.track {
+                if !rate {
+                    scatter(&self.angles, &mut self.block_angles);
+                }
+                scatter(&self.rates, &mut self.block_rates);
+            }
+            if direction.chassis.is_some() {
+                // The chassis' own motion: its derivative in full.
+                self.tree.direction(
+                    &TreeDirection {
+                        coordinates: &self.chassis_q,
+                        rates: &self.chassis_qd,
+                        loads: &self.body_loads,
+                    },
+                    &mut self.chassis_qdd,
+                );
+                col[o.chassis + dof..o.chassis + 2 * dof].copy_from_slice(&self.chassis_qdd);
+            } else {
+                for (j, load) in self.body_loads.iter().enumerate() {
+                    body_loads[(3 * j, b)] = load.force.x;
+                    body_loads[(3 * j + 1, b)] = load.force.y;
+                    body_loads[(3 * j + 2, b)] = load.moment;
+                }
+            }
+        }
+        let moved = |values: &[f64]| values.iter().any(|&v| v != 0.0);
+        self.chain.directions(
+            &ChainDirections {
+                columns: kb,
+                angles: if moved(&self.block_angles) { &self.block_angles } else { &[] },
+                rates: if moved(&self.block_rates) { &self.block_rates } else { &[] },
+                loads: &self.block_loads,
+                closing: &[],
+            },
+            &mut self.block_qdd,
+        );
+        let chassis = self.tree.load_directions(&body_loads);
+        let nt = independent.len();
+        for (b, &(column, direction)) in block.iter().enumerate() {
+            let col = &mut out[column * dimension..(column + 1) * dimension];
+            for (slot, &c) in independent.iter().enumerate() {
+                col[o.track + nt + slot] = self.block_qdd[c * kb + b];
+            }
+            if direction.chassis.is_none() {
+                for j in 0..dof {
+                    col[o.chassis + dof + j] = chassis[(j, b)];
+                }
+            }
+        }
+    }
+
+    /// One column's motion and loads along `direction`: every link's and
+    /// body's state change, the contacts', arms' and drive's loads (kept
+    /// for the dynamics), and the rows that follow from them directly
+    /// (the rates' own rows, the deflections' and the integral's).
     fn column(
         &mut self,
         at: &At<'_>,
         independent: &[usize],
         direction: Direction,
+        (b, kb): (usize, usize),
         out: &mut [f64],
-    ) -> Result<(), DynamicsError> {
+    ) {
         let n = self.joints.len();
         let (_, qdc, _) = at.chassis;
         let dof = qdc.len();
@@ -295,19 +431,26 @@ impl Tangent {
             }
         }
         // Every link's pose and velocity change, down the chain:
-        // `R_{i+1} = Rᵢ + Aⁱ ū2ⁱ − A^{i+1} ū1^{i+1}` and its rate.
-        let (mut position, mut velocity) = root;
-        for i in 0..n {
-            let (a1, a2, w) = (self.arms1[i], self.arms2[i], self.omega[i]);
-            let (dt, dw) = (self.angles[i], self.rates[i]);
-            if i > 0 {
-                position -= perp(a1) * dt;
-                velocity -= perp(a1) * dw - a1 * (w * dt);
+        // `R_{i+1} = Rᵢ + Aⁱ ū2ⁱ − A^{i+1} ū1^{i+1}` and its rate (a track
+        // column's alone: the others move no link).
+        if direction.track.is_some() {
+            let (mut position, mut velocity) = root;
+            let links = self
+                .arms1
+                .iter()
+                .zip(&self.arms2)
+                .zip(self.omega.iter().zip(&self.angles).zip(&self.rates))
+                .zip(self.link_pose.iter_mut().zip(&mut self.link_rate));
+            for (i, (((a1, a2), ((&w, &dt), &dw)), (pose, rate))) in links.enumerate() {
+                if i > 0 {
+                    position -= perp(*a1) * dt;
+                    velocity -= perp(*a1) * dw - a1 * (w * dt);
+                }
+                *pose = Vector3::new(position.x, position.y, dt);
+                *rate = Vector3::new(velocity.x, velocity.y, dw);
+                position += perp(*a2) * dt;
+                velocity += perp(*a2) * dw - a2 * (w * dt);
             }
-            self.link_pose[i] = Vector3::new(position.x, position.y, dt);
-            self.link_rate[i] = Vector3::new(velocity.x, velocity.y, dw);
-            position += perp(a2) * dt;
-            velocity += perp(a2) * dw - a2 * (w * dt);
         }
         // The chassis.
         self.chassis_q.fill(0.0);
@@ -319,11 +462,12 @@ impl Tangent {
                 self.chassis_q[coordinate] = 1.0;
             }
         }
-        self.body_motion(at);
+        if direction.chassis.is_some() {
+            self.body_motion(at);
+        }
         // The loads' changes.
-        self.link_loads.fill(BodyLoad::ZERO);
         self.body_loads.fill(BodyLoad::ZERO);
-        let (_, unit, touching) = at.points;
+        let (_, unit, _) = at.points;
         let deflection = direction.point;
         // Each contact's load by what the column moves: the links' states
         // (a track column), the bodies' (a chassis column: the rims and
@@ -333,7 +477,9 @@ impl Tangent {
                    loads: &mut [BodyLoad],
                    bodies: &mut [BodyLoad],
                    out: &mut [f64]| {
-            loads[c.link] = loads[c.link].plus(BodyLoad {
+            // The links' loads straight into the block, link-major.
+            let e = c.link * kb + b;
+            loads[e] = loads[e].plus(BodyLoad {
                 force: Vector2::new(change[0], change[1]),
                 moment: change[2],
             });
@@ -358,8 +504,8 @@ impl Tangent {
                     .copy_from(&self.link_rate[c.link]);
                 add(
                     c,
-                    c.by_link * state,
-                    &mut self.link_loads,
+                    c.rows(&c.by_link, &state),
+                    &mut self.block_loads,
                     &mut self.body_loads,
                     out,
                 );
@@ -372,8 +518,8 @@ impl Tangent {
                     state.fixed_rows_mut::<3>(3).copy_from(&self.body_rate[b]);
                     add(
                         c,
-                        c.by_other * state,
-                        &mut self.link_loads,
+                        c.rows(&c.by_other, &state),
+                        &mut self.block_loads,
                         &mut self.body_loads,
                         out,
                     );
@@ -384,16 +530,10 @@ impl Tangent {
                 add(
                     c,
                     c.by_deflection * unit,
-                    &mut self.link_loads,
+                    &mut self.block_loads,
                     &mut self.body_loads,
                     out,
                 );
-            }
-        }
-        // Lifted points' deflections relax on their own.
-        if let (Some(relax), Some(slot)) = (at.relaxation, deflection) {
-            if touching.get(slot).is_some_and(|t| t.is_none()) {
-                out[o.tangential + slot] += relax;
             }
         }
         // The arms: τ = preload − k φ − c φ̇, φ = θ_b − θ_frame.
@@ -415,40 +555,13 @@ impl Tangent {
             self.body_loads[0].moment -= torque;
             out[o.integral] = slopes.rate[0] * speed + slopes.rate[1] * integral;
         }
-        // The dynamics.
-        self.chain.direction(
-            &ChainDirection {
-                angles: &self.angles,
-                rates: &self.rates,
-                loads: &self.link_loads,
-                closing: Vector2::zeros(),
-            },
-            &mut self.track_qdd,
-        );
-        self.tree.direction(
-            &TreeDirection {
-                coordinates: &self.chassis_q,
-                rates: &self.chassis_qd,
-                loads: &self.body_loads,
-            },
-            &mut self.chassis_qdd,
-        );
-        let nt = independent.len();
-        for (slot, &c) in independent.iter().enumerate() {
+        if direction.track.is_some_and(|(_, rate)| rate) {
             // ∂ż/∂y: the rates' own columns.
-            out[o.track + slot] = if c < 2 { root.1[c] } else { self.rates[c - 2] }
-                * if direction.track.is_some_and(|(_, rate)| rate) {
-                    1.0
-                } else {
-                    0.0
-                };
-            out[o.track + nt + slot] = self.track_qdd[c];
+            for (slot, &c) in independent.iter().enumerate() {
+                out[o.track + slot] = if c < 2 { root.1[c] } else { self.rates[c - 2] };
+            }
         }
-        for j in 0..dof {
-            out[o.chassis + j] = self.chassis_qd[j];
-            out[o.chassis + dof + j] = self.chassis_qdd[j];
-        }
-        Ok(())
+        out[o.chassis..o.chassis + dof].copy_from_slice(&self.chassis_qd);
     }
 
     /// Every chassis body's pose and velocity change from the chassis'

@@ -596,9 +596,6 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         )
     }
 
-    /// The vehicle's own solves on rigid ground with its track closed by
-    /// partitioning (the declared way); on soft soil, or closed another
-    /// way, the integrator's dense Jacobian.
     /// The exact `∂f/∂y` ([`Tangent`]: every force element's Jacobian
     /// through the bodies' kinematics and the dynamics' own derivatives),
     /// on rigid ground with the track closed by partitioning; `false`
@@ -618,6 +615,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         Ok(true)
     }
 
+    /// The vehicle's own solves on rigid ground with its track closed by
+    /// partitioning (the declared way); on soft soil, or closed another
+    /// way, the integrator's dense Jacobian.
     fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
         let own = self.soil.is_none() && self.track().dependent_pair().is_some();
         own.then_some(self as &mut dyn ImplicitSolve)

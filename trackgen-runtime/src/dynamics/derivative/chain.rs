@@ -93,6 +93,25 @@ pub struct ChainDirection<'a> {
     pub closing: Vector2<f64>,
 }
 
+/// Many directions along which to differentiate
+/// ([`ChainTangent::directions`]): the slices of [`ChainDirection`] for
+/// `columns` directions, link-major (entry `i · columns + c` is link `i`
+/// along direction `c`), and one closing change per direction. Absent
+/// slices are zero.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct ChainDirections<'a> {
+    /// How many directions.
+    pub columns: usize,
+    /// `δθ` (rad), `n × columns`, or empty.
+    pub angles: &'a [f64],
+    /// `δω` (rad/s), `n × columns`, or empty.
+    pub rates: &'a [f64],
+    /// `δF` (N, N m), `n × columns`, or empty.
+    pub loads: &'a [BodyLoad],
+    /// The closing joint's change per direction, or empty.
+    pub closing: &'a [Vector2<f64>],
+}
+
 /// A track's linear-time equations factored at a state, for the
 /// derivative of its accelerations along any number of directions
 /// ([`ChainTangent::direction`]), O(n) each.
@@ -126,7 +145,8 @@ pub struct ChainTangent {
     lambda: Vec<Vector2<f64>>,
     /// Scratch of a direction.
     rhs: Vec<Vector2<f64>>,
-    load: Vec<(Vector2<f64>, f64)>,
+    forces: Vec<Vector2<f64>>,
+    moments: Vec<f64>,
 }
 
 impl ChainTangent {
@@ -164,7 +184,8 @@ impl ChainTangent {
             linear_dd: vec![Vector2::zeros(); n],
             lambda: vec![Vector2::zeros(); n],
             rhs: vec![Vector2::zeros(); n],
-            load: vec![(Vector2::zeros(), 0.0); n],
+            forces: vec![Vector2::zeros(); n],
+            moments: vec![0.0; n],
         })
     }
 
@@ -274,15 +295,17 @@ impl ChainTangent {
             let k = (j + 1) % n;
             let (sj, sk) = (self.at[j], self.at[k]);
             lambda[j] = sj.a2 * (sj.omega * sj.omega) - sk.a1 * (sk.omega * sk.omega);
-            self.load[j] = (sj.force, sj.moment);
+            self.forces[j] = sj.force;
+            self.moments[j] = sj.moment;
         }
         if closed {
             lambda[n - 1] -= stabilisation;
         }
-        self.solve_loaded(&mut lambda);
+        self.solve_loaded(&mut lambda, &self.forces, &self.moments, 1);
         self.lambda = lambda;
         for i in 0..n {
-            let (theta, linear) = self.accelerations_of(i, &self.lambda, self.load[i]);
+            let load = (self.forces[i], self.moments[i]);
+            let (theta, linear) = self.accelerations_of(i, &self.lambda, load);
             self.theta_dd[i] = theta;
             self.linear_dd[i] = linear;
         }
@@ -311,59 +334,152 @@ impl ChainTangent {
     /// If a slice of `direction` is neither empty nor one per link, or
     /// `out` not `n + 2` long (a programming error).
     pub fn direction(&mut self, direction: &ChainDirection<'_>, out: &mut [f64]) {
+        self.directions(
+            &ChainDirections {
+                columns: 1,
+                angles: direction.angles,
+                rates: direction.rates,
+                loads: direction.loads,
+                closing: std::slice::from_ref(&direction.closing),
+            },
+            out,
+        );
+    }
+
+    /// The derivative of `q̈_i` along many directions at once (the same
+    /// sweeps as [`ChainTangent::direction`], each step over every
+    /// direction: a Jacobian's columns), into `out`, `(n + 2) × columns`
+    /// row by row: entry `r · columns + c` is row `r` of
+    /// `(δẍ¹, δÿ¹, δθ̈¹ … δθ̈ⁿ)` along direction `c`.
+    ///
+    /// # Panics
+    /// If a slice of `directions` is neither empty nor its documented
+    /// length, or `out` not `(n + 2) × columns` long (a programming error).
+    // Joint j couples links j and j + 1 (mod n): the loops index neighbours.
+    #[allow(clippy::needless_range_loop)]
+    pub fn directions(&mut self, directions: &ChainDirections<'_>, out: &mut [f64]) {
         let n = self.links.len();
-        assert!(direction.angles.is_empty() || direction.angles.len() == n);
-        assert!(direction.rates.is_empty() || direction.rates.len() == n);
-        assert!(direction.loads.is_empty() || direction.loads.len() == n);
-        assert_eq!(out.len(), n + 2);
-        let angle = |i: usize| direction.angles.get(i).copied().unwrap_or(0.0);
-        let rate = |i: usize| direction.rates.get(i).copied().unwrap_or(0.0);
+        let k = directions.columns;
+        let size = n * k;
+        let ChainDirections {
+            angles,
+            rates,
+            loads,
+            closing,
+            ..
+        } = *directions;
+        assert!(angles.is_empty() || angles.len() == size, "angles per link and direction");
+        assert!(rates.is_empty() || rates.len() == size, "rates per link and direction");
+        assert!(loads.is_empty() || loads.len() == size, "loads per link and direction");
+        assert!(closing.is_empty() || closing.len() == k, "a closing change per direction");
+        assert_eq!(out.len(), (n + 2) * k, "(n + 2) rows per direction");
+        let angle = |e: usize| angles.get(e).copied().unwrap_or(0.0);
+        let mut forces = std::mem::take(&mut self.forces);
+        let mut moments = std::mem::take(&mut self.moments);
+        let mut rhs = std::mem::take(&mut self.rhs);
+        forces.clear();
+        moments.clear();
+        rhs.clear();
+        if loads.is_empty() {
+            forces.resize(size, Vector2::zeros());
+            moments.resize(size, 0.0);
+        } else {
+            forces.extend(loads.iter().map(|l| l.force));
+            moments.extend(loads.iter().map(|l| l.moment));
+        }
         // The loads: `δF`, and the moment of the joint forces on the
         // turned lever arms, `δp2·λᵢ − δp1·λᵢ₋₁` (`δp = −A ū δθ`).
-        for i in 0..n {
-            let at = &self.at[i];
-            let given = direction.loads.get(i).copied().unwrap_or(BodyLoad::ZERO);
-            let (ahead, behind) = self.neighbours(i, &self.lambda);
-            let dtheta = angle(i);
-            let moment = given.moment + (-at.a2.dot(&ahead) + at.a1.dot(&behind)) * dtheta;
-            self.load[i] = (given.force, moment);
+        if !angles.is_empty() {
+            for i in 0..n {
+                let at = &self.at[i];
+                let (ahead, behind) = self.neighbours(i, &self.lambda);
+                let turning = -at.a2.dot(&ahead) + at.a1.dot(&behind);
+                let row = i * k..(i + 1) * k;
+                for (moment, dtheta) in moments[row.clone()].iter_mut().zip(&angles[row]) {
+                    *moment += turning * dtheta;
+                }
+            }
         }
         if !self.closed {
             // The cut force on the turned arms, and its own change.
-            let (f, df) = (self.cut_force, direction.closing);
+            let f = self.cut_force;
             let (last, first) = (self.at[n - 1], self.at[0]);
-            let (dl, d0) = (angle(n - 1), angle(0));
-            self.load[n - 1].0 += df;
-            self.load[n - 1].1 += last.p2.dot(&df) - last.a2.dot(&f) * dl;
-            self.load[0].0 -= df;
-            self.load[0].1 -= first.p1.dot(&df) - first.a1.dot(&f) * d0;
+            for c in 0..k {
+                let df = closing.get(c).copied().unwrap_or_else(Vector2::zeros);
+                let (e_last, dl, d0) = ((n - 1) * k + c, angle((n - 1) * k + c), angle(c));
+                forces[e_last] += df;
+                moments[e_last] += last.p2.dot(&df) - last.a2.dot(&f) * dl;
+                forces[c] -= df;
+                moments[c] -= first.p1.dot(&df) - first.a1.dot(&f) * d0;
+            }
         }
-        // The joints' right sides: `δκⱼ − δD⁺ⱼ aⱼ + δD⁻ₖ aₖ`.
+        // The joints' right sides: `δκⱼ − δD⁺ⱼ aⱼ + δD⁻ₖ aₖ`, with
+        // `δκⱼ = p2ⱼ ωⱼ² δθⱼ + 2 a2ⱼ ωⱼ δωⱼ − p1ₖ ωₖ² δθₖ − 2 a1ₖ ωₖ δωₖ` and
+        // `δD⁺ⱼ aⱼ = δp2ⱼ θ̈ⱼ = −a2ⱼ θ̈ⱼ δθⱼ`.
+        rhs.resize(size, Vector2::zeros());
         for j in 0..n {
-            let k = (j + 1) % n;
-            let (sj, sk) = (&self.at[j], &self.at[k]);
-            let (tj, tk) = (angle(j), angle(k));
-            let (wj, wk) = (sj.omega, sk.omega);
-            let dkappa = sj.p2 * (wj * wj * tj) + sj.a2 * (2.0 * wj * rate(j))
-                - sk.p1 * (wk * wk * tk)
-                - sk.a1 * (2.0 * wk * rate(k));
-            // δD⁺ⱼ aⱼ = δp2ⱼ θ̈ⱼ = −a2ⱼ θ̈ⱼ δθⱼ.
-            self.rhs[j] =
-                dkappa + sj.a2 * (self.theta_dd[j] * tj) - sk.a1 * (self.theta_dd[k] * tk);
+            let l = (j + 1) % n;
+            let (sj, sl) = (&self.at[j], &self.at[l]);
+            let (wj, wl) = (sj.omega, sl.omega);
+            let row = &mut rhs[j * k..(j + 1) * k];
+            if !angles.is_empty() {
+                let by_angle_j = sj.p2 * (wj * wj) + sj.a2 * self.theta_dd[j];
+                let by_angle_l = sl.p1 * (wl * wl) + sl.a1 * self.theta_dd[l];
+                let (tj, tl) = (&angles[j * k..(j + 1) * k], &angles[l * k..(l + 1) * k]);
+                for ((r, a), b) in row.iter_mut().zip(tj).zip(tl) {
+                    *r += by_angle_j * *a - by_angle_l * *b;
+                }
+            }
+            if !rates.is_empty() {
+                let (by_rate_j, by_rate_l) = (sj.a2 * (2.0 * wj), sl.a1 * (2.0 * wl));
+                let (rj, rl) = (&rates[j * k..(j + 1) * k], &rates[l * k..(l + 1) * k]);
+                for ((r, a), b) in row.iter_mut().zip(rj).zip(rl) {
+                    *r += by_rate_j * *a - by_rate_l * *b;
+                }
+            }
         }
         if self.closed {
-            self.rhs[n - 1] -= direction.closing;
+            for (r, change) in rhs[(n - 1) * k..].iter_mut().zip(closing) {
+                *r -= change;
+            }
         }
-        let mut dlambda = std::mem::take(&mut self.rhs);
-        self.solve_loaded(&mut dlambda);
-        let (theta0, linear0) = self.accelerations_of(0, &dlambda, self.load[0]);
-        out[0] = linear0.x;
-        out[1] = linear0.y;
-        out[2] = theta0;
-        for i in 1..n {
-            out[2 + i] = self.accelerations_of(i, &dlambda, self.load[i]).0;
+        self.solve_loaded(&mut rhs, &forces, &moments, k);
+        // Every link's `δθ̈` (and link 0's `δẍ`, `δÿ`) from the joints'
+        // force changes on either side (a cut chain has none at its ends).
+        let zeros = vec![Vector2::zeros(); k];
+        for i in 0..n {
+            let (link, at) = (&self.links[i], &self.at[i]);
+            let ahead = if i + 1 < n || self.closed {
+                &rhs[i * k..(i + 1) * k]
+            } else {
+                &zeros[..]
+            };
+            let behind = match i {
+                0 if self.closed => &rhs[(n - 1) * k..],
+                0 => &zeros[..],
+                _ => &rhs[(i - 1) * k..i * k],
+            };
+            let row = i * k..(i + 1) * k;
+            let (p1, p2) = (at.p1 * link.inv_inertia, at.p2 * link.inv_inertia);
+            for (((o, moment), a), b) in out[(2 + i) * k..(3 + i) * k]
+                .iter_mut()
+                .zip(&moments[row.clone()])
+                .zip(ahead)
+                .zip(behind)
+            {
+                *o = moment * link.inv_inertia + p2.dot(a) - p1.dot(b);
+            }
+            if i == 0 {
+                for (c, ((force, a), b)) in forces[row].iter().zip(ahead).zip(behind).enumerate() {
+                    let linear = (force + a - b) * link.inv_mass;
+                    out[c] = linear.x;
+                    out[k + c] = linear.y;
+                }
+            }
         }
-        self.rhs = dlambda;
+        self.forces = forces;
+        self.moments = moments;
+        self.rhs = rhs;
     }
 
     /// The joint forces on either side of link `i`: the one ahead (its
@@ -404,44 +520,71 @@ impl ChainTangent {
         )
     }
 
-    /// Solves the `λ` system for joint right sides in `rhs` (replaced by
-    /// `λ`) once the loads in `self.load` are folded in:
-    /// `rhsⱼ − D⁺ⱼ Wⱼ Fⱼ + D⁻ₖ Wₖ Fₖ`.
-    fn solve_loaded(&self, rhs: &mut [Vector2<f64>]) {
+    /// Solves the `λ` system for `k` directions' joint right sides in
+    /// `rhs` (`n × k`, joint-major; replaced by `λ`) once their loads
+    /// (`forces`, `moments`, link-major) are folded in:
+    /// `rhsⱼ − D⁺ⱼ Wⱼ Fⱼ + D⁻ₗ Wₗ Fₗ`.
+    fn solve_loaded(
+        &self,
+        rhs: &mut [Vector2<f64>],
+        forces: &[Vector2<f64>],
+        moments: &[f64],
+        k: usize,
+    ) {
         let n = self.links.len();
-        for (j, r) in rhs.iter_mut().enumerate() {
-            let k = (j + 1) % n;
+        for j in 0..n {
+            let l = (j + 1) % n;
             if j + 1 == n && !self.closed {
                 break;
             }
-            let (lj, lk) = (&self.links[j], &self.links[k]);
-            let (fj, tj) = self.load[j];
-            let (fk, tk) = self.load[k];
-            *r += -(self.at[j].p2 * (tj * lj.inv_inertia) + fj * lj.inv_mass)
-                + (self.at[k].p1 * (tk * lk.inv_inertia) + fk * lk.inv_mass);
+            let (lj, ll) = (&self.links[j], &self.links[l]);
+            let (cj, cl) = (
+                self.at[j].p2 * lj.inv_inertia,
+                self.at[l].p1 * ll.inv_inertia,
+            );
+            let (ij, il) = (lj.inv_mass, ll.inv_mass);
+            let (own, next) = (j * k..(j + 1) * k, l * k..(l + 1) * k);
+            let here = moments[own.clone()].iter().zip(&forces[own.clone()]);
+            let ahead = moments[next.clone()].iter().zip(&forces[next]);
+            for (r, ((mj, fj), (ml, fl))) in rhs[own].iter_mut().zip(here.zip(ahead)) {
+                *r += -(cj * *mj + fj * ij) + (cl * *ml + fl * il);
+            }
         }
         let m = n - 1;
         if m > 0 {
             for j in 1..m {
-                let previous = rhs[j - 1];
-                rhs[j] -= self.factor[j] * previous;
+                let (done, rest) = rhs.split_at_mut(j * k);
+                let factor = self.factor[j];
+                for (x, previous) in rest[..k].iter_mut().zip(&done[(j - 1) * k..]) {
+                    *x -= factor * previous;
+                }
             }
-            rhs[m - 1] = self.inverse[m - 1] * rhs[m - 1];
+            let inverse = self.inverse[m - 1];
+            for x in &mut rhs[(m - 1) * k..m * k] {
+                *x = inverse * *x;
+            }
             for j in (0..m - 1).rev() {
-                let next = rhs[j + 1];
-                rhs[j] = self.inverse[j] * (rhs[j] - self.lower[j + 1].transpose() * next);
+                let (head, tail) = rhs.split_at_mut((j + 1) * k);
+                let (inverse, upper) = (self.inverse[j], self.lower[j + 1].transpose());
+                for (x, next) in head[j * k..].iter_mut().zip(&tail[..k]) {
+                    *x = inverse * (*x - upper * next);
+                }
             }
         }
         if self.closed {
-            let (b0, bm) = (self.lower[0], self.lower[n - 1].transpose());
-            let s = rhs[n - 1] - b0.transpose() * rhs[0] - bm.transpose() * rhs[m - 1];
-            let y = self.schur_inverse * s;
-            for (x, z) in rhs[..m].iter_mut().zip(&self.border) {
-                *x -= z * y;
+            let (b0, bm) = (self.lower[0].transpose(), self.lower[n - 1]);
+            let (body, last) = rhs.split_at_mut((n - 1) * k);
+            let (first, before_last) = (&body[..k], &body[(m - 1) * k..]);
+            for ((y, x0), xm) in last.iter_mut().zip(first).zip(before_last) {
+                *y = self.schur_inverse * (*y - b0 * x0 - bm * xm);
             }
-            rhs[n - 1] = y;
+            for (j, z) in self.border.iter().enumerate() {
+                for (x, y) in body[j * k..(j + 1) * k].iter_mut().zip(last.iter()) {
+                    *x -= z * y;
+                }
+            }
         } else {
-            rhs[n - 1] = Vector2::zeros();
+            rhs[(n - 1) * k..].fill(Vector2::zeros());
         }
     }
 

@@ -13,7 +13,7 @@
 mod chain;
 mod tree;
 
-pub use chain::{ChainDirection, ChainTangent};
+pub use chain::{ChainDirection, ChainDirections, ChainTangent};
 pub use tree::{TreeDirection, TreeTangent};
 
 use nalgebra::{DMatrix, SVector, Vector2};

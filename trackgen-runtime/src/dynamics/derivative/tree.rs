@@ -57,8 +57,14 @@ pub struct TreeTangent {
     omega: Vec<f64>,
     /// `H`, rows `(ẋ, ẏ, ω)` per body.
     h: DMatrix<f64>,
-    /// The factored `M_i` (or the multiplier form's matrix).
-    lu: Option<nalgebra::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
+    /// The top `DOF` rows of `M_i⁻¹` (or of the multiplier form's
+    /// inverse: `DOF × (DOF + 2)`), from its LU factors; whether the last
+    /// factorisation succeeded.
+    inverse: DMatrix<f64>,
+    factored: bool,
+    /// The accelerations' response to the bodies' loads, `M_i⁻¹ Hᵀ`
+    /// (`DOF × 3m`; through the multiplier form for a constrained track).
+    response: DMatrix<f64>,
     /// `q̈_i` and the loop's `λ` (constrained track).
     qdd: DVector<f64>,
     lambda: Vector2<f64>,
@@ -84,7 +90,9 @@ impl TreeTangent {
             rotation: vec![Rotation::from_sin_cos((0.0, 1.0)); m],
             omega: vec![0.0; m],
             h: DMatrix::zeros(3 * m, m + 2),
-            lu: None,
+            inverse: DMatrix::zeros(m + 2, m + 2),
+            factored: false,
+            response: DMatrix::zeros(m + 2, 3 * m),
             qdd: DVector::zeros(m + 2),
             lambda: Vector2::zeros(),
             s: vec![0.0; m],
@@ -147,6 +155,7 @@ impl TreeTangent {
     ) -> Result<(), DynamicsError> {
         let m = self.description.len();
         let dof = self.dof;
+        self.factored = false;
         for b in 0..m {
             self.rotation[b] = Rotation::from_sin_cos(q[2 + b].sin_cos());
             self.omega[b] = qd[2 + b];
@@ -161,14 +170,13 @@ impl TreeTangent {
                 body.mass
             }
         };
-        let mut matrix = DMatrix::zeros(dof, dof);
-        for i in 0..dof {
-            for j in 0..dof {
-                matrix[(i, j)] = (0..3 * m)
-                    .map(|r| self.h[(r, i)] * mass(r) * self.h[(r, j)])
-                    .sum();
-            }
+        // `M_i = Hᵀ M H` (eq. (15)).
+        let mut weighted = self.h.clone();
+        for (r, mut row) in weighted.row_iter_mut().enumerate() {
+            row *= mass(r);
         }
+        let transform = self.h.transpose();
+        let matrix = &transform * weighted;
         // The applied loads, gravity included, less `M γ`.
         let gamma = self.translational(&DVector::zeros(dof), None);
         let mut applied = DVector::zeros(3 * m);
@@ -184,7 +192,7 @@ impl TreeTangent {
             reduced[3 * b] -= bodies[b].mass * gamma[b].x;
             reduced[3 * b + 1] -= bodies[b].mass * gamma[b].y;
         }
-        let forces = self.h.transpose() * reduced;
+        let forces = &transform * reduced;
         if self.constrained {
             self.spans = self
                 .description
@@ -217,12 +225,15 @@ impl TreeTangent {
             let x = lu.solve(&rhs).ok_or(DynamicsError::SingularClosure)?;
             self.qdd = x.rows(0, dof).into_owned();
             self.lambda = Vector2::new(x[dof], x[dof + 1]);
-            self.lu = Some(lu);
+            let inverse = lu.try_inverse().ok_or(DynamicsError::SingularClosure)?;
+            self.inverse = inverse.rows(0, dof).into_owned();
         } else {
             let lu = matrix.lu();
             self.qdd = lu.solve(&forces).ok_or(DynamicsError::SingularClosure)?;
-            self.lu = Some(lu);
+            self.inverse = lu.try_inverse().ok_or(DynamicsError::SingularClosure)?;
         }
+        self.response = self.inverse.columns(0, dof) * &transform;
+        self.factored = true;
         // What the joints carry, `r = F − M a`, and `sₖ = Σ rᵇ·∂²Rᵇ/∂θₖ²`
         // (`∂²R/∂θ² = −A ū` of every lever: minus the lever turned back).
         let accel = self.translational(&self.qdd.clone(), None);
@@ -275,17 +286,18 @@ impl TreeTangent {
             w[3 * b + 1] = f.y;
             w[3 * b + 2] = load.moment;
         }
-        let mut rhs = self.h.transpose() * w;
-        for k in 0..m {
-            rhs[2 + k] += self.s[k] * dtheta[k];
-        }
-        let Some(lu) = &self.lu else {
+        if !self.factored {
             out.fill(f64::NAN);
             return;
-        };
-        let solution = if self.constrained {
-            let mut full = DVector::zeros(dof + 2);
-            full.rows_mut(0, dof).copy_from(&rhs);
+        }
+        // `M_i⁻¹ (Hᵀ w + s δθ)`, through the kept inverse.
+        let mut solution = &self.response * w;
+        for k in 0..m {
+            if dtheta[k] != 0.0 {
+                solution.axpy(self.s[k] * dtheta[k], &self.inverse.column(2 + k), 1.0);
+            }
+        }
+        if self.constrained {
             // δγ_c − δC_q q̈: `Σ (A_θ d̄ ω² δθ + 2 A d̄ ω δω) + Σ A d̄ θ̈ δθ`.
             let mut dgamma = Vector2::zeros();
             for (k, span) in self.spans.iter().enumerate() {
@@ -293,15 +305,22 @@ impl TreeTangent {
                 dgamma += perp(*span) * (wk * wk * dtheta[k])
                     + span * (2.0 * wk * domega[k] + acc * dtheta[k]);
             }
-            full[dof] = dgamma.x;
-            full[dof + 1] = dgamma.y;
-            lu.solve(&full).map(|x| x.rows(0, dof).into_owned())
-        } else {
-            lu.solve(&rhs)
-        };
-        match solution {
-            Some(x) => out.copy_from_slice(x.as_slice()),
-            None => out.fill(f64::NAN),
+            solution.axpy(dgamma.x, &self.inverse.column(dof), 1.0);
+            solution.axpy(dgamma.y, &self.inverse.column(dof + 1), 1.0);
         }
+        out.copy_from_slice(solution.as_slice());
+    }
+
+    /// The derivative of `q̈_i` along directions that change the loads
+    /// alone (`δq_i = δq̇_i = 0`): `M_i δq̈_i = Hᵀ δF`, the load term of
+    /// [`TreeTangent::direction`], for every column of `loads` (`3m × k`,
+    /// rows `(F_x, F_y, M)` per body) at once, through `M_i⁻¹ Hᵀ` kept
+    /// from the factorisation; the columns of the returned `DOF × k`
+    /// matrix, NaN where the factorisation failed.
+    pub fn load_directions(&self, loads: &DMatrix<f64>) -> DMatrix<f64> {
+        if !self.factored {
+            return DMatrix::from_element(self.dof, loads.ncols(), f64::NAN);
+        }
+        &self.response * loads
     }
 }
