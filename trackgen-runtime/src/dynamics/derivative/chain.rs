@@ -147,6 +147,8 @@ pub struct ChainTangent {
     rhs: Vec<Vector2<f64>>,
     forces: Vec<Vector2<f64>>,
     moments: Vec<f64>,
+    /// Zero joint forces beyond an open chain's ends, one per direction.
+    zeros: Vec<Vector2<f64>>,
 }
 
 impl ChainTangent {
@@ -186,6 +188,7 @@ impl ChainTangent {
             rhs: vec![Vector2::zeros(); n],
             forces: vec![Vector2::zeros(); n],
             moments: vec![0.0; n],
+            zeros: Vec::new(),
         })
     }
 
@@ -446,17 +449,20 @@ impl ChainTangent {
         self.solve_loaded(&mut rhs, &forces, &moments, k);
         // Every link's `δθ̈` (and link 0's `δẍ`, `δÿ`) from the joints'
         // force changes on either side (a cut chain has none at its ends).
-        let zeros = vec![Vector2::zeros(); k];
+        if self.zeros.len() < k {
+            self.zeros.resize(k, Vector2::zeros());
+        }
+        let zeros = &self.zeros[..k];
         for i in 0..n {
             let (link, at) = (&self.links[i], &self.at[i]);
             let ahead = if i + 1 < n || self.closed {
                 &rhs[i * k..(i + 1) * k]
             } else {
-                &zeros[..]
+                zeros
             };
             let behind = match i {
                 0 if self.closed => &rhs[(n - 1) * k..],
-                0 => &zeros[..],
+                0 => zeros,
                 _ => &rhs[(i - 1) * k..i * k],
             };
             let row = i * k..(i + 1) * k;

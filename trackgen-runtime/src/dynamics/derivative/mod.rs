@@ -58,7 +58,8 @@ pub fn penalty_force_change(
 /// `∂q̈_i/∂(q_i, q̇_i)` of a track as declared (a constrained loop, an
 /// open chain, or its declared penalty joint, whose force's own change is
 /// included) under loads besides gravity that do not change (one per
-/// link, or none): by [`ChainTangent`], one O(n) direction per column.
+/// link, or none): by [`ChainTangent`], one O(n) direction per column,
+/// swept together ([`ChainTangent::directions`]).
 pub fn track_jacobian<M: TrackModel<D>, const D: usize>(
     model: &M,
     q: &SVector<f64, D>,
@@ -97,37 +98,56 @@ pub fn track_jacobian<M: TrackModel<D>, const D: usize>(
         coordinates: DMatrix::zeros(D, D),
         rates: DMatrix::zeros(D, D),
     };
+    // Every link's angle, then every link's rate, each a unit direction:
+    // the columns of the identity, link-major, through the chain's sweeps
+    // at once. R¹ and Ṙ¹ enter only through loads, which do not change
+    // here.
+    let identity: Vec<f64> = (0..n * n)
+        .map(|e| if e / n == e % n { 1.0 } else { 0.0 })
+        .collect();
     let mut unit = vec![0.0; n];
-    let mut column = vec![0.0; D];
-    // R¹ and Ṙ¹ enter only through loads, which do not change here.
-    for j in 0..n {
-        unit.fill(0.0);
-        unit[j] = 1.0;
-        for rates in [false, true] {
-            let (angles, rates_of) = if rates {
-                (&[][..], &unit[..])
-            } else {
-                (&unit[..], &[][..])
-            };
-            let closing = match penalty {
-                Some(joint) => penalty_force_change(&joint, &spans, &omega, (angles, rates_of)),
-                None => Vector2::zeros(),
-            };
-            tangent.direction(
-                &ChainDirection {
-                    angles,
-                    rates: rates_of,
-                    loads: &[],
-                    closing,
-                },
-                &mut column,
-            );
-            let target = if rates {
-                &mut jacobian.rates
-            } else {
-                &mut jacobian.coordinates
-            };
-            target.set_column(2 + j, &nalgebra::DVector::from_column_slice(&column));
+    let mut columns = vec![0.0; D * n];
+    for rates in [false, true] {
+        let closing: Vec<Vector2<f64>> = match penalty {
+            Some(joint) => (0..n)
+                .map(|j| {
+                    unit.fill(0.0);
+                    unit[j] = 1.0;
+                    let (angles, rates_of) = if rates {
+                        (&[][..], &unit[..])
+                    } else {
+                        (&unit[..], &[][..])
+                    };
+                    penalty_force_change(&joint, &spans, &omega, (angles, rates_of))
+                })
+                .collect(),
+            None => Vec::new(),
+        };
+        let (angles, rates_of) = if rates {
+            (&[][..], &identity[..])
+        } else {
+            (&identity[..], &[][..])
+        };
+        tangent.directions(
+            &ChainDirections {
+                columns: n,
+                angles,
+                rates: rates_of,
+                loads: &[],
+                closing: &closing,
+            },
+            &mut columns,
+        );
+        let target = if rates {
+            &mut jacobian.rates
+        } else {
+            &mut jacobian.coordinates
+        };
+        // `columns` holds row r of direction j at r·n + j.
+        for j in 0..n {
+            for r in 0..D {
+                target[(r, 2 + j)] = columns[r * n + j];
+            }
         }
     }
     Ok(jacobian)
