@@ -303,7 +303,8 @@ fn many_directions_at_once_equal_one_at_a_time() {
             &mut all,
         );
         for c in 0..k {
-            let column = |values: &[f64]| -> Vec<f64> { (0..n).map(|i| values[i * k + c]).collect() };
+            let column =
+                |values: &[f64]| -> Vec<f64> { (0..n).map(|i| values[i * k + c]).collect() };
             let loads: Vec<BodyLoad> = (0..n).map(|i| applied[i * k + c]).collect();
             let mut one = vec![0.0; n + 2];
             tangent.direction(
@@ -316,7 +317,12 @@ fn many_directions_at_once_equal_one_at_a_time() {
                 &mut one,
             );
             let batched: Vec<f64> = (0..n + 2).map(|r| all[r * k + c]).collect();
-            assert_eq!(batched, one, "direction {c} of {}", std::any::type_name::<M>());
+            assert_eq!(
+                batched,
+                one,
+                "direction {c} of {}",
+                std::any::type_name::<M>()
+            );
         }
     }
     chain::<M113Track, 66>(11);
@@ -351,6 +357,12 @@ fn many_directions_at_once_equal_one_at_a_time() {
         );
         let batched: Vec<f64> = all.column(c).iter().copied().collect();
         let scale = one.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
-        assert_close("Marder chassis load directions", &batched, &one, 1e-12, scale);
+        assert_close(
+            "Marder chassis load directions",
+            &batched,
+            &one,
+            1e-12,
+            scale,
+        );
     }
 }

@@ -22,7 +22,9 @@
 //!
 //! * settings that `simulate` documents as invalid (`t_end` not after a
 //!   finite `t0`, a fixed step that is not positive and finite or does
-//!   not advance `t0`, tolerances negative, non-finite or both zero, a
+//!   not advance `t0`, tolerances negative, non-finite or both zero
+//!   (`Integrator::Auto`'s two each its method's rtol and atol: either
+//!   zero), a
 //!   `max_step` NaN or not positive, an output interval not positive and
 //!   finite, output times not finite and non-decreasing) stop the run
 //!   with `SimulationError::Setup` before any sample;
@@ -197,6 +199,22 @@ impl Case {
             } => {
                 if !(rtol.is_finite() && atol.is_finite() && rtol >= 0.0 && atol >= 0.0)
                     || rtol + atol == 0.0
+                {
+                    return Some("tolerances");
+                }
+                if max_step.is_nan() || max_step <= 0.0 {
+                    return Some("max_step");
+                }
+            }
+            Integrator::Auto {
+                explicit_tolerance,
+                implicit_tolerance,
+                max_step,
+            } => {
+                // Each tolerance is its method's rtol and atol at once.
+                if ![explicit_tolerance, implicit_tolerance]
+                    .iter()
+                    .all(|t| t.is_finite() && *t > 0.0)
                 {
                     return Some("tolerances");
                 }
@@ -442,6 +460,13 @@ fn integrator() -> impl Strategy<Value = Integrator> {
                 max_step,
             }
         }),
+        (tolerance(), tolerance(), max_step()).prop_map(
+            |(explicit_tolerance, implicit_tolerance, max_step)| Integrator::Auto {
+                explicit_tolerance,
+                implicit_tolerance,
+                max_step,
+            }
+        ),
     ]
 }
 

@@ -231,11 +231,6 @@ fn validate(
             rtol,
             atol,
             max_step,
-        }
-        | Integrator::Auto {
-            explicit_tolerance: rtol,
-            implicit_tolerance: atol,
-            max_step,
         } => {
             if !(rtol >= 0.0
                 && atol >= 0.0
@@ -244,6 +239,25 @@ fn validate(
                 && atol.is_finite())
             {
                 return Err(SettingsError::Tolerances { rtol, atol });
+            }
+            if max_step.is_nan() || max_step <= 0.0 {
+                return Err(SettingsError::MaxStep { max_step });
+            }
+        }
+        Integrator::Auto {
+            explicit_tolerance,
+            implicit_tolerance,
+            max_step,
+        } => {
+            // Each is its method's relative and absolute tolerance at once,
+            // so each must be positive on its own.
+            for tolerance in [explicit_tolerance, implicit_tolerance] {
+                if !(tolerance > 0.0 && tolerance.is_finite()) {
+                    return Err(SettingsError::Tolerances {
+                        rtol: tolerance,
+                        atol: tolerance,
+                    });
+                }
             }
             if max_step.is_nan() || max_step <= 0.0 {
                 return Err(SettingsError::MaxStep { max_step });

@@ -11,8 +11,9 @@
 //! `C_d δω_d = Σⱼ Aʲ d̄ʲ ωⱼ δθⱼ`), their rates, the chassis' coordinates
 //! and rates, the drive's integral, the ground points' deflections. Each
 //! costs O(n): the links' states by running sums down the chain, each
-//! contact's load by its Jacobian, one sweep of the factored chain. The
-//! books' rows (quadratures, which nothing reads) are left zero.
+//! contact's load by its Jacobian, one sweep of the factored chain (swept
+//! for a block of columns at once). The books' rows (quadratures, which
+//! nothing reads) are left zero.
 
 use nalgebra::{Matrix2, SMatrix, SVector, Vector2, Vector3};
 
@@ -357,8 +358,16 @@ impl Tangent {
         self.chain.directions(
             &ChainDirections {
                 columns: kb,
-                angles: if moved(&self.block_angles) { &self.block_angles } else { &[] },
-                rates: if moved(&self.block_rates) { &self.block_rates } else { &[] },
+                angles: if moved(&self.block_angles) {
+                    &self.block_angles
+                } else {
+                    &[]
+                },
+                rates: if moved(&self.block_rates) {
+                    &self.block_rates
+                } else {
+                    &[]
+                },
                 loads: &self.block_loads,
                 closing: &[],
             },

@@ -371,10 +371,22 @@ impl ChainTangent {
             closing,
             ..
         } = *directions;
-        assert!(angles.is_empty() || angles.len() == size, "angles per link and direction");
-        assert!(rates.is_empty() || rates.len() == size, "rates per link and direction");
-        assert!(loads.is_empty() || loads.len() == size, "loads per link and direction");
-        assert!(closing.is_empty() || closing.len() == k, "a closing change per direction");
+        assert!(
+            angles.is_empty() || angles.len() == size,
+            "angles per link and direction"
+        );
+        assert!(
+            rates.is_empty() || rates.len() == size,
+            "rates per link and direction"
+        );
+        assert!(
+            loads.is_empty() || loads.len() == size,
+            "loads per link and direction"
+        );
+        assert!(
+            closing.is_empty() || closing.len() == k,
+            "a closing change per direction"
+        );
         assert_eq!(out.len(), (n + 2) * k, "(n + 2) rows per direction");
         let angle = |e: usize| angles.get(e).copied().unwrap_or(0.0);
         let mut forces = std::mem::take(&mut self.forces);
