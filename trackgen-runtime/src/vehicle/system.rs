@@ -319,14 +319,18 @@ where
         }
     }
 
-    /// The exact `∂f/∂y` at `(t, y)` into `out` (column-major), the track
-    /// closed by partitioning, on rigid ground.
-    fn exact_jacobian(
+    /// What the exact Jacobian and the own `W` both start from at `(t,
+    /// y)`: the evaluation there, every force element's Jacobian beside
+    /// its load ([`forces::linearise`]), every chassis body's rotation
+    /// (`work.part_rotations`), the drive's and the deflections' slopes.
+    /// A track not closed by partitioning is refused, `what` naming the
+    /// caller.
+    fn linearised(
         &mut self,
         t: f64,
         y: &[f64],
-        out: &mut [f64],
-    ) -> Result<(), SimulationError> {
+        what: &'static str,
+    ) -> Result<Linearised<DC>, SimulationError> {
         let (qc, qdc) = self.evaluated(t, y)?;
         let (_, [integral, ..], tangential) = self.split(y);
         let points = self.geometry.shoe.ground_points.len();
@@ -338,12 +342,44 @@ where
             (points, tangential, self.stiction_scale),
         );
         let Some(pair) = self.track().dependent_pair() else {
-            return Err(SimulationError::SingularMatrix {
-                t,
-                what: "the vehicle's exact Jacobian (its track is not closed by partitioning)",
-            });
+            return Err(SimulationError::SingularMatrix { t, what });
         };
+        let rotations = &mut self.work.part_rotations;
+        rotations.clear();
+        rotations.extend(
+            self.work
+                .part_trig
+                .iter()
+                .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
+        );
         let (drive, relaxation) = self.slopes(t, &qdc, integral);
+        Ok(Linearised {
+            chassis: (qc, qdc),
+            pair,
+            drive,
+            relaxation,
+        })
+    }
+
+    /// The exact `∂f/∂y` at `(t, y)` into `out` (column-major), the track
+    /// closed by partitioning, on rigid ground.
+    fn exact_jacobian(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), SimulationError> {
+        let Linearised {
+            chassis: (qc, qdc),
+            pair,
+            drive,
+            relaxation,
+        } = self.linearised(
+            t,
+            y,
+            "the vehicle's exact Jacobian (its track is not closed by partitioning)",
+        )?;
+        let points = self.geometry.shoe.ground_points.len();
         let offsets = self.offsets();
         let dimension = self.y0.len();
         let tangent = match &mut self.tangent {
@@ -360,14 +396,6 @@ where
                 })?,
             ),
         };
-        let rotations = &mut self.work.part_rotations;
-        rotations.clear();
-        rotations.extend(
-            self.work
-                .part_trig
-                .iter()
-                .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
-        );
         let track = self.bodies.first();
         let (qt, qdt, trig) = track.recovered();
         tangent
@@ -388,6 +416,16 @@ where
             )
             .map_err(|source| SimulationError::Dynamics { t, source })
     }
+}
+
+/// [`VehicleSystem::linearised`]: the chassis' `(q_i, q̇_i)`, the track's
+/// dependent pair (1-based links), the drive's slopes on its sprocket
+/// and a lifted point's relaxation rate.
+struct Linearised<const DC: usize> {
+    chassis: (SVector<f64, DC>, SVector<f64, DC>),
+    pair: [usize; 2],
+    drive: Option<(usize, super::DriveSlopes)>,
+    relaxation: Option<f64>,
 }
 
 /// What a configuration must agree with in the compiled model, besides
@@ -651,38 +689,24 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
     /// with the chassis' mass matrix and velocity transform and the
     /// track's dependent pair: the vehicle's `W` (see [`Implicit`]).
     fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
-        let (qc, qdc) = self.evaluated(t, y)?;
+        let Linearised {
+            chassis: (qc, _),
+            pair,
+            drive,
+            relaxation,
+        } = self.linearised(
+            t,
+            y,
+            "the vehicle's own W (its track is not closed by partitioning)",
+        )?;
         // The joints' forces at the state, unless the evaluation there
         // solved for them.
         if !self.work.accelerated {
             self.bodies.parts_mut().0.accelerations(t)?;
         }
-        let (_, [integral, ..], tangential) = self.split(y);
         let points = self.geometry.shoe.ground_points.len();
-        forces::linearise(
-            &mut self.work,
-            &self.config,
-            &self.geometry,
-            self.sprocket,
-            (points, tangential, self.stiction_scale),
-        );
-        let Some(pair) = self.track().dependent_pair() else {
-            return Err(SimulationError::SingularMatrix {
-                t,
-                what: "the vehicle's own W (its track is not closed by partitioning)",
-            });
-        };
         let mut chassis_mass = nalgebra::SMatrix::<f64, DC, DC>::zeros();
         self.chassis().model().mass_matrix(&qc, &mut chassis_mass);
-        let rotations = &mut self.work.part_rotations;
-        rotations.clear();
-        rotations.extend(
-            self.work
-                .part_trig
-                .iter()
-                .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
-        );
-        let (drive, relaxation) = self.slopes(t, &qdc, integral);
         let offsets = self.offsets();
         let implicit = match &mut self.implicit {
             Some(implicit) => implicit,
