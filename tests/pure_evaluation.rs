@@ -8,11 +8,10 @@
 //! took 11 029 steps where the same run without them took 11 134.
 
 mod support;
+use support::vehicle::driven;
 
 use trackgen::contact::Terrain;
-use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::simulate::Simulated;
-use trackgen::vehicle::build;
+use trackgen::integrate::OdeSystem;
 use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
 use trackgen::{Vehicle, VehicleDynamics};
@@ -21,30 +20,7 @@ use trackgen::{Vehicle, VehicleDynamics};
 /// state with every coordinate moved, and at the state again: the first
 /// and last agree bit for bit.
 fn pure<V: Vehicle>() {
-    let config = V::config(
-        Terrain::Flat { height: 0.0 },
-        V::speed_drive(|t| 2.0 * t.min(1.0)),
-    );
-    let mut system = build::<V>(config).expect("builds");
-    let mut y = system.initial_state();
-    let mut stepper = Integrator::Bs23 {
-        rtol: 1e-3,
-        atol: 1e-3,
-        max_step: 0.01,
-    }
-    .stepper(system.dimension());
-    let mut t = 0.0;
-    while t < 0.6 {
-        stepper
-            .step(&mut system, &mut t, &mut y, 0.6)
-            .expect("steps");
-        if system
-            .after_step(t, y.as_mut_slice(), &mut |_| {})
-            .expect("after a step")
-        {
-            stepper.restart();
-        }
-    }
+    let (mut system, t, y) = driven::<V>(Terrain::Flat { height: 0.0 }, 0.6, 1e-3);
     let layout = system.layout();
     let n = y.len();
     let (mut first, mut between, mut again) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);

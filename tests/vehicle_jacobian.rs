@@ -21,44 +21,16 @@
 //! there. At least 97 % of the columns must be compared.
 
 mod support;
+use support::vehicle::driven;
 
 use trackgen::contact::Terrain;
-use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::nalgebra::DVector;
-use trackgen::simulate::Simulated;
-use trackgen::vehicle::build;
+use trackgen::integrate::OdeSystem;
 use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
 use trackgen::{Vehicle, VehicleDynamics};
 
-/// `V` driven from rest toward 2 m/s for `duration` s on `terrain`.
-fn state<V: Vehicle>(terrain: Terrain, duration: f64) -> (V::System, f64, DVector<f64>) {
-    let config = V::config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
-    let mut system = build::<V>(config).expect("builds");
-    let mut y = system.initial_state();
-    let mut stepper = Integrator::Bs23 {
-        rtol: 1e-4,
-        atol: 1e-4,
-        max_step: 0.01,
-    }
-    .stepper(system.dimension());
-    let mut t = 0.0;
-    while t < duration {
-        stepper
-            .step(&mut system, &mut t, &mut y, duration)
-            .expect("steps");
-        if system
-            .after_step(t, y.as_mut_slice(), &mut |_| {})
-            .expect("after a step")
-        {
-            stepper.restart();
-        }
-    }
-    (system, t, y)
-}
-
 fn check<V: Vehicle>(label: &str, terrain: Terrain, duration: f64) {
-    let (mut system, t, y) = state::<V>(terrain, duration);
+    let (mut system, t, y) = driven::<V>(terrain, duration, 1e-4);
     let n = y.len();
     let layout = system.layout();
     let mut exact = vec![0.0; n * n];

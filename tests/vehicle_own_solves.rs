@@ -18,13 +18,12 @@
 //!   by `a ω`, so it depends on the step) against the Jacobian's.
 
 mod support;
+use support::vehicle::driven;
 
 use trackgen::analysis::state_jacobian;
 use trackgen::contact::Terrain;
-use trackgen::integrate::{ImplicitSolve, Integrator, OdeSystem};
+use trackgen::integrate::{ImplicitSolve, OdeSystem};
 use trackgen::nalgebra::{DMatrix, DVector};
-use trackgen::simulate::Simulated;
-use trackgen::vehicle::build;
 use trackgen::vehicles::m113::M113;
 use trackgen::vehicles::marder::Marder;
 use trackgen::{Vehicle, VehicleDynamics};
@@ -56,40 +55,8 @@ fn own_matrix(system: &mut impl OdeSystem, t: f64, y: &[f64], a: f64) -> DMatrix
     &columns[0] * 2.0 - &columns[1]
 }
 
-/// A state of `V` driving from rest toward 2 m/s for `duration` s (0: the
-/// assembled start, at rest).
-fn state<V: Vehicle>(duration: f64) -> (V::System, f64, DVector<f64>) {
-    let config = V::config(
-        Terrain::Flat { height: 0.0 },
-        V::speed_drive(|t| 2.0 * (t / 1.0).min(1.0)),
-    );
-    let mut system = build::<V>(config).expect("builds");
-    let mut y = system.initial_state();
-    if duration > 0.0 {
-        let integrator = Integrator::Bs23 {
-            rtol: 1e-4,
-            atol: 1e-4,
-            max_step: 0.01,
-        };
-        let mut stepper = integrator.stepper(system.dimension());
-        let mut t = 0.0;
-        while t < duration {
-            stepper
-                .step(&mut system, &mut t, &mut y, duration)
-                .expect("steps");
-            if system
-                .after_step(t, y.as_mut_slice(), &mut |_| {})
-                .expect("after a step")
-            {
-                stepper.restart();
-            }
-        }
-    }
-    (system, duration, y)
-}
-
 fn at_rest<V: Vehicle>() {
-    let (mut system, t, y) = state::<V>(0.0);
+    let (mut system, t, y) = driven::<V>(Terrain::Flat { height: 0.0 }, 0.0, 1e-4);
     let layout = system.layout();
     let mut columns: Vec<usize> = layout.rates().collect();
     columns.push(layout.integral);
@@ -148,7 +115,7 @@ fn step_matrix(system: &mut impl OdeSystem, t: f64, y: &[f64], h: f64) -> DMatri
 /// entry 1.6e7); bound 2e-3, three times that.
 #[test]
 fn moving_w_is_the_jacobian_but_the_inertia_s_share() {
-    let (mut system, t, y) = state::<Marder>(1.5);
+    let (mut system, t, y) = driven::<Marder>(Terrain::Flat { height: 0.0 }, 1.5, 1e-4);
     let layout = system.layout();
     let states: Vec<usize> = (0..y.len()).filter(|i| !layout.books.contains(i)).collect();
     let w = own_matrix(&mut system, t, y.as_slice(), 1e-9);
@@ -191,7 +158,7 @@ fn stiffest(m: &DMatrix<f64>, count: usize) -> Vec<f64> {
 /// the Jacobian's: the five stiffest within 0.5 % (measured 0.04 %).
 #[test]
 fn w_holds_the_stiffest_modes() {
-    let (mut system, t, y) = state::<Marder>(1.5);
+    let (mut system, t, y) = driven::<Marder>(Terrain::Flat { height: 0.0 }, 1.5, 1e-4);
     let states: Vec<usize> = system.layout().dynamic().collect();
     let w = step_matrix(&mut system, t, y.as_slice(), 1e-3)
         .select_rows(&states)

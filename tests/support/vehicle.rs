@@ -4,7 +4,9 @@
 
 use trackgen::closure::ClosureMethod;
 use trackgen::contact::Terrain;
-use trackgen::simulate::Results;
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::nalgebra::DVector;
+use trackgen::simulate::{Results, Simulated};
 use trackgen::vehicle::{Drive, build};
 use trackgen::vehicles::m113::{self, M113, M113Chassis, M113System, M113Track};
 use trackgen::{RecursiveModel, Vehicle};
@@ -93,4 +95,38 @@ impl Books {
     pub fn relative(&self) -> f64 {
         self.residual / self.work.abs()
     }
+}
+
+/// `V` on `terrain` driven from rest toward 2 m/s (reached at 1 s) for
+/// `duration` s by Bogacki-Shampine at `tolerance` (relative and
+/// absolute), a partition switch restarting it as in a run: a moving state
+/// for the tests of what the vehicle gives besides its right-hand side.
+/// Returns the system, the time reached (`duration`) and the state.
+pub fn driven<V: Vehicle>(
+    terrain: Terrain,
+    duration: f64,
+    tolerance: f64,
+) -> (V::System, f64, DVector<f64>) {
+    let config = V::config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
+    let mut system = build::<V>(config).expect("builds");
+    let mut y = system.initial_state();
+    let mut stepper = Integrator::Bs23 {
+        rtol: tolerance,
+        atol: tolerance,
+        max_step: 0.01,
+    }
+    .stepper(system.dimension());
+    let mut t = 0.0;
+    while t < duration {
+        stepper
+            .step(&mut system, &mut t, &mut y, duration)
+            .expect("steps");
+        if system
+            .after_step(t, y.as_mut_slice(), &mut |_| {})
+            .expect("after a step")
+        {
+            stepper.restart();
+        }
+    }
+    (system, t, y)
 }
