@@ -1271,11 +1271,12 @@ fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
     assert_rejected("step_limit --slow", &bad, &["--slow"]);
 }
 
-/// `drawbar_pull`: eight drawbar loads on dry sand, each held 6 s; the CSV
-/// has a row per load, the slip grows with the load and stays in (0, 1),
-/// and every point that slips 2 % or more (the true slip, against the
-/// track's mean speed) is within 15 % of Wong's curve less the compaction
-/// resistance (measured +0.7, +13.7, +12.9 and −4.1 %: the bound;
+/// `drawbar_pull`: eight drawbar loads on dry sand, each held 10 s; the
+/// CSV has a row per load, the slip grows with the load and stays in
+/// (0, 1), and every point that slips 2 % or more (the true slip, against
+/// the track's mean speed, over the steady last 4 s) is within 15 % of
+/// Wong's curve less the compaction resistance (measured +12.3, +11.1 and
+/// −3.4 %: the bound;
 /// below 2 % Wong's curve is steep and a rigid track's uniform pressure is
 /// no longer the simulated track's, see README); the SVG is drawn; a bad
 /// soil is refused with the list of presets.
@@ -1292,15 +1293,13 @@ fn drawbar_pull_follows_wong_beyond_two_percent_slip() {
         csv.column("wong_n"),
     );
     assert_eq!(pull.len(), 8);
-    // The slip grows with the load, but two neighbouring loads near 25 kN
-    // slip alike (0.02622 and 0.02617 after the soil's plastic work at a
-    // just-pressed point moved the step control; the books' states are in
-    // the error norm): a neighbour may fall short by 0.5 % of its slip, no
-    // more, and the slip must grow over the whole range.
+    // The slip grows with the load. (Held 6 s and averaged over its last
+    // 2 s, two neighbours near 25 kN slipped alike, 0.0262 and 0.0262, and
+    // after a change in the last bits of the evaluation 0.0274 and 0.0254:
+    // the transient of the soil settling under the hull, not the steady
+    // slip, which grows by at least 30 % between these loads.)
     assert!(
-        pull.windows(2).all(|p| p[0] < p[1])
-            && slip.windows(2).all(|s| s[1] > s[0] * 0.995)
-            && slip.first() < slip.last(),
+        pull.windows(2).all(|p| p[0] < p[1]) && slip.windows(2).all(|s| s[1] > s[0]),
         "{pull:?} {slip:?}"
     );
     assert!(slip.iter().all(|s| (0.0..1.0).contains(s)), "{slip:?}");
