@@ -57,7 +57,9 @@ impl NormalLaw {
     /// is flat there.
     #[inline]
     pub fn slopes(&self, penetration: f64, rate: f64) -> (f64, f64) {
-        if penetration <= 0.0 || !(self.force(penetration, rate) > 0.0) {
+        // A NaN force counts as clipped, as `force` itself would give it.
+        let force = self.force(penetration, rate);
+        if penetration <= 0.0 || force.is_nan() || force <= 0.0 {
             return (0.0, 0.0);
         }
         match *self {

@@ -78,8 +78,21 @@ struct Point {
     state: usize,
     /// `∂ẇ/∂w`.
     by_self: f64,
-    /// Touching: the link, `∂F_link/∂w` and `∂ẇ/∂(link pose)`, `∂ẇ/∂(link rates)`.
-    link: Option<(usize, Vector3<f64>, Vector3<f64>, Vector3<f64>)>,
+    /// Touching: how the point and its link drive each other.
+    link: Option<PointLink>,
+}
+
+/// A touching ground point's coupling with its link.
+#[derive(Debug, Clone, Copy)]
+struct PointLink {
+    /// The link (0-based).
+    index: usize,
+    /// `∂F_link/∂w`.
+    load_by_state: Vector3<f64>,
+    /// `∂ẇ/∂(link pose)`.
+    by_pose: Vector3<f64>,
+    /// `∂ẇ/∂(link rates)`.
+    by_rate: Vector3<f64>,
 }
 
 /// What the vehicle gives at a linearisation, besides its contacts.
@@ -365,14 +378,20 @@ impl Implicit {
                     self.points.push(Point {
                         state,
                         by_self: rate[DEFLECTION],
-                        link: Some((
-                            i,
-                            by_state.into_owned(),
-                            Vector3::new(rate[LINK_POSE], rate[LINK_POSE + 1], rate[LINK_POSE + 2])
-                                / unit,
-                            Vector3::new(rate[LINK_RATE], rate[LINK_RATE + 1], rate[LINK_RATE + 2])
-                                / unit,
-                        )),
+                        link: Some(PointLink {
+                            index: i,
+                            load_by_state: by_state.into_owned(),
+                            by_pose: Vector3::new(
+                                rate[LINK_POSE],
+                                rate[LINK_POSE + 1],
+                                rate[LINK_POSE + 2],
+                            ) / unit,
+                            by_rate: Vector3::new(
+                                rate[LINK_RATE],
+                                rate[LINK_RATE + 1],
+                                rate[LINK_RATE + 2],
+                            ) / unit,
+                        }),
                     });
                 }
                 None => {}
@@ -417,9 +436,10 @@ impl Implicit {
         // `k_w = (r_w + a ∂ẇ/∂q k_q + a ∂ẇ/∂v x)/(1 − a ∂ẇ/∂w)` with
         // `k_q = u_q + a x` feeds `a F_w k_w` back into its link.
         for point in &self.points {
-            if let Some((i, by_state, by_pose, by_rate)) = point.link {
+            if let Some(link) = point.link {
                 let gain = a / (1.0 - a * point.by_self);
-                self.blocks[i] -= by_state * (by_pose * a + by_rate).transpose() * (a * gain);
+                self.blocks[link.index] -=
+                    link.load_by_state * (link.by_pose * a + link.by_rate).transpose() * (a * gain);
             }
         }
         for (turning, (s1, s2)) in self.turning.iter_mut().zip(&self.spin) {
@@ -663,7 +683,13 @@ impl Implicit {
             );
         }
         for point in &self.points {
-            if let Some((i, by_state, by_pose, _)) = point.link {
+            if let Some(PointLink {
+                index: i,
+                load_by_state: by_state,
+                by_pose,
+                ..
+            }) = point.link
+            {
                 let free = (r[tangential + point.state] + a * by_pose.dot(&at(&track_q, i)))
                     / (1.0 - a * point.by_self);
                 add(&mut self.loads, i, by_state * (a * free));
@@ -736,7 +762,12 @@ impl Implicit {
             let denominator = 1.0 - a * point.by_self;
             let slot = tangential + point.state;
             r[slot] = match point.link {
-                Some((i, _, by_pose, by_rate)) => {
+                Some(PointLink {
+                    index: i,
+                    by_pose,
+                    by_rate,
+                    ..
+                }) => {
                     let xi = at(&x, i);
                     (r[slot] + a * by_pose.dot(&(at(&track_q, i) + xi * a)) + a * by_rate.dot(&xi))
                         / denominator

@@ -321,7 +321,7 @@ where
 
     /// What the exact Jacobian and the own `W` both start from at `(t,
     /// y)`: the evaluation there, every force element's Jacobian beside
-    /// its load ([`forces::linearise`]), every chassis body's rotation
+    /// its load (`vehicle/forces`), every chassis body's rotation
     /// (`work.part_rotations`), the drive's and the deflections' slopes.
     /// A track not closed by partitioning is refused, `what` naming the
     /// caller.
@@ -634,7 +634,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         )
     }
 
-    /// The exact `∂f/∂y` ([`Tangent`]: every force element's Jacobian
+    /// The exact `∂f/∂y` (`vehicle/jacobian.rs`: every force element's Jacobian
     /// through the bodies' kinematics and the dynamics' own derivatives),
     /// on rigid ground with the track closed by partitioning; `false`
     /// elsewhere (the integrator then differences). The books' rows are
@@ -685,9 +685,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
 impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> ImplicitSolve
     for VehicleSystem<T, DT, C, DC>
 {
-    /// The force elements' Jacobians at `(t, y)` ([`forces::linearise`]),
+    /// The force elements' Jacobians at `(t, y)` (`vehicle/forces`),
     /// with the chassis' mass matrix and velocity transform and the
-    /// track's dependent pair: the vehicle's `W` (see [`Implicit`]).
+    /// track's dependent pair: the vehicle's `W` (`vehicle/implicit.rs`).
     fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let Linearised {
             chassis: (qc, _),

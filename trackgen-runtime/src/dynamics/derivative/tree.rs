@@ -292,9 +292,9 @@ impl TreeTangent {
         }
         // `M_i⁻¹ (Hᵀ w + s δθ)`, through the kept inverse.
         let mut solution = &self.response * w;
-        for k in 0..m {
-            if dtheta[k] != 0.0 {
-                solution.axpy(self.s[k] * dtheta[k], &self.inverse.column(2 + k), 1.0);
+        for (k, &change) in dtheta.iter().enumerate().take(m) {
+            if change != 0.0 {
+                solution.axpy(self.s[k] * change, &self.inverse.column(2 + k), 1.0);
             }
         }
         if self.constrained {
