@@ -321,7 +321,7 @@ where
 
     /// What the exact Jacobian and the own `W` both start from at `(t,
     /// y)`: the evaluation there, every force element's Jacobian beside
-    /// its load (`vehicle/forces`), every chassis body's rotation
+    /// its load (`vehicle/forces.rs`), every chassis body's rotation
     /// (`work.part_rotations`), the drive's and the deflections' slopes.
     /// A track not closed by partitioning is refused, `what` naming the
     /// caller.
@@ -685,7 +685,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
 impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> ImplicitSolve
     for VehicleSystem<T, DT, C, DC>
 {
-    /// The force elements' Jacobians at `(t, y)` (`vehicle/forces`),
+    /// The force elements' Jacobians at `(t, y)` (`vehicle/forces.rs`),
     /// with the chassis' mass matrix and velocity transform and the
     /// track's dependent pair: the vehicle's `W` (`vehicle/implicit.rs`).
     fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
