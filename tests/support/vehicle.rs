@@ -7,7 +7,7 @@ use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::DVector;
 use trackgen::simulate::{Results, Simulated};
-use trackgen::vehicle::{Drive, build};
+use trackgen::vehicle::{Drive, VehicleConfig, build};
 use trackgen::vehicles::m113::{self, M113, M113Chassis, M113System, M113Track};
 use trackgen::{RecursiveModel, Vehicle};
 
@@ -107,7 +107,18 @@ pub fn driven<V: Vehicle>(
     duration: f64,
     tolerance: f64,
 ) -> (V::System, f64, DVector<f64>) {
-    let config = V::config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
+    driven_with::<V>(terrain, |_| {}, duration, tolerance)
+}
+
+/// [`driven`], its configuration changed by `change` first (soil, laws).
+pub fn driven_with<V: Vehicle>(
+    terrain: Terrain,
+    change: impl FnOnce(&mut VehicleConfig),
+    duration: f64,
+    tolerance: f64,
+) -> (V::System, f64, DVector<f64>) {
+    let mut config = V::config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
+    change(&mut config);
     let mut system = build::<V>(config).expect("builds");
     let mut y = system.initial_state();
     let mut stepper = Integrator::Bs23 {

@@ -46,7 +46,10 @@
 use nalgebra::Vector2;
 
 use super::soil::{ShearLaw, Soil, SoilError, SoilMemory};
-use super::{BodyState, Contact, ContactForce, ShoeGeometry, Terrain};
+use super::tangent::{
+    ForceTangent, GeometryTangent, PoseRow, PoseRows2, dot_rows, loads, velocity,
+};
+use super::{BodyState, Contact, ContactForce, ContactJacobian, ShoeGeometry, Terrain};
 
 /// The plastic memory of the ground along x: a [`SoilMemory`] per cell of
 /// `cell` m, fresh soil where nothing has pressed. The cells are one
@@ -97,6 +100,13 @@ impl Rut {
     /// [`memory`](Self::memory) and the slope of the plastic sinkage along
     /// x (the rut floor's `dz_p/dx`).
     pub fn memory_and_slope(&self, x: f64) -> (SoilMemory, f64) {
+        let (memory, slope) = self.memory_and_slopes(x);
+        (memory, slope.plastic)
+    }
+
+    /// [`memory`](Self::memory) and its derivative along x, both fields
+    /// (per m): constant between cell centres.
+    pub fn memory_and_slopes(&self, x: f64) -> (SoilMemory, SoilMemory) {
         let u = x / self.cell - 0.5;
         let i = u.floor();
         let w = u - i;
@@ -106,7 +116,10 @@ impl Rut {
                 plastic: a.plastic + w * (b.plastic - a.plastic),
                 yield_pressure: a.yield_pressure + w * (b.yield_pressure - a.yield_pressure),
             },
-            (b.plastic - a.plastic) / self.cell,
+            SoilMemory {
+                plastic: (b.plastic - a.plastic) / self.cell,
+                yield_pressure: (b.yield_pressure - a.yield_pressure) / self.cell,
+            },
         )
     }
 
@@ -408,5 +421,114 @@ impl SoftGround {
             }
         }
         changed
+    }
+}
+
+/// The soil's law to first order: what the vehicle's exact Jacobian and
+/// its linearly implicit integrator need of each soft-ground contact.
+impl SoftGround {
+    /// The first derivatives of [`respond`](Self::respond)'s load on the
+    /// link and of the shear displacement's rate `j̇` over the contact's
+    /// [`INPUTS`](super::tangent::INPUTS) (`j`, m, in column
+    /// [`DEFLECTION`](super::tangent::DEFLECTION)), into `out`, given the
+    /// geometry's derivatives ([`ground::tangent`](super::ground::tangent))
+    /// and the link's state.
+    ///
+    /// The same formulas as `respond`, by the chain rule: the sinkage `z`
+    /// and the point's `x` move with the pose (the rut's memory, before
+    /// the patches are kept, with `x`: linear between cell centres, so its
+    /// slope is constant there); `ż = −v·g`; the pressure `p = p_e + R ż`;
+    /// the shear `−(c + p tan φ)(1 − e^{−|j|/K}) A sign j` along the
+    /// surface's tangent, whose derivative in `j` is
+    /// `−(c + p tan φ) A e^{−|j|/K}/K`, smooth through `j = 0`.
+    ///
+    /// A point just pressed sits at the deepest sinkage it reached, where
+    /// the elastic pressure has a kink (Bekker's slope `n p/z` deeper,
+    /// `K_e` back out): the slope is taken on the side the point moves
+    /// toward, the side `respond` books its plastic work by.
+    pub fn linearise(
+        &self,
+        contact: &Contact,
+        points: usize,
+        shear: f64,
+        geometry: &GeometryTangent,
+        link: &BodyState,
+        out: &mut ContactJacobian,
+    ) {
+        let soil = &self.soil;
+        let slot = contact.link * points + contact.feature;
+        let (memory, along_x) = match self.patches.get(slot) {
+            Some(patch) => (patch.memory, SoilMemory::default()),
+            None => self.rut.memory_and_slopes(contact.point.x),
+        };
+        let (z, dz, dx) = (contact.depth, geometry.depth, geometry.point.row(0));
+        let deepest = memory.deepest(soil);
+        let fresh = z > deepest;
+        // `g = (z_p′ − h′, 1)` reloading a rut (`state`'s wall), whose own
+        // derivative is zero between cell centres.
+        let wall = if fresh { 0.0 } else { along_x.plastic };
+        let g = Vector2::new(wall + contact.gradient.x, 1.0);
+        let dg = geometry.gradient;
+        let v = contact.velocity;
+        let dv = velocity(&geometry.point, link, None);
+        let rate = -v.dot(&g);
+        let d_rate = -(dot_rows(g, &dv) + dot_rows(v, &dg));
+        let rate_by_v = -g.transpose();
+        let at_yield = (z - deepest).abs() <= 4.0 * f64::EPSILON * deepest.abs();
+        let yielding = fresh || (at_yield && rate > 0.0);
+        let (elastic, d_elastic) = if fresh {
+            let bekker = soil.bekker_pressure(z, self.width);
+            (bekker, dz * (soil.n * bekker / z))
+        } else {
+            let elastic = soil.unloading_stiffness * (z - memory.plastic);
+            if elastic <= 0.0 {
+                (0.0, PoseRow::zeros())
+            } else if yielding {
+                (elastic, dz * (soil.n * elastic / z))
+            } else {
+                (
+                    elastic,
+                    (dz - dx * along_x.plastic) * soil.unloading_stiffness,
+                )
+            }
+        };
+        let damped = soil.damping * rate;
+        let bears = elastic > 0.0 && elastic + damped > 0.0;
+        // The tangent `t = (g_y, −g_x)/|g|` and the slip `j̇ = v·t`.
+        let norm = g.norm();
+        let t = Vector2::new(g.y, -g.x) / norm;
+        let d_norm = dot_rows(g, &dg) / norm;
+        let mut d_t = PoseRows2::zeros();
+        d_t.set_row(0, &dg.row(1));
+        d_t.set_row(1, &(-dg.row(0)));
+        let d_t = (d_t - t * d_norm) / norm;
+        let d_slip = dot_rows(t, &dv) + dot_rows(v, &d_t);
+        let mut tangent = ForceTangent {
+            force: Vector2::zeros(),
+            by_pose: PoseRows2::zeros(),
+            by_velocity: nalgebra::Matrix2::zeros(),
+            by_deflection: Vector2::zeros(),
+            rate_by_pose: d_slip,
+            rate_by_velocity: t.transpose(),
+            rate_by_deflection: 0.0,
+        };
+        if bears {
+            let area = self.patch_area;
+            let p = elastic + damped;
+            let d_p = d_elastic + d_rate * soil.damping;
+            let p_by_v = rate_by_v * soil.damping;
+            let decay = (-shear.abs() / self.shear.shear_modulus).exp();
+            let mobilised = -(-shear.abs() / self.shear.shear_modulus).exp_m1();
+            let sign = shear.signum();
+            let tangential = -self.shear.strength(p) * mobilised * area * sign;
+            let tangential_by_p = -self.shear.tan_phi * mobilised * area * sign;
+            let tangential_by_j = -self.shear.strength(p) * area * decay / self.shear.shear_modulus;
+            tangent.force = g * (p * area) + t * tangential;
+            tangent.by_pose =
+                dg * (p * area) + g * (d_p * area) + d_t * tangential + t * (d_p * tangential_by_p);
+            tangent.by_velocity = g * (p_by_v * area) + t * (p_by_v * tangential_by_p);
+            tangent.by_deflection = t * tangential_by_j;
+        }
+        loads(contact, geometry, (link, None), &tangent, out);
     }
 }

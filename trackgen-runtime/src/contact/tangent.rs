@@ -151,7 +151,11 @@ fn arm_of(point: &PoseRows2, pose: usize) -> PoseRows2 {
 /// to first order: its change with the poses (the points' arms turning,
 /// `ω ⟂(∂p − ∂R)` for each body) — with the rates it is `[I | ⟂arm]`
 /// for the link and the reverse for the other body.
-fn velocity(point: &PoseRows2, link: &BodyState, other: Option<&BodyState>) -> PoseRows2 {
+pub(super) fn velocity(
+    point: &PoseRows2,
+    link: &BodyState,
+    other: Option<&BodyState>,
+) -> PoseRows2 {
     let mut dv = perp_rows(&arm_of(point, LINK)) * link.omega;
     if let Some(other) = other {
         dv -= perp_rows(&arm_of(point, OTHER)) * other.omega;
@@ -161,14 +165,14 @@ fn velocity(point: &PoseRows2, link: &BodyState, other: Option<&BodyState>) -> P
 
 /// A contact force's derivatives: with the poses, with the relative
 /// velocity `v` (2 × 2), with the deflection; and the deflection's rate's.
-struct ForceTangent {
-    force: Vector2<f64>,
-    by_pose: PoseRows2,
-    by_velocity: Matrix2<f64>,
-    by_deflection: Vector2<f64>,
-    rate_by_pose: PoseRow,
-    rate_by_velocity: RowVector2<f64>,
-    rate_by_deflection: f64,
+pub(super) struct ForceTangent {
+    pub force: Vector2<f64>,
+    pub by_pose: PoseRows2,
+    pub by_velocity: Matrix2<f64>,
+    pub by_deflection: Vector2<f64>,
+    pub rate_by_pose: PoseRow,
+    pub rate_by_velocity: RowVector2<f64>,
+    pub rate_by_deflection: f64,
 }
 
 /// The contact's gradient norm `|g|`, its unit tangent `t = ⟂g/|g|` and
@@ -203,7 +207,7 @@ fn normal_part(
 /// on the link's: the link takes `F` at its arm `p − R_L`, the other body
 /// `−F` at `p − R_O`; the rates enter through `v`, `∂v/∂(ṘL, ωL) =
 /// [I | ⟂arm_L]` and the reverse for the other body.
-fn loads(
+pub(super) fn loads(
     contact: &Contact,
     geometry: &GeometryTangent,
     (link, other): (&BodyState, Option<&BodyState>),

@@ -179,6 +179,9 @@ pub(super) fn respond<const DC: usize>(
             (None, Some(soil)) => {
                 let (force, rate) = soil.respond(contact, points, tangential[slot]);
                 tangential_rate[slot] = rate;
+                // Below the surface the point shears the soil, bearing or
+                // not: its state is coupled to its link.
+                ground_normal[slot] = Some(force.map_or(0.0, |f| f.normal));
                 if let Some(force) = force {
                     force.apply(contact, link_load, None);
                     books.ground(&force);
@@ -241,20 +244,20 @@ pub(super) fn respond<const DC: usize>(
     Ok(())
 }
 
-/// Stage 3 to first order, on rigid ground: every contact's Jacobian
-/// ([`ContactJacobian`], the derivatives of its loads on both bodies and
-/// of its deflection's rate over the two bodies' states and the
-/// deflection) into `work.jacobians`, one per contact in
-/// `work.contacts`'s order, at the state the last [`detect`] saw. The
-/// deflections are `tangential` in units of `scale` m
-/// ([`stiction_scale`]); the column and row of the deflection stay in
-/// metres.
+/// Stage 3 to first order: every contact's Jacobian ([`ContactJacobian`],
+/// the derivatives of its loads on both bodies and of its tangential
+/// state's rate over the two bodies' states and that state) into
+/// `work.jacobians`, one per contact in `work.contacts`'s order, at the
+/// state the last [`detect`] saw. The tangential states are `tangential`:
+/// on rigid ground stiction deflections in units of `scale` m
+/// ([`stiction_scale`]), whose column and row stay in metres; on `soil`
+/// the shear displacements, m.
 pub(super) fn linearise(
     work: &mut Workspace,
     config: &VehicleConfig,
     geometry: &Geometry,
     sprocket: Option<Sprocket>,
-    (points, tangential, scale): (usize, &[f64], f64),
+    (soil, points, tangential, scale): (Option<&SoftGround>, usize, &[f64], f64),
 ) {
     let Workspace {
         links,
@@ -272,7 +275,10 @@ pub(super) fn linearise(
                 let slot = contact.link * points + contact.feature;
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);
                 let tangent = ground::tangent(&config.terrain, contact);
-                config.ground.linearise(contact, z, &tangent, link, out);
+                match soil {
+                    Some(soil) => soil.linearise(contact, points, z, &tangent, link, out),
+                    None => config.ground.linearise(contact, z, &tangent, link, out),
+                }
             }
             Some(body) if Some(body) == sprocket_body => {
                 let part = &parts[body];

@@ -60,8 +60,8 @@ use super::implicit::Offsets;
 struct Compact {
     link: usize,
     other: Option<usize>,
-    /// The ground point's deflection state, on rigid ground with
-    /// stiction.
+    /// The ground point's tangential state: its stiction deflection on
+    /// rigid ground, its shear displacement on soil.
     slot: Option<usize>,
     by_link: SMatrix<f64, 7, 6>,
     by_other: SMatrix<f64, 7, 6>,

@@ -339,7 +339,7 @@ where
             &self.config,
             &self.geometry,
             self.sprocket,
-            (points, tangential, self.stiction_scale),
+            (self.soil.as_ref(), points, tangential, self.stiction_scale),
         );
         let Some(pair) = self.track().dependent_pair() else {
             return Err(SimulationError::SingularMatrix { t, what });
@@ -362,7 +362,7 @@ where
     }
 
     /// The exact `∂f/∂y` at `(t, y)` into `out` (column-major), the track
-    /// closed by partitioning, on rigid ground.
+    /// closed by partitioning, on rigid ground or soil.
     fn exact_jacobian(
         &mut self,
         t: f64,
@@ -636,9 +636,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
 
     /// The exact `∂f/∂y` (`vehicle/jacobian.rs`: every force element's Jacobian
     /// through the bodies' kinematics and the dynamics' own derivatives),
-    /// on rigid ground with the track closed by partitioning; `false`
-    /// elsewhere (the integrator then differences). The books' rows are
-    /// zero (quadratures: nothing reads them).
+    /// on rigid ground or soil, with the track closed by partitioning;
+    /// `false` for a track closed another way (the integrator then
+    /// differences). The books' rows are zero (quadratures: nothing reads
+    /// them).
     fn jacobian(
         &mut self,
         t: f64,
@@ -646,7 +647,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         _slope: &[f64],
         jacobian: &mut [f64],
     ) -> Result<bool, SimulationError> {
-        if self.soil.is_some() || self.track().dependent_pair().is_none() {
+        if self.track().dependent_pair().is_none() {
             return Ok(false);
         }
         self.exact_jacobian(t, y, jacobian)?;
