@@ -13,7 +13,8 @@
 //!   7.8e-7 and 9.9e-6);
 //! * books: within 1e-3 of the motor's work on rigid ground (measured
 //!   6.1e-5) and 2e-3 on dry sand (`vehicle_soil`'s bound for the explicit
-//!   run; measured 2.4e-4). Before the soil booked plastic work at a point
+//!   run; measured 1.5e-4 with the vehicle's own W, 2.4e-4 with the dense
+//!   W of differences it had on soil before). Before the soil booked plastic work at a point
 //!   just pressed, this run's books were off by 7 % (regression).
 
 mod support;

@@ -654,11 +654,11 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         Ok(true)
     }
 
-    /// The vehicle's own solves on rigid ground with its track closed by
-    /// partitioning (the declared way); on soft soil, or closed another
-    /// way, the integrator's dense Jacobian.
+    /// The vehicle's own solves with its track closed by partitioning
+    /// (the declared way), on rigid ground or soil; closed another way,
+    /// the integrator's dense Jacobian.
     fn implicit(&mut self) -> Option<&mut dyn ImplicitSolve> {
-        let own = self.soil.is_none() && self.track().dependent_pair().is_some();
+        let own = self.track().dependent_pair().is_some();
         own.then_some(self as &mut dyn ImplicitSolve)
     }
 
