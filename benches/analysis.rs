@@ -9,6 +9,8 @@
 //!   and exactly (`OdeSystem::jacobian`, every column of the state),
 //!   beside its yardstick: forward differences over every column (one
 //!   evaluation per state component plus one).
+//! * `m113_sand_state_jacobian`: the same two on dry sand, driving (the
+//!   soil's contacts and shear displacements in the Jacobian).
 //! * `m113_rest`: the M113 at rest by `analysis::equilibrium` against the
 //!   settling runs it replaces (1 s, the main job's, which still rings;
 //!   3 s), Bogacki-Shampine at 1e-3 as in the main job.
@@ -17,12 +19,14 @@
 
 mod support;
 
-use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
+use criterion::measurement::WallTime;
+use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
 use support::{Track64, Track128, state};
 use trackgen::analysis::{EquilibriumOptions, equilibrium, state_jacobian};
 use trackgen::contact::Terrain;
+use trackgen::contact::soil::SoilPreset;
 use trackgen::dynamics::track_jacobian;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::simulate::{Output, Simulated, simulate};
@@ -38,6 +42,71 @@ fn track<M: TrackModel<D>, const D: usize>(model: M) -> impl FnMut() {
 
 fn at_rest() -> M113System {
     M113::system(Terrain::Flat { height: 0.0 }, M113::speed_drive(|_| 0.0)).unwrap()
+}
+
+/// The M113 on dry sand driven from rest toward 2 m/s for 1.5 s (the
+/// ground pressed after every step, as in a run): its system, time and
+/// state.
+fn on_sand() -> (M113System, f64, Vec<f64>) {
+    let mut config = M113::config(
+        Terrain::Flat { height: 0.0 },
+        M113::speed_drive(|t| 2.0 * t.min(1.0)),
+    );
+    config.soil = Some(SoilPreset::DrySand.soil());
+    let mut system = M113::system_with(config).unwrap();
+    let mut y = system.initial_state();
+    let mut stepper = Integrator::Bs23 {
+        rtol: 1e-4,
+        atol: 1e-4,
+        max_step: 0.01,
+    }
+    .stepper(system.dimension());
+    let (mut t, end) = (0.0, 1.5);
+    while t < end {
+        stepper.step(&mut system, &mut t, &mut y, end).unwrap();
+        if system.after_step(t, y.as_mut_slice(), &mut |_| {}).unwrap() {
+            stepper.restart();
+        }
+    }
+    (system, t, y.as_slice().to_vec())
+}
+
+/// `forward_differences`, the yardstick (one evaluation per state
+/// component plus one, every column of the state, as the integrators'
+/// differences: the step √ε·max(|yⱼ|, 1)), beside `exact`
+/// (`OdeSystem::jacobian`) at `(t, y)`.
+fn forward_and_exact(
+    group: &mut BenchmarkGroup<'_, WallTime>,
+    system: &mut impl OdeSystem,
+    t: f64,
+    y: &[f64],
+) {
+    let n = y.len();
+    let mut full = vec![0.0; n * n];
+    let mut argument = y.to_vec();
+    let mut base = vec![0.0; n];
+    let mut moved = vec![0.0; n];
+    group.bench_function("forward_differences", |b| {
+        b.iter(|| {
+            system.derivative(t, black_box(y), &mut base).unwrap();
+            for (j, column) in full.chunks_exact_mut(n).enumerate() {
+                let d = f64::EPSILON.sqrt() * y[j].abs().max(1.0);
+                argument[j] = y[j] + d;
+                system.derivative(t, &argument, &mut moved).unwrap();
+                argument[j] = y[j];
+                for ((c, fp), f) in column.iter_mut().zip(&moved).zip(&base) {
+                    *c = (fp - f) / d;
+                }
+            }
+        })
+    });
+    let mut slope = vec![0.0; n];
+    system.derivative(t, y, &mut slope).unwrap();
+    group.bench_function("exact", |b| {
+        b.iter(|| {
+            assert!(system.jacobian(t, black_box(y), &slope, &mut full).unwrap());
+        })
+    });
 }
 
 fn analysis(c: &mut Criterion) {
@@ -64,38 +133,14 @@ fn analysis(c: &mut Criterion) {
     group.bench_function("central_differences", |b| {
         b.iter(|| black_box(state_jacobian(&mut system, 0.0, y.as_slice(), &states).unwrap()))
     });
-    // The yardstick: forward differences, one evaluation per state
-    // component plus one, every column of the state (as the integrators'
-    // differences: the step √ε·max(|yⱼ|, 1)).
-    let n = y.len();
-    let mut full = vec![0.0; n * n];
-    let mut argument = y.as_slice().to_vec();
-    let mut base = vec![0.0; n];
-    let mut moved = vec![0.0; n];
-    group.bench_function("forward_differences", |b| {
-        b.iter(|| {
-            system
-                .derivative(0.0, black_box(y.as_slice()), &mut base)
-                .unwrap();
-            for (j, column) in full.chunks_exact_mut(n).enumerate() {
-                let d = f64::EPSILON.sqrt() * y[j].abs().max(1.0);
-                argument[j] = y[j] + d;
-                system.derivative(0.0, &argument, &mut moved).unwrap();
-                argument[j] = y[j];
-                for ((c, fp), f) in column.iter_mut().zip(&moved).zip(&base) {
-                    *c = (fp - f) / d;
-                }
-            }
-        })
-    });
-    let slope = dy.clone();
-    group.bench_function("exact", |b| {
-        b.iter(|| {
-            system
-                .jacobian(0.0, black_box(y.as_slice()), &slope, &mut full)
-                .unwrap()
-        })
-    });
+    forward_and_exact(&mut group, &mut system, 0.0, y.as_slice());
+    group.finish();
+
+    // On dry sand, driving: the soil's contacts and shear states in the
+    // Jacobian.
+    let (mut sand, t, y) = on_sand();
+    let mut group = c.benchmark_group("m113_sand_state_jacobian");
+    forward_and_exact(&mut group, &mut sand, t, &y);
     group.finish();
 
     let mut group = c.benchmark_group("m113_rest");
