@@ -5,7 +5,9 @@
 //!
 //! The state is the bodies' coordinates `q` (under partitioning, the
 //! track's independent ones `z`), their rates `v`, the drive's integral
-//! `s`, the books and the ground points' deflections `w`. `W` keeps the
+//! `s`, the books and the ground points' tangential states `w` (stiction
+//! deflections on rigid ground, the soil's shear displacements on soft
+//! soil: the same coupling to their links). `W` keeps the
 //! kinematic rows exactly (`q̇ = v`) and, for the accelerations, every
 //! force element's derivatives through the inverse mass matrix:
 //! `M⁻¹ (K, C, F_w, F_s)` with `K = ∂F/∂q`, `C = ∂F/∂v` of the contacts
