@@ -23,7 +23,7 @@ use criterion::measurement::WallTime;
 use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
-use support::{Track64, Track128, state};
+use support::{Track64, Track128, driven, state};
 use trackgen::analysis::{EquilibriumOptions, equilibrium, state_jacobian};
 use trackgen::contact::Terrain;
 use trackgen::contact::soil::SoilPreset;
@@ -53,21 +53,7 @@ fn on_sand() -> (M113System, f64, Vec<f64>) {
         M113::speed_drive(|t| 2.0 * t.min(1.0)),
     );
     config.soil = Some(SoilPreset::DrySand.soil());
-    let mut system = M113::system_with(config).unwrap();
-    let mut y = system.initial_state();
-    let mut stepper = Integrator::Bs23 {
-        rtol: 1e-4,
-        atol: 1e-4,
-        max_step: 0.01,
-    }
-    .stepper(system.dimension());
-    let (mut t, end) = (0.0, 1.5);
-    while t < end {
-        stepper.step(&mut system, &mut t, &mut y, end).unwrap();
-        if system.after_step(t, y.as_mut_slice(), &mut |_| {}).unwrap() {
-            stepper.restart();
-        }
-    }
+    let (system, t, y) = driven::<M113>(config, 1.5);
     (system, t, y.as_slice().to_vec())
 }
 

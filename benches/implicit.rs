@@ -7,13 +7,14 @@
 //!
 //! `cargo bench --bench implicit`; numbers in README.md.
 
+mod support;
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
+use support::driven;
 use trackgen::Vehicle;
 use trackgen::contact::Terrain;
-use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::simulate::Simulated;
-use trackgen::vehicle::build;
+use trackgen::integrate::OdeSystem;
 use trackgen::vehicles::marder::Marder;
 
 fn implicit(c: &mut Criterion) {
@@ -21,21 +22,7 @@ fn implicit(c: &mut Criterion) {
         Terrain::Flat { height: 0.0 },
         Marder::speed_drive(|t| 2.0 * t.min(1.0)),
     );
-    let mut system = build::<Marder>(config).unwrap();
-    let mut y = system.initial_state();
-    let mut stepper = Integrator::Bs23 {
-        rtol: 1e-4,
-        atol: 1e-4,
-        max_step: 0.01,
-    }
-    .stepper(system.dimension());
-    let mut t = 0.0;
-    while t < 1.5 {
-        stepper.step(&mut system, &mut t, &mut y, 1.5).unwrap();
-        if system.after_step(t, y.as_mut_slice(), &mut |_| {}).unwrap() {
-            stepper.restart();
-        }
-    }
+    let (mut system, t, y) = driven::<Marder>(config, 1.5);
     let mut dy = vec![0.0; y.len()];
     let a = 0.435_866_521_508_459 * 1e-3;
     let mut group = c.benchmark_group("marder_implicit");

@@ -101,6 +101,20 @@ fn loads_of(
     (link, on_other)
 }
 
+/// The contact of the link at `x`'s ground point `feature` with the
+/// ground, if it is below the surface.
+fn ground_contact(
+    terrain: &Terrain,
+    shoe: &ShoeGeometry,
+    x: &Inputs,
+    feature: usize,
+) -> Option<Contact> {
+    let (link, _) = states(x);
+    let mut contacts = Vec::new();
+    ground::detect(terrain, &[link], shoe, &mut contacts);
+    contacts.into_iter().find(|c| c.feature == feature)
+}
+
 struct Ground {
     terrain: Terrain,
     laws: GroundLaws,
@@ -109,10 +123,7 @@ struct Ground {
 
 impl Pair for Ground {
     fn find(&self, x: &Inputs, feature: usize) -> Option<Contact> {
-        let (link, _) = states(x);
-        let mut contacts = Vec::new();
-        ground::detect(&self.terrain, &[link], &self.shoe, &mut contacts);
-        contacts.into_iter().find(|c| c.feature == feature)
+        ground_contact(&self.terrain, &self.shoe, x, feature)
     }
 
     fn respond(&self, x: &Inputs, contact: &Contact) -> Output {
@@ -563,10 +574,7 @@ impl Soft {
 
 impl Pair for Soft {
     fn find(&self, x: &Inputs, feature: usize) -> Option<Contact> {
-        let (link, _) = states(x);
-        let mut contacts = Vec::new();
-        ground::detect(&self.terrain, &[link], &self.shoe, &mut contacts);
-        contacts.into_iter().find(|c| c.feature == feature)
+        ground_contact(&self.terrain, &self.shoe, x, feature)
     }
 
     fn respond(&self, x: &Inputs, contact: &Contact) -> Output {

@@ -1,7 +1,12 @@
-//! What the track benches share: the tracks, and the state they are timed at.
+//! What the benches share: the tracks and the state they are timed at, a
+//! vehicle driven to a moving state.
 #![allow(dead_code)]
 
-use trackgen::nalgebra::SVector;
+use trackgen::Vehicle;
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::nalgebra::{DVector, SVector};
+use trackgen::simulate::Simulated;
+use trackgen::vehicle::{VehicleConfig, build};
 
 trackgen::model! {
     /// An M113-like closed track of 8 shoes.
@@ -28,4 +33,26 @@ pub fn state<const D: usize>() -> (SVector<f64, D>, SVector<f64, D>) {
     });
     let qd = SVector::from_fn(|i, _| if i < 2 { 1.0 } else { 0.5 });
     (q, qd)
+}
+
+/// `V` with `config` run for `duration` s by Bogacki-Shampine at 1e-4
+/// (the ground pressed and switches restarting it after every step, as
+/// in a run): its system, the time and the state reached.
+pub fn driven<V: Vehicle>(config: VehicleConfig, duration: f64) -> (V::System, f64, DVector<f64>) {
+    let mut system = build::<V>(config).unwrap();
+    let mut y = system.initial_state();
+    let mut stepper = Integrator::Bs23 {
+        rtol: 1e-4,
+        atol: 1e-4,
+        max_step: 0.01,
+    }
+    .stepper(system.dimension());
+    let mut t = 0.0;
+    while t < duration {
+        stepper.step(&mut system, &mut t, &mut y, duration).unwrap();
+        if system.after_step(t, y.as_mut_slice(), &mut |_| {}).unwrap() {
+            stepper.restart();
+        }
+    }
+    (system, t, y)
 }
