@@ -1113,3 +1113,28 @@ fn pure_relative_tolerance_runs_with_a_zero_component() {
         assert_eq!(last.get("y1"), Some(0.0));
     }
 }
+
+/// `Integrator::Auto` with either tolerance zero (each is its method's
+/// rtol and atol at once: zero leaves nothing) is refused before any
+/// sample, by the tolerance's own name and value. It was reported as an
+/// rtol/atol pair of the same number, naming neither.
+#[test]
+fn auto_names_the_tolerance_it_refuses() {
+    for (explicit_tolerance, implicit_tolerance, name) in [
+        (0.0, 1e-3, "explicit_tolerance"),
+        (1e-3, f64::NAN, "implicit_tolerance"),
+    ] {
+        let integrator = Integrator::Auto {
+            explicit_tolerance,
+            implicit_tolerance,
+            max_step: 0.01,
+        };
+        let f = simulate(&mut Decay, integrator, 0.0, 1.0, Output::Every(0.5)).unwrap_err();
+        let message = f.error.to_string();
+        assert!(
+            matches!(f.error, SimulationError::Settings(_)) && f.results.is_empty(),
+            "{message}"
+        );
+        assert!(message.contains(name), "{message}");
+    }
+}

@@ -189,6 +189,18 @@ pub enum SettingsError {
         /// Absolute tolerance.
         atol: f64,
     },
+    /// One of [`Integrator::Auto`](crate::integrate::Integrator::Auto)'s
+    /// tolerances not positive and finite (each is its method's relative
+    /// and absolute tolerance at once, so zero leaves nothing).
+    #[error(
+        "{name} must be positive and finite (it is its method's rtol and atol at once), got {value}"
+    )]
+    Tolerance {
+        /// Which: `explicit_tolerance` or `implicit_tolerance`.
+        name: &'static str,
+        /// What was given.
+        value: f64,
+    },
     /// A largest step that is not positive.
     #[error("max_step must be positive, got {max_step}")]
     MaxStep {

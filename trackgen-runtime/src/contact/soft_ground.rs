@@ -47,7 +47,7 @@ use nalgebra::Vector2;
 
 use super::soil::{ShearLaw, Soil, SoilError, SoilMemory};
 use super::tangent::{
-    ForceTangent, GeometryTangent, PoseRow, PoseRows2, dot_rows, loads, velocity,
+    ForceTangent, GeometryTangent, PoseRow, PoseRows2, dot_rows, loads, unit_tangent, velocity,
 };
 use super::{BodyState, Contact, ContactForce, ContactJacobian, ShoeGeometry, Terrain};
 
@@ -338,9 +338,7 @@ impl SoftGround {
         // stage of a linearly implicit method's step) books no plastic work
         // there (measured: a Rosenbrock run on dry sand lost 13 % of the
         // dissipated work to it).
-        let deepest = memory.0.deepest(&self.soil);
-        let at_yield = (z - deepest).abs() <= 4.0 * f64::EPSILON * deepest.abs();
-        let plastic = if z > deepest || (at_yield && rate > 0.0) {
+        let plastic = if yielding(z, memory.0.deepest(&self.soil), rate) {
             elastic * (1.0 - self.soil.n * elastic / z / self.soil.unloading_stiffness)
         } else {
             0.0
@@ -424,6 +422,17 @@ impl SoftGround {
     }
 }
 
+/// Whether a point at sinkage `z` (m) over ground whose deepest sinkage
+/// was `deepest` (m), sinking at `rate` (m/s), presses the soil plastically:
+/// beyond its deepest, or just pressed to it (`z_p + p/K_e = z` to two
+/// roundings) and still moving deeper. [`SoftGround::respond`] books
+/// plastic work by it and [`SoftGround::linearise`] takes its slope's side
+/// by it.
+fn yielding(z: f64, deepest: f64, rate: f64) -> bool {
+    let at_yield = (z - deepest).abs() <= 4.0 * f64::EPSILON * deepest.abs();
+    z > deepest || (at_yield && rate > 0.0)
+}
+
 /// The soil's law to first order: what the vehicle's exact Jacobian and
 /// its linearly implicit integrator need of each soft-ground contact.
 impl SoftGround {
@@ -474,8 +483,7 @@ impl SoftGround {
         let rate = -v.dot(&g);
         let d_rate = -(dot_rows(g, &dv) + dot_rows(v, &dg));
         let rate_by_v = -g.transpose();
-        let at_yield = (z - deepest).abs() <= 4.0 * f64::EPSILON * deepest.abs();
-        let yielding = fresh || (at_yield && rate > 0.0);
+        let loading = yielding(z, deepest, rate);
         let (elastic, d_elastic) = if fresh {
             let bekker = soil.bekker_pressure(z, self.width);
             (bekker, dz * (soil.n * bekker / z))
@@ -483,7 +491,7 @@ impl SoftGround {
             let elastic = soil.unloading_stiffness * (z - memory.plastic);
             if elastic <= 0.0 {
                 (0.0, PoseRow::zeros())
-            } else if yielding {
+            } else if loading {
                 (elastic, dz * (soil.n * elastic / z))
             } else {
                 (
@@ -494,14 +502,10 @@ impl SoftGround {
         };
         let damped = soil.damping * rate;
         let bears = elastic > 0.0 && elastic + damped > 0.0;
-        // The tangent `t = (g_y, −g_x)/|g|` and the slip `j̇ = v·t`.
-        let norm = g.norm();
-        let t = Vector2::new(g.y, -g.x) / norm;
-        let d_norm = dot_rows(g, &dg) / norm;
-        let mut d_t = PoseRows2::zeros();
-        d_t.set_row(0, &dg.row(1));
-        d_t.set_row(1, &(-dg.row(0)));
-        let d_t = (d_t - t * d_norm) / norm;
+        // The forward tangent `t = (g_y, −g_x)/|g| = −⟂g/|g|` and the
+        // slip `j̇ = v·t`.
+        let (_, back, d_back) = unit_tangent(g, &dg);
+        let (t, d_t) = (-back, -d_back);
         let d_slip = dot_rows(t, &dv) + dot_rows(v, &d_t);
         let mut tangent = ForceTangent {
             force: Vector2::zeros(),

@@ -178,10 +178,16 @@ pub(super) struct ForceTangent {
 /// The contact's gradient norm `|g|`, its unit tangent `t = ⟂g/|g|` and
 /// their derivatives with the poses (neither depends on `v`).
 fn tangent_of(contact: &Contact, geometry: &GeometryTangent) -> (PoseRow, Vector2<f64>, PoseRows2) {
-    let (g, norm) = (contact.gradient, contact.gradient_norm);
-    let d_norm = dot_rows(g, &geometry.gradient) / norm;
-    let d_tangent = (perp_rows(&geometry.gradient) - perp(g) * (d_norm / norm)) / norm;
-    (d_norm, contact.tangent(), d_tangent)
+    unit_tangent(contact.gradient, &geometry.gradient)
+}
+
+/// For a gradient `g` changing by `dg` with the poses: `∂|g|`, the unit
+/// tangent `t = ⟂g/|g|` and `∂t`.
+pub(super) fn unit_tangent(g: Vector2<f64>, dg: &PoseRows2) -> (PoseRow, Vector2<f64>, PoseRows2) {
+    let norm = g.norm();
+    let d_norm = dot_rows(g, dg) / norm;
+    let d_tangent = (perp_rows(dg) - perp(g) * (d_norm / norm)) / norm;
+    (d_norm, perp(g) / norm, d_tangent)
 }
 
 /// The normal force per unit gradient `N` and its derivatives with the

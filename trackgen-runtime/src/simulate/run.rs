@@ -251,12 +251,12 @@ fn validate(
         } => {
             // Each is its method's relative and absolute tolerance at once,
             // so each must be positive on its own.
-            for tolerance in [explicit_tolerance, implicit_tolerance] {
-                if !(tolerance > 0.0 && tolerance.is_finite()) {
-                    return Err(SettingsError::Tolerances {
-                        rtol: tolerance,
-                        atol: tolerance,
-                    });
+            for (name, value) in [
+                ("explicit_tolerance", explicit_tolerance),
+                ("implicit_tolerance", implicit_tolerance),
+            ] {
+                if !(value > 0.0 && value.is_finite()) {
+                    return Err(SettingsError::Tolerance { name, value });
                 }
             }
             if max_step.is_nan() || max_step <= 0.0 {

@@ -37,7 +37,10 @@ pub(super) struct Workspace {
     /// soil.
     pub tangential_rate: Vec<f64>,
     /// Each ground point's normal force at this evaluation, N: `None` for
-    /// a point off the ground.
+    /// a point off the ground (on soil: above the undisturbed surface; a
+    /// point below it bearing nothing is `Some(0.0)`, as its shear state
+    /// still moves with its link). The Jacobian and the own `W` couple a
+    /// point's tangential state to its link where this is `Some`.
     pub ground_normal: Vec<Option<f64>>,
     /// What the force elements stored, dissipated and did, at the last
     /// evaluation.
