@@ -352,34 +352,42 @@ impl ShiftedChain {
             }
         }
         // The joints' right sides: `D̃⁻ₖ Wₖ fₖ − D̃⁺ⱼ Wⱼ fⱼ`.
-        for j in 0..n {
+        // On slices of k (no index arithmetic inside: the loops vectorise).
+        let side = |i: usize, c: usize| &free[(3 * i + c) * k..(3 * i + c + 1) * k];
+        for (j, rows) in lambda.chunks_exact_mut(2 * k).enumerate() {
             let next = (j + 1) % n;
             let (p1, p2) = (self.row_levers[next].0, self.row_levers[j].1);
-            for c in 0..2 {
-                for r in 0..k {
-                    let ahead = free[(3 * next + c) * k + r] + p1[c] * free[(3 * next + 2) * k + r];
-                    let here = free[(3 * j + c) * k + r] + p2[c] * free[(3 * j + 2) * k + r];
-                    lambda[(2 * j + c) * k + r] = ahead - here;
+            let (turn_ahead, turn_here) = (side(next, 2), side(j, 2));
+            for (c, row) in rows.chunks_exact_mut(k).enumerate() {
+                let (ahead, here) = (side(next, c), side(j, c));
+                for ((((l, &a), &ta), &h), &th) in row
+                    .iter_mut()
+                    .zip(ahead)
+                    .zip(turn_ahead)
+                    .zip(here)
+                    .zip(turn_here)
+                {
+                    *l = (a + p1[c] * ta) - (h + p2[c] * th);
                 }
             }
         }
         // `λ ← M λ` and `λ_row ← λ_row − M λ_other` on 2 × k blocks.
         #[inline(always)]
         fn apply(m: &Matrix2<f64>, v: &mut [f64], k: usize) {
-            let (v0, v1) = v.split_at_mut(k);
-            for r in 0..k {
-                let (a, b) = (v0[r], v1[r]);
-                v0[r] = m[(0, 0)] * a + m[(0, 1)] * b;
-                v1[r] = m[(1, 0)] * a + m[(1, 1)] * b;
+            let (v0, v1) = v[..2 * k].split_at_mut(k);
+            for (x, y) in v0.iter_mut().zip(v1) {
+                let (a, b) = (*x, *y);
+                *x = m[(0, 0)] * a + m[(0, 1)] * b;
+                *y = m[(1, 0)] * a + m[(1, 1)] * b;
             }
         }
         #[inline(always)]
         fn subtract(m: &Matrix2<f64>, row: &mut [f64], other: &[f64], k: usize) {
-            let (r0, r1) = row.split_at_mut(k);
-            let (o0, o1) = other.split_at(k);
-            for r in 0..k {
-                r0[r] -= m[(0, 0)] * o0[r] + m[(0, 1)] * o1[r];
-                r1[r] -= m[(1, 0)] * o0[r] + m[(1, 1)] * o1[r];
+            let (r0, r1) = row[..2 * k].split_at_mut(k);
+            let (o0, o1) = other[..2 * k].split_at(k);
+            for (((x, y), &a), &b) in r0.iter_mut().zip(r1).zip(o0).zip(o1) {
+                *x -= m[(0, 0)] * a + m[(0, 1)] * b;
+                *y -= m[(1, 0)] * a + m[(1, 1)] * b;
             }
         }
         let m = n - 1;
@@ -419,18 +427,26 @@ impl ShiftedChain {
             }
         }
         // `xᵢ = Wᵢ fᵢ + Wᵢ D⁺ᵢᵀ λᵢ − Wᵢ D⁻ᵢᵀ λᵢ₋₁`.
-        for i in 0..n {
+        for (i, (link, free)) in columns
+            .chunks_exact_mut(3 * k)
+            .zip(free.chunks_exact(3 * k))
+            .enumerate()
+        {
             let behind = (i + n - 1) % n;
             let (from_behind, from_ahead) = &self.pulls[i];
-            for c in 0..3 {
+            let (l0, l1) = lambda[2 * i * k..2 * (i + 1) * k].split_at(k);
+            let (b0s, b1s) = lambda[2 * behind * k..2 * (behind + 1) * k].split_at(k);
+            for (c, (out, free)) in link
+                .chunks_exact_mut(k)
+                .zip(free.chunks_exact(k))
+                .enumerate()
+            {
                 let (a0, a1) = (from_ahead[(c, 0)], from_ahead[(c, 1)]);
                 let (b0, b1) = (from_behind[(c, 0)], from_behind[(c, 1)]);
-                for r in 0..k {
-                    columns[(3 * i + c) * k + r] = free[(3 * i + c) * k + r]
-                        + a0 * lambda[2 * i * k + r]
-                        + a1 * lambda[(2 * i + 1) * k + r]
-                        - b0 * lambda[2 * behind * k + r]
-                        - b1 * lambda[(2 * behind + 1) * k + r];
+                for (((((o, &f), &x0), &x1), &y0), &y1) in
+                    out.iter_mut().zip(free).zip(l0).zip(l1).zip(b0s).zip(b1s)
+                {
+                    *o = f + a0 * x0 + a1 * x1 - b0 * y0 - b1 * y1;
                 }
             }
         }
