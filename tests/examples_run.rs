@@ -87,7 +87,7 @@ fn example(name: &str) -> PathBuf {
         .expect("the test binary lives in target/<profile>/deps");
     let mut build = Command::new(env!("CARGO"));
     build
-        .args(["build", "--quiet", "--example", name])
+        .args(["build", "--quiet", "--workspace", "--example", name])
         .current_dir(env!("CARGO_MANIFEST_DIR"));
     match profile_dir.file_name().and_then(|n| n.to_str()) {
         Some("debug") | None => {}
