@@ -53,6 +53,7 @@ pub mod vehicle;
 
 mod error;
 mod trig;
+mod wide;
 
 pub use dynamics::Accelerations;
 pub use error::{DynamicsError, SettingsError, SimulationError};

@@ -261,32 +261,17 @@ impl Embedded {
         y: &DVector<f64>,
         h: f64,
     ) -> Result<f64, SimulationError> {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the processor has AVX2, checked just above.
-            return unsafe { self.attempt_avx2(system, t, y, h) };
-        }
-        self.attempt_portable(system, t, y, h)
+        // The stages' vector sums four values wide where the processor
+        // allows (the same bits).
+        crate::wide::run(
+            #[inline(always)]
+            || self.attempt_inline(system, t, y, h),
+        )
     }
 
-    /// [`attempt`](Self::attempt) compiled for AVX2: the stages' vector
-    /// sums four values wide. No fused multiply-add and no reordering, so
-    /// the results are the same bits.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn attempt_avx2(
-        &mut self,
-        system: &mut dyn OdeSystem,
-        t: f64,
-        y: &DVector<f64>,
-        h: f64,
-    ) -> Result<f64, SimulationError> {
-        self.attempt_portable(system, t, y, h)
-    }
-
-    /// [`attempt`](Self::attempt)'s arithmetic, for any processor.
+    /// [`attempt`](Self::attempt)'s loops, inlined into its wide build.
     #[inline(always)]
-    fn attempt_portable(
+    fn attempt_inline(
         &mut self,
         system: &mut dyn OdeSystem,
         t: f64,

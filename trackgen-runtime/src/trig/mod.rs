@@ -111,25 +111,13 @@ fn reduced_sin_cos(x: f64) -> (f64, f64) {
 /// If the slices differ in length.
 pub fn sin_cos_each(angles: &[f64], out: &mut [(f64, f64)]) {
     assert_eq!(angles.len(), out.len(), "one output per angle");
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx2") {
-        // SAFETY: the processor has AVX2, checked just above.
-        unsafe { each_avx2(angles, out) };
-        return;
-    }
-    each(angles, out);
-}
-
-/// [`each`] compiled for AVX2: four numbers at a time instead of two. Only
-/// the width of the vector operations changes, not which operations run or
-/// in what order (no fused multiply-add), so the results are the same bits
-/// on every x86-64 processor. (Tried on the generated linear-time solve
-/// too: its vectorised pass is too short to gain, 15 % slower in the
-/// bench.)
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn each_avx2(angles: &[f64], out: &mut [(f64, f64)]) {
-    each(angles, out);
+    // Four numbers at a time where the processor allows (the same bits).
+    // Tried on the generated linear-time solve too: its vectorised pass is
+    // too short to gain, 15 % slower in the bench.
+    crate::wide::run(
+        #[inline(always)]
+        || each(angles, out),
+    );
 }
 
 #[inline(always)]

@@ -427,25 +427,15 @@ impl Implicit {
 
     /// Factors `I − a W` for the shift `a = γ h` (s).
     pub fn factor(&mut self, a: f64) -> Result<(), DynamicsError> {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the processor has AVX2, checked just above.
-            return unsafe { self.factor_avx2(a) };
-        }
-        self.factor_portable(a)
+        crate::wide::run(
+            #[inline(always)]
+            || self.factor_inline(a),
+        )
     }
 
-    /// [`factor`](Self::factor) compiled for AVX2, as
-    /// [`solve_avx2`](Self::solve_avx2).
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn factor_avx2(&mut self, a: f64) -> Result<(), DynamicsError> {
-        self.factor_portable(a)
-    }
-
-    /// [`factor`](Self::factor)'s arithmetic, for any processor.
+    /// [`factor`](Self::factor)'s loops, inlined into its wide build.
     #[inline(always)]
-    fn factor_portable(&mut self, a: f64) -> Result<(), DynamicsError> {
+    fn factor_inline(&mut self, a: f64) -> Result<(), DynamicsError> {
         let dof = self.dof;
         let a2 = a * a;
         for (i, x) in self.blocks.iter_mut().enumerate() {
@@ -630,27 +620,15 @@ impl Implicit {
     /// # Panics
     /// If not factored (a programming error).
     pub fn solve(&mut self, r: &mut [f64]) {
-        #[cfg(target_arch = "x86_64")]
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the processor has AVX2, checked just above.
-            unsafe { self.solve_avx2(r) };
-            return;
-        }
-        self.solve_portable(r);
+        crate::wide::run(
+            #[inline(always)]
+            || self.solve_inline(r),
+        );
     }
 
-    /// [`solve`](Self::solve) compiled for AVX2: its loops four values
-    /// wide instead of two. No fused multiply-add and no reordering, so
-    /// the results are the same bits.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx2")]
-    fn solve_avx2(&mut self, r: &mut [f64]) {
-        self.solve_portable(r);
-    }
-
-    /// [`solve`](Self::solve)'s arithmetic, for any processor.
+    /// [`solve`](Self::solve)'s loops, inlined into its wide build.
     #[inline(always)]
-    fn solve_portable(&mut self, r: &mut [f64]) {
+    fn solve_inline(&mut self, r: &mut [f64]) {
         let a = self.shift;
         let dof = self.dof;
         let Offsets {
