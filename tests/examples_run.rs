@@ -85,6 +85,9 @@ fn example(name: &str) -> PathBuf {
         .parent()
         .and_then(Path::parent)
         .expect("the test binary lives in target/<profile>/deps");
+    // `--workspace`: the features `cargo test --workspace` resolves, so
+    // the same artifacts; without it the first build here compiled a
+    // second variant of the macros, the runtime and every example.
     let mut build = Command::new(env!("CARGO"));
     build
         .args(["build", "--quiet", "--workspace", "--example", name])
