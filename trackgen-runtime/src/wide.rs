@@ -31,4 +31,3 @@ pub(crate) fn run<R>(f: impl FnOnce() -> R) -> R {
 fn avx2<R>(f: impl FnOnce() -> R) -> R {
     f()
 }
-
