@@ -3,7 +3,7 @@
 //! lower one. The layers, lowest first (trackgen-runtime's crate docs say
 //! why):
 //!
-//! core (planar, trig, error) → laws → model → dynamics → reference →
+//! core (planar, trig, wide, error) → laws → model → dynamics → reference →
 //! closure → integrate → system → contact → assembly → vehicle → simulate
 //!
 //! A path into a higher layer (a closure method that names the simulation
@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 /// The layers, lowest first; modules in one entry are one layer.
 const LAYERS: &[&[&str]] = &[
-    &["planar", "trig", "error"],
+    &["planar", "trig", "wide", "error"],
     &["laws"],
     &["model"],
     &["dynamics"],
