@@ -4,8 +4,8 @@
 //!
 //! 1. **core**: [`planar`] (the rotation, kept as its `(sin, cos)`; the
 //!    cross product), the trigonometry ([`sin_cos_each`]), the switch to
-//!    AVX2 builds of the hot loops (`wide`), the typed errors, [`laws`] (every force law with its energy terms) and
-//!    [`model`] (the traits generated code implements, the run-time
+//!    AVX2 builds of the hot loops (`wide`), the typed errors, [`laws`]
+//!    (every force law with its energy terms) and [`model`] (the traits generated code implements, the run-time
 //!    description of the same body tree, the closing joint);
 //! 2. [`dynamics`]: forward dynamics at a given state (the dense
 //!    cross-check, the linear-time route as declared);
