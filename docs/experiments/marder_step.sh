@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Reproduces README's "What sets the Marder's implicit step": the Marder's
-# main job with ROS34PW2 at 1e-2 (8 s), one thing changed at a time in a
-# throw-away worktree of HEAD; prints each variant's steps and energy
-# balance. About a minute per variant after the first build.
+# Reproduces docs/experiments/marder-implicit-step.md: the Marder's main
+# job with ROS34PW2 at 1e-2 (8 s), one thing changed at a time in a
+# throw-away worktree of the commit the experiment was made at (6261a53:
+# its edits name that tree's files); prints each variant's steps and
+# energy balance. About a minute per variant after the first build.
 #
 #   docs/experiments/marder_step.sh [VARIANT...]
 #
@@ -13,7 +14,7 @@ set -euo pipefail
 root=$(git -C "$(dirname "$0")" rev-parse --show-toplevel)
 work=$(mktemp -d)
 trap 'git -C "$root" worktree remove --force "$work/tree" >/dev/null 2>&1 || true; rm -rf "$work"' EXIT
-git -C "$root" worktree add -q --detach "$work/tree" HEAD
+git -C "$root" worktree add -q --detach "$work/tree" 6261a53
 export CARGO_TARGET_DIR="$root/target/marder-step"
 
 marder=src/vehicles/marder.rs
