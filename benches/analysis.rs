@@ -17,13 +17,10 @@
 //!
 //! `cargo bench --bench analysis`; numbers in README.md.
 
-mod support;
-
 use criterion::measurement::WallTime;
 use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
-use support::{Track64, Track128, driven, state};
 use trackgen::analysis::{EquilibriumOptions, equilibrium, state_jacobian};
 use trackgen::contact::Terrain;
 use trackgen::contact::soil::SoilPreset;
@@ -32,6 +29,7 @@ use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::simulate::{Output, Simulated, simulate};
 use trackgen::vehicles::m113::{M113, M113System};
 use trackgen::{TrackModel, Vehicle, VehicleDynamics};
+use trackgen_benches::{Track64, Track128, driven, state};
 
 fn track<M: TrackModel<D>, const D: usize>(model: M) -> impl FnMut() {
     let (q, qd) = state::<D>();

@@ -21,8 +21,7 @@ use trackgen::TrackModel;
 use trackgen::dynamics::{LinearTimeSolver, forward_dynamics};
 use trackgen::nalgebra::{SVector, Vector2};
 
-mod support;
-use support::*;
+use trackgen_benches::*;
 
 fn bench_one<M: TrackModel<D>, const D: usize>(c: &mut Criterion, model: M) {
     let n = M::BODIES;

@@ -7,15 +7,13 @@
 //!
 //! `cargo bench --bench implicit`; numbers in README.md.
 
-mod support;
-
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use support::driven;
 use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::OdeSystem;
 use trackgen::vehicles::marder::Marder;
+use trackgen_benches::driven;
 
 fn implicit(c: &mut Criterion) {
     let config = Marder::config(

@@ -10,8 +10,7 @@ use trackgen::RecursiveModel;
 use trackgen::nalgebra::{DVector, SMatrix, SVector};
 use trackgen::reference::ReferenceModel;
 
-mod support;
-use support::*;
+use trackgen_benches::*;
 
 fn bench_one<M: RecursiveModel<D>, const D: usize>(c: &mut Criterion, model: M) {
     let n = M::BODIES;

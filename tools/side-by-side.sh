@@ -5,10 +5,10 @@
 #
 #   tools/side-by-side.sh OLD_BINARY NEW_BINARY [N=30] [-- ARGS...]
 #
-# e.g. (README, "Performance"): build the commit before issue 9's work
-# (36db378) and this one with `cargo build --release --example m113`,
-# copy each `target/release/examples/m113` aside, then
-#   tools/side-by-side.sh /tmp/m113_36db378 target/release/examples/m113 30
+# e.g. (docs/performance.md): build two commits of the main job with
+# `cargo build --release -p trackgen-cli`, copy each `target/release/trackgen`
+# aside, then
+#   tools/side-by-side.sh /tmp/trackgen_old /tmp/trackgen_new 30
 set -euo pipefail
 old=$1 new=$2 n=${3:-30}
 shift $(( $# < 3 ? $# : 3 ))

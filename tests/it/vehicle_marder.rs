@@ -1,0 +1,154 @@
+//! The second vehicle, the Marder (`trackgen::vehicles::marder`), built
+//! from its declaration alone: it settles on flat ground with the ground
+//! carrying its weight, and driven it reaches the commanded speed with its
+//! energy books closed.
+//!
+//! Tolerances, and why:
+//! - **Weight**: the mean ground force over the last 0.5 s of a 5 s settle
+//!   equals the weight within 5e-4 (the issue asks 1 %; measured 1.1e-4).
+//!   The weight is summed here from `shared/spec/marder.md`'s part masses
+//!   (half hull, 77 shoes, sprocket, six road wheels and arms, three
+//!   rollers, idler and its carrier), not read from the model. A part left
+//!   out of the model or counted twice moves it by ≥ 7e-4 (a roller; the
+//!   hull alone by 85 %); a still-bouncing vehicle is caught by the speed
+//!   bounds.
+//! - **At rest** (the drive holding the sprocket still): over the same
+//!   0.5 s the chassis' speed, heave and pitch rate stay below 5 mm/s,
+//!   5 mm/s and 2e-3 rad/s (the M113's bounds).
+//! - **Books**: `motor work = ΔE + dissipated` within 1e-3 of the work at
+//!   Bogacki-Shampine 1e-4, the main job's setting for the Marder
+//!   (`EnergyBalance::bound_for_tolerance(1e-4)`; measured ~1e-4); the
+//!   issue asks 2 %. Dissipation never decreases (exactly).
+//! - **Speed**: the track's mean speed `−ω N p / (2π)` (one pitch per
+//!   tooth, computed here from the recorded sprocket speed and the spec's
+//!   pitch and teeth) is the recorded `track_speed` (to 1e-12 relative)
+//!   and over the last 4 s (two of the chassis' surges on the track)
+//!   within 1 % of the 3 m/s command (measured 0.29 %; a drive aiming
+//!   with the declared 0.3 m tip radius, 9 % off, fails); the slip against
+//!   it, `1 − v / v_t`, within ±0.5 % (measured −0.36 %: the shoes walk a
+//!   little ahead, see `tests/track_speed.rs`).
+//! - **Closure** ≤ 1e-10 m throughout; penetrations: ground ≤ 25 mm, rims
+//!   ≤ 10 mm, teeth ≤ 6 mm (the heavier vehicle presses its shoes about
+//!   2.5 times as deep as the M113's on the same contact laws).
+
+use crate::support;
+
+use trackgen::Vehicle;
+use trackgen::contact::Terrain;
+use trackgen::integrate::Integrator;
+use trackgen::simulate::{Output, Results, simulate};
+use trackgen::vehicle::Drive;
+use trackgen::vehicles::marder::Marder;
+
+use support::vehicle::{Books, mean, window};
+use support::{max_abs, max_of};
+
+/// The main job's integrator for the Marder.
+fn integrator() -> Integrator {
+    Integrator::Bs23 {
+        rtol: 1e-4,
+        atol: 1e-4,
+        max_step: 0.01,
+    }
+}
+
+fn run(drive: Drive, duration: f64) -> Results {
+    let mut system =
+        Marder::system(Terrain::Flat { height: 0.0 }, drive).expect("the Marder assembles");
+    simulate(
+        &mut system,
+        integrator(),
+        0.0,
+        duration,
+        Output::Every(0.01),
+    )
+    .expect("the run completes")
+}
+
+/// The weight of one side, N, from the spec's part masses.
+fn weight() -> f64 {
+    let hull = 25_000.0 / 2.0;
+    let shoes = 77.0 * 18.02;
+    let sprocket = 27.68;
+    let road_wheels = 6.0 * (35.56 + 75.26);
+    let rollers = 3.0 * 10.56;
+    let idler = 25.76 + 10.0;
+    9.81 * (hull + shoes + sprocket + road_wheels + rollers + idler)
+}
+
+/// Settling with the drive holding the sprocket at 0 m/s (a free sprocket
+/// lets the vehicle roll away on the surge of its settling drop, 5 cm/s
+/// after 5 s).
+#[test]
+fn marder_settles_with_the_ground_carrying_its_weight() {
+    let results = run(Marder::speed_drive(|_| 0.0), 5.0);
+    let (t0, t1) = (4.5, 5.0);
+    let speed = max_abs(window(&results, "speed", t0, t1));
+    let heave = max_abs(window(&results, "chassis.vy", t0, t1));
+    let pitch_rate = max_abs(window(&results, "chassis.omega_chassis", t0, t1));
+    assert!(
+        speed < 5e-3 && heave < 5e-3 && pitch_rate < 2e-3,
+        "over the last 0.5 s: |v| up to {speed:e} m/s, |v_y| up to {heave:e} m/s, |ω| up to {pitch_rate:e} rad/s"
+    );
+    let normal = mean(&window(&results, "ground_normal", t0, t1));
+    let w = weight();
+    eprintln!("ground force / weight − 1 = {:e}", normal / w - 1.0);
+    assert!(
+        ((normal - w) / w).abs() < 5e-4,
+        "ground normal {normal:.1} N, weight {w:.1} N"
+    );
+}
+
+#[test]
+fn marder_drives_to_speed_with_closed_books() {
+    let target = 3.0;
+    let results = run(
+        Marder::speed_drive(move |t| target * ((t - 1.0) / 2.0).clamp(0.0, 1.0)),
+        9.0,
+    );
+    let books = Books::of(&results);
+    eprintln!("books {:e} of {} J", books.relative(), books.work);
+    assert!(books.work > 5e4, "the motor works: {} J", books.work);
+    assert!(
+        books.relative() < 1e-3,
+        "energy books: residual {:.3e} J of {:.0} J",
+        books.residual,
+        books.work
+    );
+    assert!(
+        books.least_dissipation_step >= 0.0,
+        "dissipated work fell by {:e} J between samples",
+        -books.least_dissipation_step
+    );
+    // The track's mean speed: one pitch per tooth, from the recorded
+    // sprocket speed, the spec's pitch and the teeth.
+    let rolling = 12.0 * 0.17 / (2.0 * std::f64::consts::PI);
+    let (t0, t1) = (5.0, 9.0);
+    let omega = window(&results, "sprocket_speed", t0, t1);
+    let recorded = window(&results, "track_speed", t0, t1);
+    for (w, v) in omega.iter().zip(&recorded) {
+        assert!(
+            (-w * rolling - v).abs() <= 1e-12 * v.abs().max(1.0),
+            "{v} vs {}",
+            -w * rolling
+        );
+    }
+    let track_speed = mean(&recorded);
+    let slip = trackgen::vehicle::slip(mean(&window(&results, "speed", t0, t1)), track_speed);
+    eprintln!("track speed {track_speed}, slip {slip:.5}");
+    assert!(
+        (track_speed - target).abs() < 1e-2 * target,
+        "track speed −ω N p/(2π) = {track_speed:.4} m/s for {target} m/s commanded"
+    );
+    assert!(slip.abs() < 5e-3, "slip {slip:.4}");
+    for (column, bound) in [
+        ("ground_penetration", 0.025),
+        ("wheel_penetration", 0.010),
+        ("sprocket_penetration", 0.006),
+    ] {
+        let deepest = max_of(results.column(column).unwrap());
+        assert!(deepest < bound, "{column}: {deepest} m");
+    }
+    let closure = max_of(results.column("track.closure_error").unwrap());
+    assert!(closure < 1e-10, "closure error {closure:e} m");
+}

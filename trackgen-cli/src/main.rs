@@ -1,0 +1,239 @@
+//! The main job: the default vehicle, a planar M113 (one side), or the
+//! Marder (`--vehicle marder`), assembled on flat ground, settled under
+//! gravity, driven up to a target speed by a speed-controlled sprocket,
+//! and over a bump.
+//!
+//! `cargo run --release -p trackgen-cli -- --help`
+//!
+//! Writes to the output folder, streamed as the run goes: `all.csv` and
+//! `all.arrow` (every recorded quantity, CSV and Arrow IPC), `m113.csv`
+//! (or `marder.csv`: chassis position, pitch and speed, sprocket torque and
+//! speed, tension in link 1, ground normal force); at the end, from a
+//! bounded selection of rows: `m113.svg` (plots), `frame.svg` (the vehicle
+//! at the bump), `animation.html` (open it in a browser). Memory stays flat
+//! however long the run. Lines printed to a closed pipe are dropped; the
+//! run and its files go on.
+
+mod animation;
+mod cli;
+mod console;
+mod modes;
+mod nearest;
+mod outputs;
+mod plots;
+mod report;
+mod scene;
+
+use std::error::Error;
+use std::time::Instant;
+
+use clap::Parser;
+use indicatif::{ProgressBar, ProgressStyle};
+use trackgen::contact::Terrain;
+use trackgen::model::PartKind;
+use trackgen::simulate::{Background, Output, Simulated, StreamFailure, simulate_into};
+use trackgen::vehicles::m113::M113;
+use trackgen::vehicles::marder::Marder;
+use trackgen::{Vehicle, VehicleDynamics};
+
+use cli::{Args, Ground, Start};
+use console::say;
+use outputs::Outputs;
+use scene::Scene;
+
+fn main() {
+    let args = Args::parse();
+    if let Err(e) = run(&args) {
+        eprintln!("error: {e}");
+        std::process::exit(1);
+    }
+}
+
+fn run(args: &Args) -> Result<(), Box<dyn Error>> {
+    match args.vehicle {
+        cli::Vehicle::M113 => drive::<M113>(args),
+        cli::Vehicle::Marder => drive::<Marder>(args),
+    }
+}
+
+/// What the vehicle is, from its declared parts: `M113 (one side): 64
+/// shoes, sprocket, 5 road wheels on torsion arms, idler on a tensioner
+/// arm`.
+fn about<V: Vehicle>() -> String {
+    type S<V> = <V as Vehicle>::System;
+    let parts = S::<V>::parts();
+    let count = |kind| parts.iter().filter(|p| p.kind == kind).count();
+    let mut words = vec![
+        format!("{} shoes", S::<V>::track_dof() - 2),
+        "sprocket".to_string(),
+    ];
+    let wheels = count(PartKind::RoadWheel);
+    let sprung = parts
+        .iter()
+        .all(|p| p.kind != PartKind::RoadWheel || p.arm.is_some());
+    words.push(format!(
+        "{wheels} road wheels{}",
+        if sprung { " on torsion arms" } else { "" }
+    ));
+    match count(PartKind::Roller) {
+        0 => {}
+        n => words.push(format!("{n} return rollers")),
+    }
+    for idler in parts.iter().filter(|p| p.kind == PartKind::Idler) {
+        words.push(match idler.arm {
+            Some(_) => "idler on a tensioner arm".to_string(),
+            None => "idler".to_string(),
+        });
+    }
+    format!("{} (one side): {}", V::NAME, words.join(", "))
+}
+
+/// Assembles the vehicle `V` with the options given, runs it, streaming
+/// its outputs, and reports.
+fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
+    let terrain = Terrain::Bump {
+        centre: args.bump_at,
+        width: 1.0,
+        height: args.bump_height,
+    };
+    let assembling = Instant::now();
+    let config = || {
+        let mut config = V::config(terrain.clone(), V::speed_drive(args.speed_profile()));
+        if let Ground::Soil(soil) = args.terrain {
+            config.soil = Some(soil.soil());
+        }
+        config
+    };
+    let mut system = V::system_with(config())?;
+    let assembly = assembling.elapsed().as_secs_f64();
+    let about = about::<V>();
+    let name = args.vehicle.name();
+    let title = format!(
+        "{} driving over a {}",
+        about.split(':').next().unwrap_or(name),
+        if args.bump_height < 0.0 {
+            "dip"
+        } else {
+            "bump"
+        }
+    );
+    let mut outputs = Outputs::create(
+        &args.out(),
+        (name, title, Scene::of::<V>()),
+        &system.columns(),
+        args.bump_at,
+    )?;
+
+    say!("{about}");
+    say!(
+        "assembled (track wrapped, tensioner set) in {:.0} ms",
+        assembly * 1e3
+    );
+    let rest_ground = scene::Ground {
+        terrain: terrain.clone(),
+        rut: Vec::new(),
+    };
+    let mut extra_files = Vec::new();
+    if args.start == Start::Equilibrium || args.modes {
+        // Finding the rest may switch the track's partition: a run from the
+        // assembled start needs a vehicle that has not been moved.
+        let mut resting = V::system_with(config())?;
+        let (rest, _) = modes::find_rest(&mut resting)?;
+        if args.modes {
+            extra_files = modes::report::<V>(&mut resting, &rest, outputs.dir(), &rest_ground)?;
+        }
+        if args.start == Start::Equilibrium {
+            system = resting;
+            system.set_start(rest.state.as_slice())?;
+        }
+    }
+    let ramp = if args.ramp > 0.0 {
+        format!("in {:.1} s", args.ramp)
+    } else {
+        "at once".to_string()
+    };
+    say!(
+        "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {} {:.2} m {} at x = {:.1} m; {:.1} s in all",
+        args.terrain,
+        args.settle,
+        args.speed,
+        if args.bump_height < 0.0 {
+            "dip"
+        } else {
+            "bump"
+        },
+        args.bump_height.abs(),
+        if args.bump_height < 0.0 {
+            "deep"
+        } else {
+            "high"
+        },
+        args.bump_at,
+        args.duration
+    );
+    let bar = ProgressBar::new((args.duration * 1000.0) as u64);
+    bar.set_style(ProgressStyle::with_template(
+        "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
+    )?);
+    let started = Instant::now();
+    // The files are written on a second thread while the run goes on. (A
+    // failed stream carries its report by value, as the API returns it.)
+    #[allow(clippy::result_large_err)]
+    let outcome = std::thread::scope(|scope| {
+        let recorders = &mut outputs.recorders;
+        let mut sink = Background::spawn(scope, move || recorders.sink());
+        simulate_into(
+            &mut system,
+            args.integrator(),
+            0.0,
+            args.duration,
+            Output::Every(0.01),
+            &mut sink,
+            &mut |t| bar.set_position((t * 1000.0) as u64),
+        )
+    });
+    bar.finish_and_clear();
+    let wall = started.elapsed().as_secs_f64();
+    let (report, failure) = match outcome {
+        Ok(report) => (report, None),
+        Err(StreamFailure {
+            error,
+            report,
+            finish,
+        }) => (report, Some((error, finish))),
+    };
+    // A run that stopped at its start has nothing to summarise or draw.
+    let started = report.rows >= 2;
+    let written = if started {
+        let tolerance = args.books_tolerance(report.stats.implicit);
+        report::print(&outputs.recorders.summary, &report, wall, tolerance);
+        let ground = scene::Ground {
+            terrain: terrain.clone(),
+            rut: system
+                .rut()
+                .map(|r| r.profile().collect())
+                .unwrap_or_default(),
+        };
+        outputs.draw(&ground)?
+    } else {
+        outputs.data_files()
+    };
+    let written = [written, extra_files].concat();
+    say!(
+        "wrote {}/{{{}}} ({} rows)",
+        outputs.dir().display(),
+        written.join(", "),
+        report.rows
+    );
+    match failure {
+        None => Ok(()),
+        Some((error, finish)) => {
+            let kept = match (finish, report.last_time) {
+                (Some(e), _) => format!("and the files could not be finished: {e}"),
+                (None, Some(t)) => format!("rows up to t = {t} s written"),
+                (None, None) => "no rows written".to_string(),
+            };
+            Err(format!("the run stopped early: {error} ({kept})").into())
+        }
+    }
+}

@@ -1,0 +1,86 @@
+//! The figures printed after a run, from running summaries: no row is
+//! kept for them.
+
+use trackgen::simulate::{EnergyBalance, RunReport, Summary};
+
+use crate::console::say;
+
+/// Prints the run's figures; a warning line if the energy books are off by
+/// more than [`EnergyBalance::bound_for_tolerance`] at `tolerance`.
+pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
+    let get = |name: &str| summary.get(name);
+    let last = |name: &str| get(name).map_or(f64::NAN, |s| s.last);
+    let max = |name: &str| get(name).map_or(f64::NAN, |s| s.max);
+    let simulated = summary.time().map_or(0.0, |t| t.last - t.first);
+    let books = summary.energy_balance();
+    let (work, change, dissipated) = books.map_or((f64::NAN, f64::NAN, f64::NAN), |b| {
+        (b.motor_work, b.energy_change, b.dissipated)
+    });
+    say!(
+        "simulated {simulated:.2} s in {wall:.2} s of wall time: real-time factor {:.2}",
+        simulated / wall
+    );
+    say!(
+        "steps {} accepted, {} rejected; {} coordinate switches; max closure error {:.1e} m",
+        report.stats.accepted,
+        report.stats.rejected,
+        report.switches,
+        max("track.closure_error")
+    );
+    if let Some(line) = methods(report) {
+        say!("{line}");
+    }
+    let residual = books.map_or(f64::NAN, |b| b.residual());
+    say!(
+        "energy balance: motor work {work:.0} J = ΔE {change:.0} J + dissipated {dissipated:.0} J  (residual {residual:.2e} of the largest term)"
+    );
+    if let Some(Err(off)) = books.map(|b| b.check(EnergyBalance::bound_for_tolerance(tolerance))) {
+        say!("warning: {off}; try --tolerance {:.0e}", tolerance / 10.0);
+    }
+    say!(
+        "final speed {:.2} m/s; max penetration: ground {:.1} mm, wheels {:.1} mm, sprocket {:.1} mm",
+        last("speed"),
+        1e3 * max("ground_penetration"),
+        1e3 * max("wheel_penetration"),
+        1e3 * max("sprocket_penetration")
+    );
+}
+
+/// What `--integrator auto` ran, from its stiffness checks: `integrator:
+/// Bogacki-Shampine from 0.0 s, ROS34PW2 from 2.0 s (stiffest rate
+/// 9.1e3 /s, 3.4 × what Bogacki-Shampine's accuracy step allows); 6500 of
+/// 7400 steps implicit`. `None` for a fixed method.
+fn methods(report: &RunReport) -> Option<String> {
+    let checks = &report.checks;
+    let first = checks.first()?;
+    let name = |implicit: bool| {
+        if implicit {
+            "ROS34PW2"
+        } else {
+            "Bogacki-Shampine"
+        }
+    };
+    let mut spans = vec![format!("{} from {:.1} s", name(first.implicit), first.t)];
+    for pair in checks.windows(2) {
+        if pair[1].implicit != pair[0].implicit {
+            spans.push(format!(
+                "{} from {:.1} s",
+                name(pair[1].implicit),
+                pair[1].t
+            ));
+        }
+    }
+    let stiffest = checks
+        .iter()
+        .max_by(|a, b| a.ratio.total_cmp(&b.ratio))
+        .unwrap_or(first);
+    Some(format!(
+        "integrator (auto): {} (stiffest rate up to {:.1e} /s, {:.1} × what Bogacki-Shampine's accuracy step allows; switch above {:.1}); {} of {} steps implicit",
+        spans.join(", "),
+        stiffest.stiffest,
+        stiffest.ratio,
+        trackgen::integrate::auto::IMPLICIT_ABOVE,
+        report.stats.implicit,
+        report.stats.accepted
+    ))
+}

@@ -1,0 +1,504 @@
+//! The main job (`cargo run --release -p trackgen-cli`) runs, briefly,
+//! and writes what it says it writes.
+//!
+//! A 0.3 s run exits 0 and writes
+//! `m113.csv`, `all.csv`, `all.arrow`, `m113.svg`, `frame.svg` and
+//! `animation.html`; the CSVs are a header and rows of finite numbers,
+//! one row per output time from 0 to the duration; the Arrow file holds
+//! the same columns and the same values as `all.csv` (CSV numbers are
+//! written in their shortest round-trip form, so they compare exactly);
+//! the SVGs and the page are whole documents. A dip (a negative bump
+//! height) and a ramp of 0 s (a step in speed) run: the step asks for the
+//! drive's whole 20 kN m at t = 0, where a ramp asks for nothing. Every
+//! bad option (an unknown integrator or flag, a number that is not one,
+//! NaN, a zero or negative duration, a value out of its range) exits
+//! non-zero before the run, without a panic, with nothing on stdout (no
+//! summary) and no files, and stderr names the option and its allowed
+//! range.
+//!
+//! The binary is cargo's `CARGO_BIN_EXE_trackgen`, built with this test.
+//! Outputs go to folders under `CARGO_TARGET_TMPDIR`. Output times are
+//! multiples of the 0.01 s output interval computed in `f64`, so the last
+//! time is the duration to 1e-9 s and no gap exceeds 0.01 s by more than
+//! that; a missing or extra sample is off by 0.01 s.
+
+#[path = "../../tests/it/support/programs.rs"]
+mod programs;
+
+use std::path::{Path, PathBuf};
+
+use programs::{Csv, assert_rejected, assert_success, check_svg, run, scratch, text};
+use trackgen::RecursiveModel;
+use trackgen::vehicles::m113::{M113Chassis, M113Track};
+
+/// The main job's binary.
+fn main_job() -> PathBuf {
+    PathBuf::from(env!("CARGO_BIN_EXE_trackgen"))
+}
+
+const M113_FILES: [&str; 6] = [
+    "m113.csv",
+    "all.csv",
+    "all.arrow",
+    "m113.svg",
+    "frame.svg",
+    "animation.html",
+];
+
+/// Checks the five outputs of an `m113` run of `duration` in `dir`.
+fn check_m113_outputs(dir: &Path, duration: f64) {
+    for f in M113_FILES {
+        assert!(dir.join(f).is_file(), "{f} not written");
+    }
+    let main = Csv::read(&dir.join("m113.csv"));
+    assert_eq!(
+        main.header,
+        [
+            "t",
+            "x",
+            "y",
+            "pitch",
+            "speed",
+            "sprocket_torque",
+            "sprocket_speed",
+            "tension",
+            "ground_normal"
+        ],
+        "m113.csv columns"
+    );
+    let t = main.check_times("m113.csv", duration);
+    let all = Csv::read(&dir.join("all.csv"));
+    let t_all = all.check_times("all.csv", duration);
+    assert_eq!(t, t_all, "m113.csv and all.csv sample the same times");
+    assert!(
+        all.header.len() > 2 * (M113Track::BODIES + M113Chassis::BODIES),
+        "all.csv has every coordinate and rate: {} columns",
+        all.header.len()
+    );
+    check_arrow_equals_csv(&dir.join("all.arrow"), &all);
+    check_svg(&dir.join("m113.svg"));
+    check_svg(&dir.join("frame.svg"));
+    let html = std::fs::read_to_string(dir.join("animation.html")).unwrap();
+    assert!(html.contains("<html"), "animation.html is no HTML page");
+    assert!(
+        html.trim_end().ends_with("</html>"),
+        "animation.html is truncated"
+    );
+}
+
+/// The Arrow IPC file at `path` has the columns and the values of `csv`.
+fn check_arrow_equals_csv(path: &Path, csv: &Csv) {
+    use arrow_array::{Array, Float64Array};
+    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let reader = arrow_ipc::reader::FileReader::try_new(file, None)
+        .unwrap_or_else(|e| panic!("{}: not a complete Arrow file: {e}", path.display()));
+    let names: Vec<String> = reader
+        .schema()
+        .fields()
+        .iter()
+        .map(|f| f.name().clone())
+        .collect();
+    assert_eq!(names, csv.header, "{}: columns", path.display());
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    for batch in reader {
+        let batch = batch.unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let columns: Vec<&Float64Array> = batch
+            .columns()
+            .iter()
+            .map(|c| c.as_any().downcast_ref().expect("Float64 columns"))
+            .collect();
+        for r in 0..batch.num_rows() {
+            rows.push(columns.iter().map(|c| c.value(r)).collect());
+        }
+    }
+    assert_eq!(rows.len(), csv.rows.len(), "{}: rows", path.display());
+    for (i, (a, c)) in rows.iter().zip(&csv.rows).enumerate() {
+        assert_eq!(a, c, "{}: row {i} differs from the CSV", path.display());
+    }
+}
+
+#[test]
+fn m113_short_run_writes_its_outputs() {
+    let m113 = main_job();
+    let dir = scratch("m113");
+    let out = run(
+        &m113,
+        &[
+            "--duration",
+            "0.3",
+            "--settle",
+            "0.1",
+            "--ramp",
+            "0.1",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --duration 0.3", &out);
+    assert!(
+        text(&out.stdout).contains("wrote "),
+        "m113 reports what it wrote:\n{}",
+        text(&out.stdout)
+    );
+    // The books are printed, and within the bound of the default tolerance
+    // 1e-3 (EnergyBalance::bound_for_tolerance: 1e-2), so no warning.
+    let stdout = text(&out.stdout);
+    let residual: f64 = stdout
+        .split("(residual ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|r| r.parse().ok())
+        .unwrap_or_else(|| panic!("no energy residual in:\n{stdout}"));
+    assert!(residual.abs() < 1e-2, "residual {residual}");
+    assert!(!stdout.contains("warning"), "{stdout}");
+    check_m113_outputs(&dir, 0.3);
+}
+
+/// `--modes --start equilibrium`: the rest and the table printed, the run
+/// starts there (it stands still until the drive starts: the hull's
+/// height over the settling time moves less than a micrometre), and
+/// `modes.csv` holds modes with finite frequencies, lowest first, the
+/// hull's bounce and pitch among them; `modes.svg` is drawn.
+#[test]
+fn m113_finds_its_rest_and_modes() {
+    let m113 = main_job();
+    let dir = scratch("m113_modes");
+    let out = run(
+        &m113,
+        &[
+            "--modes",
+            "--start",
+            "equilibrium",
+            "--duration",
+            "0.3",
+            "--settle",
+            "0.2",
+            "--ramp",
+            "0.1",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --modes --start equilibrium", &out);
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("at rest in ") && stdout.contains("hull bounce"),
+        "{stdout}"
+    );
+    let csv = std::fs::read_to_string(dir.join("modes.csv")).expect("modes.csv");
+    let mut lines = csv.lines();
+    assert!(lines.next().unwrap().starts_with("frequency_hz,"), "{csv}");
+    let frequencies: Vec<f64> = lines
+        .map(|l| l.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert!(frequencies.len() > 100, "{} modes", frequencies.len());
+    assert!(frequencies.iter().all(|f| f.is_finite() && *f > 0.0));
+    assert!(frequencies.windows(2).all(|w| w[0] <= w[1]), "lowest first");
+    assert!(csv.contains("hull pitch") && csv.contains("hull bounce"));
+    check_svg(&dir.join("modes.svg"));
+    let page = std::fs::read_to_string(dir.join("modes.html")).expect("modes.html");
+    assert!(
+        page.contains("mode 1: ") && page.contains("mode 6: "),
+        "modes.html plays six modes"
+    );
+    let main = Csv::read(&dir.join("m113.csv"));
+    let settling: Vec<f64> = main
+        .column("t")
+        .iter()
+        .zip(main.column("y"))
+        .filter(|(t, _)| **t <= 0.2)
+        .map(|(_, y)| y)
+        .collect();
+    let moved = settling
+        .iter()
+        .map(|v| (v - settling[0]).abs())
+        .fold(0.0, f64::max);
+    assert!(moved < 1e-6, "the hull moved {moved} m while held at rest");
+}
+
+/// The main job, 0.1 s with `--integrator method`: it runs and writes its
+/// outputs.
+fn m113_runs_with(method: &str) {
+    let m113 = main_job();
+    let dir = scratch(&format!("m113_{method}"));
+    let out = run(
+        &m113,
+        &[
+            "--integrator",
+            method,
+            "--duration",
+            "0.1",
+            "--settle",
+            "0.05",
+            "--ramp",
+            "0.05",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success(&format!("m113 --integrator {method}"), &out);
+    check_m113_outputs(&dir, 0.1);
+}
+
+#[test]
+fn m113_runs_with_dopri5() {
+    m113_runs_with("dopri5");
+}
+
+#[test]
+fn m113_runs_with_ros34pw2() {
+    m113_runs_with("ros34pw2");
+}
+
+#[test]
+fn m113_takes_a_dip_and_a_step_in_speed() {
+    let m113 = main_job();
+    let dir = scratch("m113_dip_step");
+    let out = run(
+        &m113,
+        &[
+            "--bump-height",
+            "-0.1",
+            "--bump-at",
+            "0.5",
+            "--settle",
+            "0",
+            "--ramp",
+            "0",
+            "--duration",
+            "0.2",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --bump-height -0.1 --ramp 0", &out);
+    assert!(
+        text(&out.stdout).contains("dip 0.10 m deep"),
+        "{}",
+        text(&out.stdout)
+    );
+    check_m113_outputs(&dir, 0.2);
+    // A step: the controller asks at once for more than the drive's
+    // limit (`speed_drive`: 20 kN m), so the first row holds the limit.
+    let torque = Csv::read(&dir.join("m113.csv")).column("sprocket_torque");
+    assert!(
+        (torque[0].abs() - 2e4).abs() <= 1e-6,
+        "torque at t = 0 with a step: {} N m",
+        torque[0]
+    );
+}
+
+/// A negative speed drives in reverse: the chassis ends moving backwards
+/// near the command (2 m/s after a 0.3 s ramp and 0.7 s more: within
+/// 30 % — the controller overshoots on the way, as forwards) and has
+/// moved back.
+#[test]
+fn m113_drives_in_reverse() {
+    let m113 = main_job();
+    let dir = scratch("m113_reverse");
+    let out = run(
+        &m113,
+        &[
+            "--speed",
+            "-2",
+            "--settle",
+            "0",
+            "--ramp",
+            "0.3",
+            "--duration",
+            "2.0",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --speed -2", &out);
+    check_m113_outputs(&dir, 2.0);
+    let csv = Csv::read(&dir.join("m113.csv"));
+    let (t, speed, x) = (csv.column("t"), csv.column("speed"), csv.column("x"));
+    // The speed controller overshoots the step (to −2.74 m/s at 0.9 s)
+    // and has settled within ±0.07 m/s of the command after 1.5 s.
+    let settled: Vec<f64> = t
+        .iter()
+        .zip(&speed)
+        .filter(|(t, _)| **t >= 1.5)
+        .map(|(_, v)| *v)
+        .collect();
+    let v = settled.iter().sum::<f64>() / settled.len() as f64;
+    let moved = x.last().unwrap() - x[0];
+    assert!(
+        (v + 2.0).abs() <= 0.15,
+        "mean speed {v} m/s over the last 0.5 s for -2"
+    );
+    assert!(moved < -2.0, "moved {moved} m in reverse");
+}
+
+/// A run that cannot start (a 0.4 m bump under the vehicle at rest, so
+/// the track would start inside the ground) is an error naming why: a
+/// non-zero exit, no summary and no files.
+#[test]
+fn m113_refuses_a_start_inside_the_ground() {
+    let m113 = main_job();
+    let dir = scratch("m113_start_inside");
+    let out_dir = dir.join("out");
+    let out = run(
+        &m113,
+        &[
+            "--bump-at",
+            "0",
+            "--bump-height",
+            "0.4",
+            "--out",
+            out_dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_rejected(
+        "m113 with a bump under the start",
+        &out,
+        &["inside the ground"],
+    );
+    assert!(out.stdout.is_empty(), "no summary:\n{}", text(&out.stdout));
+    assert!(!out_dir.exists(), "no files are written");
+}
+
+/// `--terrain dry-sand`: the M113 on soft soil sinks centimetres (on rigid
+/// ground, millimetres) and the run writes its outputs; `--vehicle
+/// marder` on rigid ground writes the Marder's.
+#[test]
+fn m113_drives_on_soft_soil_and_the_marder_runs() {
+    let m113 = main_job();
+    let dir = scratch("m113_soil");
+    let out = run(
+        &m113,
+        &[
+            "--terrain",
+            "dry-sand",
+            "--settle",
+            "0.3",
+            "--ramp",
+            "0.5",
+            "--duration",
+            "1.0",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --terrain dry-sand", &out);
+    assert!(
+        text(&out.stdout).contains("on dry-sand soil"),
+        "{}",
+        text(&out.stdout)
+    );
+    check_m113_outputs(&dir, 1.0);
+    let sinkage = Csv::read(&dir.join("all.csv")).column("ground_penetration");
+    let deepest = sinkage.iter().copied().fold(0.0, f64::max);
+    assert!(deepest > 0.02, "deepest sinkage {deepest} m on dry sand");
+    let dir = scratch("marder");
+    let out = run(
+        &m113,
+        &[
+            "--vehicle",
+            "marder",
+            "--settle",
+            "0.2",
+            "--ramp",
+            "0.3",
+            "--duration",
+            "0.6",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --vehicle marder", &out);
+    assert!(
+        text(&out.stdout).starts_with("Marder"),
+        "{}",
+        text(&out.stdout)
+    );
+    for file in [
+        "marder.csv",
+        "all.csv",
+        "all.arrow",
+        "marder.svg",
+        "frame.svg",
+        "animation.html",
+    ] {
+        assert!(dir.join(file).is_file(), "{file} not written");
+    }
+    let csv = Csv::read(&dir.join("marder.csv"));
+    assert!((csv.column("t").last().unwrap() - 0.6).abs() < 1e-9);
+}
+
+#[test]
+fn m113_rejects_bad_options() {
+    let m113 = main_job();
+    let dir = scratch("m113_bad");
+    let out_dir = dir.join("out");
+    let out_arg = out_dir.to_str().unwrap();
+    // Short runs, in case an option were wrongly accepted.
+    const SHORT: [&str; 6] = ["--duration", "0.05", "--settle", "0.0", "--ramp", "0.05"];
+    let cases: &[(&[&str], &[&str])] = &[
+        (
+            &["--integrator", "rk9"],
+            &["rk9", "--integrator", "bs23", "dopri5"],
+        ),
+        (&["--speed", "abc"], &["abc", "--speed", "-20 to 20 m/s"]),
+        (&["--speed", "nan"], &["--speed", "-20 to 20 m/s"]),
+        (&["--speed", "25"], &["--speed", "-20 to 20 m/s"]),
+        (&["--frobnicate"], &["--frobnicate"]),
+        (&["--duration=-1"], &["--duration", "-1", "more than 0 s"]),
+        (
+            &["--duration", "-1"],
+            &["--duration", "-1", "more than 0 s"],
+        ),
+        (&["--duration", "0"], &["--duration", "more than 0 s"]),
+        (&["--duration", "inf"], &["--duration", "more than 0 s"]),
+        (&["--settle", "-1"], &["--settle", "0 to 1e6 s"]),
+        (&["--ramp", "nan"], &["--ramp", "0 to 1e6 s"]),
+        (&["--tolerance", "0"], &["--tolerance", "1e-12 to 0.1"]),
+        (&["--tolerance", "1"], &["--tolerance", "1e-12 to 0.1"]),
+        (
+            &["--bump-height", "0.6"],
+            &["--bump-height", "-0.5 to 0.5 m"],
+        ),
+        (&["--bump-at", "inf"], &["--bump-at", "-10000 to 10000 m"]),
+        (
+            &["--terrain", "mud"],
+            &["--terrain", "mud", "rigid", "dry-sand"],
+        ),
+        (
+            &["--vehicle", "tiger"],
+            &["--vehicle", "tiger", "m113", "marder"],
+        ),
+    ];
+    for (bad, mentions) in cases {
+        // The short run's settings, less the one under test (clap refuses
+        // an option given twice).
+        let named = |key: &str| bad.iter().any(|b| b.split('=').next() == Some(key));
+        let short: Vec<&str> = SHORT
+            .chunks(2)
+            .filter(|pair| !named(pair[0]))
+            .flatten()
+            .copied()
+            .collect();
+        let args = [&short[..], bad, &["--out", out_arg]].concat();
+        let out = run(&m113, &args, &dir);
+        let what = bad.join(" ");
+        assert_rejected(&what, &out, mentions);
+        assert!(
+            out.stdout.is_empty(),
+            "{what}: nothing is run or summarised, got:\n{}",
+            text(&out.stdout)
+        );
+        assert!(!out_dir.exists(), "{what}: no files are written");
+    }
+    let out = run(&m113, &["--out", ""], &dir);
+    assert_rejected("--out ''", &out, &["--out"]);
+}
