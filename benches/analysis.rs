@@ -22,13 +22,14 @@ use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion
 use std::hint::black_box;
 use std::time::Duration;
 use trackgen::analysis::{EquilibriumOptions, equilibrium, state_jacobian};
-use trackgen::contact::Terrain;
-use trackgen::contact::soil::SoilPreset;
+use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::dynamics::track_jacobian;
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::simulate::{Output, Simulated, simulate};
-use trackgen::vehicles::m113::{M113, M113System};
-use trackgen::{TrackModel, Vehicle, VehicleDynamics};
+use trackgen::multibody::TrackModel;
+use trackgen::simulate::{Output, simulate};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, m113::M113System};
 use trackgen_benches::{Track64, Track128, driven, state};
 
 fn track<M: TrackModel<D>, const D: usize>(model: M) -> impl FnMut() {
@@ -46,7 +47,7 @@ fn at_rest() -> M113System {
 /// ground pressed after every step, as in a run): its system, time and
 /// state.
 fn on_sand() -> (M113System, f64, Vec<f64>) {
-    let mut config = M113::config(
+    let mut config = M113::declared_config(
         Terrain::Flat { height: 0.0 },
         M113::speed_drive(|t| 2.0 * t.min(1.0)),
     );

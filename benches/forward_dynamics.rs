@@ -16,9 +16,8 @@
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
-use trackgen::ClosingJoint;
-use trackgen::TrackModel;
-use trackgen::dynamics::{LinearTimeSolver, forward_dynamics};
+use trackgen::dynamics::{LinearTimeSolver, dense_forward_dynamics};
+use trackgen::multibody::{ClosingJoint, TrackModel};
 use trackgen::nalgebra::{SVector, Vector2};
 
 use trackgen_benches::*;
@@ -46,7 +45,7 @@ fn bench_one<M: TrackModel<D>, const D: usize>(c: &mut Criterion, model: M) {
     let mut group = c.benchmark_group("closed_forward_dynamics");
     group.bench_with_input(BenchmarkId::new("generated", n), &n, |b, _| {
         b.iter(|| {
-            trackgen::sin_cos_each(&black_box(&q).as_slice()[2..], &mut trig);
+            trackgen::trig::sin_cos_each(&black_box(&q).as_slice()[2..], &mut trig);
             black_box(generated(&trig, &mut forces))
         })
     });
@@ -60,7 +59,9 @@ fn bench_one<M: TrackModel<D>, const D: usize>(c: &mut Criterion, model: M) {
         })
     });
     group.bench_with_input(BenchmarkId::new("dense", n), &n, |b, _| {
-        b.iter(|| black_box(forward_dynamics(&model, black_box(&q), black_box(&qd), &[]).unwrap()))
+        b.iter(|| {
+            black_box(dense_forward_dynamics(&model, black_box(&q), black_box(&qd), &[]).unwrap())
+        })
     });
     group.finish();
 

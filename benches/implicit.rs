@@ -9,14 +9,14 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::OdeSystem;
+use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::marder::Marder;
 use trackgen_benches::driven;
 
 fn implicit(c: &mut Criterion) {
-    let config = Marder::config(
+    let config = Marder::declared_config(
         Terrain::Flat { height: 0.0 },
         Marder::speed_drive(|t| 2.0 * t.min(1.0)),
     );

@@ -1,11 +1,10 @@
 //! What the benches share: the tracks and the state they are timed at, a
 //! vehicle driven to a moving state.
 
-use trackgen::Vehicle;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, SVector};
-use trackgen::simulate::Simulated;
-use trackgen::vehicle::{VehicleConfig, build};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Vehicle, VehicleConfig, build};
 
 trackgen::model! {
     /// An M113-like closed track of 8 shoes.

@@ -6,7 +6,7 @@
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
 use std::time::Duration;
-use trackgen::RecursiveModel;
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{DVector, SMatrix, SVector};
 use trackgen::reference::ReferenceModel;
 

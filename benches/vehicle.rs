@@ -17,12 +17,11 @@ use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use rayon::prelude::*;
 use std::hint::black_box;
 use std::time::Duration;
-use trackgen::Vehicle;
-use trackgen::contact::Terrain;
-use trackgen::contact::soil::SoilPreset;
+use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicles::m113::{self, M113};
+use trackgen::vehicle::Vehicle;
+use trackgen::vehicles::{m113, m113::M113};
 
 /// The M113 at rest, speed controller on, ready to run.
 fn vehicle_at_rest() -> m113::M113System {
@@ -69,7 +68,7 @@ fn vehicle(c: &mut Criterion) {
     let driving = |soil: Option<SoilPreset>| {
         move || {
             let drive = M113::speed_drive(|t| 2.0 * ((t - 0.5) / 1.0).clamp(0.0, 1.0));
-            let mut config = M113::config(Terrain::Flat { height: 0.0 }, drive);
+            let mut config = M113::declared_config(Terrain::Flat { height: 0.0 }, drive);
             config.soil = soil.map(|s| s.soil());
             M113::system_with(config).unwrap()
         }

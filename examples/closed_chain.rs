@@ -11,9 +11,9 @@ use std::path::Path;
 
 use clap::Parser;
 use plotters::prelude::*;
-use trackgen::RecursiveModel;
 use trackgen::closure::{ClosureMethod, PartitionOptions, multipliers};
 use trackgen::integrate::Integrator;
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::system::TrackSystem;

@@ -17,10 +17,10 @@
 use std::error::Error;
 use std::path::PathBuf;
 
-use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{EnergyBalance, Output, simulate};
+use trackgen::vehicle::Vehicle;
 
 trackgen::model! {
     /// A light carrier, one side: half its hull on a 55-link track.

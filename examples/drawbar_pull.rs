@@ -30,13 +30,11 @@ use std::path::PathBuf;
 use clap::Parser;
 use plotters::prelude::*;
 use rayon::prelude::*;
-use trackgen::Vehicle;
-use trackgen::contact::Terrain;
-use trackgen::contact::soil::SoilPreset;
+use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::{Drive, slip};
-use trackgen::vehicles::m113::{self, M113};
+use trackgen::vehicle::{Drive, Vehicle, slip};
+use trackgen::vehicles::{m113, m113::M113};
 
 /// Drawbar pull against slip on soft soil, beside Wong's curve.
 #[derive(Parser, Debug)]
@@ -72,7 +70,7 @@ const HOLD: f64 = 10.0;
 const STEADY: f64 = 4.0;
 
 fn run(preset: SoilPreset, drive: Drive, pull: f64, duration: f64) -> Result<Results, String> {
-    let mut config = M113::config(Terrain::Flat { height: 0.0 }, drive);
+    let mut config = M113::declared_config(Terrain::Flat { height: 0.0 }, drive);
     config.soil = Some(preset.soil());
     config.drawbar_pull = pull;
     let mut system = M113::system_with(config).map_err(|e| e.to_string())?;
@@ -168,7 +166,7 @@ fn main() -> Result<(), Box<dyn Error>> {
 /// ground points below the undisturbed surface, each carrying half a
 /// pitch.
 fn contact_length(results: &Results) -> f64 {
-    use trackgen::RecursiveModel;
+    use trackgen::multibody::RecursiveModel;
     use trackgen::nalgebra::{SVector, Vector2};
     let columns = results.columns();
     let start = columns.iter().position(|c| c == "track.x").expect("track");
@@ -185,7 +183,7 @@ fn contact_length(results: &Results) -> f64 {
         .flat_map(|(j, c)| {
             shoe.ground_points
                 .iter()
-                .map(move |g| c + trackgen::rotate(q[2 + j], *g))
+                .map(move |g| c + trackgen::planar::rotate(q[2 + j], *g))
         })
         .filter(|p| p.y < 0.0)
         .count();

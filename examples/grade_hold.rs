@@ -19,12 +19,12 @@ use std::error::Error;
 use std::path::PathBuf;
 
 use plotters::prelude::*;
-use trackgen::contact::{Friction, GroundFriction, Terrain};
+use trackgen::contact::{GroundFriction, Terrain};
 use trackgen::integrate::Integrator;
+use trackgen::laws::Friction;
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 /// Where the ramp starts, m of x ahead of the chassis centroid's start.
 const RAMP_START: f64 = 3.0;
@@ -72,7 +72,7 @@ fn park<V: Vehicle>(grade: f64, regularised: bool, watch: f64) -> Result<Parked,
         start: RAMP_START,
         slope: grade,
     };
-    let mut config = V::config(terrain, V::speed_drive(target));
+    let mut config = V::declared_config(terrain, V::speed_drive(target));
     if regularised {
         let mu = config.ground.friction.mu();
         config.ground.friction = GroundFriction::Regularised(Friction { mu, slip: 0.1 });

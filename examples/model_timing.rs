@@ -6,10 +6,10 @@
 
 use std::time::Instant;
 
+use trackgen::multibody::{ChassisModel, RecursiveModel, TrackModel};
 use trackgen::nalgebra::{DVector, SVector};
-use trackgen::reference::ReferenceModel;
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
-use trackgen::{ChassisModel, RecursiveModel, TrackModel};
+use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
+use trackgen_runtime::reference::ReferenceModel;
 
 const TRACK_DOF: usize = 66;
 const CHASSIS_DOF: usize = 16;
@@ -59,7 +59,8 @@ fn main() {
         (track.closure_jacobian(&q) * qd).norm()
     );
 
-    let acc = trackgen::dynamics::forward_dynamics(&track, &q, &qd, &[]).expect("track dynamics");
+    let acc =
+        trackgen::dynamics::dense_forward_dynamics(&track, &q, &qd, &[]).expect("track dynamics");
     let reference = ReferenceModel::new(track.description());
     let (dq, dqd) = (
         DVector::from_column_slice(q.as_slice()),
@@ -91,7 +92,7 @@ fn main() {
     });
     let forward = time(|| {
         std::hint::black_box(
-            trackgen::dynamics::forward_dynamics(&track, std::hint::black_box(&q), &qd, &[])
+            trackgen::dynamics::dense_forward_dynamics(&track, std::hint::black_box(&q), &qd, &[])
                 .unwrap(),
         );
     });
@@ -108,7 +109,7 @@ fn main() {
 
     let chassis = M113Chassis;
     let qc = SVector::<f64, CHASSIS_DOF>::zeros();
-    let ac = trackgen::dynamics::open_dynamics(&chassis, &qc, &SVector::zeros(), &[])
+    let ac = trackgen::dynamics::dense_open_dynamics(&chassis, &qc, &SVector::zeros(), &[])
         .expect("chassis dynamics");
     println!(
         "chassis alone under gravity: ÿ = {:.3} m/s², θ̈ = {:.2e} rad/s²",

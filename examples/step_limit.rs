@@ -29,18 +29,18 @@
 use std::time::Instant;
 
 use trackgen::analysis::linearise;
-use trackgen::contact::{Friction, GroundFriction, NormalLaw, Terrain};
+use trackgen::contact::{GroundFriction, Terrain};
 use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::laws::{Friction, NormalLaw};
 use trackgen::nalgebra::DMatrix;
-use trackgen::simulate::{Output, Simulated, simulate};
-use trackgen::vehicle::{VehicleConfig, build};
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::simulate::{Output, simulate};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Vehicle, VehicleConfig, VehicleDynamics, build};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 /// The vehicle's declared configuration, driven from rest to 3 m/s.
 fn config<V: Vehicle>() -> VehicleConfig {
-    V::config(Terrain::Flat { height: 0.0 }, V::speed_drive(ramp))
+    V::declared_config(Terrain::Flat { height: 0.0 }, V::speed_drive(ramp))
 }
 
 fn ramp(t: f64) -> f64 {

@@ -20,12 +20,10 @@
 use std::error::Error;
 use std::time::Instant;
 
-use trackgen::Vehicle;
 use trackgen::contact::Terrain;
-use trackgen::integrate::Integrator;
-use trackgen::integrate::auto::EXPLICIT_STABILITY;
+use trackgen::integrate::{Integrator, auto::EXPLICIT_STABILITY};
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::{Drive, VehicleConfig, build};
+use trackgen::vehicle::{Drive, Vehicle, VehicleConfig, build};
 use trackgen::vehicles::marder::Marder;
 
 /// The rims' and teeth's regularisation speed, m/s (the Marder's: 0.5).
@@ -38,7 +36,8 @@ fn target(t: f64) -> f64 {
 /// The vehicle declared for this: the Marder's compiled bodies, its laws
 /// changed where the stiffness comes from.
 fn config() -> VehicleConfig {
-    let mut config = Marder::config(Terrain::Flat { height: 0.0 }, Marder::speed_drive(target));
+    let mut config =
+        Marder::declared_config(Terrain::Flat { height: 0.0 }, Marder::speed_drive(target));
     config.wheels.friction.slip = SLIP;
     config.sprocket.friction.slip = SLIP;
     if let Drive::Speed {

@@ -42,10 +42,10 @@ use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
-use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
+use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
 /// `println!` that ignores a closed stdout (a log gone, `| head`): the

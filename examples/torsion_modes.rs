@@ -13,10 +13,9 @@ use trackgen::analysis::{
     EquilibriumOptions, equilibrium, equilibrium_sensitivity, mode_of, modes,
 };
 use trackgen::contact::Terrain;
-use trackgen::model::PartKind;
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::multibody::PartKind;
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 /// The road wheels' arm bodies of `V`.
 fn road_wheel_arms<V: Vehicle>() -> Vec<usize> {
@@ -37,7 +36,7 @@ fn sweep<V: Vehicle>() -> Result<(), Box<dyn Error>> {
         "  rate ×   k (N m/rad)   height (m)   pitch (mrad)   bounce (Hz, ζ, share)  pitch (Hz, ζ, share)"
     );
     for factor in [0.5, 0.75, 1.0, 1.5, 2.0] {
-        let mut config = V::config(Terrain::Flat { height: 0.0 }, V::speed_drive(|_| 0.0));
+        let mut config = V::declared_config(Terrain::Flat { height: 0.0 }, V::speed_drive(|_| 0.0));
         let mut rate = 0.0;
         for arm in config.arms.iter_mut().filter(|a| arms.contains(&a.body)) {
             arm.spring.stiffness *= factor;

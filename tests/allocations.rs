@@ -8,12 +8,12 @@
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::Simulated;
-use trackgen::vehicles::m113::{self, M113};
+use trackgen::system::Simulated;
+use trackgen::vehicle::Vehicle;
+use trackgen::vehicles::{m113, m113::M113};
 
 /// The system allocator, counting allocations and reallocations.
 struct Counting;

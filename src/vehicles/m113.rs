@@ -11,7 +11,7 @@
 //! m²) is an assumption of this model; see [`TENSIONER_ARM`].
 //!
 //! Everything that makes it run is declared with it: shoe, sprocket
-//! profile, contact laws and drive gains. As a [`Vehicle`](crate::Vehicle),
+//! profile, contact laws and drive gains. As a [`Vehicle`](crate::vehicle::Vehicle),
 //! `M113::system(terrain, drive)` assembles it on a terrain, ready to
 //! simulate (`M113::config` gives the run-time settings to change first,
 //! for `M113::system_with`), and `M113::speed_drive` is a speed controller

@@ -32,7 +32,7 @@
 //! sprocket (the spec's example).
 //!
 //! Everything that makes it run is declared with it; as a
-//! [`Vehicle`](crate::Vehicle), `Marder::system(terrain, drive)` assembles
+//! [`Vehicle`](crate::vehicle::Vehicle), `Marder::system(terrain, drive)` assembles
 //! it on a terrain (`Marder::config` gives the run-time settings to change
 //! first, for `Marder::system_with`), and `Marder::speed_drive` is a speed
 //! controller tuned for it: proportional gain 4000 N m s/rad and integral

@@ -39,14 +39,14 @@ use proptest::prelude::*;
 use trackgen::assembly::{
     Assembled, AssemblyError, LinkCounts, PitchCircle, SlackLimit, Touching, Wrap, assemble, wrap,
 };
-use trackgen::contact::Terrain;
-use trackgen::contact::sprocket::pitch_radius;
+use trackgen::contact::{Terrain, sprocket::pitch_radius};
+use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::nalgebra::{SVector, Vector2};
+use trackgen::planar::rotate;
 use trackgen::vehicle::{
-    ConfigError, Drive, Geometry, VehicleConfig, VehicleDynamics, VehicleSystem,
+    ConfigError, Drive, Geometry, Vehicle, VehicleConfig, VehicleDynamics, VehicleSystem,
 };
-use trackgen::vehicles::m113::{M113, M113Chassis, M113Track};
-use trackgen::{RecursiveModel, TrackModel, Vehicle, rotate};
+use trackgen::vehicles::{m113::M113, m113::M113Chassis, m113::M113Track};
 
 /// The M113's coordinate counts.
 const TRACK_DOF: usize = M113::TRACK_DOF;
@@ -597,7 +597,7 @@ fn a_tensioner_takes_up_the_slack_over_its_travel() {
 // Vehicle set-up.
 
 fn config(tension_link: usize) -> VehicleConfig {
-    let mut config = M113::config(Terrain::Flat { height: 0.0 }, Drive::Free);
+    let mut config = M113::declared_config(Terrain::Flat { height: 0.0 }, Drive::Free);
     config.tension_link = tension_link;
     config
 }

@@ -13,10 +13,12 @@
 //!   the tolerance (a global error of the local tolerance's order), in a
 //!   fifth of the explicit method's steps or less.
 
-use trackgen::integrate::auto::{CHECK_EVERY, stiffest_rate};
-use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::integrate::{
+    Integrator, OdeSystem, SimulationError, auto::CHECK_EVERY, auto::stiffest_rate,
+};
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::{Output, Simulated, SimulationError, simulate};
+use trackgen::simulate::{Output, simulate};
+use trackgen::system::Simulated;
 
 /// `y' = A y` with `A` block-diagonal: real eigenvalues and one complex
 /// pair `a ± b i`.

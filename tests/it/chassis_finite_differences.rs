@@ -48,9 +48,9 @@ use crate::support;
 
 use support::arms::{add_arm_torques, arm_dissipation, arm_energy};
 use support::{Lcg, assert_close};
+use trackgen::multibody::{BodyLoad, ChassisModel, RecursiveModel};
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
 use trackgen::vehicles::m113::M113Chassis;
-use trackgen::{BodyLoad, ChassisModel, RecursiveModel};
 
 trackgen::model! {
     /// A small sprung vehicle: the sprocket and one road wheel pinned to

@@ -8,12 +8,14 @@
 use crate::support;
 
 use support::{Lcg, max_abs, max_of, min_of};
-use trackgen::TrackModel;
-use trackgen::closure::{ClosureMethod, MultiplierOptions, PartitionOptions, multipliers};
-use trackgen::integrate::Integrator;
+use trackgen::closure::{
+    ClosureMethod, MultiplierOptions, PartitionOptions, RecoveryError, multipliers,
+};
+use trackgen::integrate::{Integrator, SimulationError};
 use trackgen::laws::PenaltyJoint;
+use trackgen::multibody::TrackModel;
 use trackgen::nalgebra::SVector;
-use trackgen::simulate::{Output, Results, SimulationError, simulate};
+use trackgen::simulate::{Output, Results, simulate};
 use trackgen::system::TrackSystem;
 
 trackgen::model! {
@@ -171,11 +173,11 @@ fn switching_avoids_singular_partitions() {
         Output::Every(0.01),
     )
     .unwrap_err();
-    let SimulationError::SingularPartition {
+    let SimulationError::Recovery(RecoveryError::SingularPartition {
         t,
         pair,
         conditioning,
-    } = failure.error
+    }) = failure.error
     else {
         panic!("expected a singular partition, got {}", failure.error);
     };

@@ -2,7 +2,7 @@
 //! on them, `const` blocks. The macro cannot evaluate these; rustc folds
 //! them, and the result must equal the same track declared with literals.
 
-use trackgen::RecursiveModel;
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{SMatrix, SVector};
 
 const PITCH: f64 = 0.154;

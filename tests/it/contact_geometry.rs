@@ -57,16 +57,16 @@ use support::contact::{GroundContact, SprocketContact, WheelContact};
 use std::f64::consts::PI;
 
 use support::{Lcg, assert_close, max_abs, min_of};
-use trackgen::Vehicle;
-use trackgen::contact::sprocket::ToothProfile;
-use trackgen::contact::{BodyState, ContactForce, Friction, NormalLaw, Terrain};
+use trackgen::contact::{BodyState, ContactForce, Terrain, sprocket::ToothProfile};
+use trackgen::laws::{Friction, NormalLaw};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
-use trackgen::reference::ReferenceModel;
-use trackgen::vehicles::m113::{M113, M113Track};
+use trackgen::vehicle::Vehicle;
+use trackgen::vehicles::{m113::M113, m113::M113Track};
+use trackgen_runtime::reference::ReferenceModel;
 
 /// The M113 track's coordinates.
 const TRACK_DOF: usize = M113::TRACK_DOF;
-use trackgen::{BodyLoad, RecursiveModel};
+use trackgen::multibody::{BodyLoad, RecursiveModel};
 
 fn v(x: f64, y: f64) -> Vector2<f64> {
     Vector2::new(x, y)
@@ -970,8 +970,8 @@ fn body_state_with_sin_cos_is_new() {
         assert_eq!(a.arm(u), b.arm(u));
         assert_eq!(a.point(u), b.point(u));
         assert_eq!(a.velocity_at(a.arm(u)), b.velocity_at(b.arm(u)));
-        assert_eq!(a.arm(u), trackgen::rotate(angle, u));
-        assert_eq!(a.point(u), position + trackgen::rotate(angle, u));
+        assert_eq!(a.arm(u), trackgen::planar::rotate(angle, u));
+        assert_eq!(a.point(u), position + trackgen::planar::rotate(angle, u));
         // ω × arm by hand.
         let arm = a.arm(u);
         assert_eq!(
@@ -980,7 +980,8 @@ fn body_state_with_sin_cos_is_new() {
         );
         // The derivative of R + v t + A(θ + ω t) ū at t = 0.
         let h = 1e-6;
-        let moving = |t: f64| position + velocity * t + trackgen::rotate(angle + omega * t, u);
+        let moving =
+            |t: f64| position + velocity * t + trackgen::planar::rotate(angle + omega * t, u);
         close_vec(
             "velocity_at",
             a.velocity_at(arm),
@@ -990,7 +991,7 @@ fn body_state_with_sin_cos_is_new() {
         // Another angle's trig is used as given.
         let other = angle + 0.7;
         let c = BodyState::with_sin_cos(position, angle, other.sin_cos(), velocity, omega);
-        assert_eq!(c.arm(u), trackgen::rotate(other, u));
+        assert_eq!(c.arm(u), trackgen::planar::rotate(other, u));
         assert_eq!(c.angle, angle);
     }
 }
@@ -1015,7 +1016,7 @@ fn flat(vs: &[Vector2<f64>]) -> Vec<f64> {
 }
 
 /// The generated M113 track (64 links): `body_states_with_trig` given each
-/// angle's `trackgen::sin_cos` is bit for bit `body_states`, and `body_positions` /
+/// angle's `trackgen::trig::sin_cos` is bit for bit `body_states`, and `body_positions` /
 /// `body_velocities`; given the trig of other angles, it is `body_states`
 /// at those angles (positions depend on the angles only through the trig);
 /// and it agrees with the reference route (`H q̇` of the dense transform).
@@ -1028,9 +1029,9 @@ fn m113_body_states_with_trig_is_body_states() {
     let mut rng = Lcg::new(51);
     for case in 0..20 {
         let (q, qd) = rng.state::<TRACK_DOF>();
-        // The generated code's own trig (`trackgen::sin_cos`, within an
+        // The generated code's own trig (`trackgen::trig::sin_cos`, within an
         // ulp of the library's), so equality is bit for bit.
-        let trig: Vec<(f64, f64)> = (0..n).map(|b| trackgen::sin_cos(q[2 + b])).collect();
+        let trig: Vec<(f64, f64)> = (0..n).map(|b| trackgen::trig::sin_cos(q[2 + b])).collect();
         let (r1, v1) = states(&model, &q, &qd, Some(&trig));
         let (r2, v2) = states(&model, &q, &qd, None);
         assert_eq!(r1, r2, "case {case}: positions");
@@ -1063,7 +1064,9 @@ fn m113_body_states_with_trig_is_body_states() {
         for b in 0..n {
             shifted[2 + b] += rng.uniform(-0.5, 0.5);
         }
-        let other: Vec<(f64, f64)> = (0..n).map(|b| trackgen::sin_cos(shifted[2 + b])).collect();
+        let other: Vec<(f64, f64)> = (0..n)
+            .map(|b| trackgen::trig::sin_cos(shifted[2 + b]))
+            .collect();
         let (r4, v4) = states(&model, &q, &qd, Some(&other));
         let (r5, v5) = states(&model, &shifted, &qd, None);
         assert_eq!(r4, r5, "case {case}: positions from given trig");

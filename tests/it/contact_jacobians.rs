@@ -23,17 +23,15 @@
 use crate::support;
 
 use support::Lcg;
-use trackgen::BodyLoad;
-use trackgen::Vehicle;
-use trackgen::contact::soft_ground::{Rut, SoftGround};
-use trackgen::contact::soil::{SoilMemory, SoilPreset};
-use trackgen::contact::sprocket::{self, ToothProfile};
-use trackgen::contact::tangent::{DEFLECTION, INPUTS, LINK_POSE, OTHER_POSE};
 use trackgen::contact::{
     BodyState, Contact, ContactJacobian, ContactLaws, GroundFriction, GroundLaws, ShoeGeometry,
-    Terrain, ground, wheel,
+    Terrain, ground, soft_ground::Rut, soft_ground::SoftGround, soil::SoilMemory, soil::SoilPreset,
+    sprocket, sprocket::ToothProfile, tangent::DEFLECTION, tangent::INPUTS, tangent::LINK_POSE,
+    tangent::OTHER_POSE, wheel,
 };
+use trackgen::multibody::BodyLoad;
 use trackgen::nalgebra::{SMatrix, Vector2};
+use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
 const STEP: f64 = 1e-7;
@@ -371,7 +369,7 @@ fn random_inputs(
 }
 
 fn m113_config() -> trackgen::vehicle::VehicleConfig {
-    M113::config(Terrain::Flat { height: 0.0 }, M113::speed_drive(|_| 0.0))
+    M113::declared_config(Terrain::Flat { height: 0.0 }, M113::speed_drive(|_| 0.0))
 }
 
 /// Runs `pair` at random states until each of `branches` has been
@@ -434,7 +432,7 @@ fn ground_contacts_match_their_differences() {
                 height: 0.1,
             },
             GroundLaws {
-                friction: GroundFriction::Regularised(trackgen::contact::Friction {
+                friction: GroundFriction::Regularised(trackgen::laws::Friction {
                     mu: 0.8,
                     slip: 0.1,
                 }),

@@ -21,15 +21,16 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close};
-use trackgen::dynamics::derivative::{
-    ChainDirection, ChainDirections, ChainTangent, TreeDirection, TreeTangent,
+use trackgen::dynamics::{
+    StateJacobian, derivative::ChainDirection, derivative::ChainDirections,
+    derivative::ChainTangent, derivative::TreeDirection, derivative::TreeTangent, track_jacobian,
+    tree_jacobian,
 };
-use trackgen::dynamics::{StateJacobian, track_jacobian, tree_jacobian};
-use trackgen::model::{BodyLoad, ClosingJoint, Closure};
+use trackgen::multibody::{BodyLoad, ClosingJoint, Closure, RecursiveModel, TrackModel};
 use trackgen::nalgebra::{DMatrix, SVector, Vector2};
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
-use trackgen::vehicles::marder::{Marder, MarderChassis, MarderTrack};
-use trackgen::{RecursiveModel, TrackModel};
+use trackgen::vehicles::{
+    m113::M113Chassis, m113::M113Track, marder::Marder, marder::MarderChassis, marder::MarderTrack,
+};
 
 const H: f64 = 1e-6;
 /// The rates' step: `q̈` is a polynomial of degree two in `q̇` (the

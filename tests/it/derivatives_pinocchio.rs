@@ -27,9 +27,10 @@ include!("support/chains.rs");
 
 use support::assert_close;
 use support::pinocchio::{case, column_major, floats};
-use trackgen::TrackModel;
-use trackgen::dynamics::derivative::{ChainTangent, TreeTangent};
-use trackgen::dynamics::{track_jacobian, tree_jacobian};
+use trackgen::dynamics::{
+    derivative::ChainTangent, derivative::TreeTangent, track_jacobian, tree_jacobian,
+};
+use trackgen::multibody::TrackModel;
 use trackgen::nalgebra::SVector;
 
 /// The largest difference over the largest reference entry.

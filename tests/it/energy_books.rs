@@ -17,11 +17,11 @@
 use crate::support;
 
 use support::vehicle::m113_with;
-use trackgen::Vehicle;
 use trackgen::closure::ClosureMethod;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{EnergyBalance, Output, RESIDUAL_FLOOR, Results, Sink, Summary, simulate};
+use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
 /// Results with the three book columns, one row per `(t, energy, work,

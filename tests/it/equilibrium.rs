@@ -7,16 +7,13 @@ use trackgen::analysis::{
     AnalysisError, Equilibrium, EquilibriumOptions, equilibrium, equilibrium_sensitivity, mode_of,
     modes,
 };
-use trackgen::contact::Terrain;
-use trackgen::contact::{Friction, GroundFriction};
-use trackgen::integrate::Integrator;
-use trackgen::integrate::OdeSystem;
-use trackgen::simulate::Simulated;
+use trackgen::contact::{GroundFriction, Terrain};
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::laws::Friction;
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::{Drive, build};
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics, build};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 const FLAT: Terrain = Terrain::Flat { height: 0.0 };
 
@@ -107,7 +104,7 @@ fn marder_stands_still_at_its_equilibrium() {
 /// where the shoes sit under them. Bounds: 0.1 mm and 10⁻⁵ rad.
 #[test]
 fn settling_run_ends_at_the_equilibrium() {
-    let mut config = M113::config(FLAT, M113::speed_drive(|_| 0.0));
+    let mut config = M113::declared_config(FLAT, M113::speed_drive(|_| 0.0));
     config.ground.friction = GroundFriction::Regularised(Friction {
         mu: config.ground.friction.mu(),
         slip: 0.1,
@@ -211,7 +208,7 @@ fn what_cannot_rest_is_refused() {
     ));
     // Pulled by a drawbar on regularised friction, which holds nothing at
     // rest: no equilibrium, and the error says how far from one.
-    let mut config = M113::config(FLAT, M113::speed_drive(|_| 0.0));
+    let mut config = M113::declared_config(FLAT, M113::speed_drive(|_| 0.0));
     config.drawbar_pull = 5000.0;
     config.ground.friction = GroundFriction::Regularised(Friction {
         mu: config.ground.friction.mu(),
@@ -235,7 +232,7 @@ fn what_cannot_rest_is_refused() {
 /// bounce and pitch are found there too (`mode_of`).
 #[test]
 fn stiction_holds_a_pull_and_a_grade() {
-    let mut config = M113::config(FLAT, M113::speed_drive(|_| 0.0));
+    let mut config = M113::declared_config(FLAT, M113::speed_drive(|_| 0.0));
     config.drawbar_pull = 5000.0;
     let pulled = build::<M113>(config).unwrap();
     let (parked, stopped, t) = drive_onto_a_grade(0.3);
@@ -341,20 +338,20 @@ fn the_tensioner_balances_the_track_tension() {
     <S as VehicleDynamics>::chassis_positions(qc.as_slice(), &mut bodies);
     let idler = <S as VehicleDynamics>::parts()
         .iter()
-        .find(|p| p.kind == trackgen::model::PartKind::Idler)
+        .find(|p| p.kind == trackgen::multibody::PartKind::Idler)
         .unwrap();
     let arm = idler.arm.unwrap();
     let centre = bodies[idler.body];
-    let pivot =
-        bodies[arm.body] + trackgen::rotate(qc[2 + arm.body], chassis.bodies[arm.body].at_self);
+    let pivot = bodies[arm.body]
+        + trackgen::planar::rotate(qc[2 + arm.body], chassis.bodies[arm.body].at_self);
     // The run on the idler: links whose pins both lie within 2 cm of the
     // circle the seated pins describe (rim plus the shoe's inner offset).
     let joints = track.joints().unwrap();
     let seated = idler.radius + system.geometry().shoe.inner_offset();
     let on_idler: Vec<bool> = (0..n)
         .map(|k| {
-            let ends =
-                [joints[k].0, joints[k].1].map(|u| centroids[k] + trackgen::rotate(qt[2 + k], u));
+            let ends = [joints[k].0, joints[k].1]
+                .map(|u| centroids[k] + trackgen::planar::rotate(qt[2 + k], u));
             ends.iter()
                 .all(|e| ((e - centre).norm() - seated).abs() < 0.02)
         })

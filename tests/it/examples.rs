@@ -53,8 +53,8 @@ use crate::support;
 use crate::support::programs::{
     Csv, assert_rejected, assert_success, check_svg, run, scratch, text,
 };
-use trackgen::RecursiveModel;
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::multibody::RecursiveModel;
+use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
 /// The example's binary, built by the `cargo test` that built this test.
 fn example(name: &str) -> PathBuf {

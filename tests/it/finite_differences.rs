@@ -16,8 +16,8 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close};
+use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::nalgebra::{DMatrix, SVector, Vector2};
-use trackgen::{RecursiveModel, TrackModel};
 
 const H: f64 = 1e-6;
 const REL: f64 = 1e-7;

@@ -24,12 +24,12 @@
 //!   0.5 s/m, 0.5 m/s): the rules are stated to give the same scale, not
 //!   the same numbers.
 
-use trackgen::contact::{GroundFriction, NormalLaw, Terrain};
+use trackgen::contact::{GroundFriction, Terrain};
 use trackgen::integrate::Integrator;
+use trackgen::laws::NormalLaw;
 use trackgen::simulate::{EnergyBalance, Output, simulate};
-use trackgen::vehicle::{ContactFit, DeclaredContact};
+use trackgen::vehicle::{ContactFit, DeclaredContact, Vehicle, VehicleDynamics};
 use trackgen::vehicles::m113::M113;
-use trackgen::{Vehicle, VehicleDynamics};
 
 /// The robot, one side, with whatever `contact` section is given
 /// (the same masses, geometry and drive for all three).

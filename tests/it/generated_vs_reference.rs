@@ -21,9 +21,9 @@ include!("support/chains.rs");
 
 use proptest::prelude::*;
 use support::{assert_close, dmat, dvec};
+use trackgen::multibody::{BodyLoad, RecursiveModel, TrackModel};
 use trackgen::nalgebra::{SMatrix, SVector, Vector2};
-use trackgen::reference::ReferenceModel;
-use trackgen::{BodyLoad, RecursiveModel, TrackModel};
+use trackgen_runtime::reference::ReferenceModel;
 
 const REL: f64 = 1e-12;
 const REL_SOLVE: f64 = 1e-10;
@@ -111,7 +111,7 @@ fn compare<M: TrackModel<D>, const D: usize>(model: &M, values: &[f64]) {
         assert_eq!(m2, mass, "equations_of_motion: M_i");
         assert_eq!(f2, forces, "equations_of_motion: Q_i");
 
-        let got = trackgen::dynamics::forward_dynamics(model, &q, &qd, loads).unwrap();
+        let got = trackgen::dynamics::dense_forward_dynamics(model, &q, &qd, loads).unwrap();
         let want = reference.forward_dynamics(&dq, &dqd, loads).unwrap();
         assert_close(
             "q̈_i",
@@ -190,7 +190,7 @@ fn description_of_a_penalty_track_carries_its_spring() {
     let desc = Hetero10Penalty.description();
     assert_eq!(
         desc.loop_joint.unwrap().closure,
-        trackgen::Closure::Penalty(trackgen::laws::PenaltyJoint {
+        trackgen::multibody::Closure::Penalty(trackgen::laws::PenaltyJoint {
             stiffness: 2.5e5,
             damping: 40.0
         })

@@ -28,9 +28,8 @@ use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{EnergyBalance, Output, Results, simulate};
-use trackgen::vehicle::VehicleSystem;
-use trackgen::vehicles::m113::{M113, M113Chassis, M113Track};
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Vehicle, VehicleDynamics, VehicleSystem};
+use trackgen::vehicles::{m113::M113, m113::M113Chassis, m113::M113Track};
 
 use support::vehicle::Books;
 
@@ -132,7 +131,7 @@ fn above_mu_it_slides_with_its_books_closed() {
     };
     // The parked vehicle's configuration (its tensioner already set), on
     // ice: μ 0.5 < tan α.
-    let mut config = M113::config(
+    let mut config = M113::declared_config(
         Terrain::Ramp {
             height: 0.0,
             start: RAMP_START,

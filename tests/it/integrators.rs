@@ -30,13 +30,15 @@
 use crate::support;
 
 use support::max_of;
-use trackgen::closure::{ClosureError, ClosureMethod, PartitionOptions, multipliers};
-use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::closure::{
+    ClosureError, ClosureMethod, PartitionOptions, RecoveryError, multipliers,
+};
+use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::laws::PenaltyJoint;
+use trackgen::multibody::{BodyLoad, RecursiveModel};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
-use trackgen::simulate::{Output, SimulationError, simulate};
+use trackgen::simulate::{Output, simulate};
 use trackgen::system::{TrackSystem, TreeSystem};
-use trackgen::{BodyLoad, RecursiveModel};
 
 /// Gravity of the tumbler, declared explicitly: the exact solution uses it.
 const GRAVITY: Vector2<f64> = Vector2::new(0.0, -9.81);
@@ -368,7 +370,8 @@ fn non_finite_loads_stop_the_run_and_keep_results() {
         assert!(
             matches!(
                 root,
-                SimulationError::NonFinite { .. } | SimulationError::NewtonFailed { .. }
+                SimulationError::NonFinite { .. }
+                    | SimulationError::Recovery(RecoveryError::NewtonFailed { .. })
             ),
             "{}",
             failure.error

@@ -16,10 +16,12 @@
 //! (multiplier form against linear time) and 7e-11 (open route, and the
 //! reference route, against the generated dense route).
 
-use trackgen::RecursiveModel;
-use trackgen::dynamics::{LinearTimeSolver, STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
+use trackgen::dynamics::{
+    LinearTimeSolver, STACK_MATRIX_BYTES, dense_forward_dynamics, dense_open_dynamics,
+};
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{DVector, SVector};
-use trackgen::reference::ReferenceModel;
+use trackgen_runtime::reference::ReferenceModel;
 
 const N: usize = 256;
 const DOF: usize = N + 2;
@@ -74,7 +76,7 @@ fn the_test_exercises_the_heap_route() {
 fn dense_multiplier_form_runs_on_a_2_mib_thread() {
     let (d, dl) = on_small_stack(|| {
         let (q, qd) = state();
-        let dense = forward_dynamics(&Large, &q, &qd, &[]).unwrap();
+        let dense = dense_forward_dynamics(&Large, &q, &qd, &[]).unwrap();
         let linear = LinearTimeSolver::new(&Large)
             .forward_dynamics(&Large, &q, &qd, &[])
             .unwrap();
@@ -92,7 +94,7 @@ fn dense_multiplier_form_runs_on_a_2_mib_thread() {
 fn dense_open_route_runs_on_a_2_mib_thread() {
     let d = on_small_stack(|| {
         let (q, qd) = state();
-        let dense = open_dynamics(&Large, &q, &qd, &[]).unwrap();
+        let dense = dense_open_dynamics(&Large, &q, &qd, &[]).unwrap();
         assert!(dense.multipliers.is_none());
         let mut open = Large.description();
         open.loop_joint = None;
@@ -114,7 +116,7 @@ fn reference_route_runs_on_a_2_mib_thread() {
         let reference = ReferenceModel::new(Large.description())
             .forward_dynamics(&dynamic(&q), &dynamic(&qd), &[])
             .unwrap();
-        let dense = forward_dynamics(&Large, &q, &qd, &[]).unwrap();
+        let dense = dense_forward_dynamics(&Large, &q, &qd, &[]).unwrap();
         relative_difference(
             &SVector::from_column_slice(reference.qdd.as_slice()),
             &dense.qdd,

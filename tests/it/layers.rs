@@ -145,6 +145,8 @@ pub const MACROS: Graph = &[
 pub const FACADE: Graph = &[
     ("vehicles", &[]),
     ("__private", &[]),
+    // The README's and the guide's doctests.
+    ("guide", &[]),
     ("lib", &["vehicles"]),
 ];
 
@@ -612,10 +614,8 @@ fn check(krate: &Crate, root_name: &str, graph: Graph, base: &Path) -> (Vec<Stri
         let imports = module
             .uses
             .iter()
-            .filter_map(|u| {
-                // A glob's path names a module; a named import, an item.
-                Some((u.path.clone(), u.line, u.public))
-            })
+            // A glob's path names a module; a named import, an item.
+            .map(|u| (u.path.clone(), u.line, u.public))
             .chain(module.paths.iter().map(|(p, l)| (p.clone(), *l, false)));
         for (target, line, public) in imports {
             let Some(resolved) = krate.resolve(path, &target) else {

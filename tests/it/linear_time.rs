@@ -27,11 +27,10 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close, max_abs};
-use trackgen::ClosingJoint;
-use trackgen::dynamics::{LinearTimeSolver, forward_dynamics, track_dynamics};
+use trackgen::dynamics::{LinearTimeSolver, dense_forward_dynamics, track_dynamics};
 use trackgen::laws::PenaltyJoint;
+use trackgen::multibody::{BodyLoad, ClosingJoint, TrackModel};
 use trackgen::nalgebra::{SVector, Vector2};
-use trackgen::{BodyLoad, TrackModel};
 
 /// The generated route at `(q, q̇)` under `closing`, against the generic
 /// solver; its joint forces against Newton's second law.
@@ -101,7 +100,7 @@ fn check_generated<M: TrackModel<D>, const D: usize>(
             .bodies
             .get(i + 1)
             .map_or(joint.last_u2, |next| next.at_parent);
-        let p = |u: Vector2<f64>| trackgen::rotate_derivative(q[2 + i], u);
+        let p = |u: Vector2<f64>| trackgen::planar::rotate_derivative(q[2 + i], u);
         let net = description.gravity * body.mass + load.force + ahead - behind;
         let linear = (accel[i] + gamma[i]) * body.mass - net;
         let angular =
@@ -127,7 +126,7 @@ fn check<M: TrackModel<D>, const D: usize>(model: M, seed: u64) {
             })
             .collect();
         for loads in [&[][..], &loads[..]] {
-            let dense = forward_dynamics(&model, &q, &qd, loads).unwrap();
+            let dense = dense_forward_dynamics(&model, &q, &qd, loads).unwrap();
             let fast = solver.forward_dynamics(&model, &q, &qd, loads).unwrap();
             assert_close("q̈_i", fast.qdd.as_slice(), dense.qdd.as_slice(), 1e-10, 0.0);
             assert_eq!(fast.multipliers.is_some(), dense.multipliers.is_some());
@@ -217,8 +216,8 @@ fn agrees_with_pinocchio() {
 /// any choice of the dependent pair.
 #[test]
 fn partitioned_equations_agree_on_the_manifold() {
-    use trackgen::RecursiveModel;
     use trackgen::closure::{multipliers, partitioning};
+    use trackgen::multibody::RecursiveModel;
     use trackgen::nalgebra::SMatrix;
     let model = Hetero64Partitioned;
     let mut solver = LinearTimeSolver::new(&model);

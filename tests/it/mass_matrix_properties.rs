@@ -16,7 +16,7 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close, dmat};
-use trackgen::TrackModel;
+use trackgen::multibody::TrackModel;
 use trackgen::nalgebra::{SMatrix, SVector};
 
 fn check<M: TrackModel<D>, const D: usize>(m: &M, seed: u64) {
@@ -43,7 +43,7 @@ fn check<M: TrackModel<D>, const D: usize>(m: &M, seed: u64) {
         );
 
         if M::CLOSURE.is_constrained() {
-            let acc = trackgen::dynamics::forward_dynamics(m, &q, &qd, &[]).unwrap();
+            let acc = trackgen::dynamics::dense_forward_dynamics(m, &q, &qd, &[]).unwrap();
             let cq = m.closure_jacobian(&q);
             let gamma = m.closure_gamma(&q, &qd);
             let residual = cq * acc.qdd - gamma;
@@ -81,8 +81,9 @@ fn accelerations_of_a_closed_chain_are_not_those_of_the_open_one() {
     // Guards the test above: the multiplier form must change the answer.
     let mut rng = Lcg::new(15);
     let (q, qd) = rng.state::<6>();
-    let closed = trackgen::dynamics::forward_dynamics(&Hetero4Partitioned, &q, &qd, &[]).unwrap();
-    let open = trackgen::dynamics::open_dynamics(&Hetero4Partitioned, &q, &qd, &[]).unwrap();
+    let closed =
+        trackgen::dynamics::dense_forward_dynamics(&Hetero4Partitioned, &q, &qd, &[]).unwrap();
+    let open = trackgen::dynamics::dense_open_dynamics(&Hetero4Partitioned, &q, &qd, &[]).unwrap();
     assert!((closed.qdd - open.qdd).norm() > 1e-3 * open.qdd.norm());
     let _: SVector<f64, 6> = closed.qdd;
 }

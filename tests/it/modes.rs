@@ -3,15 +3,14 @@
 //! nonlinear free response.
 
 use trackgen::analysis::{EquilibriumOptions, Mode, equilibrium, modes};
-use trackgen::contact::{NormalLaw, Terrain};
+use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
-use trackgen::model::PartKind;
+use trackgen::laws::NormalLaw;
+use trackgen::multibody::PartKind;
 use trackgen::nalgebra::{Matrix2, Vector2};
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::Drive;
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 const FLAT: Terrain = Terrain::Flat { height: 0.0 };
 

@@ -51,10 +51,13 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close, max_abs, max_of};
-use trackgen::dynamics::{Accelerations, LinearTimeSolver, forward_dynamics, open_dynamics};
+use trackgen::dynamics::{
+    Accelerations, LinearTimeSolver, dense_forward_dynamics, dense_open_dynamics,
+};
+use trackgen::multibody::{BodyLoad, TrackModel};
 use trackgen::nalgebra::{SMatrix, SVector, Vector2};
+use trackgen::planar::rotate;
 use trackgen::vehicles::m113::M113Track;
-use trackgen::{BodyLoad, TrackModel, rotate};
 
 const TOL: f64 = 1e-10;
 
@@ -140,7 +143,10 @@ fn both_routes<M: TrackModel<D>, const D: usize>(
     loads: &[BodyLoad],
 ) -> [(&'static str, Accelerations<SVector<f64, D>>); 2] {
     [
-        ("dense", forward_dynamics(model, q, qd, loads).unwrap()),
+        (
+            "dense",
+            dense_forward_dynamics(model, q, qd, loads).unwrap(),
+        ),
         (
             "linear-time",
             solver.forward_dynamics(model, q, qd, loads).unwrap(),
@@ -220,7 +226,7 @@ fn check_cut_joint<M: TrackModel<D>, const D: usize>(model: M, seed: u64) {
             for (route, acc) in both_routes(&model, &mut solver, &q, &qd, &loads) {
                 let mut cut = loads.clone();
                 add_joint_pair(&model, &q, -acc.multipliers.unwrap(), &mut cut);
-                let open = open_dynamics(&model, &q, &qd, &cut).unwrap();
+                let open = dense_open_dynamics(&model, &q, &qd, &cut).unwrap();
                 let label = format!("{route} route, {} links: joint cut", M::BODIES);
                 assert_close(&label, open.qdd.as_slice(), acc.qdd.as_slice(), TOL, 0.0);
             }

@@ -16,8 +16,8 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::Lcg;
-use trackgen::TrackModel;
 use trackgen::closure::multipliers;
+use trackgen::multibody::TrackModel;
 use trackgen::nalgebra::SVector;
 
 fn check<M: TrackModel<D>, const D: usize>(model: M, seed: u64) {
@@ -67,7 +67,11 @@ fn check<M: TrackModel<D>, const D: usize>(model: M, seed: u64) {
             }
         }
         for j in 0..n {
-            assert_eq!(trig[j], trackgen::sin_cos(q[2 + j]), "trig of link {j}");
+            assert_eq!(
+                trig[j],
+                trackgen::trig::sin_cos(q[2 + j]),
+                "trig of link {j}"
+            );
         }
     }
 }

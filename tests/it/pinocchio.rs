@@ -13,8 +13,8 @@ include!("support/chains.rs");
 
 use support::assert_close;
 use support::pinocchio::{case, floats};
+use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::nalgebra::{SMatrix, SVector};
-use trackgen::{RecursiveModel, TrackModel};
 
 const REL: f64 = 1e-12;
 
@@ -68,7 +68,7 @@ fn check<M: TrackModel<D>, const D: usize>(model: M, name: &str) {
             REL,
             0.0,
         );
-        let acc = trackgen::dynamics::forward_dynamics(&model, &q, &qd, &[]).unwrap();
+        let acc = trackgen::dynamics::dense_forward_dynamics(&model, &q, &qd, &[]).unwrap();
         assert_close(
             &format!("{name} state {k}: q̈_i"),
             acc.qdd.as_slice(),
@@ -104,7 +104,7 @@ fn closed_10_links_match_pinocchio() {
 #[test]
 fn reference_route_matches_pinocchio() {
     use trackgen::nalgebra::DVector;
-    use trackgen::reference::ReferenceModel;
+    use trackgen_runtime::reference::ReferenceModel;
     let models = [
         ("open-3", PinocchioOpen3.description()),
         ("closed-4", PinocchioClosed4.description()),

@@ -12,9 +12,8 @@ use support::vehicle::driven;
 
 use trackgen::contact::Terrain;
 use trackgen::integrate::OdeSystem;
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 /// Drives `V` from rest for 0.6 s, then evaluates at the state, at the
 /// state with every coordinate moved, and at the state again: the first

@@ -27,9 +27,10 @@
 //! * tolerance: 1000× tighter gives an error more than 100× smaller
 //!   (third order: `1000` in the error per `1000^(1/3) = 10` in steps).
 
-use trackgen::integrate::{Integrator, JacobianReuse, OdeSystem, Ros34pw2, Stepper};
+use trackgen::integrate::{
+    Integrator, JacobianReuse, OdeSystem, Ros34pw2, SimulationError, Stepper,
+};
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::SimulationError;
 
 /// The matrix the stepper is given for `J`.
 #[derive(Clone, Copy, Debug)]

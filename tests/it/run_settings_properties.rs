@@ -58,13 +58,13 @@
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use proptest::prelude::*;
-use trackgen::Vehicle;
+use trackgen::closure::Switch;
 use trackgen::contact::Terrain;
-use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::{
-    Output, Results, Simulated, SimulationError, SimulationFailure, Switch, simulate,
-};
+use trackgen::simulate::{Output, Results, SimulationFailure, simulate};
+use trackgen::system::Simulated;
+use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
 /// Right-hand-side evaluations a case may spend.
@@ -634,7 +634,7 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
     use trackgen::assembly::{AssemblyError, assemble};
     use trackgen::contact::TerrainError;
     use trackgen::vehicle::{ConfigError, Drive, VehicleSystem};
-    use trackgen::vehicles::m113::{M113Chassis, M113Track};
+    use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
         let cases = [
@@ -758,7 +758,7 @@ fn terrain_with_a_non_finite_parameter_is_refused() {
                 M113Chassis,
                 &a,
                 M113::geometry(),
-                M113::config(terrain.clone(), Drive::Free),
+                M113::declared_config(terrain.clone(), Drive::Free),
             );
             assert!(
                 matches!(&system, Err(ConfigError::Terrain(TerrainError::NonFiniteParameter {
@@ -953,7 +953,7 @@ fn speed_drive_with_a_bad_limit_or_gain_is_refused_not_a_panic() {
 fn span_tensions_stay_finite_when_the_track_is_off_the_teeth() {
     use trackgen::assembly::assemble;
     use trackgen::vehicle::VehicleSystem;
-    use trackgen::vehicles::m113::{M113Chassis, M113Track};
+    use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
     let flat = Terrain::Flat { height: 0.0 };
     let start = assemble(
@@ -973,7 +973,7 @@ fn span_tensions_stay_finite_when_the_track_is_off_the_teeth() {
         M113Chassis,
         &lifted,
         M113::geometry(),
-        M113::config(flat, M113::speed_drive(|_| 1.0)),
+        M113::declared_config(flat, M113::speed_drive(|_| 1.0)),
     )
     .unwrap();
     let results = simulate(
@@ -1006,7 +1006,7 @@ fn span_tensions_stay_finite_when_the_track_is_off_the_teeth() {
 fn a_terrain_that_overflows_the_contact_stops_the_run_typed() {
     use trackgen::assembly::assemble;
     use trackgen::vehicle::VehicleSystem;
-    use trackgen::vehicles::m113::{M113Chassis, M113Track};
+    use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
     let terrain = Terrain::Sine {
         amplitude: -0.12631214995546478,
@@ -1029,7 +1029,7 @@ fn a_terrain_that_overflows_the_contact_stops_the_run_typed() {
         M113Chassis,
         &flat,
         M113::geometry(),
-        M113::config(terrain, M113::speed_drive(|_| 1.0)),
+        M113::declared_config(terrain, M113::speed_drive(|_| 1.0)),
     )
     .unwrap();
     let f = simulate(

@@ -19,9 +19,9 @@ include!("support/chains.rs");
 
 use support::{Lcg, assert_close};
 use trackgen::dynamics::ShiftedChain;
+use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::nalgebra::{DMatrix, DVector, Matrix3, SVector, Vector3};
 use trackgen::vehicles::m113::M113Track;
-use trackgen::{RecursiveModel, TrackModel};
 
 fn check<M: TrackModel<D>, const D: usize>(label: &str, model: M, seed: u64) {
     let n = M::BODIES;

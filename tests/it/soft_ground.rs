@@ -13,12 +13,13 @@
 
 use crate::support;
 
-use trackgen::BodyLoad;
-use trackgen::Vehicle;
-use trackgen::contact::soft_ground::SoftGround;
-use trackgen::contact::soil::{Soil, SoilError, SoilPreset};
-use trackgen::contact::{BodyState, ContactForce, ShoeGeometry, Terrain};
+use trackgen::contact::{
+    BodyState, ContactForce, ShoeGeometry, Terrain, soft_ground::SoftGround, soil::Soil,
+    soil::SoilError, soil::SoilPreset,
+};
+use trackgen::multibody::BodyLoad;
 use trackgen::nalgebra::Vector2;
+use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
 use support::Lcg;

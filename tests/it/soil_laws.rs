@@ -13,7 +13,7 @@
 //! - The inverse of the static sinkage, and the memory's continuity at its
 //!   yield point: 1e-12 relative (a handful of roundings).
 
-use trackgen::contact::soil::{Soil, SoilError, SoilMemory, SoilPreset};
+use trackgen::contact::{soil::Soil, soil::SoilError, soil::SoilMemory, soil::SoilPreset};
 
 fn close(label: &str, got: f64, want: f64, abs: f64) {
     assert!(

@@ -28,10 +28,11 @@
 //!   dt` to 1e-9 of the work (the quadrature of the test, Simpson's on a
 //!   fine grid), and the dissipation never negative (exactly).
 
-use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::laws::Stiction;
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::{Output, Simulated, SimulationError, simulate};
+use trackgen::simulate::{Output, simulate};
+use trackgen::system::Simulated;
 
 const G: f64 = 9.81;
 

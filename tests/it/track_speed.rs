@@ -33,20 +33,19 @@
 //! - **The drive aims for the mean speed**: the mean track speed within
 //!   0.5 % of the command (measured within 0.05 %).
 
-use trackgen::Vehicle;
-use trackgen::contact::{Friction, GroundFriction, Terrain};
+use trackgen::contact::{GroundFriction, Terrain};
 use trackgen::integrate::Integrator;
+use trackgen::laws::Friction;
 use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::slip;
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
+use trackgen::vehicle::{Vehicle, slip};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 /// The mean hull speed over the mean track speed over the last 20 s of a
 /// 30 s run at `speed` (m/s) on flat ground (with regularised ground
 /// friction if asked), and the mean track speed.
 fn ratio<V: Vehicle>(speed: f64, regularised: bool) -> (f64, f64) {
     let drive = V::speed_drive(move |t| speed * ((t - 0.5) / 2.0).clamp(0.0, 1.0));
-    let mut config = V::config(Terrain::Flat { height: 0.0 }, drive);
+    let mut config = V::declared_config(Terrain::Flat { height: 0.0 }, drive);
     if regularised {
         let mu = config.ground.friction.mu();
         config.ground.friction = GroundFriction::Regularised(Friction { mu, slip: 0.1 });

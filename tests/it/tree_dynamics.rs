@@ -19,10 +19,10 @@ use crate::support;
 include!("support/chains.rs");
 
 use support::{Lcg, assert_close, max_abs};
-use trackgen::dynamics::open_dynamics;
+use trackgen::dynamics::dense_open_dynamics;
+use trackgen::multibody::{BodyLoad, RecursiveModel};
 use trackgen::nalgebra::{SVector, Vector2};
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
-use trackgen::{BodyLoad, RecursiveModel};
+use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
 trackgen::model! {
     /// A small sprung vehicle on a 9° slope of gravity.
@@ -56,7 +56,7 @@ fn check<M: RecursiveModel<D>, const D: usize>(name: &str, model: M, seed: u64) 
             .collect();
         let trig: Vec<(f64, f64)> = (0..n).map(|b| q[2 + b].sin_cos()).collect();
         for loads in [&[][..], &loads[..]] {
-            let dense = open_dynamics(&model, &q, &qd, loads).unwrap().qdd;
+            let dense = dense_open_dynamics(&model, &q, &qd, loads).unwrap().qdd;
             let mut fast = SVector::<f64, D>::zeros();
             model.tree_dynamics(&trig, &qd, loads, &mut fast).unwrap();
             assert_close(name, fast.as_slice(), dense.as_slice(), 1e-10, 0.0);

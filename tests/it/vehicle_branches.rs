@@ -54,18 +54,16 @@
 
 use crate::support;
 
-use trackgen::ClosingJoint;
-use trackgen::Vehicle;
 use trackgen::closure::{ClosureMethod, MultiplierOptions};
 use trackgen::contact::Terrain;
-use trackgen::dynamics::forward_dynamics;
+use trackgen::dynamics::dense_forward_dynamics;
 use trackgen::integrate::Integrator;
 use trackgen::laws::PenaltyJoint;
+use trackgen::multibody::{BodyLoad, ClosingJoint, RecursiveModel, TrackModel};
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::Drive;
-use trackgen::vehicles::m113::{self, M113};
-use trackgen::{BodyLoad, RecursiveModel, TrackModel};
+use trackgen::vehicle::{Drive, Vehicle};
+use trackgen::vehicles::{m113, m113::M113};
 
 use support::vehicle::{Books, m113_with};
 use support::{Lcg, assert_close, max_abs, max_of};
@@ -371,7 +369,7 @@ fn joint_tensions<M: TrackModel<D>, const D: usize>(
         .unwrap();
     let spans = model.description().link_spans().unwrap();
     let tensions = (0..n)
-        .map(|i| forces[i].dot(&trackgen::rotate(q[2 + i], spans[i]).normalize()))
+        .map(|i| forces[i].dot(&trackgen::planar::rotate(q[2 + i], spans[i]).normalize()))
         .collect();
     (qdd, tensions)
 }
@@ -404,13 +402,17 @@ fn declared_penalty_tensions_match_the_open_chain_with_the_spring_as_loads() {
         let gap = Sprung8.closure(&q);
         let rate = Sprung8.closure_jacobian(&q) * qd;
         let spring = -gap * k - rate * c;
-        let arm = |theta: f64, u: Vector2<f64>| trackgen::rotate(theta, u);
+        let arm = |theta: f64, u: Vector2<f64>| trackgen::planar::rotate(theta, u);
         let mut with_spring = loads.clone();
         with_spring[7] = with_spring[7].plus(BodyLoad::force_at(spring, arm(q[9], last_u2)));
         with_spring[0] = with_spring[0].plus(BodyLoad::force_at(-spring, arm(q[2], first_u1)));
 
-        let sprung = forward_dynamics(&Sprung8, &q, &qd, &loads).unwrap().qdd;
-        let open = forward_dynamics(&Open8, &q, &qd, &with_spring).unwrap().qdd;
+        let sprung = dense_forward_dynamics(&Sprung8, &q, &qd, &loads)
+            .unwrap()
+            .qdd;
+        let open = dense_forward_dynamics(&Open8, &q, &qd, &with_spring)
+            .unwrap()
+            .qdd;
         assert_close("q̈_i", sprung.as_slice(), open.as_slice(), 1e-10, 1.0);
 
         let spring_across = ClosingJoint::Cut { force: spring };

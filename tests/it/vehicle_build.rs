@@ -13,11 +13,10 @@ use crate::support;
 use trackgen::closure::ClosureMethod;
 use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::simulate::{Output, Simulated, simulate};
-use trackgen::vehicle::build;
-use trackgen::vehicles::m113::{M113, M113Chassis};
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::simulate::{Output, simulate};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Vehicle, VehicleDynamics, build};
+use trackgen::vehicles::{m113::M113, m113::M113Chassis, marder::Marder};
 
 use support::vehicle::m113_with;
 
@@ -42,7 +41,7 @@ fn the_test_helper_builds_the_m113_that_ships() {
     let drive = || M113::speed_drive(|t| 2.0 * t.min(1.0));
     let mut shipped = M113::system(FLAT, drive()).expect("the M113 builds");
     let mut helper = m113_with(FLAT, drive(), ClosureMethod::Declared);
-    let mut built = build::<M113>(M113::config(FLAT, drive())).expect("the M113 builds");
+    let mut built = build::<M113>(M113::declared_config(FLAT, drive())).expect("the M113 builds");
     let (y, dy) = start(&mut shipped);
     for (name, other) in [("helper", start(&mut helper)), ("build", start(&mut built))] {
         assert_eq!(bits(&y), bits(&other.0), "{name}: start state");
@@ -51,7 +50,7 @@ fn the_test_helper_builds_the_m113_that_ships() {
     // The tensioner is set: its spring's preload is the declared one plus
     // k φ₀ for the angle the assembly set the arm to (not zero for the
     // M113's track), and the other arms are as declared.
-    let declared = M113::config(FLAT, drive()).arms;
+    let declared = M113::declared_config(FLAT, drive()).arms;
     let running = &shipped.config().arms;
     for (d, r) in declared.iter().zip(running) {
         assert_eq!(d.body, r.body);

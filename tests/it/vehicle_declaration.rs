@@ -25,18 +25,15 @@
 
 use crate::support;
 
-use trackgen::Vehicle;
-use trackgen::contact::sprocket::ToothProfile;
 use trackgen::contact::{
-    ContactLaws, Friction, GroundFriction, GroundLaws, NormalLaw, ShoeGeometry, Terrain,
+    ContactLaws, GroundFriction, GroundLaws, ShoeGeometry, Terrain, sprocket::ToothProfile,
 };
 use trackgen::integrate::Integrator;
-use trackgen::laws::ParameterError;
-use trackgen::laws::Stiction;
+use trackgen::laws::{Friction, NormalLaw, ParameterError, Stiction};
 use trackgen::nalgebra::Vector2;
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::{BuildError, ConfigError, Drive, VehicleConfig};
-use trackgen::vehicles::m113::{self, M113, M113Chassis};
+use trackgen::vehicle::{BuildError, ConfigError, Drive, Vehicle, VehicleConfig};
+use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis};
 
 use support::vehicle::Books;
 
@@ -65,7 +62,7 @@ fn m113_declaration_carries_the_m113_figures() {
             arc_radius: 0.089,
         }
     );
-    let declared = M113::config(FLAT, Drive::Free);
+    let declared = M113::declared_config(FLAT, Drive::Free);
     let hunt_crossley = |stiffness, chi| NormalLaw::HuntCrossley {
         stiffness,
         exponent: 1.0,
@@ -173,8 +170,8 @@ fn arm_deflection(results: &Results) -> f64 {
 
 #[test]
 fn arm_rates_are_overridden_at_run_time() {
-    let base = driven(M113::config(FLAT, drive()));
-    let mut same = M113::config(FLAT, drive());
+    let base = driven(M113::declared_config(FLAT, drive()));
+    let mut same = M113::declared_config(FLAT, drive());
     same.arms = std::mem::take(&mut same.arms);
     let same = driven(same);
     assert_eq!(base.times(), same.times());
@@ -183,7 +180,7 @@ fn arm_rates_are_overridden_at_run_time() {
         same.column("energy").expect("energy")
     );
 
-    let mut stiff = M113::config(FLAT, drive());
+    let mut stiff = M113::declared_config(FLAT, drive());
     for arm in stiff.arms.iter_mut().take(5) {
         arm.spring.stiffness *= 2.0;
         arm.spring.damping *= 2.0;
@@ -205,7 +202,7 @@ fn arm_rates_are_overridden_at_run_time() {
 
 #[test]
 fn bad_arm_overrides_are_config_errors() {
-    let mut missing = M113::config(FLAT, Drive::Free);
+    let mut missing = M113::declared_config(FLAT, Drive::Free);
     missing.arms.pop();
     let error = M113::system_with(missing).err().expect("refused");
     assert!(
@@ -213,7 +210,7 @@ fn bad_arm_overrides_are_config_errors() {
             if configured.len() == 5 && declared.len() == 6),
         "{error}"
     );
-    let mut negative = M113::config(FLAT, Drive::Free);
+    let mut negative = M113::declared_config(FLAT, Drive::Free);
     negative.arms[2].spring.damping = -1.0;
     let error = M113::system_with(negative).err().expect("refused");
     assert!(
@@ -231,5 +228,5 @@ fn bad_arm_overrides_are_config_errors() {
 
 /// The body of the third declared arm.
 fn negative_body() -> usize {
-    M113::config(FLAT, Drive::Free).arms[2].body
+    M113::declared_config(FLAT, Drive::Free).arms[2].body
 }

@@ -19,13 +19,11 @@
 
 use crate::support;
 
-use trackgen::contact::Terrain;
-use trackgen::contact::soil::SoilPreset;
+use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::build;
+use trackgen::vehicle::{Vehicle, VehicleDynamics, build};
 use trackgen::vehicles::m113::M113;
-use trackgen::{Vehicle, VehicleDynamics};
 
 use support::vehicle::Books;
 
@@ -34,7 +32,7 @@ fn ramp(t: f64) -> f64 {
 }
 
 fn run(integrator: Integrator, soil: bool, duration: f64) -> Results {
-    let mut config = M113::config(Terrain::Flat { height: 0.0 }, M113::speed_drive(ramp));
+    let mut config = M113::declared_config(Terrain::Flat { height: 0.0 }, M113::speed_drive(ramp));
     if soil {
         config.soil = Some(SoilPreset::DrySand.soil());
     }
@@ -70,7 +68,7 @@ fn agrees_with_dormand_prince_through_switches() {
     );
     assert!(!results.switches.is_empty(), "the run switches partition");
     assert!(results.stats.restarts >= results.switches.len() as u64);
-    let system = build::<M113>(M113::config(
+    let system = build::<M113>(M113::declared_config(
         Terrain::Flat { height: 0.0 },
         M113::speed_drive(ramp),
     ))

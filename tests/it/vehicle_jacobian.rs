@@ -24,13 +24,11 @@
 use crate::support;
 use support::vehicle::{driven, driven_with};
 
-use trackgen::contact::Terrain;
-use trackgen::contact::soil::SoilPreset;
+use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::OdeSystem;
 use trackgen::nalgebra::DVector;
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 fn check<V: Vehicle>(label: &str, terrain: Terrain, duration: f64) {
     let (system, t, y) = driven::<V>(terrain, duration, 1e-4);

@@ -61,11 +61,11 @@ use trackgen::assembly::{AssemblyError, assemble};
 use trackgen::closure::ClosureMethod;
 use trackgen::contact::{Terrain, TerrainError};
 use trackgen::integrate::Integrator;
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::Drive;
-use trackgen::vehicles::m113::{self, M113, M113Chassis, M113Track};
-use trackgen::{RecursiveModel, Vehicle};
+use trackgen::vehicle::{Drive, Vehicle};
+use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis, m113::M113Track};
 
 use support::vehicle::{Books, m113_pitch_radius, m113_weight, m113_with, mean, window};
 use support::{max_abs, max_of};

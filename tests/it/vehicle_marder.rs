@@ -33,11 +33,10 @@
 
 use crate::support;
 
-use trackgen::Vehicle;
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::Drive;
+use trackgen::vehicle::{Drive, Vehicle};
 use trackgen::vehicles::marder::Marder;
 
 use support::vehicle::{Books, mean, window};

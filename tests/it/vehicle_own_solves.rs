@@ -21,13 +21,11 @@ use crate::support;
 use support::vehicle::{driven, driven_with};
 
 use trackgen::analysis::state_jacobian;
-use trackgen::contact::Terrain;
-use trackgen::contact::soil::SoilPreset;
+use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::{ImplicitSolve, OdeSystem};
 use trackgen::nalgebra::{DMatrix, DVector};
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 fn own(system: &mut impl OdeSystem) -> &mut dyn ImplicitSolve {
     system

@@ -6,13 +6,13 @@ use crate::support;
 
 use support::arms::{add_arm_torques, arm_energy};
 use support::max_abs;
-use trackgen::ChassisModel;
 use trackgen::closure::ClosureMethod;
 use trackgen::integrate::Integrator;
+use trackgen::multibody::ChassisModel;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::system::{Pair, TrackSystem, TreeSystem};
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
 /// The motor's torque, N m: on the sprocket, and its reaction on the frame.
 const TORQUE: f64 = 2000.0;

@@ -42,17 +42,16 @@
 
 use crate::support;
 
-use trackgen::Vehicle;
-use trackgen::VehicleDynamics;
-use trackgen::contact::soft_ground::{Rut, SoftGround};
-use trackgen::contact::soil::SoilPreset;
-use trackgen::contact::{BodyState, ShoeGeometry, Terrain};
+use trackgen::contact::{
+    BodyState, ShoeGeometry, Terrain, soft_ground::Rut, soft_ground::SoftGround, soil::SoilPreset,
+};
 use trackgen::integrate::Integrator;
+use trackgen::multibody::{BodyLoad, RecursiveModel};
 use trackgen::nalgebra::{SVector, Vector2};
+use trackgen::planar::rotate;
 use trackgen::simulate::{Output, Results, simulate};
-use trackgen::vehicle::{Drive, VehicleConfig};
-use trackgen::vehicles::m113::{self, M113, M113System, M113Track};
-use trackgen::{BodyLoad, RecursiveModel, rotate};
+use trackgen::vehicle::{Drive, Vehicle, VehicleConfig, VehicleDynamics};
+use trackgen::vehicles::{m113, m113::M113, m113::M113System, m113::M113Track};
 
 use support::contact::soil_forces;
 use support::vehicle::{Books, mean, window};
@@ -66,7 +65,7 @@ fn integrator(tolerance: f64) -> Integrator {
 }
 
 fn on_dry_sand(drive: Drive, damping: Option<f64>) -> VehicleConfig {
-    let mut config = M113::config(Terrain::Flat { height: 0.0 }, drive);
+    let mut config = M113::declared_config(Terrain::Flat { height: 0.0 }, drive);
     let mut soil = SoilPreset::DrySand.soil();
     if let Some(r) = damping {
         soil.damping = r;

@@ -2,8 +2,9 @@
 // exists: code that uses each of them reports nothing more than the one
 // real error (a negative mass).
 use trackgen::contact::Terrain;
-use trackgen::simulate::Simulated;
-use trackgen::{RecursiveModel, TrackModel, Vehicle, VehicleDynamics};
+use trackgen::system::Simulated;
+use trackgen::multibody::{RecursiveModel, TrackModel};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
 trackgen::model! {
     pub vehicle Tank {

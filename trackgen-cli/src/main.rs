@@ -30,11 +30,11 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::contact::Terrain;
-use trackgen::model::PartKind;
-use trackgen::simulate::{Background, Output, Simulated, StreamFailure, simulate_into};
-use trackgen::vehicles::m113::M113;
-use trackgen::vehicles::marder::Marder;
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::multibody::PartKind;
+use trackgen::simulate::{Background, Output, StreamFailure, simulate_into};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::vehicles::{m113::M113, marder::Marder};
 
 use cli::{Args, Ground, Start};
 use console::say;
@@ -98,7 +98,7 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     };
     let assembling = Instant::now();
     let config = || {
-        let mut config = V::config(terrain.clone(), V::speed_drive(args.speed_profile()));
+        let mut config = V::declared_config(terrain.clone(), V::speed_drive(args.speed_profile()));
         if let Ground::Soil(soil) = args.terrain {
             config.soil = Some(soil.soil());
         }

@@ -6,7 +6,7 @@ use std::path::Path;
 use std::time::Instant;
 
 use trackgen::analysis::{Equilibrium, EquilibriumOptions, Mode, equilibrium, mode_of, modes};
-use trackgen::{Vehicle, VehicleDynamics};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
 use crate::animation;
 use crate::console::say;

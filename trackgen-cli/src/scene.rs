@@ -1,10 +1,11 @@
 //! The vehicle's geometry at recorded times, for pictures.
 
 use trackgen::contact::Terrain;
-use trackgen::model::PartKind;
+use trackgen::multibody::PartKind;
 use trackgen::nalgebra::Vector2;
+use trackgen::planar::rotate;
 use trackgen::simulate::Results;
-use trackgen::{Vehicle, VehicleDynamics, rotate};
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
 /// One picture's worth of geometry.
 #[derive(Debug, Clone)]

@@ -28,8 +28,8 @@ mod programs;
 use std::path::{Path, PathBuf};
 
 use programs::{Csv, assert_rejected, assert_success, check_svg, run, scratch, text};
-use trackgen::RecursiveModel;
-use trackgen::vehicles::m113::{M113Chassis, M113Track};
+use trackgen::multibody::RecursiveModel;
+use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 
 /// The main job's binary.
 fn main_job() -> PathBuf {

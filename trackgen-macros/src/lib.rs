@@ -25,7 +25,7 @@ mod num;
 mod parse;
 
 #[cfg(test)]
-mod fuzz;
+mod properties;
 #[cfg(test)]
 mod tests;
 

@@ -1,28 +1,43 @@
 //! Runtime of [trackgen](https://docs.rs/trackgen): everything that does not
-//! depend on a particular vehicle, in layers that import only downward
-//! (`tests/layers.rs` holds them to it):
+//! depend on a particular vehicle, in layers by physical role. A module
+//! imports only the modules its layer's edges allow (a graph, not a total
+//! order: contact does not need the solvers, nor the solvers contact), each
+//! item from the module that defines it, and no two files need each other;
+//! `tests/it/layers.rs` reads every file with `syn` and holds the code to
+//! this list.
 //!
 //! 1. **core**: [`planar`] (the rotation, kept as its `(sin, cos)`; the
-//!    cross product), the trigonometry ([`sin_cos_each`]), the switch to
-//!    AVX2 builds of the hot loops (`wide`), the typed errors, [`laws`]
-//!    (every force law with its energy terms) and [`model`] (the traits generated code implements, the run-time
-//!    description of the same body tree, the closing joint);
-//! 2. [`dynamics`]: forward dynamics at a given state (the dense
-//!    cross-check, the linear-time route as declared);
-//! 3. [`closure`]: the three ways of closing the track loop in time
-//!    (partitioning with switching, multipliers, penalty);
-//! 4. [`integrate`]: RK4, Dormand-Prince 5(4), Bogacki-Shampine 3(2),
-//!    Rosenbrock ROS2;
-//! 5. [`system`]: a track, a body tree or two side by side as systems a
-//!    simulation runs;
-//! 6. [`contact`]: terrain, detection of the link-ground, link-wheel and
-//!    sprocket contacts, their response, soft soil;
-//! 7. [`assembly`]: wrapping a track round its wheels and placing a
-//!    vehicle at t = 0;
-//! 8. [`vehicle`]: a declared vehicle as a type, the one recipe that
-//!    builds it, and its evaluation in stages;
-//! 9. [`simulate`]: the driver, results and sinks (CSV, Arrow IPC, running
-//!    summaries), with typed errors that keep the results.
+//!    cross product, `perp`, `spin`), the trigonometry of every body at
+//!    once ([`trig`]), and `simd`, the one switch to AVX2 builds of the hot
+//!    loops;
+//! 2. [`laws`]: every force law with its energy terms (contact's normal
+//!    laws and friction, stiction, the torsion spring, the penalty joint);
+//! 3. [`multibody`]: the traits generated code implements, the run-time
+//!    description of the same body tree, the loads on its bodies, the
+//!    closing joint, [`DynamicsError`](multibody::DynamicsError);
+//! 4. [`contact`]: terrain; detection of the link-ground, link-wheel and
+//!    sprocket contacts; their response; soft soil; each contact's
+//!    Jacobian;
+//! 5. solvers: [`dynamics`] (forward dynamics at a state: the generated
+//!    O(n) route, the dense cross-check, their derivatives, the shifted
+//!    chain), [`closure`] (closing the loop in time: partitioning with
+//!    switching, multipliers, penalty; [`RecoveryError`](closure::RecoveryError)),
+//!    `reference` (feature `oracle`: the textbook route);
+//! 6. time: [`integrate`] (RK4, Dormand-Prince 5(4), Bogacki-Shampine
+//!    3(2), ROS2, ROS34PW2, the automatic choice;
+//!    [`SimulationError`](integrate::SimulationError), which wraps the
+//!    lower layers' errors with the time they happened at);
+//! 7. subsystems: [`system`] (a track, a body tree or two side by side as
+//!    systems a simulation runs), [`assembly`] (wrapping a track round its
+//!    wheels, placing a vehicle at t = 0);
+//! 8. [`vehicle`]: a declared vehicle as a type and the one recipe that
+//!    builds it; its evaluation in stages over a long-lived workspace
+//!    (kinematics → detection → force elements with their energy books →
+//!    dynamics), the state's one layout, and the one linearisation that
+//!    feeds both the exact Jacobian and ROS34PW2's `W`;
+//! 9. drivers: [`simulate`] (runs, results, sinks: CSV, Arrow IPC, running
+//!    summaries; a failed run keeps what it computed) and [`analysis`]
+//!    (the state Jacobian, equilibrium, modes, sensitivities).
 //!
 //! With the `oracle` feature, `reference` (the textbook route: dense `H`
 //! of the paper's eq. (6) and (11), `Hᵀ M H`, `Hᵀ (Q − M γ)`), the generic
@@ -36,55 +51,48 @@
 
 #![warn(missing_docs)]
 
-pub mod analysis;
-pub mod assembly;
-pub mod closure;
-pub mod contact;
-pub mod dynamics;
-pub mod integrate;
-pub mod laws;
-pub mod model;
+// 1. core
 pub mod planar;
+mod simd;
+pub mod trig;
+// 2-4. physics
+pub mod contact;
+pub mod laws;
+pub mod multibody;
+// 5. solvers
+pub mod closure;
+pub mod dynamics;
 #[cfg(feature = "oracle")]
 pub mod reference;
-pub mod simulate;
+// 6. time
+pub mod integrate;
+// 7. subsystems
+pub mod assembly;
 pub mod system;
+// 8. the vehicle
 pub mod vehicle;
-
-mod error;
-mod trig;
-mod wide;
-
-pub use dynamics::Accelerations;
-pub use error::{DynamicsError, SettingsError, SimulationError};
-pub use model::{
-    ArmSpring, BodyDescription, BodyLoad, ChassisModel, ChassisPart, ClosingJoint, Closure,
-    LoopJoint, PartKind, RecursiveModel, TrackModel, TreeDescription,
-};
-pub use planar::{rotate, rotate_derivative};
-pub use trig::{sin_cos, sin_cos_each};
-pub use vehicle::{Vehicle, VehicleDynamics};
+// 9. drivers
+pub mod analysis;
+pub mod simulate;
 
 /// The kernels and types that generated code names by absolute path, and
-/// nothing else. Not part of the public API: it may change in any release.
+/// nothing else (`tests/it/private_paths.rs` holds it to the snapshots of
+/// generated code). Not part of the public API: it may change in any
+/// release.
 #[doc(hidden)]
 pub mod __private {
-    pub use ::core;
     pub use ::nalgebra;
 
-    pub use crate::contact::ShoeGeometry;
     pub use crate::contact::sprocket::ToothProfile;
+    pub use crate::contact::{ShoeGeometry, Terrain};
     /// The generated linear-time solve's per-thread tables and steps.
     pub mod elimination {
         pub use crate::dynamics::elimination::{JointTerms, LinkTerms, Sweep, back, with_tables};
     }
-    pub use crate::DynamicsError;
-    pub use crate::contact::{ContactLaws, Terrain};
-    pub use crate::laws::{Friction, NormalLaw};
-    pub use crate::laws::{PenaltyJoint, TorsionSpring};
-    pub use crate::model::{
+    pub use crate::laws::{NormalLaw, PenaltyJoint, TorsionSpring};
+    pub use crate::multibody::{
         ArmSpring, BodyDescription, BodyLoad, ChassisModel, ChassisPart, ClosingJoint, Closure,
-        LoopJoint, PartKind, RecursiveModel, TrackModel, TreeDescription,
+        DynamicsError, LoopJoint, PartKind, RecursiveModel, TrackModel, TreeDescription,
     };
     pub use crate::trig::{sin_cos, sin_cos_each};
     pub use crate::vehicle::{

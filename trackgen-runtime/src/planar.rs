@@ -1,8 +1,9 @@
 //! Planar geometry (spec §0): the rotation `A(θ)`, kept as its
 //! `(sin θ, cos θ)` so that every body's trigonometry is computed once per
 //! evaluation (as nalgebra's `UnitComplex` keeps `(cos, sin)`), and the
-//! planar cross product. The one owner of both: every rotation of a
-//! body-fixed vector and every moment arm in the runtime goes through here.
+//! planar cross product and quarter turn. The one owner of them: every
+//! rotation of a body-fixed vector and every moment arm in the runtime
+//! goes through here.
 
 use nalgebra::Vector2;
 
@@ -24,7 +25,7 @@ impl Rotation {
     }
 
     /// `A(θ)` from `(sin θ, cos θ)` worked out already (the generated code's
-    /// vectorised [`sin_cos_each`](crate::sin_cos_each), say).
+    /// vectorised [`sin_cos_each`](crate::trig::sin_cos_each), say).
     #[inline]
     pub const fn from_sin_cos((sin, cos): (f64, f64)) -> Rotation {
         Rotation { sin, cos }
@@ -78,9 +79,16 @@ pub fn cross(a: Vector2<f64>, b: Vector2<f64>) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
+/// `⟂v = (−v_y, v_x)`: `v` turned a quarter turn counter-clockwise, so
+/// that `A_θ(θ) v = ⟂(A(θ) v)` and `cross(a, b) = ⟂a · b`.
+#[inline]
+pub fn perp(v: Vector2<f64>) -> Vector2<f64> {
+    Vector2::new(-v.y, v.x)
+}
+
 /// `ω × r` for an angular velocity `ω` about the plane's normal: the
 /// velocity of a point at offset `r` from the axis, `ω (−r_y, r_x)`.
 #[inline]
 pub fn spin(omega: f64, r: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-r.y, r.x) * omega
+    perp(r) * omega
 }

@@ -18,12 +18,12 @@ use std::path::PathBuf;
 use arrow_array::{Array, Float64Array};
 use arrow_ipc::reader::FileReader;
 use nalgebra::DVector;
-use trackgen_runtime::integrate::{Integrator, OdeSystem};
+use trackgen_runtime::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen_runtime::simulate::{
-    ArrowSink, Background, CsvSink, Output, Results, RunError, RunReport, Select, Simulated,
-    SimulationError, Sink, SinkError, StreamFailure, Summary, Tee, Thinned, simulate,
-    simulate_into,
+    ArrowSink, Background, CsvSink, Output, Results, RunError, RunReport, Select, Sink, SinkError,
+    StreamFailure, Summary, Tee, Thinned, simulate, simulate_into,
 };
+use trackgen_runtime::system::Simulated;
 
 const OMEGA: f64 = 2.0 * std::f64::consts::PI;
 const STEP: f64 = 1e-3;

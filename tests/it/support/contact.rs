@@ -3,12 +3,11 @@
 //! contact's response applied to both bodies): what the contact tests
 //! check by hand.
 
-use trackgen::BodyLoad;
-use trackgen::contact::soft_ground::SoftGround;
-use trackgen::contact::sprocket::{self, ToothProfile};
 use trackgen::contact::{
-    BodyState, Contact, ContactForce, ContactLaws, ShoeGeometry, Terrain, ground, wheel,
+    BodyState, Contact, ContactForce, ContactLaws, ShoeGeometry, Terrain, ground,
+    soft_ground::SoftGround, sprocket, sprocket::ToothProfile, wheel,
 };
+use trackgen::multibody::BodyLoad;
 
 /// The ground's forces on `links` under `laws`, added to `loads`; every
 /// contact passed to `each` with its link.
@@ -100,9 +99,9 @@ pub struct GroundContact {
     /// The profile.
     pub terrain: Terrain,
     /// Normal law per contact point.
-    pub normal: trackgen::contact::NormalLaw,
+    pub normal: trackgen::laws::NormalLaw,
     /// Friction per contact point.
-    pub friction: trackgen::contact::Friction,
+    pub friction: trackgen::laws::Friction,
 }
 
 impl GroundContact {
@@ -126,9 +125,9 @@ impl GroundContact {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WheelContact {
     /// Normal law.
-    pub normal: trackgen::contact::NormalLaw,
+    pub normal: trackgen::laws::NormalLaw,
     /// Friction.
-    pub friction: trackgen::contact::Friction,
+    pub friction: trackgen::laws::Friction,
 }
 
 impl WheelContact {
@@ -156,9 +155,9 @@ pub struct SprocketContact {
     /// The teeth.
     pub profile: ToothProfile,
     /// Normal law.
-    pub normal: trackgen::contact::NormalLaw,
+    pub normal: trackgen::laws::NormalLaw,
     /// Friction.
-    pub friction: trackgen::contact::Friction,
+    pub friction: trackgen::laws::Friction,
 }
 
 impl SprocketContact {

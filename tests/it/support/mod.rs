@@ -112,9 +112,9 @@ impl Lcg {
 /// (`trackgen::vehicle::arms`): their torques as loads, their energy,
 /// their dampers' power.
 pub mod arms {
+    use trackgen::multibody::{BodyLoad, ChassisModel};
     use trackgen::nalgebra::SVector;
-    use trackgen::vehicle::arms::{apply, declared};
-    use trackgen::{BodyLoad, ChassisModel};
+    use trackgen::vehicle::{arms::apply, arms::declared};
 
     /// Adds every compiled arm's torque to `loads`.
     pub fn add_arm_torques<M: ChassisModel<D>, const D: usize>(

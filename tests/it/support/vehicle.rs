@@ -5,18 +5,19 @@
 use trackgen::closure::ClosureMethod;
 use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::{Results, Simulated};
-use trackgen::vehicle::{Drive, VehicleConfig, build};
-use trackgen::vehicles::m113::{self, M113, M113Chassis, M113System, M113Track};
-use trackgen::{RecursiveModel, Vehicle};
+use trackgen::simulate::Results;
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Drive, Vehicle, VehicleConfig, build};
+use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis, m113::M113System, m113::M113Track};
 
 use super::{max_abs, min_of};
 
 /// The M113 as it ships (`M113::system`: its declared configuration,
 /// assembled with its tensioner set), its loop closed by `closure`.
 pub fn m113_with(terrain: Terrain, drive: Drive, closure: ClosureMethod) -> M113System {
-    let mut config = M113::config(terrain, drive);
+    let mut config = M113::declared_config(terrain, drive);
     config.closure = closure;
     build::<M113>(config).expect("the M113 builds")
 }
@@ -117,7 +118,7 @@ pub fn driven_with<V: Vehicle>(
     duration: f64,
     tolerance: f64,
 ) -> (V::System, f64, DVector<f64>) {
-    let mut config = V::config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
+    let mut config = V::declared_config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
     change(&mut config);
     let mut system = build::<V>(config).expect("builds");
     let mut y = system.initial_state();

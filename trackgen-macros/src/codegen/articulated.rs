@@ -29,7 +29,7 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
 use super::lin::{Lin, LinVec};
-use super::runtime;
+use super::runtime_path::runtime;
 use super::tree::Tree;
 use crate::num::Num;
 

@@ -4,7 +4,7 @@
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 
-use super::runtime;
+use super::runtime_path::runtime;
 use super::track::{default_docs, track_type};
 use super::tree::Tree;
 use crate::ir::{Item, PartKind, Vehicle};
@@ -66,7 +66,7 @@ fn chassis_type(
     let n = tree.len();
     let statements = super::articulated::tree_dynamics(&tree);
     let loads = super::recursive::loads_or_zero(n, &rt);
-    let tree_dynamics = super::flat::flatten(quote! {
+    let tree_dynamics = super::scopes::shallow_scopes(quote! {
         ::core::assert_eq!(trig.len(), #n, "one (sin θ, cos θ) per body");
         #loads
         #statements

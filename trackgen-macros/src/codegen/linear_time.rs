@@ -32,8 +32,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 use super::lin::Lin;
-use super::per_link::{PerLink, e};
-use super::runtime;
+use super::per_link::{PerLink, expr};
+use super::runtime_path::runtime;
 use crate::ir::Track;
 use crate::num::Num;
 
@@ -96,7 +96,7 @@ impl Fields {
             .plus(uy.clone().times(&quote!(c)))
             .scaled(&Num::Known(-1.0));
         let y = ux.times(&quote!(c)).minus(uy.times(&quote!(s)));
-        (e(x), e(y))
+        (expr(x), expr(y))
     }
 
     /// Everything of link `i` that the joint blocks need, bound as locals
@@ -110,8 +110,8 @@ impl Fields {
         let (p2x, p2y) = Fields::lever(&self.u2, i);
         let ij = self.inv_inertia.at(i.clone());
         let im = self.inv_mass.at(i.clone());
-        let over_j = |v: TokenStream| e(ij.clone().times(&v));
-        let plus_m = |v: TokenStream| e(ij.clone().times(&v).plus(im.clone()));
+        let over_j = |v: TokenStream| expr(ij.clone().times(&v));
+        let plus_m = |v: TokenStream| expr(ij.clone().times(&v).plus(im.clone()));
         let (a2xx, a2xy, a2yy) = (
             plus_m(quote!((p2x * p2x))),
             over_j(quote!((p2x * p2y))),
@@ -128,10 +128,13 @@ impl Fields {
             over_j(quote!((p2y * p1x))),
             plus_m(quote!((p2y * p1y))),
         );
-        let fx = e(self.weight[0].at(i.clone()).plus(Lin::var(quote!(load_x))));
-        let fy = e(self.weight[1].at(i.clone()).plus(Lin::var(quote!(load_y))));
+        let fx = expr(self.weight[0].at(i.clone()).plus(Lin::var(quote!(load_x))));
+        let fy = expr(self.weight[1].at(i.clone()).plus(Lin::var(quote!(load_y))));
         let torque = over_j(quote!(moment));
-        let (fmx, fmy) = (e(im.clone().times(&quote!(fx))), e(im.times(&quote!(fy))));
+        let (fmx, fmy) = (
+            expr(im.clone().times(&quote!(fx))),
+            expr(im.times(&quote!(fy))),
+        );
         quote! {
             let p1x = #p1x;
             let p1y = #p1y;
@@ -162,15 +165,15 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
     let fields = Fields::new(track);
     let tables = fields.declarations();
     let link_terms = fields.link_terms(&quote!(i));
-    let ij_i = e(fields.inv_inertia.at(quote!(i)));
-    let im_first = e(fields.inv_mass.at(quote!(0usize)));
+    let ij_i = expr(fields.inv_inertia.at(quote!(i)));
+    let im_first = expr(fields.inv_mass.at(quote!(0usize)));
     let (ij_first, ij_last) = (
-        e(fields.inv_inertia.at(quote!(0usize))),
-        e(fields.inv_inertia.at(quote!(#m))),
+        expr(fields.inv_inertia.at(quote!(0usize))),
+        expr(fields.inv_inertia.at(quote!(#m))),
     );
     let (im_first_cut, im_last) = (
-        e(fields.inv_mass.at(quote!(0usize))),
-        e(fields.inv_mass.at(quote!(#m))),
+        expr(fields.inv_mass.at(quote!(0usize))),
+        expr(fields.inv_mass.at(quote!(#m))),
     );
     let singular = quote!(#rt::DynamicsError::SingularJointSystem);
     let v2 = quote!(#rt::nalgebra::Vector2::<f64>);

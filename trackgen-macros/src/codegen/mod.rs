@@ -6,13 +6,14 @@
 
 mod articulated;
 mod chassis;
-mod flat;
 mod lin;
 mod linear_time;
 mod per_link;
 mod recovery;
 mod recursive;
 mod running;
+mod runtime_path;
+mod scopes;
 mod stub;
 mod track;
 mod tree;
@@ -23,11 +24,6 @@ use quote::quote;
 use crate::ir::{Item, ItemKind, Model};
 
 pub use stub::stubs;
-
-/// The path generated code reaches the runtime by.
-fn runtime() -> TokenStream {
-    quote!(::trackgen::__private)
-}
 
 /// All items one invocation generates.
 pub fn generate(model: &Model) -> TokenStream {

@@ -48,7 +48,7 @@ impl PerLink {
 }
 
 /// A linear combination as a parenthesised expression.
-pub fn e(lin: Lin) -> TokenStream {
+pub fn expr(lin: Lin) -> TokenStream {
     let t = lin.tokens();
     quote!((#t))
 }

@@ -13,8 +13,8 @@
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::per_link::{PerLink, e};
-use super::runtime;
+use super::per_link::{PerLink, expr};
+use super::runtime_path::runtime;
 use crate::ir::{Closure, Track};
 
 /// Every link's span `d̄ʲ = ū2ʲ − ū1ʲ`, folded.
@@ -34,7 +34,7 @@ fn turned(spans: &[PerLink; 2], j: TokenStream) -> (TokenStream, TokenStream) {
         .times(&quote!(c))
         .minus(dy.clone().times(&quote!(s)));
     let y = dx.times(&quote!(s)).plus(dy.times(&quote!(c)));
-    (e(x), e(y))
+    (expr(x), expr(y))
 }
 
 /// The statements of a track's `tree_dynamics`: its linear-time route with
@@ -80,7 +80,7 @@ pub fn recovery(track: &Track) -> TokenStream {
     let spans = spans(track);
     let tables: TokenStream = spans.iter().map(PerLink::declaration).collect();
     let (ax, ay) = turned(&spans, quote!(j));
-    let (span_x, span_y) = (e(spans[0].at(quote!(j))), e(spans[1].at(quote!(j))));
+    let (span_x, span_y) = (expr(spans[0].at(quote!(j))), expr(spans[1].at(quote!(j))));
     let v2 = quote!(#rt::nalgebra::Vector2::<f64>);
     quote! {
         fn recover_closure(

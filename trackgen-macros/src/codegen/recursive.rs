@@ -4,8 +4,8 @@
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
-use super::flat::flatten;
-use super::runtime;
+use super::runtime_path::runtime;
+use super::scopes::shallow_scopes;
 use super::tree::Tree;
 
 /// `impl RecursiveModel<DOF> for name`. `extra_potential` adds to the
@@ -43,9 +43,9 @@ pub fn recursive_impl(
     let loads = loads_or_zero(n, &rt);
     // Straight-line bodies, thousands of `let`s long for a large track:
     // flat scopes (see `flatten`).
-    let body_positions = flatten(quote! { #check_out #trig #positions #store_r });
-    let body_velocities = flatten(quote! { #check_out #trig #rates #velocities #store_v });
-    let body_states_with_trig = flatten(quote! {
+    let body_positions = shallow_scopes(quote! { #check_out #trig #positions #store_r });
+    let body_velocities = shallow_scopes(quote! { #check_out #trig #rates #velocities #store_v });
+    let body_states_with_trig = shallow_scopes(quote! {
         ::core::assert_eq!(trig.len(), #n, "one entry per body");
         ::core::assert_eq!(positions.len(), #n, "one entry per body");
         ::core::assert_eq!(velocities.len(), #n, "one entry per body");
@@ -62,10 +62,10 @@ pub fn recursive_impl(
             #store_v
         }
     });
-    let velocity_terms = flatten(quote! { #check_out #trig #rates_squared #terms #store_g });
-    let mass_matrix = flatten(quote! { #trig #mass });
-    let generalized_forces = flatten(quote! { #loads #trig #forces });
-    let equations_of_motion = flatten(quote! {
+    let velocity_terms = shallow_scopes(quote! { #check_out #trig #rates_squared #terms #store_g });
+    let mass_matrix = shallow_scopes(quote! { #trig #mass });
+    let generalized_forces = shallow_scopes(quote! { #loads #trig #forces });
+    let equations_of_motion = shallow_scopes(quote! {
         #loads
         #trig
         {
@@ -77,8 +77,8 @@ pub fn recursive_impl(
             #forces
         }
     });
-    let kinetic_energy = flatten(quote! { #trig #rates #velocities #kinetic });
-    let potential_energy = flatten(quote! { #trig #positions #potential #extra_potential });
+    let kinetic_energy = shallow_scopes(quote! { #trig #rates #velocities #kinetic });
+    let potential_energy = shallow_scopes(quote! { #trig #positions #potential #extra_potential });
     quote! {
         #[allow(unused_variables, clippy::all, clippy::pedantic)]
         impl #rt::RecursiveModel<#dof> for #name {

@@ -6,7 +6,7 @@
 use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
-use super::runtime;
+use super::runtime_path::runtime;
 use crate::ir::{ContactPair, NormalLaw, Running, Vehicle};
 use crate::num::Vec2;
 
@@ -114,7 +114,7 @@ pub fn vehicle_impl(
                 #geometry
             }
 
-            fn config(terrain: #rt::Terrain, drive: #rt::Drive) -> #rt::VehicleConfig {
+            fn declared_config(terrain: #rt::Terrain, drive: #rt::Drive) -> #rt::VehicleConfig {
                 #config
             }
 

@@ -13,7 +13,7 @@ use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 use syn::{Ident, Visibility};
 
-use super::runtime;
+use super::runtime_path::runtime;
 use crate::ir::{Item, ItemKind};
 
 pub fn stubs(items: &[Item]) -> TokenStream {

@@ -5,9 +5,9 @@ use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
 use syn::{Attribute, Visibility};
 
-use super::flat::flatten;
 use super::lin::{LinVec, Trig};
-use super::runtime;
+use super::runtime_path::runtime;
+use super::scopes::shallow_scopes;
 use super::tree::{Penalty, Tree};
 use crate::ir::{Closure, Item, Track};
 use crate::num::Vec2;
@@ -161,14 +161,15 @@ fn closure_impl(tree: &Tree, track: &Track) -> TokenStream {
     }
     let rates = tree.rate_prelude(true);
     let (gx, gy) = (gamma.x.tokens(), gamma.y.tokens());
-    let closure = flatten(quote! { #trig #rt::nalgebra::Vector2::new(#cx, #cy) });
-    let closure_jacobian = flatten(quote! {
+    let closure = shallow_scopes(quote! { #trig #rt::nalgebra::Vector2::new(#cx, #cy) });
+    let closure_jacobian = shallow_scopes(quote! {
         #trig
         let mut out = #rt::nalgebra::SMatrix::<f64, 2, #dof>::zeros();
         #jacobian
         out
     });
-    let closure_gamma = flatten(quote! { #trig #rates #rt::nalgebra::Vector2::new(#gx, #gy) });
+    let closure_gamma =
+        shallow_scopes(quote! { #trig #rates #rt::nalgebra::Vector2::new(#gx, #gy) });
     quote! {
         #[inline]
         fn closure(&self, q: &#rt::nalgebra::SVector<f64, #dof>) -> #rt::nalgebra::Vector2<f64> {

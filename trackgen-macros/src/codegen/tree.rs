@@ -112,7 +112,7 @@ impl Tree {
     /// vectorised `sin_cos_each` into `trig`, then
     /// `let (s_b, c_b) = trig[b];`.
     pub fn trig_prelude(&self) -> TokenStream {
-        let rt = super::runtime();
+        let rt = super::runtime_path::runtime();
         let (n, from_slice) = (self.len(), self.trig_from_slice());
         quote! {
             let mut trig = [(0.0f64, 1.0f64); #n];
@@ -460,7 +460,7 @@ impl Tree {
         out.extend(gap.bind(&(format_ident!("gap_x"), format_ident!("gap_y"))));
         out.extend(rate.bind(&(format_ident!("rate_x"), format_ident!("rate_y"))));
         let (k, c) = (&penalty.stiffness, &penalty.damping);
-        let rt = super::runtime();
+        let rt = super::runtime_path::runtime();
         // The runtime's law, the one owner of `F = −k C − c Ċ`.
         out.extend(quote! {
             let pen = #rt::PenaltyJoint { stiffness: #k, damping: #c }.force(

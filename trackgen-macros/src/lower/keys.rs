@@ -11,7 +11,7 @@ use quote::{ToTokens, quote, quote_spanned};
 use syn::spanned::Spanned;
 use syn::{BinOp, Expr, Lit, LitInt, UnOp};
 
-use super::Cx;
+use super::Lowering;
 use crate::ir::ConstCheck;
 use crate::num::{ConstPool, Num, Vec2};
 use crate::parse::{Block, Entry};
@@ -30,7 +30,7 @@ pub(super) struct Fields<'a> {
     pub(super) map: BTreeMap<String, &'a Expr>,
 }
 
-impl Cx<'_> {
+impl Lowering<'_> {
     pub(super) fn fields<'a>(
         &mut self,
         what: &'static str,

@@ -15,6 +15,7 @@ use syn::Ident;
 
 mod keys;
 mod running;
+mod sections;
 mod track;
 mod tree;
 mod vehicle;
@@ -74,7 +75,7 @@ pub fn lower(input: Input) -> Result<Model, (syn::Error, Vec<Item>)> {
 }
 
 fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
-    let mut cx = Cx {
+    let mut cx = Lowering {
         errors,
         checks: Vec::new(),
         pool: ConstPool::new(&ast.name),
@@ -94,7 +95,10 @@ fn lower_item(ast: ItemAst, errors: &mut Errors) -> Item {
     }
 }
 
-pub(crate) struct Cx<'e> {
+/// The lowering of one item: where its errors go, the compile-time checks
+/// of the constant expressions it could not evaluate, and its named
+/// constants.
+pub(crate) struct Lowering<'e> {
     pub(crate) errors: &'e mut Errors,
     pub(crate) checks: Vec<ConstCheck>,
     /// The item's named constants.

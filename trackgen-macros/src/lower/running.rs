@@ -3,11 +3,11 @@
 
 use proc_macro2::Span;
 use syn::spanned::Spanned;
-use trackgen_sprocket::{Engagement, Radii};
+use trackgen_sprocket::Engagement;
 
-use super::Cx;
+use super::Lowering;
 use super::keys::Bound;
-use super::vehicle::Singles;
+use super::sections::{Profile, VehicleSections};
 use crate::ir::{ContactPair, NormalLaw, Running, Shoe, Track};
 use crate::num::Num;
 
@@ -25,62 +25,25 @@ const DEFAULT_MAX_TORQUE: f64 = 2e4;
 /// order.
 const PAIRS: [&str; 3] = ["ground", "wheels", "sprocket"];
 
-/// The declared sprocket profile: tip radius, gap arc radius, gap arc
-/// centre distance, each with the span of its value; and the teeth with
-/// theirs.
-#[derive(Default)]
-pub(super) struct Profile {
-    pub radii: [Option<Num>; 3],
-    pub spans: [Option<Span>; 3],
-    pub teeth: Option<(u32, Span)>,
-}
-
-impl Profile {
-    /// The radii, the declared or `scaled` for a track of `pitch`, when
-    /// the macro knows them all.
-    fn known_radii(&self, pitch: Option<f64>) -> Option<Radii> {
-        let (teeth, _) = self.teeth?;
-        let scaled = pitch.map(|p| trackgen_sprocket::scaled(teeth, p));
-        let pick = |i: usize, default: Option<f64>| match &self.radii[i] {
-            Some(v) => v.known(),
-            None => default,
-        };
-        Some(Radii {
-            addendum: pick(0, scaled.map(|r| r.addendum))?,
-            arc_radius: pick(1, scaled.map(|r| r.arc_radius))?,
-            arc_centre_radius: pick(2, scaled.map(|r| r.arc_centre_radius))?,
-        })
-    }
-
-    /// Where to point at a gap's problem: the declared gap radius, else
-    /// the gap centre, else the teeth.
-    fn gap_span(&self) -> Option<Span> {
-        self.spans[1]
-            .or(self.spans[2])
-            .or(self.spans[0])
-            .or(self.teeth.map(|t| t.1))
-    }
-}
-
 /// The spans of the shoe's keys the sprocket's checks point at.
 struct ShoeSpans {
     pins: Span,
     pin_radius: Span,
 }
 
-impl Cx<'_> {
+impl Lowering<'_> {
     /// What makes the vehicle run, from its `shoe`, `contact` and `drive`
     /// sections and the sprocket's profile; `None` without a shoe.
     pub(super) fn running(
         &mut self,
-        singles: &Singles,
+        unique: &VehicleSections,
         has_sprocket: bool,
         profile: Profile,
         track: &Track,
     ) -> Option<Running> {
-        let Some((shoe_kw, shoe_block)) = singles.shoe else {
+        let Some((shoe_kw, shoe_block)) = unique.shoe else {
             self.check_engagement(&profile, None, track);
-            for (section, block) in [("contact", singles.contact), ("drive", singles.drive)] {
+            for (section, block) in [("contact", unique.contact), ("drive", unique.drive)] {
                 if let Some(block) = block {
                     self.errors.at(
                         block.span,
@@ -101,14 +64,14 @@ impl Cx<'_> {
         }
         let shoe = self.shoe(shoe_block);
         self.check_engagement(&profile, shoe.as_ref().map(|(s, spans)| (s, spans)), track);
-        let contact = match singles.contact {
+        let contact = match unique.contact {
             Some(block) => self.contact(block),
             None => Default::default(),
         };
-        let drive = singles
+        let drive = unique
             .drive
             .map(|block| self.fields("drive", block, &["proportional", "integral", "max_torque"]));
-        if let Some(block) = singles.drive {
+        if let Some(block) = unique.drive {
             self.sections("drive", block, &[]);
         }
         let mut gain = |key: &str, bound: Bound, default: f64| {

@@ -9,14 +9,14 @@ use syn::spanned::Spanned;
 use syn::{Expr, Lit, LitInt, Member};
 
 use super::keys::{Fields, strip};
-use super::{Cx, MAX_LINKS, tree};
+use super::{Lowering, MAX_LINKS, tree};
 use crate::ir::{Closure, ConstCheck, Link, Track};
 use crate::num::{Num, Vec2};
 use crate::parse::{Block, Entry, IndexRange, Selector};
 
 const DEFAULT_GRAVITY: f64 = -9.81;
 
-impl Cx<'_> {
+impl Lowering<'_> {
     pub(super) fn gravity(&mut self, fields: &Fields) -> Vec2 {
         self.point(fields, "gravity", false).unwrap_or(Vec2 {
             x: Num::ZERO,

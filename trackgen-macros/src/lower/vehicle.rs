@@ -8,9 +8,9 @@ use quote::{format_ident, quote};
 use syn::spanned::Spanned;
 use syn::{Expr, Ident, Lit, LitInt};
 
-use super::Cx;
+use super::Lowering;
 use super::keys::{Fields, strip};
-use super::running::Profile;
+use super::sections::{Profile, VehicleSections};
 use crate::ir::{Arm, Closure, ConstCheck, Part, PartKind, Track, Vehicle};
 use crate::num::{Num, Vec2};
 
@@ -21,17 +21,7 @@ const MIN_ARM_LENGTH: f64 = 1e-9;
 /// The most parts one repeated block declares.
 const MAX_REPEAT: usize = 64;
 
-/// The vehicle-level sections that appear at most once, unnamed.
-#[derive(Default)]
-pub(super) struct Singles<'a> {
-    pub(super) chassis: Option<&'a crate::parse::Block>,
-    pub(super) track: Option<&'a crate::parse::Block>,
-    pub(super) shoe: Option<(&'a Ident, &'a crate::parse::Block)>,
-    pub(super) contact: Option<&'a crate::parse::Block>,
-    pub(super) drive: Option<&'a crate::parse::Block>,
-}
-
-impl Cx<'_> {
+impl Lowering<'_> {
     pub(super) fn vehicle(&mut self, block: &crate::parse::Block, name: &Ident) -> Vehicle {
         use crate::parse::Entry;
         let fields = self.fields("vehicle", block, &["gravity"]);
@@ -48,7 +38,7 @@ impl Cx<'_> {
             "roller",
         ];
         let sections = self.sections("vehicle", block, &kinds);
-        let mut singles = Singles::default();
+        let mut unique = VehicleSections::default();
         let mut parts = Vec::new();
         let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
         let mut sprocket: Option<&Ident> = None;
@@ -75,16 +65,16 @@ impl Cx<'_> {
                     self.errors.at(name.span(), format!("`{k}` takes no name"));
                 }
                 let slot = match k.as_str() {
-                    "chassis" => &mut singles.chassis,
-                    "track" => &mut singles.track,
-                    "contact" => &mut singles.contact,
-                    "drive" => &mut singles.drive,
+                    "chassis" => &mut unique.chassis,
+                    "track" => &mut unique.track,
+                    "contact" => &mut unique.contact,
+                    "drive" => &mut unique.drive,
                     _ => {
-                        if singles.shoe.is_some() {
+                        if unique.shoe.is_some() {
                             self.errors
                                 .at(kind.span(), "duplicate `shoe` section".to_string());
                         } else {
-                            singles.shoe = Some((kind, body));
+                            unique.shoe = Some((kind, body));
                         }
                         continue;
                     }
@@ -151,8 +141,8 @@ impl Cx<'_> {
                 profile = p;
             }
         }
-        let chassis = singles.chassis.map(|b| self.chassis(b));
-        let track = singles.track.map(|b| self.track(b, false));
+        let chassis = unique.chassis.map(|b| self.chassis(b));
+        let track = unique.track.map(|b| self.track(b, false));
         if chassis.is_none() {
             self.errors.at(
                 vehicle_name.span(),
@@ -182,7 +172,7 @@ impl Cx<'_> {
             bodies: Vec::new(),
         });
         track.gravity = gravity.clone();
-        let running = self.running(&singles, sprocket.is_some(), profile, &track);
+        let running = self.running(&unique, sprocket.is_some(), profile, &track);
         let (chassis, part_bodies) = super::tree::chassis(&chassis_mass, &chassis_inertia, &parts);
         Vehicle {
             gravity,

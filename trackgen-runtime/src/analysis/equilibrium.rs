@@ -5,7 +5,7 @@ use nalgebra::DVector;
 
 use super::AnalysisError;
 use super::statics::Statics;
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 use crate::integrate::{Integrator, OdeSystem};
 use crate::vehicle::{Drive, StateLayout, VehicleDynamics, VehicleRecord};
 

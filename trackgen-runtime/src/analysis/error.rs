@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 use crate::vehicle::BuildError;
 
 /// Why an equilibrium, a linearisation or the modes could not be found.

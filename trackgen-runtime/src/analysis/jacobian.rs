@@ -2,8 +2,8 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
+use crate::integrate::SimulationError;
 
 /// The central-difference step for a state component of value `value`:
 /// `10⁻⁶ · max(|value|, 1)`. The truncation error of a central difference

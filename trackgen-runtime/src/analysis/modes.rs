@@ -6,7 +6,7 @@ use nalgebra::{Complex, DMatrix, DVector, Vector2};
 
 use super::{AnalysisError, state_jacobian};
 use crate::integrate::OdeSystem;
-use crate::model::PartKind;
+use crate::multibody::PartKind;
 use crate::vehicle::VehicleDynamics;
 
 /// What share of a mode's kinetic energy a body or a motion holds.
@@ -183,7 +183,7 @@ struct Bodies<S> {
 
 impl<S: VehicleDynamics> Bodies<S> {
     fn new() -> Self {
-        let masses = |d: crate::model::TreeDescription| -> Vec<(f64, f64)> {
+        let masses = |d: crate::multibody::TreeDescription| -> Vec<(f64, f64)> {
             d.bodies.iter().map(|b| (b.mass, b.inertia)).collect()
         };
         let chassis = masses(S::chassis_description());

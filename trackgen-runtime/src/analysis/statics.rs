@@ -6,7 +6,7 @@
 use nalgebra::{DMatrix, DVector};
 
 use super::{AnalysisError, step_for};
-use crate::model::PartKind;
+use crate::multibody::PartKind;
 use crate::vehicle::{StateLayout, VehicleDynamics};
 
 /// The statics of a vehicle at a state: which coordinates are unknown,

@@ -20,8 +20,7 @@ use std::f64::consts::PI;
 
 use nalgebra::Vector2;
 
-use super::PitchCircle;
-use super::path::{Path, Piece, asinc};
+use super::path::{Path, Piece, PitchCircle, asinc};
 
 /// Whether the span from `a` to `b` is on the upper run: heading backwards
 /// (−x, as the upper run of a counter-clockwise loop does) within 60° of

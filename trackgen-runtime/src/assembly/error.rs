@@ -5,8 +5,16 @@ use std::fmt;
 
 use thiserror::Error;
 
-use super::START_PENETRATION;
-use crate::model::PartKind;
+use crate::multibody::PartKind;
+
+/// How deep (m) an assembled start may put a shoe feature into a wheel,
+/// the sprocket's teeth or the ground. The wrap lays the joints on pitch
+/// circles from which the faces and pins just touch, and the closure's
+/// Newton-Raphson moves them by a fraction of a millimetre; 2 mm is well
+/// above that and well below what a wrong wrap gives (a sagging span laid
+/// through a roller: centimetres), and below the 2–4 mm a shoe sinks under
+/// its static load, so a start within it is not a jolt.
+pub const START_PENETRATION: f64 = 2e-3;
 
 /// What limits how much track the wheels take up.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -147,7 +155,7 @@ pub enum AssemblyError {
     /// The track's links differ in length: its sprocket and pitch circles
     /// need one pitch.
     #[error(transparent)]
-    Pitch(#[from] crate::model::PitchError),
+    Pitch(#[from] crate::multibody::PitchError),
 }
 
 /// What an assembled start puts a shoe inside.

@@ -23,21 +23,12 @@ mod vehicle;
 
 use nalgebra::{SVector, Vector2};
 
-use crate::model::TrackModel;
+use crate::multibody::TrackModel;
 pub(crate) use belt::longest_upper_span;
-pub use error::{AssemblyError, LinkCounts, SlackLimit, Touching};
+pub use error::{AssemblyError, LinkCounts, START_PENETRATION, SlackLimit, Touching};
+pub use path::PitchCircle;
 use path::{Path, Place};
-pub use vehicle::{Assembled, START_PENETRATION, assemble};
-
-/// A wheel the track wraps, as its pitch circle: the circle the joints lie
-/// on where the track runs round it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PitchCircle {
-    /// Centre, global frame, m.
-    pub centre: Vector2<f64>,
-    /// Radius, m.
-    pub radius: f64,
-}
+pub use vehicle::{Assembled, assemble};
 
 /// The most the upper run may sag: a quarter of a span's length, below
 /// the tight span (and never onto a wheel that does not carry it). More

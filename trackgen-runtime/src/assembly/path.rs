@@ -4,6 +4,18 @@
 
 use nalgebra::Vector2;
 
+use crate::planar::perp;
+
+/// A wheel the track wraps, as its pitch circle: the circle the joints lie
+/// on where the track runs round it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PitchCircle {
+    /// Centre, global frame, m.
+    pub centre: Vector2<f64>,
+    /// Radius, m.
+    pub radius: f64,
+}
+
 /// A piece of constant curvature, from its start point and unit tangent.
 ///
 /// Written from the start point rather than a centre so that a nearly
@@ -40,10 +52,6 @@ pub(crate) fn asinc(x: f64) -> f64 {
     }
 }
 
-fn left(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
-}
-
 impl Piece {
     /// A straight piece from `from` to `to`.
     pub fn line(from: Vector2<f64>, to: Vector2<f64>) -> Piece {
@@ -69,7 +77,7 @@ impl Piece {
         // by a tiny k.
         let along = u * sinc(2.0 * half);
         let across = u * half.sin() * sinc(half);
-        let normal = left(self.tangent);
+        let normal = perp(self.tangent);
         let (s, c) = (k * u).sin_cos();
         (
             self.start + self.tangent * along + normal * across,

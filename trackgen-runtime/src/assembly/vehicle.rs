@@ -5,12 +5,12 @@
 use nalgebra::{SVector, Vector2};
 
 use super::{
-    AssemblyError, LinkCounts, PitchCircle, SlackLimit, Touching, excess, links_round, wrap,
-    wrap_at,
+    AssemblyError, LinkCounts, PitchCircle, START_PENETRATION, SlackLimit, Touching, excess,
+    links_round, wrap, wrap_at,
 };
 use crate::contact::sprocket::{self, ToothProfile};
 use crate::contact::{BodyState, Contact, ShoeGeometry, Terrain, ground, wheel};
-use crate::model::{ChassisModel, PartKind, TrackModel};
+use crate::multibody::{ChassisModel, PartKind, TrackModel};
 
 /// Initial coordinates of a vehicle.
 #[derive(Debug, Clone, PartialEq)]
@@ -240,15 +240,6 @@ fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
         })
     }
 }
-
-/// How deep (m) an assembled start may put a shoe feature into a wheel,
-/// the sprocket's teeth or the ground. The wrap lays the joints on pitch
-/// circles from which the faces and pins just touch, and the closure's
-/// Newton-Raphson moves them by a fraction of a millimetre; 2 mm is well
-/// above that and well below what a wrong wrap gives (a sagging span laid
-/// through a roller: centimetres), and below the 2–4 mm a shoe sinks under
-/// its static load, so a start within it is not a jolt.
-pub const START_PENETRATION: f64 = 2e-3;
 
 /// The deepest contact of the assembled start, by contact
 /// [detection](crate::contact) (geometry only, no law), checked against

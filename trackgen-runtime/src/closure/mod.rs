@@ -81,3 +81,57 @@ pub enum ClosureMethod {
     /// declared `partitioned`).
     Penalty(PenaltyJoint),
 }
+
+/// Why the loop's dependent coordinates could not be recovered at a step
+/// (generalised coordinate partitioning, spec §2; the multipliers'
+/// projection). Every variant carries the simulation time `t` (s).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum RecoveryError {
+    /// Newton-Raphson on the loop closure `C(z, d) = 0` did not converge.
+    #[error(
+        "Newton-Raphson on the loop closure failed at t = {t} s: |C| = {residual:e} m after {iterations} iterations"
+    )]
+    NewtonFailed {
+        /// Time, s.
+        t: f64,
+        /// Iterations taken.
+        iterations: usize,
+        /// `|C|` at the last iterate, m.
+        residual: f64,
+    },
+    /// Newton-Raphson converged, but to the mirror configuration of the
+    /// dependent pair (the closure has two solutions for two angles): the
+    /// step was too long.
+    #[error("the dependent links {} and {} jumped by {jump:.2} rad at t = {t} s (mirror solution of the closure)", pair[0], pair[1])]
+    BranchJump {
+        /// Time, s.
+        t: f64,
+        /// The dependent links (numbered from 1).
+        pair: [usize; 2],
+        /// The larger change of the two angles from the last accepted
+        /// step, rad.
+        jump: f64,
+    },
+    /// The dependent pair's block `C_d` became singular while switching was
+    /// off (paper eq. (21): the two links nearly parallel).
+    #[error("singular partition at t = {t} s: links {} and {} are nearly parallel (|sin| = {conditioning:e}) and switching is off", pair[0], pair[1])]
+    SingularPartition {
+        /// Time, s.
+        t: f64,
+        /// The dependent links (numbered from 1).
+        pair: [usize; 2],
+        /// `|sin|` of the angle between the two columns of `C_d`.
+        conditioning: f64,
+    },
+}
+
+impl RecoveryError {
+    /// The simulation time at which it happened, s.
+    pub fn time(&self) -> f64 {
+        match self {
+            RecoveryError::NewtonFailed { t, .. }
+            | RecoveryError::BranchJump { t, .. }
+            | RecoveryError::SingularPartition { t, .. } => *t,
+        }
+    }
+}

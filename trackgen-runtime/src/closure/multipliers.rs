@@ -4,7 +4,7 @@
 
 use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 
-use crate::model::TrackModel;
+use crate::multibody::TrackModel;
 
 /// Settings of the multiplier method.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -5,9 +5,8 @@
 use nalgebra::{DMatrix, DVector, Matrix2};
 use nalgebra::{SMatrix, SVector, Vector2};
 
-use super::ClosureError;
-use crate::error::SimulationError;
-use crate::model::TrackModel;
+use super::{ClosureError, RecoveryError};
+use crate::multibody::TrackModel;
 
 /// A change of the dependent coordinates of a partitioned track (spec §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -40,7 +39,7 @@ pub struct PartitionOptions {
     /// integrator; a closed loop always has a pair near 1 to switch to.
     pub switch_below: f64,
     /// With switching off, stop with
-    /// [`SingularPartition`](crate::simulate::SimulationError::SingularPartition)
+    /// [`SingularPartition`](super::RecoveryError::SingularPartition)
     /// when the conditioning falls below this (default 0.01: a hundredfold
     /// amplification).
     pub singular_below: f64,
@@ -277,7 +276,7 @@ impl Partition {
     /// `trig`.
     ///
     /// A jump of the pair by more than π/2 from the last accepted state is
-    /// the closure's mirror solution: [`SimulationError::BranchJump`].
+    /// the closure's mirror solution: [`RecoveryError::BranchJump`].
     pub fn expand<M: TrackModel<D>, const D: usize>(
         &self,
         model: &M,
@@ -285,7 +284,7 @@ impl Partition {
         y: &[f64],
         (q, qd): (&mut SVector<f64, D>, &mut SVector<f64, D>),
         trig: &mut [(f64, f64)],
-    ) -> Result<(), SimulationError> {
+    ) -> Result<(), RecoveryError> {
         let n = self.independent.len();
         for (i, &c) in self.independent.iter().enumerate() {
             q[c] = y[i];
@@ -301,7 +300,7 @@ impl Partition {
         qd[2 + k] = 0.0;
         qd[2 + l] = 0.0;
         self.recover(model, (q, qd), trig)
-            .map_err(|(iterations, residual)| SimulationError::NewtonFailed {
+            .map_err(|(iterations, residual)| RecoveryError::NewtonFailed {
                 t,
                 iterations,
                 residual,
@@ -312,7 +311,7 @@ impl Partition {
             .abs()
             .max((q[2 + l] - self.guess[1]).abs());
         if jump > std::f64::consts::FRAC_PI_2 {
-            return Err(SimulationError::BranchJump {
+            return Err(RecoveryError::BranchJump {
                 t,
                 pair: [k + 1, l + 1],
                 jump,
@@ -333,13 +332,13 @@ impl Partition {
         (q, qd): (&SVector<f64, D>, &SVector<f64, D>),
         columns: &[Vector2<f64>],
         y: &mut [f64],
-    ) -> Result<Option<Switch>, SimulationError> {
+    ) -> Result<Option<Switch>, RecoveryError> {
         let [k, l] = self.pair;
         self.guess = [q[2 + k], q[2 + l]];
         let now = conditioning(columns, self.pair);
         if !self.options.switching {
             if now < self.options.singular_below {
-                return Err(SimulationError::SingularPartition {
+                return Err(RecoveryError::SingularPartition {
                     t,
                     pair: [k + 1, l + 1],
                     conditioning: now,

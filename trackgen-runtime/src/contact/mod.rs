@@ -15,7 +15,7 @@
 //! faces against wheel rims (road wheels, idler, rollers), the shoes' pins
 //! against the sprocket's teeth; and the terramechanics laws of soft soil
 //! ([`soil`]). Forces come from positions and velocities only, as
-//! [`BodyLoad`](crate::BodyLoad)s on both bodies, so the subsystems stay
+//! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
 //! decoupled everywhere else (spec §3).
 
 mod detect;
@@ -29,7 +29,6 @@ pub mod tangent;
 pub mod terrain;
 pub mod wheel;
 
-pub use crate::laws::{Friction, NormalLaw};
 pub use detect::Contact;
 pub use respond::{ContactForce, ContactLaws, GroundFriction, GroundLaws};
 pub use shoe::ShoeGeometry;

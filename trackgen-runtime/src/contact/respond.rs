@@ -6,7 +6,7 @@ use nalgebra::Vector2;
 
 use super::Contact;
 use crate::laws::{Friction, NormalLaw, ParameterError, Stiction};
-use crate::model::BodyLoad;
+use crate::multibody::BodyLoad;
 
 /// The laws of one contact pair: normal law and friction.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -143,14 +143,14 @@ impl Gaps {
             for (i, angle) in angles[..len].iter_mut().enumerate() {
                 *angle = (first + i as f64 + 0.5) * pitch;
             }
-            crate::sin_cos_each(&angles[..len], &mut directions[..len]);
+            crate::trig::sin_cos_each(&angles[..len], &mut directions[..len]);
             len
         } else {
             0
         };
         Gaps {
             pitch,
-            turn: crate::sin_cos(pitch),
+            turn: crate::trig::sin_cos(pitch),
             arc_centre_radius: profile.arc_centre_radius,
             first,
             len,
@@ -166,7 +166,7 @@ impl Gaps {
         if index >= 0.0 && index < self.len as f64 {
             self.directions[index as usize]
         } else {
-            crate::sin_cos((k + 0.5) * self.pitch)
+            crate::trig::sin_cos((k + 0.5) * self.pitch)
         }
     }
 

@@ -29,6 +29,7 @@ use std::ops::AddAssign;
 use nalgebra::{Matrix2, Matrix2x3, RowVector2, SMatrix, Vector2};
 
 use super::{BodyState, Contact, ContactLaws, GroundFriction, GroundLaws};
+use crate::planar::perp;
 
 /// How many quantities a contact's force depends on: two bodies' poses and
 /// rates (3 + 3 each) and a tangential deflection.
@@ -95,12 +96,6 @@ impl ContactJacobian {
         other: Rows3::from_array_storage(nalgebra::ArrayStorage([[0.0; 3]; INPUTS])),
         rate: Row::from_array_storage(nalgebra::ArrayStorage([[0.0; 1]; INPUTS])),
     };
-}
-
-/// `⟂v = (−v_y, v_x)`.
-#[inline]
-pub(crate) fn perp(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
 }
 
 /// `⟂` of a vector's derivative, row-wise.

@@ -3,10 +3,9 @@
 
 use nalgebra::Vector2;
 
-use super::tangent::{
-    GeometryTangent, LINK, OTHER, PoseRows2, body_point, dot_rows, perp, unit_vector,
-};
+use super::tangent::{GeometryTangent, LINK, OTHER, PoseRows2, body_point, dot_rows, unit_vector};
 use super::{BodyState, Contact, ShoeGeometry};
+use crate::planar::perp;
 
 /// The contacts of the wheel `body` (its state, and its rim radius in m)
 /// with every link near it, appended to `out`: the face point nearest the

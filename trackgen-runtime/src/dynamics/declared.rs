@@ -4,13 +4,13 @@
 use nalgebra::{SVector, Vector2};
 
 use super::Accelerations;
-use crate::DynamicsError;
-use crate::model::{BodyLoad, ClosingJoint, Closure, TrackModel};
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, ClosingJoint, Closure, TrackModel};
 
 /// Forward dynamics of `model` as declared (a constrained loop, an open
 /// chain, or its declared penalty joint), by the generated linear-time
 /// route (spec §5): the same accelerations as
-/// [`forward_dynamics`](super::forward_dynamics) in O(n), with the closing
+/// [`dense_forward_dynamics`](super::dense_forward_dynamics) in O(n), with the closing
 /// joint's `λ` for a constrained loop (minus the force it puts on link n,
 /// as the multiplier form's).
 pub fn track_dynamics<M: TrackModel<D>, const D: usize>(

@@ -3,7 +3,7 @@ use nalgebra::{
     Cholesky, DefaultAllocator, Dim, Matrix, OMatrix, OVector, Storage, U1, U2, Vector2,
 };
 
-use crate::DynamicsError;
+use crate::multibody::DynamicsError;
 
 /// Accelerations at a state.
 #[derive(Debug, Clone, PartialEq)]

@@ -1,5 +1,5 @@
 //! The 2 × 2 block steps of the twisted elimination that every generated
-//! [`linear_time_dynamics`](crate::TrackModel::linear_time_dynamics) is made
+//! [`linear_time_dynamics`](crate::multibody::TrackModel::linear_time_dynamics) is made
 //! of (spec §5): the joint-force system is eliminated from both ends of the
 //! chain at once, each end a [`Sweep`], and solved back outward by
 //! [`back`]. `CLOSED` carries the closing joint's two columns along
@@ -16,7 +16,7 @@
 
 use std::cell::RefCell;
 
-use crate::DynamicsError;
+use crate::multibody::DynamicsError;
 
 /// One link's terms of the joint-force system (spec §5), written by every
 /// solve before it reads them: the levers `p1 = A_θ ū1`, `p2 = A_θ ū2`,

@@ -1,8 +1,8 @@
 use nalgebra::{DMatrix, DVector, Matrix2xX, SMatrix, SVector};
 
 use super::dense::{Accelerations, solve_closed, solve_open};
-use crate::DynamicsError;
-use crate::model::{BodyLoad, RecursiveModel, TrackModel};
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, RecursiveModel, TrackModel};
 
 /// The largest `M_i`, in bytes, that the dense routes keep on the stack
 /// (`8 · DOF²`: up to DOF 90, 88 links): there the solve allocates
@@ -21,7 +21,7 @@ const fn on_stack(dof: usize) -> bool {
 /// Small models (`M_i` within [`STACK_MATRIX_BYTES`]) are solved on the
 /// stack; larger ones on the heap, so any model the macro accepts runs on
 /// a 2 MiB thread.
-pub fn open_dynamics<M: RecursiveModel<D>, const D: usize>(
+pub fn dense_open_dynamics<M: RecursiveModel<D>, const D: usize>(
     model: &M,
     q: &SVector<f64, D>,
     qd: &SVector<f64, D>,
@@ -40,16 +40,16 @@ pub fn open_dynamics<M: RecursiveModel<D>, const D: usize>(
 /// takes the multiplier form of spec §2 (and returns `λ`); an open or
 /// penalty-closed chain solves `M_i q̈_i = Q_i`.
 ///
-/// As for [`open_dynamics`], `M_i` is on the stack for small tracks and on
+/// As for [`dense_open_dynamics`], `M_i` is on the stack for small tracks and on
 /// the heap for large ones.
-pub fn forward_dynamics<M: TrackModel<D>, const D: usize>(
+pub fn dense_forward_dynamics<M: TrackModel<D>, const D: usize>(
     model: &M,
     q: &SVector<f64, D>,
     qd: &SVector<f64, D>,
     loads: &[BodyLoad],
 ) -> Result<Accelerations<SVector<f64, D>>, DynamicsError> {
     if !M::CLOSURE.is_constrained() {
-        return open_dynamics(model, q, qd, loads);
+        return dense_open_dynamics(model, q, qd, loads);
     }
     check_loads::<M, D>(loads)?;
     let cq = model.closure_jacobian(q);

@@ -14,8 +14,8 @@
 
 use nalgebra::{Matrix2, Matrix2x3, SVector, Vector2};
 
-use crate::DynamicsError;
-use crate::model::{BodyLoad, Closure, TrackModel};
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, Closure, TrackModel};
 
 /// The per-link constants of a chain.
 #[derive(Debug, Clone)]
@@ -112,7 +112,7 @@ impl LinearTimeSolver {
     /// Forward dynamics of `model` as declared (the model this solver was
     /// built for): a constrained loop with its closing joint, an open
     /// chain, or a declared penalty joint's spring-damper. The same
-    /// accelerations as [`forward_dynamics`](super::forward_dynamics), in
+    /// accelerations as [`dense_forward_dynamics`](super::dense_forward_dynamics), in
     /// O(n).
     pub fn forward_dynamics<M: TrackModel<D>, const D: usize>(
         &mut self,

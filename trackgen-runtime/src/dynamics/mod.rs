@@ -32,7 +32,7 @@ pub use dense::Accelerations;
 #[cfg(feature = "oracle")]
 pub(crate) use dense::{solve_closed, solve_open};
 pub use derivative::{StateJacobian, track_jacobian, tree_jacobian};
-pub use generated::{STACK_MATRIX_BYTES, forward_dynamics, open_dynamics};
+pub use generated::{STACK_MATRIX_BYTES, dense_forward_dynamics, dense_open_dynamics};
 #[cfg(feature = "oracle")]
 pub use linear_time::LinearTimeSolver;
 pub use shifted::ShiftedChain;

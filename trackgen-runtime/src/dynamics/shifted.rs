@@ -15,7 +15,7 @@
 //! ```
 //!
 //! with `xᵢ = (x, y, θ)` increments (the order of a
-//! [`BodyLoad`](crate::BodyLoad)'s force and moment), `D⁺ⱼ = [I₂ | A_θʲ ū2ʲ]`,
+//! [`BodyLoad`](crate::multibody::BodyLoad)'s force and moment), `D⁺ⱼ = [I₂ | A_θʲ ū2ʲ]`,
 //! `D⁻ₖ = [I₂ | A_θᵏ ū1ᵏ]`. With `Wᵢ = Xᵢ⁻¹` the joint forces solve the
 //! cyclic block-tridiagonal system of spec §5, no longer symmetric
 //! (`C` and `K` of friction are not):
@@ -46,15 +46,9 @@
 
 use nalgebra::{Matrix2, Matrix2x3, Matrix3, Matrix3x2, Vector2, Vector3};
 
-use crate::DynamicsError;
-use crate::model::TreeDescription;
-use crate::planar::Rotation;
-
-/// The quarter turn `(x, y) → (−y, x)`: `A_θ ū = ⟂(A ū)`.
-#[inline]
-fn perp(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
-}
+use crate::multibody::DynamicsError;
+use crate::multibody::TreeDescription;
+use crate::planar::{Rotation, perp};
 
 /// A closed track's joints with general link blocks, factored for
 /// [`solve`](Self::solve).
@@ -243,7 +237,7 @@ impl ShiftedChain {
     /// If `loads` or `out` is not 3 values per link, or `joints` neither
     /// one per joint nor empty (a programming error).
     pub fn solve(&mut self, loads: &[f64], joints: &[Vector2<f64>], out: &mut [f64]) {
-        crate::wide::run(
+        crate::simd::run(
             #[inline(always)]
             || self.solve_inline(loads, joints, out),
         );
@@ -326,7 +320,7 @@ impl ShiftedChain {
 
     /// [`sweep_columns`](Self::sweep_columns) compiled for AVX2: four
     /// sides at a time instead of two, the same bits. Not through
-    /// [`wide::run`](crate::wide::run): behind its closure the sweeps took
+    /// [`wide::run`](crate::simd::run): behind its closure the sweeps took
     /// 11 % more instructions (856e6 against 770e6 on the Marder's main
     /// job).
     #[cfg(target_arch = "x86_64")]

@@ -12,8 +12,8 @@
 
 use nalgebra::DVector;
 
-use super::{Embedded, OdeSystem, Ros34pw2, Stats, Stepper};
-use crate::error::SimulationError;
+use super::{Check, Embedded, OdeSystem, Ros34pw2, Stats, Stepper};
+use crate::integrate::SimulationError;
 
 /// Power iterations of [`stiffest_rate`]: on the vehicles the estimate
 /// settles within 1 % by 30 (their two stiffest rates 15 % apart), one
@@ -108,19 +108,6 @@ pub fn stiffness_ratio<S: OdeSystem + ?Sized>(
     let stiffest = stiffest_rate(system, t, y)?;
     let accuracy_step = ACCURACY_STEP_AT_1E_3 * (tolerance / 1e-3).cbrt();
     Ok((accuracy_step * stiffest / EXPLICIT_STABILITY, stiffest))
-}
-
-/// A stiffness check of an [`Auto`] run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Check {
-    /// When, s.
-    pub t: f64,
-    /// The stiffest rate, 1/s.
-    pub stiffest: f64,
-    /// The stiffness ratio ([`stiffness_ratio`]).
-    pub ratio: f64,
-    /// Whether the linearly implicit method runs from here.
-    pub implicit: bool,
 }
 
 /// Bogacki-Shampine or ROS34PW2, whichever the stiffness calls for,

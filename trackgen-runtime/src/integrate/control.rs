@@ -3,7 +3,7 @@
 //! Hairer's DOPRI5) and its cut after a rejected one, and the underflow
 //! that ends a run.
 
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 const SAFETY: f64 = 0.9;
 /// PI controller: `β = 0.04`, `α = 1/(q+1) − 0.75 β` (Hairer's DOPRI5).

@@ -4,7 +4,7 @@
 use nalgebra::DVector;
 
 use super::{OdeSystem, Stats};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// `∂f/∂y` at `(t, y)`, whose slope is `f0`, by forward differences with
 /// the step `√ε · max(|yⱼ|, 1)` (half the digits of `f`: the truncation and

@@ -2,7 +2,7 @@ use nalgebra::DVector;
 
 use super::control::StepControl;
 use super::{OdeSystem, Stats, Stepper};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// An embedded explicit Runge-Kutta pair whose last stage is evaluated at
 /// the solution (first-same-as-last).
@@ -263,7 +263,7 @@ impl Embedded {
     ) -> Result<f64, SimulationError> {
         // The stages' vector sums four values wide where the processor
         // allows (the same bits).
-        crate::wide::run(
+        crate::simd::run(
             #[inline(always)]
             || self.attempt_inline(system, t, y, h),
         )

@@ -4,7 +4,7 @@
 use nalgebra::DVector;
 
 use super::{OdeSystem, Stats};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// A step's end points and slopes, for cubic Hermite dense output (third
 /// order, enough for output between fixed steps).

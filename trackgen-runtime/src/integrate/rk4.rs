@@ -2,7 +2,7 @@ use nalgebra::DVector;
 
 use super::fixed_step::FixedStep;
 use super::{OdeSystem, Stats, Stepper};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// Classical fourth-order Runge-Kutta with a fixed step. The slope at the
 /// end of a step is the next step's first stage, so dense output (cubic

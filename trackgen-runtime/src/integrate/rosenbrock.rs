@@ -3,7 +3,7 @@ use nalgebra::{DMatrix, DVector};
 use super::differences::forward_jacobian;
 use super::fixed_step::FixedStep;
 use super::{OdeSystem, Stats, Stepper};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// `γ = 1 + 1/√2` of ROS2.
 const GAMMA: f64 = 1.0 + std::f64::consts::FRAC_1_SQRT_2;

@@ -12,7 +12,7 @@ use super::control::StepControl;
 use super::differences::forward_jacobian;
 use super::embedded::weighted_rms;
 use super::{OdeSystem, Stats, Stepper};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// The diagonal `γ` of ROS34PW2.
 const GAMMA: f64 = 4.358_665_215_084_59e-1;
@@ -448,7 +448,7 @@ impl Ros34pw2 {
     ) -> Result<f64, SimulationError> {
         // The stages' vector sums four values wide where the processor
         // allows (the same bits).
-        crate::wide::run(
+        crate::simd::run(
             #[inline(always)]
             || self.attempt_inline(system, t, y, h),
         )

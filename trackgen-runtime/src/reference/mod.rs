@@ -1,4 +1,4 @@
-//! The reference (textbook) route: the dynamics of a [`TreeDescription`](crate::TreeDescription)
+//! The reference (textbook) route: the dynamics of a [`TreeDescription`](crate::multibody::TreeDescription)
 //! evaluated at run time exactly as the paper writes them.
 //!
 //! The dense velocity transform `H` is assembled column by column from

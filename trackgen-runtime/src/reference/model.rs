@@ -1,8 +1,8 @@
 use nalgebra::{DMatrix, DVector, Matrix2xX, Vector2};
 
-use crate::DynamicsError;
 use crate::dynamics::{Accelerations, solve_closed, solve_open};
-use crate::model::{BodyLoad, Closure, TreeDescription};
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, Closure, TreeDescription};
 use crate::planar::{rotate, rotate_derivative};
 
 /// A body tree evaluated by the textbook route (see the [module

@@ -1,9 +1,12 @@
-//! A failed run: its error and the results kept up to it.
+//! A failed run: its error and what it kept up to it (the results, or a
+//! streamed run's report).
 
 use std::fmt;
 
-use super::Results;
-use crate::error::SimulationError;
+use thiserror::Error;
+
+use super::{Results, SinkError};
+use crate::integrate::SimulationError;
 
 /// A run that stopped early: the error, and everything computed until then.
 #[derive(Debug, Clone)]
@@ -23,5 +26,33 @@ impl fmt::Display for SimulationFailure {
 impl std::error::Error for SimulationFailure {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         Some(&self.error)
+    }
+}
+
+/// Why a streamed run stopped early.
+#[derive(Debug, Error)]
+pub enum RunError {
+    /// The simulation failed (the same errors as [`simulate`](super::simulate)).
+    #[error(transparent)]
+    Simulation(#[from] SimulationError),
+    /// The sink refused a row, or could not be written to.
+    #[error("writing the results failed at t = {t} s: {source}")]
+    Sink {
+        /// The time of the row, s (the start for `begin`, the last row's
+        /// time for `finish`).
+        t: f64,
+        /// The sink's error.
+        source: SinkError,
+    },
+}
+
+impl RunError {
+    /// The simulation time at which it happened (`None` for a set-up
+    /// error).
+    pub fn time(&self) -> Option<f64> {
+        match self {
+            RunError::Simulation(e) => e.time(),
+            RunError::Sink { t, .. } => Some(*t),
+        }
     }
 }

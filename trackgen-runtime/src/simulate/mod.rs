@@ -4,7 +4,7 @@
 //! running figures, a bounded selection for plots, several at once.
 //!
 //! A run never panics on a bad state: it stops with a typed
-//! [`SimulationError`] carrying the time and the cause, and returns the
+//! [`SimulationError`](crate::integrate::SimulationError) carrying the time and the cause, and returns the
 //! results computed up to then in a [`SimulationFailure`] (or, streamed,
 //! finishes the sink so the rows before the failure are written, and
 //! returns a [`StreamFailure`]).
@@ -17,14 +17,11 @@ mod run;
 mod sink;
 mod stream;
 
-pub use crate::closure::Switch;
-pub use crate::error::{SettingsError, SimulationError};
-pub use crate::system::Simulated;
 pub use energy::{
     DISSIPATED, ENERGY, EnergyBalance, EnergyBalanceError, MOTOR_WORK, RESIDUAL_FLOOR,
     RESIDUAL_PER_TOLERANCE,
 };
-pub use error::SimulationFailure;
+pub use error::{RunError, SimulationFailure};
 pub use output::Output;
 pub use results::{Results, Sample};
 pub use run::{simulate, simulate_with_progress};
@@ -33,4 +30,4 @@ pub use sink::ArrowSink;
 pub use sink::{
     Background, ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned,
 };
-pub use stream::{RunError, RunReport, StreamFailure, simulate_into};
+pub use stream::{RunReport, StreamFailure, simulate_into};

@@ -1,7 +1,8 @@
 use std::io;
 use std::path::Path;
 
-use super::{CsvSink, Select, Sink, SinkError, Switch};
+use super::{CsvSink, Select, Sink, SinkError};
+use crate::closure::Switch;
 use crate::integrate::{Check, Stats};
 
 /// The time series of a run: one row of named quantities per output time,

@@ -1,8 +1,7 @@
 use nalgebra::DVector;
 
-use super::{Output, Results, RunError, SimulationError, SimulationFailure, Sink};
-use crate::error::SettingsError;
-use crate::integrate::{Check, Integrator, Stats};
+use super::{Output, Results, RunError, SimulationFailure, Sink};
+use crate::integrate::{Check, Integrator, SettingsError, SimulationError, Stats};
 use crate::system::Simulated;
 
 /// Integrates `system` from `t0` to `t_end` (s), recording at `output`.

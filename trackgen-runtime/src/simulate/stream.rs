@@ -2,11 +2,11 @@
 
 use std::fmt;
 
-use thiserror::Error;
-
 use super::run::drive;
-use super::{Output, Simulated, SimulationError, Sink, SinkError, Switch};
+use super::{Output, RunError, Sink, SinkError};
+use crate::closure::Switch;
 use crate::integrate::{Check, Integrator, Stats};
+use crate::system::Simulated;
 
 /// What a streamed run did, besides its rows: how many it gave the sink,
 /// how many partition switches it made and the integrator's counters. The
@@ -25,34 +25,6 @@ pub struct RunReport {
     /// The stiffness checks that chose the method, with
     /// [`Integrator::Auto`](crate::integrate::Integrator::Auto).
     pub checks: Vec<Check>,
-}
-
-/// Why a streamed run stopped early.
-#[derive(Debug, Error)]
-pub enum RunError {
-    /// The simulation failed (the same errors as [`simulate`](super::simulate)).
-    #[error(transparent)]
-    Simulation(#[from] SimulationError),
-    /// The sink refused a row, or could not be written to.
-    #[error("writing the results failed at t = {t} s: {source}")]
-    Sink {
-        /// The time of the row, s (the start for `begin`, the last row's
-        /// time for `finish`).
-        t: f64,
-        /// The sink's error.
-        source: SinkError,
-    },
-}
-
-impl RunError {
-    /// The simulation time at which it happened (`None` for a set-up
-    /// error).
-    pub fn time(&self) -> Option<f64> {
-        match self {
-            RunError::Simulation(e) => e.time(),
-            RunError::Sink { t, .. } => Some(*t),
-        }
-    }
 }
 
 /// A streamed run that stopped early. The sink was finished: every row
@@ -101,6 +73,7 @@ impl std::error::Error for StreamFailure {
 /// ```no_run
 /// # use trackgen_runtime::simulate::*;
 /// # use trackgen_runtime::integrate::Integrator;
+/// # use trackgen_runtime::system::Simulated;
 /// # fn demo(system: &mut dyn Simulated) -> Result<(), Box<dyn std::error::Error>> {
 /// let mut csv = CsvSink::create("run.csv")?;
 /// let mut arrow = ArrowSink::create("run.arrow")?;

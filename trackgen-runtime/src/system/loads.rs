@@ -1,7 +1,7 @@
 use nalgebra::SVector;
 
 use super::LoadFn;
-use crate::model::BodyLoad;
+use crate::multibody::BodyLoad;
 
 /// The loads on a subsystem's bodies at an evaluation: those set from
 /// outside (contact with another subsystem), plus the user's load function.

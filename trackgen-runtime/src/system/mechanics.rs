@@ -4,7 +4,7 @@
 use nalgebra::{SVector, Vector2};
 
 use super::record;
-use crate::model::RecursiveModel;
+use crate::multibody::RecursiveModel;
 use crate::planar::cross;
 
 record! {

@@ -26,15 +26,19 @@ pub(crate) use record::record;
 use nalgebra::DVector;
 
 use crate::closure::Switch;
-use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
+use crate::integrate::SimulationError;
 
 /// Applied loads as a function of time and state: `(t, q_i, q̇_i, loads)`,
-/// one [`BodyLoad`](crate::BodyLoad) per body. The slice holds the loads
+/// one [`BodyLoad`](crate::multibody::BodyLoad) per body. The slice holds the loads
 /// already acting (contact, in a vehicle): add to it (`+=`).
 pub type LoadFn<const D: usize> = Box<
-    dyn FnMut(f64, &nalgebra::SVector<f64, D>, &nalgebra::SVector<f64, D>, &mut [crate::BodyLoad])
-        + Send,
+    dyn FnMut(
+            f64,
+            &nalgebra::SVector<f64, D>,
+            &nalgebra::SVector<f64, D>,
+            &mut [crate::multibody::BodyLoad],
+        ) + Send,
 >;
 
 /// A system a simulation can run: an [`OdeSystem`] that also knows its

@@ -2,8 +2,8 @@ use nalgebra::DVector;
 
 use super::Simulated;
 use crate::closure::Switch;
-use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
+use crate::integrate::SimulationError;
 
 /// Two subsystems integrated together, their states side by side in one
 /// vector: the chassis and the track of a vehicle (spec §3: assembled

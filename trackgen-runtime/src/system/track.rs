@@ -5,12 +5,13 @@ use super::mechanics::{masses, mechanics_columns, record_mechanics};
 use super::{Simulated, record};
 use crate::closure::partitioning::{self, Partition};
 use crate::closure::{
-    ClosureError, ClosureMethod, MultiplierOptions, ProjectionFailure, Switch, multipliers,
+    ClosureError, ClosureMethod, MultiplierOptions, ProjectionFailure, RecoveryError, Switch,
+    multipliers,
 };
-use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
+use crate::integrate::SimulationError;
 use crate::laws::PenaltyJoint;
-use crate::model::{BodyLoad, ClosingJoint, Closure, TrackModel};
+use crate::multibody::{BodyLoad, ClosingJoint, Closure, TrackModel};
 use crate::planar::Rotation;
 
 record! {
@@ -197,7 +198,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
                 &mut kept.trig,
             )?,
             _ => {
-                crate::sin_cos_each(&y[2..D], &mut kept.trig);
+                crate::trig::sin_cos_each(&y[2..D], &mut kept.trig);
                 kept.q.copy_from_slice(&y[..D]);
                 kept.qd.copy_from_slice(&y[D..]);
             }
@@ -431,11 +432,12 @@ impl<M: TrackModel<D>, const D: usize> Simulated for TrackSystem<M, D> {
                         ProjectionFailure::NotConverged {
                             iterations,
                             residual,
-                        } => SimulationError::NewtonFailed {
+                        } => RecoveryError::NewtonFailed {
                             t,
                             iterations,
                             residual,
-                        },
+                        }
+                        .into(),
                     },
                 )?;
                 y[..D].copy_from_slice(q.as_slice());

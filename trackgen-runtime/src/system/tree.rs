@@ -3,9 +3,9 @@ use nalgebra::{DVector, SVector};
 use super::Simulated;
 use super::loads::Loads;
 use super::mechanics::{masses, mechanics_columns, record_mechanics};
-use crate::error::SimulationError;
 use crate::integrate::OdeSystem;
-use crate::model::{BodyLoad, ChassisModel, RecursiveModel};
+use crate::integrate::SimulationError;
+use crate::multibody::{BodyLoad, ChassisModel, RecursiveModel};
 
 /// A body tree without constraints in motion: a chassis (spec §3), an open
 /// chain, or a track closed by its declared penalty joint. The state is
@@ -133,7 +133,7 @@ impl<M: RecursiveModel<D>, const D: usize> OdeSystem for TreeSystem<M, D> {
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
-        crate::sin_cos_each(&y[2..D], &mut self.trig);
+        crate::trig::sin_cos_each(&y[2..D], &mut self.trig);
         derivative_at(&self.model, &mut self.loads, &self.trig, t, y, dy)
     }
 }

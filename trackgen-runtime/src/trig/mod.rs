@@ -27,7 +27,7 @@
 /// The largest `|x|` reduced here, rad: `2¹⁹ π/2`, fdlibm's bound for the
 /// three-part reduction (a track's links turn through 2π each lap; an
 /// hour at 3 m/s on the M113 is ~7000 rad).
-pub(crate) const FAST_RANGE: f64 = 823_549.6;
+pub const FAST_RANGE: f64 = 823_549.6;
 
 // The constants by their bits, as fdlibm gives them.
 const INV_PIO2: f64 = std::f64::consts::FRAC_2_PI;
@@ -114,7 +114,7 @@ pub fn sin_cos_each(angles: &[f64], out: &mut [(f64, f64)]) {
     // Four numbers at a time where the processor allows (the same bits).
     // Tried on the generated linear-time solve too: its vectorised pass is
     // too short to gain, 15 % slower in the bench.
-    crate::wide::run(
+    crate::simd::run(
         #[inline(always)]
         || each(angles, out),
     );

@@ -4,7 +4,7 @@
 
 use nalgebra::SVector;
 
-use crate::model::{ArmSpring, BodyLoad, ChassisModel};
+use crate::multibody::{ArmSpring, BodyLoad, ChassisModel};
 
 /// The springs compiled into the chassis `M`, in the order of its parts.
 pub fn declared<M: ChassisModel<D>, const D: usize>() -> Vec<ArmSpring> {

@@ -9,12 +9,12 @@ use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
 use crate::contact::soil::Soil;
 use crate::contact::{ContactLaws, GroundLaws, Terrain};
-use crate::model::ArmSpring;
+use crate::multibody::ArmSpring;
 
 /// How a vehicle meets the world. Nothing here enters the mass matrix:
 /// every field can be changed between runs without recompiling (a vehicle
 /// declared with `model!` gives its declared values from
-/// [`Vehicle::config`](super::Vehicle::config)), and is checked when the
+/// [`Vehicle::declared_config`](super::Vehicle::declared_config)), and is checked when the
 /// vehicle is built ([`build`](super::build)).
 #[derive(Debug)]
 pub struct VehicleConfig {

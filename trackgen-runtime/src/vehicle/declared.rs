@@ -4,26 +4,12 @@
 
 use nalgebra::{DVector, Vector2};
 
-use super::{BuildError, Drive, StateLayout, VehicleConfig};
+use super::{BuildError, Drive, Geometry, StateLayout, VehicleConfig};
+use crate::contact::Terrain;
 use crate::contact::soft_ground::Rut;
-use crate::contact::sprocket::ToothProfile;
-use crate::contact::{ShoeGeometry, Terrain};
-use crate::error::SimulationError;
-use crate::model::{ChassisPart, TreeDescription};
+use crate::integrate::SimulationError;
+use crate::multibody::{ChassisPart, TreeDescription};
 use crate::system::Simulated;
-
-/// A vehicle's contact geometry, compiled with its masses from the
-/// declaration's `shoe` and sprocket: what its shoes touch the world with
-/// and what its sprocket's teeth are. Fixed for the vehicle (the laws that
-/// act on it are in [`VehicleConfig`]).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Geometry {
-    /// The shoes' contact features.
-    pub shoe: ShoeGeometry,
-    /// The sprocket's teeth, from its declared `teeth` (the same number
-    /// as its [`ChassisPart::teeth`]) and radii.
-    pub sprocket: ToothProfile,
-}
 
 /// A vehicle declared with `trackgen::model!`: its compiled track and
 /// chassis, their coordinate counts, its contact geometry and declared
@@ -43,10 +29,10 @@ pub trait Vehicle: Copy + Default + Send + Sync + 'static {
     /// Chassis coordinates `q_i` (bodies + 2).
     const CHASSIS_DOF: usize;
     /// The compiled track (`NameTrack`, a
-    /// [`TrackModel<TRACK_DOF>`](crate::TrackModel)).
+    /// [`TrackModel<TRACK_DOF>`](crate::multibody::TrackModel)).
     type Track: Copy + Default + Send + Sync + 'static;
     /// The compiled chassis (`NameChassis`, a
-    /// [`ChassisModel<CHASSIS_DOF>`](crate::ChassisModel)).
+    /// [`ChassisModel<CHASSIS_DOF>`](crate::multibody::ChassisModel)).
     type Chassis: Copy + Default + Send + Sync + 'static;
     /// The vehicle in motion (`NameSystem`).
     type System: VehicleDynamics;
@@ -57,16 +43,17 @@ pub trait Vehicle: Copy + Default + Send + Sync + 'static {
     /// The declared contact laws, friction and arm springs on `terrain`,
     /// driven by `drive`: every field public, to change before
     /// [`system_with`](Self::system_with) (no rebuild needed).
-    fn config(terrain: Terrain, drive: Drive) -> VehicleConfig;
+    fn declared_config(terrain: Terrain, drive: Drive) -> VehicleConfig;
 
     /// A PI speed drive with the declared gains and torque limit: `target`
     /// is the forward speed wanted, m/s, against time, s.
     fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive;
 
-    /// The vehicle assembled on `terrain` with its declared
-    /// [`config`](Self::config) and `drive`: [`build`] of that.
+    /// The vehicle assembled on `terrain` with its
+    /// [`declared_config`](Self::declared_config) and `drive`: [`build`]
+    /// of that.
     fn system(terrain: Terrain, drive: Drive) -> Result<Self::System, BuildError> {
-        build::<Self>(Self::config(terrain, drive))
+        build::<Self>(Self::declared_config(terrain, drive))
     }
 
     /// The vehicle assembled with `config`: [`build`].
@@ -87,19 +74,32 @@ pub trait Vehicle: Copy + Default + Send + Sync + 'static {
 /// [`BuildError::Assembly`] when no start fits, [`BuildError::Config`] for
 /// a configuration that makes no vehicle.
 pub fn build<V: Vehicle>(config: VehicleConfig) -> Result<V::System, BuildError> {
-    V::System::build_from(V::geometry(), config)
+    <V::System as sealed::Build>::build_from(V::geometry(), config)
+}
+
+/// [`build`]'s work, which only the runtime's own systems do: a public
+/// trait in a private module, so [`VehicleDynamics`] is implemented here
+/// and nowhere else.
+pub(crate) mod sealed {
+    use super::{BuildError, Geometry, VehicleConfig};
+
+    /// Assembling a system of this type from a vehicle's geometry and a
+    /// configuration.
+    pub trait Build: Sized {
+        /// The system assembled on `config`'s terrain (see
+        /// [`build`](super::build)).
+        fn build_from(geometry: Geometry, config: VehicleConfig) -> Result<Self, BuildError>;
+    }
 }
 
 /// A vehicle in motion, whatever its coordinate counts: what generic code
 /// over [`Vehicle`] needs of [`V::System`](Vehicle::System) besides
 /// simulating it. Implemented by
 /// [`VehicleSystem`](super::VehicleSystem) for every track and chassis.
-pub trait VehicleDynamics: Simulated + Send + Sized {
-    /// [`build`]'s work for this system's track and chassis; call
-    /// [`build`].
-    #[doc(hidden)]
-    fn build_from(geometry: Geometry, config: VehicleConfig) -> Result<Self, BuildError>;
-
+///
+/// Sealed: implemented by the runtime's [`VehicleSystem`](super::VehicleSystem)
+/// alone, which [`build`] makes.
+pub trait VehicleDynamics: Simulated + Send + Sized + sealed::Build {
     /// The configuration it runs with.
     fn config(&self) -> &VehicleConfig;
 
@@ -124,7 +124,7 @@ pub trait VehicleDynamics: Simulated + Send + Sized {
     /// configuration's [`arms`](VehicleConfig::arms)), to change between
     /// runs without rebuilding, or for a
     /// [sensitivity](crate::analysis::equilibrium_sensitivity).
-    fn arms_mut(&mut self) -> &mut [crate::model::ArmSpring];
+    fn arms_mut(&mut self) -> &mut [crate::multibody::ArmSpring];
 
     /// Where each quantity sits in the state.
     fn layout(&self) -> StateLayout;

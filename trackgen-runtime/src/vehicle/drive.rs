@@ -2,7 +2,7 @@
 
 use thiserror::Error;
 
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 
 /// Settings of a drive that make no controller.
 #[derive(Debug, Clone, PartialEq, Error)]

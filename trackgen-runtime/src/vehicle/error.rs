@@ -9,7 +9,7 @@ use crate::closure::ClosureError;
 use crate::contact::TerrainError;
 use crate::contact::soil::SoilError;
 use crate::laws::ParameterError;
-use crate::model::PitchError;
+use crate::multibody::PitchError;
 
 /// A configuration that makes no vehicle ([`VehicleConfig`](super::VehicleConfig)
 /// checked against the compiled model).

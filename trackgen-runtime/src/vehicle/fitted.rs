@@ -7,7 +7,7 @@
 use super::Geometry;
 use crate::contact::{ContactLaws, GroundFriction, GroundLaws};
 use crate::laws::{Friction, NormalLaw, Stiction};
-use crate::model::{ChassisPart, PartKind, TreeDescription};
+use crate::multibody::{ChassisPart, PartKind, TreeDescription};
 
 /// The mean static penetration of a ground point the ground's stiffness is
 /// fitted to, m.

@@ -1,58 +1,16 @@
 //! Stages 2 and 3 of a vehicle's evaluation: contact detection, then the
 //! force elements, each giving its load with what it stores and
-//! dissipates, booked in one place ([`Books`]).
+//! dissipates, booked in one place ([`EnergyBooks`]).
 
 use nalgebra::SVector;
 
+use super::books::EnergyBooks;
 use super::workspace::Workspace;
 use super::{Geometry, VehicleConfig, arms};
 use crate::contact::soft_ground::SoftGround;
-use crate::contact::{ContactForce, ContactJacobian, GroundFriction, ground, sprocket, wheel};
-use crate::error::SimulationError;
-use crate::model::{BodyLoad, ChassisModel, PartKind};
-
-/// What the force elements did at one evaluation: the energy books' terms
-/// (elastic energy stored, power dissipated, the drive's torque) and what
-/// the vehicle records of its contacts.
-#[derive(Debug, Clone, Copy, Default)]
-pub(super) struct Books {
-    /// The normal force of the ground on the track, summed, N.
-    pub ground_normal: f64,
-    /// The deepest ground contact, m.
-    pub ground_penetration: f64,
-    /// The deepest rim contact, m.
-    pub wheel_penetration: f64,
-    /// The deepest tooth contact, m.
-    pub sprocket_penetration: f64,
-    /// Elastic energy in the contacts (and soil), J.
-    pub potential: f64,
-    /// Elastic energy in the arms' springs, J.
-    pub arm_potential: f64,
-    /// Power dissipated: contacts, soil, arm dampers, drawbar, W.
-    pub dissipation: f64,
-    /// The drive's torque on the sprocket, N m.
-    pub torque: f64,
-    /// The rate of the drive controller's integral, rad/s.
-    pub integral_rate: f64,
-}
-
-impl Books {
-    /// Books a contact's energy terms; returns its penetration.
-    #[inline]
-    fn contact(&mut self, force: &ContactForce) -> f64 {
-        self.potential += force.potential;
-        self.dissipation += force.dissipation;
-        force.penetration
-    }
-
-    /// Books a ground contact.
-    #[inline]
-    fn ground(&mut self, force: &ContactForce) {
-        self.ground_normal += force.normal;
-        let depth = self.contact(force);
-        self.ground_penetration = self.ground_penetration.max(depth);
-    }
-}
+use crate::contact::{ContactJacobian, GroundFriction, ground, sprocket, wheel};
+use crate::integrate::SimulationError;
+use crate::multibody::{BodyLoad, ChassisModel, PartKind};
 
 /// The fraction of a statically loaded point's sliding deflection that is
 /// the unit of its stiction state ([`stiction_scale`]). Measured on the
@@ -160,7 +118,7 @@ pub(super) fn respond<const DC: usize>(
     chassis_loads.fill(BodyLoad::ZERO);
     tangential_rate.fill(0.0);
     ground_normal.fill(None);
-    *books = Books::default();
+    *books = EnergyBooks::default();
     let sprocket_body = sprocket.map(|s| s.body);
     for contact in contacts.iter() {
         let link_load = &mut track_loads[contact.link];

@@ -39,18 +39,12 @@
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
 use super::drive::DriveSlopes;
-use crate::DynamicsError;
 use crate::contact::ContactJacobian;
 use crate::contact::tangent::{DEFLECTION, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
 use crate::dynamics::ShiftedChain;
-use crate::model::{ArmSpring, TreeDescription};
-use crate::planar::Rotation;
-
-/// `⟂v`.
-#[inline]
-fn perp(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
-}
+use crate::multibody::DynamicsError;
+use crate::multibody::{ArmSpring, TreeDescription};
+use crate::planar::{Rotation, perp};
 
 /// A 3 × 3 block of a contact Jacobian's rows `rows` (a 3-row load) at
 /// columns `column..column + 3`.
@@ -427,7 +421,7 @@ impl Implicit {
 
     /// Factors `I − a W` for the shift `a = γ h` (s).
     pub fn factor(&mut self, a: f64) -> Result<(), DynamicsError> {
-        crate::wide::run(
+        crate::simd::run(
             #[inline(always)]
             || self.factor_inline(a),
         )
@@ -620,7 +614,7 @@ impl Implicit {
     /// # Panics
     /// If not factored (a programming error).
     pub fn solve(&mut self, r: &mut [f64]) {
-        crate::wide::run(
+        crate::simd::run(
             #[inline(always)]
             || self.solve_inline(r),
         );

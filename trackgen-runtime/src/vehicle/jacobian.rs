@@ -18,18 +18,12 @@
 use nalgebra::{Matrix2, SMatrix, SVector, Vector2, Vector3};
 
 use super::drive::DriveSlopes;
-use crate::DynamicsError;
 use crate::contact::tangent::{DEFLECTION, INPUTS, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
 use crate::contact::{Contact, ContactJacobian};
 use crate::dynamics::derivative::{ChainDirections, ChainTangent, TreeDirection, TreeTangent};
-use crate::model::{ArmSpring, BodyLoad, ClosingJoint, TreeDescription};
-use crate::planar::Rotation;
-
-/// `⟂v`.
-#[inline]
-fn perp(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
-}
+use crate::multibody::DynamicsError;
+use crate::multibody::{ArmSpring, BodyLoad, ClosingJoint, TreeDescription};
+use crate::planar::{Rotation, perp};
 
 /// What a vehicle gives its Jacobian at a state, besides its contacts.
 pub(super) struct At<'a> {

@@ -13,12 +13,14 @@
 //!   the chassis' generated O(n) solves).
 
 pub mod arms;
+mod books;
 mod config;
 mod declared;
 mod drive;
 mod error;
 mod fitted;
 mod forces;
+mod geometry;
 mod implicit;
 mod jacobian;
 mod layout;
@@ -27,7 +29,7 @@ mod system;
 mod workspace;
 
 pub use config::VehicleConfig;
-pub use declared::{Geometry, Vehicle, VehicleDynamics, build};
+pub use declared::{Vehicle, VehicleDynamics, build};
 pub use drive::{Drive, DriveError, DriveSlopes};
 pub use error::{BuildError, ConfigError};
 pub use fitted::{
@@ -35,6 +37,7 @@ pub use fitted::{
     GROUND_DEPTH, GROUND_MU, RIM_DAMPING_RATIO, RIM_DEPTH, RIM_FRICTION_RATE, RIM_MU,
     TANGENTIAL_DAMPING_RATIO,
 };
+pub use geometry::Geometry;
 pub use layout::StateLayout;
 pub use record::VehicleRecord;
 pub use system::VehicleSystem;

@@ -4,6 +4,7 @@
 
 use nalgebra::{DVector, SVector, Vector2};
 
+use super::declared::sealed::Build;
 use super::forces::{self, Sprocket};
 use super::implicit::{Implicit, Offsets, Setting};
 use super::jacobian::{At, Tangent};
@@ -18,9 +19,9 @@ use crate::closure::Switch;
 use crate::contact::soft_ground::{Rut, SoftGround};
 use crate::contact::sprocket::{pitch_radius, rolling_radius};
 use crate::contact::{BodyState, GroundFriction};
-use crate::error::SimulationError;
+use crate::integrate::SimulationError;
 use crate::integrate::{ImplicitSolve, OdeSystem};
-use crate::model::{ChassisModel, ChassisPart, PartKind, TrackModel, TreeDescription};
+use crate::multibody::{ChassisModel, ChassisPart, PartKind, TrackModel, TreeDescription};
 use crate::system::{Pair, Simulated, TrackSystem, TreeSystem};
 
 /// A vehicle: its track and chassis integrated together, coupled by the
@@ -457,7 +458,7 @@ fn check<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usiz
     Ok(())
 }
 
-impl<T, const DT: usize, C, const DC: usize> VehicleDynamics for VehicleSystem<T, DT, C, DC>
+impl<T, const DT: usize, C, const DC: usize> Build for VehicleSystem<T, DT, C, DC>
 where
     T: TrackModel<DT> + Default + Send,
     C: ChassisModel<DC> + Default + Send,
@@ -481,7 +482,13 @@ where
             config,
         )?)
     }
+}
 
+impl<T, const DT: usize, C, const DC: usize> VehicleDynamics for VehicleSystem<T, DT, C, DC>
+where
+    T: TrackModel<DT> + Default + Send,
+    C: ChassisModel<DC> + Default + Send,
+{
     fn config(&self) -> &VehicleConfig {
         &self.config
     }
@@ -502,7 +509,7 @@ where
         self.soil.as_ref().map(|s| &s.rut)
     }
 
-    fn arms_mut(&mut self) -> &mut [crate::model::ArmSpring] {
+    fn arms_mut(&mut self) -> &mut [crate::multibody::ArmSpring] {
         &mut self.config.arms
     }
 

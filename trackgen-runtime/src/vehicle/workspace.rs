@@ -4,9 +4,9 @@
 
 use nalgebra::{SVector, Vector2};
 
-use super::forces::Books;
+use super::books::EnergyBooks;
 use crate::contact::{BodyState, Contact, ContactJacobian};
-use crate::model::{BodyLoad, RecursiveModel};
+use crate::multibody::{BodyLoad, RecursiveModel};
 
 /// The buffers of an evaluation, filled stage by stage.
 pub(super) struct Workspace {
@@ -44,7 +44,7 @@ pub(super) struct Workspace {
     pub ground_normal: Vec<Option<f64>>,
     /// What the force elements stored, dissipated and did, at the last
     /// evaluation.
-    pub books: Books,
+    pub books: EnergyBooks,
     /// The time and state of the evaluation the workspace holds (`None`
     /// while one is under way, or after one failed).
     pub at: Option<f64>,
@@ -78,7 +78,7 @@ impl Workspace {
             chassis_loads: vec![BodyLoad::ZERO; bodies],
             tangential_rate: vec![0.0; tangential],
             ground_normal: vec![None; tangential],
-            books: Books::default(),
+            books: EnergyBooks::default(),
             at: None,
             state: Vec::new(),
             accelerated: false,
@@ -109,7 +109,7 @@ impl Workspace {
         }
         let m = C::BODIES;
         let (r, v) = (&mut self.positions[..m], &mut self.velocities[..m]);
-        crate::sin_cos_each(&qc.as_slice()[2..], &mut self.part_trig);
+        crate::trig::sin_cos_each(&qc.as_slice()[2..], &mut self.part_trig);
         chassis.body_states_with_trig(&self.part_trig, qc, qdc, r, v);
         for (b, part) in self.parts.iter_mut().enumerate() {
             *part = BodyState::with_sin_cos(r[b], qc[2 + b], self.part_trig[b], v[b], qdc[2 + b]);

@@ -29,9 +29,9 @@
 
 use nalgebra::{Matrix2, Vector2};
 
-use crate::DynamicsError;
-use crate::model::{BodyLoad, ClosingJoint, TreeDescription};
-use crate::planar::Rotation;
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, ClosingJoint, TreeDescription};
+use crate::planar::{Rotation, perp};
 
 /// A link's constants.
 #[derive(Debug, Clone, Copy)]
@@ -55,12 +55,6 @@ struct AtState {
     omega: f64,
     force: Vector2<f64>,
     moment: f64,
-}
-
-/// The quarter turn `(x, y) → (−y, x)`: `A_θ ū = ⟂(A ū)`.
-#[inline]
-fn perp(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
 }
 
 #[inline]
@@ -202,7 +196,7 @@ impl ChainTangent {
     /// gravity (one per link, or none) and the closing joint as `closing`
     /// acts; solves them there (the accelerations and joint forces every
     /// direction needs). The same accelerations as the generated
-    /// [`linear_time_dynamics`](crate::TrackModel::linear_time_dynamics).
+    /// [`linear_time_dynamics`](crate::multibody::TrackModel::linear_time_dynamics).
     ///
     /// # Panics
     /// If `trig` or `rates` is not one per link, or `loads` neither one per
@@ -324,7 +318,7 @@ impl ChainTangent {
     }
 
     /// The joint forces at the factored state, as
-    /// [`linear_time_dynamics`](crate::TrackModel::linear_time_dynamics)
+    /// [`linear_time_dynamics`](crate::multibody::TrackModel::linear_time_dynamics)
     /// gives them (the last the closing joint's; zero when cut).
     pub fn joint_forces(&self) -> &[Vector2<f64>] {
         &self.lambda

@@ -18,8 +18,8 @@ pub use tree::{TreeDirection, TreeTangent};
 
 use nalgebra::{DMatrix, SVector, Vector2};
 
-use crate::DynamicsError;
-use crate::model::{BodyLoad, ClosingJoint, Closure, RecursiveModel, TrackModel};
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, ClosingJoint, Closure, RecursiveModel, TrackModel};
 use crate::planar::Rotation;
 
 /// `∂q̈_i/∂q_i` and `∂q̈_i/∂q̇_i` at a state, `DOF × DOF` each (rows the

@@ -23,14 +23,9 @@
 
 use nalgebra::{DMatrix, DVector, Vector2};
 
-use crate::DynamicsError;
-use crate::model::{BodyLoad, Closure, TreeDescription};
-use crate::planar::Rotation;
-
-#[inline]
-fn perp(v: Vector2<f64>) -> Vector2<f64> {
-    Vector2::new(-v.y, v.x)
-}
+use crate::multibody::DynamicsError;
+use crate::multibody::{BodyLoad, Closure, TreeDescription};
+use crate::planar::{Rotation, perp};
 
 /// One direction along which to differentiate a tree: the changes of its
 /// recursive coordinates `δq_i`, their rates `δq̇_i` (each `DOF` long, or

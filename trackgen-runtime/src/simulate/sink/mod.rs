@@ -39,7 +39,7 @@ pub use thinned::Thinned;
 
 use thiserror::Error;
 
-use super::Switch;
+use crate::closure::Switch;
 
 /// A receiver of a run's samples, row by row.
 ///

@@ -1,7 +1,7 @@
 use nalgebra::{DMatrix, Vector2};
 
 use crate::laws::{PenaltyJoint, TorsionSpring};
-use crate::planar::Rotation;
+use crate::planar::{Rotation, perp};
 
 /// How a track loop is closed (spec §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -58,7 +58,7 @@ pub struct LoopJoint {
 }
 
 /// A tree of rigid bodies in recursive coordinates, as data. Generated models
-/// return theirs from [`RecursiveModel::description`](crate::RecursiveModel::description); the reference route
+/// return theirs from [`RecursiveModel::description`](crate::multibody::RecursiveModel::description); the reference route
 /// evaluates the dynamics from it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TreeDescription {
@@ -140,7 +140,6 @@ impl TreeDescription {
             "H is 3 rows per body by the dof"
         );
         let rows = 3 * m;
-        let perp = |v: Vector2<f64>| Vector2::new(-v.y, v.x);
         // Column-major: entry (r, c) at `c · rows + r`.
         let h = out.as_mut_slice();
         h.fill(0.0);

@@ -5,7 +5,7 @@
 //! is a DWARF lexical block that LLVM builds recursively: at 512 links
 //! (thousands of nested `let`s in `equations_of_motion`) rustc's
 //! code-generation thread overflowed its stack and the build crashed.
-//! [`flatten`] groups each run of up to 64 successive `let`s into one,
+//! [`shallow_scopes`] groups each run of up to 64 successive `let`s into one,
 //!
 //! ```text
 //! let (a, b, …) = { let a = …; let b = …; …; (a, b, …) };
@@ -32,11 +32,11 @@ const UNGROUPED: usize = 256;
 /// blocks in it, each on its own: runs of successive `let`s whose pattern
 /// is a name or a tuple of names become groups (see the module docs). A
 /// group ends before a `let` that would bind a name it binds already.
-pub fn flatten(body: TokenStream) -> TokenStream {
+pub fn shallow_scopes(body: TokenStream) -> TokenStream {
     group(body, UNGROUPED)
 }
 
-/// [`flatten`], grouping blocks of more than `ungrouped` `let`s.
+/// [`shallow_scopes`], grouping blocks of more than `ungrouped` `let`s.
 fn group(body: TokenStream, ungrouped: usize) -> TokenStream {
     let tokens: Vec<TokenTree> = body.into_iter().collect();
     let lets = tokens
@@ -188,8 +188,8 @@ mod tests {
 
     #[test]
     fn only_long_blocks_are_grouped() {
-        assert_eq!(flatten(lets(256)).to_string(), lets(256).to_string());
-        assert_eq!(outer_lets(flatten(lets(257))), 5);
+        assert_eq!(shallow_scopes(lets(256)).to_string(), lets(256).to_string());
+        assert_eq!(outer_lets(shallow_scopes(lets(257))), 5);
     }
 
     #[test]

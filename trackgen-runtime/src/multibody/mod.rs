@@ -1,8 +1,10 @@
-//! What a compiled model is: the traits generated code implements, and the
-//! run-time description of the same body tree.
+//! What a compiled model is: the traits generated code implements, the
+//! run-time description of the same body tree, the loads on its bodies,
+//! the closing joint, and why its dynamics could not be evaluated.
 
 mod closing;
 mod description;
+mod error;
 mod load;
 mod traits;
 
@@ -11,5 +13,6 @@ pub use description::{
     ArmSpring, BodyDescription, ChassisPart, Closure, LoopJoint, PartKind, PitchError,
     TreeDescription,
 };
+pub use error::DynamicsError;
 pub use load::BodyLoad;
 pub use traits::{ChassisModel, RecursiveModel, TrackModel};

@@ -1,7 +1,7 @@
 use nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
 
 use super::{BodyLoad, ChassisPart, ClosingJoint, Closure, TreeDescription};
-use crate::DynamicsError;
+use crate::multibody::DynamicsError;
 
 /// A body tree in recursive coordinates, compiled to code (spec §1, §3).
 ///
@@ -113,7 +113,7 @@ pub trait RecursiveModel<const DOF: usize> {
     /// track is its [`linear_time_dynamics`](TrackModel::linear_time_dynamics)
     /// with the closing joint cut (its declared penalty spring across the
     /// cut). The same accelerations as
-    /// [`open_dynamics`](crate::dynamics::open_dynamics), the dense cross-check.
+    /// [`dense_open_dynamics`](crate::dynamics::dense_open_dynamics), the dense cross-check.
     ///
     /// # Panics
     /// If `trig` is not one per body, or `loads` neither one per body nor

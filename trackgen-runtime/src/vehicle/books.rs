@@ -1,0 +1,49 @@
+//! A vehicle's energy books at one evaluation: what every force element
+//! stored, dissipated and did, summed in one place so that the work of
+//! the drive balances the change of energy plus the dissipated work by
+//! construction (each element gives its load with its energy terms).
+
+use crate::contact::ContactForce;
+
+/// What the force elements did at one evaluation: the energy books' terms
+/// (elastic energy stored, power dissipated, the drive's torque) and what
+/// the vehicle records of its contacts.
+#[derive(Debug, Clone, Copy, Default)]
+pub(super) struct EnergyBooks {
+    /// The normal force of the ground on the track, summed, N.
+    pub ground_normal: f64,
+    /// The deepest ground contact, m.
+    pub ground_penetration: f64,
+    /// The deepest rim contact, m.
+    pub wheel_penetration: f64,
+    /// The deepest tooth contact, m.
+    pub sprocket_penetration: f64,
+    /// Elastic energy in the contacts (and soil), J.
+    pub potential: f64,
+    /// Elastic energy in the arms' springs, J.
+    pub arm_potential: f64,
+    /// Power dissipated: contacts, soil, arm dampers, drawbar, W.
+    pub dissipation: f64,
+    /// The drive's torque on the sprocket, N m.
+    pub torque: f64,
+    /// The rate of the drive controller's integral, rad/s.
+    pub integral_rate: f64,
+}
+
+impl EnergyBooks {
+    /// Books a contact's energy terms; returns its penetration.
+    #[inline]
+    pub fn contact(&mut self, force: &ContactForce) -> f64 {
+        self.potential += force.potential;
+        self.dissipation += force.dissipation;
+        force.penetration
+    }
+
+    /// Books a ground contact.
+    #[inline]
+    pub fn ground(&mut self, force: &ContactForce) {
+        self.ground_normal += force.normal;
+        let depth = self.contact(force);
+        self.ground_penetration = self.ground_penetration.max(depth);
+    }
+}
