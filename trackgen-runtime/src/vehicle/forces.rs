@@ -87,23 +87,58 @@ impl Sprocket {
     }
 }
 
-/// Stage 3, the force elements, into `work`'s loads and books: every
-/// contact's law (rigid ground, or the soil), with the ground points'
-/// tangential states `tangential` (stiction deflections in units of
-/// `scale` m, see [`stiction_scale`], or the soil's
-/// shear displacements; one per ground point, link by link), the arms'
-/// springs and dampers, the drawbar and the drive (at controller integral
-/// `integral`).
-#[allow(clippy::too_many_arguments)]
+/// The ground points' tangential states at an evaluation: one per ground
+/// point, link by link; stiction deflections in units of `scale` m (see
+/// [`stiction_scale`]) on rigid ground, the soil's shear displacements on
+/// `soil`; empty with regularised friction.
+#[derive(Clone, Copy)]
+pub(super) struct TangentialStates<'a> {
+    /// The soil, on soft ground.
+    pub soil: Option<&'a SoftGround>,
+    /// Ground points per link.
+    pub per_link: usize,
+    /// The states.
+    pub values: &'a [f64],
+    /// The unit of a stiction deflection, m (1 on soil).
+    pub scale: f64,
+}
+
+/// The chassis and the drive at an evaluation.
+#[derive(Clone, Copy)]
+pub(super) struct ChassisState<'a, const DC: usize> {
+    /// The chassis' `q_i` and `q̇_i`.
+    pub q: &'a SVector<f64, DC>,
+    /// The chassis' rates.
+    pub qd: &'a SVector<f64, DC>,
+    /// The drive's sprocket, if the chassis has one.
+    pub sprocket: Option<Sprocket>,
+    /// The drive controller's integral, rad.
+    pub integral: f64,
+}
+
+/// Stage 3, the force elements at time `t`, into `work`'s loads and
+/// books: every contact's law (rigid ground, or the soil) with the ground
+/// points' `tangential` states, the arms' springs and dampers, the
+/// drawbar and the drive.
 pub(super) fn respond<const DC: usize>(
     work: &mut Workspace,
     t: f64,
     config: &VehicleConfig,
-    (soil, points, tangential, scale): (Option<&SoftGround>, usize, &[f64], f64),
-    sprocket: Option<Sprocket>,
-    (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
-    integral: f64,
+    tangential: TangentialStates<'_>,
+    chassis: ChassisState<'_, DC>,
 ) -> Result<(), SimulationError> {
+    let TangentialStates {
+        soil,
+        per_link: points,
+        values: tangential,
+        scale,
+    } = tangential;
+    let ChassisState {
+        q: qc,
+        qd: qdc,
+        sprocket,
+        integral,
+    } = chassis;
     let Workspace {
         parts,
         contacts,
@@ -206,17 +241,21 @@ pub(super) fn respond<const DC: usize>(
 /// the derivatives of its loads on both bodies and of its tangential
 /// state's rate over the two bodies' states and that state) into
 /// `work.jacobians`, one per contact in `work.contacts`'s order, at the
-/// state the last [`detect`] saw. The tangential states are `tangential`:
-/// on rigid ground stiction deflections in units of `scale` m
-/// ([`stiction_scale`]), whose column and row stay in metres; on `soil`
-/// the shear displacements, m.
+/// state the last [`detect`] saw, with the ground points' `tangential`
+/// states (a stiction deflection's column and row stay in metres).
 pub(super) fn linearise(
     work: &mut Workspace,
     config: &VehicleConfig,
     geometry: &Geometry,
     sprocket: Option<Sprocket>,
-    (soil, points, tangential, scale): (Option<&SoftGround>, usize, &[f64], f64),
+    tangential: TangentialStates<'_>,
 ) {
+    let TangentialStates {
+        soil,
+        per_link: points,
+        values: tangential,
+        scale,
+    } = tangential;
     let Workspace {
         links,
         parts,

@@ -39,11 +39,13 @@
 use nalgebra::{DMatrix, DVector, Matrix2, Matrix3, Vector2, Vector3};
 
 use super::drive::DriveSlopes;
-use crate::contact::ContactJacobian;
+use super::layout::Starts;
+use super::linearisation::{GroundPoints, Linearisation};
+
 use crate::contact::tangent::{DEFLECTION, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
 use crate::dynamics::ShiftedChain;
 use crate::multibody::DynamicsError;
-use crate::multibody::{ArmSpring, TreeDescription};
+use crate::multibody::TreeDescription;
 use crate::planar::{Rotation, perp};
 
 /// A 3 × 3 block of a contact Jacobian's rows `rows` (a 3-row load) at
@@ -91,45 +93,6 @@ struct PointLink {
     by_rate: Vector3<f64>,
 }
 
-/// What the vehicle gives at a linearisation, besides its contacts.
-pub(super) struct Setting<'a> {
-    /// Every link's `(sin θ, cos θ)`.
-    pub trig: &'a [(f64, f64)],
-    /// Every link's angular velocity `ω`, rad/s.
-    pub rates: &'a [f64],
-    /// The dependent pair of links (0-based).
-    pub pair: [usize; 2],
-    /// Every joint's force at the state: `joint_forces[j]` the force link
-    /// `j + 1` exerts on link `j` (0-based; the last is the closing
-    /// joint's).
-    pub joint_forces: &'a [Vector2<f64>],
-    /// Every chassis body's rotation.
-    pub rotations: &'a [Rotation],
-    /// The chassis' mass matrix `M_i` at the state.
-    pub chassis_mass: &'a [f64],
-    /// The arms' springs.
-    pub arms: &'a [ArmSpring],
-    /// The drive's sprocket body and its slopes.
-    pub drive: Option<(usize, DriveSlopes)>,
-    /// The ground points per link, the deflections' unit (m) and which
-    /// points touch (their normal force; empty without deflection
-    /// states).
-    pub points: (usize, f64, &'a [Option<f64>]),
-    /// `∂ż/∂z` of a lifted point's relaxing deflection, with stiction.
-    pub relaxation: Option<f64>,
-}
-
-/// Where the parts of the vehicle's state sit: the track's integrated
-/// coordinates (`n`) and rates, the chassis' (`DC`) and rates, the
-/// integral, the books, the deflections.
-#[derive(Debug, Clone, Copy)]
-pub(super) struct Offsets {
-    pub track: usize,
-    pub chassis: usize,
-    pub integral: usize,
-    pub tangential: usize,
-}
-
 /// The vehicle's `W`, linearised at a state and factored for a shift `a`.
 pub(super) struct Implicit {
     chain: ShiftedChain,
@@ -142,7 +105,7 @@ pub(super) struct Implicit {
     chassis: TreeDescription,
     /// `DC`.
     dof: usize,
-    offsets: Offsets,
+    starts: Starts,
 
     // The linearisation.
     trig: Vec<(f64, f64)>,
@@ -217,12 +180,8 @@ fn add(v: &mut [f64], i: usize, w: Vector3<f64>) {
 impl Implicit {
     /// The operator of a vehicle whose track is `track` (a loop closed by
     /// partitioning) and chassis `chassis`, its state laid out as
-    /// `offsets` says. `None` for a track that is not a loop.
-    pub fn new(
-        track: &TreeDescription,
-        chassis: &TreeDescription,
-        offsets: Offsets,
-    ) -> Option<Self> {
+    /// `starts` says. `None` for a track that is not a loop.
+    pub fn new(track: &TreeDescription, chassis: &TreeDescription, starts: Starts) -> Option<Self> {
         let chain = ShiftedChain::new(track)?;
         let joints = track.joints()?;
         let n = joints.len();
@@ -239,7 +198,7 @@ impl Implicit {
                 .collect(),
             chassis: chassis.clone(),
             dof,
-            offsets,
+            starts,
             trig: vec![(0.0, 1.0); n],
             pair: [0, 1],
             independent: Vec::with_capacity(n),
@@ -293,28 +252,32 @@ impl Implicit {
         })
     }
 
-    /// Takes the linearisation: the contacts `contacts` (their link and
-    /// other body) with their Jacobians `jacobians`, and `setting`.
+    /// Takes the linearisation `at` (the contacts with their Jacobians,
+    /// the bodies' states, the arms' and the drive's slopes), every joint's
+    /// force `joint_forces` (the
+    /// force link `j + 1` exerts on link `j`, 0-based; the last is the
+    /// closing joint's) and the chassis' mass matrix `chassis_mass`.
     pub fn linearise(
         &mut self,
-        contacts: &[crate::contact::Contact],
-        jacobians: &[ContactJacobian],
-        setting: &Setting<'_>,
+        at: &Linearisation<'_>,
+        joint_forces: &[Vector2<f64>],
+        chassis_mass: &[f64],
     ) -> Result<(), DynamicsError> {
+        let (_, rates, trig) = at.track;
         let n = self.joints.len();
-        self.trig.copy_from_slice(setting.trig);
-        if self.independent.is_empty() || self.pair != setting.pair {
+        self.trig.copy_from_slice(trig);
+        if self.independent.is_empty() || self.pair != at.pair {
             self.independent.clear();
             self.independent
-                .extend((0..n + 2).filter(|&c| c < 2 || !setting.pair.contains(&(c - 2))));
+                .extend((0..n + 2).filter(|&c| c < 2 || !at.pair.contains(&(c - 2))));
         }
-        self.pair = setting.pair;
+        self.pair = at.pair;
         for (i, (lever, spin)) in self.levers.iter_mut().zip(&mut self.spin).enumerate() {
             let rotation = Rotation::from_sin_cos(self.trig[i]);
             let (u1, u2) = self.joints[i];
             let (a1, a2) = (rotation.apply(u1), rotation.apply(u2));
             *lever = (perp(a1), perp(a2), perp(rotation.apply(self.spans[i])));
-            let omega = setting.rates[i];
+            let omega = rates[2 + i];
             *spin = (a1 * omega, a2 * omega);
         }
         let [k, l] = self.pair;
@@ -337,19 +300,21 @@ impl Implicit {
         for i in 0..n {
             let rotation = Rotation::from_sin_cos(self.trig[i]);
             let (u1, u2) = self.joints[i];
-            let (ahead, behind) = (
-                setting.joint_forces[i],
-                setting.joint_forces[(i + n - 1) % n],
-            );
+            let (ahead, behind) = (joint_forces[i], joint_forces[(i + n - 1) % n]);
             self.link_by_pose[i][(2, 2)] +=
                 -rotation.apply(u2).dot(&ahead) + rotation.apply(u1).dot(&behind);
         }
         self.couplings.clear();
         self.points.clear();
-        let (per_link, unit, touching) = setting.points;
+        let GroundPoints {
+            per_link,
+            unit,
+            touching,
+            relaxation,
+        } = at.points;
         // The points touching the ground, from their contacts; the rest
         // relax (stiction) or carry nothing (no states).
-        for (contact, jacobian) in contacts.iter().zip(jacobians) {
+        for (contact, jacobian) in at.contacts.iter().zip(at.jacobians) {
             let i = contact.link;
             self.link_by_pose[i] += block(&jacobian.link, LINK_POSE);
             self.link_by_rate[i] += block(&jacobian.link, LINK_RATE);
@@ -393,7 +358,7 @@ impl Implicit {
                 None => {}
             }
         }
-        if let Some(relax) = setting.relaxation {
+        if let Some(relax) = relaxation {
             for (state, normal) in touching.iter().enumerate() {
                 if normal.is_none() {
                     self.points.push(Point {
@@ -404,16 +369,15 @@ impl Implicit {
                 }
             }
         }
-        self.chassis_mass.copy_from_slice(setting.chassis_mass);
-        self.chassis
-            .velocity_transform(setting.rotations, &mut self.h);
+        self.chassis_mass.copy_from_slice(chassis_mass);
+        self.chassis.velocity_transform(at.chassis.2, &mut self.h);
 
         self.arms.clear();
-        self.arms.extend(setting.arms.iter().map(|arm| {
+        self.arms.extend(at.arms.iter().map(|arm| {
             let (by_angle, by_rate) = arm.spring.slopes();
             (arm.body, by_angle, by_rate)
         }));
-        self.drive = setting.drive;
+        self.drive = at.drive;
         self.shift = f64::NAN;
         self.schur = None;
         Ok(())
@@ -625,12 +589,12 @@ impl Implicit {
     fn solve_inline(&mut self, r: &mut [f64]) {
         let a = self.shift;
         let dof = self.dof;
-        let Offsets {
+        let Starts {
             track,
             chassis,
             integral,
             tangential,
-        } = self.offsets;
+        } = self.starts;
         let nt = self.independent.len();
         let mut track_q = std::mem::take(&mut self.track_q);
         let mut track_v = std::mem::take(&mut self.track_v);

@@ -17,34 +17,15 @@
 
 use nalgebra::{Matrix2, SMatrix, SVector, Vector2, Vector3};
 
-use super::drive::DriveSlopes;
 use crate::contact::tangent::{DEFLECTION, INPUTS, LINK_POSE, LINK_RATE, OTHER_POSE, OTHER_RATE};
 use crate::contact::{Contact, ContactJacobian};
 use crate::dynamics::derivative::{ChainDirections, ChainTangent, TreeDirection, TreeTangent};
 use crate::multibody::DynamicsError;
-use crate::multibody::{ArmSpring, BodyLoad, ClosingJoint, TreeDescription};
+use crate::multibody::{BodyLoad, ClosingJoint, TreeDescription};
 use crate::planar::{Rotation, perp};
 
-/// What a vehicle gives its Jacobian at a state, besides its contacts.
-pub(super) struct At<'a> {
-    /// The track's recovered `q_i`, `q̇_i` and every link's `(sin, cos)`.
-    pub track: (&'a [f64], &'a [f64], &'a [(f64, f64)]),
-    /// The dependent pair (0-based links).
-    pub pair: [usize; 2],
-    /// The chassis' `q_i`, `q̇_i` and every body's rotation.
-    pub chassis: (&'a [f64], &'a [f64], &'a [Rotation]),
-    /// The loads on the links and on the chassis bodies at the state.
-    pub loads: (&'a [BodyLoad], &'a [BodyLoad]),
-    pub arms: &'a [ArmSpring],
-    /// The sprocket's body and the drive's slopes.
-    pub drive: Option<(usize, DriveSlopes)>,
-    /// Ground points per link, the deflections' unit (m), which points
-    /// touch, and a lifted point's `∂ż/∂z` (stiction).
-    pub points: (usize, f64, &'a [Option<f64>]),
-    pub relaxation: Option<f64>,
-}
-
-use super::implicit::Offsets;
+use super::layout::Starts;
+use super::linearisation::{GroundPoints, Linearisation};
 
 /// A contact's Jacobian arranged by what a column moves: rows the load on
 /// the link `(F_x, F_y, M)`, on the other body, and the deflection's rate;
@@ -124,7 +105,7 @@ pub(super) struct Tangent {
     chassis: TreeDescription,
     joints: Vec<(Vector2<f64>, Vector2<f64>)>,
     spans: Vec<Vector2<f64>>,
-    offsets: Offsets,
+    starts: Starts,
     // Per link at the state: `A ū1`, `A ū2`, `A d̄` and their turned
     // `⟂(·)`; `ω`.
     arms1: Vec<Vector2<f64>>,
@@ -155,12 +136,8 @@ pub(super) struct Tangent {
 
 impl Tangent {
     /// The tangent of a vehicle with `track` and `chassis`, its state laid
-    /// out as `offsets`; `None` for a track that is not a loop.
-    pub fn new(
-        track: &TreeDescription,
-        chassis: &TreeDescription,
-        offsets: Offsets,
-    ) -> Option<Self> {
+    /// out as `starts` says; `None` for a track that is not a loop.
+    pub fn new(track: &TreeDescription, chassis: &TreeDescription, starts: Starts) -> Option<Self> {
         let joints = track.joints()?;
         let n = joints.len();
         let m = chassis.len();
@@ -170,7 +147,7 @@ impl Tangent {
             chassis: chassis.clone(),
             spans: joints.iter().map(|(u1, u2)| u2 - u1).collect(),
             joints,
-            offsets,
+            starts,
             arms1: vec![Vector2::zeros(); n],
             arms2: vec![Vector2::zeros(); n],
             turned_spans: vec![Vector2::zeros(); n],
@@ -195,8 +172,9 @@ impl Tangent {
         })
     }
 
-    /// `∂f/∂y` at the state `at`, with its contacts and their Jacobians,
-    /// into `out` (column-major, `dimension × dimension`): each column's
+    /// `∂f/∂y` at the linearisation `at`, whose bodies carry the loads
+    /// `(track_loads, chassis_loads)`, into `out` (column-major,
+    /// `dimension × dimension`): each column's
     /// motion and loads, then the dynamics' derivatives for a block of
     /// columns at once (the chain's sweeps over every column of the
     /// block, the chassis' load response as one solve with many right
@@ -204,8 +182,8 @@ impl Tangent {
     /// own relaxation; the books' columns are zero.
     pub fn jacobian(
         &mut self,
-        at: &At<'_>,
-        (contacts, jacobians): (&[Contact], &[ContactJacobian]),
+        at: &Linearisation<'_>,
+        (track_loads, chassis_loads): (&[BodyLoad], &[BodyLoad]),
         dimension: usize,
         out: &mut [f64],
     ) -> Result<(), DynamicsError> {
@@ -228,19 +206,25 @@ impl Tangent {
                 .try_inverse()
                 .ok_or(DynamicsError::SingularClosure)?;
         self.chain
-            .factor(trig, &qdt[2..], at.loads.0, ClosingJoint::CLOSED)?;
-        self.tree.factor(qc, qdc, at.loads.1)?;
+            .factor(trig, &qdt[2..], track_loads, ClosingJoint::CLOSED)?;
+        self.tree.factor(qc, qdc, chassis_loads)?;
         self.chassis.velocity_transform(rotations, &mut self.h);
-        let (per_link, _, touching) = at.points;
+        let GroundPoints {
+            per_link, touching, ..
+        } = at.points;
         self.compact.clear();
-        self.compact
-            .extend(contacts.iter().zip(jacobians).map(|(contact, jacobian)| {
-                let slot = (contact.other.is_none() && !touching.is_empty())
-                    .then(|| contact.link * per_link + contact.feature);
-                Compact::of(contact, jacobian, slot)
-            }));
+        self.compact.extend(
+            at.contacts
+                .iter()
+                .zip(at.jacobians)
+                .map(|(contact, jacobian)| {
+                    let slot = (contact.other.is_none() && !touching.is_empty())
+                        .then(|| contact.link * per_link + contact.feature);
+                    Compact::of(contact, jacobian, slot)
+                }),
+        );
         out.fill(0.0);
-        let o = self.offsets;
+        let o = self.starts;
         let independent: Vec<usize> = (0..n + 2)
             .filter(|&c| c < 2 || !at.pair.contains(&(c - 2)))
             .collect();
@@ -267,7 +251,7 @@ impl Tangent {
                 let slot = column - o.tangential;
                 if touching.get(slot).is_some_and(|t| t.is_none()) {
                     // A lifted point's deflection relaxes on its own.
-                    if let Some(relax) = at.relaxation {
+                    if let Some(relax) = at.points.relaxation {
                         out[column * dimension + column] = relax;
                     }
                     continue;
@@ -295,7 +279,7 @@ impl Tangent {
     /// dynamics for all of them.
     fn block(
         &mut self,
-        at: &At<'_>,
+        at: &Linearisation<'_>,
         independent: &[usize],
         block: &[(usize, Direction)],
         dimension: usize,
@@ -304,7 +288,7 @@ impl Tangent {
         let n = self.joints.len();
         let (kb, m) = (block.len(), self.chassis.len());
         let dof = m + 2;
-        let o = self.offsets;
+        let o = self.starts;
         for scratch in [&mut self.block_angles, &mut self.block_rates] {
             scratch.resize(n * kb, 0.0);
             scratch.fill(0.0);
@@ -388,7 +372,7 @@ impl Tangent {
     /// (the rates' own rows, the deflections' and the integral's).
     fn column(
         &mut self,
-        at: &At<'_>,
+        at: &Linearisation<'_>,
         independent: &[usize],
         direction: Direction,
         (b, kb): (usize, usize),
@@ -397,7 +381,7 @@ impl Tangent {
         let n = self.joints.len();
         let (_, qdc, _) = at.chassis;
         let dof = qdc.len();
-        let o = self.offsets;
+        let o = self.starts;
         // The track: full angle and rate changes of every link.
         self.angles.fill(0.0);
         self.rates.fill(0.0);
@@ -470,7 +454,7 @@ impl Tangent {
         }
         // The loads' changes.
         self.body_loads.fill(BodyLoad::ZERO);
-        let (_, unit, _) = at.points;
+        let unit = at.points.unit;
         let deflection = direction.point;
         // Each contact's load by what the column moves: the links' states
         // (a track column), the bodies' (a chassis column: the rims and
@@ -570,7 +554,7 @@ impl Tangent {
     /// Every chassis body's pose and velocity change from the chassis'
     /// coordinate and rate changes: `H δq` and `H δq̇ + (∂H/∂q δq) q̇`, a
     /// lever `A_θᵖ u` turning by `−Aᵖ u δθₚ`.
-    fn body_motion(&mut self, at: &At<'_>) {
+    fn body_motion(&mut self, at: &Linearisation<'_>) {
         let (_, qdc, rotations) = at.chassis;
         let bodies = &self.chassis.bodies;
         let m = bodies.len();

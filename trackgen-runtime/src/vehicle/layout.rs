@@ -36,7 +36,81 @@ pub struct StateLayout {
     pub sprocket: Option<usize>,
 }
 
+/// Where each part of the state starts, for the solves' loops: a copy of
+/// [`StateLayout`]'s first indices, which it owns.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Starts {
+    /// The track's integrated coordinates (their rates follow).
+    pub track: usize,
+    /// The chassis' coordinates (their rates follow).
+    pub chassis: usize,
+    /// The drive's integral.
+    pub integral: usize,
+    /// The first tangential state.
+    pub tangential: usize,
+}
+
+/// The `q_i` indices a track integrates: all `dof` of them, or under
+/// partitioning with the dependent `pair` (links numbered from 1) all but
+/// the pair's angles.
+pub(crate) fn track_coordinates(dof: usize, pair: Option<[usize; 2]>) -> Vec<usize> {
+    match pair {
+        Some(pair) => (0..dof)
+            .filter(|&c| c < 2 || !pair.contains(&(c - 1)))
+            .collect(),
+        None => (0..dof).collect(),
+    }
+}
+
 impl StateLayout {
+    /// The one layout of a vehicle's state: the track's integrated
+    /// coordinates `track_coordinates` (`q_i` indices) and their rates,
+    /// the chassis' `chassis_dof` coordinates and rates, the drive's
+    /// integral, the books' two quadratures, then `tangential` tangential
+    /// states.
+    pub(crate) fn new(
+        track_coordinates: Vec<usize>,
+        chassis_dof: usize,
+        tangential: usize,
+        sprocket: Option<usize>,
+    ) -> StateLayout {
+        let nt = track_coordinates.len();
+        let chassis = 2 * nt;
+        let integral = chassis + 2 * chassis_dof;
+        StateLayout {
+            track: 0..nt,
+            track_coordinates,
+            track_rates: nt..2 * nt,
+            chassis: chassis..chassis + chassis_dof,
+            chassis_rates: chassis + chassis_dof..integral,
+            integral,
+            books: [integral + 1, integral + 2],
+            tangential: integral + 3..integral + 3 + tangential,
+            sprocket,
+        }
+    }
+
+    /// The state's length.
+    pub fn dimension(&self) -> usize {
+        self.tangential.end
+    }
+
+    /// The bodies' states: the track's and the chassis' coordinates and
+    /// rates, `0..integral`.
+    pub fn bodies(&self) -> std::ops::Range<usize> {
+        0..self.integral
+    }
+
+    /// The first index of each part.
+    pub(crate) fn starts(&self) -> Starts {
+        Starts {
+            track: self.track.start,
+            chassis: self.chassis.start,
+            integral: self.integral,
+            tangential: self.tangential.start,
+        }
+    }
+
     /// The coordinates of every body, track then chassis: indices into `y`.
     pub fn positions(&self) -> impl Iterator<Item = usize> + '_ {
         self.track.clone().chain(self.chassis.clone())

@@ -24,6 +24,7 @@ mod geometry;
 mod implicit;
 mod jacobian;
 mod layout;
+mod linearisation;
 mod record;
 mod system;
 mod workspace;

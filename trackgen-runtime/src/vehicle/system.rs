@@ -5,9 +5,11 @@
 use nalgebra::{DVector, SVector, Vector2};
 
 use super::declared::sealed::Build;
-use super::forces::{self, Sprocket};
-use super::implicit::{Implicit, Offsets, Setting};
-use super::jacobian::{At, Tangent};
+use super::forces::{self, ChassisState, Sprocket, TangentialStates};
+use super::implicit::Implicit;
+use super::jacobian::Tangent;
+use super::layout::track_coordinates;
+use super::linearisation::{GroundPoints, Linearisation};
 use super::record::{VehicleRecord, sprocket_spans};
 use super::workspace::Workspace;
 use super::{
@@ -61,15 +63,12 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     implicit: Option<Implicit>,
     /// The exact Jacobian's factored derivatives, made at their first use.
     tangent: Option<Tangent>,
+    /// Where each quantity sits in the state (the track's integrated
+    /// coordinates as at the start; [`layout`](VehicleDynamics::layout)
+    /// gives them for the pair of the moment).
+    layout: StateLayout,
     y0: DVector<f64>,
 }
-
-/// The drive's integral, the motor's work and the dissipated work: the
-/// three states a vehicle integrates after its bodies', at these offsets.
-const EXTRA_STATES: usize = 3;
-const INTEGRAL: usize = 0;
-const MOTOR_WORK: usize = 1;
-const DISSIPATED: usize = 2;
 
 /// How deep below the ground the assembly puts the shoes, m (negative:
 /// 1 mm above it).
@@ -149,14 +148,16 @@ where
         let track = TrackSystem::new(track, start.track, SVector::zeros(), config.closure)?;
         let chassis = TreeSystem::chassis(chassis, start.chassis, SVector::zeros());
         let bodies = Pair::new(track, "track", chassis, "chassis");
-        let start = bodies.initial_state();
-        let y0 = DVector::from_iterator(
-            start.len() + EXTRA_STATES + tangential_states,
-            start
-                .iter()
-                .copied()
-                .chain(std::iter::repeat_n(0.0, EXTRA_STATES + tangential_states)),
+        let layout = StateLayout::new(
+            track_coordinates(DT, bodies.first().dependent_pair()),
+            DC,
+            tangential_states,
+            sprocket.map(|s| s.body),
         );
+        debug_assert_eq!(layout.integral, bodies.dimension());
+        let start = bodies.initial_state();
+        let mut y0 = DVector::zeros(layout.dimension());
+        y0.as_mut_slice()[layout.bodies()].copy_from_slice(start.as_slice());
         Ok(VehicleSystem {
             bodies,
             config,
@@ -168,6 +169,7 @@ where
             work: Workspace::new(T::BODIES, C::BODIES, tangential_states),
             implicit: None,
             tangent: None,
+            layout,
             y0,
         })
     }
@@ -182,12 +184,16 @@ where
         self.bodies.second()
     }
 
-    /// The bodies' part of a state, the three extra states and the ground
-    /// points' tangential states.
-    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; EXTRA_STATES], &'y [f64]) {
-        let (bodies, extra) = y.split_at(self.bodies.dimension());
-        let (extra, tangential) = extra.split_at(EXTRA_STATES);
-        (bodies, [extra[0], extra[1], extra[2]], tangential)
+    /// The bodies' part of a state; the drive's integral, the motor's
+    /// work and the dissipated work; the ground points' tangential
+    /// states.
+    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; 3], &'y [f64]) {
+        let l = &self.layout;
+        (
+            &y[l.bodies()],
+            [y[l.integral], y[l.books[0]], y[l.books[1]]],
+            &y[l.tangential.clone()],
+        )
     }
 
     /// The loads at a state, stage by stage: the track's coordinates
@@ -221,10 +227,18 @@ where
             &mut self.work,
             t,
             &self.config,
-            (self.soil.as_ref(), points, tangential, self.stiction_scale),
-            self.sprocket,
-            (&qc, &qdc),
-            integral,
+            TangentialStates {
+                soil: self.soil.as_ref(),
+                per_link: points,
+                values: tangential,
+                scale: self.stiction_scale,
+            },
+            ChassisState {
+                q: &qc,
+                qd: &qdc,
+                sprocket: self.sprocket,
+                integral,
+            },
         )?;
         let (track, chassis) = self.bodies.parts_mut();
         track.set_external(&self.work.track_loads);
@@ -259,8 +273,7 @@ where
         let Some(soil) = self.soil.as_mut() else {
             return Ok(false);
         };
-        let nb = self.bodies.dimension();
-        let (bodies, rest) = y.split_at_mut(nb);
+        let (bodies, rest) = y.split_at_mut(self.layout.integral);
         let (yt, _) = self.bodies.split(bodies);
         let track = self.bodies.parts_mut().0;
         track.recover(t, yt)?;
@@ -275,7 +288,7 @@ where
             &self.config.terrain,
             &self.work.links,
             &self.geometry.shoe,
-            &mut rest[EXTRA_STATES..],
+            &mut rest[self.layout.tangential.start - self.layout.integral..],
         ))
     }
 }
@@ -307,19 +320,6 @@ where
         (drive, relaxation)
     }
 
-    /// Where the vehicle's own solves and Jacobian find the parts of its
-    /// state (partitioned: the track integrates all but the dependent
-    /// pair).
-    fn offsets(&self) -> Offsets {
-        let nb = self.bodies.dimension();
-        Offsets {
-            track: 0,
-            chassis: 2 * (DT - 2),
-            integral: nb + INTEGRAL,
-            tangential: nb + EXTRA_STATES,
-        }
-    }
-
     /// What the exact Jacobian and the own `W` both start from at `(t,
     /// y)`: the evaluation there, every force element's Jacobian beside
     /// its load (`vehicle/forces.rs`), every chassis body's rotation
@@ -340,7 +340,12 @@ where
             &self.config,
             &self.geometry,
             self.sprocket,
-            (self.soil.as_ref(), points, tangential, self.stiction_scale),
+            TangentialStates {
+                soil: self.soil.as_ref(),
+                per_link: points,
+                values: tangential,
+                scale: self.stiction_scale,
+            },
         );
         let Some(pair) = self.track().dependent_pair() else {
             return Err(SimulationError::SingularMatrix { t, what });
@@ -381,7 +386,7 @@ where
             "the vehicle's exact Jacobian (its track is not closed by partitioning)",
         )?;
         let points = self.geometry.shoe.ground_points.len();
-        let offsets = self.offsets();
+        let starts = self.layout.starts();
         let dimension = self.y0.len();
         let tangent = match &mut self.tangent {
             Some(tangent) => tangent,
@@ -389,7 +394,7 @@ where
                 Tangent::new(
                     &self.bodies.first().model().description(),
                     &self.bodies.second().model().description(),
-                    offsets,
+                    starts,
                 )
                 .ok_or(SimulationError::SingularMatrix {
                     t,
@@ -397,21 +402,26 @@ where
                 })?,
             ),
         };
-        let track = self.bodies.first();
-        let (qt, qdt, trig) = track.recovered();
+        let (qt, qdt, trig) = self.bodies.first().recovered();
+        let at = Linearisation {
+            track: (qt.as_slice(), qdt.as_slice(), trig),
+            pair: [pair[0] - 1, pair[1] - 1],
+            chassis: (qc.as_slice(), qdc.as_slice(), &self.work.part_rotations),
+            contacts: &self.work.contacts,
+            jacobians: &self.work.jacobians,
+            arms: &self.config.arms,
+            drive,
+            points: GroundPoints {
+                per_link: points,
+                unit: self.stiction_scale,
+                touching: &self.work.ground_normal,
+                relaxation,
+            },
+        };
         tangent
             .jacobian(
-                &At {
-                    track: (qt.as_slice(), qdt.as_slice(), trig),
-                    pair: [pair[0] - 1, pair[1] - 1],
-                    chassis: (qc.as_slice(), qdc.as_slice(), &self.work.part_rotations),
-                    loads: (&self.work.track_loads, &self.work.chassis_loads),
-                    arms: &self.config.arms,
-                    drive,
-                    points: (points, self.stiction_scale, &self.work.ground_normal),
-                    relaxation,
-                },
-                (&self.work.contacts, &self.work.jacobians),
+                &at,
+                (&self.work.track_loads, &self.work.chassis_loads),
                 dimension,
                 out,
             )
@@ -514,26 +524,9 @@ where
     }
 
     fn layout(&self) -> StateLayout {
-        let track_coordinates: Vec<usize> = match self.track().dependent_pair() {
-            Some(pair) => (0..DT)
-                .filter(|&c| c < 2 || !pair.contains(&(c - 1)))
-                .collect(),
-            None => (0..DT).collect(),
-        };
-        let nt = track_coordinates.len();
-        let chassis = 2 * nt;
-        let integral = self.bodies.dimension();
-        debug_assert_eq!(integral, chassis + 2 * DC);
         StateLayout {
-            track: 0..nt,
-            track_coordinates,
-            track_rates: nt..2 * nt,
-            chassis: chassis..chassis + DC,
-            chassis_rates: chassis + DC..integral,
-            integral: integral + INTEGRAL,
-            books: [integral + MOTOR_WORK, integral + DISSIPATED],
-            tangential: integral + EXTRA_STATES..self.y0.len(),
-            sprocket: self.sprocket.map(|s| s.body),
+            track_coordinates: track_coordinates(DT, self.track().dependent_pair()),
+            ..self.layout.clone()
         }
     }
 
@@ -635,10 +628,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
 
     /// The books' two quadratures (the motor's work, the dissipated work).
     fn is_quadrature(&self, i: usize) -> bool {
-        matches!(
-            i.checked_sub(self.bodies.dimension()),
-            Some(MOTOR_WORK | DISSIPATED)
-        )
+        self.layout.books.contains(&i)
     }
 
     /// The exact `∂f/∂y` (`vehicle/jacobian.rs`: every force element's Jacobian
@@ -671,21 +661,20 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
         let (_, qdc) = self.evaluate(t, y)?;
-        let nb = self.bodies.dimension();
-        let (_, yc) = self.bodies.split(&y[..nb]);
-        let (dy_bodies, extra) = dy.split_at_mut(nb);
-        let (dyt, dyc) = self.bodies.split_mut(dy_bodies);
+        let l = &self.layout;
+        let (_, yc) = self.bodies.split(&y[l.bodies()]);
+        let (dyt, dyc) = self.bodies.split_mut(&mut dy[l.bodies()]);
         let (track, chassis) = self.bodies.parts_mut();
         track.derivative_recovered(t, dyt)?;
         self.work.accelerated = true;
         // The chassis' trigonometry is the kinematics stage's, at this state.
         chassis.derivative_with_trig(t, yc, &self.work.part_trig, dyc)?;
         let (qt, qdt, _) = self.track().recovered();
-        let books = &self.work.books;
-        extra[INTEGRAL] = books.integral_rate;
-        extra[MOTOR_WORK] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
-        extra[DISSIPATED] = books.dissipation + self.track().closure_energy(qt, qdt).1;
-        extra[EXTRA_STATES..].copy_from_slice(&self.work.tangential_rate);
+        let (books, l) = (&self.work.books, &self.layout);
+        dy[l.integral] = books.integral_rate;
+        dy[l.books[0]] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
+        dy[l.books[1]] = books.dissipation + self.track().closure_energy(qt, qdt).1;
+        dy[l.tangential.clone()].copy_from_slice(&self.work.tangential_rate);
         Ok(())
     }
 }
@@ -698,7 +687,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
     /// track's dependent pair: the vehicle's `W` (`vehicle/implicit.rs`).
     fn linearise(&mut self, t: f64, y: &[f64]) -> Result<(), SimulationError> {
         let Linearised {
-            chassis: (qc, _),
+            chassis: (qc, qdc),
             pair,
             drive,
             relaxation,
@@ -715,14 +704,14 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
         let points = self.geometry.shoe.ground_points.len();
         let mut chassis_mass = nalgebra::SMatrix::<f64, DC, DC>::zeros();
         self.chassis().model().mass_matrix(&qc, &mut chassis_mass);
-        let offsets = self.offsets();
+        let starts = self.layout.starts();
         let implicit = match &mut self.implicit {
             Some(implicit) => implicit,
             slot => slot.insert(
                 Implicit::new(
                     &self.bodies.first().model().description(),
                     &self.bodies.second().model().description(),
-                    offsets,
+                    starts,
                 )
                 .ok_or(SimulationError::SingularMatrix {
                     t,
@@ -731,24 +720,24 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
             ),
         };
         let track = self.bodies.first();
-        let (_, qdt, trig) = track.recovered();
+        let (qt, qdt, trig) = track.recovered();
+        let at = Linearisation {
+            track: (qt.as_slice(), qdt.as_slice(), trig),
+            pair: [pair[0] - 1, pair[1] - 1],
+            chassis: (qc.as_slice(), qdc.as_slice(), &self.work.part_rotations),
+            contacts: &self.work.contacts,
+            jacobians: &self.work.jacobians,
+            arms: &self.config.arms,
+            drive,
+            points: GroundPoints {
+                per_link: points,
+                unit: self.stiction_scale,
+                touching: &self.work.ground_normal,
+                relaxation,
+            },
+        };
         implicit
-            .linearise(
-                &self.work.contacts,
-                &self.work.jacobians,
-                &Setting {
-                    trig,
-                    rates: &qdt.as_slice()[2..],
-                    pair: [pair[0] - 1, pair[1] - 1],
-                    joint_forces: track.joint_forces(),
-                    rotations: &self.work.part_rotations,
-                    chassis_mass: chassis_mass.as_slice(),
-                    arms: &self.config.arms,
-                    drive,
-                    points: (points, self.stiction_scale, &self.work.ground_normal),
-                    relaxation,
-                },
-            )
+            .linearise(&at, track.joint_forces(), chassis_mass.as_slice())
             .map_err(|source| SimulationError::Dynamics { t, source })
     }
 
