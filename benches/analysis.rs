@@ -15,7 +15,7 @@
 //!   settling runs it replaces (1 s, the main job's, which still rings;
 //!   3 s), Bogacki-Shampine at 1e-3 as in the main job.
 //!
-//! `cargo bench --bench analysis`; numbers in README.md.
+//! `cargo bench -p trackgen-benches --bench analysis`; the numbers are in docs/performance.md.
 
 use criterion::measurement::WallTime;
 use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion_main};

@@ -11,7 +11,7 @@
 //! - `closed_solve`: the same with every link's `(sin θ, cos θ)` given:
 //!   the solves alone.
 //!
-//! `cargo bench --bench forward_dynamics`; numbers in README.md.
+//! `cargo bench -p trackgen-benches --bench forward_dynamics`; the numbers are in docs/performance.md.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;

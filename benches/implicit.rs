@@ -5,7 +5,7 @@
 //! Jacobians, the chassis' matrices), factoring `I − a W` for a step of
 //! 1 ms, and one solve.
 //!
-//! `cargo bench --bench implicit`; numbers in README.md.
+//! `cargo bench -p trackgen-benches --bench implicit`; the numbers are in docs/performance.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;

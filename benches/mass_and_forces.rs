@@ -1,7 +1,7 @@
 //! `M_i` + `Q_i` of a closed track: generated code against the reference
 //! (textbook) route, at n = 8, 16, 32, 64, 128 links, side by side.
 //!
-//! `cargo bench --bench mass_and_forces`; the ratios are in README.md.
+//! `cargo bench -p trackgen-benches --bench mass_and_forces`; the ratios are in docs/performance.md.
 
 use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use std::hint::black_box;

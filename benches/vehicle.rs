@@ -11,7 +11,7 @@
 //! pressed after every step), side by side (group `ground`): the cost of
 //! soft soil per simulated second is the ratio.
 //!
-//! `cargo bench --bench vehicle`; numbers in README.md.
+//! `cargo bench -p trackgen-benches --bench vehicle`; the numbers are in docs/performance.md.
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use rayon::prelude::*;

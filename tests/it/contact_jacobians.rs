@@ -26,8 +26,7 @@ use support::Lcg;
 use trackgen::contact::{
     BodyState, Contact, ContactJacobian, ContactLaws, GroundFriction, GroundLaws, ShoeGeometry,
     Terrain, ground, soft_ground::Rut, soft_ground::SoftGround, soil::SoilMemory, soil::SoilPreset,
-    sprocket, sprocket::ToothProfile, tangent::DEFLECTION, tangent::INPUTS, tangent::LINK_POSE,
-    tangent::OTHER_POSE, wheel,
+    sprocket, sprocket::ToothProfile, wheel,
 };
 use trackgen::multibody::BodyLoad;
 use trackgen::nalgebra::{SMatrix, Vector2};
@@ -35,6 +34,12 @@ use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
 const STEP: f64 = 1e-7;
+
+/// The contact Jacobian's columns.
+const INPUTS: usize = ContactJacobian::INPUTS;
+const DEFLECTION: usize = ContactJacobian::DEFLECTION;
+const LINK_POSE: usize = ContactJacobian::LINK_POSE;
+const OTHER_POSE: usize = ContactJacobian::OTHER_POSE;
 
 /// The inputs of a contact: link pose and rates, other pose and rates,
 /// deflection.

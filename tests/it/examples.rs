@@ -621,7 +621,7 @@ fn step_limit_runs_its_variants_and_refuses_bad_arguments() {
 /// Wong's curve less the compaction resistance (measured +12.3, +11.1 and
 /// −3.4 %: the bound;
 /// below 2 % Wong's curve is steep and a rigid track's uniform pressure is
-/// no longer the simulated track's, see README); the SVG is drawn; a bad
+/// no longer the simulated track's, see the guide, "Soft soil"); the SVG is drawn; a bad
 /// soil is refused with the list of presets.
 #[test]
 fn drawbar_pull_follows_wong_beyond_two_percent_slip() {

@@ -842,6 +842,51 @@ fn the_main_job_is_layered() {
     assert_layered("trackgen-cli/src/main.rs", "main", MAIN_JOB, 9, 30);
 }
 
+/// The runtime's layers are one list: every module of the graph is named
+/// in the runtime's crate docs and in the guide's architecture chapter,
+/// whose table of edges is the graph's.
+#[test]
+fn the_layers_are_one_list() {
+    let base = workspace();
+    let docs: String = std::fs::read_to_string(base.join("trackgen-runtime/src/lib.rs"))
+        .expect("the runtime's lib.rs")
+        .lines()
+        .filter_map(|l| l.trim_start().strip_prefix("//!"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let guide = std::fs::read_to_string(base.join("book/src/architecture.md"))
+        .expect("the guide's architecture chapter");
+    for (module, edges) in RUNTIME {
+        if matches!(*module, "lib" | "__private") {
+            continue;
+        }
+        assert!(
+            docs.contains(&format!("`{module}`")),
+            "the runtime's crate docs do not name `{module}`"
+        );
+        // Its row of the guide's table: `| `module` … | edges |`.
+        let row = guide
+            .lines()
+            .find(|l| {
+                l.starts_with('|')
+                    && l.split('|')
+                        .nth(1)
+                        .is_some_and(|c| c.contains(&format!("`{module}`")))
+            })
+            .unwrap_or_else(|| panic!("the guide's table has no row for `{module}`"));
+        let listed = row.split('|').nth(2).unwrap_or("");
+        if listed.contains("all of the above") {
+            continue;
+        }
+        for edge in *edges {
+            assert!(
+                listed.contains(&format!("`{edge}`")),
+                "the guide's row for `{module}` lacks `{edge}`: {row}"
+            );
+        }
+    }
+}
+
 /// A crate in memory, from `(file, text)` pairs under `/c/`.
 fn in_memory(files: &[(&str, &str)]) -> Crate {
     let sources: BTreeMap<PathBuf, String> = files

@@ -25,7 +25,7 @@ use crate::num::ConstPool;
 use crate::parse::{Input, ItemAst};
 
 /// The most links a track may have: beyond this the unrolled code stops
-/// being a good trade (see README, compile times).
+/// being a good trade (docs/performance.md, compile times).
 pub const MAX_LINKS: usize = 1024;
 
 /// Collects errors, like serde_derive's `Ctxt`.

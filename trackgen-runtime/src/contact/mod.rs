@@ -25,7 +25,7 @@ pub mod shoe;
 pub mod soft_ground;
 pub mod soil;
 pub mod sprocket;
-pub mod tangent;
+pub(crate) mod tangent;
 pub mod terrain;
 pub mod wheel;
 

@@ -438,8 +438,8 @@ fn yielding(z: f64, deepest: f64, rate: f64) -> bool {
 impl SoftGround {
     /// The first derivatives of [`respond`](Self::respond)'s load on the
     /// link and of the shear displacement's rate `j̇` over the contact's
-    /// [`INPUTS`](super::tangent::INPUTS) (`j`, m, in column
-    /// [`DEFLECTION`](super::tangent::DEFLECTION)), into `out`, given the
+    /// [`INPUTS`](ContactJacobian::INPUTS) (`j`, m, in column
+    /// [`DEFLECTION`](ContactJacobian::DEFLECTION)), into `out`, given the
     /// geometry's derivatives ([`ground::tangent`](super::ground::tangent))
     /// and the link's state.
     ///

@@ -118,9 +118,8 @@ struct Gaps {
     len: usize,
     /// `(sin, cos)` of `(k + ½) β` for every index `k` the rough angle can
     /// give, `first ≤ k < first + len`: one vectorised pass per evaluation
-    /// instead of a `sin_cos` per pin (those were 3.6 % of the M113's run,
-    /// `perf record`), the same numbers (the same angles, the same
-    /// function).
+    /// instead of a `sin_cos` per pin, the same numbers (the same angles,
+    /// the same function).
     directions: [(f64, f64); GAP_TABLE],
 }
 

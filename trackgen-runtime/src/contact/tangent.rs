@@ -12,7 +12,7 @@
 //! give the force's by the chain rule through the same formulas
 //! [`ContactLaws::respond`] and [`GroundLaws::respond`] evaluate.
 //!
-//! Every derivative is a row over the [`INPUTS`] of a contact: the link's
+//! Every derivative is a row over the [`INPUTS`](ContactJacobian::INPUTS) of a contact: the link's
 //! pose `(x, y, θ)` and rates `(ẋ, ẏ, ω)`, the other body's pose and rates
 //! (none for the ground), and the ground point's tangential deflection `z`
 //! (stiction's state).
@@ -45,7 +45,7 @@ pub const OTHER_RATE: usize = 9;
 /// The column of the ground point's tangential deflection `z` (m).
 pub const DEFLECTION: usize = 12;
 
-/// The derivative of a scalar over a contact's [`INPUTS`].
+/// The derivative of a scalar over a contact's [`INPUTS`](ContactJacobian::INPUTS).
 pub type Row = SMatrix<f64, 1, INPUTS>;
 /// The derivative of a load `(F_x, F_y, M)`, a row per component.
 pub type Rows3 = SMatrix<f64, 3, INPUTS>;
@@ -76,7 +76,7 @@ pub struct GeometryTangent {
 }
 
 /// A contact's load and rate to first order: their derivatives over the
-/// contact's [`INPUTS`].
+/// contact's [`INPUTS`](Self::INPUTS) columns.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactJacobian {
     /// `∂(F_x, F_y, M)` of the load on the link (the moment about its
@@ -90,6 +90,20 @@ pub struct ContactJacobian {
 }
 
 impl ContactJacobian {
+    /// How many quantities a contact's force depends on, its columns: two
+    /// bodies' poses and rates (3 + 3 each) and a tangential deflection.
+    pub const INPUTS: usize = INPUTS;
+    /// The column of the link's `x` (then `y`, `θ`).
+    pub const LINK_POSE: usize = LINK_POSE;
+    /// The column of the link's `ẋ` (then `ẏ`, `ω`).
+    pub const LINK_RATE: usize = LINK_RATE;
+    /// The column of the other body's `x` (then `y`, `θ`).
+    pub const OTHER_POSE: usize = OTHER_POSE;
+    /// The column of the other body's `ẋ` (then `ẏ`, `ω`).
+    pub const OTHER_RATE: usize = OTHER_RATE;
+    /// The column of the ground point's tangential deflection `z` (m).
+    pub const DEFLECTION: usize = DEFLECTION;
+
     /// No change.
     pub const ZERO: ContactJacobian = ContactJacobian {
         link: Rows3::from_array_storage(nalgebra::ArrayStorage([[0.0; 3]; INPUTS])),
@@ -204,7 +218,7 @@ fn normal_part(
     )
 }
 
-/// The loads' derivatives over the [`INPUTS`], into `out`, from the force
+/// The loads' derivatives over the [`INPUTS`](ContactJacobian::INPUTS), into `out`, from the force
 /// on the link's: the link takes `F` at its arm `p − R_L`, the other body
 /// `−F` at `p − R_O`; the rates enter through `v`, `∂v/∂(ṘL, ωL) =
 /// [I | ⟂arm_L]` and the reverse for the other body.
@@ -268,7 +282,7 @@ pub(super) fn loads(
 impl ContactLaws {
     /// The first derivatives of [`respond`](Self::respond)'s loads (applied
     /// as [`ContactForce::apply`](super::ContactForce::apply) applies them)
-    /// over the contact's [`INPUTS`], into `out`, given the geometry's
+    /// over the contact's [`INPUTS`](ContactJacobian::INPUTS), into `out`, given the geometry's
     /// derivatives and the states of the link and of the other body
     /// (`None`: the ground).
     pub fn linearise(
@@ -310,8 +324,8 @@ impl ContactLaws {
 
 impl GroundLaws {
     /// The first derivatives of [`respond`](Self::respond)'s load on the
-    /// link and of the deflection's rate, over the contact's [`INPUTS`]
-    /// (the deflection `z`, m, in column [`DEFLECTION`]), into `out`.
+    /// link and of the deflection's rate, over the contact's [`INPUTS`](ContactJacobian::INPUTS)
+    /// (the deflection `z`, m, in column [`DEFLECTION`](ContactJacobian::DEFLECTION)), into `out`.
     pub fn linearise(
         &self,
         contact: &Contact,

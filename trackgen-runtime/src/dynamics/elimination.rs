@@ -9,10 +9,9 @@
 //! `[a00, a01, a11]`.
 //!
 //! The solve's tables, a [`LinkTerms`] per link and a [`JointTerms`] per
-//! joint, live in a workspace kept per thread ([`with_tables`]): on the
-//! stack they were zero-filled at every call (15 kB for 64 links, 2 % of
-//! the M113's run in `memset`) before being written over, and building
-//! them by `core::array::from_fn` instead moved them (10 % in `memmove`).
+//! joint, live in a workspace kept per thread ([`with_tables`]), so that a
+//! solve neither zero-fills them on the stack nor moves them into place:
+//! every entry is written before it is read.
 
 use std::cell::RefCell;
 

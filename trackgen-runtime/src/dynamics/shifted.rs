@@ -292,7 +292,8 @@ impl ShiftedChain {
     /// component `c` (`F_x, F_y, M` in, `x, y, θ` out) of link `i` in
     /// right side `r`. The sweeps run along the chain once, each step on
     /// all `k` sides: what factoring a coupled system needs (one side per
-    /// coupled coordinate), several times faster than `k` solves.
+    /// coupled coordinate), with the chain's factors read once for all
+    /// `k` sides instead of once per side.
     ///
     /// # Panics
     /// If `columns` is not `3 n k` long (a programming error).
@@ -320,9 +321,8 @@ impl ShiftedChain {
 
     /// [`sweep_columns`](Self::sweep_columns) compiled for AVX2: four
     /// sides at a time instead of two, the same bits. Not through
-    /// [`wide::run`](crate::simd::run): behind its closure the sweeps took
-    /// 11 % more instructions (856e6 against 770e6 on the Marder's main
-    /// job).
+    /// [`simd::run`](crate::simd::run): behind its closure the sweeps are
+    /// not inlined into the wide build (docs/experiments/avx2-builds.md).
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     fn sweep_columns_avx2(

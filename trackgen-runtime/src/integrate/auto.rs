@@ -78,7 +78,8 @@ pub const EXPLICIT_STABILITY: f64 = 2.51;
 
 /// The stiffness ratio (Bogacki-Shampine's accuracy step over its stable
 /// step) above which the linearly implicit method takes over. From the
-/// costs measured on the Marder (`cargo bench --bench implicit`, README):
+/// costs measured on the Marder (`cargo bench -p trackgen-benches --bench
+/// implicit`; docs/experiments/auto-integrator.md):
 /// a ROS34PW2 step costs about 12 evaluations of `f` (4 of them, the
 /// linearisation, the factorisation and 4 solves) and is 2.4 times
 /// Bogacki-Shampine's accuracy step (1.8 ms against 0.74 ms), so it costs

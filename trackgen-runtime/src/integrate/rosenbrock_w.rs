@@ -172,20 +172,16 @@ pub struct JacobianReuse {
     pub step_ratio: f64,
 }
 
-/// Measured on the Marder's main job at tolerance 1e-2 (8 s, forward
-/// differences): a fresh Jacobian every step took 4361 steps and 23.3 s;
-/// ages 5 / 20 / 100 with the factorisation kept within 1.25× of its step
-/// took 5245 / 5635 / 6032 steps and 12.3 / 10.0 / 10.0 s; age 20 within
-/// 2× took 5876 steps and 7.8 s (its books −2.9e-2, within the main job's
-/// bound of 0.1), and refactorising at every change of step 15.8 s. Most
-/// Jacobians are taken after rejections, whatever the age.
+/// A differenced Jacobian serves 20 accepted steps and the factorisation
+/// is kept while the step stays within 2× of the one it was made for: a
+/// W-method keeps its order for any `W`, so only the step count and the
+/// books' accuracy change with these, and most Jacobians are taken after
+/// rejections whatever the age.
 ///
 /// A system with its own solves ([`OdeSystem::implicit`]) takes its `W`
-/// again at every step whatever `max_age` says: on the same run, with the
-/// vehicle's own `W`, ages 1 / 2 / 4 / 20 took 4378 / 4655 / 5300 / 5755
-/// steps with the books at 6e-4 / −7.8e-3 / −2.7e-2 / −3.5e-2 in the same
-/// wall time (0.75 s best of 5, each): a lagged `W` costs the accuracy
-/// what it saves in linear algebra.
+/// again at every step whatever `max_age` says: its `W` is cheap, and a
+/// lagged one costs the books' accuracy what it saves in linear algebra.
+/// The measurements behind both are in docs/experiments/jacobian-reuse.md.
 impl Default for JacobianReuse {
     fn default() -> Self {
         JacobianReuse {

@@ -34,7 +34,8 @@ pub struct EnergyBalance {
 pub const RESIDUAL_FLOOR: f64 = 1e-6;
 
 /// How many times the integrator's relative tolerance the books may be off.
-/// Measured on the M113 (`tests/vehicle_m113.rs`, README): 2.7e-3 over the
+/// Measured on the M113 (`tests/it/vehicle_m113.rs`; docs/performance.md):
+/// 2.7e-3 over the
 /// 8 s bump course at Bogacki-Shampine 1e-3, 3e-4 at Dormand-Prince 1e-4,
 /// 9e-7 at 1e-6; 1.1e-2 over a simulated hour at 1e-3 (the error
 /// accumulates with the steps). Ten tolerances flags a run whose books are

@@ -13,13 +13,12 @@ use crate::integrate::SimulationError;
 use crate::multibody::{BodyLoad, ChassisModel, PartKind};
 
 /// The fraction of a statically loaded point's sliding deflection that is
-/// the unit of its stiction state ([`stiction_scale`]). Measured on the
-/// main job at 1e-3: in units of the whole deflection an hour's energy
-/// books drift to 1.05e-2 of the motor's work (the deflection, integrated
-/// apart from the point's position, creeps against it and the numerical
-/// creep does work: the books were 46 J/s short at 3 m/s); in tenths,
-/// 2.8e-3 over the hour and 1.0e-3 over the 8 s course, for 4 % more
-/// steps; in hundredths, 34 % more steps.
+/// the unit of its stiction state ([`stiction_scale`]). The deflection is
+/// integrated apart from the point's position, so its numerical creep
+/// does work the books see: the unit must be small enough that the error
+/// control holds that creep below the books' bound, and no smaller than
+/// it needs to be, since every tenfold costs steps. The measurements that
+/// chose a tenth are in docs/experiments/stiction-unit.md.
 pub(super) const STICTION_UNIT_FRACTION: f64 = 0.1;
 
 /// The unit (m) in which a vehicle integrates its ground points' stiction
