@@ -2,11 +2,12 @@
 //! evaluation of the M113's right-hand side (recovery, contact, both
 //! subsystems' dynamics, the books) and a whole Bogacki-Shampine or
 //! Dormand-Prince step (its stages and error estimate) make no heap
-//! allocation, counted by a global allocator that counts. A test binary
-//! of its own, so nothing else runs in it.
+//! allocation, counted on the test's own thread by a global allocator that
+//! counts (the harness's other threads do not count). A test binary of
+//! its own, so that the counting allocator serves nothing else.
 
 use std::alloc::{GlobalAlloc, Layout, System};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::cell::Cell;
 
 use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
@@ -15,15 +16,25 @@ use trackgen::system::Simulated;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::{m113, m113::M113};
 
-/// The system allocator, counting allocations and reallocations.
+/// The system allocator, counting allocations and reallocations per thread.
 struct Counting;
 
-static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+thread_local! {
+    /// This thread's allocations and reallocations: the test's own, not
+    /// the harness's on its other threads. A `const` thread-local without
+    /// a destructor, so reading it allocates nothing.
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+fn count() {
+    // `try_with`: a thread being torn down has no counter left to bump.
+    let _ = ALLOCATIONS.try_with(|n| n.set(n.get() + 1));
+}
 
 // SAFETY: forwards to the system allocator unchanged.
 unsafe impl GlobalAlloc for Counting {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        count();
         unsafe { System.alloc(layout) }
     }
 
@@ -32,7 +43,7 @@ unsafe impl GlobalAlloc for Counting {
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        count();
         unsafe { System.realloc(ptr, layout, new_size) }
     }
 }
@@ -41,9 +52,9 @@ unsafe impl GlobalAlloc for Counting {
 static GLOBAL: Counting = Counting;
 
 fn allocations_in(f: impl FnOnce()) -> usize {
-    let before = ALLOCATIONS.load(Ordering::SeqCst);
+    let before = ALLOCATIONS.with(Cell::get);
     f();
-    ALLOCATIONS.load(Ordering::SeqCst) - before
+    ALLOCATIONS.with(Cell::get) - before
 }
 
 #[test]

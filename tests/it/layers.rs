@@ -47,6 +47,7 @@ pub const RUNTIME: Graph = &[
     // core
     ("planar", &[]),
     ("simd", &[]),
+    ("ride", &[]),
     ("trig", &["simd"]),
     // physics: the laws, the bodies, contact
     ("laws", &["planar"]),

@@ -6,7 +6,8 @@ use std::error::Error;
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
-use trackgen::simulate::{ArrowSink, CsvSink, Results, Select, Summary, Tee, Thinned};
+use trackgen::simulate::{CsvSink, Results, Select, Summary, Tee, Thinned};
+use trackgen_arrow::ArrowSink;
 
 use super::nearest::Nearest;
 use super::scene::{Ground, Scene};

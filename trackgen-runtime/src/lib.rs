@@ -9,7 +9,9 @@
 //! 1. **core**: [`planar`] (the rotation, kept as its `(sin, cos)`; the
 //!    cross product, `perp`, `spin`), the trigonometry of every body at
 //!    once ([`trig`]), and `simd`, the one switch to AVX2 builds of the hot
-//!    loops;
+//!    loops; [`ride`], the ride-quality filters over a sampled acceleration
+//!    (absorbed power, ISO 2631-1 weightings, peak after a low-pass), which
+//!    need nothing else;
 //! 2. [`laws`]: every force law with its energy terms (contact's normal
 //!    laws and friction, stiction, the torsion spring, the penalty joint);
 //! 3. [`multibody`]: the traits generated code implements, the run-time
@@ -53,6 +55,7 @@
 
 // 1. core
 pub mod planar;
+pub mod ride;
 mod simd;
 pub mod trig;
 // 2-4. physics

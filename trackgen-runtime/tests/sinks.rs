@@ -3,7 +3,8 @@
 //! The system is a harmonic oscillator (`ẍ = −ω² x`, ω = 2π rad/s)
 //! recording `x`, `v` and its energy, integrated by RK4 at a fixed 1 ms
 //! step, so two runs with the same settings produce the same bits: the
-//! comparisons are exact (CSV byte for byte, Arrow values by their bits).
+//! comparisons are exact (CSV byte for byte). The Arrow sink's tests are
+//! trackgen-arrow's.
 //! A variant's derivative turns NaN after `fail_at`: RK4 stops at the
 //! first stage past it (a stage time in `(fail_at, fail_at + 1 ms]`);
 //! `fail_at` is between output times, so which rows precede the failure
@@ -12,146 +13,20 @@
 // A failed stream carries its report and error by value, as the API returns it.
 #![allow(clippy::result_large_err)]
 
-use std::io::{self, Cursor};
-use std::path::PathBuf;
+use std::io;
 
-use arrow_array::{Array, Float64Array};
-use arrow_ipc::reader::FileReader;
 use nalgebra::DVector;
-use trackgen_runtime::integrate::{Integrator, OdeSystem, SimulationError};
+
+use trackgen_runtime::integrate::{OdeSystem, SimulationError};
 use trackgen_runtime::simulate::{
-    ArrowSink, Background, CsvSink, Output, Results, RunError, RunReport, Select, Sink, SinkError,
-    StreamFailure, Summary, Tee, Thinned, simulate, simulate_into,
+    Background, CsvSink, Output, Results, RunError, Select, Sink, SinkError, StreamFailure,
+    Summary, Tee, Thinned, simulate,
 };
 use trackgen_runtime::system::Simulated;
 
-const OMEGA: f64 = 2.0 * std::f64::consts::PI;
-const STEP: f64 = 1e-3;
-const INTERVAL: f64 = 0.01;
-
-struct Oscillator {
-    fail_at: Option<f64>,
-}
-
-impl OdeSystem for Oscillator {
-    fn dimension(&self) -> usize {
-        2
-    }
-
-    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
-        let load = match self.fail_at {
-            Some(at) if t > at => f64::NAN,
-            _ => 0.0,
-        };
-        dy[0] = y[1];
-        dy[1] = -OMEGA * OMEGA * y[0] + load;
-        Ok(())
-    }
-}
-
-impl Simulated for Oscillator {
-    fn initial_state(&self) -> DVector<f64> {
-        DVector::from_column_slice(&[1.0, 0.0])
-    }
-
-    fn columns(&self) -> Vec<String> {
-        ["x", "v", "energy"].map(String::from).to_vec()
-    }
-
-    fn observe(&mut self, _t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
-        let energy = 0.5 * (y[1] * y[1] + OMEGA * OMEGA * y[0] * y[0]);
-        row.extend_from_slice(&[y[0], y[1], energy]);
-        Ok(())
-    }
-}
-
-fn rk4() -> Integrator {
-    Integrator::Rk4 { step: STEP }
-}
-
-/// The reference: the same run, in memory.
-fn in_memory(duration: f64, fail_at: Option<f64>) -> Results {
-    let mut system = Oscillator { fail_at };
-    match simulate(&mut system, rk4(), 0.0, duration, Output::Every(INTERVAL)) {
-        Ok(r) => r,
-        Err(f) => f.results,
-    }
-}
-
-/// The oscillator (its derivative NaN after `fail_at`) streamed for
-/// `duration` s into `sink`.
-fn stream(
-    sink: &mut dyn Sink,
-    duration: f64,
-    fail_at: Option<f64>,
-) -> Result<RunReport, StreamFailure> {
-    simulate_into(
-        &mut Oscillator { fail_at },
-        rk4(),
-        0.0,
-        duration,
-        Output::Every(INTERVAL),
-        sink,
-        &mut |_| {},
-    )
-}
-
-fn results_csv(results: &Results) -> Vec<u8> {
-    let mut text = Vec::new();
-    results.write_csv(&mut text).unwrap();
-    text
-}
-
-/// Reads an Arrow IPC file: column names, the values column by column,
-/// and the number of record batches.
-fn read_arrow(bytes: Vec<u8>) -> (Vec<String>, Vec<Vec<f64>>, usize) {
-    let reader = FileReader::try_new(Cursor::new(bytes), None).expect("a complete Arrow file");
-    let names: Vec<String> = reader
-        .schema()
-        .fields()
-        .iter()
-        .map(|f| f.name().clone())
-        .collect();
-    let mut columns = vec![Vec::new(); names.len()];
-    let mut batches = 0;
-    for batch in reader {
-        let batch = batch.expect("a readable batch");
-        batches += 1;
-        for (k, column) in batch.columns().iter().enumerate() {
-            let values = column
-                .as_any()
-                .downcast_ref::<Float64Array>()
-                .expect("Float64 columns");
-            assert_eq!(values.null_count(), 0, "no nulls");
-            columns[k].extend(values.values().iter().copied());
-        }
-    }
-    (names, columns, batches)
-}
-
-/// `results` as columns: `t`, then each recorded quantity.
-fn columns_of(results: &Results) -> (Vec<String>, Vec<Vec<f64>>) {
-    let mut names = vec!["t".to_string()];
-    names.extend(results.columns().iter().cloned());
-    let mut columns = vec![results.times().to_vec()];
-    for c in results.columns() {
-        columns.push(results.column(c).unwrap());
-    }
-    (names, columns)
-}
-
-fn bits(columns: &[Vec<f64>]) -> Vec<Vec<u64>> {
-    columns
-        .iter()
-        .map(|c| c.iter().map(|v| v.to_bits()).collect())
-        .collect()
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("sinks");
-    std::fs::create_dir_all(&dir).unwrap();
-    dir.join(name)
-}
+#[path = "support/oscillator.rs"]
+mod oscillator;
+use oscillator::*;
 
 #[test]
 fn streamed_csv_is_the_in_memory_csv_byte_for_byte() {
@@ -172,53 +47,6 @@ fn streamed_csv_is_the_in_memory_csv_byte_for_byte() {
     );
     // The in-memory sink inside a tee keeps the same rows.
     assert_eq!(results_csv(&kept), results_csv(&reference));
-}
-
-#[test]
-fn arrow_file_reads_back_with_the_same_columns_and_values() {
-    let reference = in_memory(2.0, None);
-    // 201 rows in batches of 64: three full ones and a partial one.
-    let mut arrow = ArrowSink::new(Vec::new()).with_batch_rows(64);
-    stream(&mut arrow, 2.0, None).expect("the run finishes");
-    let (names, columns, batches) = read_arrow(arrow.into_inner().unwrap());
-    let (want_names, want) = columns_of(&reference);
-    assert_eq!(names, want_names);
-    assert_eq!(batches, 4, "⌈201 / 64⌉ record batches");
-    assert_eq!(bits(&columns), bits(&want), "the same values, bit for bit");
-    // Results held in memory write the same file through `write_to`.
-    let mut again = ArrowSink::new(Vec::new()).with_batch_rows(64);
-    reference.write_to(&mut again).unwrap();
-    let (names2, columns2, _) = read_arrow(again.into_inner().unwrap());
-    assert_eq!((names2, bits(&columns2)), (want_names, bits(&want)));
-}
-
-#[test]
-fn a_failing_run_leaves_flushed_files_with_every_row_before_the_failure() {
-    let fail_at = 0.5053;
-    let reference = in_memory(2.0, Some(fail_at));
-    let csv_path = scratch("failing.csv");
-    let arrow_path = scratch("failing.arrow");
-    let mut csv = CsvSink::create(&csv_path).unwrap();
-    let mut arrow = ArrowSink::create(&arrow_path).unwrap().with_batch_rows(16);
-    let mut sinks = Tee::new().and(&mut csv).and(&mut arrow);
-    let failure = stream(&mut sinks, 2.0, Some(fail_at)).expect_err("a NaN load stops the run");
-    drop(sinks);
-    let RunError::Simulation(SimulationError::NonFinite { t, .. }) = failure.error else {
-        panic!("a non-finite failure, got {}", failure.error);
-    };
-    assert!(t > fail_at && t <= fail_at + STEP, "failed at t = {t}");
-    assert!(failure.finish.is_none(), "the files were finished");
-    // Every output time up to the failure: 0, 0.01, …, 0.5.
-    assert_eq!(reference.len(), 51, "the reference stops at the same time");
-    assert_eq!(failure.report.rows, reference.len());
-    assert_eq!(failure.report.last_time, reference.times().last().copied());
-    let written = std::fs::read(&csv_path).unwrap();
-    assert_eq!(written, results_csv(&reference), "the CSV is complete");
-    let (names, columns, _) = read_arrow(std::fs::read(&arrow_path).unwrap());
-    let (want_names, want) = columns_of(&reference);
-    assert_eq!((names, bits(&columns)), (want_names, bits(&want)));
-    let message = failure.to_string();
-    assert!(message.contains("51 rows written"), "{message}");
 }
 
 #[test]

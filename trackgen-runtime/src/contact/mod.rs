@@ -20,7 +20,9 @@
 
 mod detect;
 pub mod ground;
+pub mod profile;
 mod respond;
+pub mod roughness;
 pub mod shoe;
 pub mod soft_ground;
 pub mod soil;

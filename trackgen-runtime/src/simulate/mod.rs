@@ -1,6 +1,7 @@
 //! Simulation: a system of subsystems (a closed track, a chassis),
 //! integrated in time, recorded into [`Results`] ([`simulate`]) or streamed
-//! to any [`Sink`] as it runs ([`simulate_into`]): CSV and Arrow IPC files,
+//! to any [`Sink`] as it runs ([`simulate_into`]): CSV files (and Arrow IPC
+//! with the crate trackgen-arrow),
 //! running figures, a bounded selection for plots, several at once.
 //!
 //! A run never panics on a bad state: it stops with a typed
@@ -25,8 +26,6 @@ pub use error::{RunError, SimulationFailure};
 pub use output::Output;
 pub use results::{Results, Sample};
 pub use run::{simulate, simulate_with_progress};
-#[cfg(feature = "arrow")]
-pub use sink::ArrowSink;
 pub use sink::{
     Background, ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned,
 };

@@ -146,7 +146,7 @@ impl Results {
 
     /// Gives every sample to `sink`, as a run would: `begin`, the rows,
     /// `finish`. For saving results held in memory in another format:
-    /// `results.write_to(ArrowSink::create("run.arrow")?)`.
+    /// `results.write_to(trackgen_arrow::ArrowSink::create("run.arrow")?)`.
     pub fn write_to(&self, mut sink: impl Sink) -> Result<(), SinkError> {
         sink.begin(&self.columns)?;
         for s in self.iter() {

@@ -76,9 +76,8 @@ impl std::error::Error for StreamFailure {
 /// # use trackgen_runtime::system::Simulated;
 /// # fn demo(system: &mut dyn Simulated) -> Result<(), Box<dyn std::error::Error>> {
 /// let mut csv = CsvSink::create("run.csv")?;
-/// let mut arrow = ArrowSink::create("run.arrow")?;
 /// let mut summary = Summary::new();
-/// let mut sinks = Tee::new().and(&mut csv).and(&mut arrow).and(&mut summary);
+/// let mut sinks = Tee::new().and(&mut csv).and(&mut summary);
 /// let report = simulate_into(system, Integrator::dopri5(1e-8), 0.0, 3600.0,
 ///                            Output::Every(0.01), &mut sinks, &mut |_| {})?;
 /// drop(sinks);

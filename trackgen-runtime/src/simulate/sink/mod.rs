@@ -6,9 +6,9 @@
 //! bounded amount of memory whatever the length of the run:
 //!
 //! * [`CsvSink`]: CSV, the same text as [`Results::write_csv`](super::Results::write_csv).
-//! * [`ArrowSink`]: an Arrow IPC file (`.arrow`), which pandas, polars,
-//!   pyarrow, DuckDB and R's `arrow` load directly, in record batches of a
-//!   bounded number of rows.
+//! * `trackgen_arrow::ArrowSink` (the crate trackgen-arrow): an Arrow IPC
+//!   file (`.arrow`), which pandas, polars, pyarrow, DuckDB and R's
+//!   `arrow` load directly, in record batches of a bounded number of rows.
 //! * [`Summary`]: first, last, smallest and largest value of every column.
 //! * [`Thinned`]: at most a given number of rows, evenly spaced in time
 //!   (for plots of long runs).
@@ -17,8 +17,6 @@
 //! * [`Background`]: another sink, on its own thread, so writing overlaps
 //!   the run.
 
-#[cfg(feature = "arrow")]
-mod arrow_sink;
 mod background;
 mod csv_sink;
 mod select;
@@ -28,8 +26,6 @@ mod thinned;
 
 use std::path::{Path, PathBuf};
 
-#[cfg(feature = "arrow")]
-pub use arrow_sink::ArrowSink;
 pub use background::Background;
 pub use csv_sink::CsvSink;
 pub use select::Select;
@@ -137,7 +133,7 @@ fn describe(path: &Option<PathBuf>) -> String {
 
 impl SinkError {
     /// An I/O error, with the file it concerns if known.
-    pub(crate) fn io(path: Option<&Path>, source: std::io::Error) -> SinkError {
+    pub fn io(path: Option<&Path>, source: std::io::Error) -> SinkError {
         SinkError::Io {
             path: path.map(Path::to_path_buf),
             source,
@@ -162,20 +158,8 @@ impl SinkError {
         }
     }
 
-    /// An Arrow error: its I/O errors stay [`SinkError::Io`].
-    #[cfg(feature = "arrow")]
-    pub(crate) fn arrow(path: Option<&Path>, error: arrow_schema::ArrowError) -> SinkError {
-        match error {
-            arrow_schema::ArrowError::IoError(_, source) => SinkError::io(path, source),
-            other => SinkError::Format {
-                path: path.map(Path::to_path_buf),
-                source: Box::new(other),
-            },
-        }
-    }
-
     /// A row whose length is not the number of columns.
-    pub(crate) fn width(t: f64, got: usize, want: usize) -> SinkError {
+    pub fn width(t: f64, got: usize, want: usize) -> SinkError {
         SinkError::Columns(format!(
             "a row of {got} values at t = {t} s for {want} columns"
         ))

@@ -1,4 +1,19 @@
-//! Rows written as an Arrow IPC file, a record batch at a time.
+//! Arrow IPC output for trackgen's streamed runs: [`ArrowSink`], a
+//! [`Sink`] that writes rows as an Arrow IPC file, a record batch at a
+//! time. A crate of its own, so that the runtime builds without arrow.
+//!
+//! ```no_run
+//! # use trackgen_runtime::simulate::{simulate_into, Output};
+//! # use trackgen_runtime::integrate::Integrator;
+//! # use trackgen_runtime::system::Simulated;
+//! # fn demo(system: &mut dyn Simulated) -> Result<(), Box<dyn std::error::Error>> {
+//! let mut arrow = trackgen_arrow::ArrowSink::create("run.arrow")?;
+//! simulate_into(system, Integrator::dopri5(1e-8), 0.0, 10.0,
+//!               Output::Every(0.01), &mut arrow, &mut |_| {})?;
+//! # Ok(()) }
+//! ```
+
+#![warn(missing_docs)]
 
 use std::fs::File;
 use std::io::{self, BufWriter};
@@ -9,7 +24,7 @@ use arrow_array::{ArrayRef, Float64Array, RecordBatch};
 use arrow_ipc::writer::FileWriter;
 use arrow_schema::{DataType, Field, Schema, SchemaRef};
 
-use super::{Sink, SinkError};
+use trackgen_runtime::simulate::{Sink, SinkError};
 
 /// Writes a run as an [Arrow IPC file](https://arrow.apache.org/docs/format/Columnar.html#ipc-file-format)
 /// (`.arrow`, also called Feather v2) while it runs: a column `t` (s), then
@@ -87,7 +102,7 @@ impl<W: io::Write> ArrowSink<W> {
         };
         let buffered = writer
             .into_inner()
-            .map_err(|e| SinkError::arrow(path.as_deref(), e))?;
+            .map_err(|e| arrow_error(path.as_deref(), e))?;
         buffered
             .into_inner()
             .map_err(|e| SinkError::io(path.as_deref(), e.into_error()))
@@ -111,8 +126,19 @@ impl<W: io::Write> ArrowSink<W> {
             })
             .collect();
         let batch =
-            RecordBatch::try_new(schema.clone(), arrays).map_err(|e| SinkError::arrow(path, e))?;
-        writer.write(&batch).map_err(|e| SinkError::arrow(path, e))
+            RecordBatch::try_new(schema.clone(), arrays).map_err(|e| arrow_error(path, e))?;
+        writer.write(&batch).map_err(|e| arrow_error(path, e))
+    }
+}
+
+/// An Arrow error as a sink's: its I/O errors stay [`SinkError::Io`].
+fn arrow_error(path: Option<&Path>, error: arrow_schema::ArrowError) -> SinkError {
+    match error {
+        arrow_schema::ArrowError::IoError(_, source) => SinkError::io(path, source),
+        other => SinkError::Format {
+            path: path.map(Path::to_path_buf),
+            source: Box::new(other),
+        },
     }
 }
 
@@ -142,7 +168,7 @@ impl<W: io::Write> Sink for ArrowSink<W> {
         let schema = Arc::new(Schema::new(fields));
         let path = self.path.as_deref();
         let writer =
-            FileWriter::try_new_buffered(writer, &schema).map_err(|e| SinkError::arrow(path, e))?;
+            FileWriter::try_new_buffered(writer, &schema).map_err(|e| arrow_error(path, e))?;
         self.columns = vec![Vec::with_capacity(self.batch_rows); columns.len() + 1];
         self.writer = Some(writer);
         self.schema = Some(schema);
@@ -174,7 +200,7 @@ impl<W: io::Write> Sink for ArrowSink<W> {
         self.flush_batch()?;
         let path = self.path.as_deref();
         if let Some(writer) = self.writer.as_mut() {
-            writer.finish().map_err(|e| SinkError::arrow(path, e))?;
+            writer.finish().map_err(|e| arrow_error(path, e))?;
         }
         self.finished = true;
         Ok(())
