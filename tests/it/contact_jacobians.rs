@@ -23,6 +23,7 @@
 use crate::support;
 
 use support::Lcg;
+use trackgen::contact::profile::{Course, ProfileError};
 use trackgen::contact::{
     BodyState, Contact, ContactJacobian, ContactLaws, GroundFriction, GroundLaws, ShoeGeometry,
     Terrain, ground, soft_ground::Rut, soft_ground::SoftGround, soil::SoilMemory, soil::SoilPreset,
@@ -469,6 +470,112 @@ fn ground_contacts_match_their_differences() {
             (x, feature)
         });
     }
+}
+
+/// A ground point against a polyline with vertical faces, near a step
+/// up's foot and face, a step down's face, and a half-round's facets: the
+/// depth is the distance to the nearest edge (an edge's normal is fixed;
+/// at a vertex it turns), its Jacobian against central differences like
+/// the smooth terrains'. Points are drawn 0.5 – 6 mm inside the ground
+/// within 1 cm of a face, so edges, faces and the step's foot (a vertex:
+/// the corner where floor and face meet) all come up.
+#[test]
+fn ground_contacts_on_polylines_match_their_differences() {
+    let config = m113_config();
+    let shoe = M113::geometry().shoe;
+    let GroundFriction::Stiction(stiction) = config.ground.friction else {
+        panic!("the M113 declares stiction");
+    };
+    let limit = stiction.mu * 2e3 / stiction.stiffness;
+    let course = |build: fn(Course) -> Result<Course, ProfileError>| {
+        let course = Course::starting_at(-1.0, 0.0)
+            .and_then(|c| c.flat(1.0))
+            .unwrap();
+        Terrain::profile(
+            build(course)
+                .and_then(|c| c.flat(1.0))
+                .unwrap()
+                .profile()
+                .unwrap(),
+        )
+    };
+    // Each terrain with the x of the face the points are drawn near, and
+    // the height they are drawn under (`None`: the surface's there).
+    let cases = [
+        ("step up 0.1 m", course(|c| c.step(0.1)), 0.0, None),
+        // Right of the face, below the floor's level: nearest the corner
+        // where floor and face meet, a vertex whose normal turns.
+        (
+            "step up 0.1 m, at its foot",
+            course(|c| c.step(0.1)),
+            0.005,
+            Some(0.0),
+        ),
+        ("step down 0.1 m", course(|c| c.step(-0.1)), 0.0, None),
+        (
+            "half-round 0.1 m",
+            course(|c| c.half_round(0.1)),
+            0.05,
+            None,
+        ),
+        // The half-round's foot: where it rises from the floor.
+        (
+            "half-round 0.1 m, at its foot",
+            course(|c| c.half_round(0.1)),
+            0.005,
+            Some(0.0),
+        ),
+    ];
+    for (label, terrain, face, level) in cases {
+        let pair = Ground {
+            terrain: terrain.clone(),
+            laws: config.ground,
+            shoe: shoe.clone(),
+        };
+        sweep(label, &pair, (&["sticking", "sliding"], 30), |rng| {
+            let feature = (rng.uniform(0.0, 2.0) as usize).min(1);
+            let mut x = random_inputs(rng, Vector2::zeros(), (0.0, 0.0), 2.0 * limit);
+            x[2] = rng.uniform(-0.2, 0.2);
+            let local = shoe.ground_points[feature];
+            let arm = BodyState::new(Vector2::zeros(), x[2], Vector2::zeros(), 0.0).arm(local);
+            // The point within 5 mm of `face` (1 cm of it beside the
+            // foot of a face), below the surface there (or `level`).
+            let spread = if level.is_some() { 0.005 } else { 0.01 };
+            let px = face + rng.uniform(-spread, spread);
+            let top = level.unwrap_or_else(|| terrain.height(px));
+            x[0] = px - arm.x;
+            x[1] = top - arm.y - rng.uniform(0.0005, 0.006);
+            (x, feature)
+        });
+    }
+}
+
+/// A ground point at a vertical face is pushed sideways, as a wall does,
+/// by its distance to the face: 3 mm into the face of a 0.1 m step, 5 cm
+/// below its top, it is 3 mm deep with the normal −x; the vertical depth
+/// (0.05 m) would have lifted it onto the step.
+#[test]
+fn a_vertical_face_pushes_a_point_sideways() {
+    let profile = Course::new()
+        .flat(1.0)
+        .and_then(|c| c.step(0.1))
+        .and_then(|c| c.flat(1.0))
+        .and_then(Course::profile)
+        .unwrap();
+    let terrain = Terrain::profile(profile);
+    let shoe = ShoeGeometry {
+        ground_points: vec![Vector2::zeros()],
+        ..M113::geometry().shoe
+    };
+    let link = BodyState::at_rest(Vector2::new(1.003, 0.05), 0.0);
+    let mut contacts = Vec::new();
+    ground::detect(&terrain, &[link], &shoe, &mut contacts);
+    let [contact] = contacts.as_slice() else {
+        panic!("one contact, got {contacts:?}");
+    };
+    assert!((contact.depth - 0.003).abs() < 1e-15, "{}", contact.depth);
+    assert_eq!(contact.gradient, Vector2::new(-1.0, 0.0));
+    assert_eq!(contact.gradient_norm, 1.0);
 }
 
 #[test]

@@ -156,7 +156,8 @@ pub const FACADE: Graph = &[
 /// on top.
 pub const MAIN_JOB: Graph = &[
     ("console", &[]),
-    ("cli", &[]),
+    ("course", &[]),
+    ("cli", &["course"]),
     ("nearest", &[]),
     ("scene", &["cli"]),
     ("animation", &["scene"]),

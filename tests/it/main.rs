@@ -42,7 +42,6 @@ mod stiction;
 mod terrain;
 mod track_speed;
 mod tree_dynamics;
-mod ui;
 mod vehicle_branches;
 mod vehicle_build;
 mod vehicle_chassis;

@@ -4,11 +4,15 @@
 use std::path::PathBuf;
 
 use clap::{Parser, ValueEnum};
+use trackgen::contact::profile::Obstacle;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 
+use crate::course::{self, CourseSpec, Roughness};
+
 /// Drive a planar tracked vehicle (the M113 by default, or the Marder) over
-/// a bump (or through a dip).
+/// a bump (or through a dip), a terrain file, a random course or an
+/// obstacle.
 ///
 /// Streams every recorded quantity to `all.csv` and `all.arrow` as it runs
 /// (memory stays flat however long the run), the main quantities to
@@ -36,6 +40,40 @@ pub struct Args {
     /// centroid starts at 0 and the vehicle spans about -2.4 to 2.4).
     #[arg(long, default_value_t = 12.0, value_name = "M", value_parser = position)]
     pub bump_at: f64,
+    /// Drive over a terrain profile read from a CSV file instead of the
+    /// bump: a header `x,z`, then one point per line (m), x never
+    /// decreasing (two points at one x are a vertical face); `#` starts a
+    /// comment line. An error names the line.
+    #[arg(long, value_name = "FILE.csv", conflicts_with_all = ["roughness", "obstacle"])]
+    pub terrain_file: Option<PathBuf>,
+    /// Drive over a random course instead of the bump: an ISO 8608 class
+    /// (A to H), or a detrended RMS elevation with its unit (1in, 25mm,
+    /// 0.03m; up to 0.5 m). Sampled every 5 cm, flat up to x = 5 m, the
+    /// roughness fading in over the next 5 m.
+    #[arg(long, value_name = "CLASS|RMS", value_parser = course::roughness, conflicts_with = "obstacle")]
+    pub roughness: Option<Roughness>,
+    /// The random course's seed: the same seed, the same course, bit for
+    /// bit.
+    #[arg(long, default_value_t = 1, value_name = "N")]
+    pub seed: u64,
+    /// The random course's length, m, from 10 to 100000 (default: what the
+    /// run can cover, 1.2 × |speed| × duration + 20 m).
+    #[arg(long, value_name = "M", value_parser = course_length)]
+    pub course_length: Option<f64>,
+    /// Drive at an obstacle instead of the bump, on flat ground before and
+    /// after: half-round:R, step:H (negative: down), gap:WIDTH:DEPTH,
+    /// ditch:DEPTH:BOTTOM:ANGLE, barrier:HEIGHT:TOP:ANGLE,
+    /// grade:SLOPE:LENGTH (m; angles in degrees from the horizontal, up to
+    /// 90; a slope as rise over run). Placed at `--obstacle-at`.
+    #[arg(long, value_name = "SPEC", value_parser = course::obstacle)]
+    pub obstacle: Option<Obstacle>,
+    /// Where the obstacle starts, m, from -10000 to 10000.
+    #[arg(long, default_value_t = 12.0, value_name = "M", value_parser = position)]
+    pub obstacle_at: f64,
+    /// The output interval, s, from 1e-4 to 1 (ride figures want 1–2 ms:
+    /// they are printed when it is at most 2 ms).
+    #[arg(long, default_value_t = 0.01, value_name = "SECONDS", value_parser = output_interval)]
+    pub output_every: f64,
     /// Simulated time, s: more than 0, at most 1e6.
     #[arg(long, default_value_t = 8.0, value_name = "SECONDS", value_parser = duration)]
     pub duration: f64,
@@ -168,6 +206,34 @@ impl Args {
         }
     }
 
+    /// The course: a terrain file, a random course or an obstacle if one
+    /// is given, else the bump.
+    pub fn course(&self) -> CourseSpec {
+        if let Some(path) = &self.terrain_file {
+            CourseSpec::File(path.clone())
+        } else if let Some(roughness) = self.roughness {
+            let length = self
+                .course_length
+                .unwrap_or(1.2 * self.speed.abs() * self.duration + 20.0)
+                .clamp(10.0, 1e5);
+            CourseSpec::Rough {
+                roughness,
+                seed: self.seed,
+                length,
+            }
+        } else if let Some(obstacle) = self.obstacle {
+            CourseSpec::Obstacle {
+                obstacle,
+                at: self.obstacle_at,
+            }
+        } else {
+            CourseSpec::Bump {
+                at: self.bump_at,
+                height: self.bump_height,
+            }
+        }
+    }
+
     /// The output folder given, or `out/<vehicle>`.
     pub fn out(&self) -> PathBuf {
         self.out
@@ -263,6 +329,14 @@ fn duration(s: &str) -> Result<f64, String> {
     } else {
         Err(format!("0 s is no run; {what}"))
     }
+}
+
+fn course_length(s: &str) -> Result<f64, String> {
+    within(s, 10.0, 1e5, "a course length is from 10 to 100000 m")
+}
+
+fn output_interval(s: &str) -> Result<f64, String> {
+    within(s, 1e-4, 1.0, "an output interval is from 1e-4 to 1 s")
 }
 
 fn non_negative_seconds(s: &str) -> Result<f64, String> {

@@ -17,6 +17,7 @@
 mod animation;
 mod cli;
 mod console;
+mod course;
 mod modes;
 mod nearest;
 mod outputs;
@@ -29,7 +30,6 @@ use std::time::Instant;
 
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
-use trackgen::contact::Terrain;
 use trackgen::multibody::PartKind;
 use trackgen::simulate::{Background, Output, StreamFailure, simulate_into};
 use trackgen::system::Simulated;
@@ -91,11 +91,8 @@ fn about<V: Vehicle>() -> String {
 /// Assembles the vehicle `V` with the options given, runs it, streaming
 /// its outputs, and reports.
 fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
-    let terrain = Terrain::Bump {
-        centre: args.bump_at,
-        width: 1.0,
-        height: args.bump_height,
-    };
+    let course = args.course();
+    let terrain = course.terrain()?;
     let assembling = Instant::now();
     let config = || {
         let mut config = V::declared_config(terrain.clone(), V::speed_drive(args.speed_profile()));
@@ -109,19 +106,15 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     let about = about::<V>();
     let name = args.vehicle.name();
     let title = format!(
-        "{} driving over a {}",
+        "{} driving {}",
         about.split(':').next().unwrap_or(name),
-        if args.bump_height < 0.0 {
-            "dip"
-        } else {
-            "bump"
-        }
+        course.title()
     );
     let mut outputs = Outputs::create(
         &args.out(),
         (name, title, Scene::of::<V>()),
         &system.columns(),
-        args.bump_at,
+        course.focus(),
     )?;
 
     say!("{about}");
@@ -153,22 +146,11 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
         "at once".to_string()
     };
     say!(
-        "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {} {:.2} m {} at x = {:.1} m; {:.1} s in all",
+        "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {}; {:.1} s in all",
         args.terrain,
         args.settle,
         args.speed,
-        if args.bump_height < 0.0 {
-            "dip"
-        } else {
-            "bump"
-        },
-        args.bump_height.abs(),
-        if args.bump_height < 0.0 {
-            "deep"
-        } else {
-            "high"
-        },
-        args.bump_at,
+        course.describe(),
         args.duration
     );
     let bar = ProgressBar::new((args.duration * 1000.0) as u64);
@@ -187,7 +169,7 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
             args.integrator(),
             0.0,
             args.duration,
-            Output::Every(0.01),
+            Output::Every(args.output_every),
             &mut sink,
             &mut |t| bar.set_position((t * 1000.0) as u64),
         )

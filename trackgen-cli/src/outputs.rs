@@ -71,13 +71,13 @@ impl Recorders {
 
 impl Outputs {
     /// Creates the folder and the data files for a run of the vehicle
-    /// `name` (drawn by `scene`, titled `title`) recording `columns`, with
-    /// a bump centred at `bump_at` (m).
+    /// `name` (drawn by `scene`, titled `title`) recording `columns`; the
+    /// picture is taken where the chassis centroid passes `focus` (m).
     pub fn create(
         dir: &Path,
         (name, title, scene): (&'static str, String, Scene),
         columns: &[String],
-        bump_at: f64,
+        focus: f64,
     ) -> Result<Self, Box<dyn Error>> {
         std::fs::create_dir_all(dir)
             .map_err(|e| format!("cannot create the output folder {}: {e}", dir.display()))?;
@@ -101,9 +101,7 @@ impl Outputs {
                 summary: Summary::new(),
                 picture_columns,
                 thinned: Thinned::new(PICTURE_ROWS),
-                // The chassis centroid a metre short of the bump: the front
-                // wheels on it.
-                at_bump: Nearest::new("x", bump_at - 1.0),
+                at_bump: Nearest::new("x", focus),
             },
         })
     }

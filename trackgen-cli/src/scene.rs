@@ -192,7 +192,16 @@ impl Ground {
     }
 
     /// Sample points over `[x0, x1]`: the undisturbed surface.
+    /// A polyline's own points over the range (its vertical faces drawn as
+    /// they are), with its heights at the ends.
     pub fn profile(&self, x0: f64, x1: f64) -> Vec<(f64, f64)> {
+        if let Terrain::Profile(profile) = &self.terrain {
+            let inside = profile.points().filter(|p| p.0 > x0 && p.0 < x1);
+            return std::iter::once((x0, profile.height(x0)))
+                .chain(inside)
+                .chain(std::iter::once((x1, profile.height(x1))))
+                .collect();
+        }
         (0..=800)
             .map(|k| x0 + (x1 - x0) * k as f64 / 800.0)
             .map(|x| (x, self.terrain.height(x)))

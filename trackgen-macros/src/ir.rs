@@ -78,6 +78,9 @@ pub enum Closure {
 /// A chassis with its parts, and its track.
 pub struct Vehicle {
     pub gravity: Vec2,
+    /// The driver's seat on the frame, m, from the chassis centroid in the
+    /// frame's axes (the centroid when not declared).
+    pub seat: Vec2,
     pub parts: Vec<Part>,
     pub track: Track,
     /// The chassis as a tree: the frame (body 0), then each part preceded

@@ -82,6 +82,7 @@ fn chassis_type(
     let doc = format!(
         "The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it."
     );
+    let (seat_x, seat_y) = (&vehicle.seat.x, &vehicle.seat.y);
     let indices = &vehicle.part_bodies;
     let parts = vehicle.parts.iter().zip(indices).map(|(p, &(body, arm_body))| {
         let label = p.name.to_string();
@@ -150,6 +151,7 @@ fn chassis_type(
         #[allow(clippy::approx_constant)]
         impl #rt::ChassisModel<#dof> for #name {
             const PARTS: &'static [#rt::ChassisPart] = &[#(#parts),*];
+            const SEAT: [f64; 2] = [#seat_x, #seat_y];
         }
     }
 }

@@ -103,6 +103,7 @@ fn models(name: &Ident, chassis: bool) -> TokenStream {
         quote! {
             impl<const D: usize> #rt::ChassisModel<D> for #name {
                 const PARTS: &'static [#rt::ChassisPart] = &[];
+                const SEAT: [f64; 2] = [0.0, 0.0];
             }
         }
     } else {

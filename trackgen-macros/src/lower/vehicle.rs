@@ -24,8 +24,9 @@ const MAX_REPEAT: usize = 64;
 impl Lowering<'_> {
     pub(super) fn vehicle(&mut self, block: &crate::parse::Block, name: &Ident) -> Vehicle {
         use crate::parse::Entry;
-        let fields = self.fields("vehicle", block, &["gravity"]);
+        let fields = self.fields("vehicle", block, &["gravity", "seat"]);
         let gravity = self.gravity(&fields);
+        let seat = self.point(&fields, "seat", false);
         let kinds = [
             "chassis",
             "track",
@@ -159,6 +160,9 @@ impl Lowering<'_> {
         }
         let (chassis_mass, chassis_inertia, centroid) =
             chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
+        // The seat on the frame, from its centroid (the default: the
+        // centroid itself).
+        let seat = seat.map_or_else(Vec2::zero, |s| s - centroid.clone());
         for part in &mut parts {
             part.at = part.at.clone() - centroid.clone();
             if let Some(arm) = &mut part.arm {
@@ -176,6 +180,7 @@ impl Lowering<'_> {
         let (chassis, part_bodies) = super::tree::chassis(&chassis_mass, &chassis_inertia, &parts);
         Vehicle {
             gravity,
+            seat,
             parts,
             track,
             chassis,

@@ -1,7 +1,8 @@
 //! Where the shoes' ground points meet the terrain.
 
-use nalgebra::Vector2;
+use nalgebra::{Matrix2, Vector2};
 
+use super::profile::Profile;
 use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
 use super::{BodyState, Contact, ShoeGeometry, Terrain};
 
@@ -17,8 +18,19 @@ use super::{BodyState, Contact, ShoeGeometry, Terrain};
 /// track are skipped without looking at their points, so
 /// the cost is one comparison per link plus the links actually near the
 /// ground.
+///
+/// On a polyline ([`Terrain::Profile`]) a point below the surface is as
+/// deep as its distance to the nearest edge, vertical faces included
+/// ([`Profile::nearest_boundary`]), and is pushed along the unit normal
+/// toward it, `g = n`: a face pushes sideways, as a wall does, where the
+/// vertical depth would lift the point onto the step it meets. The depth
+/// is a distance function, continuous, with `∂δ/∂p = −n`, so the elastic
+/// force is the gradient of the potential there too.
 pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: &mut Vec<Contact>) {
     let clear = clear_of(terrain, links, shoe);
+    if let Terrain::Profile(profile) = terrain {
+        return detect_on_profile(profile, links, shoe, &clear, out);
+    }
     for (i, link) in links.iter().enumerate() {
         if clear(link) {
             continue;
@@ -47,12 +59,71 @@ pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: 
     }
 }
 
+/// [`detect`] on a polyline: each point below the surface, as deep as its
+/// distance to the nearest edge.
+fn detect_on_profile(
+    profile: &Profile,
+    links: &[BodyState],
+    shoe: &ShoeGeometry,
+    clear: &impl Fn(&BodyState) -> bool,
+    out: &mut Vec<Contact>,
+) {
+    for (i, link) in links.iter().enumerate() {
+        if clear(link) {
+            continue;
+        }
+        for (k, local) in shoe.ground_points.iter().enumerate() {
+            let arm = link.arm(*local);
+            let point = link.position + arm;
+            let Some(nearest) = profile.nearest_boundary(point.x, point.y) else {
+                continue;
+            };
+            if nearest.distance <= 0.0 {
+                continue;
+            }
+            let normal =
+                (Vector2::new(nearest.point.0, nearest.point.1) - point) / nearest.distance;
+            out.push(Contact {
+                link: i,
+                other: None,
+                feature: k,
+                point,
+                arm,
+                depth: nearest.distance,
+                gradient: normal,
+                gradient_norm: 1.0,
+                velocity: link.velocity_at(arm),
+            });
+        }
+    }
+}
+
 /// The derivatives of a ground contact's geometry ([`detect`]'s) with the
 /// link's pose: the point `p = R + A ū` moves as `[I | ⟂(A ū)]`, the depth
 /// `δ = h(p_x) − p_y` as `h′ ∂p_x − ∂p_y`, the gradient `(−h′, 1)` as
-/// `(−h″ ∂p_x, 0)`.
+/// `(−h″ ∂p_x, 0)`. On a polyline the depth is the distance `|c − p|` to
+/// the nearest point `c` of the boundary and the gradient its unit
+/// normal `n = (c − p)/δ`: `∂δ = −n·∂p`; `n` is fixed on an edge and
+/// turns about a vertex, `∂n = −(I − n nᵀ) ∂p / δ`.
 pub fn tangent(terrain: &Terrain, contact: &Contact) -> GeometryTangent {
     let point = body_point(contact.arm, LINK);
+    if let Terrain::Profile(profile) = terrain {
+        let n = contact.gradient;
+        let depth = point.row(0) * -n.x - point.row(1) * n.y;
+        let mut gradient = PoseRows2::zeros();
+        let on_vertex = profile
+            .nearest_boundary(contact.point.x, contact.point.y)
+            .is_some_and(|c| c.on_vertex);
+        if on_vertex && contact.depth > 0.0 {
+            let projector = Matrix2::identity() - n * n.transpose();
+            gradient = -(projector * point) / contact.depth;
+        }
+        return GeometryTangent {
+            point,
+            depth,
+            gradient,
+        };
+    }
     let slope = -contact.gradient.x;
     let curvature = terrain.curvature(contact.point.x);
     let mut gradient = PoseRows2::zeros();

@@ -149,6 +149,19 @@ pub struct Profile {
     index: BucketIndex,
 }
 
+/// The point of a terrain's boundary nearest to a point below it
+/// ([`Profile::nearest_boundary`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Nearest {
+    /// `(x, z)`, m.
+    pub point: (f64, f64),
+    /// Its distance from the point below, m: how deep that point is.
+    pub distance: f64,
+    /// Whether it is a vertex of the polyline (an end of its segment):
+    /// the direction to it then turns as the point below moves.
+    pub on_vertex: bool,
+}
+
 /// Uniform buckets over `[x_first, x_last]` (see the module docs).
 #[derive(Debug, Clone, PartialEq)]
 struct BucketIndex {
@@ -702,6 +715,43 @@ impl Profile {
         self.z[lo..hi]
             .iter()
             .fold(self.height(x0).max(self.height(x1)), |m, &z| m.max(z))
+    }
+
+    /// The point of the terrain's boundary nearest to `(x, y)`, a point
+    /// below the surface (`y < h(x)`): `None` on or above it. The boundary
+    /// is every segment, vertical faces included, and the flat extensions
+    /// beyond the ends; its nearest point lies within the vertical depth
+    /// `h(x) − y` of the point (the surface straight above is on it), so
+    /// only the segments over `[x − d, x + d]` are looked at. Ties go to
+    /// the first segment in order of x, so the answer is the same however
+    /// it is asked.
+    pub fn nearest_boundary(&self, x: f64, y: f64) -> Option<Nearest> {
+        let vertical = self.height(x) - y;
+        if vertical.is_nan() || vertical <= 0.0 {
+            return None;
+        }
+        let mut best: Option<Nearest> = None;
+        for segment in self.segments_in(x - vertical, x + vertical) {
+            let (a, b) = (segment.start, segment.end);
+            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+            let length_squared = dx * dx + dy * dy;
+            let along = if length_squared > 0.0 {
+                (((x - a.0) * dx + (y - a.1) * dy) / length_squared).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let point = (a.0 + along * dx, a.1 + along * dy);
+            let (ex, ey) = (point.0 - x, point.1 - y);
+            let distance = (ex * ex + ey * ey).sqrt();
+            if best.is_none_or(|b| distance < b.distance) {
+                best = Some(Nearest {
+                    point,
+                    distance,
+                    on_vertex: along == 0.0 || along == 1.0,
+                });
+            }
+        }
+        best
     }
 
     /// Reads a profile file (see the module docs for the format). Errors

@@ -1,6 +1,12 @@
-//! The ground under the vehicle: a height profile `y = h(x)`.
+//! The ground under the vehicle: a height profile `y = h(x)`, or a
+//! polyline whose vertical faces no height function can give (a step, a
+//! trench wall).
+
+use std::sync::Arc;
 
 use thiserror::Error;
+
+use super::profile::Profile;
 
 /// A terrain profile. Heights in m, positions along x in m.
 #[derive(Debug, Clone, PartialEq)]
@@ -40,6 +46,15 @@ pub enum Terrain {
     /// Piecewise linear through points of strictly increasing x, flat
     /// beyond the ends. Build it with [`Terrain::table`].
     Table(Vec<(f64, f64)>),
+    /// A polyline whose x never decreases, vertical faces allowed: a
+    /// surveyed profile ([`Profile::read_csv`]), an obstacle course
+    /// ([`Course`](super::profile::Course)) or a random one
+    /// ([`RoughCourse`](super::roughness::RoughCourse)). Its height is the
+    /// surface's from the right at a face; the ground meets a shoe's
+    /// points by their distance to its nearest edge, so a face pushes a
+    /// point sideways ([`ground::detect`](super::ground::detect)). Shared:
+    /// cloning a configuration does not copy a long course.
+    Profile(Arc<Profile>),
 }
 
 /// A terrain that cannot be built.
@@ -77,6 +92,11 @@ pub enum TerrainError {
 }
 
 impl Terrain {
+    /// A polyline terrain ([`Terrain::Profile`]).
+    pub fn profile(profile: Profile) -> Terrain {
+        Terrain::Profile(Arc::new(profile))
+    }
+
     /// A table terrain, checked: finite points in strictly increasing x.
     pub fn table(points: Vec<(f64, f64)>) -> Result<Terrain, TerrainError> {
         if points.len() < 2 {
@@ -140,6 +160,8 @@ impl Terrain {
                 &[("amplitude", *amplitude), ("wavelength", *wavelength)],
             ),
             Terrain::Table(points) => Terrain::table(points.clone()).map(drop),
+            // A profile is checked when it is made.
+            Terrain::Profile(_) => Ok(()),
         }
     }
 
@@ -188,6 +210,7 @@ impl Terrain {
                 let k = 2.0 * std::f64::consts::PI / wavelength;
                 (amplitude * (k * x).sin(), amplitude * k * (k * x).cos())
             }
+            Terrain::Profile(profile) => profile.height_and_slope(x),
             Terrain::Table(points) => {
                 // Built directly (not by `table`), a table may be empty.
                 let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
@@ -218,7 +241,10 @@ impl Terrain {
     #[inline]
     pub fn curvature(&self, x: f64) -> f64 {
         match self {
-            Terrain::Flat { .. } | Terrain::Ramp { .. } | Terrain::Table(_) => 0.0,
+            Terrain::Flat { .. }
+            | Terrain::Ramp { .. }
+            | Terrain::Table(_)
+            | Terrain::Profile(_) => 0.0,
             Terrain::Bump {
                 centre,
                 width,
@@ -263,6 +289,7 @@ impl Terrain {
                 let inside = points.iter().filter(|p| p.0 > x0 && p.0 < x1).map(|p| p.1);
                 inside.fold(self.height(x0).max(self.height(x1)), f64::max)
             }
+            Terrain::Profile(profile) => profile.max_height(x0, x1),
         }
     }
 }

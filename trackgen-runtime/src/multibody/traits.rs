@@ -244,4 +244,10 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
 pub trait ChassisModel<const DOF: usize>: RecursiveModel<DOF> {
     /// The parts, in declaration order.
     const PARTS: &'static [ChassisPart];
+
+    /// The driver's seat: a point of the frame, m, from the frame's
+    /// centroid in its axes (x forward, y up), as declared by `seat` (the
+    /// centroid itself when the declaration gives none). Ride quality is
+    /// measured there.
+    const SEAT: [f64; 2];
 }

@@ -50,6 +50,17 @@ record! {
         motor_work,
         /// The work dissipated since the start, J.
         dissipated,
+        /// The driver's seat ([`ChassisModel::SEAT`](crate::multibody::ChassisModel::SEAT)),
+        /// x, m.
+        seat_x,
+        /// The seat's y, m.
+        seat_y,
+        /// The seat's acceleration along the frame's x axis (forward), m/s²:
+        /// kinematic, `R̈ + θ̈ ⟂(A s̄) − θ̇² A s̄` turned into the frame's axes
+        /// (zero at rest: gravity is not in it).
+        seat_ax,
+        /// The seat's acceleration along the frame's y axis (up), m/s².
+        seat_az,
     }
 }
 

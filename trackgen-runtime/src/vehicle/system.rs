@@ -24,6 +24,7 @@ use crate::contact::{BodyState, GroundFriction};
 use crate::integrate::SimulationError;
 use crate::integrate::{ImplicitSolve, OdeSystem};
 use crate::multibody::{ChassisModel, ChassisPart, PartKind, TrackModel, TreeDescription};
+use crate::planar::{Rotation, perp};
 use crate::system::{Pair, Simulated, TrackSystem, TreeSystem};
 
 /// A vehicle: its track and chassis integrated together, coupled by the
@@ -784,8 +785,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let (bodies, [_, work, dissipated], _) = self.split(y);
         self.bodies.observe(t, bodies, row)?;
         let (qc, qdc) = self.evaluate(t, y)?;
-        let (track, _) = self.bodies.parts_mut();
+        let (track, chassis) = self.bodies.parts_mut();
         track.accelerations(t)?;
+        // The chassis' accelerations at the state (for the seat's).
+        let yc = &y[self.layout.chassis.start..self.layout.chassis_rates.end];
+        let rates = &mut self.work.chassis_rates;
+        chassis.derivative_with_trig(t, yc, &self.work.part_trig, rates)?;
+        let seat = seat_motion::<DC>(C::SEAT, &qc, &qdc, &rates[DC..]);
         let Workspace {
             links,
             parts,
@@ -834,6 +840,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             energy,
             motor_work: work,
             dissipated,
+            seat_x: seat.position.x,
+            seat_y: seat.position.y,
+            seat_ax: seat.acceleration.x,
+            seat_az: seat.acceleration.y,
         }
         .extend_row(row);
         Ok(())
@@ -849,5 +859,34 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let mut restart = self.bodies.after_step(t, &mut y[..nb], switched)?;
         restart |= self.press_soil(t, y)?;
         Ok(restart)
+    }
+}
+
+/// A point of the chassis frame in motion: where it is, and its
+/// acceleration in the frame's axes.
+struct PointMotion {
+    /// m, global frame.
+    position: Vector2<f64>,
+    /// m/s², the frame's axes (x forward, y up), kinematic (no gravity).
+    acceleration: Vector2<f64>,
+}
+
+/// The frame's point `offset` (from its centroid, in its axes, m) at
+/// `(q_i, q̇_i)` with accelerations `qdd`: `p = R + A s̄` and, turned into
+/// the frame's axes by `Aᵀ`, `p̈ = R̈ + θ̈ ⟂(A s̄) − θ̇² A s̄` (spec §0: the
+/// frame is the chassis' root body, `q_i = [R, θ, …]`).
+fn seat_motion<const DC: usize>(
+    offset: [f64; 2],
+    q: &SVector<f64, DC>,
+    qd: &SVector<f64, DC>,
+    qdd: &[f64],
+) -> PointMotion {
+    let rotation = Rotation::new(q[2]);
+    let arm = rotation.apply(Vector2::new(offset[0], offset[1]));
+    let (omega, alpha) = (qd[2], qdd[2]);
+    let global = Vector2::new(qdd[0], qdd[1]) + perp(arm) * alpha - arm * (omega * omega);
+    PointMotion {
+        position: Vector2::new(q[0], q[1]) + arm,
+        acceleration: rotation.apply_inverse(global),
     }
 }

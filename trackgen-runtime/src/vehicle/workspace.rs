@@ -57,6 +57,8 @@ pub(super) struct Workspace {
     pub tensions: Vec<f64>,
     /// Every joint's distance from the sprocket's pitch circle (recording).
     pub offsets: Vec<f64>,
+    /// The chassis' `[q̇_i, q̈_i]` (recording: the seat's acceleration).
+    pub chassis_rates: Vec<f64>,
 }
 
 impl Workspace {
@@ -84,6 +86,7 @@ impl Workspace {
             accelerated: false,
             tensions: Vec::with_capacity(links),
             offsets: Vec::with_capacity(links),
+            chassis_rates: vec![0.0; 2 * (bodies + 2)],
         }
     }
 
