@@ -48,6 +48,11 @@ pub const TORSION_PRELOAD: f64 = 1.0e4;
 /// not see): the M113's 15-inch (0.381 m) single-pin track; Chrono's model
 /// and `shared/spec/m113.md` give none.
 pub const TRACK_WIDTH: f64 = 0.381;
+/// The driver's seat, m, in the track-assembly frame: Chrono's
+/// `M113_Chassis` puts the driver at (0, 0.5, 1.2) m in the chassis
+/// reference frame, whose x-z positions this frame shares
+/// (`shared/spec/mobility.md` §4): over the sprocket, 1.2 m up.
+pub const DRIVER_SEAT: (f64, f64) = (0.0, 1.2);
 /// Length of the idler's tensioner arm, m. Chrono's tensioner is a
 /// translational spring-damper (1e6 N/m, 1.4e4 N s/m, 2e4 N preload); here
 /// the idler swings on a vertical arm of this length from a pivot above
@@ -61,6 +66,7 @@ crate::model! {
     /// a tensioner arm. See the [module docs](self).
     pub vehicle M113 {
         gravity: (0.0, -9.81),
+        seat: (DRIVER_SEAT.0, DRIVER_SEAT.1),
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.006, 0.406) },
         // Tip circle 0.2605 m, gap arcs of 0.089 m centred 0.3 m out.
         sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.245,

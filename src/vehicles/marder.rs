@@ -79,6 +79,15 @@ pub const TENSIONER_ARM: f64 = 0.2;
 /// translational tensioner.
 pub const TENSIONER: (f64, f64, f64) = (2e6, 1e5, 24_525.0);
 
+/// The driver's seat, m, in the track-assembly frame: an assumption, since
+/// Chrono's `Marder_Chassis` gives the driver at its origin (0, 0, 0). The
+/// Marder 1's driver sits at the front left, beside the engine, as the
+/// M113's does beside its own: placed like the M113's seat, over the front
+/// of the track (0.5 m behind the sprocket, over the first road wheel's
+/// arm) and 1.75 m above the ground (the ground under the road wheels is
+/// at y = −0.73 m; the hull roof, 1.9 m above it, is at about 1.2 m).
+pub const DRIVER_SEAT: (f64, f64) = (-0.5, 1.0);
+
 crate::model! {
     /// A planar Marder, left side: 77 shoes, a 12-tooth front sprocket,
     /// six road wheels on torsion-sprung trailing arms (four with shock
@@ -86,6 +95,7 @@ crate::model! {
     /// arm. See the [module docs](self).
     pub vehicle Marder {
         gravity: (0.0, -9.81),
+        seat: (DRIVER_SEAT.0, DRIVER_SEAT.1),
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.7958, 0.0) },
         // Addendum circle 0.3 m, gap arcs of 0.07 m centred on the
         // 0.328414781 m circle (a 12-gon of 0.17 m sides).

@@ -91,7 +91,7 @@ pub const RUNTIME: Graph = &[
         ],
     ),
     // drivers
-    ("simulate", &["closure", "integrate", "system"]),
+    ("simulate", &["ride", "closure", "integrate", "system"]),
     (
         "analysis",
         &[

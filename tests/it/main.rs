@@ -35,6 +35,7 @@ mod private_paths;
 mod pure_evaluation;
 mod rosenbrock_w;
 mod run_settings_properties;
+mod seat;
 mod shifted_chain;
 mod soft_ground;
 mod soil_laws;

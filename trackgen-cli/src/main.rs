@@ -31,7 +31,7 @@ use std::time::Instant;
 use clap::Parser;
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::multibody::PartKind;
-use trackgen::simulate::{Background, Output, StreamFailure, simulate_into};
+use trackgen::simulate::{Background, Output, RideSink, StreamFailure, simulate_into};
 use trackgen::system::Simulated;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
@@ -117,6 +117,12 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
         course.focus(),
     )?;
 
+    // The ride at the seat, from the end of the speed ramp on, when the
+    // rows resolve its band.
+    if args.output_every <= RideSink::MAX_INTERVAL {
+        outputs.recorders.ride = Some(RideSink::new(args.output_every, args.settle + args.ramp)?);
+    }
+
     say!("{about}");
     say!(
         "assembled (track wrapped, tensioner set) in {:.0} ms",
@@ -189,6 +195,7 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     let written = if started {
         let tolerance = args.books_tolerance(report.stats.implicit);
         report::print(&outputs.recorders.summary, &report, wall, tolerance);
+        report::ride(outputs.recorders.ride.as_ref(), args.output_every);
         let ground = scene::Ground {
             terrain: terrain.clone(),
             rut: system

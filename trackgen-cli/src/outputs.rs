@@ -6,7 +6,7 @@ use std::error::Error;
 use std::fs::File;
 use std::path::{Path, PathBuf};
 
-use trackgen::simulate::{CsvSink, Results, Select, Summary, Tee, Thinned};
+use trackgen::simulate::{CsvSink, Results, RideSink, Select, Summary, Tee, Thinned};
 use trackgen_arrow::ArrowSink;
 
 use super::nearest::Nearest;
@@ -14,7 +14,7 @@ use super::scene::{Ground, Scene};
 use super::{animation, plots};
 
 /// The columns of `<vehicle>.csv`.
-const MAIN_COLUMNS: [&str; 8] = [
+const MAIN_COLUMNS: [&str; 10] = [
     "x",
     "y",
     "pitch",
@@ -23,6 +23,8 @@ const MAIN_COLUMNS: [&str; 8] = [
     "sprocket_speed",
     "tension",
     "ground_normal",
+    "seat_ax",
+    "seat_az",
 ];
 
 /// Rows kept in memory for the plots and the animation, evenly spaced:
@@ -54,18 +56,24 @@ pub struct Recorders {
     picture_columns: Vec<String>,
     thinned: Thinned,
     at_bump: Nearest,
+    /// The ride at the seat, when the rows are close enough together.
+    pub ride: Option<RideSink>,
 }
 
 impl Recorders {
     /// Everything a run feeds, as one sink.
     pub fn sink(&mut self) -> Tee<'_> {
         let pictures = Tee::new().and(&mut self.thinned).and(&mut self.at_bump);
-        Tee::new()
+        let all = Tee::new()
             .and(&mut self.all_csv)
             .and(&mut self.all_arrow)
             .and(&mut self.main_csv)
             .and(&mut self.summary)
-            .and(Select::new(self.picture_columns.clone(), pictures))
+            .and(Select::new(self.picture_columns.clone(), pictures));
+        match &mut self.ride {
+            Some(ride) => all.and(ride),
+            None => all,
+        }
     }
 }
 
@@ -102,6 +110,7 @@ impl Outputs {
                 picture_columns,
                 thinned: Thinned::new(PICTURE_ROWS),
                 at_bump: Nearest::new("x", focus),
+                ride: None,
             },
         })
     }

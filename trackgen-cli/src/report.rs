@@ -1,7 +1,7 @@
 //! The figures printed after a run, from running summaries: no row is
 //! kept for them.
 
-use trackgen::simulate::{EnergyBalance, RunReport, Summary};
+use trackgen::simulate::{EnergyBalance, RideSink, RunReport, Summary};
 
 use crate::console::say;
 
@@ -83,4 +83,35 @@ fn methods(report: &RunReport) -> Option<String> {
         report.stats.implicit,
         report.stats.accepted
     ))
+}
+
+/// The ride at the seat: the figures the ride and half-round limits are
+/// set on (6 W absorbed, 2.5 g), measured from the end of the speed ramp;
+/// or why there are none.
+pub fn ride(ride: Option<&RideSink>, output_every: f64) {
+    let Some(ride) = ride else {
+        say!(
+            "ride at the seat: rows every {output_every} s are too far apart; \
+             --output-every {} or less gives the ride figures",
+            RideSink::MAX_INTERVAL
+        );
+        return;
+    };
+    let figures = ride.figures();
+    if figures.samples == 0 {
+        say!(
+            "ride at the seat: the run ended before t = {:.1} s, where the measurement starts",
+            ride.from()
+        );
+        return;
+    }
+    say!(
+        "ride at the seat from t = {:.1} s: absorbed power {:.2} W (vertical), W_k RMS {:.3} m/s², \
+         W_d RMS {:.3} m/s², peak {:.2} g (30 Hz low-pass)",
+        ride.from(),
+        figures.absorbed_power,
+        figures.wk_rms,
+        figures.wd_rms,
+        figures.peak_g
+    );
 }

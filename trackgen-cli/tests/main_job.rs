@@ -62,7 +62,9 @@ fn check_m113_outputs(dir: &Path, duration: f64) {
             "sprocket_torque",
             "sprocket_speed",
             "tension",
-            "ground_normal"
+            "ground_normal",
+            "seat_ax",
+            "seat_az"
         ],
         "m113.csv columns"
     );

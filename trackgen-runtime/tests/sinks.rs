@@ -305,3 +305,72 @@ fn a_recorded_nan_stops_any_system_naming_its_column() {
             .all(|s| s.values.iter().all(|v| v.is_finite()))
     );
 }
+
+/// The ride sink runs the named columns through the ride criteria: the
+/// oscillator's `x = cos 2πt` (read as a vertical acceleration, m/s²) and
+/// `v` (longitudinal), sampled every 1 ms, measured from 2 s (the filters'
+/// transients gone) to 22 s. A steady 1 Hz sine of amplitude 1 m/s² gives
+/// an absorbed power `|H(j2π)|² A²/2` with `A` in ft/s², a `W_k` RMS
+/// `|W_k(1 Hz)|/√2` and a peak of `|H_30(1 Hz)|` m/s² (the 4-pole 30 Hz
+/// Butterworth passes 1 Hz unchanged to 1e-11), each from the criteria's
+/// own discrete responses: within 1e-3 (20 whole periods averaged, and
+/// RK4's 1 ms step keeps the sine to 1e-9). A ride sink is refused at
+/// rows 5 ms apart, and rows off its spacing stop the run with the time.
+#[test]
+fn a_ride_sink_measures_the_named_columns_from_its_start() {
+    use trackgen_runtime::ride::{AbsorbedPower, FT_PER_M, G, IsoWeighting, PeakVertical};
+    use trackgen_runtime::simulate::{RideIntervalError, RideSink, simulate_into};
+
+    let dt = 1e-3;
+    let mut ride = RideSink::of_columns("x", "v", dt, 2.0).unwrap();
+    let mut rows = Results::default();
+    let mut both = Tee::new().and(&mut ride).and(&mut rows);
+    simulate_into(
+        &mut Oscillator { fail_at: None },
+        rk4(),
+        0.0,
+        22.0,
+        Output::Every(dt),
+        &mut both,
+        &mut |_| {},
+    )
+    .expect("the run finishes");
+    drop(both);
+    let figures = ride.figures();
+    let measured = rows.times().iter().filter(|&&t| t >= 2.0).count();
+    assert!(measured > 19_990, "{measured} rows measured");
+    assert_eq!(figures.samples, measured as u64, "the rows from 2 s on");
+    let f = 1.0;
+    let absorbed = AbsorbedPower::new(dt).response_discrete(f).powi(2) * FT_PER_M.powi(2) / 2.0;
+    let wk = IsoWeighting::wk(dt).response_discrete(f) / 2f64.sqrt();
+    let wd = IsoWeighting::wd(dt).response_discrete(f) * OMEGA / 2f64.sqrt();
+    let peak = PeakVertical::new(dt).response_discrete(f) / G;
+    let close = |got: f64, want: f64, what: &str| {
+        assert!(
+            ((got - want) / want).abs() < 1e-3,
+            "{what}: {got} against {want}"
+        );
+    };
+    close(figures.absorbed_power, absorbed, "absorbed power, W");
+    close(figures.wk_rms, wk, "W_k RMS, m/s²");
+    close(figures.wd_rms, wd, "W_d RMS of v = -2π sin 2πt, m/s²");
+    close(figures.peak_g, peak, "peak, g");
+
+    assert_eq!(
+        RideSink::new(5e-3, 0.0).unwrap_err(),
+        RideIntervalError {
+            dt: 5e-3,
+            max: 2e-3
+        }
+    );
+    let mut coarse = RideSink::of_columns("x", "v", dt, 0.0).unwrap();
+    let failure = stream(&mut coarse, 1.0, None).expect_err("rows 10 ms apart");
+    let RunError::Sink { t, source } = failure.error else {
+        panic!("a sink error, got {}", failure.error);
+    };
+    assert!(
+        (t - INTERVAL).abs() < 1e-12,
+        "refused at the second row, t = {t}"
+    );
+    assert!(source.to_string().contains("not every 0.001 s"), "{source}");
+}

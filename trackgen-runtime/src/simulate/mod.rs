@@ -27,6 +27,7 @@ pub use output::Output;
 pub use results::{Results, Sample};
 pub use run::{simulate, simulate_with_progress};
 pub use sink::{
-    Background, ColumnSummary, CsvSink, Select, Sink, SinkError, Summary, Tee, Thinned,
+    Background, ColumnSummary, CsvSink, RideFigures, RideIntervalError, RideSink, Select, Sink,
+    SinkError, Summary, Tee, Thinned,
 };
 pub use stream::{RunReport, StreamFailure, simulate_into};

@@ -10,6 +10,8 @@
 //!   file (`.arrow`), which pandas, polars, pyarrow, DuckDB and R's
 //!   `arrow` load directly, in record batches of a bounded number of rows.
 //! * [`Summary`]: first, last, smallest and largest value of every column.
+//! * [`RideSink`]: the ride at the driver's seat (absorbed power, ISO
+//!   2631-1 weighted RMS, peak vertical acceleration) as the rows arrive.
 //! * [`Thinned`]: at most a given number of rows, evenly spaced in time
 //!   (for plots of long runs).
 //! * [`Select`]: some columns only, passed on to another sink.
@@ -19,6 +21,7 @@
 
 mod background;
 mod csv_sink;
+mod ride;
 mod select;
 mod summary;
 mod tee;
@@ -28,6 +31,7 @@ use std::path::{Path, PathBuf};
 
 pub use background::Background;
 pub use csv_sink::CsvSink;
+pub use ride::{RideFigures, RideIntervalError, RideSink};
 pub use select::Select;
 pub use summary::{ColumnSummary, Summary};
 pub use tee::Tee;
