@@ -479,6 +479,37 @@ fn m113_rejects_bad_options() {
             &["--vehicle", "tiger"],
             &["--vehicle", "tiger", "m113", "marder"],
         ),
+        (
+            &["--roughness", "Z"],
+            &["--roughness", "ISO 8608 class A to H"],
+        ),
+        (
+            &["--roughness", "3ft"],
+            &["--roughness", "1in, 25mm, 0.03m"],
+        ),
+        (&["--roughness", "0.8m"], &["--roughness", "out of range"]),
+        (&["--obstacle", "wall:1"], &["--obstacle", "half-round:R"]),
+        (
+            &["--obstacle", "step:x"],
+            &["--obstacle", "not a finite number"],
+        ),
+        (
+            &["--obstacle", "gap:1"],
+            &["--obstacle", "takes 2 value(s)"],
+        ),
+        (
+            &["--obstacle", "ditch:1:1:120"],
+            &["--obstacle", "wall_angle"],
+        ),
+        (&["--output-every", "0"], &["--output-every", "1e-4 to 1 s"]),
+        (
+            &["--course-length", "5"],
+            &["--course-length", "10 to 100000 m"],
+        ),
+        (
+            &["--roughness", "C", "--obstacle", "step:0.2"],
+            &["--roughness", "--obstacle", "cannot be used with"],
+        ),
     ];
     for (bad, mentions) in cases {
         // The short run's settings, less the one under test (clap refuses
@@ -503,4 +534,52 @@ fn m113_rejects_bad_options() {
     }
     let out = run(&m113, &["--out", ""], &dir);
     assert_rejected("--out ''", &out, &["--out"]);
+}
+
+/// The courses: a terrain file, a random course and an obstacle each run
+/// and say what they drove over; a terrain file with a bad line is refused
+/// before the run, naming the file and the line (`bad.csv:3`), with no
+/// files written.
+#[test]
+fn m113_drives_a_terrain_file_a_random_course_and_an_obstacle() {
+    let m113 = main_job();
+    let dir = scratch("m113_courses");
+    let file = dir.join("course.csv");
+    std::fs::write(&file, "x,z\n-50,0\n10,0\n10,0.15\n60,0.15\n").unwrap();
+    let short = ["--duration", "0.3", "--settle", "0.1", "--ramp", "0.1"];
+    let cases: [(&[&str], &str); 3] = [
+        (
+            &["--terrain-file", file.to_str().unwrap()],
+            "the profile of",
+        ),
+        (&["--roughness", "C", "--seed", "7"], "ISO 8608 class C"),
+        (
+            &["--obstacle", "half-round:0.2"],
+            "a half-round 0.20 m high",
+        ),
+    ];
+    for (k, (course, said)) in cases.into_iter().enumerate() {
+        let out = dir.join(format!("out{k}"));
+        let args = [&short[..], course, &["--out", out.to_str().unwrap()]].concat();
+        let run = run(&m113, &args, &dir);
+        assert_success(&course.join(" "), &run);
+        let stdout = text(&run.stdout);
+        assert!(stdout.contains(said), "{course:?}: {stdout}");
+        assert!(out.join("m113.csv").is_file(), "{course:?}: m113.csv");
+    }
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "x,z\n0,0\n1,oops\n").unwrap();
+    let out = dir.join("out_bad");
+    let refused = run(
+        &m113,
+        &[
+            "--terrain-file",
+            bad.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_rejected("a bad terrain file", &refused, &["bad.csv:3", "oops"]);
+    assert!(!out.join("all.csv").exists(), "nothing is run");
 }
