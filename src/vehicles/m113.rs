@@ -115,3 +115,36 @@ crate::model! {
         drive { proportional: 3000.0, integral: 6000.0, max_torque: 2e4 },
     }
 }
+
+/// The driveline's efficiency assumed for the powertrain (the figures give
+/// none): a mechanical gearbox and final drive lose some 10–20 % of the
+/// engine's power.
+pub const DRIVELINE_EFFICIENCY: f64 = 0.85;
+
+/// The M113's engine and driveline as one side's sprocket sees them
+/// (`shared/spec/mobility.md` §4, from Chrono's
+/// `M113_EngineSimpleMap.cpp`, `M113_AutomaticTransmissionSimpleMap.cpp`
+/// and `M113_DrivelineBDS.cpp`): the full-load torque map of the Detroit
+/// Diesel 6V53 (450 lb·ft at 500–1000 rpm, falling to 380 at 3000 and
+/// cut off to −100 at 3200 rpm), the four forward gears 0.240, 0.427,
+/// 0.685, 0.962 times the conical gear's 0.5, shifted ideally, and half
+/// the engine's power, after [`DRIVELINE_EFFICIENCY`], for this side.
+pub fn powertrain() -> trackgen::vehicle::Powertrain {
+    const LB_FT: f64 = 1.355_817_948_331_400_4; // N m
+    const RPM: f64 = std::f64::consts::PI / 30.0; // rad/s
+    let map = [
+        (500.0, 450.0),
+        (1000.0, 450.0),
+        (1500.0, 445.0),
+        (2000.0, 435.0),
+        (2500.0, 410.0),
+        (2800.0, 395.0),
+        (3000.0, 380.0),
+        (3200.0, -100.0),
+    ];
+    trackgen::vehicle::Powertrain::Engine {
+        map: map.iter().map(|&(n, t)| (n * RPM, t * LB_FT)).collect(),
+        ratios: [0.240, 0.427, 0.685, 0.962].map(|r| r * 0.5).to_vec(),
+        fraction: DRIVELINE_EFFICIENCY * 0.5,
+    }
+}

@@ -162,3 +162,35 @@ crate::model! {
         drive { proportional: 4000.0, integral: 8000.0, max_torque: 7026.0 },
     }
 }
+
+/// The driveline's efficiency assumed for the powertrain, as the M113's
+/// ([`m113::DRIVELINE_EFFICIENCY`](super::m113::DRIVELINE_EFFICIENCY)):
+/// the figures give none.
+pub const DRIVELINE_EFFICIENCY: f64 = super::m113::DRIVELINE_EFFICIENCY;
+
+/// The Marder's engine and driveline as one side's sprocket sees them
+/// (`shared/spec/marder.md`, "Powertrain, driveline, brakes", from
+/// Chrono's `Marder_EngineSimpleMap.cpp` and
+/// `Marder_AutomaticTransmissionSimpleMap.cpp`): the MTU MB 833's
+/// full-load torque map (700 N m at 702 rpm, 2702 at 1499, 2154 at 2323,
+/// cut off to −1000 N m at 2450 rpm), the six forward gears 0.1708 to
+/// 1.5361 (no final drive: the simple driveline splits the driveshaft's
+/// torque evenly), shifted ideally, and half the engine's power, after
+/// [`DRIVELINE_EFFICIENCY`], for this side.
+pub fn powertrain() -> trackgen::vehicle::Powertrain {
+    const RPM: f64 = std::f64::consts::PI / 30.0; // rad/s
+    let map = [
+        (702.0, 700.0),
+        (1099.0, 2044.0),
+        (1300.0, 2545.0),
+        (1499.0, 2702.0),
+        (2004.0, 2472.0),
+        (2323.0, 2154.0),
+        (2450.0, -1000.0),
+    ];
+    trackgen::vehicle::Powertrain::Engine {
+        map: map.iter().map(|&(n, t)| (n * RPM, t)).collect(),
+        ratios: vec![0.1708, 0.2791, 0.4218, 0.6223, 1.0173, 1.5361],
+        fraction: DRIVELINE_EFFICIENCY * 0.5,
+    }
+}

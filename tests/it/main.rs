@@ -31,6 +31,7 @@ mod modes;
 mod multiplier_residuals;
 mod partition_recovery;
 mod pinocchio;
+mod powertrain;
 mod private_paths;
 mod pure_evaluation;
 mod rosenbrock_w;

@@ -33,8 +33,9 @@ use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::multibody::PartKind;
 use trackgen::simulate::{Background, Output, RideSink, StreamFailure, simulate_into};
 use trackgen::system::Simulated;
-use trackgen::vehicle::{Vehicle, VehicleDynamics};
-use trackgen::vehicles::{m113::M113, marder::Marder};
+use trackgen::vehicle::{Powertrain, Vehicle, VehicleDynamics};
+use trackgen::vehicles::m113::{self, M113};
+use trackgen::vehicles::marder::{self, Marder};
 
 use cli::{Args, Ground, Start};
 use console::say;
@@ -51,8 +52,8 @@ fn main() {
 
 fn run(args: &Args) -> Result<(), Box<dyn Error>> {
     match args.vehicle {
-        cli::Vehicle::M113 => drive::<M113>(args),
-        cli::Vehicle::Marder => drive::<Marder>(args),
+        cli::Vehicle::M113 => drive::<M113>(args, m113::powertrain()),
+        cli::Vehicle::Marder => drive::<Marder>(args, marder::powertrain()),
     }
 }
 
@@ -88,9 +89,10 @@ fn about<V: Vehicle>() -> String {
     format!("{} (one side): {}", V::NAME, words.join(", "))
 }
 
-/// Assembles the vehicle `V` with the options given, runs it, streaming
-/// its outputs, and reports.
-fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
+/// Assembles the vehicle `V` with the options given (`engine`: its
+/// powertrain, used with `--engine`), runs it, streaming its outputs, and
+/// reports.
+fn drive<V: Vehicle>(args: &Args, engine: Powertrain) -> Result<(), Box<dyn Error>> {
     let course = args.course();
     let terrain = course.terrain()?;
     let assembling = Instant::now();
@@ -98,6 +100,9 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
         let mut config = V::declared_config(terrain.clone(), V::speed_drive(args.speed_profile()));
         if let Ground::Soil(soil) = args.terrain {
             config.soil = Some(soil.soil());
+        }
+        if args.engine {
+            config.powertrain = Some(engine.clone());
         }
         config
     };
@@ -195,6 +200,9 @@ fn drive<V: Vehicle>(args: &Args) -> Result<(), Box<dyn Error>> {
     let written = if started {
         let tolerance = args.books_tolerance(report.stats.implicit);
         report::print(&outputs.recorders.summary, &report, wall, tolerance);
+        if args.engine {
+            report::engine(&outputs.recorders.summary);
+        }
         report::ride(outputs.recorders.ride.as_ref(), args.output_every);
         let ground = scene::Ground {
             terrain: terrain.clone(),

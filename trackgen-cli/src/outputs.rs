@@ -14,13 +14,14 @@ use super::scene::{Ground, Scene};
 use super::{animation, plots};
 
 /// The columns of `<vehicle>.csv`.
-const MAIN_COLUMNS: [&str; 10] = [
+const MAIN_COLUMNS: [&str; 11] = [
     "x",
     "y",
     "pitch",
     "speed",
     "sprocket_torque",
     "sprocket_speed",
+    "engine_load",
     "tension",
     "ground_normal",
     "seat_ax",

@@ -46,6 +46,24 @@ pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
     );
 }
 
+/// With `--engine`: whether the engine, not the controller, set the speed
+/// (its load reached 1 at some time) and its load at the end.
+pub fn engine(summary: &Summary) {
+    let Some(load) = summary.get("engine_load") else {
+        return;
+    };
+    let set_by = if load.max >= 1.0 - 1e-9 {
+        "the engine at full load set the speed for part of the run"
+    } else {
+        "the controller set the speed throughout"
+    };
+    say!(
+        "engine: {set_by}; load at the end {:.2}, largest {:.2}",
+        load.last,
+        load.max
+    );
+}
+
 /// What `--integrator auto` ran, from its stiffness checks: `integrator:
 /// Bogacki-Shampine from 0.0 s, ROS34PW2 from 2.0 s (stiffest rate
 /// 9.1e3 /s, 3.4 × what Bogacki-Shampine's accuracy step allows); 6500 of

@@ -61,6 +61,7 @@ fn check_m113_outputs(dir: &Path, duration: f64) {
             "speed",
             "sprocket_torque",
             "sprocket_speed",
+            "engine_load",
             "tension",
             "ground_normal",
             "seat_ax",
@@ -292,6 +293,50 @@ fn m113_takes_a_dip_and_a_step_in_speed() {
         "torque at t = 0 with a step: {} N m",
         torque[0]
     );
+}
+
+/// `--engine`: the same step, now through the 6V53's map. At rest the
+/// engine gives less than the controller asks (its lowest gear's torque at
+/// the sprocket, `trackgen::vehicles::m113::powertrain().limit(0)`), so the
+/// first row holds the engine's torque at full load and the run says the
+/// engine set the speed.
+#[test]
+fn m113_with_its_engine_starts_on_the_engines_torque() {
+    let m113 = main_job();
+    let dir = scratch("m113_engine");
+    let out = run(
+        &m113,
+        &[
+            "--engine",
+            "--speed",
+            "10",
+            "--settle",
+            "0",
+            "--ramp",
+            "0",
+            "--duration",
+            "0.2",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("m113 --engine", &out);
+    let stdout = text(&out.stdout);
+    assert!(
+        stdout.contains("engine: the engine at full load set the speed"),
+        "{stdout}"
+    );
+    let csv = Csv::read(&dir.join("m113.csv"));
+    let (torque, load) = (csv.column("sprocket_torque"), csv.column("engine_load"));
+    let (want, _) = trackgen::vehicles::m113::powertrain().limit(0.0);
+    // Forward drive turns the sprocket clockwise: a negative torque.
+    assert!(
+        (torque[0] + want).abs() <= 1e-9 * want,
+        "torque at t = 0: {} N m, the engine's −{want} N m",
+        torque[0]
+    );
+    assert_eq!(load[0], 1.0, "engine load at t = 0");
 }
 
 /// A negative speed drives in reverse: the chassis ends moving backwards

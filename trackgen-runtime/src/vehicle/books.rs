@@ -26,6 +26,10 @@ pub(super) struct EnergyBooks {
     pub dissipation: f64,
     /// The drive's torque on the sprocket, N m.
     pub torque: f64,
+    /// The share of the powertrain's cap the drive uses
+    /// ([`TorqueCap::load`](super::drive::TorqueCap::load)): 1 at full
+    /// load, 0 braking or without a powertrain.
+    pub engine_load: f64,
     /// The rate of the drive controller's integral, rad/s.
     pub integral_rate: f64,
 }

@@ -4,7 +4,7 @@
 //! joints, wheels, shoes, teeth) is compiled in ([`Geometry`](super::Geometry)).
 
 use super::fitted::ContactLawSet;
-use super::{ConfigError, Drive};
+use super::{ConfigError, Drive, Powertrain, TorqueCap};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
 use crate::contact::soil::Soil;
@@ -42,6 +42,10 @@ pub struct VehicleConfig {
     pub arms: Vec<ArmSpring>,
     /// The sprocket drive.
     pub drive: Drive,
+    /// The engine and driveline behind the sprocket: the most torque the
+    /// drive may give at each sprocket speed while it drives. `None`
+    /// (default): the drive's own limit alone.
+    pub powertrain: Option<Powertrain>,
     /// A drawbar load, N: a horizontal force pulling the chassis back at
     /// its centroid (negative pushes it forward). Default 0. The energy it
     /// takes out is booked with the dissipated work.
@@ -74,6 +78,7 @@ impl VehicleConfig {
             rut: None,
             arms,
             drive,
+            powertrain: None,
             drawbar_pull: 0.0,
             tension_link: 1,
             closure: ClosureMethod::Declared,
@@ -87,6 +92,9 @@ impl VehicleConfig {
     pub fn check(&self) -> Result<(), ConfigError> {
         self.terrain.check()?;
         self.drive.check()?;
+        if let Some(powertrain) = &self.powertrain {
+            powertrain.check()?;
+        }
         let pair = |pair| move |source| ConfigError::Contact { pair, source };
         self.ground.check().map_err(pair("ground"))?;
         self.wheels.check().map_err(pair("wheels"))?;
@@ -106,6 +114,15 @@ impl VehicleConfig {
             });
         }
         Ok(())
+    }
+
+    /// The powertrain's cap on the drive at sprocket speed `omega`
+    /// (rad/s): none without a powertrain.
+    pub(super) fn torque_cap(&self, omega: f64) -> TorqueCap {
+        self.powertrain.as_ref().map_or(TorqueCap::NONE, |p| {
+            let (value, slope) = p.limit(omega.abs());
+            TorqueCap { value, slope }
+        })
     }
 
     /// The arms, checked to be one per arm of a chassis whose arms are at

@@ -1,4 +1,5 @@
-//! What turns the sprocket: a torque schedule or a speed controller.
+//! What turns the sprocket: a torque schedule or a speed controller,
+//! capped by the powertrain where it drives.
 
 use thiserror::Error;
 
@@ -53,27 +54,78 @@ pub enum Drive {
     },
 }
 
+/// The powertrain's cap on a driving torque at the sprocket's speed
+/// ([`Powertrain::limit`](super::Powertrain::limit)): a torque that turns
+/// the sprocket the way it turns (or starts it) is held to `value`, N m,
+/// whose slope with `|ω|` is `slope`, N m s/rad.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TorqueCap {
+    /// N m, ≥ 0 (∞: no powertrain).
+    pub value: f64,
+    /// N m s/rad.
+    pub slope: f64,
+}
+
+impl TorqueCap {
+    /// No powertrain: nothing caps the drive but its own limit.
+    pub const NONE: TorqueCap = TorqueCap {
+        value: f64::INFINITY,
+        slope: 0.0,
+    };
+
+    /// `torque` capped: held to `±value` if it drives the sprocket turning
+    /// at `omega` (the same sign, or the sprocket at rest); whether it was.
+    fn apply(self, torque: f64, omega: f64) -> (f64, bool) {
+        if drives(torque, omega) && torque.abs() > self.value {
+            (self.value.copysign(torque), true)
+        } else {
+            (torque, false)
+        }
+    }
+
+    /// How much of the cap `torque` uses at sprocket speed `omega`: its
+    /// size over the cap while it drives the sprocket (1 when capped), 0
+    /// while it brakes (the powertrain gives no braking torque) or without
+    /// a powertrain.
+    pub fn load(self, torque: f64, omega: f64) -> f64 {
+        if drives(torque, omega) && self.value.is_finite() && self.value > 0.0 {
+            (torque.abs() / self.value).min(1.0)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// Whether `torque` drives a sprocket turning at `omega`: turns it the way
+/// it already turns, or starts it.
+fn drives(torque: f64, omega: f64) -> bool {
+    torque * omega > 0.0 || (omega == 0.0 && torque != 0.0)
+}
+
 impl Drive {
     /// The torque (N m) at time `t` for sprocket speed `omega` (rad/s,
     /// relative to the chassis), pitch radius `radius` (m) and controller
-    /// integral `state` (rad), and the integral's rate.
+    /// integral `state` (rad), and the integral's rate, with no
+    /// powertrain.
     ///
     /// A NaN or infinite target speed or scheduled torque gives a NaN or
     /// unbounded torque here; [`checked_torque`](Self::checked_torque)
     /// refuses it.
     pub fn torque(&self, t: f64, omega: f64, radius: f64, state: f64) -> (f64, f64) {
-        self.respond(self.demand(t), omega, radius, state)
+        self.respond(self.demand(t), omega, radius, state, TorqueCap::NONE)
     }
 
-    /// [`torque`](Self::torque), refusing a target speed (a speed drive) or
-    /// a scheduled torque (a torque drive) that is NaN or infinite at `t`:
-    /// [`SimulationError::NonFinite`] naming it.
+    /// [`torque`](Self::torque) under the powertrain's `cap`, refusing a
+    /// target speed (a speed drive) or a scheduled torque (a torque drive)
+    /// that is NaN or infinite at `t`: [`SimulationError::NonFinite`]
+    /// naming it.
     pub fn checked_torque(
         &self,
         t: f64,
         omega: f64,
         radius: f64,
         state: f64,
+        cap: TorqueCap,
     ) -> Result<(f64, f64), SimulationError> {
         let demand = self.demand(t);
         if !demand.is_finite() {
@@ -83,7 +135,7 @@ impl Drive {
             };
             return Err(SimulationError::NonFinite { t, what });
         }
-        Ok(self.respond(demand, omega, radius, state))
+        Ok(self.respond(demand, omega, radius, state, cap))
     }
 
     /// Why the settings of the drive make no controller: gains that are NaN
@@ -111,35 +163,61 @@ impl Drive {
         Ok(())
     }
 
-    /// The first derivatives of [`torque`](Self::torque)'s torque and
-    /// integral rate with respect to the sprocket's speed `ω` and the
-    /// controller's integral `s`, at the same arguments: a speed drive's
-    /// `∂τ/∂ω = −P`, `∂τ/∂s = I`, `∂ṡ/∂ω = −1`, zero where the torque is
-    /// at its limit (the integral then held); zero for a torque schedule
-    /// and a free sprocket.
-    pub fn slopes(&self, t: f64, omega: f64, radius: f64, state: f64) -> DriveSlopes {
-        let Drive::Speed {
-            proportional,
-            integral,
-            ..
-        } = self
-        else {
-            return DriveSlopes::default();
-        };
-        let demand = self.demand(t);
-        let (torque, _) = self.respond(demand, omega, radius, state);
-        let error = -demand / radius - omega;
-        let wanted = proportional * error + integral * state;
-        let limited = torque != wanted;
-        // As `respond` holds the integral.
-        let held = limited && wanted.signum() == error.signum();
-        DriveSlopes {
-            torque: if limited {
-                [0.0, 0.0]
-            } else {
-                [-proportional, *integral]
-            },
-            rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
+    /// The first derivatives of [`checked_torque`](Self::checked_torque)'s
+    /// torque and integral rate with respect to the sprocket's speed `ω`
+    /// and the controller's integral `s`, at the same arguments: a speed
+    /// drive's `∂τ/∂ω = −P`, `∂τ/∂s = I`, `∂ṡ/∂ω = −1`; zero where the
+    /// torque is at its own limit (the integral then held), the cap's
+    /// slope `∂τ/∂ω = sign(τ) sign(ω) ∂cap/∂|ω|` where the powertrain caps
+    /// it; a torque schedule's only where capped; zero for a free
+    /// sprocket.
+    pub fn slopes(
+        &self,
+        t: f64,
+        omega: f64,
+        radius: f64,
+        state: f64,
+        cap: TorqueCap,
+    ) -> DriveSlopes {
+        let capped_slope = |torque: f64| cap.slope * torque.signum() * omega.signum();
+        match self {
+            Drive::Free => DriveSlopes::default(),
+            Drive::Torque(f) => {
+                let (_, capped) = cap.apply(f(t), omega);
+                DriveSlopes {
+                    torque: if capped {
+                        [capped_slope(f(t)), 0.0]
+                    } else {
+                        [0.0, 0.0]
+                    },
+                    rate: [0.0, 0.0],
+                }
+            }
+            Drive::Speed {
+                proportional,
+                integral,
+                max_torque,
+                ..
+            } => {
+                let demand = self.demand(t);
+                let error = -demand / radius - omega;
+                let wanted = proportional * error + integral * state;
+                let (torque, _) = self.respond(demand, omega, radius, state, cap);
+                let own = torque.abs() >= *max_torque && wanted.abs() > *max_torque;
+                let limited = torque != wanted;
+                // As `respond` holds the integral.
+                let held = limited && wanted.signum() == error.signum();
+                DriveSlopes {
+                    torque: if !limited {
+                        [-proportional, *integral]
+                    } else if own {
+                        [0.0, 0.0]
+                    } else {
+                        [capped_slope(torque), 0.0]
+                    },
+                    rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
+                }
+            }
         }
     }
 
@@ -152,10 +230,17 @@ impl Drive {
         }
     }
 
-    fn respond(&self, demand: f64, omega: f64, radius: f64, state: f64) -> (f64, f64) {
+    fn respond(
+        &self,
+        demand: f64,
+        omega: f64,
+        radius: f64,
+        state: f64,
+        cap: TorqueCap,
+    ) -> (f64, f64) {
         match self {
             Drive::Free => (0.0, 0.0),
-            Drive::Torque(_) => (demand, 0.0),
+            Drive::Torque(_) => (cap.apply(demand, omega).0, 0.0),
             Drive::Speed {
                 proportional,
                 integral,
@@ -174,6 +259,7 @@ impl Drive {
                 } else {
                     wanted
                 };
+                let (torque, _) = cap.apply(torque, omega);
                 let saturated = wanted != torque && wanted.signum() == error.signum();
                 (torque, if saturated { 0.0 } else { error })
             }

@@ -3,7 +3,7 @@
 
 use thiserror::Error;
 
-use super::DriveError;
+use super::{DriveError, PowertrainError};
 use crate::assembly::AssemblyError;
 use crate::closure::ClosureError;
 use crate::contact::TerrainError;
@@ -29,6 +29,9 @@ pub enum ConfigError {
     /// The drive's settings make no controller.
     #[error(transparent)]
     Drive(#[from] DriveError),
+    /// The powertrain's figures make no drive.
+    #[error("powertrain: {0}")]
+    Powertrain(#[from] PowertrainError),
     /// The arms configured are not one per arm of the chassis.
     #[error(
         "the configured arms act on bodies {configured:?}; the chassis has arms at bodies {declared:?}"

@@ -222,12 +222,13 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += config.drawbar_pull * qdc[0];
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
-        let (torque, rate) = config.drive.checked_torque(
-            t,
-            sprocket.omega(qdc),
-            sprocket.rolling_radius,
-            integral,
-        )?;
+        let omega = sprocket.omega(qdc);
+        let cap = config.torque_cap(omega);
+        let (torque, rate) =
+            config
+                .drive
+                .checked_torque(t, omega, sprocket.rolling_radius, integral, cap)?;
+        books.engine_load = cap.load(torque, omega);
         chassis_loads[sprocket.body].moment += torque;
         chassis_loads[0].moment -= torque;
         books.torque = torque;

@@ -25,13 +25,14 @@ mod implicit;
 mod jacobian;
 mod layout;
 mod linearisation;
+mod powertrain;
 mod record;
 mod system;
 mod workspace;
 
 pub use config::VehicleConfig;
 pub use declared::{Vehicle, VehicleDynamics, build};
-pub use drive::{Drive, DriveError, DriveSlopes};
+pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap};
 pub use error::{BuildError, ConfigError};
 pub use fitted::{
     BEARING_BAND, ContactFit, ContactLawSet, DeclaredContact, DeclaredPair, GROUND_DAMPING_RATIO,
@@ -40,6 +41,7 @@ pub use fitted::{
 };
 pub use geometry::Geometry;
 pub use layout::StateLayout;
+pub use powertrain::{Powertrain, PowertrainError};
 pub use record::VehicleRecord;
 pub use system::VehicleSystem;
 

@@ -29,6 +29,11 @@ record! {
         track_speed,
         /// The drive's torque on the sprocket, N m.
         sprocket_torque,
+        /// The drive's torque over the most the powertrain gives at the
+        /// sprocket's speed ([`Powertrain::limit`](super::Powertrain::limit)):
+        /// 1 at full load, where the engine, not the controller, sets the
+        /// speed; 0 without a powertrain.
+        engine_load,
         /// Tension in the joint after the configured link, N.
         tension,
         /// Tension in the span leaving the sprocket's seated run on the

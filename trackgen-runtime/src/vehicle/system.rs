@@ -308,10 +308,12 @@ where
         integral: f64,
     ) -> (Option<(usize, super::DriveSlopes)>, Option<f64>) {
         let drive = self.sprocket.map(|s| {
+            let omega = s.omega(qdc);
+            let cap = self.config.torque_cap(omega);
             let slopes = self
                 .config
                 .drive
-                .slopes(t, s.omega(qdc), s.rolling_radius, integral);
+                .slopes(t, omega, s.rolling_radius, integral, cap);
             (s.body, slopes)
         });
         let relaxation = match (&self.soil, self.config.ground.friction) {
@@ -830,6 +832,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
                 .sprocket
                 .map_or(0.0, |s| -s.rolling_radius * s.omega(&qdc)),
             sprocket_torque: books.torque,
+            engine_load: books.engine_load,
             tension: tension(Some(self.config.tension_link - 1)).unwrap_or(f64::NAN),
             tension_tight: tight.unwrap_or(f64::NAN),
             tension_slack: slack.unwrap_or(f64::NAN),

@@ -1,0 +1,205 @@
+//! What the engine can give at the sprocket: the torque a drive may ask
+//! for, as a function of the sprocket's speed.
+
+use thiserror::Error;
+
+/// The engine and the driveline behind a sprocket, as the largest torque
+/// they give it at each sprocket speed ([`limit`](Self::limit)). A drive
+/// asks for what it wants; while the torque drives the sprocket (it turns
+/// the sprocket the way it already turns, or starts it), the powertrain
+/// caps it there. Braking torque is the brake's and the controller's.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Powertrain {
+    /// A power and a torque limit at the sprocket:
+    /// `|τ| ≤ min(τ_max, P / |ω|)`. Power and torque are what reaches this
+    /// sprocket (its side's share of the engine's, after the driveline's
+    /// losses).
+    Power {
+        /// W, more than 0.
+        power: f64,
+        /// N m, more than 0.
+        max_torque: f64,
+    },
+    /// An engine's full-load torque map through a gearbox whose gears are
+    /// chosen ideally (at each speed the gear giving the most torque), as
+    /// a mobility model's tractive-effort envelope does: at sprocket speed
+    /// `ω`, `max_g fraction · T(ω / r_g) / r_g` over the gears `r_g`
+    /// whose engine speed `ω / r_g` is on the map. Below the map's first
+    /// speed (a start, a clutch or converter slipping) the lowest gear
+    /// gives the map's first torque; beyond its last the engine gives
+    /// nothing.
+    Engine {
+        /// Full-load engine torque, N m, against engine speed, rad/s:
+        /// speeds increasing, at least two points; torque linear between
+        /// them (negative values, a cut-off's, count as no drive).
+        map: Vec<(f64, f64)>,
+        /// The forward gears' overall ratios, sprocket speed over engine
+        /// speed (the final drive included), each more than 0.
+        ratios: Vec<f64>,
+        /// The fraction of the engine's torque times speed that reaches
+        /// this sprocket: the driveline's efficiency times this side's
+        /// share (0.5 of a two-track vehicle's), in (0, 1].
+        fraction: f64,
+    },
+}
+
+/// A powertrain that gives no drive.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum PowertrainError {
+    /// A power or torque limit not finite and positive.
+    #[error("the powertrain's {what} must be finite and more than 0, got {value}")]
+    Limit {
+        /// Which: `power` or `max_torque`.
+        what: &'static str,
+        /// What was given.
+        value: f64,
+    },
+    /// A torque map of fewer than two points, or speeds not increasing, or
+    /// a value not finite.
+    #[error(
+        "the engine's torque map needs two or more finite points of increasing speed (at point {point})"
+    )]
+    Map {
+        /// The offending point (0-based).
+        point: usize,
+    },
+    /// No gears, or a ratio not finite and positive.
+    #[error("the gearbox needs ratios finite and more than 0 (gear {gear}: {ratio})")]
+    Ratio {
+        /// The gear (0-based).
+        gear: usize,
+        /// Its ratio.
+        ratio: f64,
+    },
+    /// A fraction outside (0, 1].
+    #[error("the driveline's fraction must be in (0, 1], got {0}")]
+    Fraction(f64),
+}
+
+impl Powertrain {
+    /// Every figure in its range.
+    pub fn check(&self) -> Result<(), PowertrainError> {
+        match self {
+            Powertrain::Power { power, max_torque } => {
+                for (what, value) in [("power", *power), ("max_torque", *max_torque)] {
+                    if !(value.is_finite() && value > 0.0) {
+                        return Err(PowertrainError::Limit { what, value });
+                    }
+                }
+                Ok(())
+            }
+            Powertrain::Engine {
+                map,
+                ratios,
+                fraction,
+            } => {
+                if map.len() < 2 {
+                    return Err(PowertrainError::Map { point: map.len() });
+                }
+                for (i, &(speed, torque)) in map.iter().enumerate() {
+                    let increasing = i == 0 || speed > map[i - 1].0;
+                    if !(speed.is_finite() && torque.is_finite() && increasing && speed >= 0.0) {
+                        return Err(PowertrainError::Map { point: i });
+                    }
+                }
+                if ratios.is_empty() {
+                    return Err(PowertrainError::Ratio {
+                        gear: 0,
+                        ratio: f64::NAN,
+                    });
+                }
+                for (gear, &ratio) in ratios.iter().enumerate() {
+                    if !(ratio.is_finite() && ratio > 0.0) {
+                        return Err(PowertrainError::Ratio { gear, ratio });
+                    }
+                }
+                if !(*fraction > 0.0 && *fraction <= 1.0) {
+                    return Err(PowertrainError::Fraction(*fraction));
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// The largest driving torque at sprocket speed `|ω|` (`speed`, rad/s,
+    /// ≥ 0), N m, and its slope with `|ω|`, N m s/rad.
+    pub fn limit(&self, speed: f64) -> (f64, f64) {
+        match self {
+            Powertrain::Power { power, max_torque } => {
+                if speed * max_torque > *power {
+                    (power / speed, -power / (speed * speed))
+                } else {
+                    (*max_torque, 0.0)
+                }
+            }
+            Powertrain::Engine {
+                map,
+                ratios,
+                fraction,
+            } => {
+                let mut best = (0.0, 0.0);
+                for &ratio in ratios {
+                    let engine = speed / ratio;
+                    let (torque, slope) = map_at(map, engine);
+                    let (torque, slope) = (
+                        fraction * torque / ratio,
+                        fraction * slope / (ratio * ratio),
+                    );
+                    if torque > best.0 {
+                        best = (torque, slope);
+                    }
+                }
+                best
+            }
+        }
+    }
+
+    /// The most power it gives the sprocket, W: `P`, or the map's largest
+    /// `fraction · T ω` (at one of its points: between two the product of
+    /// linear pieces is checked at its vertex too).
+    pub fn max_power(&self) -> f64 {
+        match self {
+            Powertrain::Power { power, .. } => *power,
+            Powertrain::Engine { map, fraction, .. } => {
+                let mut best: f64 = 0.0;
+                for w in map.windows(2) {
+                    let ((w0, t0), (w1, t1)) = (w[0], w[1]);
+                    best = best.max(w0 * t0).max(w1 * t1);
+                    // T ω with T linear in ω peaks where d(Tω)/dω = 0.
+                    let slope = (t1 - t0) / (w1 - w0);
+                    if slope < 0.0 {
+                        let peak = (slope * w0 - t0) / (2.0 * slope);
+                        if (w0..=w1).contains(&peak) {
+                            best = best.max(peak * (t0 + slope * (peak - w0)));
+                        }
+                    }
+                }
+                fraction * best
+            }
+        }
+    }
+}
+
+/// The map's torque at engine speed `w` and its slope: linear between the
+/// points, the first point's torque below the first speed (slope 0), none
+/// beyond the last; a negative torque (a cut-off's) is none.
+fn map_at(map: &[(f64, f64)], w: f64) -> (f64, f64) {
+    let (Some(&first), Some(&last)) = (map.first(), map.last()) else {
+        return (0.0, 0.0);
+    };
+    if w <= first.0 {
+        return (first.1.max(0.0), 0.0);
+    }
+    if w > last.0 {
+        return (0.0, 0.0);
+    }
+    let i = map.partition_point(|p| p.0 < w).max(1);
+    let ((w0, t0), (w1, t1)) = (map[i - 1], map[i]);
+    let slope = (t1 - t0) / (w1 - w0);
+    let torque = t0 + slope * (w - w0);
+    if torque > 0.0 {
+        (torque, slope)
+    } else {
+        (0.0, 0.0)
+    }
+}
