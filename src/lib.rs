@@ -70,8 +70,8 @@ pub mod vehicles;
 pub use trackgen_macros::model;
 
 pub use trackgen_runtime::{
-    analysis, assembly, closure, contact, dynamics, integrate, laws, multibody, planar, simulate,
-    system, trig, vehicle,
+    analysis, assembly, closure, contact, dynamics, integrate, laws, mobility, multibody, planar,
+    ride, simulate, system, trig, vehicle,
 };
 
 #[cfg(feature = "oracle")]
@@ -107,6 +107,10 @@ mod guide {
     struct Equilibrium;
     #[doc = include_str!("../book/src/soil.md")]
     struct Soil;
+    #[doc = include_str!("../book/src/terrain.md")]
+    struct Terrain;
+    #[doc = include_str!("../book/src/mobility.md")]
+    struct Mobility;
     #[doc = include_str!("../book/src/formulation.md")]
     struct Formulation;
     #[doc = include_str!("../book/src/architecture.md")]

@@ -775,3 +775,82 @@ fn stiff_vehicle_runs_the_implicit_method_where_stiffness_holds_the_step() {
     assert!(explicit >= 5.0 * implicit, "{stdout}");
     assert!(auto <= 1.2 * implicit, "{stdout}");
 }
+
+/// `mobility --quick --events ride,half-round --json`: one result per
+/// event, each a JSON line with the fields the issue names (SI units), a
+/// CSV per event, the trials, the curves and the report written; the
+/// ride's limit is a speed the search ran between 1 m/s and the top speed
+/// (its trials bracket it: the largest passing trial is below 6 W and
+/// the smallest failing one above); an unknown event is refused naming
+/// the events.
+#[test]
+fn mobility_answers_its_events_and_refuses_an_unknown_one() {
+    let mobility = example("mobility");
+    let dir = scratch("mobility");
+    let out = run(
+        &mobility,
+        &[
+            "--quick",
+            "--events",
+            "ride,half-round",
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("mobility --quick", &out);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let results: Vec<serde_json::Value> = stdout
+        .lines()
+        .filter(|l| l.starts_with('{'))
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
+        .collect();
+    assert_eq!(results.len(), 2, "{stdout}");
+    for (result, event) in results.iter().zip(["ride", "half-round"]) {
+        assert_eq!(result["event"], event);
+        assert_eq!(result["unit"], "m/s");
+        assert!(result["runs"].as_u64().unwrap() >= 2, "{result}");
+        assert_eq!(result["parameter"]["unit"], "m");
+    }
+    let ride = &results[0];
+    let speed = ride["value"].as_f64().expect("a ride-limiting speed");
+    assert!(speed > 1.0 && speed < 20.0, "{speed} m/s");
+    let trials = std::fs::read_to_string(dir.join("trials.csv")).unwrap();
+    let ride_trials: Vec<(f64, f64, bool)> = trials
+        .lines()
+        .skip(1)
+        .filter(|l| l.starts_with("ride,"))
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            (f[4].parse().unwrap(), f[5].parse().unwrap(), f[6] == "true")
+        })
+        .collect();
+    let passed = ride_trials
+        .iter()
+        .filter(|t| t.2)
+        .map(|t| t.0)
+        .fold(0.0, f64::max);
+    let failed = ride_trials
+        .iter()
+        .filter(|t| !t.2)
+        .map(|t| t.0)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        passed < speed && speed < failed,
+        "{passed} < {speed} < {failed}"
+    );
+    for t in &ride_trials {
+        assert_eq!(t.2, t.1 < 6.0, "trial {t:?}: passes below 6 W");
+    }
+    for file in ["ride.csv", "half-round.csv", "summary.svg", "report.html"] {
+        let len = std::fs::metadata(dir.join(file))
+            .map(|m| m.len())
+            .unwrap_or(0);
+        assert!(len > 100, "{file}: {len} bytes");
+    }
+    let refused = run(&mobility, &["--events", "ride,soil"], &dir);
+    assert!(!refused.status.success());
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(stderr.contains("unknown event `soil`"), "{stderr}");
+}

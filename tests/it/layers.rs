@@ -105,6 +105,10 @@ pub const RUNTIME: Graph = &[
             "simulate",
         ],
     ),
+    (
+        "mobility",
+        &["contact", "integrate", "system", "vehicle", "simulate"],
+    ),
     // `__private`: the paths generated code names (lib.rs).
     (
         "__private",

@@ -27,6 +27,7 @@ mod large_tracks;
 mod layers;
 mod linear_time;
 mod mass_matrix_properties;
+mod mobility;
 mod modes;
 mod multiplier_residuals;
 mod partition_recovery;

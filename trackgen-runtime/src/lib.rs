@@ -39,7 +39,10 @@
 //!    feeds both the exact Jacobian and ROS34PW2's `W`;
 //! 9. drivers: [`simulate`] (runs, results, sinks: CSV, Arrow IPC, running
 //!    summaries; a failed run keeps what it computed) and [`analysis`]
-//!    (the state Jacobian, equilibrium, modes, sensitivities).
+//!    (the state Jacobian, equilibrium, modes, sensitivities);
+//! 10. [`mobility`]: the mobility engineer's events over any declared
+//!     vehicle (ride over random terrain, half-round, step, gap, ditch,
+//!     barrier, grade), each a limit found by bisection over runs.
 //!
 //! With the `oracle` feature, `reference` (the textbook route: dense `H`
 //! of the paper's eq. (6) and (11), `Hᵀ M H`, `Hᵀ (Q − M γ)`), the generic
@@ -76,6 +79,7 @@ pub mod system;
 pub mod vehicle;
 // 9. drivers
 pub mod analysis;
+pub mod mobility;
 pub mod simulate;
 
 /// The kernels and types that generated code names by absolute path, and

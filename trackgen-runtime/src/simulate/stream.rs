@@ -25,6 +25,9 @@ pub struct RunReport {
     /// The stiffness checks that chose the method, with
     /// [`Integrator::Auto`](crate::integrate::Integrator::Auto).
     pub checks: Vec<Check>,
+    /// The sink ended the run before its end time
+    /// ([`SinkError::Done`]): `last_time` is when.
+    pub ended_early: bool,
 }
 
 /// A streamed run that stopped early. The sink was finished: every row
@@ -68,7 +71,8 @@ impl std::error::Error for StreamFailure {
 ///
 /// The sink is finished in every case, so on failure the rows before it
 /// are written out; the error carries the time and the cause. A sink's
-/// error stops the run.
+/// error stops the run; [`SinkError::Done`] stops it as a success (the
+/// report's `ended_early`).
 ///
 /// ```no_run
 /// # use trackgen_runtime::simulate::*;
@@ -111,12 +115,21 @@ pub fn simulate_into(
         progress,
     );
     let finished = counted.inner.finish();
+    let ended_early = matches!(
+        outcome,
+        Err(RunError::Sink {
+            source: SinkError::Done,
+            ..
+        })
+    );
+    let outcome = if ended_early { Ok(()) } else { outcome };
     let report = RunReport {
         rows: counted.rows,
         last_time: counted.last_time,
         switches: counted.switches,
         stats,
         checks,
+        ended_early,
     };
     match (outcome, finished) {
         (Ok(()), Ok(())) => Ok(report),
@@ -150,10 +163,13 @@ impl Sink for Counted<'_> {
     }
 
     fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
-        self.inner.row(t, values)?;
-        self.rows += 1;
-        self.last_time = Some(t);
-        Ok(())
+        let taken = self.inner.row(t, values);
+        // A sink that ends the run has taken its last row.
+        if matches!(taken, Ok(()) | Err(SinkError::Done)) {
+            self.rows += 1;
+            self.last_time = Some(t);
+        }
+        taken
     }
 
     fn finish(&mut self) -> Result<(), SinkError> {

@@ -126,6 +126,13 @@ pub enum SinkError {
     /// wrong length, `begin` called twice with different columns.
     #[error("{0}")]
     Columns(String),
+    /// Not a failure: the sink has what it was run for (a ride measured
+    /// over its stretch, a vehicle past its goal), and the run ends at
+    /// this row ([`simulate_into`](super::simulate_into) returns the run's
+    /// report, [`RunReport::ended_early`](super::RunReport::ended_early)
+    /// set).
+    #[error("the sink asked the run to end")]
+    Done,
 }
 
 fn describe(path: &Option<PathBuf>) -> String {

@@ -40,6 +40,15 @@ pub struct RideIntervalError {
     pub max: f64,
 }
 
+/// A stretch of ground to measure over: the hull's `x` from `x0` to `x1`,
+/// m, and the index of the `x` column once the run has begun.
+#[derive(Debug, Clone, Copy)]
+struct Stretch {
+    column: Option<usize>,
+    x0: f64,
+    x1: f64,
+}
+
 /// A sink that runs the seat's recorded acceleration through the ride
 /// criteria as the rows arrive: the vertical column (`seat_az` by
 /// default) through the absorbed power, `W_k` and the peak, the
@@ -52,6 +61,8 @@ pub struct RideIntervalError {
 pub struct RideSink {
     columns: [String; 2],
     at: Option<[usize; 2]>,
+    stretch: Option<Stretch>,
+    ended: bool,
     dt: f64,
     from: f64,
     last: Option<f64>,
@@ -92,6 +103,8 @@ impl RideSink {
         Ok(RideSink {
             columns: [vertical.to_string(), longitudinal.to_string()],
             at: None,
+            stretch: None,
+            ended: false,
             dt,
             from,
             last: None,
@@ -106,6 +119,28 @@ impl RideSink {
     /// When the measurement starts, s.
     pub fn from(&self) -> f64 {
         self.from
+    }
+
+    /// Measures over a stretch of ground rather than from a time on: from
+    /// the first row (at or after [`from`](Self::from)) whose hull
+    /// position, the column `x` (m), has reached `x0`, to the last row
+    /// before it passes `x1`. A ride course is measured over its rough
+    /// stretch whatever speed the vehicle actually reaches.
+    pub fn over_stretch(self, x0: f64, x1: f64) -> RideSink {
+        RideSink {
+            stretch: Some(Stretch {
+                column: None,
+                x0,
+                x1,
+            }),
+            ..self
+        }
+    }
+
+    /// Whether the measurement has ended: the hull has passed the
+    /// stretch's end ([`over_stretch`](Self::over_stretch)).
+    pub fn ended(&self) -> bool {
+        self.ended
     }
 
     /// The figures over the rows measured so far (NaN, and no samples,
@@ -138,6 +173,9 @@ impl Sink for RideSink {
             })
         };
         self.at = Some([find(&self.columns[0])?, find(&self.columns[1])?]);
+        if let Some(stretch) = &mut self.stretch {
+            stretch.column = Some(find("x")?);
+        }
         Ok(())
     }
 
@@ -164,7 +202,24 @@ impl Sink for RideSink {
                 vertical.max(longitudinal) + 1,
             ));
         };
-        if !self.measuring && t >= self.from {
+        let (reached, passed) = match &self.stretch {
+            Some(Stretch {
+                column: Some(c),
+                x0,
+                x1,
+            }) => {
+                let x = values.get(*c).copied().unwrap_or(f64::NAN);
+                (x >= *x0, x > *x1)
+            }
+            _ => (true, false),
+        };
+        if passed && self.measuring {
+            self.ended = true;
+        }
+        if self.ended {
+            return Ok(());
+        }
+        if !self.measuring && t >= self.from && reached {
             self.measuring = true;
             self.absorbed.start_measuring();
             self.wk.start_measuring();

@@ -1,0 +1,567 @@
+//! The mobility engineer's standard events for a declared vehicle.
+//!
+//! ```text
+//! cargo run --release --example mobility -- --vehicle m113 [--out FOLDER]
+//!     [--events ride,half-round,step,gap,ditch,barrier,grade] [--json] [--quick]
+//! ```
+//!
+//! Runs the events of `trackgen::mobility` (each a limit found by
+//! bisection over runs, the vehicle driven through its engine) in parallel
+//! on every core, and writes to `out/mobility/<vehicle>/` (or `--out`):
+//! `<event>.csv` (one row per result: the parameter, the limit, its unit
+//! and the runs it took), `trials.csv` (every run), `summary.svg` (the
+//! curves: ride-limiting speed against roughness, half-round speed against
+//! height, speed against grade) and `report.html` (the tables and the
+//! curves in one file). It prints a summary table; with `--json`, one
+//! JSON object per result per line (`event`, `parameter`, `value`,
+//! `relation`, `unit`, `runs`; SI units: roughness and heights in m,
+//! speeds in m/s, grades as rise over run). `--quick`: one parameter per
+//! event at loose search tolerances, a smoke test.
+//!
+//! A run that fails is reported as a failure (the event, its parameter,
+//! the time and the cause) and the other events still run; the command
+//! then exits with status 1.
+
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::Mutex;
+use std::time::Instant;
+
+use clap::{Parser, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
+use plotters::prelude::*;
+use rayon::prelude::*;
+use trackgen::mobility::search::Search;
+use trackgen::mobility::{EventError, EventSettings, Footprint, grade, obstacle, ride};
+use trackgen::vehicle::{Powertrain, Vehicle};
+use trackgen::vehicles::{m113, marder};
+
+#[derive(Parser, Debug)]
+#[command(about = "The standard pitch-plane mobility events for a declared vehicle")]
+struct Args {
+    /// The vehicle.
+    #[arg(long, value_enum, default_value_t = Which::M113)]
+    vehicle: Which,
+    /// The events, comma-separated: ride, half-round, step, gap, ditch,
+    /// barrier, grade (default: all).
+    #[arg(long, value_delimiter = ',', value_parser = event_name)]
+    events: Option<Vec<&'static str>>,
+    /// Where to write, default out/mobility/<vehicle>.
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// One JSON object per result per line on stdout.
+    #[arg(long)]
+    json: bool,
+    /// One parameter per event at loose tolerances: a smoke test.
+    #[arg(long)]
+    quick: bool,
+}
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+enum Which {
+    M113,
+    Marder,
+}
+
+/// Every event, in the order they are reported.
+const EVENTS: [&str; 7] = [
+    "ride",
+    "half-round",
+    "step",
+    "gap",
+    "ditch",
+    "barrier",
+    "grade",
+];
+
+fn event_name(s: &str) -> Result<&'static str, String> {
+    EVENTS.iter().find(|e| **e == s).copied().ok_or_else(|| {
+        format!(
+            "unknown event `{s}`: the events are {} (soil is not an event yet)",
+            EVENTS.join(", ")
+        )
+    })
+}
+
+/// One answer: a limit, or a quantity at a parameter.
+#[derive(Debug, Clone)]
+struct Row {
+    event: &'static str,
+    /// What was held fixed, with its unit (`roughness 0.0254 m`), or
+    /// empty.
+    parameter: Option<(&'static str, f64, &'static str)>,
+    /// What was found and its unit.
+    quantity: &'static str,
+    value: f64,
+    relation: &'static str,
+    unit: &'static str,
+    runs: usize,
+    wall: f64,
+    search: Option<Search>,
+}
+
+/// One piece of work: an event at one parameter.
+type Task<'a> = Box<dyn Fn() -> Result<Row, EventError> + Send + Sync + 'a>;
+
+fn limit_row(
+    event: &'static str,
+    parameter: Option<(&'static str, f64, &'static str)>,
+    quantity: &'static str,
+    unit: &'static str,
+    search: Search,
+    wall: f64,
+) -> Row {
+    Row {
+        event,
+        parameter,
+        quantity,
+        value: search.limit.value(),
+        relation: search.limit.relation(),
+        unit,
+        runs: search.runs(),
+        wall,
+        search: Some(search),
+    }
+}
+
+fn tasks<'a, V: Vehicle>(
+    settings: &'a EventSettings,
+    footprint: &'a Footprint,
+    events: &[&'static str],
+    quick: bool,
+) -> Vec<Task<'a>> {
+    const INCH: f64 = 0.0254;
+    let roughnesses: &[f64] = if quick {
+        &[1.0]
+    } else {
+        &[0.5, 1.0, 1.5, 2.0, 3.0, 4.0]
+    };
+    let heights: &[f64] = if quick {
+        &[8.0]
+    } else {
+        &[4.0, 6.0, 8.0, 10.0, 12.0]
+    };
+    let grades: &[f64] = if quick {
+        &[0.1]
+    } else {
+        &[0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
+    };
+    let mut out: Vec<Task<'a>> = Vec::new();
+    let timed = |f: &dyn Fn() -> Result<Search, EventError>| {
+        let start = Instant::now();
+        f().map(|s| (s, start.elapsed().as_secs_f64()))
+    };
+    for &event in events {
+        match event {
+            "ride" => {
+                for &r in roughnesses {
+                    out.push(Box::new(move || {
+                        let roughness = ride::Roughness {
+                            rms: r * INCH,
+                            seed: 1,
+                        };
+                        let (s, wall) =
+                            timed(&|| ride::limiting_speed::<V>(settings, footprint, roughness))?;
+                        Ok(limit_row(
+                            event,
+                            Some(("roughness", r * INCH, "m")),
+                            "ride-limiting speed",
+                            "m/s",
+                            s,
+                            wall,
+                        ))
+                    }));
+                }
+            }
+            "half-round" => {
+                for &h in heights {
+                    out.push(Box::new(move || {
+                        let (s, wall) = timed(&|| {
+                            obstacle::half_round_speed::<V>(settings, footprint, h * INCH)
+                        })?;
+                        Ok(limit_row(
+                            event,
+                            Some(("height", h * INCH, "m")),
+                            "speed at the peak limit",
+                            "m/s",
+                            s,
+                            wall,
+                        ))
+                    }));
+                }
+            }
+            "step" | "gap" | "ditch" | "barrier" => out.push(Box::new(move || {
+                let search = match event {
+                    "step" => obstacle::step::<V>,
+                    "gap" => obstacle::gap::<V>,
+                    "ditch" => obstacle::ditch::<V>,
+                    _ => obstacle::barrier::<V>,
+                };
+                let (s, wall) = timed(&|| search(settings, footprint))?;
+                let quantity = match event {
+                    "step" => "highest step",
+                    "gap" => "widest gap",
+                    "ditch" => "deepest ditch",
+                    _ => "highest barrier",
+                };
+                Ok(limit_row(event, None, quantity, "m", s, wall))
+            })),
+            "grade" => {
+                out.push(Box::new(move || {
+                    let (s, wall) = timed(&|| grade::steepest::<V>(settings, footprint))?;
+                    Ok(limit_row(
+                        event,
+                        None,
+                        "steepest grade",
+                        "rise over run",
+                        s,
+                        wall,
+                    ))
+                }));
+                for &g in grades {
+                    out.push(Box::new(move || {
+                        let start = Instant::now();
+                        let climb = grade::speed_on::<V>(settings, footprint, g)?;
+                        Ok(Row {
+                            event,
+                            parameter: Some(("grade", g, "rise over run")),
+                            quantity: "speed at full power",
+                            value: climb.speed,
+                            relation: "=",
+                            unit: "m/s",
+                            runs: 1,
+                            wall: start.elapsed().as_secs_f64(),
+                            search: None,
+                        })
+                    }));
+                }
+            }
+            _ => unreachable!("events are parsed from EVENTS"),
+        }
+    }
+    out
+}
+
+fn main() -> ExitCode {
+    let args = Args::parse();
+    match args.vehicle {
+        Which::M113 => run::<m113::M113>(&args, "m113", m113::powertrain()),
+        Which::Marder => run::<marder::Marder>(&args, "marder", marder::powertrain()),
+    }
+}
+
+fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode {
+    let mut settings = EventSettings::new(powertrain);
+    if args.quick {
+        settings.speed_tolerance = 1.0;
+        settings.length_tolerance = 0.1;
+        settings.grade_tolerance = 0.1;
+        settings.ride_distance = 30.0;
+    }
+    let footprint = match Footprint::of::<V>("mobility") {
+        Ok(f) => f,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    let events: Vec<&'static str> = args.events.clone().unwrap_or_else(|| EVENTS.to_vec());
+    let work = tasks::<V>(&settings, &footprint, &events, args.quick);
+    let started = Instant::now();
+    let bar = ProgressBar::new(work.len() as u64);
+    if let Ok(style) =
+        ProgressStyle::with_template("{bar:40} {pos}/{len} results  {elapsed_precise}")
+    {
+        bar.set_style(style);
+    }
+    let failures = Mutex::new(Vec::new());
+    // Each task is deterministic and independent: the results do not
+    // depend on the order rayon runs them in.
+    let mut rows: Vec<(usize, Row)> = work
+        .par_iter()
+        .enumerate()
+        .filter_map(|(i, task)| {
+            let result = task();
+            bar.inc(1);
+            match result {
+                Ok(row) => Some((i, row)),
+                Err(e) => {
+                    failures.lock().unwrap().push(e.to_string());
+                    None
+                }
+            }
+        })
+        .collect();
+    bar.finish_and_clear();
+    rows.sort_by_key(|(i, _)| *i);
+    let rows: Vec<Row> = rows.into_iter().map(|(_, r)| r).collect();
+    let wall = started.elapsed().as_secs_f64();
+
+    let dir = args
+        .out
+        .clone()
+        .unwrap_or_else(|| Path::new("out/mobility").join(name));
+    let written = write_all(&dir, name, &rows, wall);
+    print_summary(name, &rows, wall);
+    if args.json {
+        for row in &rows {
+            println!("{}", json(row));
+        }
+    }
+    let failures = failures.into_inner().unwrap();
+    for f in &failures {
+        eprintln!("failed: {f}");
+    }
+    match written {
+        Ok(files) => eprintln!("wrote {}/{{{}}}", dir.display(), files.join(", ")),
+        Err(e) => {
+            eprintln!("error: writing {}: {e}", dir.display());
+            return ExitCode::FAILURE;
+        }
+    }
+    if failures.is_empty() {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::FAILURE
+    }
+}
+
+fn parameter_text(row: &Row) -> String {
+    match row.parameter {
+        Some((what, value, unit)) => format!("{what} {value:.4} {unit}"),
+        None => String::new(),
+    }
+}
+
+fn print_summary(name: &str, rows: &[Row], wall: f64) {
+    let runs: usize = rows.iter().map(|r| r.runs).sum();
+    eprintln!(
+        "{name}: {} results from {runs} runs in {wall:.1} s of wall time",
+        rows.len()
+    );
+    println!(
+        "{:<11} {:<28} {:<26} {:>12}  {:<14} {:>5} {:>8}",
+        "event", "parameter", "quantity", "value", "unit", "runs", "wall s"
+    );
+    for r in rows {
+        println!(
+            "{:<11} {:<28} {:<26} {:>1}{:>11.3}  {:<14} {:>5} {:>8.1}",
+            r.event,
+            parameter_text(r),
+            r.quantity,
+            if r.relation == "=" { " " } else { r.relation },
+            r.value,
+            r.unit,
+            r.runs,
+            r.wall
+        );
+    }
+}
+
+fn json(row: &Row) -> String {
+    let number = |v: f64| {
+        if v.is_finite() {
+            format!("{v}")
+        } else {
+            "null".to_string()
+        }
+    };
+    let parameter = match row.parameter {
+        Some((what, value, unit)) => format!(
+            r#"{{"name":"{what}","value":{},"unit":"{unit}"}}"#,
+            number(value)
+        ),
+        None => "null".to_string(),
+    };
+    format!(
+        r#"{{"event":"{}","parameter":{parameter},"quantity":"{}","value":{},"relation":"{}","unit":"{}","runs":{}}}"#,
+        row.event,
+        row.quantity,
+        number(row.value),
+        row.relation,
+        row.unit,
+        row.runs
+    )
+}
+
+fn write_all(
+    dir: &Path,
+    name: &str,
+    rows: &[Row],
+    wall: f64,
+) -> Result<Vec<String>, Box<dyn std::error::Error>> {
+    fs::create_dir_all(dir)?;
+    let mut files = Vec::new();
+    for event in EVENTS {
+        let mine: Vec<&Row> = rows.iter().filter(|r| r.event == event).collect();
+        if mine.is_empty() {
+            continue;
+        }
+        let file = format!("{event}.csv");
+        let mut w = csv::Writer::from_path(dir.join(&file))?;
+        w.write_record([
+            "parameter",
+            "parameter_value",
+            "parameter_unit",
+            "quantity",
+            "relation",
+            "value",
+            "unit",
+            "runs",
+            "wall_s",
+        ])?;
+        for r in mine {
+            let (p, pv, pu) = r
+                .parameter
+                .map_or(("", String::new(), ""), |(a, b, c)| (a, b.to_string(), c));
+            w.write_record([
+                p,
+                &pv,
+                pu,
+                r.quantity,
+                r.relation,
+                &r.value.to_string(),
+                r.unit,
+                &r.runs.to_string(),
+                &format!("{:.3}", r.wall),
+            ])?;
+        }
+        w.flush()?;
+        files.push(file);
+    }
+    let mut w = csv::Writer::from_path(dir.join("trials.csv"))?;
+    w.write_record([
+        "event",
+        "fixed",
+        "fixed_value",
+        "trial",
+        "parameter",
+        "figure",
+        "passed",
+    ])?;
+    for r in rows {
+        let (p, pv) = r
+            .parameter
+            .map_or(("", String::new()), |(a, b, _)| (a, b.to_string()));
+        for (k, t) in r.search.iter().flat_map(|s| s.trials.iter()).enumerate() {
+            w.write_record([
+                r.event,
+                p,
+                &pv,
+                &k.to_string(),
+                &t.parameter.to_string(),
+                &t.figure.to_string(),
+                &t.passed.to_string(),
+            ])?;
+        }
+    }
+    w.flush()?;
+    files.push("trials.csv".into());
+    let svg = curves(rows)?;
+    fs::write(dir.join("summary.svg"), &svg)?;
+    files.push("summary.svg".into());
+    fs::write(dir.join("report.html"), report(name, rows, wall, &svg))?;
+    files.push("report.html".into());
+    Ok(files)
+}
+
+/// The curves of the events with a parameter: one panel each.
+fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
+    let panels: [(&str, &str, &str, f64); 3] = [
+        (
+            "ride",
+            "RMS roughness, in",
+            "ride-limiting speed, m/s",
+            1.0 / 0.0254,
+        ),
+        (
+            "half-round",
+            "half-round height, in",
+            "speed at 2.5 g, m/s",
+            1.0 / 0.0254,
+        ),
+        ("grade", "grade, %", "speed at full power, m/s", 100.0),
+    ];
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (1200, 380)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let areas = root.split_evenly((1, 3));
+        for ((event, x_label, y_label, scale), area) in panels.iter().zip(areas.iter()) {
+            let points: Vec<(f64, f64, &str)> = rows
+                .iter()
+                .filter(|r| r.event == *event)
+                .filter_map(|r| {
+                    r.parameter
+                        .map(|(_, p, _)| (p * scale, r.value, r.relation))
+                })
+                .filter(|(_, v, _)| v.is_finite())
+                .collect();
+            let x_max = points.iter().map(|p| p.0).fold(1e-9, f64::max) * 1.1;
+            let y_max = points.iter().map(|p| p.1).fold(1e-9, f64::max) * 1.2;
+            let mut chart = ChartBuilder::on(area)
+                .caption(*event, ("sans-serif", 18))
+                .margin(12)
+                .x_label_area_size(36)
+                .y_label_area_size(48)
+                .build_cartesian_2d(0.0..x_max, 0.0..y_max)?;
+            chart
+                .configure_mesh()
+                .x_desc(*x_label)
+                .y_desc(*y_label)
+                .draw()?;
+            chart.draw_series(LineSeries::new(points.iter().map(|p| (p.0, p.1)), &BLUE))?;
+            // A limit beyond the search's range is drawn hollow.
+            chart.draw_series(points.iter().map(|p| {
+                let style = if p.2 == "=" {
+                    BLUE.filled()
+                } else {
+                    BLUE.stroke_width(2)
+                };
+                Circle::new((p.0, p.1), 4, style)
+            }))?;
+        }
+        root.present()?;
+    }
+    Ok(svg)
+}
+
+fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
+    let runs: usize = rows.iter().map(|r| r.runs).sum();
+    let mut html = String::new();
+    let _ = write!(
+        html,
+        "<!doctype html><html><head><meta charset=\"utf-8\"><title>{name}: mobility</title>\
+         <style>body{{font-family:sans-serif;margin:2em}}td,th{{padding:2px 10px;text-align:left}}\
+         td.n{{text-align:right}}tr:nth-child(even){{background:#f4f4f4}}</style></head><body>\
+         <h1>{name}: pitch-plane mobility events</h1>\
+         <p>{} results from {runs} runs in {wall:.1} s of wall time. A limit marked &gt; lies beyond \
+         the searched range; &lt; before it. Events and criteria: <code>shared/spec/mobility.md</code>; \
+         the guide's Mobility chapter.</p>{svg}<table><tr><th>event</th><th>parameter</th>\
+         <th>quantity</th><th>value</th><th>unit</th><th>runs</th><th>wall, s</th></tr>",
+        rows.len()
+    );
+    for r in rows {
+        let relation = match r.relation {
+            ">" => "&gt; ",
+            "<" => "&lt; ",
+            _ => "",
+        };
+        let _ = write!(
+            html,
+            "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{relation}{:.3}</td><td>{}</td>\
+             <td class=\"n\">{}</td><td class=\"n\">{:.1}</td></tr>",
+            r.event,
+            parameter_text(r),
+            r.quantity,
+            r.value,
+            r.unit,
+            r.runs,
+            r.wall
+        );
+    }
+    html.push_str("</table></body></html>\n");
+    html
+}

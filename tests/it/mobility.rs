@@ -1,0 +1,212 @@
+//! The mobility events: the search, bad input, a failed run reported as a
+//! failure, determinism, and the `mobility` example's outputs.
+//!
+//! * The search against a criterion with a known crossing: the bracket
+//!   holds the crossing and is no wider than the tolerance, and the runs
+//!   are `2 + ⌈log₂(range / tolerance)⌉` (bisection's count, exact); a
+//!   criterion passing everywhere is `Beyond` the range, failing
+//!   everywhere `Before` it; an error in a trial is the search's error,
+//!   never a limit.
+//! * A run that diverges (RK4 at a step far beyond the M113's stability,
+//!   0.05 s against contact modes of ~1e3 /s) makes the step event an
+//!   `EventError::Run` naming the event, the parameter and the time.
+//! * The ride over one seed's course twice, and on two threads at once,
+//!   gives the same figures bit for bit.
+//! * Bad input: a negative or NaN roughness, a negative height, a NaN
+//!   crawl speed, a speed above the settings' limit: each a
+//!   `EventError::Setting` naming what is wrong, before any run.
+
+use std::sync::Arc;
+
+use trackgen::integrate::Integrator;
+use trackgen::mobility::search::{Limit, Trial, bisect};
+use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride};
+use trackgen::vehicles::m113::{self, M113};
+
+fn criterion(crossing: f64) -> impl FnMut(f64) -> Result<Trial, EventError> {
+    move |p| {
+        Ok(Trial {
+            parameter: p,
+            figure: p - crossing,
+            passed: p < crossing,
+        })
+    }
+}
+
+#[test]
+fn the_search_brackets_a_known_crossing_in_bisection_s_runs() {
+    for (start, end, tolerance, crossing) in [
+        (0.0, 1.0, 1e-3, 0.371_234),
+        (1.0, 20.0, 0.1, 7.77),
+        (0.05, 1.5, 0.01, 0.05 + 1e-9),
+        // A criterion that fails below its limit: searched downwards.
+        (10.0, 0.0, 0.01, 3.3),
+    ] {
+        let crossing_test = move |p: f64| {
+            let passed = if start < end {
+                p < crossing
+            } else {
+                p > crossing
+            };
+            Ok(Trial {
+                parameter: p,
+                figure: p,
+                passed,
+            })
+        };
+        let search = bisect(start, end, tolerance, crossing_test).unwrap();
+        let Limit::Found {
+            value,
+            passed,
+            failed,
+        } = search.limit
+        else {
+            panic!("{start}..{end}: {:?}", search.limit)
+        };
+        assert!((failed - passed).abs() <= tolerance, "{passed}..{failed}");
+        assert!(
+            (passed.min(failed)..=passed.max(failed)).contains(&crossing),
+            "{crossing} outside {passed}..{failed}"
+        );
+        assert_eq!(value, 0.5 * (passed + failed));
+        let halvings = ((end - start).abs() / tolerance).log2().ceil() as usize;
+        assert_eq!(search.runs(), 2 + halvings, "{start}..{end} by {tolerance}");
+        assert_eq!(search.trials[0].parameter, start);
+        assert_eq!(search.trials[1].parameter, end);
+    }
+    let beyond = bisect(0.0, 1.0, 1e-3, criterion(2.0)).unwrap();
+    assert_eq!(beyond.limit, Limit::Beyond { end: 1.0 });
+    assert_eq!((beyond.runs(), beyond.limit.relation()), (2, ">"));
+    let before = bisect(0.0, 1.0, 1e-3, criterion(-1.0)).unwrap();
+    assert_eq!(before.limit, Limit::Before { start: 0.0 });
+    assert!(before.limit.value().is_nan());
+    assert_eq!(before.runs(), 1);
+    // A trial's error ends the search as that error.
+    let mut calls = 0;
+    let failed = bisect(0.0, 1.0, 1e-3, |p| {
+        calls += 1;
+        if calls == 3 {
+            return Err(EventError::Setting {
+                event: "test",
+                what: "the third trial",
+                range: "anything",
+                value: p,
+            });
+        }
+        criterion(0.4)(p)
+    });
+    assert!(
+        matches!(failed, Err(EventError::Setting { value, .. }) if value == 0.5),
+        "{failed:?}"
+    );
+}
+
+#[test]
+fn a_diverging_run_is_a_failure_not_a_limit() {
+    let mut settings = EventSettings::new(m113::powertrain());
+    settings.integrator = Integrator::Rk4 { step: 0.05 };
+    let footprint = Footprint::of::<M113>("step").unwrap();
+    let result = obstacle::step::<M113>(&settings, &footprint);
+    match result {
+        Err(EventError::Run {
+            event,
+            parameter,
+            unit,
+            time,
+            ..
+        }) => {
+            assert_eq!((event, unit), ("step", "m"));
+            assert_eq!(parameter, 0.05, "the first trial, the range's start");
+            assert!(time.is_finite() && time >= 0.0, "{time}");
+        }
+        other => panic!("a diverging run gave {other:?}"),
+    }
+}
+
+#[test]
+fn a_course_s_seed_gives_the_same_ride_bit_for_bit_on_any_thread() {
+    let mut settings = EventSettings::new(m113::powertrain());
+    settings.ride_distance = 10.0;
+    let settings = Arc::new(settings);
+    let footprint = Footprint::of::<M113>("ride").unwrap();
+    let roughness = ride::Roughness {
+        rms: 0.0254,
+        seed: 7,
+    };
+    let once = || ride::ride_at::<M113>(&settings, &footprint, roughness, 3.0).unwrap();
+    let first = once();
+    assert_eq!(first, once(), "serially");
+    let (a, b) = std::thread::scope(|s| {
+        let a = s.spawn(once);
+        let b = s.spawn(once);
+        (a.join().unwrap(), b.join().unwrap())
+    });
+    assert_eq!((a, b), (first, first), "in parallel");
+    assert!(first.figures.absorbed_power > 0.0 && first.figures.samples > 0);
+    assert!((first.measured - 10.0).abs() < 0.1, "{}", first.measured);
+    // Another seed, another course.
+    let other = ride::ride_at::<M113>(
+        &settings,
+        &footprint,
+        ride::Roughness {
+            seed: 8,
+            ..roughness
+        },
+        3.0,
+    )
+    .unwrap();
+    assert_ne!(other.figures, first.figures);
+}
+
+/// What a refused setting names, and its value.
+fn setting<T: std::fmt::Debug>(r: Result<T, EventError>) -> (&'static str, f64) {
+    match r {
+        Err(EventError::Setting { what, value, .. }) => (what, value),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn bad_input_is_refused_before_any_run() {
+    let settings = EventSettings::new(m113::powertrain());
+    let footprint = Footprint::of::<M113>("ride").unwrap();
+    for rms in [-0.01, f64::NAN, 0.0, 1.0] {
+        let (what, _) = setting(ride::ride_at::<M113>(
+            &settings,
+            &footprint,
+            ride::Roughness { rms, seed: 1 },
+            3.0,
+        ));
+        assert_eq!(what, "the RMS roughness (m)");
+    }
+    let (what, value) = setting(ride::ride_at::<M113>(
+        &settings,
+        &footprint,
+        ride::Roughness {
+            rms: 0.0254,
+            seed: 1,
+        },
+        25.0,
+    ));
+    assert_eq!((what, value), ("the speed (m/s)", 25.0));
+    let (what, _) = setting(obstacle::half_round_speed::<M113>(
+        &settings, &footprint, -0.2,
+    ));
+    assert_eq!(what, "the height (m)");
+    let mut nan_crawl = settings.clone();
+    nan_crawl.crawl = f64::NAN;
+    let (what, _) = setting(obstacle::step::<M113>(&nan_crawl, &footprint));
+    assert_eq!(what, "the crawl speed (m/s)");
+    // The message names the event, the setting and its range.
+    let message = EventError::Setting {
+        event: "ride",
+        what: "the RMS roughness (m)",
+        range: "more than 0 and at most 0.5",
+        value: -0.01,
+    }
+    .to_string();
+    assert_eq!(
+        message,
+        "ride: the RMS roughness (m) must be more than 0 and at most 0.5, got -0.01"
+    );
+}

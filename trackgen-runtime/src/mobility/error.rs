@@ -1,0 +1,69 @@
+//! Why an event gave no answer.
+
+use thiserror::Error;
+
+use crate::contact::profile::ProfileError;
+use crate::contact::roughness::RoughnessError;
+use crate::simulate::RunError;
+use crate::vehicle::BuildError;
+
+/// An event that could not be answered. A run's failure says which event,
+/// at which parameter, when and why: it is never a limit.
+#[derive(Debug, Error)]
+pub enum EventError {
+    /// A setting or a parameter out of its range.
+    #[error("{event}: {what} must be {range}, got {value}")]
+    Setting {
+        /// The event: `ride`, `half-round`, `step`, `gap`, `ditch`,
+        /// `barrier` or `grade`.
+        event: &'static str,
+        /// The setting.
+        what: &'static str,
+        /// Its allowed range, in words with its unit.
+        range: &'static str,
+        /// What was given.
+        value: f64,
+    },
+    /// The vehicle does not build on the event's course.
+    #[error("{event}: the vehicle does not build: {source}")]
+    Build {
+        /// The event.
+        event: &'static str,
+        /// Why.
+        #[source]
+        source: BuildError,
+    },
+    /// The event's course could not be laid.
+    #[error("{event}: the course could not be laid: {source}")]
+    Course {
+        /// The event.
+        event: &'static str,
+        /// Why.
+        #[source]
+        source: ProfileError,
+    },
+    /// The event's random course could not be made.
+    #[error("{event}: the random course could not be made: {source}")]
+    Roughness {
+        /// The event.
+        event: &'static str,
+        /// Why.
+        #[source]
+        source: RoughnessError,
+    },
+    /// A run failed: the integrator gave up, or a sink refused a row.
+    #[error("{event}: the run at {parameter} {unit} failed at t = {time} s: {source}")]
+    Run {
+        /// The event.
+        event: &'static str,
+        /// The parameter of the failed run.
+        parameter: f64,
+        /// Its unit.
+        unit: &'static str,
+        /// When the run stopped, s (NaN if unknown).
+        time: f64,
+        /// Why.
+        #[source]
+        source: Box<RunError>,
+    },
+}

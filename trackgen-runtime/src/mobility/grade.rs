@@ -1,0 +1,121 @@
+//! Grades (`shared/spec/mobility.md` §1): the steepest grade climbed from
+//! a crawl, and the speed held up a grade at full power.
+
+use super::runs::{Footprint, Probe, drive, ramp};
+use super::search::{Search, Trial, bisect};
+use super::{EventError, EventSettings};
+use crate::contact::Terrain;
+use crate::contact::profile::Course;
+use crate::vehicle::Vehicle;
+
+/// The event's name in results.
+pub const EVENT: &str = "grade";
+
+/// How far up the grade the track's rear must get, m, for the grade to
+/// count as climbed.
+pub const CLIMB: f64 = 5.0;
+
+/// A grade of `slope` (rise over run) starting at `at` (m), long enough
+/// for `up` m of climb beyond the track's front.
+fn course(footprint: &Footprint, at: f64, slope: f64, up: f64) -> Result<Terrain, EventError> {
+    let from = footprint.rear - 10.0;
+    Course::starting_at(from, 0.0)
+        .and_then(|c| c.flat(at - from))
+        .and_then(|c| c.grade(slope, up + footprint.length() + 10.0))
+        .and_then(|c| c.profile())
+        .map(Terrain::profile)
+        .map_err(|source| EventError::Course {
+            event: EVENT,
+            source,
+        })
+}
+
+/// One attempt at a grade.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Climb {
+    /// Whether the track's rear got [`CLIMB`] m (horizontally) up it.
+    pub climbed: bool,
+    /// The hull's mean speed over the climb's last 10 m, m/s (0 stalled,
+    /// NaN for a climb shorter than 10 m).
+    pub speed: f64,
+    /// Whether it stopped.
+    pub stalled: bool,
+}
+
+/// `V` asked for `speed` (m/s) at a grade of `slope` (rise over run),
+/// the grade starting 1 m ahead of the track's front: whether its rear
+/// gets `climb` m (horizontally) up it, and its speed over the last 10 m.
+pub fn climb<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    slope: f64,
+    speed: f64,
+    climb: f64,
+) -> Result<Climb, EventError> {
+    settings.check(EVENT)?;
+    if !(slope.is_finite() && slope > 0.0 && slope <= 2.0) {
+        return Err(EventError::Setting {
+            event: EVENT,
+            what: "the grade (rise over run)",
+            range: "more than 0 and at most 2",
+            value: slope,
+        });
+    }
+    let at = footprint.front + 1.0;
+    let terrain = course(footprint, at, slope, climb)?;
+    let goal = at + climb - footprint.rear;
+    let ramp_time = speed / settings.acceleration;
+    let mut probe = Probe::new(goal, ramp_time);
+    // At a tenth of the speed asked the climb still finishes; a stall
+    // ends the run sooner.
+    let duration = ramp_time + 10.0 * goal / speed + 5.0;
+    probe.mark_at = goal - 10.0;
+    drive::<V>(
+        settings,
+        terrain,
+        ramp(speed, settings.acceleration),
+        duration,
+        0.01,
+        &mut probe,
+        (EVENT, slope, "rise over run"),
+    )?;
+    Ok(Climb {
+        climbed: probe.x >= goal,
+        speed: if probe.stalled {
+            0.0
+        } else {
+            probe.speed_since_mark()
+        },
+        stalled: probe.stalled,
+    })
+}
+
+/// The steepest grade climbed from a crawl, searched over `[0.05, 1.2]`
+/// (5 to 120 %) to the settings' `grade_tolerance`. Each trial's figure is
+/// 1 if it climbed, 0 if not.
+pub fn steepest<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+) -> Result<Search, EventError> {
+    bisect(0.05, 1.2, settings.grade_tolerance, |slope| {
+        let c = climb::<V>(settings, footprint, slope, settings.crawl, CLIMB)?;
+        Ok(Trial {
+            parameter: slope,
+            figure: f64::from(u8::from(c.climbed)),
+            passed: c.climbed,
+        })
+    })
+}
+
+/// The speed held up a grade of `slope` at full power: `V` asked for the
+/// powertrain's top speed up a grade long enough for 30 m of climb beyond
+/// its track's length (the speed settles in a few seconds at these
+/// speeds); its mean over the last 10 m. A vehicle that stalls holds 0.
+pub fn speed_on<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    slope: f64,
+) -> Result<Climb, EventError> {
+    let top = settings.top_speed(footprint.sprocket_radius);
+    climb::<V>(settings, footprint, slope, top, footprint.length() + 30.0)
+}

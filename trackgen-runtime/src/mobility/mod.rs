@@ -1,0 +1,26 @@
+//! The mobility engineer's questions, asked of any declared vehicle in
+//! its pitch plane (`shared/spec/mobility.md` §1): the ride over random
+//! terrain and the speed at which the driver's absorbed power reaches
+//! 6 W, the speed over a half-round obstacle at which the seat sees
+//! 2.5 g, the highest step and widest gap crossed from a crawl, the
+//! steepest grade climbed and the speed on grades at full power.
+//!
+//! Every event is a function generic over [`Vehicle`](crate::vehicle::Vehicle),
+//! driven by the vehicle's [`Powertrain`](crate::vehicle::Powertrain) through its own speed
+//! controller ([`EventSettings`]): the engine, not per-vehicle code,
+//! decides the speeds reached. A limit is found by bracketing and
+//! bisection ([`search`]) and returned with the trials that found it; a
+//! run that fails (the integrator gives up, the ride's rows are refused)
+//! is an [`EventError::Run`], never taken for a limit, and a vehicle that
+//! stops short of an obstacle's far side is a trial that did not pass,
+//! with the distance it reached.
+
+mod error;
+pub mod grade;
+pub mod obstacle;
+pub mod ride;
+mod runs;
+pub mod search;
+
+pub use error::EventError;
+pub use runs::{EventSettings, Footprint, STALL_DISTANCE, STALL_TIME};

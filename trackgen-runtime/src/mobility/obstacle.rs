@@ -1,0 +1,268 @@
+//! Obstacles (`shared/spec/mobility.md` §1, §3): the speed over a
+//! half-round at which the seat's peak vertical acceleration reaches the
+//! limit (2.5 g), and the largest step, gap, ditch and barrier crossed
+//! from a crawl at full power.
+
+use super::runs::{Footprint, Probe, drive, ramp};
+use super::search::{Search, Trial, bisect};
+use super::{EventError, EventSettings};
+use crate::contact::Terrain;
+use crate::contact::profile::{Course, Obstacle, Profile};
+use crate::simulate::RideSink;
+use crate::vehicle::Vehicle;
+
+/// The half-round event's name in results.
+pub const HALF_ROUND: &str = "half-round";
+
+/// Flat ground after an obstacle, m.
+const RUN_OUT: f64 = 40.0;
+
+/// The course of an obstacle event: flat from behind the vehicle to
+/// `at` (m), the obstacle, flat for [`RUN_OUT`]; and the obstacle's far
+/// end, m.
+fn course(
+    event: &'static str,
+    footprint: &Footprint,
+    at: f64,
+    obstacle: &Obstacle,
+) -> Result<(Profile, f64), EventError> {
+    let laid = || -> Result<(Profile, f64), crate::contact::profile::ProfileError> {
+        let from = footprint.rear - 10.0;
+        let course = Course::starting_at(from, 0.0)?
+            .flat(at - from)?
+            .then(obstacle)?;
+        let far = course.end().0;
+        Ok((course.flat(RUN_OUT)?.profile()?, far))
+    };
+    laid().map_err(|source| EventError::Course { event, source })
+}
+
+/// One run over a half-round.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct HalfRoundPoint {
+    /// The speed asked, m/s.
+    pub speed_asked: f64,
+    /// The mean speed from the track's front 1 m before the obstacle to
+    /// its rear 3 m past it, m/s.
+    pub speed: f64,
+    /// The largest vertical seat acceleration after the 30 Hz low-pass,
+    /// g ([`PeakVertical`](crate::ride::PeakVertical)).
+    pub peak_g: f64,
+    /// Whether the vehicle stalled on the obstacle.
+    pub stalled: bool,
+}
+
+/// `V` over a half-round of `height` (m, its radius) at the speed asked,
+/// `speed` (m/s), reached on the flat before it: the seat's peak.
+pub fn half_round_at<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    height: f64,
+    speed: f64,
+) -> Result<HalfRoundPoint, EventError> {
+    settings.check(HALF_ROUND)?;
+    let ramp_distance = speed * speed / (2.0 * settings.acceleration);
+    let at = footprint.front + ramp_distance + 3.0;
+    let (profile, far) = course(
+        HALF_ROUND,
+        footprint,
+        at,
+        &Obstacle::HalfRound { radius: height },
+    )?;
+    let x0 = at - 1.0 - footprint.front;
+    let x1 = far + 3.0 - footprint.rear;
+    let mut probe = Probe::new(x1, speed / settings.acceleration);
+    probe.ride = Some(
+        RideSink::new(settings.ride_interval, 0.0)
+            .map_err(|_| EventError::Setting {
+                event: HALF_ROUND,
+                what: "the ride interval (s)",
+                range: "more than 0 and at most 0.002",
+                value: settings.ride_interval,
+            })?
+            .over_stretch(x0, x1),
+    );
+    let duration =
+        speed / settings.acceleration + 2.0 * (x1 - ramp_distance).max(1.0) / speed + 5.0;
+    drive::<V>(
+        settings,
+        Terrain::profile(profile),
+        ramp(speed, settings.acceleration),
+        duration,
+        settings.ride_interval,
+        &mut probe,
+        (HALF_ROUND, speed, "m/s"),
+    )?;
+    let figures = probe.figures().expect("the probe measured the ride");
+    let time = figures.samples as f64 * settings.ride_interval;
+    let measured = (probe.x.min(x1) - x0).max(0.0);
+    Ok(HalfRoundPoint {
+        speed_asked: speed,
+        speed: if time > 0.0 { measured / time } else { 0.0 },
+        peak_g: figures.peak_g,
+        stalled: probe.stalled || probe.x < x1,
+    })
+}
+
+/// The speed over a half-round of `height` (m) at which the seat's peak
+/// reaches the settings' limit, by bisection from 1 m/s to the
+/// powertrain's top speed. Each trial's figure is the peak, g; a vehicle
+/// that does not get over fails the trial.
+pub fn half_round_speed<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    height: f64,
+) -> Result<Search, EventError> {
+    check_length(HALF_ROUND, "the height (m)", height, 2.0)?;
+    let top = settings.top_speed(footprint.sprocket_radius);
+    bisect(1.0_f64.min(top), top, settings.speed_tolerance, |speed| {
+        let point = half_round_at::<V>(settings, footprint, height, speed)?;
+        Ok(Trial {
+            parameter: speed,
+            figure: point.peak_g,
+            passed: !point.stalled && point.peak_g < settings.peak_limit,
+        })
+    })
+}
+
+/// One attempt at an obstacle from a crawl.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Crossing {
+    /// Whether the track's rear got 1 m past the obstacle's far end.
+    pub crossed: bool,
+    /// How far the hull got, m, from where the track's rear would be at
+    /// the obstacle's far end plus 1 m (0 or more: crossed).
+    pub margin: f64,
+    /// Whether it stopped: less than [`STALL_DISTANCE`](super::STALL_DISTANCE)
+    /// in [`STALL_TIME`](super::STALL_TIME).
+    pub stalled: bool,
+    /// The largest pitch magnitude on the way, rad.
+    pub max_pitch: f64,
+}
+
+/// `V` driven at the obstacle from a crawl (the settings' `crawl` speed
+/// asked, the powertrain at full load where it must): whether it crosses.
+pub fn cross<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    event: &'static str,
+    obstacle: &Obstacle,
+    parameter: f64,
+) -> Result<Crossing, EventError> {
+    settings.check(event)?;
+    let crawl = settings.crawl;
+    let ramp_time = crawl / settings.acceleration;
+    let at = footprint.front + 0.5 * crawl * ramp_time + 1.0;
+    let (profile, far) = course(event, footprint, at, obstacle)?;
+    let goal = far + 1.0 - footprint.rear;
+    let mut probe = Probe::new(goal, ramp_time);
+    // At the crawl, with time for slowing on the obstacle; a stall ends
+    // the run sooner.
+    let duration = ramp_time + 4.0 * goal / crawl + 10.0;
+    drive::<V>(
+        settings,
+        Terrain::profile(profile),
+        ramp(crawl, settings.acceleration),
+        duration,
+        0.01,
+        &mut probe,
+        (event, parameter, "m"),
+    )?;
+    Ok(Crossing {
+        crossed: probe.x >= goal,
+        margin: probe.reached - goal,
+        stalled: probe.stalled,
+        max_pitch: probe.max_pitch,
+    })
+}
+
+/// The largest obstacle `shape(p)` crossed for `p` in `[start, end]` (m),
+/// by bisection to the settings' `length_tolerance`. Each trial's figure
+/// is [`Crossing::margin`], m.
+pub fn largest_crossed<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    event: &'static str,
+    (start, end): (f64, f64),
+    shape: impl Fn(f64) -> Obstacle,
+) -> Result<Search, EventError> {
+    check_length(event, "the search's start (m)", start, end)?;
+    bisect(start, end, settings.length_tolerance, |p| {
+        let crossing = cross::<V>(settings, footprint, event, &shape(p), p)?;
+        Ok(Trial {
+            parameter: p,
+            figure: crossing.margin,
+            passed: crossing.crossed,
+        })
+    })
+}
+
+/// The highest step (m) climbed from a crawl, searched over
+/// `[0.05, 1.5]` m.
+pub fn step<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+) -> Result<Search, EventError> {
+    largest_crossed::<V>(settings, footprint, "step", (0.05, 1.5), |height| {
+        Obstacle::Step { height }
+    })
+}
+
+/// The widest gap (m; vertical walls, 2 m deep) crossed from a crawl,
+/// searched over `[0.1, 4]` m.
+pub fn gap<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+) -> Result<Search, EventError> {
+    largest_crossed::<V>(settings, footprint, "gap", (0.1, 4.0), |width| {
+        Obstacle::Gap { width, depth: 2.0 }
+    })
+}
+
+/// The deepest trapezoidal ditch (m; a 1 m bottom, walls at 45°) crossed
+/// from a crawl, searched over `[0.1, 2]` m.
+pub fn ditch<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+) -> Result<Search, EventError> {
+    largest_crossed::<V>(settings, footprint, "ditch", (0.1, 2.0), |depth| {
+        Obstacle::Ditch {
+            depth,
+            bottom_width: 1.0,
+            wall_angle: 45.0,
+        }
+    })
+}
+
+/// The highest trapezoidal barrier (m; a 1 m top, walls at 45°) crossed
+/// from a crawl, searched over `[0.05, 1.5]` m.
+pub fn barrier<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+) -> Result<Search, EventError> {
+    largest_crossed::<V>(settings, footprint, "barrier", (0.05, 1.5), |height| {
+        Obstacle::Barrier {
+            height,
+            top_width: 1.0,
+            wall_angle: 45.0,
+        }
+    })
+}
+
+fn check_length(
+    event: &'static str,
+    what: &'static str,
+    value: f64,
+    below: f64,
+) -> Result<(), EventError> {
+    if value.is_finite() && value > 0.0 && value < below {
+        Ok(())
+    } else {
+        Err(EventError::Setting {
+            event,
+            what,
+            range: "more than 0 and below the search's end",
+            value,
+        })
+    }
+}

@@ -1,0 +1,164 @@
+//! Random-terrain ride (`shared/spec/mobility.md` §1–2): the absorbed
+//! power and ISO 2631-1 weighted accelerations at the driver's seat over
+//! a random course of given roughness, and the ride-limiting speed, where
+//! the absorbed power reaches the limit (6 W, the NRMM's criterion).
+
+use super::runs::{Footprint, Probe, drive, ramp};
+use super::search::{Search, Trial, bisect};
+use super::{EventError, EventSettings};
+use crate::contact::Terrain;
+use crate::contact::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, Spectrum};
+use crate::simulate::{RideFigures, RideSink};
+use crate::vehicle::Vehicle;
+
+/// The event's name in results.
+pub const EVENT: &str = "ride";
+
+/// The course's sample spacing, m: 5 cm, a tenth of the shortest
+/// wavelength the track's shoes resolve (ISO 8608's range reaches 0.1
+/// m, at 50 cm the course's band is already filtered by the footprint).
+pub const SPACING: f64 = 0.05;
+
+/// A random course: its detrended RMS elevation (m, after the mobility
+/// literature's detrending over
+/// [`DETRENDING_BASE_LENGTH`]) and the seed of its phases.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Roughness {
+    /// Detrended RMS elevation, m, more than 0 and at most 0.5.
+    pub rms: f64,
+    /// The seed: the same seed gives the same course on any machine.
+    pub seed: u64,
+}
+
+/// The ride at one speed asked.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RidePoint {
+    /// The speed asked, m/s.
+    pub speed_asked: f64,
+    /// The mean speed over the measured stretch, m/s: the engine may give
+    /// less than asked.
+    pub speed: f64,
+    /// The seat's figures over the stretch.
+    pub figures: RideFigures,
+    /// The length measured, m (the settings' `ride_distance` unless the
+    /// vehicle stalled).
+    pub measured: f64,
+    /// Whether the vehicle stalled on the course.
+    pub stalled: bool,
+}
+
+/// The ride of `V` over `roughness` at the speed asked, `speed` (m/s):
+/// from rest on flat ground, the speed reached at the settings'
+/// acceleration before the rough stretch begins; measured from where the
+/// track's rear is on the rough ground for the settings' `ride_distance`.
+pub fn ride_at<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    roughness: Roughness,
+    speed: f64,
+) -> Result<RidePoint, EventError> {
+    settings.check(EVENT)?;
+    check_roughness(roughness)?;
+    if !(speed.is_finite() && speed > 0.0 && speed <= settings.max_speed) {
+        return Err(EventError::Setting {
+            event: EVENT,
+            what: "the speed (m/s)",
+            range: "more than 0 and at most the settings' max_speed",
+            value: speed,
+        });
+    }
+    // Rough ground begins 2 m ahead of the track's front where the ramp
+    // ends, after a 3 m taper; measured from when the track's rear is on
+    // it.
+    let ramp_distance = speed * speed / (2.0 * settings.acceleration);
+    let taper = 3.0;
+    let start = footprint.rear - 10.0;
+    let rough_from = footprint.front + ramp_distance + 2.0;
+    let x0 = rough_from + taper - footprint.rear;
+    let x1 = x0 + settings.ride_distance;
+    let length = x1 + footprint.front + 10.0 - rough_from;
+    let course = RoughCourse::new(
+        Spectrum::DetrendedRms {
+            rms: roughness.rms,
+            base_length: DETRENDING_BASE_LENGTH,
+        },
+        length,
+        SPACING,
+        roughness.seed,
+    )
+    .starting_at(start)
+    .with_run_in(rough_from - start, taper);
+    let profile = course.profile().map_err(|source| EventError::Roughness {
+        event: EVENT,
+        source,
+    })?;
+    let mut probe = Probe::new(x1, speed / settings.acceleration);
+    probe.ride = Some(
+        RideSink::new(settings.ride_interval, 0.0)
+            .map_err(|_| EventError::Setting {
+                event: EVENT,
+                what: "the ride interval (s)",
+                range: "more than 0 and at most 0.002",
+                value: settings.ride_interval,
+            })?
+            .over_stretch(x0, x1),
+    );
+    // Long enough for the stretch at half the speed asked; the probe ends
+    // the run when the stretch is measured.
+    let duration = speed / settings.acceleration + 2.0 * (x1 - ramp_distance) / speed;
+    drive::<V>(
+        settings,
+        Terrain::profile(profile),
+        ramp(speed, settings.acceleration),
+        duration,
+        settings.ride_interval,
+        &mut probe,
+        (EVENT, speed, "m/s"),
+    )?;
+    let figures = probe.figures().expect("the probe measured the ride");
+    let time = figures.samples as f64 * settings.ride_interval;
+    let measured = (probe.x.min(x1) - x0).max(0.0);
+    Ok(RidePoint {
+        speed_asked: speed,
+        speed: if time > 0.0 { measured / time } else { 0.0 },
+        figures,
+        measured,
+        stalled: probe.stalled,
+    })
+}
+
+/// The ride-limiting speed over `roughness`: the speed asked at which the
+/// absorbed power reaches the settings' limit, by bisection between
+/// 1 m/s and the powertrain's top speed (or `max_speed`) to the settings'
+/// `speed_tolerance`. Each trial is a [`ride_at`] run; its figure is the
+/// absorbed power, W. A course the vehicle cannot cross (it stalls) fails
+/// the trial.
+pub fn limiting_speed<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    roughness: Roughness,
+) -> Result<Search, EventError> {
+    let top = settings.top_speed(footprint.sprocket_radius);
+    bisect(1.0_f64.min(top), top, settings.speed_tolerance, |speed| {
+        let point = ride_at::<V>(settings, footprint, roughness, speed)?;
+        let power = point.figures.absorbed_power;
+        Ok(Trial {
+            parameter: speed,
+            figure: power,
+            passed: !point.stalled && power < settings.absorbed_power_limit,
+        })
+    })
+}
+
+fn check_roughness(roughness: Roughness) -> Result<(), EventError> {
+    if roughness.rms.is_finite() && roughness.rms > 0.0 && roughness.rms <= 0.5 {
+        Ok(())
+    } else {
+        Err(EventError::Setting {
+            event: EVENT,
+            what: "the RMS roughness (m)",
+            range: "more than 0 and at most 0.5",
+            value: roughness.rms,
+        })
+    }
+}

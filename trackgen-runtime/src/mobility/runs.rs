@@ -1,0 +1,349 @@
+//! What every event shares: its settings, the vehicle's footprint, and a
+//! run of the vehicle over a course under its powertrain.
+
+use nalgebra::Vector2;
+
+use super::EventError;
+use crate::contact::Terrain;
+use crate::integrate::Integrator;
+use crate::simulate::{
+    Output, RideFigures, RideSink, RunError, RunReport, Sink, SinkError, simulate_into,
+};
+use crate::system::Simulated;
+use crate::vehicle::{Powertrain, Vehicle, VehicleDynamics, build};
+
+/// How the events drive the vehicle and read their criteria. Every event
+/// takes these; [`new`](Self::new) gives the defaults the mobility
+/// literature's events use (`shared/spec/mobility.md` §1–2).
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventSettings {
+    /// The engine and driveline at the sprocket: it caps the speed
+    /// controller's torque, so the vehicle's power sets the speeds it
+    /// reaches.
+    pub powertrain: Powertrain,
+    /// The integrator of every run.
+    pub integrator: Integrator,
+    /// The speed of a crawl, m/s: steps, gaps, ditches, barriers and
+    /// grades are driven at it (the controller asks for it, the engine
+    /// gives what it can).
+    pub crawl: f64,
+    /// The speed ramp's acceleration, m/s², to the speed asked.
+    pub acceleration: f64,
+    /// The length of rough ground the ride is measured over, m (after
+    /// the whole vehicle is on it).
+    pub ride_distance: f64,
+    /// The rows' interval for the ride criteria, s (at most
+    /// [`RideSink::MAX_INTERVAL`](crate::simulate::RideSink::MAX_INTERVAL)).
+    pub ride_interval: f64,
+    /// The absorbed power that limits the ride, W (6 W: the NRMM's
+    /// ride-limiting criterion).
+    pub absorbed_power_limit: f64,
+    /// The peak vertical seat acceleration that limits the half-round
+    /// speed, g (2.5 g).
+    pub peak_limit: f64,
+    /// The most speed any event asks for, m/s: the search's end where the
+    /// powertrain itself sets none.
+    pub max_speed: f64,
+    /// Speed searches stop when the bracket is this narrow, m/s.
+    pub speed_tolerance: f64,
+    /// Height, width and depth searches stop at this, m.
+    pub length_tolerance: f64,
+    /// Grade searches stop at this, rise over run.
+    pub grade_tolerance: f64,
+}
+
+impl EventSettings {
+    /// The defaults under `powertrain`: Bogacki-Shampine with the main
+    /// job's automatic choice at its tolerances (1e-3 explicit, 1e-2
+    /// implicit), a crawl of 1 m/s reached at 1 m/s², the ride measured
+    /// over 100 m with rows every 2 ms against 6 W, the half-round against
+    /// 2.5 g, speeds up to 20 m/s searched to 0.1 m/s, lengths to 0.01 m,
+    /// grades to 0.01.
+    pub fn new(powertrain: Powertrain) -> EventSettings {
+        EventSettings {
+            powertrain,
+            integrator: Integrator::Auto {
+                explicit_tolerance: 1e-3,
+                implicit_tolerance: 1e-2,
+                max_step: 0.01,
+            },
+            crawl: 1.0,
+            acceleration: 1.0,
+            ride_distance: 100.0,
+            ride_interval: 2e-3,
+            absorbed_power_limit: 6.0,
+            peak_limit: 2.5,
+            max_speed: 20.0,
+            speed_tolerance: 0.1,
+            length_tolerance: 0.01,
+            grade_tolerance: 0.01,
+        }
+    }
+
+    /// The settings checked: each figure finite and in its range.
+    pub(super) fn check(&self, event: &'static str) -> Result<(), EventError> {
+        let positive: [(&'static str, f64); 9] = [
+            ("the crawl speed (m/s)", self.crawl),
+            ("the acceleration (m/s²)", self.acceleration),
+            ("the ride distance (m)", self.ride_distance),
+            ("the absorbed-power limit (W)", self.absorbed_power_limit),
+            ("the peak limit (g)", self.peak_limit),
+            ("the largest speed (m/s)", self.max_speed),
+            ("the speed tolerance (m/s)", self.speed_tolerance),
+            ("the length tolerance (m)", self.length_tolerance),
+            ("the grade tolerance", self.grade_tolerance),
+        ];
+        for (what, value) in positive {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(EventError::Setting {
+                    event,
+                    what,
+                    range: "finite and more than 0",
+                    value,
+                });
+            }
+        }
+        self.powertrain.check().map_err(|_| EventError::Setting {
+            event,
+            what: "the powertrain",
+            range: "a valid powertrain (Powertrain::check)",
+            value: f64::NAN,
+        })
+    }
+
+    /// The fastest the powertrain drives the sprocket, converted to the
+    /// track's speed at `radius` (m, the sprocket's rolling radius), at
+    /// most [`max_speed`](Self::max_speed): beyond the top gear's cut-off
+    /// the engine gives no torque.
+    pub fn top_speed(&self, radius: f64) -> f64 {
+        let gives = |omega: f64| self.powertrain.limit(omega).0 > 0.0;
+        let ceiling = self.max_speed / radius;
+        if gives(ceiling) {
+            return self.max_speed;
+        }
+        // The driving envelope is one interval from rest: bisect its end.
+        let (mut low, mut high) = (0.0, ceiling);
+        for _ in 0..60 {
+            let middle = 0.5 * (low + high);
+            if gives(middle) {
+                low = middle;
+            } else {
+                high = middle;
+            }
+        }
+        low * radius
+    }
+}
+
+/// Where the vehicle stands as assembled: its track's extent along x, m,
+/// relative to the chassis' centroid at x = 0.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Footprint {
+    /// The rearmost link centroid's x, m.
+    pub rear: f64,
+    /// The foremost link centroid's x, m.
+    pub front: f64,
+    /// The sprocket's rolling radius, m (track speed per rad/s).
+    pub sprocket_radius: f64,
+}
+
+impl Footprint {
+    /// The vehicle `V` assembled on flat ground, measured.
+    pub fn of<V: Vehicle>(event: &'static str) -> Result<Footprint, EventError> {
+        let config = V::declared_config(Terrain::Flat { height: 0.0 }, V::speed_drive(|_| 0.0));
+        let mut system =
+            build::<V>(config).map_err(|source| EventError::Build { event, source })?;
+        let y0 = system.initial_state();
+        let (track, _) = system
+            .coordinates(0.0, y0.as_slice())
+            .map_err(|e| run_error(event, 0.0, "", e.into()))?;
+        let mut links = vec![Vector2::zeros(); V::TRACK_DOF - 2];
+        V::System::track_positions(track.as_slice(), &mut links);
+        let xs = links.iter().map(|p| p.x);
+        let rear = xs.clone().fold(f64::INFINITY, f64::min);
+        let front = xs.fold(f64::NEG_INFINITY, f64::max);
+        Ok(Footprint {
+            rear,
+            front,
+            sprocket_radius: system.sprocket_rolling_radius(),
+        })
+    }
+
+    /// The track's length on the ground and above it, front to rear, m.
+    pub fn length(&self) -> f64 {
+        self.front - self.rear
+    }
+}
+
+/// A run of `V` on `terrain`, its speed controller asking for `target`
+/// (m/s against s) under the settings' powertrain, for `duration` s, rows
+/// every `interval` s into `sink`.
+pub(super) fn drive<V: Vehicle>(
+    settings: &EventSettings,
+    terrain: Terrain,
+    target: impl Fn(f64) -> f64 + Send + 'static,
+    duration: f64,
+    interval: f64,
+    sink: &mut dyn Sink,
+    (event, parameter, unit): (&'static str, f64, &'static str),
+) -> Result<RunReport, EventError> {
+    let mut config = V::declared_config(terrain, V::speed_drive(target));
+    config.powertrain = Some(settings.powertrain.clone());
+    let mut system = build::<V>(config).map_err(|source| EventError::Build { event, source })?;
+    simulate_into(
+        &mut system,
+        settings.integrator,
+        0.0,
+        duration,
+        Output::Every(interval),
+        sink,
+        &mut |_| {},
+    )
+    .map_err(|failure| run_error(event, parameter, unit, failure.error))
+}
+
+/// A speed ramp at `acceleration` (m/s²) from rest to `speed` (m/s).
+pub(super) fn ramp(speed: f64, acceleration: f64) -> impl Fn(f64) -> f64 + Send + 'static {
+    move |t| (acceleration * t).min(speed)
+}
+
+fn run_error(
+    event: &'static str,
+    parameter: f64,
+    unit: &'static str,
+    error: RunError,
+) -> EventError {
+    EventError::Run {
+        event,
+        parameter,
+        unit,
+        time: error.time().unwrap_or(f64::NAN),
+        source: Box::new(error),
+    }
+}
+
+/// What an event reads off a run as its rows arrive: the hull's progress,
+/// the ride at the seat if asked, and whether the hull reached its goal or
+/// stalled, either of which ends the run ([`SinkError::Done`]).
+#[derive(Debug, Clone)]
+pub(super) struct Probe {
+    /// The ride, measured over its stretch.
+    pub ride: Option<RideSink>,
+    /// The hull's x that ends the run, m.
+    pub goal: f64,
+    /// After this time, s, a hull that moved less than [`STALL_DISTANCE`]
+    /// in [`STALL_TIME`] has stalled.
+    pub stall_after: f64,
+    columns: Option<[usize; 2]>,
+    /// The hull's x at the last row, m.
+    pub x: f64,
+    /// The furthest the hull's x reached, m.
+    pub reached: f64,
+    /// The largest pitch magnitude, rad.
+    pub max_pitch: f64,
+    /// The hull stalled: the run was ended for it.
+    pub stalled: bool,
+    /// The time of the last row, s.
+    pub t: f64,
+    /// `(t, x)` of the last stall check.
+    check: (f64, f64),
+    /// From this hull position on, m, `mark` keeps the first row's
+    /// `(t, x)`.
+    pub mark_at: f64,
+    /// The first row whose hull x reached `mark_at`: `(t, x)`.
+    pub mark: Option<(f64, f64)>,
+}
+
+/// A hull moving less than this, m, in [`STALL_TIME`] (after the speed
+/// ramp) has stalled: 3 cm/s on average, a thirtieth of the crawl.
+pub const STALL_DISTANCE: f64 = 0.05;
+/// The time over which [`STALL_DISTANCE`] is checked, s.
+pub const STALL_TIME: f64 = 1.5;
+
+impl Probe {
+    /// Watches for the hull to reach `goal` (m) or stall after
+    /// `stall_after` (s).
+    pub fn new(goal: f64, stall_after: f64) -> Probe {
+        Probe {
+            ride: None,
+            goal,
+            stall_after,
+            columns: None,
+            x: f64::NAN,
+            reached: f64::NEG_INFINITY,
+            max_pitch: 0.0,
+            stalled: false,
+            t: f64::NAN,
+            check: (f64::NAN, f64::NAN),
+            mark_at: f64::INFINITY,
+            mark: None,
+        }
+    }
+
+    /// The hull's mean speed since the mark, m/s (NaN before it).
+    pub fn speed_since_mark(&self) -> f64 {
+        match self.mark {
+            Some((t, x)) if self.t > t => (self.x - x) / (self.t - t),
+            _ => f64::NAN,
+        }
+    }
+
+    /// The ride's figures, if it was measured.
+    pub fn figures(&self) -> Option<RideFigures> {
+        self.ride.as_ref().map(RideSink::figures)
+    }
+}
+
+impl Sink for Probe {
+    fn begin(&mut self, columns: &[String]) -> Result<(), SinkError> {
+        let find = |name: &str| {
+            columns
+                .iter()
+                .position(|c| c == name)
+                .ok_or_else(|| SinkError::Columns(format!("mobility: no column `{name}`")))
+        };
+        self.columns = Some([find("x")?, find("pitch")?]);
+        if let Some(ride) = &mut self.ride {
+            ride.begin(columns)?;
+        }
+        Ok(())
+    }
+
+    fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
+        let Some([x, pitch]) = self.columns else {
+            return Err(SinkError::Columns("mobility: a row before `begin`".into()));
+        };
+        if let Some(ride) = &mut self.ride {
+            ride.row(t, values)?;
+        }
+        let (x, pitch) = (values[x], values[pitch]);
+        self.t = t;
+        self.x = x;
+        self.reached = self.reached.max(x);
+        self.max_pitch = self.max_pitch.max(pitch.abs());
+        if self.mark.is_none() && x >= self.mark_at {
+            self.mark = Some((t, x));
+        }
+        let ride_done = self.ride.as_ref().is_none_or(RideSink::ended);
+        if x >= self.goal && ride_done {
+            return Err(SinkError::Done);
+        }
+        if t >= self.stall_after {
+            // The first check (NaN before it) starts the watch.
+            if self.check.0.is_nan() {
+                self.check = (t, x);
+            } else if t - self.check.0 >= STALL_TIME {
+                if x - self.check.1 < STALL_DISTANCE {
+                    self.stalled = true;
+                    return Err(SinkError::Done);
+                }
+                self.check = (t, x);
+            }
+        }
+        Ok(())
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        Ok(())
+    }
+}

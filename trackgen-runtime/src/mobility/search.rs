@@ -1,0 +1,133 @@
+//! Finding where a trial stops passing: bracketing and bisection over one
+//! parameter, the trials kept.
+
+use super::EventError;
+
+/// One run of an event at a parameter: what it measured and whether it
+/// passed the event's criterion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Trial {
+    /// The parameter run (a speed, m/s; a height or width, m; a grade,
+    /// rise over run).
+    pub parameter: f64,
+    /// The figure the criterion reads (absorbed power, W; peak
+    /// acceleration, g; the distance reached past the obstacle, m).
+    pub figure: f64,
+    /// Whether it passed.
+    pub passed: bool,
+}
+
+/// Where the criterion is crossed in the searched range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Limit {
+    /// Between a passing and a failing parameter no further apart than
+    /// the search's tolerance; `value` is their midpoint.
+    Found {
+        /// The limit, the bracket's midpoint.
+        value: f64,
+        /// The largest parameter that passed (the smallest, for a
+        /// criterion that fails below its limit).
+        passed: f64,
+        /// The nearest parameter that failed.
+        failed: f64,
+    },
+    /// Every parameter up to the range's end passed: the limit is beyond
+    /// it.
+    Beyond {
+        /// The range's end, which passed.
+        end: f64,
+    },
+    /// The range's start already failed: the limit is before it.
+    Before {
+        /// The range's start, which failed.
+        start: f64,
+    },
+}
+
+impl Limit {
+    /// The limit's value: the midpoint of its bracket, or the range's end
+    /// it lies beyond (`Beyond`), or NaN before the range.
+    pub fn value(&self) -> f64 {
+        match *self {
+            Limit::Found { value, .. } => value,
+            Limit::Beyond { end } => end,
+            Limit::Before { .. } => f64::NAN,
+        }
+    }
+
+    /// `=`, `>` or `<`: how [`value`](Self::value) relates to the limit
+    /// (`<` before the range: the limit is below its start).
+    pub fn relation(&self) -> &'static str {
+        match self {
+            Limit::Found { .. } => "=",
+            Limit::Beyond { .. } => ">",
+            Limit::Before { .. } => "<",
+        }
+    }
+}
+
+/// A search's answer: the limit and every trial run, in order.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Search {
+    /// Where the criterion is crossed.
+    pub limit: Limit,
+    /// The trials, in the order they ran.
+    pub trials: Vec<Trial>,
+}
+
+impl Search {
+    /// The number of runs it took.
+    pub fn runs(&self) -> usize {
+        self.trials.len()
+    }
+}
+
+/// The parameter in `[start, end]` where `trial` stops passing, to within
+/// `tolerance`: trials pass below the limit and fail above it (for a
+/// criterion the other way round, pass `start > end`: the search runs from
+/// `start` towards `end` whichever way that is). It runs `start`, then
+/// `end`, then halves the bracket until it is at most `tolerance` wide:
+/// `2 + ⌈log₂(|end − start| / tolerance)⌉` runs at most. A failed run is
+/// the search's error.
+pub fn bisect(
+    start: f64,
+    end: f64,
+    tolerance: f64,
+    mut trial: impl FnMut(f64) -> Result<Trial, EventError>,
+) -> Result<Search, EventError> {
+    let mut trials = Vec::new();
+    let mut run = |p: f64, trials: &mut Vec<Trial>| -> Result<bool, EventError> {
+        let t = trial(p)?;
+        trials.push(t);
+        Ok(t.passed)
+    };
+    if !run(start, &mut trials)? {
+        return Ok(Search {
+            limit: Limit::Before { start },
+            trials,
+        });
+    }
+    if run(end, &mut trials)? {
+        return Ok(Search {
+            limit: Limit::Beyond { end },
+            trials,
+        });
+    }
+    let (mut passed, mut failed) = (start, end);
+    while (failed - passed).abs() > tolerance {
+        let middle = 0.5 * (passed + failed);
+        if run(middle, &mut trials)? {
+            passed = middle;
+        } else {
+            failed = middle;
+        }
+    }
+    Ok(Search {
+        limit: Limit::Found {
+            value: 0.5 * (passed + failed),
+            passed,
+            failed,
+        },
+        trials,
+    })
+}
