@@ -7,6 +7,7 @@ mod support;
 
 mod assembly;
 mod auto_integrator;
+mod brake;
 mod chassis_finite_differences;
 mod closed_chain_simulation;
 mod constant_expressions;

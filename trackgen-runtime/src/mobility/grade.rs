@@ -65,7 +65,7 @@ pub fn climb<V: Vehicle>(
     let terrain = course(footprint, at, slope, climb)?;
     let goal = at + climb - footprint.rear;
     let ramp_time = speed / settings.acceleration;
-    let mut probe = Probe::new(goal, ramp_time);
+    let mut probe = Probe::new(goal);
     // At a tenth of the speed asked the climb still finishes; a stall
     // ends the run sooner.
     let duration = ramp_time + 10.0 * goal / speed + 5.0;
@@ -107,15 +107,21 @@ pub fn steepest<V: Vehicle>(
     })
 }
 
-/// The speed held up a grade of `slope` at full power: `V` asked for the
-/// powertrain's top speed up a grade long enough for 30 m of climb beyond
-/// its track's length (the speed settles in a few seconds at these
-/// speeds); its mean over the last 10 m. A vehicle that stalls holds 0.
+/// The speed held up a grade of `slope` at full power: `V` asked at once
+/// for the powertrain's top speed (the engine, at full load, sets the
+/// torque) up a grade long enough for 100 m of climb beyond its track's
+/// length, its mean speed over the last 10 m. At the speeds a grade
+/// leaves (a few m/s), 100 m is several times the distance the speed
+/// takes to settle (`m v² / P`, some 10 m). A vehicle that stalls holds 0.
 pub fn speed_on<V: Vehicle>(
     settings: &EventSettings,
     footprint: &Footprint,
     slope: f64,
 ) -> Result<Climb, EventError> {
     let top = settings.top_speed(footprint.sprocket_radius);
-    climb::<V>(settings, footprint, slope, top, footprint.length() + 30.0)
+    let at_once = EventSettings {
+        acceleration: 1e3,
+        ..settings.clone()
+    };
+    climb::<V>(&at_once, footprint, slope, top, footprint.length() + 100.0)
 }

@@ -3,12 +3,11 @@
 //! limit (2.5 g), and the largest step, gap, ditch and barrier crossed
 //! from a crawl at full power.
 
-use super::runs::{Footprint, Probe, drive, ramp};
+use super::runs::{Footprint, Probe, drive, measure_ride, ramp};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
 use crate::contact::profile::{Course, Obstacle, Profile};
-use crate::simulate::RideSink;
 use crate::vehicle::Vehicle;
 
 /// The half-round event's name in results.
@@ -71,36 +70,21 @@ pub fn half_round_at<V: Vehicle>(
     )?;
     let x0 = at - 1.0 - footprint.front;
     let x1 = far + 3.0 - footprint.rear;
-    let mut probe = Probe::new(x1, speed / settings.acceleration);
-    probe.ride = Some(
-        RideSink::new(settings.ride_interval, 0.0)
-            .map_err(|_| EventError::Setting {
-                event: HALF_ROUND,
-                what: "the ride interval (s)",
-                range: "more than 0 and at most 0.002",
-                value: settings.ride_interval,
-            })?
-            .over_stretch(x0, x1),
-    );
     let duration =
         speed / settings.acceleration + 2.0 * (x1 - ramp_distance).max(1.0) / speed + 5.0;
-    drive::<V>(
+    let run = measure_ride::<V>(
         settings,
+        HALF_ROUND,
         Terrain::profile(profile),
-        ramp(speed, settings.acceleration),
+        speed,
+        (x0, x1),
         duration,
-        settings.ride_interval,
-        &mut probe,
-        (HALF_ROUND, speed, "m/s"),
     )?;
-    let figures = probe.figures().expect("the probe measured the ride");
-    let time = figures.samples as f64 * settings.ride_interval;
-    let measured = (probe.x.min(x1) - x0).max(0.0);
     Ok(HalfRoundPoint {
         speed_asked: speed,
-        speed: if time > 0.0 { measured / time } else { 0.0 },
-        peak_g: figures.peak_g,
-        stalled: probe.stalled || probe.x < x1,
+        speed: run.speed,
+        peak_g: run.figures.peak_g,
+        stalled: run.stalled,
     })
 }
 
@@ -155,7 +139,7 @@ pub fn cross<V: Vehicle>(
     let at = footprint.front + 0.5 * crawl * ramp_time + 1.0;
     let (profile, far) = course(event, footprint, at, obstacle)?;
     let goal = far + 1.0 - footprint.rear;
-    let mut probe = Probe::new(goal, ramp_time);
+    let mut probe = Probe::new(goal);
     // At the crawl, with time for slowing on the obstacle; a stall ends
     // the run sooner.
     let duration = ramp_time + 4.0 * goal / crawl + 10.0;

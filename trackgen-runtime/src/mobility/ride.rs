@@ -3,12 +3,12 @@
 //! a random course of given roughness, and the ride-limiting speed, where
 //! the absorbed power reaches the limit (6 W, the NRMM's criterion).
 
-use super::runs::{Footprint, Probe, drive, ramp};
+use super::runs::{Footprint, measure_ride};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
 use crate::contact::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, Spectrum};
-use crate::simulate::{RideFigures, RideSink};
+use crate::simulate::RideFigures;
 use crate::vehicle::Vehicle;
 
 /// The event's name in results.
@@ -92,38 +92,23 @@ pub fn ride_at<V: Vehicle>(
         event: EVENT,
         source,
     })?;
-    let mut probe = Probe::new(x1, speed / settings.acceleration);
-    probe.ride = Some(
-        RideSink::new(settings.ride_interval, 0.0)
-            .map_err(|_| EventError::Setting {
-                event: EVENT,
-                what: "the ride interval (s)",
-                range: "more than 0 and at most 0.002",
-                value: settings.ride_interval,
-            })?
-            .over_stretch(x0, x1),
-    );
-    // Long enough for the stretch at half the speed asked; the probe ends
-    // the run when the stretch is measured.
+    // Long enough for the stretch at half the speed asked; the run ends
+    // when the stretch is measured.
     let duration = speed / settings.acceleration + 2.0 * (x1 - ramp_distance) / speed;
-    drive::<V>(
+    let run = measure_ride::<V>(
         settings,
+        EVENT,
         Terrain::profile(profile),
-        ramp(speed, settings.acceleration),
+        speed,
+        (x0, x1),
         duration,
-        settings.ride_interval,
-        &mut probe,
-        (EVENT, speed, "m/s"),
     )?;
-    let figures = probe.figures().expect("the probe measured the ride");
-    let time = figures.samples as f64 * settings.ride_interval;
-    let measured = (probe.x.min(x1) - x0).max(0.0);
     Ok(RidePoint {
         speed_asked: speed,
-        speed: if time > 0.0 { measured / time } else { 0.0 },
-        figures,
-        measured,
-        stalled: probe.stalled,
+        speed: run.speed,
+        figures: run.figures,
+        measured: run.measured,
+        stalled: run.stalled,
     })
 }
 

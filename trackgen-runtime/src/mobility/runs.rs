@@ -202,6 +202,59 @@ pub(super) fn drive<V: Vehicle>(
     .map_err(|failure| run_error(event, parameter, unit, failure.error))
 }
 
+/// The ride of a run over a stretch of ground.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Measured {
+    /// The seat's figures over the stretch.
+    pub figures: RideFigures,
+    /// The hull's mean speed over it, m/s.
+    pub speed: f64,
+    /// The length measured, m.
+    pub measured: f64,
+    /// Whether the hull stalled, or the run ended before the stretch's
+    /// end.
+    pub stalled: bool,
+}
+
+/// `V` asked for `speed` (m/s, reached at the settings' acceleration) on
+/// `terrain` for at most `duration` s, the seat's ride measured while the
+/// hull's x is in `stretch` (m); the run ends at the stretch's end.
+pub(super) fn measure_ride<V: Vehicle>(
+    settings: &EventSettings,
+    event: &'static str,
+    terrain: Terrain,
+    speed: f64,
+    (x0, x1): (f64, f64),
+    duration: f64,
+) -> Result<Measured, EventError> {
+    let mut probe = Probe::new(x1);
+    let sink = RideSink::new(settings.ride_interval, 0.0).map_err(|_| EventError::Setting {
+        event,
+        what: "the ride interval (s)",
+        range: "more than 0 and at most 0.002",
+        value: settings.ride_interval,
+    })?;
+    probe.ride = Some(sink.over_stretch(x0, x1));
+    drive::<V>(
+        settings,
+        terrain,
+        ramp(speed, settings.acceleration),
+        duration,
+        settings.ride_interval,
+        &mut probe,
+        (event, speed, "m/s"),
+    )?;
+    let figures = probe.figures().expect("the probe measured the ride");
+    let time = figures.samples as f64 * settings.ride_interval;
+    let measured = (probe.x.min(x1) - x0).max(0.0);
+    Ok(Measured {
+        figures,
+        speed: if time > 0.0 { measured / time } else { 0.0 },
+        measured,
+        stalled: probe.stalled || probe.x < x1,
+    })
+}
+
 /// A speed ramp at `acceleration` (m/s²) from rest to `speed` (m/s).
 pub(super) fn ramp(speed: f64, acceleration: f64) -> impl Fn(f64) -> f64 + Send + 'static {
     move |t| (acceleration * t).min(speed)
@@ -231,9 +284,6 @@ pub(super) struct Probe {
     pub ride: Option<RideSink>,
     /// The hull's x that ends the run, m.
     pub goal: f64,
-    /// After this time, s, a hull that moved less than [`STALL_DISTANCE`]
-    /// in [`STALL_TIME`] has stalled.
-    pub stall_after: f64,
     columns: Option<[usize; 2]>,
     /// The hull's x at the last row, m.
     pub x: f64,
@@ -254,20 +304,19 @@ pub(super) struct Probe {
     pub mark: Option<(f64, f64)>,
 }
 
-/// A hull moving less than this, m, in [`STALL_TIME`] (after the speed
-/// ramp) has stalled: 3 cm/s on average, a thirtieth of the crawl.
+/// A hull moving less than this, m, in [`STALL_TIME`] has stalled: 3 cm/s
+/// on average, a thirtieth of the crawl. Watched from the start: from
+/// rest at the events' 1 m/s² a hull covers 1.1 m in the first window.
 pub const STALL_DISTANCE: f64 = 0.05;
 /// The time over which [`STALL_DISTANCE`] is checked, s.
 pub const STALL_TIME: f64 = 1.5;
 
 impl Probe {
-    /// Watches for the hull to reach `goal` (m) or stall after
-    /// `stall_after` (s).
-    pub fn new(goal: f64, stall_after: f64) -> Probe {
+    /// Watches for the hull to reach `goal` (m) or stall.
+    pub fn new(goal: f64) -> Probe {
         Probe {
             ride: None,
             goal,
-            stall_after,
             columns: None,
             x: f64::NAN,
             reached: f64::NEG_INFINITY,
@@ -328,17 +377,15 @@ impl Sink for Probe {
         if x >= self.goal && ride_done {
             return Err(SinkError::Done);
         }
-        if t >= self.stall_after {
-            // The first check (NaN before it) starts the watch.
-            if self.check.0.is_nan() {
-                self.check = (t, x);
-            } else if t - self.check.0 >= STALL_TIME {
-                if x - self.check.1 < STALL_DISTANCE {
-                    self.stalled = true;
-                    return Err(SinkError::Done);
-                }
-                self.check = (t, x);
+        // The first row (NaN before it) starts the watch.
+        if self.check.0.is_nan() {
+            self.check = (t, x);
+        } else if t - self.check.0 >= STALL_TIME {
+            if x - self.check.1 < STALL_DISTANCE {
+                self.stalled = true;
+                return Err(SinkError::Done);
             }
+            self.check = (t, x);
         }
         Ok(())
     }

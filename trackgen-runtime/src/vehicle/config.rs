@@ -4,7 +4,7 @@
 //! joints, wheels, shoes, teeth) is compiled in ([`Geometry`](super::Geometry)).
 
 use super::fitted::ContactLawSet;
-use super::{ConfigError, Drive, Powertrain, TorqueCap};
+use super::{Brake, ConfigError, Drive, Powertrain, TorqueCap};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
 use crate::contact::soil::Soil;
@@ -46,6 +46,9 @@ pub struct VehicleConfig {
     /// drive may give at each sprocket speed while it drives. `None`
     /// (default): the drive's own limit alone.
     pub powertrain: Option<Powertrain>,
+    /// The brake on the sprocket, applied from its time on ([`Brake`]):
+    /// `None` (default), no brake.
+    pub brake: Option<Brake>,
     /// A drawbar load, N: a horizontal force pulling the chassis back at
     /// its centroid (negative pushes it forward). Default 0. The energy it
     /// takes out is booked with the dissipated work.
@@ -79,6 +82,7 @@ impl VehicleConfig {
             arms,
             drive,
             powertrain: None,
+            brake: None,
             drawbar_pull: 0.0,
             tension_link: 1,
             closure: ClosureMethod::Declared,
@@ -94,6 +98,9 @@ impl VehicleConfig {
         self.drive.check()?;
         if let Some(powertrain) = &self.powertrain {
             powertrain.check()?;
+        }
+        if let Some(brake) = &self.brake {
+            brake.check()?;
         }
         let pair = |pair| move |source| ConfigError::Contact { pair, source };
         self.ground.check().map_err(pair("ground"))?;

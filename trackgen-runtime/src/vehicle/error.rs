@@ -3,7 +3,7 @@
 
 use thiserror::Error;
 
-use super::{DriveError, PowertrainError};
+use super::{BrakeError, DriveError, PowertrainError};
 use crate::assembly::AssemblyError;
 use crate::closure::ClosureError;
 use crate::contact::TerrainError;
@@ -32,6 +32,9 @@ pub enum ConfigError {
     /// The powertrain's figures make no drive.
     #[error("powertrain: {0}")]
     Powertrain(#[from] PowertrainError),
+    /// The brake's figures.
+    #[error(transparent)]
+    Brake(#[from] BrakeError),
     /// The arms configured are not one per arm of the chassis.
     #[error(
         "the configured arms act on bodies {configured:?}; the chassis has arms at bodies {declared:?}"

@@ -14,6 +14,7 @@
 
 pub mod arms;
 mod books;
+mod brake;
 mod config;
 mod declared;
 mod drive;
@@ -30,6 +31,7 @@ mod record;
 mod system;
 mod workspace;
 
+pub use brake::{Brake, BrakeError};
 pub use config::VehicleConfig;
 pub use declared::{Vehicle, VehicleDynamics, build};
 pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap};

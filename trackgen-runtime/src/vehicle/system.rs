@@ -175,6 +175,23 @@ where
         })
     }
 
+    /// Applies a pending brake whose time has come: its law replaces the
+    /// drive from now on, the engine is declutched, and the integral (the
+    /// brake's elastic stage, `−φ`) starts at 0. Whether it did (the
+    /// integrator then restarts).
+    fn apply_brake(&mut self, t: f64, y: &mut [f64]) -> bool {
+        match self.config.brake {
+            Some(brake) if t >= brake.from => {
+                self.config.brake = None;
+                self.config.drive = brake.as_drive();
+                self.config.powertrain = None;
+                y[self.layout.integral] = 0.0;
+                true
+            }
+            _ => false,
+        }
+    }
+
     /// The track subsystem.
     pub fn track(&self) -> &TrackSystem<T, DT> {
         self.bodies.first()
@@ -861,6 +878,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let nb = self.bodies.dimension();
         let mut restart = self.bodies.after_step(t, &mut y[..nb], switched)?;
         restart |= self.press_soil(t, y)?;
+        restart |= self.apply_brake(t, y);
         Ok(restart)
     }
 }
