@@ -13,20 +13,21 @@
 //! curves: ride-limiting speed against roughness, half-round speed against
 //! height, speed against grade) and `report.html` (the tables and the
 //! curves in one file). It prints a summary table; with `--json`, one
-//! JSON object per result per line (`event`, `parameter`, `value`,
-//! `relation`, `unit`, `runs`; SI units: roughness and heights in m,
+//! JSON object per result per line (`event`, `parameter`, `quantity`,
+//! `value`, `relation` (`=`, `>` beyond the range, `<` before it,
+//! `stalled`, `failed`), `unit`, `runs`, `failure`; SI units: roughness and heights in m,
 //! speeds in m/s, grades as rise over run). `--quick`: one parameter per
 //! event at loose search tolerances, a smoke test.
 //!
 //! A run that fails is reported as a failure (the event, its parameter,
 //! the time and the cause) and the other events still run; the command
-//! then exits with status 1.
+//! then exits with status 1. A vehicle that stalls where a speed is
+//! searched is reported as `stalled`, with where it stopped.
 
 use std::fmt::Write as _;
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::Mutex;
 use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
@@ -85,7 +86,7 @@ fn event_name(s: &str) -> Result<&'static str, String> {
     })
 }
 
-/// One answer: a limit, or a quantity at a parameter.
+/// One answer: a limit, a quantity at a parameter, or why there is none.
 #[derive(Debug, Clone)]
 struct Row {
     event: &'static str,
@@ -95,34 +96,63 @@ struct Row {
     /// What was found and its unit.
     quantity: &'static str,
     value: f64,
+    /// `=`, `>` (beyond the searched range), `<` (before it), or, without
+    /// an answer, `stalled` or `failed`.
     relation: &'static str,
     unit: &'static str,
     runs: usize,
     wall: f64,
     search: Option<Search>,
+    /// Why there is no answer.
+    failure: Option<String>,
 }
 
-/// One piece of work: an event at one parameter.
-type Task<'a> = Box<dyn Fn() -> Result<Row, EventError> + Send + Sync + 'a>;
+/// What a task found: a limit's search, or one quantity from one run.
+enum Found {
+    Limit(Search),
+    Value(f64),
+}
 
-fn limit_row(
+/// One piece of work: an event at one parameter, and what it reports.
+struct Task<'a> {
     event: &'static str,
     parameter: Option<(&'static str, f64, &'static str)>,
     quantity: &'static str,
     unit: &'static str,
-    search: Search,
-    wall: f64,
-) -> Row {
-    Row {
-        event,
-        parameter,
-        quantity,
-        value: search.limit.value(),
-        relation: search.limit.relation(),
-        unit,
-        runs: search.runs(),
-        wall,
-        search: Some(search),
+    run: Box<dyn Fn() -> Result<Found, EventError> + Send + Sync + 'a>,
+}
+
+impl Task<'_> {
+    /// Runs it: its row, with the wall time it took.
+    fn row(&self) -> Row {
+        let start = Instant::now();
+        let found = (self.run)();
+        let wall = start.elapsed().as_secs_f64();
+        let row = |value, relation, runs, search, failure| Row {
+            event: self.event,
+            parameter: self.parameter,
+            quantity: self.quantity,
+            value,
+            relation,
+            unit: self.unit,
+            runs,
+            wall,
+            search,
+            failure,
+        };
+        match found {
+            Ok(Found::Limit(s)) => {
+                row(s.limit.value(), s.limit.relation(), s.runs(), Some(s), None)
+            }
+            Ok(Found::Value(v)) => row(v, "=", 1, None, None),
+            Err(e) => {
+                let relation = match e {
+                    EventError::Stalled { .. } => "stalled",
+                    _ => "failed",
+                };
+                row(f64::NAN, relation, 0, None, Some(e.to_string()))
+            }
+        }
     }
 }
 
@@ -133,109 +163,81 @@ fn tasks<'a, V: Vehicle>(
     quick: bool,
 ) -> Vec<Task<'a>> {
     const INCH: f64 = 0.0254;
-    let roughnesses: &[f64] = if quick {
-        &[1.0]
-    } else {
-        &[0.5, 1.0, 1.5, 2.0, 3.0, 4.0]
-    };
-    let heights: &[f64] = if quick {
-        &[8.0]
-    } else {
-        &[4.0, 6.0, 8.0, 10.0, 12.0]
-    };
-    let grades: &[f64] = if quick {
-        &[0.1]
-    } else {
-        &[0.1, 0.2, 0.3, 0.4, 0.5, 0.6]
-    };
+    let pick = |all: &'static [f64], one: &'static [f64]| if quick { one } else { all };
+    let roughnesses = pick(&[0.5, 1.0, 1.5, 2.0, 3.0, 4.0], &[1.0]);
+    let heights = pick(&[4.0, 6.0, 8.0, 10.0, 12.0], &[8.0]);
+    let grades = pick(&[0.1, 0.2, 0.3, 0.4, 0.5, 0.6], &[0.1]);
     let mut out: Vec<Task<'a>> = Vec::new();
-    let timed = |f: &dyn Fn() -> Result<Search, EventError>| {
-        let start = Instant::now();
-        f().map(|s| (s, start.elapsed().as_secs_f64()))
-    };
     for &event in events {
+        let task = |parameter, quantity, unit, run| Task {
+            event,
+            parameter,
+            quantity,
+            unit,
+            run,
+        };
         match event {
             "ride" => {
                 for &r in roughnesses {
-                    out.push(Box::new(move || {
-                        let roughness = ride::Roughness {
-                            rms: r * INCH,
-                            seed: 1,
-                        };
-                        let (s, wall) =
-                            timed(&|| ride::limiting_speed::<V>(settings, footprint, roughness))?;
-                        Ok(limit_row(
-                            event,
-                            Some(("roughness", r * INCH, "m")),
-                            "ride-limiting speed",
-                            "m/s",
-                            s,
-                            wall,
-                        ))
-                    }));
+                    let roughness = ride::Roughness {
+                        rms: r * INCH,
+                        seed: 1,
+                    };
+                    out.push(task(
+                        Some(("roughness", r * INCH, "m")),
+                        "ride-limiting speed",
+                        "m/s",
+                        Box::new(move || {
+                            ride::limiting_speed::<V>(settings, footprint, roughness)
+                                .map(Found::Limit)
+                        }),
+                    ));
                 }
             }
             "half-round" => {
                 for &h in heights {
-                    out.push(Box::new(move || {
-                        let (s, wall) = timed(&|| {
+                    out.push(task(
+                        Some(("height", h * INCH, "m")),
+                        "speed at the peak limit",
+                        "m/s",
+                        Box::new(move || {
                             obstacle::half_round_speed::<V>(settings, footprint, h * INCH)
-                        })?;
-                        Ok(limit_row(
-                            event,
-                            Some(("height", h * INCH, "m")),
-                            "speed at the peak limit",
-                            "m/s",
-                            s,
-                            wall,
-                        ))
-                    }));
+                                .map(Found::Limit)
+                        }),
+                    ));
                 }
             }
-            "step" | "gap" | "ditch" | "barrier" => out.push(Box::new(move || {
-                let search = match event {
-                    "step" => obstacle::step::<V>,
-                    "gap" => obstacle::gap::<V>,
-                    "ditch" => obstacle::ditch::<V>,
-                    _ => obstacle::barrier::<V>,
+            "step" | "gap" | "ditch" | "barrier" => {
+                let (search, quantity): (fn(&EventSettings, &Footprint) -> _, _) = match event {
+                    "step" => (obstacle::step::<V>, "highest step"),
+                    "gap" => (obstacle::gap::<V>, "widest gap"),
+                    "ditch" => (obstacle::ditch::<V>, "deepest ditch"),
+                    _ => (obstacle::barrier::<V>, "highest barrier"),
                 };
-                let (s, wall) = timed(&|| search(settings, footprint))?;
-                let quantity = match event {
-                    "step" => "highest step",
-                    "gap" => "widest gap",
-                    "ditch" => "deepest ditch",
-                    _ => "highest barrier",
-                };
-                Ok(limit_row(event, None, quantity, "m", s, wall))
-            })),
+                out.push(task(
+                    None,
+                    quantity,
+                    "m",
+                    Box::new(move || search(settings, footprint).map(Found::Limit)),
+                ));
+            }
             "grade" => {
-                out.push(Box::new(move || {
-                    let (s, wall) = timed(&|| grade::steepest::<V>(settings, footprint))?;
-                    Ok(limit_row(
-                        event,
-                        None,
-                        "steepest grade",
-                        "rise over run",
-                        s,
-                        wall,
-                    ))
-                }));
+                out.push(task(
+                    None,
+                    "steepest grade",
+                    "rise over run",
+                    Box::new(move || grade::steepest::<V>(settings, footprint).map(Found::Limit)),
+                ));
                 for &g in grades {
-                    out.push(Box::new(move || {
-                        let start = Instant::now();
-                        let climb = grade::speed_on::<V>(settings, footprint, g)?;
-                        Ok(Row {
-                            event,
-                            parameter: Some(("grade", g, "rise over run")),
-                            quantity: "speed at full power",
-                            value: climb.speed,
-                            relation: "=",
-                            unit: "m/s",
-                            runs: 1,
-                            wall: start.elapsed().as_secs_f64(),
-                            search: None,
-                        })
-                    }));
+                    out.push(task(
+                        Some(("grade", g, "rise over run")),
+                        "speed at full power",
+                        "m/s",
+                        Box::new(move || {
+                            grade::speed_on::<V>(settings, footprint, g)
+                                .map(|c| Found::Value(c.speed))
+                        }),
+                    ));
                 }
             }
             _ => unreachable!("events are parsed from EVENTS"),
@@ -276,27 +278,17 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
     {
         bar.set_style(style);
     }
-    let failures = Mutex::new(Vec::new());
     // Each task is deterministic and independent: the results do not
-    // depend on the order rayon runs them in.
-    let mut rows: Vec<(usize, Row)> = work
+    // depend on the order rayon runs them in (collect keeps the order).
+    let rows: Vec<Row> = work
         .par_iter()
-        .enumerate()
-        .filter_map(|(i, task)| {
-            let result = task();
+        .map(|task| {
+            let row = task.row();
             bar.inc(1);
-            match result {
-                Ok(row) => Some((i, row)),
-                Err(e) => {
-                    failures.lock().unwrap().push(e.to_string());
-                    None
-                }
-            }
+            row
         })
         .collect();
     bar.finish_and_clear();
-    rows.sort_by_key(|(i, _)| *i);
-    let rows: Vec<Row> = rows.into_iter().map(|(_, r)| r).collect();
     let wall = started.elapsed().as_secs_f64();
 
     let dir = args
@@ -310,10 +302,13 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
             println!("{}", json(row));
         }
     }
-    let failures = failures.into_inner().unwrap();
-    for f in &failures {
-        eprintln!("failed: {f}");
+    for row in &rows {
+        if let Some(why) = &row.failure {
+            eprintln!("{}: {why}", row.relation);
+        }
     }
+    // A stall is an answer about the vehicle; a failed run is not.
+    let failed = rows.iter().any(|r| r.relation == "failed");
     match written {
         Ok(files) => eprintln!("wrote {}/{{{}}}", dir.display(), files.join(", ")),
         Err(e) => {
@@ -321,10 +316,10 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
             return ExitCode::FAILURE;
         }
     }
-    if failures.is_empty() {
-        ExitCode::SUCCESS
-    } else {
+    if failed {
         ExitCode::FAILURE
+    } else {
+        ExitCode::SUCCESS
     }
 }
 
@@ -332,6 +327,16 @@ fn parameter_text(row: &Row) -> String {
     match row.parameter {
         Some((what, value, unit)) => format!("{what} {value:.4} {unit}"),
         None => String::new(),
+    }
+}
+
+/// The value with its relation: `5.416`, `> 20.000`, `< 1.000`, or the
+/// word for no answer (`stalled`, `failed`).
+fn value_text(r: &Row) -> String {
+    match r.relation {
+        "=" => format!("{:.3}", r.value),
+        ">" | "<" => format!("{} {:.3}", r.relation, r.value),
+        word => word.to_string(),
     }
 }
 
@@ -347,12 +352,11 @@ fn print_summary(name: &str, rows: &[Row], wall: f64) {
     );
     for r in rows {
         println!(
-            "{:<11} {:<28} {:<26} {:>1}{:>11.3}  {:<14} {:>5} {:>8.1}",
+            "{:<11} {:<28} {:<26} {:>12}  {:<14} {:>5} {:>8.1}",
             r.event,
             parameter_text(r),
             r.quantity,
-            if r.relation == "=" { " " } else { r.relation },
-            r.value,
+            value_text(r),
             r.unit,
             r.runs,
             r.wall
@@ -361,29 +365,20 @@ fn print_summary(name: &str, rows: &[Row], wall: f64) {
 }
 
 fn json(row: &Row) -> String {
-    let number = |v: f64| {
-        if v.is_finite() {
-            format!("{v}")
-        } else {
-            "null".to_string()
-        }
-    };
-    let parameter = match row.parameter {
-        Some((what, value, unit)) => format!(
-            r#"{{"name":"{what}","value":{},"unit":"{unit}"}}"#,
-            number(value)
-        ),
-        None => "null".to_string(),
-    };
-    format!(
-        r#"{{"event":"{}","parameter":{parameter},"quantity":"{}","value":{},"relation":"{}","unit":"{}","runs":{}}}"#,
-        row.event,
-        row.quantity,
-        number(row.value),
-        row.relation,
-        row.unit,
-        row.runs
-    )
+    let number = |v: f64| v.is_finite().then_some(v);
+    serde_json::json!({
+        "event": row.event,
+        "parameter": row.parameter.map(|(name, value, unit)| {
+            serde_json::json!({"name": name, "value": number(value), "unit": unit})
+        }),
+        "quantity": row.quantity,
+        "value": number(row.value),
+        "relation": row.relation,
+        "unit": row.unit,
+        "runs": row.runs,
+        "failure": row.failure,
+    })
+    .to_string()
 }
 
 fn write_all(
@@ -411,6 +406,7 @@ fn write_all(
             "unit",
             "runs",
             "wall_s",
+            "failure",
         ])?;
         for r in mine {
             let (p, pv, pu) = r
@@ -426,6 +422,7 @@ fn write_all(
                 r.unit,
                 &r.runs.to_string(),
                 &format!("{:.3}", r.wall),
+                r.failure.as_deref().unwrap_or(""),
             ])?;
         }
         w.flush()?;
@@ -538,25 +535,21 @@ fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
          td.n{{text-align:right}}tr:nth-child(even){{background:#f4f4f4}}</style></head><body>\
          <h1>{name}: pitch-plane mobility events</h1>\
          <p>{} results from {runs} runs in {wall:.1} s of wall time. A limit marked &gt; lies beyond \
-         the searched range; &lt; before it. Events and criteria: <code>shared/spec/mobility.md</code>; \
+         the searched range, &lt; before it; <i>stalled</i>: the vehicle did not get over (hover for where). Events and criteria: <code>shared/spec/mobility.md</code>; \
          the guide's Mobility chapter.</p>{svg}<table><tr><th>event</th><th>parameter</th>\
          <th>quantity</th><th>value</th><th>unit</th><th>runs</th><th>wall, s</th></tr>",
         rows.len()
     );
     for r in rows {
-        let relation = match r.relation {
-            ">" => "&gt; ",
-            "<" => "&lt; ",
-            _ => "",
-        };
+        let value = value_text(r).replace('>', "&gt;").replace('<', "&lt;");
+        let title = r.failure.as_deref().unwrap_or("").replace('"', "&quot;");
         let _ = write!(
             html,
-            "<tr><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{relation}{:.3}</td><td>{}</td>\
+            "<tr title=\"{title}\"><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">{value}</td><td>{}</td>\
              <td class=\"n\">{}</td><td class=\"n\">{:.1}</td></tr>",
             r.event,
             parameter_text(r),
             r.quantity,
-            r.value,
             r.unit,
             r.runs,
             r.wall

@@ -36,6 +36,7 @@ mod pinocchio;
 mod powertrain;
 mod private_paths;
 mod pure_evaluation;
+mod ride_chain;
 mod rosenbrock_w;
 mod run_settings_properties;
 mod seat;

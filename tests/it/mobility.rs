@@ -7,6 +7,8 @@
 //!   criterion passing everywhere is `Beyond` the range, failing
 //!   everywhere `Before` it; an error in a trial is the search's error,
 //!   never a limit.
+//! * A vehicle that stalls where a speed is searched (a half-round higher
+//!   than it climbs) is `EventError::Stalled`, not a speed limit.
 //! * A run that diverges (RK4 at a step far beyond the M113's stability,
 //!   0.05 s against contact modes of ~1e3 /s) makes the step event an
 //!   `EventError::Run` naming the event, the parameter and the time.
@@ -79,7 +81,7 @@ fn the_search_brackets_a_known_crossing_in_bisection_s_runs() {
     assert_eq!((beyond.runs(), beyond.limit.relation()), (2, ">"));
     let before = bisect(0.0, 1.0, 1e-3, criterion(-1.0)).unwrap();
     assert_eq!(before.limit, Limit::Before { start: 0.0 });
-    assert!(before.limit.value().is_nan());
+    assert_eq!((before.limit.value(), before.limit.relation()), (0.0, "<"));
     assert_eq!(before.runs(), 1);
     // A trial's error ends the search as that error.
     let mut calls = 0;
@@ -120,6 +122,28 @@ fn a_diverging_run_is_a_failure_not_a_limit() {
             assert!(time.is_finite() && time >= 0.0, "{time}");
         }
         other => panic!("a diverging run gave {other:?}"),
+    }
+}
+
+/// A 12 in (0.3048 m) half-round is higher than the M113 climbs from a
+/// crawl on its engine (its step limit is 0.26 m): the speed search's
+/// first trial, at 1 m/s, stalls in front of it, and the search says so
+/// rather than reporting a speed limit.
+#[test]
+fn a_stall_in_a_speed_search_is_reported_as_a_stall() {
+    let settings = EventSettings::new(m113::powertrain());
+    let footprint = Footprint::of::<M113>("half-round").unwrap();
+    match obstacle::half_round_speed::<M113>(&settings, &footprint, 0.3048) {
+        Err(EventError::Stalled {
+            event,
+            parameter,
+            reached,
+            ..
+        }) => {
+            assert_eq!((event, parameter), ("half-round", 1.0));
+            assert!(reached.is_finite(), "{reached}");
+        }
+        other => panic!("{other:?}"),
     }
 }
 

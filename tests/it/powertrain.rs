@@ -8,6 +8,8 @@
 //!   (`shared/spec/mobility.md` §4), and the most power, the fraction of
 //!   the map's largest `T ω` (past 2800 rpm: 162 kW at 3000), is a scan's
 //!   to 1e-9.
+//! * Below the speed of its map's peak torque the clutch slips: the
+//!   Marder gets its 2702 N m through the lowest gear from rest.
 //! * Every envelope's slope against a central difference of the envelope
 //!   itself (step 1e-6 rad/s, away from the kinks between gears and map
 //!   points), to 1e-6 relative plus the quotient's rounding: on a linear
@@ -51,7 +53,7 @@ fn the_m113s_envelope_is_the_spec_s_engine_through_its_gears() {
         (at_rest - want).abs() <= 1e-12 * want,
         "{at_rest} vs {want}"
     );
-    assert_eq!(slope, 0.0, "flat below the map's first speed");
+    assert_eq!(slope, 0.0, "flat below the speed of the map's peak");
     // The spec's figure: 395 lb·ft at 2800 rpm is 157 kW.
     let rpm = std::f64::consts::PI / 30.0;
     let at_2800 = 395.0 * lb_ft * 2800.0 * rpm;
@@ -89,6 +91,30 @@ fn the_m113s_envelope_is_the_spec_s_engine_through_its_gears() {
     // Beyond the top gear's cut-off nothing drives.
     let top = 3200.0 * std::f64::consts::PI / 30.0 * 0.962 * 0.5;
     assert_eq!(powertrain.limit(top * 1.01), (0.0, 0.0));
+}
+
+/// The Marder's map peaks at 2702 N m at 1499 rpm, above its first point
+/// (700 N m at 702 rpm): from rest until the lowest gear's engine speed
+/// reaches 1499 rpm the clutch slips and the sprocket gets the peak
+/// through 0.1708 (to 1e-12: the same products), not the first point's
+/// 700 N m.
+#[test]
+fn below_its_peak_torque_speed_the_clutch_slips_at_the_peak() {
+    let powertrain = trackgen::vehicles::marder::powertrain();
+    let fraction = trackgen::vehicles::marder::DRIVELINE_EFFICIENCY * 0.5;
+    let want = fraction * 2702.0 / 0.1708;
+    let rpm = std::f64::consts::PI / 30.0;
+    for engine_rpm in [0.0, 300.0, 702.0, 1000.0, 1498.0] {
+        let (torque, slope) = powertrain.limit(engine_rpm * rpm * 0.1708);
+        assert!(
+            (torque - want).abs() <= 1e-12 * want,
+            "{engine_rpm} rpm in the lowest gear: {torque} vs {want}"
+        );
+        assert_eq!(slope, 0.0);
+    }
+    // Past the peak the map's own torque, falling.
+    let (past, slope) = powertrain.limit(2004.0 * rpm * 0.1708);
+    assert!(past < want && slope < 0.0, "{past}, {slope}");
 }
 
 #[test]

@@ -51,6 +51,20 @@ pub enum EventError {
         #[source]
         source: RoughnessError,
     },
+    /// The vehicle stalled where the event asks for a speed (on a ride
+    /// course, on a half-round): it did not get over, which is neither a
+    /// pass nor a speed limit.
+    #[error("{event}: the vehicle stalled at {parameter} {unit}, the hull at x = {reached} m")]
+    Stalled {
+        /// The event.
+        event: &'static str,
+        /// The speed asked.
+        parameter: f64,
+        /// Its unit.
+        unit: &'static str,
+        /// How far the hull got, m.
+        reached: f64,
+    },
     /// A run failed: the integrator gave up, or a sink refused a row.
     #[error("{event}: the run at {parameter} {unit} failed at t = {time} s: {source}")]
     Run {

@@ -3,7 +3,7 @@
 //! limit (2.5 g), and the largest step, gap, ditch and barrier crossed
 //! from a crawl at full power.
 
-use super::runs::{Footprint, Probe, drive, measure_ride, ramp};
+use super::runs::{Footprint, Probe, SpeedTrial, drive, measure_ride, ramp, search_speed};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
@@ -49,6 +49,8 @@ pub struct HalfRoundPoint {
     pub peak_g: f64,
     /// Whether the vehicle stalled on the obstacle.
     pub stalled: bool,
+    /// How far the hull got, m.
+    pub reached: f64,
 }
 
 /// `V` over a half-round of `height` (m, its radius) at the speed asked,
@@ -70,43 +72,47 @@ pub fn half_round_at<V: Vehicle>(
     )?;
     let x0 = at - 1.0 - footprint.front;
     let x1 = far + 3.0 - footprint.rear;
-    let duration =
-        speed / settings.acceleration + 2.0 * (x1 - ramp_distance).max(1.0) / speed + 5.0;
     let run = measure_ride::<V>(
         settings,
         HALF_ROUND,
         Terrain::profile(profile),
         speed,
         (x0, x1),
-        duration,
     )?;
     Ok(HalfRoundPoint {
         speed_asked: speed,
         speed: run.speed,
         peak_g: run.figures.peak_g,
         stalled: run.stalled,
+        reached: run.reached,
     })
 }
 
 /// The speed over a half-round of `height` (m) at which the seat's peak
 /// reaches the settings' limit, by bisection from 1 m/s to the
 /// powertrain's top speed. Each trial's figure is the peak, g; a vehicle
-/// that does not get over fails the trial.
+/// that does not get over is [`EventError::Stalled`], neither a pass nor
+/// a limit.
 pub fn half_round_speed<V: Vehicle>(
     settings: &EventSettings,
     footprint: &Footprint,
     height: f64,
 ) -> Result<Search, EventError> {
     check_length(HALF_ROUND, "the height (m)", height, 2.0)?;
-    let top = settings.top_speed(footprint.sprocket_radius);
-    bisect(1.0_f64.min(top), top, settings.speed_tolerance, |speed| {
-        let point = half_round_at::<V>(settings, footprint, height, speed)?;
-        Ok(Trial {
-            parameter: speed,
-            figure: point.peak_g,
-            passed: !point.stalled && point.peak_g < settings.peak_limit,
-        })
-    })
+    search_speed(
+        settings,
+        footprint,
+        HALF_ROUND,
+        settings.peak_limit,
+        |speed| {
+            let point = half_round_at::<V>(settings, footprint, height, speed)?;
+            Ok(SpeedTrial {
+                figure: point.peak_g,
+                stalled: point.stalled,
+                reached: point.reached,
+            })
+        },
+    )
 }
 
 /// One attempt at an obstacle from a crawl.

@@ -3,8 +3,8 @@
 //! a random course of given roughness, and the ride-limiting speed, where
 //! the absorbed power reaches the limit (6 W, the NRMM's criterion).
 
-use super::runs::{Footprint, measure_ride};
-use super::search::{Search, Trial, bisect};
+use super::runs::{Footprint, SpeedTrial, measure_ride, search_speed};
+use super::search::Search;
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
 use crate::contact::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, Spectrum};
@@ -45,6 +45,8 @@ pub struct RidePoint {
     pub measured: f64,
     /// Whether the vehicle stalled on the course.
     pub stalled: bool,
+    /// How far the hull got, m.
+    pub reached: f64,
 }
 
 /// The ride of `V` over `roughness` at the speed asked, `speed` (m/s):
@@ -92,23 +94,14 @@ pub fn ride_at<V: Vehicle>(
         event: EVENT,
         source,
     })?;
-    // Long enough for the stretch at half the speed asked; the run ends
-    // when the stretch is measured.
-    let duration = speed / settings.acceleration + 2.0 * (x1 - ramp_distance) / speed;
-    let run = measure_ride::<V>(
-        settings,
-        EVENT,
-        Terrain::profile(profile),
-        speed,
-        (x0, x1),
-        duration,
-    )?;
+    let run = measure_ride::<V>(settings, EVENT, Terrain::profile(profile), speed, (x0, x1))?;
     Ok(RidePoint {
         speed_asked: speed,
         speed: run.speed,
         figures: run.figures,
         measured: run.measured,
         stalled: run.stalled,
+        reached: run.reached,
     })
 }
 
@@ -116,23 +109,27 @@ pub fn ride_at<V: Vehicle>(
 /// absorbed power reaches the settings' limit, by bisection between
 /// 1 m/s and the powertrain's top speed (or `max_speed`) to the settings'
 /// `speed_tolerance`. Each trial is a [`ride_at`] run; its figure is the
-/// absorbed power, W. A course the vehicle cannot cross (it stalls) fails
-/// the trial.
+/// absorbed power, W. A course the vehicle cannot cross (it stalls) is
+/// [`EventError::Stalled`]: neither a pass nor a limit.
 pub fn limiting_speed<V: Vehicle>(
     settings: &EventSettings,
     footprint: &Footprint,
     roughness: Roughness,
 ) -> Result<Search, EventError> {
-    let top = settings.top_speed(footprint.sprocket_radius);
-    bisect(1.0_f64.min(top), top, settings.speed_tolerance, |speed| {
-        let point = ride_at::<V>(settings, footprint, roughness, speed)?;
-        let power = point.figures.absorbed_power;
-        Ok(Trial {
-            parameter: speed,
-            figure: power,
-            passed: !point.stalled && power < settings.absorbed_power_limit,
-        })
-    })
+    search_speed(
+        settings,
+        footprint,
+        EVENT,
+        settings.absorbed_power_limit,
+        |speed| {
+            let point = ride_at::<V>(settings, footprint, roughness, speed)?;
+            Ok(SpeedTrial {
+                figure: point.figures.absorbed_power,
+                stalled: point.stalled,
+                reached: point.reached,
+            })
+        },
+    )
 }
 
 fn check_roughness(roughness: Roughness) -> Result<(), EventError> {

@@ -4,6 +4,7 @@
 use nalgebra::Vector2;
 
 use super::EventError;
+use super::search::{Search, Trial, bisect};
 use crate::contact::Terrain;
 use crate::integrate::Integrator;
 use crate::simulate::{
@@ -214,19 +215,24 @@ pub(super) struct Measured {
     /// Whether the hull stalled, or the run ended before the stretch's
     /// end.
     pub stalled: bool,
+    /// The furthest the hull got, m.
+    pub reached: f64,
 }
 
 /// `V` asked for `speed` (m/s, reached at the settings' acceleration) on
-/// `terrain` for at most `duration` s, the seat's ride measured while the
-/// hull's x is in `stretch` (m); the run ends at the stretch's end.
+/// `terrain`, the seat's ride measured while the hull's x is in `stretch`
+/// (m); the run ends at the stretch's end, or when the hull stalls. Its
+/// time limit lets the hull cover the stretch at a quarter of the speed
+/// asked (the engine may give less): a limit reached short of the
+/// stretch's end counts as a stall.
 pub(super) fn measure_ride<V: Vehicle>(
     settings: &EventSettings,
     event: &'static str,
     terrain: Terrain,
     speed: f64,
     (x0, x1): (f64, f64),
-    duration: f64,
 ) -> Result<Measured, EventError> {
+    let duration = speed / settings.acceleration + 4.0 * x1.max(1.0) / speed + 10.0;
     let mut probe = Probe::new(x1);
     let sink = RideSink::new(settings.ride_interval, 0.0).map_err(|_| EventError::Setting {
         event,
@@ -252,6 +258,44 @@ pub(super) fn measure_ride<V: Vehicle>(
         speed: if time > 0.0 { measured / time } else { 0.0 },
         measured,
         stalled: probe.stalled || probe.x < x1,
+        reached: probe.reached,
+    })
+}
+
+/// What a run at a speed gives a speed search: the criterion's figure,
+/// whether the vehicle stalled, and how far its hull got (m).
+pub(super) struct SpeedTrial {
+    pub figure: f64,
+    pub stalled: bool,
+    pub reached: f64,
+}
+
+/// The speed, from 1 m/s to the powertrain's top speed, at which the
+/// figure `run` gives reaches `limit` (passing below it), to the settings'
+/// `speed_tolerance`; a stall is [`EventError::Stalled`].
+pub(super) fn search_speed(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    event: &'static str,
+    limit: f64,
+    mut run: impl FnMut(f64) -> Result<SpeedTrial, EventError>,
+) -> Result<Search, EventError> {
+    let top = settings.top_speed(footprint.sprocket_radius);
+    bisect(1.0_f64.min(top), top, settings.speed_tolerance, |speed| {
+        let trial = run(speed)?;
+        if trial.stalled {
+            return Err(EventError::Stalled {
+                event,
+                parameter: speed,
+                unit: "m/s",
+                reached: trial.reached,
+            });
+        }
+        Ok(Trial {
+            parameter: speed,
+            figure: trial.figure,
+            passed: trial.figure < limit,
+        })
     })
 }
 

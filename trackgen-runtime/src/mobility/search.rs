@@ -45,18 +45,19 @@ pub enum Limit {
 }
 
 impl Limit {
-    /// The limit's value: the midpoint of its bracket, or the range's end
-    /// it lies beyond (`Beyond`), or NaN before the range.
+    /// The limit's value: the midpoint of its bracket, or the end of the
+    /// range it lies beyond (`Beyond`) or before (`Before`), as
+    /// [`relation`](Self::relation) says.
     pub fn value(&self) -> f64 {
         match *self {
             Limit::Found { value, .. } => value,
             Limit::Beyond { end } => end,
-            Limit::Before { .. } => f64::NAN,
+            Limit::Before { start } => start,
         }
     }
 
-    /// `=`, `>` or `<`: how [`value`](Self::value) relates to the limit
-    /// (`<` before the range: the limit is below its start).
+    /// `=`, `>` or `<`: how the limit relates to [`value`](Self::value)
+    /// (`<`: the limit is before the range's start, which failed).
     pub fn relation(&self) -> &'static str {
         match self {
             Limit::Found { .. } => "=",

@@ -24,10 +24,11 @@ pub enum Powertrain {
     /// chosen ideally (at each speed the gear giving the most torque), as
     /// a mobility model's tractive-effort envelope does: at sprocket speed
     /// `ω`, `max_g fraction · T(ω / r_g) / r_g` over the gears `r_g`
-    /// whose engine speed `ω / r_g` is on the map. Below the map's first
-    /// speed (a start, a clutch or converter slipping) the lowest gear
-    /// gives the map's first torque; beyond its last the engine gives
-    /// nothing.
+    /// whose engine speed `ω / r_g` is on the map. Below the speed of the
+    /// map's largest torque the clutch slips, the engine held at that
+    /// speed: a start or a crawl gets the map's largest torque through the
+    /// lowest gear (no torque converter's multiplication: the figures give
+    /// none); beyond the map's last speed the engine gives nothing.
     Engine {
         /// Full-load engine torque, N m, against engine speed, rad/s:
         /// speeds increasing, at least two points; torque linear between
@@ -181,14 +182,21 @@ impl Powertrain {
 }
 
 /// The map's torque at engine speed `w` and its slope: linear between the
-/// points, the first point's torque below the first speed (slope 0), none
-/// beyond the last; a negative torque (a cut-off's) is none.
+/// points, none beyond the last (a negative torque, a cut-off's, is none);
+/// below the speed of the map's largest torque, that torque (slope 0): the
+/// clutch slips with the engine held at its peak torque, as it does at a
+/// start or a crawl.
 fn map_at(map: &[(f64, f64)], w: f64) -> (f64, f64) {
-    let (Some(&first), Some(&last)) = (map.first(), map.last()) else {
+    let (Some(&last), Some(peak)) = (
+        map.last(),
+        map.iter()
+            .copied()
+            .reduce(|best, p| if p.1 > best.1 { p } else { best }),
+    ) else {
         return (0.0, 0.0);
     };
-    if w <= first.0 {
-        return (first.1.max(0.0), 0.0);
+    if w <= peak.0 {
+        return (peak.1.max(0.0), 0.0);
     }
     if w > last.0 {
         return (0.0, 0.0);
