@@ -2,7 +2,7 @@
 //!
 //! ```text
 //! cargo run --release --example mobility -- --vehicle m113 [--out FOLDER]
-//!     [--events ride,half-round,step,gap,ditch,barrier,grade] [--json] [--quick]
+//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil] [--json] [--quick]
 //! ```
 //!
 //! Runs the events of `trackgen::mobility` (each a limit found by
@@ -34,8 +34,9 @@ use clap::{Parser, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
 use plotters::prelude::*;
 use rayon::prelude::*;
+use trackgen::contact::soil::SoilPreset;
 use trackgen::mobility::search::Search;
-use trackgen::mobility::{EventError, EventSettings, Footprint, grade, obstacle, ride};
+use trackgen::mobility::{EventError, EventSettings, Footprint, grade, obstacle, ride, soil};
 use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::{m113, marder};
 
@@ -46,7 +47,7 @@ struct Args {
     #[arg(long, value_enum, default_value_t = Which::M113)]
     vehicle: Which,
     /// The events, comma-separated: ride, half-round, step, gap, ditch,
-    /// barrier, grade (default: all).
+    /// barrier, grade, soil (default: all).
     #[arg(long, value_delimiter = ',', value_parser = event_name)]
     events: Option<Vec<&'static str>>,
     /// Where to write, default out/mobility/<vehicle>.
@@ -67,7 +68,7 @@ enum Which {
 }
 
 /// Every event, in the order they are reported.
-const EVENTS: [&str; 7] = [
+const EVENTS: [&str; 8] = [
     "ride",
     "half-round",
     "step",
@@ -75,15 +76,15 @@ const EVENTS: [&str; 7] = [
     "ditch",
     "barrier",
     "grade",
+    "soil",
 ];
 
 fn event_name(s: &str) -> Result<&'static str, String> {
-    EVENTS.iter().find(|e| **e == s).copied().ok_or_else(|| {
-        format!(
-            "unknown event `{s}`: the events are {} (soil is not an event yet)",
-            EVENTS.join(", ")
-        )
-    })
+    EVENTS
+        .iter()
+        .find(|e| **e == s)
+        .copied()
+        .ok_or_else(|| format!("unknown event `{s}`: the events are {}", EVENTS.join(", ")))
 }
 
 /// One answer: a limit, a quantity at a parameter, or why there is none.
@@ -107,11 +108,20 @@ struct Row {
     failure: Option<String>,
 }
 
-/// What a task found: a limit's search, or one quantity from one run.
+/// What a task found: a limit's search, one quantity from one run, or a
+/// curve: quantities at parameters from `runs` runs.
 enum Found {
     Limit(Search),
     Value(f64),
+    Curve { points: Vec<Point>, runs: usize },
 }
+
+/// A curve's point: what was held fixed, the quantity, its value, how the
+/// value stands (`=`, or why there is none) and its unit.
+type Point = (Parameter, &'static str, f64, &'static str, &'static str);
+
+/// What was held fixed: its name, value and unit.
+type Parameter = Option<(&'static str, f64, &'static str)>;
 
 /// One piece of work: an event at one parameter, and what it reports.
 struct Task<'a> {
@@ -123,8 +133,8 @@ struct Task<'a> {
 }
 
 impl Task<'_> {
-    /// Runs it: its row, with the wall time it took.
-    fn row(&self) -> Row {
+    /// Runs it: its rows, with the wall time it took.
+    fn rows(&self) -> Vec<Row> {
         let start = Instant::now();
         let found = (self.run)();
         let wall = start.elapsed().as_secs_f64();
@@ -141,16 +151,33 @@ impl Task<'_> {
             failure,
         };
         match found {
-            Ok(Found::Limit(s)) => {
-                row(s.limit.value(), s.limit.relation(), s.runs(), Some(s), None)
-            }
-            Ok(Found::Value(v)) => row(v, "=", 1, None, None),
+            Ok(Found::Limit(s)) => vec![row(
+                s.limit.value(),
+                s.limit.relation(),
+                s.runs(),
+                Some(s),
+                None,
+            )],
+            Ok(Found::Value(v)) => vec![row(v, "=", 1, None, None)],
+            Ok(Found::Curve { points, runs }) => points
+                .into_iter()
+                .enumerate()
+                .map(|(k, (parameter, quantity, value, relation, unit))| Row {
+                    parameter,
+                    quantity,
+                    unit,
+                    // The runs and the time are the curve's, on its first row.
+                    runs: if k == 0 { runs } else { 0 },
+                    wall: if k == 0 { wall } else { 0.0 },
+                    ..row(value, relation, 0, None, None)
+                })
+                .collect(),
             Err(e) => {
                 let relation = match e {
                     EventError::Stalled { .. } => "stalled",
                     _ => "failed",
                 };
-                row(f64::NAN, relation, 0, None, Some(e.to_string()))
+                vec![row(f64::NAN, relation, 0, None, Some(e.to_string()))]
             }
         }
     }
@@ -240,6 +267,57 @@ fn tasks<'a, V: Vehicle>(
                     ));
                 }
             }
+            "soil" => {
+                let soils: &[SoilPreset] = if quick {
+                    &[SoilPreset::DrySand]
+                } else {
+                    &[SoilPreset::DrySand, SoilPreset::Clay]
+                };
+                let fractions = pick(&[0.1, 0.2, 0.3, 0.4, 0.5], &[0.2]);
+                for &preset in soils {
+                    out.push(task(
+                        None,
+                        "drawbar curve",
+                        "",
+                        Box::new(move || {
+                            let curve = soil::drawbar_curve::<V>(settings, preset, fractions)?;
+                            let name = preset.name();
+                            let mut points = vec![(
+                                Some((name, 0.0, "drawbar pull / weight")),
+                                "motion resistance / weight",
+                                curve[0].resistance_coefficient(),
+                                if curve[0].held { "=" } else { "not held" },
+                                "",
+                            )];
+                            for p in &curve[1..] {
+                                // A load the drive could not hold is no point
+                                // of the soil's curve.
+                                points.push((
+                                    Some((name, p.pull / curve[0].weight, "drawbar pull / weight")),
+                                    "slip",
+                                    if p.held && p.slip < 1.0 {
+                                        p.slip
+                                    } else {
+                                        f64::NAN
+                                    },
+                                    // A slip of 1 or more: the load drags the
+                                    // vehicle back, beyond what the soil holds.
+                                    match (p.held, p.slip < 1.0) {
+                                        (false, _) => "not held",
+                                        (true, false) => "dragged back",
+                                        (true, true) => "=",
+                                    },
+                                    "",
+                                ));
+                            }
+                            Ok(Found::Curve {
+                                runs: curve.len(),
+                                points,
+                            })
+                        }),
+                    ));
+                }
+            }
             _ => unreachable!("events are parsed from EVENTS"),
         }
     }
@@ -282,10 +360,10 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
     // depend on the order rayon runs them in (collect keeps the order).
     let rows: Vec<Row> = work
         .par_iter()
-        .map(|task| {
-            let row = task.row();
+        .flat_map_iter(|task| {
+            let rows = task.rows();
             bar.inc(1);
-            row
+            rows
         })
         .collect();
     bar.finish_and_clear();

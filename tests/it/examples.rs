@@ -776,8 +776,8 @@ fn stiff_vehicle_runs_the_implicit_method_where_stiffness_holds_the_step() {
     assert!(auto <= 1.2 * implicit, "{stdout}");
 }
 
-/// `mobility --quick --events ride,half-round --json`: one result per
-/// event, each a JSON line with the fields the issue names (SI units), a
+/// `mobility --quick --events ride,half-round,soil --json`: one result per
+/// speed event and the soil's two rows, each a JSON line with the fields the issue names (SI units), a
 /// CSV per event, the trials, the curves and the report written; the
 /// ride's limit is a speed the search ran between 1 m/s and the top speed
 /// (its trials bracket it: the largest passing trial is below 6 W and
@@ -792,7 +792,7 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
         &[
             "--quick",
             "--events",
-            "ride,half-round",
+            "ride,half-round,soil",
             "--json",
             "--out",
             dir.to_str().unwrap(),
@@ -806,7 +806,11 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
         .filter(|l| l.starts_with('{'))
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
         .collect();
-    assert_eq!(results.len(), 2, "{stdout}");
+    // The ride, the half-round, and the soil's two rows (the resistance,
+    // the slip at 0.2 of the weight).
+    assert_eq!(results.len(), 4, "{stdout}");
+    assert_eq!(results[2]["quantity"], "motion resistance / weight");
+    assert_eq!(results[3]["quantity"], "slip");
     for (result, event) in results.iter().zip(["ride", "half-round"]) {
         assert_eq!(result["event"], event);
         assert_eq!(result["unit"], "m/s");
@@ -849,8 +853,8 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
             .unwrap_or(0);
         assert!(len > 100, "{file}: {len} bytes");
     }
-    let refused = run(&mobility, &["--events", "ride,soil"], &dir);
+    let refused = run(&mobility, &["--events", "ride,mud"], &dir);
     assert!(!refused.status.success());
     let stderr = String::from_utf8_lossy(&refused.stderr);
-    assert!(stderr.contains("unknown event `soil`"), "{stderr}");
+    assert!(stderr.contains("unknown event `mud`"), "{stderr}");
 }

@@ -14,15 +14,17 @@
 //!   `EventError::Run` naming the event, the parameter and the time.
 //! * The ride over one seed's course twice, and on two threads at once,
 //!   gives the same figures bit for bit.
+//! * The soil event carries the weight and slips more under more load.
 //! * Bad input: a negative or NaN roughness, a negative height, a NaN
 //!   crawl speed, a speed above the settings' limit: each a
 //!   `EventError::Setting` naming what is wrong, before any run.
 
 use std::sync::Arc;
 
+use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 use trackgen::mobility::search::{Limit, Trial, bisect};
-use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride};
+use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride, soil};
 use trackgen::vehicles::m113::{self, M113};
 
 fn criterion(crossing: f64) -> impl FnMut(f64) -> Result<Trial, EventError> {
@@ -233,4 +235,30 @@ fn bad_input_is_refused_before_any_run() {
         message,
         "ride: the RMS roughness (m) must be more than 0 and at most 0.5, got -0.01"
     );
+}
+
+/// The soil event on dry sand: at no load the ground carries the weight
+/// (the mean normal force against `m g` from the declared masses, 0.5 %:
+/// the bounce of the hull over the shoes averages out over 4 s) and the
+/// sprocket drives against a positive motion resistance; the slip grows
+/// with the load (Wong's curve rises monotonically, and so must the
+/// simulated one).
+#[test]
+fn the_soil_event_carries_the_weight_and_slips_more_under_more_load() {
+    let settings = EventSettings::new(m113::powertrain());
+    let curve = soil::drawbar_curve::<M113>(&settings, SoilPreset::DrySand, &[0.2, 0.4]).unwrap();
+    let weight = crate::support::vehicle::m113_weight();
+    assert!(
+        (curve[0].weight - weight).abs() < 5e-3 * weight,
+        "{} N against {weight} N",
+        curve[0].weight
+    );
+    let resistance = curve[0].resistance_coefficient();
+    assert!(resistance > 0.0 && resistance < 0.3, "{resistance}");
+    assert!(
+        curve.windows(2).all(|w| w[1].slip > w[0].slip),
+        "{:?}",
+        curve.iter().map(|p| p.slip).collect::<Vec<_>>()
+    );
+    assert!((curve[2].pull - 0.4 * curve[0].weight).abs() < 1e-9 * weight);
 }

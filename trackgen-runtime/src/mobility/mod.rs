@@ -3,7 +3,8 @@
 //! terrain and the speed at which the driver's absorbed power reaches
 //! 6 W, the speed over a half-round obstacle at which the seat sees
 //! 2.5 g, the highest step and widest gap crossed from a crawl, the
-//! steepest grade climbed and the speed on grades at full power.
+//! steepest grade climbed and the speed on grades at full power, and the
+//! drawbar pull against slip and the motion resistance on a soft soil.
 //!
 //! Every event is a function generic over [`Vehicle`](crate::vehicle::Vehicle),
 //! driven by the vehicle's [`Powertrain`](crate::vehicle::Powertrain) through its own speed
@@ -21,6 +22,7 @@ pub mod obstacle;
 pub mod ride;
 mod runs;
 pub mod search;
+pub mod soil;
 
 pub use error::EventError;
 pub use runs::{EventSettings, Footprint, STALL_DISTANCE, STALL_TIME};

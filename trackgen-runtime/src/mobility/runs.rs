@@ -11,7 +11,7 @@ use crate::simulate::{
     Output, RideFigures, RideSink, RunError, RunReport, Sink, SinkError, simulate_into,
 };
 use crate::system::Simulated;
-use crate::vehicle::{Powertrain, Vehicle, VehicleDynamics, build};
+use crate::vehicle::{Powertrain, Vehicle, VehicleConfig, VehicleDynamics, build};
 
 /// How the events drive the vehicle and read their criteria. Every event
 /// takes these; [`new`](Self::new) gives the defaults the mobility
@@ -186,10 +186,24 @@ pub(super) fn drive<V: Vehicle>(
     duration: f64,
     interval: f64,
     sink: &mut dyn Sink,
-    (event, parameter, unit): (&'static str, f64, &'static str),
+    what: (&'static str, f64, &'static str),
 ) -> Result<RunReport, EventError> {
     let mut config = V::declared_config(terrain, V::speed_drive(target));
     config.powertrain = Some(settings.powertrain.clone());
+    run_config::<V>(settings, config, duration, interval, sink, what)
+}
+
+/// A run of `V` built from `config` with the settings' integrator, for
+/// `duration` s, rows every `interval` s into `sink`; a failure names
+/// `(event, parameter, unit)`.
+pub(super) fn run_config<V: Vehicle>(
+    settings: &EventSettings,
+    config: VehicleConfig,
+    duration: f64,
+    interval: f64,
+    sink: &mut dyn Sink,
+    (event, parameter, unit): (&'static str, f64, &'static str),
+) -> Result<RunReport, EventError> {
     let mut system = build::<V>(config).map_err(|source| EventError::Build { event, source })?;
     simulate_into(
         &mut system,
