@@ -35,7 +35,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use plotters::prelude::*;
 use rayon::prelude::*;
 use trackgen::contact::soil::SoilPreset;
-use trackgen::mobility::search::Search;
+use trackgen::mobility::search::{Limit, Search};
 use trackgen::mobility::{EventError, EventSettings, Footprint, grade, obstacle, ride, soil};
 use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::{m113, marder};
@@ -108,12 +108,16 @@ struct Row {
     failure: Option<String>,
 }
 
-/// What a task found: a limit's search, one quantity from one run, or a
-/// curve: quantities at parameters from `runs` runs.
+/// What a task found: a limit's search, or a curve: quantities at
+/// parameters from `runs` runs.
 enum Found {
     Limit(Search),
-    Value(f64),
-    Curve { points: Vec<Point>, runs: usize },
+    Curve {
+        points: Vec<Point>,
+        runs: usize,
+        /// The search behind the first point, if it is a limit.
+        search: Option<Search>,
+    },
 }
 
 /// A curve's point: what was held fixed, the quantity, its value, how the
@@ -158,8 +162,11 @@ impl Task<'_> {
                 Some(s),
                 None,
             )],
-            Ok(Found::Value(v)) => vec![row(v, "=", 1, None, None)],
-            Ok(Found::Curve { points, runs }) => points
+            Ok(Found::Curve {
+                points,
+                runs,
+                mut search,
+            }) => points
                 .into_iter()
                 .enumerate()
                 .map(|(k, (parameter, quantity, value, relation, unit))| Row {
@@ -169,7 +176,7 @@ impl Task<'_> {
                     // The runs and the time are the curve's, on its first row.
                     runs: if k == 0 { runs } else { 0 },
                     wall: if k == 0 { wall } else { 0.0 },
-                    ..row(value, relation, 0, None, None)
+                    ..row(value, relation, 0, search.take(), None)
                 })
                 .collect(),
             Err(e) => {
@@ -248,25 +255,46 @@ fn tasks<'a, V: Vehicle>(
                     Box::new(move || search(settings, footprint).map(Found::Limit)),
                 ));
             }
-            "grade" => {
-                out.push(task(
-                    None,
-                    "steepest grade",
-                    "rise over run",
-                    Box::new(move || grade::steepest::<V>(settings, footprint).map(Found::Limit)),
-                ));
-                for &g in grades {
-                    out.push(task(
-                        Some(("grade", g, "rise over run")),
-                        "speed at full power",
-                        "m/s",
-                        Box::new(move || {
-                            grade::speed_on::<V>(settings, footprint, g)
-                                .map(|c| Found::Value(c.speed))
-                        }),
-                    ));
-                }
-            }
+            // One task: the steepest grade first, then the speed on each
+            // grade no steeper (a steady speed up a steeper one is 0: it
+            // is not climbed even from a crawl at full load), so the runs
+            // that would only stall are not made.
+            "grade" => out.push(task(
+                None,
+                "steepest grade",
+                "rise over run",
+                Box::new(move || {
+                    let steepest = grade::steepest::<V>(settings, footprint)?;
+                    let climbed = match steepest.limit {
+                        Limit::Found { passed, .. } => passed,
+                        Limit::Beyond { end } => end,
+                        Limit::Before { .. } => 0.0,
+                    };
+                    let mut runs = steepest.runs();
+                    let mut points = vec![(
+                        None,
+                        "steepest grade",
+                        steepest.limit.value(),
+                        steepest.limit.relation(),
+                        "rise over run",
+                    )];
+                    for &g in grades {
+                        let parameter = Some(("grade", g, "rise over run"));
+                        if g > climbed {
+                            points.push((parameter, "speed at full power", 0.0, "stalls", "m/s"));
+                            continue;
+                        }
+                        let climb = grade::speed_on::<V>(settings, footprint, g)?;
+                        runs += 1;
+                        points.push((parameter, "speed at full power", climb.speed, "=", "m/s"));
+                    }
+                    Ok(Found::Curve {
+                        points,
+                        runs,
+                        search: Some(steepest),
+                    })
+                }),
+            )),
             "soil" => {
                 let soils: &[SoilPreset] = if quick {
                     &[SoilPreset::DrySand]
@@ -313,6 +341,7 @@ fn tasks<'a, V: Vehicle>(
                             Ok(Found::Curve {
                                 runs: curve.len(),
                                 points,
+                                search: None,
                             })
                         }),
                     ));
@@ -408,12 +437,13 @@ fn parameter_text(row: &Row) -> String {
     }
 }
 
-/// The value with its relation: `5.416`, `> 20.000`, `< 1.000`, or the
-/// word for no answer (`stalled`, `failed`).
+/// The value with its relation: `5.416`, `> 20.000`, `< 1.000`, `0.000
+/// (stalls)`, or the word for no answer (`stalled`, `failed`, …).
 fn value_text(r: &Row) -> String {
     match r.relation {
         "=" => format!("{:.3}", r.value),
         ">" | "<" => format!("{} {:.3}", r.relation, r.value),
+        word if r.value.is_finite() => format!("{:.3} ({word})", r.value),
         word => word.to_string(),
     }
 }
