@@ -25,11 +25,11 @@
 
 use crate::support;
 
-use support::vehicle::m113_weight;
+use support::vehicle::{along_slope, m113_weight};
 use trackgen::contact::Terrain;
 use trackgen::contact::sprocket::track_speed;
 use trackgen::integrate::Integrator;
-use trackgen::simulate::{Output, Results, simulate};
+use trackgen::simulate::{Output, simulate};
 use trackgen::vehicle::{Brake, Vehicle};
 use trackgen::vehicles::m113::{self, M113};
 
@@ -37,16 +37,6 @@ const RAMP_START: f64 = 3.0;
 /// The stop: the rearmost wheel (2.2 m behind the centroid) a metre up
 /// the ramp at 1 m/s; the controller at 0 a second later.
 const STOP: f64 = 1.5 + RAMP_START + 2.2 + 1.0;
-
-/// The hull's centroid along the slope of `grade`, m, at every sample.
-fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
-    let norm = (1.0 + grade * grade).sqrt();
-    let (x, y) = (results.column("x").unwrap(), results.column("y").unwrap());
-    x.iter()
-        .zip(&y)
-        .map(|(x, y)| (x + grade * y) / norm)
-        .collect()
-}
 
 /// The M113's sprocket's rolling radius, m: `N p / (2π)`.
 fn rolling_radius() -> f64 {

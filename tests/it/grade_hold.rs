@@ -31,7 +31,7 @@ use trackgen::simulate::{EnergyBalance, Output, Results, simulate};
 use trackgen::vehicle::{Vehicle, VehicleDynamics, VehicleSystem};
 use trackgen::vehicles::{m113::M113, m113::M113Chassis, m113::M113Track};
 
-use support::vehicle::Books;
+use support::vehicle::{Books, along_slope};
 
 const RAMP_START: f64 = 3.0;
 
@@ -41,16 +41,6 @@ fn integrator() -> Integrator {
         atol: 1e-4,
         max_step: 0.01,
     }
-}
-
-/// The hull's centroid along the slope of `grade`, m, at every sample.
-fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
-    let norm = (1.0 + grade * grade).sqrt();
-    let (x, y) = (results.column("x").unwrap(), results.column("y").unwrap());
-    x.iter()
-        .zip(&y)
-        .map(|(x, y)| (x + grade * y) / norm)
-        .collect()
 }
 
 /// The M113 driven onto a ramp of `grade` and stopped at `stop` s; the

@@ -223,6 +223,18 @@ fn bad_input_is_refused_before_any_run() {
     nan_crawl.crawl = f64::NAN;
     let (what, _) = setting(obstacle::step::<M113>(&nan_crawl, &footprint));
     assert_eq!(what, "the crawl speed (m/s)");
+    // A powertrain that gives no drive names its figure.
+    let mut no_power = settings.clone();
+    no_power.powertrain = trackgen::vehicle::Powertrain::Power {
+        power: f64::NAN,
+        max_torque: 1e3,
+    };
+    match obstacle::step::<M113>(&no_power, &footprint) {
+        Err(e @ EventError::Powertrain { event: "step", .. }) => {
+            assert!(e.to_string().contains("power"), "{e}")
+        }
+        other => panic!("{other:?}"),
+    }
     // The message names the event, the setting and its range.
     let message = EventError::Setting {
         event: "ride",

@@ -6,11 +6,7 @@ use std::path::PathBuf;
 
 use trackgen::contact::Terrain;
 use trackgen::contact::profile::{Course as Polyline, Obstacle, Profile};
-use trackgen::contact::roughness::{Iso8608Class, RoughCourse, Spectrum};
-
-/// Sample spacing of a random course, m: 5 cm, finer than a shoe's pad, as
-/// the NG-NRMM's courses are sampled.
-pub const ROUGH_SPACING: f64 = 0.05;
+use trackgen::contact::roughness::{Iso8608Class, RoughCourse, SPACING, Spectrum};
 
 /// Where a random course starts, m: behind the vehicle (whose centroid
 /// starts at 0 and whose track spans about ±2.4 m).
@@ -86,7 +82,7 @@ impl CourseSpec {
                         base_length: trackgen::contact::roughness::DETRENDING_BASE_LENGTH,
                     },
                 };
-                let course = RoughCourse::new(spectrum, *length, ROUGH_SPACING, *seed)
+                let course = RoughCourse::new(spectrum, *length, SPACING, *seed)
                     .starting_at(ROUGH_START)
                     .with_run_in(ROUGH_RUN_IN.0, ROUGH_RUN_IN.1);
                 Terrain::profile(course.profile()?)

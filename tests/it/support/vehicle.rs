@@ -142,3 +142,14 @@ pub fn driven_with<V: Vehicle>(
     }
     (system, t, y)
 }
+
+/// The hull's centroid along the slope of `grade` (rise over run), m, at
+/// every sample.
+pub fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
+    let norm = (1.0 + grade * grade).sqrt();
+    let (x, y) = (results.column("x").unwrap(), results.column("y").unwrap());
+    x.iter()
+        .zip(&y)
+        .map(|(x, y)| (x + grade * y) / norm)
+        .collect()
+}

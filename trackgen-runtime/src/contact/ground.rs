@@ -2,7 +2,6 @@
 
 use nalgebra::{Matrix2, Vector2};
 
-use super::profile::Profile;
 use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
 use super::{BodyState, Contact, ShoeGeometry, Terrain};
 
@@ -21,16 +20,13 @@ use super::{BodyState, Contact, ShoeGeometry, Terrain};
 ///
 /// On a polyline ([`Terrain::Profile`]) a point below the surface is as
 /// deep as its distance to the nearest edge, vertical faces included
-/// ([`Profile::nearest_boundary`]), and is pushed along the unit normal
+/// ([`Profile::nearest_boundary`](super::profile::Profile::nearest_boundary)), and is pushed along the unit normal
 /// toward it, `g = n`: a face pushes sideways, as a wall does, where the
 /// vertical depth would lift the point onto the step it meets. The depth
 /// is a distance function, continuous, with `∂δ/∂p = −n`, so the elastic
 /// force is the gradient of the potential there too.
 pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: &mut Vec<Contact>) {
     let clear = clear_of(terrain, links, shoe);
-    if let Terrain::Profile(profile) = terrain {
-        return detect_on_profile(profile, links, shoe, &clear, out);
-    }
     for (i, link) in links.iter().enumerate() {
         if clear(link) {
             continue;
@@ -38,12 +34,9 @@ pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: 
         for (k, local) in shoe.ground_points.iter().enumerate() {
             let arm = link.arm(*local);
             let point = link.position + arm;
-            let (h, slope) = terrain.height_and_slope(point.x);
-            let depth = h - point.y;
-            if depth <= 0.0 {
+            let Some((depth, gradient, gradient_norm)) = penetration(terrain, point) else {
                 continue;
-            }
-            let gradient = Vector2::new(-slope, 1.0);
+            };
             out.push(Contact {
                 link: i,
                 other: None,
@@ -52,50 +45,33 @@ pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: 
                 arm,
                 depth,
                 gradient,
-                gradient_norm: gradient.norm(),
+                gradient_norm,
                 velocity: link.velocity_at(arm),
             });
         }
     }
 }
 
-/// [`detect`] on a polyline: each point below the surface, as deep as its
-/// distance to the nearest edge.
-fn detect_on_profile(
-    profile: &Profile,
-    links: &[BodyState],
-    shoe: &ShoeGeometry,
-    clear: &impl Fn(&BodyState) -> bool,
-    out: &mut Vec<Contact>,
-) {
-    for (i, link) in links.iter().enumerate() {
-        if clear(link) {
-            continue;
+/// How deep `point` is in the ground, the gradient of that depth and its
+/// norm; `None` above it. A closed form's depth is `h(p_x) − p_y`, its
+/// gradient `(−h′, 1)`; a polyline's depth is the distance to the nearest
+/// edge, its gradient that edge's unit normal towards the surface.
+fn penetration(terrain: &Terrain, point: Vector2<f64>) -> Option<(f64, Vector2<f64>, f64)> {
+    if let Terrain::Profile(profile) = terrain {
+        let nearest = profile.nearest_boundary(point.x, point.y)?;
+        if nearest.distance <= 0.0 {
+            return None;
         }
-        for (k, local) in shoe.ground_points.iter().enumerate() {
-            let arm = link.arm(*local);
-            let point = link.position + arm;
-            let Some(nearest) = profile.nearest_boundary(point.x, point.y) else {
-                continue;
-            };
-            if nearest.distance <= 0.0 {
-                continue;
-            }
-            let normal =
-                (Vector2::new(nearest.point.0, nearest.point.1) - point) / nearest.distance;
-            out.push(Contact {
-                link: i,
-                other: None,
-                feature: k,
-                point,
-                arm,
-                depth: nearest.distance,
-                gradient: normal,
-                gradient_norm: 1.0,
-                velocity: link.velocity_at(arm),
-            });
-        }
+        let normal = (Vector2::new(nearest.point.0, nearest.point.1) - point) / nearest.distance;
+        return Some((nearest.distance, normal, 1.0));
     }
+    let (h, slope) = terrain.height_and_slope(point.x);
+    let depth = h - point.y;
+    if depth <= 0.0 {
+        return None;
+    }
+    let gradient = Vector2::new(-slope, 1.0);
+    Some((depth, gradient, gradient.norm()))
 }
 
 /// The derivatives of a ground contact's geometry ([`detect`]'s) with the

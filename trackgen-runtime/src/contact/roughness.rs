@@ -114,6 +114,10 @@ pub const DEFAULT_BAND: Band = Band {
     n_max: 10.0,
 };
 
+/// The sample spacing of a course, m: 5 cm, as the NG-NRMM's courses are
+/// sampled; the default band's shortest wavelength (0.1 m) is two samples.
+pub const SPACING: f64 = 0.05;
+
 /// The longest period synthesised, in samples: 2²² (210 km at 5 cm).
 pub const MAX_PERIOD: usize = 1 << 22;
 

@@ -5,7 +5,7 @@ use thiserror::Error;
 use crate::contact::profile::ProfileError;
 use crate::contact::roughness::RoughnessError;
 use crate::simulate::RunError;
-use crate::vehicle::BuildError;
+use crate::vehicle::{BuildError, PowertrainError};
 
 /// An event that could not be answered. A run's failure says which event,
 /// at which parameter, when and why: it is never a limit.
@@ -23,6 +23,15 @@ pub enum EventError {
         range: &'static str,
         /// What was given.
         value: f64,
+    },
+    /// The settings' powertrain gives no drive.
+    #[error("{event}: {source}")]
+    Powertrain {
+        /// The event.
+        event: &'static str,
+        /// Why.
+        #[source]
+        source: PowertrainError,
     },
     /// The vehicle does not build on the event's course.
     #[error("{event}: the vehicle does not build: {source}")]

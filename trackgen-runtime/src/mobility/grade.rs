@@ -1,11 +1,11 @@
 //! Grades (`shared/spec/mobility.md` §1): the steepest grade climbed from
 //! a crawl, and the speed held up a grade at full power.
 
-use super::runs::{Footprint, Probe, drive, ramp};
+use super::runs::{Footprint, Probe, drive, obstacle_course, ramp};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
-use crate::contact::profile::Course;
+use crate::contact::profile::Obstacle;
 use crate::vehicle::Vehicle;
 
 /// The event's name in results.
@@ -18,16 +18,9 @@ pub const CLIMB: f64 = 5.0;
 /// A grade of `slope` (rise over run) starting at `at` (m), long enough
 /// for `up` m of climb beyond the track's front.
 fn course(footprint: &Footprint, at: f64, slope: f64, up: f64) -> Result<Terrain, EventError> {
-    let from = footprint.rear - 10.0;
-    Course::starting_at(from, 0.0)
-        .and_then(|c| c.flat(at - from))
-        .and_then(|c| c.grade(slope, up + footprint.length() + 10.0))
-        .and_then(|c| c.profile())
-        .map(Terrain::profile)
-        .map_err(|source| EventError::Course {
-            event: EVENT,
-            source,
-        })
+    let length = up + footprint.length() + 10.0;
+    let (profile, _) = obstacle_course(EVENT, footprint, at, &Obstacle::Grade { slope, length })?;
+    Ok(Terrain::profile(profile))
 }
 
 /// One attempt at a grade.

@@ -3,38 +3,17 @@
 //! limit (2.5 g), and the largest step, gap, ditch and barrier crossed
 //! from a crawl at full power.
 
-use super::runs::{Footprint, Probe, SpeedTrial, drive, measure_ride, ramp, search_speed};
+use super::runs::{
+    Footprint, Probe, SpeedTrial, drive, measure_ride, obstacle_course, ramp, search_speed,
+};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
-use crate::contact::profile::{Course, Obstacle, Profile};
+use crate::contact::profile::Obstacle;
 use crate::vehicle::Vehicle;
 
 /// The half-round event's name in results.
 pub const HALF_ROUND: &str = "half-round";
-
-/// Flat ground after an obstacle, m.
-const RUN_OUT: f64 = 40.0;
-
-/// The course of an obstacle event: flat from behind the vehicle to
-/// `at` (m), the obstacle, flat for [`RUN_OUT`]; and the obstacle's far
-/// end, m.
-fn course(
-    event: &'static str,
-    footprint: &Footprint,
-    at: f64,
-    obstacle: &Obstacle,
-) -> Result<(Profile, f64), EventError> {
-    let laid = || -> Result<(Profile, f64), crate::contact::profile::ProfileError> {
-        let from = footprint.rear - 10.0;
-        let course = Course::starting_at(from, 0.0)?
-            .flat(at - from)?
-            .then(obstacle)?;
-        let far = course.end().0;
-        Ok((course.flat(RUN_OUT)?.profile()?, far))
-    };
-    laid().map_err(|source| EventError::Course { event, source })
-}
 
 /// One run over a half-round.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -64,7 +43,7 @@ pub fn half_round_at<V: Vehicle>(
     settings.check(HALF_ROUND)?;
     let ramp_distance = speed * speed / (2.0 * settings.acceleration);
     let at = footprint.front + ramp_distance + 3.0;
-    let (profile, far) = course(
+    let (profile, far) = obstacle_course(
         HALF_ROUND,
         footprint,
         at,
@@ -143,7 +122,7 @@ pub fn cross<V: Vehicle>(
     let crawl = settings.crawl;
     let ramp_time = crawl / settings.acceleration;
     let at = footprint.front + 0.5 * crawl * ramp_time + 1.0;
-    let (profile, far) = course(event, footprint, at, obstacle)?;
+    let (profile, far) = obstacle_course(event, footprint, at, obstacle)?;
     let goal = far + 1.0 - footprint.rear;
     let mut probe = Probe::new(goal);
     // At the crawl, with time for slowing on the obstacle; a stall ends

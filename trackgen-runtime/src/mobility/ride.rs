@@ -7,17 +7,12 @@ use super::runs::{Footprint, SpeedTrial, measure_ride, search_speed};
 use super::search::Search;
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
-use crate::contact::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, Spectrum};
+use crate::contact::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, SPACING, Spectrum};
 use crate::simulate::RideFigures;
 use crate::vehicle::Vehicle;
 
 /// The event's name in results.
 pub const EVENT: &str = "ride";
-
-/// The course's sample spacing, m: 5 cm, a tenth of the shortest
-/// wavelength the track's shoes resolve (ISO 8608's range reaches 0.1
-/// m, at 50 cm the course's band is already filtered by the footprint).
-pub const SPACING: f64 = 0.05;
 
 /// A random course: its detrended RMS elevation (m, after the mobility
 /// literature's detrending over

@@ -6,6 +6,7 @@ use nalgebra::Vector2;
 use super::EventError;
 use super::search::{Search, Trial, bisect};
 use crate::contact::Terrain;
+use crate::contact::profile::{Course, Obstacle, Profile, ProfileError};
 use crate::integrate::Integrator;
 use crate::simulate::{
     Output, RideFigures, RideSink, RunError, RunReport, Sink, SinkError, simulate_into,
@@ -104,12 +105,9 @@ impl EventSettings {
                 });
             }
         }
-        self.powertrain.check().map_err(|_| EventError::Setting {
-            event,
-            what: "the powertrain",
-            range: "a valid powertrain (Powertrain::check)",
-            value: f64::NAN,
-        })
+        self.powertrain
+            .check()
+            .map_err(|source| EventError::Powertrain { event, source })
     }
 
     /// The fastest the powertrain drives the sprocket, converted to the
@@ -311,6 +309,29 @@ pub(super) fn search_speed(
             passed: trial.figure < limit,
         })
     })
+}
+
+/// Flat ground after an obstacle, m.
+pub(super) const RUN_OUT: f64 = 40.0;
+
+/// The course of an obstacle event: flat from behind the vehicle to
+/// `at` (m), the obstacle, flat for [`RUN_OUT`]; and the obstacle's far
+/// end, m.
+pub(super) fn obstacle_course(
+    event: &'static str,
+    footprint: &Footprint,
+    at: f64,
+    obstacle: &Obstacle,
+) -> Result<(Profile, f64), EventError> {
+    let laid = || -> Result<(Profile, f64), ProfileError> {
+        let from = footprint.rear - 10.0;
+        let course = Course::starting_at(from, 0.0)?
+            .flat(at - from)?
+            .then(obstacle)?;
+        let far = course.end().0;
+        Ok((course.flat(RUN_OUT)?.profile()?, far))
+    };
+    laid().map_err(|source| EventError::Course { event, source })
 }
 
 /// A speed ramp at `acceleration` (m/s²) from rest to `speed` (m/s).
