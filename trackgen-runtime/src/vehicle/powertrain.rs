@@ -139,9 +139,10 @@ impl Powertrain {
                 fraction,
             } => {
                 let mut best = (0.0, 0.0);
+                let peak = peak_of(map);
                 for &ratio in ratios {
                     let engine = speed / ratio;
-                    let (torque, slope) = map_at(map, engine);
+                    let (torque, slope) = map_at(map, peak, engine);
                     let (torque, slope) = (
                         fraction * torque / ratio,
                         fraction * slope / (ratio * ratio),
@@ -181,18 +182,21 @@ impl Powertrain {
     }
 }
 
+/// The map's point of largest torque (the first, if several), once per
+/// [`Powertrain::limit`] for all its gears.
+fn peak_of(map: &[(f64, f64)]) -> Option<(f64, f64)> {
+    map.iter()
+        .copied()
+        .reduce(|best, p| if p.1 > best.1 { p } else { best })
+}
+
 /// The map's torque at engine speed `w` and its slope: linear between the
 /// points, none beyond the last (a negative torque, a cut-off's, is none);
-/// below the speed of the map's largest torque, that torque (slope 0): the
-/// clutch slips with the engine held at its peak torque, as it does at a
-/// start or a crawl.
-fn map_at(map: &[(f64, f64)], w: f64) -> (f64, f64) {
-    let (Some(&last), Some(peak)) = (
-        map.last(),
-        map.iter()
-            .copied()
-            .reduce(|best, p| if p.1 > best.1 { p } else { best }),
-    ) else {
+/// below the speed of the map's largest torque, `peak`, that torque (slope
+/// 0): the clutch slips with the engine held at its peak torque, as it
+/// does at a start or a crawl.
+fn map_at(map: &[(f64, f64)], peak: Option<(f64, f64)>, w: f64) -> (f64, f64) {
+    let (Some(&last), Some(peak)) = (map.last(), peak) else {
         return (0.0, 0.0);
     };
     if w <= peak.0 {
