@@ -8,7 +8,7 @@ use trackgen::contact::profile::Obstacle;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 
-use crate::course::{self, CourseSpec, Roughness};
+use trackgen::contact::course::{self, CourseSpec, Roughness};
 
 /// Drive a planar tracked vehicle (the M113 by default, or the Marder) over
 /// a bump (or through a dip), a terrain file, a random course or an
@@ -283,16 +283,7 @@ impl Args {
     /// linear ramp to `--speed` over `--ramp` s; a ramp of 0 s is a step
     /// at the end of settling.
     pub fn speed_profile(&self) -> impl Fn(f64) -> f64 + Send + 'static {
-        let (settle, ramp, speed) = (self.settle, self.ramp, self.speed);
-        move |t: f64| {
-            if ramp > 0.0 {
-                speed * ((t - settle) / ramp).clamp(0.0, 1.0)
-            } else if t >= settle {
-                speed
-            } else {
-                0.0
-            }
-        }
+        trackgen::vehicle::speed_ramp(self.settle, self.ramp, self.speed)
     }
 }
 

@@ -17,7 +17,6 @@
 mod animation;
 mod cli;
 mod console;
-mod course;
 mod modes;
 mod nearest;
 mod outputs;

@@ -19,6 +19,7 @@
 //! decoupled everywhere else (spec §3).
 
 mod detect;
+pub mod course;
 pub mod ground;
 pub mod profile;
 mod respond;

@@ -12,6 +12,7 @@
 
 mod energy;
 mod error;
+mod march;
 mod output;
 mod results;
 mod run;
@@ -23,6 +24,7 @@ pub use energy::{
     RESIDUAL_PER_TOLERANCE,
 };
 pub use error::{RunError, SimulationFailure};
+pub use march::March;
 pub use output::Output;
 pub use results::{Results, Sample};
 pub use run::{simulate, simulate_with_progress};

@@ -1,7 +1,8 @@
 use nalgebra::DVector;
 
 use super::{Output, Results, RunError, SimulationFailure, Sink};
-use crate::integrate::{Check, Integrator, SettingsError, SimulationError, Stats};
+use super::march::{March, validate, validate_output};
+use crate::integrate::{Check, Integrator, SimulationError, Stats};
 use crate::system::Simulated;
 
 /// Integrates `system` from `t0` to `t_end` (s), recording at `output`.
@@ -78,33 +79,26 @@ pub(super) fn drive(
             Vec::new(),
         );
     }
-    if let Err(error) = validate(integrator, t0, t_end, output) {
+    let settings = validate(integrator, t0, t_end).and_then(|()| validate_output(t0, output));
+    if let Err(error) = settings {
         return (
             Err(SimulationError::from(error).into()),
             Stats::default(),
             Vec::new(),
         );
     }
-    let mut stepper = integrator.stepper(system.dimension());
-    let outcome = run(
-        system,
-        stepper.as_mut(),
-        t0,
-        t_end,
-        output,
-        sink,
-        &columns,
-        progress,
-    );
-    (outcome, stepper.stats(), stepper.checks().to_vec())
+    let mut march = match March::start(system, integrator, t0, t_end) {
+        Ok(march) => march,
+        Err(error) => return (Err(error.into()), Stats::default(), Vec::new()),
+    };
+    let outcome = run(system, &mut march, output, sink, &columns, progress);
+    let (stats, checks) = march.into_parts();
+    (outcome, stats, checks)
 }
 
-#[allow(clippy::too_many_arguments)]
 fn run(
     system: &mut dyn Simulated,
-    stepper: &mut dyn crate::integrate::Stepper,
-    t0: f64,
-    t_end: f64,
+    march: &mut March,
     output: &Output,
     sink: &mut dyn Sink,
     columns: &[String],
@@ -133,145 +127,42 @@ fn run(
         sink.row(t, &row)
             .map_err(|source| RunError::Sink { t, source })
     };
-    let mut t = t0;
-    let mut y = system.initial_state();
-    if !y.iter().all(|v| v.is_finite()) {
-        return Err(SimulationError::NonFinite {
-            t,
-            what: "the initial state",
-        }
-        .into());
-    }
-    // Times closer than this are the same time.
-    let eps = 1e-12 * t_end.abs().max(t0.abs()).max(1.0);
+    let t0 = march.time();
+    let eps = march.eps();
     let mut next = 0;
     if matches!(output, Output::Steps) {
-        record(system, t, &y, sink)?;
+        record(system, t0, march.state(), sink)?;
     }
     // Requested times before the start are skipped; one at the start is
     // the initial state.
     while let Some(to) = output.time(t0, next).filter(|&to| to <= t0 + eps) {
         if to >= t0 - eps {
-            record(system, t, &y, sink)?;
+            record(system, t0, march.state(), sink)?;
         }
         next += 1;
     }
-    while t < t_end - eps {
-        let t_old = t;
-        stepper.step(system, &mut t, &mut y, t_end)?;
-        if !crate::integrate::all_finite(y.as_slice()) {
-            return Err(SimulationError::NonFinite {
-                t,
-                what: "the state",
-            }
-            .into());
-        }
-        if t >= t_end - eps {
-            t = t_end;
-        }
+    while !march.finished() {
+        march.step(system)?;
+        let (t_old, t) = (march.step_start(), march.time());
         while let Some(to) = output.time(t0, next).filter(|&to| to <= t + eps) {
             if to > t_old {
-                let yo = if (to - t).abs() <= eps {
-                    y.clone()
-                } else {
-                    stepper.interpolate(to)
-                };
+                let yo = march.state_at(to);
                 record(system, to.min(t), &yo, sink)?;
             }
             next += 1;
         }
         let mut logged = Ok(());
-        let changed = system.after_step(t, y.as_mut_slice(), &mut |switch| {
+        march.settle(system, &mut |switch| {
             if logged.is_ok() {
                 logged = sink.switch(&switch);
             }
         })?;
         logged.map_err(|source| RunError::Sink { t, source })?;
-        if changed {
-            stepper.restart();
-        }
         progress(t);
-        // After `after_step`: a projection shows in the step's row.
+        // After `settle`: a projection shows in the step's row.
         if matches!(output, Output::Steps) {
-            record(system, t, &y, sink)?;
+            record(system, t, march.state(), sink)?;
         }
     }
     Ok(())
-}
-
-/// Settings that would hang a run or make it meaningless are errors before
-/// any step.
-fn validate(
-    integrator: Integrator,
-    t0: f64,
-    t_end: f64,
-    output: &Output,
-) -> Result<(), SettingsError> {
-    if !(t0.is_finite() && t_end.is_finite() && t0 < t_end) {
-        return Err(SettingsError::Interval { t0, t_end });
-    }
-    match integrator {
-        Integrator::Rk4 { step } | Integrator::Rosenbrock2 { step } => {
-            if !(step.is_finite() && step > 0.0 && t0 + step > t0) {
-                return Err(SettingsError::Step { step });
-            }
-        }
-        Integrator::Dopri5 {
-            rtol,
-            atol,
-            max_step,
-        }
-        | Integrator::Bs23 {
-            rtol,
-            atol,
-            max_step,
-        }
-        | Integrator::Ros34pw2 {
-            rtol,
-            atol,
-            max_step,
-        } => {
-            if !(rtol >= 0.0
-                && atol >= 0.0
-                && rtol + atol > 0.0
-                && rtol.is_finite()
-                && atol.is_finite())
-            {
-                return Err(SettingsError::Tolerances { rtol, atol });
-            }
-            if max_step.is_nan() || max_step <= 0.0 {
-                return Err(SettingsError::MaxStep { max_step });
-            }
-        }
-        Integrator::Auto {
-            explicit_tolerance,
-            implicit_tolerance,
-            max_step,
-        } => {
-            // Each is its method's relative and absolute tolerance at once,
-            // so each must be positive on its own.
-            for (name, value) in [
-                ("explicit_tolerance", explicit_tolerance),
-                ("implicit_tolerance", implicit_tolerance),
-            ] {
-                if !(value > 0.0 && value.is_finite()) {
-                    return Err(SettingsError::Tolerance { name, value });
-                }
-            }
-            if max_step.is_nan() || max_step <= 0.0 {
-                return Err(SettingsError::MaxStep { max_step });
-            }
-        }
-    }
-    match output {
-        Output::Every(dt) if !(dt.is_finite() && *dt > 0.0 && t0 + dt > t0) => {
-            Err(SettingsError::OutputInterval { interval: *dt })
-        }
-        Output::Times(times)
-            if !times.iter().all(|t| t.is_finite()) || times.windows(2).any(|w| w[1] < w[0]) =>
-        {
-            Err(SettingsError::OutputTimes)
-        }
-        _ => Ok(()),
-    }
 }

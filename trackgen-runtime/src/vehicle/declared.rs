@@ -126,6 +126,12 @@ pub trait VehicleDynamics: Simulated + Send + Sized + sealed::Build {
     /// [sensitivity](crate::analysis::equilibrium_sensitivity).
     fn arms_mut(&mut self) -> &mut [crate::multibody::ArmSpring];
 
+    /// Sets the drawbar load (its configuration's
+    /// [`drawbar_pull`](VehicleConfig::drawbar_pull), N) from now on: for a
+    /// master driving the vehicle between steps (an FMU's input). A value
+    /// that is not finite is refused and the load kept.
+    fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), super::ConfigError>;
+
     /// Where each quantity sits in the state.
     fn layout(&self) -> StateLayout;
 

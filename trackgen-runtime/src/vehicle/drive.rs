@@ -26,6 +26,21 @@ pub enum DriveError {
     },
 }
 
+/// The main job's target speed (m/s) against time (s): 0 while the
+/// vehicle settles for `settle` s, then a linear ramp to `speed` m/s over
+/// `ramp` s; a ramp of 0 s is a step at the end of settling.
+pub fn speed_ramp(settle: f64, ramp: f64, speed: f64) -> impl Fn(f64) -> f64 + Send + 'static {
+    move |t: f64| {
+        if ramp > 0.0 {
+            speed * ((t - settle) / ramp).clamp(0.0, 1.0)
+        } else if t >= settle {
+            speed
+        } else {
+            0.0
+        }
+    }
+}
+
 /// The sprocket drive: its torque acts on the sprocket and, reversed, on
 /// the chassis frame.
 pub enum Drive {

@@ -34,7 +34,7 @@ mod workspace;
 pub use brake::{Brake, BrakeError};
 pub use config::VehicleConfig;
 pub use declared::{Vehicle, VehicleDynamics, build};
-pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap};
+pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap, speed_ramp};
 pub use error::{BuildError, ConfigError};
 pub use fitted::{
     BEARING_BAND, ContactFit, ContactLawSet, DeclaredContact, DeclaredPair, GROUND_DAMPING_RATIO,

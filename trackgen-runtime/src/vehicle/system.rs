@@ -543,6 +543,14 @@ where
         &mut self.config.arms
     }
 
+    fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), super::ConfigError> {
+        if !pull.is_finite() {
+            return Err(super::ConfigError::Drawbar { pull });
+        }
+        self.config.drawbar_pull = pull;
+        Ok(())
+    }
+
     fn layout(&self) -> StateLayout {
         StateLayout {
             track_coordinates: track_coordinates(DT, self.track().dependent_pair()),

@@ -1,24 +1,41 @@
-//! The course the main job drives: a bump (or dip) by default; a terrain
-//! file, a random course, or an obstacle between flat run-in and run-out.
+//! The courses a run drives, as a user names them: a cosine bump (or
+//! dip), a surveyed profile from a file, a random course of a given
+//! roughness, or an obstacle between flat run-in and run-out; with the
+//! syntax the main job's options and an FMU's parameters share
+//! ([`roughness`], [`obstacle`]).
 
-use std::error::Error;
+use thiserror::Error;
 use std::path::PathBuf;
 
-use trackgen::contact::Terrain;
-use trackgen::contact::profile::{Course as Polyline, Obstacle, Profile};
-use trackgen::contact::roughness::{Iso8608Class, RoughCourse, SPACING, Spectrum};
+use super::Terrain;
+use super::profile::{Course as Polyline, Obstacle, Profile, ProfileError};
+use super::roughness::{
+    DETRENDING_BASE_LENGTH, Iso8608Class, RoughCourse, RoughnessError, SPACING, Spectrum,
+};
 
 /// Where a random course starts, m: behind the vehicle (whose centroid
 /// starts at 0 and whose track spans about ±2.4 m).
-const ROUGH_START: f64 = -10.0;
+pub const ROUGH_START: f64 = -10.0;
 /// Its flat run-in from there, m, and the length over which the roughness
-/// fades in after it: the vehicle starts on the flat.
-const ROUGH_RUN_IN: (f64, f64) = (15.0, 5.0);
+/// fades in after it, m: the vehicle starts on the flat.
+pub const ROUGH_RUN_IN: (f64, f64) = (15.0, 5.0);
 
-/// Flat ground before an obstacle starts from here, m, and after it for
-/// this long.
-const OBSTACLE_RUN_IN_FROM: f64 = -100.0;
-const OBSTACLE_RUN_OUT: f64 = 200.0;
+/// Flat ground before an obstacle starts from here, m.
+pub const OBSTACLE_RUN_IN_FROM: f64 = -100.0;
+/// Flat ground after an obstacle, m.
+pub const OBSTACLE_RUN_OUT: f64 = 200.0;
+
+/// A course that cannot be laid: a file that cannot be read, a
+/// roughness or an obstacle out of its range.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum CourseError {
+    /// The profile (a file's, or the obstacle's) was refused.
+    #[error(transparent)]
+    Profile(#[from] ProfileError),
+    /// The random course was refused.
+    #[error(transparent)]
+    Roughness(#[from] RoughnessError),
+}
 
 /// How rough a random course is.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -62,7 +79,7 @@ pub enum CourseSpec {
 impl CourseSpec {
     /// The terrain: the file read, the course generated or laid out.
     /// Errors name the file and line, or the parameter and its range.
-    pub fn terrain(&self) -> Result<Terrain, Box<dyn Error>> {
+    pub fn terrain(&self) -> Result<Terrain, CourseError> {
         Ok(match self {
             CourseSpec::Bump { at, height } => Terrain::Bump {
                 centre: *at,
@@ -79,7 +96,7 @@ impl CourseSpec {
                     Roughness::Class(class) => Spectrum::Iso8608(class),
                     Roughness::Rms(rms) => Spectrum::DetrendedRms {
                         rms,
-                        base_length: trackgen::contact::roughness::DETRENDING_BASE_LENGTH,
+                        base_length: DETRENDING_BASE_LENGTH,
                     },
                 };
                 let course = RoughCourse::new(spectrum, *length, SPACING, *seed)

@@ -1,0 +1,696 @@
+//! One FMU instance: its variables, FMI's state machine, and the run it
+//! advances communication step by communication step.
+//!
+//! The run is a [`March`]: the integrator steps to the stop time as a
+//! native run does, never clipped at a communication point; the outputs
+//! at a communication point come from the step that covers it by dense
+//! output, and that step's [`settle`](March::settle) waits for the next
+//! `doStep`. So with inputs that do not change, the outputs equal the
+//! native run's bit for bit. When the master changes an input or the
+//! drawbar, the rest of the step past the communication point (taken with
+//! the old values) is dropped and the run goes on from the communication
+//! point's state.
+
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use trackgen::contact::Terrain;
+use trackgen::contact::course::{self, CourseSpec};
+use trackgen::contact::soil::SoilPreset;
+use trackgen::integrate::Integrator;
+use trackgen::nalgebra::DVector;
+use trackgen::simulate::{DISSIPATED, ENERGY, EnergyBalance, MOTOR_WORK, March};
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics, speed_ramp};
+
+use crate::error::FmuError;
+use crate::variables::{self, Causality, Input, Kind, Role, Setting, Start, Variable, defaults};
+
+/// Where the instance is in FMI's state machine.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Mode {
+    /// Instantiated: parameters may be set.
+    Instantiated,
+    /// In initialisation mode: parameters and inputs may be set.
+    Initialization,
+    /// Stepping.
+    Step,
+    /// Terminated: outputs may be read.
+    Terminated,
+    /// A step failed: outputs may be read (the last communication point's);
+    /// reset or free.
+    Failed,
+}
+
+impl Mode {
+    fn words(self) -> &'static str {
+        match self {
+            Mode::Instantiated => "before initialisation",
+            Mode::Initialization => "in initialisation mode",
+            Mode::Step => "in step mode",
+            Mode::Terminated => "after terminate",
+            Mode::Failed => "after a failed step (reset or free the instance)",
+        }
+    }
+}
+
+/// The inputs the drive reads while it runs (shared with its closures).
+#[derive(Debug, Default)]
+struct Cells {
+    target_speed: AtomicU64,
+    torque: AtomicU64,
+}
+
+impl Cells {
+    fn get(cell: &AtomicU64) -> f64 {
+        f64::from_bits(cell.load(Ordering::Relaxed))
+    }
+    fn set(cell: &AtomicU64, value: f64) {
+        cell.store(value.to_bits(), Ordering::Relaxed);
+    }
+}
+
+/// The run under way.
+struct Running<V: Vehicle> {
+    system: V::System,
+    march: March,
+    /// The last step covers the communication point reached and has not
+    /// been settled ([`March::settle`]) yet.
+    pending: bool,
+    /// The communication point reached, s, and the state there.
+    t: f64,
+    y: DVector<f64>,
+    /// The motor's work, the energy and the dissipated work at the start,
+    /// and their columns.
+    books: [(usize, f64); 3],
+}
+
+/// An FMU instance of the vehicle `V`.
+pub struct Instance<V: Vehicle> {
+    table: Vec<Variable>,
+    /// Every variable's value by value reference (a number in `numbers`,
+    /// an integer in `integers`, a string in `strings`).
+    numbers: Vec<f64>,
+    integers: Vec<i32>,
+    strings: Vec<String>,
+    mode: Mode,
+    start_time: f64,
+    stop_time: Option<f64>,
+    master_tolerance: Option<f64>,
+    cells: Arc<Cells>,
+    /// An input was changed since the last communication point.
+    inputs_changed: bool,
+    run: Option<Running<V>>,
+}
+
+/// A course longer than this is refused, m.
+const MAX_COURSE_LENGTH: f64 = 1e5;
+/// Without a stop time the run ends this long after its start, s.
+const OPEN_END: f64 = 1e6;
+
+impl<V: Vehicle> Instance<V> {
+    /// A new instance with every variable at its start value.
+    pub fn new() -> Result<Self, FmuError> {
+        let table = variables::table::<V>()?;
+        let n = table.len();
+        let mut instance = Instance {
+            numbers: vec![f64::NAN; n],
+            integers: vec![0; n],
+            strings: vec![String::new(); n],
+            table,
+            mode: Mode::Instantiated,
+            start_time: 0.0,
+            stop_time: None,
+            master_tolerance: None,
+            cells: Arc::default(),
+            inputs_changed: false,
+            run: None,
+        };
+        instance.set_start_values();
+        Ok(instance)
+    }
+
+    fn set_start_values(&mut self) {
+        for (i, v) in self.table.iter().enumerate() {
+            match &v.start {
+                Start::Float64(x) => self.numbers[i] = *x,
+                Start::Int32(k) => self.integers[i] = *k,
+                Start::String(s) => self.strings[i] = s.clone(),
+                Start::Computed => self.numbers[i] = f64::NAN,
+            }
+        }
+        Cells::set(&self.cells.target_speed, 0.0);
+        Cells::set(&self.cells.torque, 0.0);
+    }
+
+    /// The variables (the model description's).
+    pub fn variables(&self) -> &[Variable] {
+        &self.table
+    }
+
+    /// Where the instance is in FMI's state machine.
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+
+    /// The communication point reached, s (the start time before the run).
+    pub fn time(&self) -> f64 {
+        self.run.as_ref().map_or(self.start_time, |r| r.t)
+    }
+
+    /// The experiment: the master's tolerance (if it gives one), the start
+    /// and the stop time, s (FMI 2.0's `fmi2SetupExperiment`; FMI 3.0
+    /// gives them on entering initialisation).
+    pub fn setup_experiment(
+        &mut self,
+        tolerance: Option<f64>,
+        start: f64,
+        stop: Option<f64>,
+    ) -> Result<(), FmuError> {
+        self.expect(&[Mode::Instantiated], "setting up the experiment")?;
+        if !start.is_finite() {
+            return Err(self.refuse("startTime", start, "a finite time"));
+        }
+        if let Some(stop) = stop
+            && !(stop.is_finite() && stop > start)
+        {
+            return Err(self.refuse("stopTime", stop, "a finite time after the start"));
+        }
+        if let Some(tol) = tolerance
+            && !(tol > 0.0 && tol <= 0.1)
+        {
+            return Err(self.refuse("tolerance", tol, "more than 0 and at most 0.1"));
+        }
+        self.start_time = start;
+        self.stop_time = stop;
+        self.master_tolerance = tolerance;
+        Ok(())
+    }
+
+    /// Enters initialisation mode.
+    pub fn enter_initialization(&mut self) -> Result<(), FmuError> {
+        self.expect(&[Mode::Instantiated], "entering initialisation mode")?;
+        self.mode = Mode::Initialization;
+        Ok(())
+    }
+
+    /// Leaves initialisation mode: builds the vehicle from the parameters
+    /// and starts the run; the outputs are the start's.
+    pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
+        self.expect(&[Mode::Initialization], "leaving initialisation mode")?;
+        let mut system = V::system_with(self.config()?).map_err(|e| FmuError::Build(e.to_string()))?;
+        variables::check_columns(&self.table, &system)?;
+        system
+            .set_drawbar_pull(self.input(Input::DrawbarPull))
+            .map_err(|e| FmuError::Build(e.to_string()))?;
+        let t0 = self.start_time;
+        let t_end = self.stop_time.unwrap_or(t0 + OPEN_END);
+        let march = March::start(&system, self.integrator(), t0, t_end)
+            .map_err(|e| FmuError::Build(e.to_string()))?;
+        let y = march.state().clone();
+        let columns = system.columns();
+        let at = |name: &str| columns.iter().position(|c| c == name).unwrap_or(usize::MAX);
+        let mut run = Running {
+            system,
+            march,
+            pending: false,
+            t: t0,
+            y,
+            books: [(at(MOTOR_WORK), 0.0), (at(ENERGY), 0.0), (at(DISSIPATED), 0.0)],
+        };
+        let row = observe::<V>(&mut run, t0)?;
+        for (column, start) in &mut run.books {
+            *start = row.get(*column).copied().unwrap_or(f64::NAN);
+        }
+        self.store_outputs(run.books, &row);
+        self.run = Some(run);
+        self.inputs_changed = false;
+        self.mode = Mode::Step;
+        Ok(())
+    }
+
+    /// Advances from the communication point `t` (the one reached) by `h`
+    /// (s). On failure the instance keeps the last point's outputs and
+    /// takes no more steps.
+    pub fn do_step(&mut self, t: f64, h: f64) -> Result<(), FmuError> {
+        self.expect(&[Mode::Step], "doStep")?;
+        let now = self.time();
+        let run = self.run.as_mut().expect("a run in step mode");
+        let eps = run.march.eps();
+        if !(h.is_finite() && h > 0.0) {
+            return Err(FmuError::Step(format!(
+                "a communication step is more than 0 s, got {h}"
+            )));
+        }
+        if (t - now).abs() > eps.max(1e-9 * h) {
+            return Err(FmuError::Step(format!(
+                "the current communication point is t = {now} s, the master gave {t} s"
+            )));
+        }
+        let target = t + h;
+        if target > run.march.end() + eps {
+            return Err(FmuError::Step(format!(
+                "t = {target} s is past the stop time {} s",
+                run.march.end()
+            )));
+        }
+        let changed = std::mem::take(&mut self.inputs_changed);
+        let result = advance::<V>(run, target, changed);
+        match result {
+            Ok(row) => {
+                let books = self.run.as_ref().expect("a run").books;
+                self.store_outputs(books, &row);
+                Ok(())
+            }
+            Err(e) => {
+                self.mode = Mode::Failed;
+                Err(e)
+            }
+        }
+    }
+
+    /// Terminates: outputs stay readable.
+    pub fn terminate(&mut self) -> Result<(), FmuError> {
+        self.expect(&[Mode::Step, Mode::Failed, Mode::Initialization], "terminate")?;
+        self.mode = Mode::Terminated;
+        Ok(())
+    }
+
+    /// Back to the state after instantiation: every variable at its start
+    /// value, no run.
+    pub fn reset(&mut self) {
+        self.run = None;
+        self.mode = Mode::Instantiated;
+        self.start_time = 0.0;
+        self.stop_time = None;
+        self.master_tolerance = None;
+        self.inputs_changed = false;
+        self.set_start_values();
+    }
+
+    /// Reads numbers.
+    pub fn get_f64(&self, refs: &[u32], out: &mut [f64]) -> Result<(), FmuError> {
+        for (r, o) in refs.iter().zip(out.iter_mut()) {
+            let v = self.variable(*r, Kind::Float64)?;
+            if v.causality == Causality::Output && self.run.is_none() {
+                return Err(FmuError::State {
+                    call: "reading an output",
+                    state: "before the end of initialisation (outputs are computed when it ends)",
+                });
+            }
+            *o = self.numbers[*r as usize];
+        }
+        Ok(())
+    }
+
+    /// Reads integers.
+    pub fn get_i32(&self, refs: &[u32], out: &mut [i32]) -> Result<(), FmuError> {
+        for (r, o) in refs.iter().zip(out.iter_mut()) {
+            self.variable(*r, Kind::Int32)?;
+            *o = self.integers[*r as usize];
+        }
+        Ok(())
+    }
+
+    /// Reads a string.
+    pub fn get_string(&self, r: u32) -> Result<&str, FmuError> {
+        self.variable(r, Kind::String)?;
+        Ok(&self.strings[r as usize])
+    }
+
+    /// Sets numbers: parameters before the run, inputs at any time; each
+    /// checked against its range (a refused value leaves the variable as
+    /// it was).
+    pub fn set_f64(&mut self, refs: &[u32], values: &[f64]) -> Result<(), FmuError> {
+        for (r, value) in refs.iter().zip(values) {
+            let v = self.variable(*r, Kind::Float64)?.clone();
+            self.settable(&v)?;
+            check_number(&v, *value)?;
+            let i = *r as usize;
+            if let Role::Input(input) = v.role {
+                if self.numbers[i].to_bits() != value.to_bits() {
+                    self.inputs_changed = true;
+                }
+                match input {
+                    Input::TargetSpeed => Cells::set(&self.cells.target_speed, *value),
+                    Input::DriveTorque => Cells::set(&self.cells.torque, *value),
+                    Input::DrawbarPull => {
+                        if let Some(run) = &mut self.run {
+                            run.system
+                                .set_drawbar_pull(*value)
+                                .map_err(|e| self.refuse_text(&v.name, value, &e.to_string()))?;
+                        }
+                    }
+                }
+            }
+            self.numbers[i] = *value;
+        }
+        Ok(())
+    }
+
+    /// Sets integers (parameters, before the run).
+    pub fn set_i32(&mut self, refs: &[u32], values: &[i32]) -> Result<(), FmuError> {
+        for (r, value) in refs.iter().zip(values) {
+            let v = self.variable(*r, Kind::Int32)?.clone();
+            self.settable(&v)?;
+            self.integers[*r as usize] = *value;
+        }
+        Ok(())
+    }
+
+    /// Sets a string (a parameter, before the run), checked at once.
+    pub fn set_string(&mut self, r: u32, value: &str) -> Result<(), FmuError> {
+        let v = self.variable(r, Kind::String)?.clone();
+        self.settable(&v)?;
+        if let Role::Setting(setting) = v.role {
+            check_string(setting, &v.name, value)?;
+        }
+        self.strings[r as usize] = value.to_string();
+        Ok(())
+    }
+
+    fn variable(&self, r: u32, kind: Kind) -> Result<&Variable, FmuError> {
+        self.table
+            .get(r as usize)
+            .filter(|v| v.kind == kind)
+            .ok_or(FmuError::ValueReference {
+                value_reference: r,
+                kind: match kind {
+                    Kind::Float64 => "Float64",
+                    Kind::Int32 => "Int32",
+                    Kind::String => "String",
+                },
+            })
+    }
+
+    fn settable(&self, v: &Variable) -> Result<(), FmuError> {
+        let allowed: &[Mode] = match v.causality {
+            Causality::Parameter => &[Mode::Instantiated, Mode::Initialization],
+            Causality::Input => &[Mode::Instantiated, Mode::Initialization, Mode::Step],
+            Causality::Output | Causality::Independent => {
+                return Err(FmuError::Parameter {
+                    name: v.name.clone(),
+                    value: "(any)".into(),
+                    why: "computed by the FMU, not set".into(),
+                });
+            }
+        };
+        self.expect(allowed, "setting a variable")
+    }
+
+    fn expect(&self, allowed: &[Mode], call: &'static str) -> Result<(), FmuError> {
+        if allowed.contains(&self.mode) {
+            Ok(())
+        } else {
+            Err(FmuError::State {
+                call,
+                state: self.mode.words(),
+            })
+        }
+    }
+
+    fn refuse(&self, name: &str, value: f64, why: &str) -> FmuError {
+        self.refuse_text(name, &value, why)
+    }
+
+    fn refuse_text(&self, name: &str, value: &dyn std::fmt::Display, why: &str) -> FmuError {
+        FmuError::Parameter {
+            name: name.to_string(),
+            value: value.to_string(),
+            why: why.to_string(),
+        }
+    }
+
+    fn setting(&self, setting: Setting) -> usize {
+        self.table
+            .iter()
+            .position(|v| v.role == Role::Setting(setting))
+            .expect("every setting is in the table")
+    }
+
+    fn number(&self, setting: Setting) -> f64 {
+        self.numbers[self.setting(setting)]
+    }
+
+    fn text(&self, setting: Setting) -> &str {
+        &self.strings[self.setting(setting)]
+    }
+
+    fn input(&self, input: Input) -> f64 {
+        let i = self
+            .table
+            .iter()
+            .position(|v| v.role == Role::Input(input))
+            .expect("every input is in the table");
+        self.numbers[i]
+    }
+
+    /// The integrator: the main job's (chosen by stiffness, steps of at
+    /// most 10 ms) at the `tolerance` parameter, else the master's, else
+    /// the main job's defaults.
+    fn integrator(&self) -> Integrator {
+        let tolerance = Some(self.number(Setting::Tolerance))
+            .filter(|t| *t > 0.0)
+            .or(self.master_tolerance);
+        Integrator::Auto {
+            explicit_tolerance: tolerance.unwrap_or(defaults::EXPLICIT_TOLERANCE),
+            implicit_tolerance: tolerance.unwrap_or(defaults::IMPLICIT_TOLERANCE),
+            max_step: defaults::MAX_STEP,
+        }
+    }
+
+    /// The course the parameters name.
+    fn course(&self) -> Result<CourseSpec, FmuError> {
+        let terrain = self.text(Setting::Terrain);
+        Ok(match terrain {
+            "bump" => CourseSpec::Bump {
+                at: self.number(Setting::BumpAt),
+                height: self.number(Setting::BumpHeight),
+            },
+            "file" => CourseSpec::File(self.text(Setting::TerrainFile).into()),
+            "random" => {
+                let roughness = course::roughness(self.text(Setting::Roughness))
+                    .map_err(|why| self.refuse_text("roughness", &self.text(Setting::Roughness), &why))?;
+                let seed = self.integers[self.setting(Setting::Seed)];
+                let seed = u64::try_from(seed)
+                    .map_err(|_| self.refuse("seed", f64::from(seed), "0 or more"))?;
+                let given = self.number(Setting::CourseLength);
+                let length = if given > 0.0 {
+                    given
+                } else {
+                    let duration = self.stop_time.map_or(60.0, |s| s - self.start_time);
+                    (1.2 * self.number(Setting::Speed).abs() * duration + 20.0).min(MAX_COURSE_LENGTH)
+                };
+                CourseSpec::Rough {
+                    roughness,
+                    seed,
+                    length,
+                }
+            }
+            "obstacle" => CourseSpec::Obstacle {
+                obstacle: course::obstacle(self.text(Setting::Obstacle))
+                    .map_err(|why| self.refuse_text("obstacle", &self.text(Setting::Obstacle), &why))?,
+                at: self.number(Setting::ObstacleAt),
+            },
+            other => {
+                return Err(self.refuse_text("terrain", &other, "one of flat, bump, file, random, obstacle"));
+            }
+        })
+    }
+
+    /// The vehicle's configuration from the parameters.
+    fn config(&self) -> Result<trackgen::vehicle::VehicleConfig, FmuError> {
+        let terrain = match self.text(Setting::Terrain) {
+            "flat" => Terrain::Flat { height: 0.0 },
+            _ => self
+                .course()?
+                .terrain()
+                .map_err(|e| FmuError::Build(e.to_string()))?,
+        };
+        let drive = match self.text(Setting::Drive) {
+            "profile" => {
+                let (settle, ramp, speed) = (
+                    self.number(Setting::Settle),
+                    self.number(Setting::Ramp),
+                    self.number(Setting::Speed),
+                );
+                V::speed_drive(speed_ramp(settle, ramp, speed))
+            }
+            "speed" => {
+                let cells = Arc::clone(&self.cells);
+                V::speed_drive(move |_| Cells::get(&cells.target_speed))
+            }
+            "torque" => {
+                let cells = Arc::clone(&self.cells);
+                Drive::Torque(Box::new(move |_| Cells::get(&cells.torque)))
+            }
+            other => {
+                return Err(self.refuse_text("drive", &other, "one of profile, speed, torque"));
+            }
+        };
+        let mut config = V::declared_config(terrain, drive);
+        match self.text(Setting::Soil) {
+            "rigid" => {}
+            name => {
+                let preset: SoilPreset = name.parse().map_err(|_| {
+                    self.refuse_text(
+                        "soil",
+                        &name,
+                        &format!("rigid or one of {}", SoilPreset::names()),
+                    )
+                })?;
+                config.soil = Some(preset.soil());
+            }
+        }
+        for (i, (_, body)) in variables::arm_names::<V>().iter().enumerate() {
+            let value = |role: Role| {
+                let k = self.table.iter().position(|v| v.role == role).expect("an arm's variable");
+                self.numbers[k]
+            };
+            if let Some(arm) = config.arms.iter_mut().find(|a| a.body == *body) {
+                arm.spring.stiffness = value(Role::ArmStiffness(i));
+                arm.spring.damping = value(Role::ArmDamping(i));
+            }
+        }
+        Ok(config)
+    }
+
+    /// The outputs from a recorded row; the books' residual from the
+    /// start's motor work, energy and dissipated work (`start`).
+    fn store_outputs(&mut self, start: [(usize, f64); 3], row: &[f64]) {
+        let change = |(column, at_start): (usize, f64)| {
+            row.get(column).copied().unwrap_or(f64::NAN) - at_start
+        };
+        let books = EnergyBalance {
+            motor_work: change(start[0]),
+            energy_change: change(start[1]),
+            dissipated: change(start[2]),
+        };
+        for (i, v) in self.table.iter().enumerate() {
+            match v.role {
+                Role::Column(c) => self.numbers[i] = row[c],
+                Role::BooksResidual => self.numbers[i] = books.residual(),
+                Role::Time => self.numbers[i] = self.run.as_ref().map_or(self.start_time, |r| r.t),
+                _ => {}
+            }
+        }
+    }
+}
+
+/// The recorded row at the communication point reached.
+fn observe<V: Vehicle>(run: &mut Running<V>, t: f64) -> Result<Vec<f64>, FmuError> {
+    let mut row = Vec::new();
+    run.system
+        .observe(t, run.y.as_slice(), &mut row)
+        .map_err(|e| FmuError::Run(e.to_string()))?;
+    Ok(row)
+}
+
+/// The run from its communication point to `target` (s), in the native
+/// run's order: the pending step settled (or, inputs `changed`, dropped),
+/// steps until one covers `target`, the state there by dense output.
+fn advance<V: Vehicle>(run: &mut Running<V>, target: f64, changed: bool) -> Result<Vec<f64>, FmuError> {
+    let failed = |e: trackgen::integrate::SimulationError| FmuError::Run(e.to_string());
+    let eps = run.march.eps();
+    if run.pending {
+        if changed {
+            run.march.restart_at(run.t, run.y.clone());
+            run.march.settle(&mut run.system, &mut |_| {}).map_err(failed)?;
+            run.pending = false;
+        } else if run.march.time() >= target - eps {
+            // The same step covers this point too.
+            run.y = run.march.state_at(target);
+            run.t = target;
+            return observe::<V>(run, target);
+        } else {
+            run.march.settle(&mut run.system, &mut |_| {}).map_err(failed)?;
+            run.pending = false;
+        }
+    }
+    loop {
+        run.march.step(&mut run.system).map_err(failed)?;
+        if run.march.time() >= target - eps {
+            run.y = run.march.state_at(target);
+            run.t = target;
+            run.pending = true;
+            return observe::<V>(run, target);
+        }
+        run.march.settle(&mut run.system, &mut |_| {}).map_err(failed)?;
+    }
+}
+
+/// A number's range, by its variable.
+fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
+    let range = |lo: f64, hi: f64, what: &str| {
+        if value.is_finite() && (lo..=hi).contains(&value) {
+            Ok(())
+        } else {
+            Err(FmuError::Parameter {
+                name: v.name.clone(),
+                value: value.to_string(),
+                why: what.to_string(),
+            })
+        }
+    };
+    match v.role {
+        Role::Setting(Setting::BumpHeight) => range(-0.5, 0.5, "from -0.5 to 0.5 m"),
+        Role::Setting(Setting::BumpAt | Setting::ObstacleAt) => {
+            range(-1e4, 1e4, "from -10000 to 10000 m")
+        }
+        Role::Setting(Setting::CourseLength) => {
+            if value == 0.0 {
+                Ok(())
+            } else {
+                range(10.0, MAX_COURSE_LENGTH, "0 (what the run covers) or from 10 to 100000 m")
+            }
+        }
+        Role::Setting(Setting::Tolerance) => {
+            if value == 0.0 {
+                Ok(())
+            } else {
+                range(1e-12, 0.1, "0 (the defaults) or from 1e-12 to 0.1")
+            }
+        }
+        Role::Setting(Setting::Speed) => range(-20.0, 20.0, "from -20 to 20 m/s"),
+        Role::Setting(Setting::Settle | Setting::Ramp) => range(0.0, 1e6, "from 0 to 1e6 s"),
+        Role::ArmStiffness(_) => {
+            if value > 0.0 && value.is_finite() {
+                Ok(())
+            } else {
+                range(f64::NAN, f64::NAN, "more than 0 N m/rad, finite")
+            }
+        }
+        Role::ArmDamping(_) => range(0.0, f64::MAX, "0 or more N m s/rad, finite"),
+        Role::Input(_) => range(f64::MIN, f64::MAX, "a finite number"),
+        _ => range(f64::MIN, f64::MAX, "a finite number"),
+    }
+}
+
+/// A string parameter's values, checked when set.
+fn check_string(setting: Setting, name: &str, value: &str) -> Result<(), FmuError> {
+    let refuse = |why: String| FmuError::Parameter {
+        name: name.to_string(),
+        value: format!("\"{value}\""),
+        why,
+    };
+    match setting {
+        Setting::Terrain => ["flat", "bump", "file", "random", "obstacle"]
+            .contains(&value)
+            .then_some(())
+            .ok_or_else(|| refuse("one of flat, bump, file, random, obstacle".into())),
+        Setting::Drive => ["profile", "speed", "torque"]
+            .contains(&value)
+            .then_some(())
+            .ok_or_else(|| refuse("one of profile, speed, torque".into())),
+        Setting::Soil => {
+            if value == "rigid" || value.parse::<SoilPreset>().is_ok() {
+                Ok(())
+            } else {
+                Err(refuse(format!("rigid or one of {}", SoilPreset::names())))
+            }
+        }
+        Setting::Roughness => course::roughness(value).map(|_| ()).map_err(refuse),
+        Setting::Obstacle => course::obstacle(value).map(|_| ()).map_err(refuse),
+        _ => Ok(()),
+    }
+}

@@ -1,0 +1,59 @@
+//! # trackgen-fmu
+//!
+//! A declared vehicle as a Functional Mock-up Unit: FMI 3.0 and FMI 2.0
+//! co-simulation, for fmpy, Simulink, Modelica tools and any other
+//! importer.
+//!
+//! A `cdylib` crate exports the C API for one vehicle with
+//! [`export_fmu!`]; [`write_fmu`] packs the library with its model
+//! description into `<Name>.fmu` (3.0) and `<Name>-fmi2.fmu` (2.0).
+//! `tools/build-fmu.sh m113 OUTDIR` does both for the M113 (and `marder`
+//! for the Marder).
+//!
+//! ```ignore
+//! // src/lib.rs of a crate with `crate-type = ["cdylib"]`:
+//! trackgen_fmu::export_fmu!(my_crate::MyVehicle);
+//! // then, from a build step or a binary that links `MyVehicle`:
+//! trackgen_fmu::write_fmu::<MyVehicle>(library, out_dir, trackgen_fmu::Version::Fmi3)?;
+//! ```
+//!
+//! The variables ([`variables::table`]): parameters (the course, the soil,
+//! the tolerance, the drive and its speed profile, each arm's spring and
+//! damper rates), inputs (`target_speed`, `drive_torque`,
+//! `drawbar_pull`), and every recorded column as an output with the
+//! energy books' residual. The defaults are the main job's, so a default
+//! run is the main job's run: the integrator steps to the stop time as a
+//! native run does and each communication point is read from the step
+//! that covers it ([`Instance`]), so the outputs equal the native run's
+//! bit for bit while the inputs are unchanged.
+//!
+//! No panic crosses the C boundary: every call runs under
+//! `catch_unwind`; a refused value, a failed step or a caught panic is an
+//! error status with a message through the master's logger.
+
+#![warn(missing_docs)]
+
+pub mod component;
+pub mod description;
+mod error;
+pub mod fmi2;
+pub mod fmi3;
+mod instance;
+mod package;
+pub mod variables;
+
+pub use error::FmuError;
+pub use instance::{Instance, Mode};
+pub use package::{PackageError, Version, write_fmu};
+
+/// Exports the FMI 3.0 and FMI 2.0 co-simulation functions for the
+/// vehicle `$vehicle` (a type implementing `trackgen::vehicle::Vehicle`)
+/// from the `cdylib` this is written in. One vehicle per library: the
+/// functions have the standard's fixed names.
+#[macro_export]
+macro_rules! export_fmu {
+    ($vehicle:ty) => {
+        $crate::__export_fmi3!($vehicle);
+        $crate::__export_fmi2!($vehicle);
+    };
+}

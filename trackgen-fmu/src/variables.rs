@@ -1,0 +1,427 @@
+//! The FMU's variables: one table, generated from the vehicle, that both
+//! the model description and the instance read, so the two cannot
+//! disagree on a value reference.
+
+use trackgen::system::Simulated;
+use trackgen::vehicle::{Vehicle, VehicleDynamics};
+
+use crate::error::FmuError;
+
+/// A variable's type in the C API.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// `fmi3Float64` / `fmi2Real`.
+    Float64,
+    /// `fmi3Int32` / `fmi2Integer`.
+    Int32,
+    /// `fmi3String` / `fmi2String`.
+    String,
+}
+
+/// What a variable is to the master.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Causality {
+    /// Set before the run starts (in initialisation mode at the latest):
+    /// variability `fixed`.
+    Parameter,
+    /// Set by the master at any communication point: variability
+    /// `continuous`, held constant over a communication step.
+    Input,
+    /// Computed: variability `continuous`.
+    Output,
+    /// Time, s: FMI 3.0's one independent variable.
+    Independent,
+}
+
+/// A start value.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Start {
+    /// A number.
+    Float64(f64),
+    /// An integer.
+    Int32(i32),
+    /// A string.
+    String(String),
+    /// None: an output, computed.
+    Computed,
+}
+
+/// What a parameter or input sets (the instance's meaning of a variable).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Role {
+    /// A run setting ([`Setting`]).
+    Setting(Setting),
+    /// The torsion spring's rate of the `i`-th arm of the declared parts, N m/rad.
+    ArmStiffness(usize),
+    /// The damper's rate of the `i`-th arm, N m s/rad.
+    ArmDamping(usize),
+    /// An input.
+    Input(Input),
+    /// The `i`-th recorded column.
+    Column(usize),
+    /// The energy books' residual since the start.
+    BooksResidual,
+    /// The communication point reached.
+    Time,
+}
+
+/// The run's settings, as parameters.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Setting {
+    /// `terrain`: flat, bump, file, random or obstacle.
+    Terrain,
+    /// `bump_height`, m.
+    BumpHeight,
+    /// `bump_at`, m.
+    BumpAt,
+    /// `terrain_file`: a profile CSV.
+    TerrainFile,
+    /// `roughness`: ISO 8608 class or RMS with its unit.
+    Roughness,
+    /// `seed`.
+    Seed,
+    /// `course_length`, m (0: what the run covers).
+    CourseLength,
+    /// `obstacle`: the main job's obstacle syntax.
+    Obstacle,
+    /// `obstacle_at`, m.
+    ObstacleAt,
+    /// `soil`: rigid or a soil of Wong's table.
+    Soil,
+    /// `tolerance` (0: the main job's defaults).
+    Tolerance,
+    /// `drive`: profile, speed or torque.
+    Drive,
+    /// `profile_speed`, m/s: the profile's target.
+    Speed,
+    /// `profile_settle`, s.
+    Settle,
+    /// `profile_ramp`, s.
+    Ramp,
+}
+
+/// The inputs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Input {
+    /// `target_speed`, m/s (drive `speed`).
+    TargetSpeed,
+    /// `drive_torque`, N m (drive `torque`).
+    DriveTorque,
+    /// `drawbar_pull`, N.
+    DrawbarPull,
+}
+
+/// One variable of the FMU.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Variable {
+    /// Its name.
+    pub name: String,
+    /// Its value reference (its index in the table).
+    pub value_reference: u32,
+    /// Its type.
+    pub kind: Kind,
+    /// Parameter, input or output.
+    pub causality: Causality,
+    /// Its unit (SI; `1` for a pure number; empty for a string).
+    pub unit: &'static str,
+    /// What it is.
+    pub description: String,
+    /// Its start value.
+    pub start: Start,
+    /// What the instance does with it.
+    pub role: Role,
+}
+
+/// The default course's bump and the main job's drive: the FMU's
+/// defaults are the main job's (`trackgen-cli`'s `--help`), so a default
+/// FMU run is the main job's run.
+pub mod defaults {
+    /// Bump height, m.
+    pub const BUMP_HEIGHT: f64 = 0.1;
+    /// Bump centre, m.
+    pub const BUMP_AT: f64 = 12.0;
+    /// Target speed, m/s.
+    pub const SPEED: f64 = 3.0;
+    /// Settling time, s.
+    pub const SETTLE: f64 = 1.0;
+    /// Ramp time, s.
+    pub const RAMP: f64 = 2.0;
+    /// Bogacki–Shampine's and Dormand–Prince's tolerance.
+    pub const EXPLICIT_TOLERANCE: f64 = 1e-3;
+    /// ROS34PW2's tolerance.
+    pub const IMPLICIT_TOLERANCE: f64 = 1e-2;
+    /// The longest step, s.
+    pub const MAX_STEP: f64 = 0.01;
+    /// Where an obstacle starts, m.
+    pub const OBSTACLE_AT: f64 = 12.0;
+}
+
+/// The table for the vehicle `V`: parameters, inputs, then one output per
+/// recorded column and the books' residual. The columns are those of the
+/// vehicle built with its declared configuration on flat ground; building
+/// it is the one thing that can fail.
+pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
+    let system = V::system_with(V::declared_config(
+        trackgen::contact::Terrain::Flat { height: 0.0 },
+        trackgen::vehicle::Drive::Free,
+    ))
+    .map_err(|e| FmuError::Build(e.to_string()))?;
+    let mut table = Vec::new();
+    let mut push = |name: String,
+                    kind: Kind,
+                    causality: Causality,
+                    unit: &'static str,
+                    description: String,
+                    start: Start,
+                    role: Role| {
+        let value_reference = table.len() as u32;
+        table.push(Variable {
+            name,
+            value_reference,
+            kind,
+            causality,
+            unit,
+            description,
+            start,
+            role,
+        });
+    };
+    push(
+        "time".into(),
+        Kind::Float64,
+        Causality::Independent,
+        "s",
+        "time".into(),
+        Start::Computed,
+        Role::Time,
+    );
+    use Causality::Parameter as P;
+    use Setting as S;
+    let settings: [(&str, Kind, &'static str, &str, Start, Setting); 15] = [
+        (
+            "terrain",
+            Kind::String,
+            "",
+            "the course: flat, bump (a cosine bump 1 m wide), file (terrain_file), random (roughness, seed, course_length) or obstacle (obstacle, obstacle_at)",
+            Start::String("bump".into()),
+            S::Terrain,
+        ),
+        ("bump_height", Kind::Float64, "m", "the bump's height (negative: a dip), -0.5 to 0.5", Start::Float64(defaults::BUMP_HEIGHT), S::BumpHeight),
+        ("bump_at", Kind::Float64, "m", "the bump's centre, -10000 to 10000", Start::Float64(defaults::BUMP_AT), S::BumpAt),
+        (
+            "terrain_file",
+            Kind::String,
+            "",
+            "a profile CSV (header x,z, metres, x never decreasing) for terrain = file",
+            Start::String(String::new()),
+            S::TerrainFile,
+        ),
+        (
+            "roughness",
+            Kind::String,
+            "",
+            "for terrain = random: an ISO 8608 class A to H, or a detrended RMS elevation with its unit (1in, 25mm, 0.03m)",
+            Start::String("1in".into()),
+            S::Roughness,
+        ),
+        ("seed", Kind::Int32, "1", "the random course's seed (the same seed, the same course, bit for bit)", Start::Int32(1), S::Seed),
+        (
+            "course_length",
+            Kind::Float64,
+            "m",
+            "the random course's length, 10 to 100000 (0: 1.2 |profile_speed| (stop - start) + 20)",
+            Start::Float64(0.0),
+            S::CourseLength,
+        ),
+        (
+            "obstacle",
+            Kind::String,
+            "",
+            "for terrain = obstacle: half-round:R, step:H, gap:WIDTH:DEPTH, ditch:DEPTH:BOTTOM:ANGLE, barrier:HEIGHT:TOP:ANGLE or grade:SLOPE:LENGTH (m, degrees)",
+            Start::String("step:0.2".into()),
+            S::Obstacle,
+        ),
+        ("obstacle_at", Kind::Float64, "m", "where the obstacle starts, -10000 to 10000", Start::Float64(defaults::OBSTACLE_AT), S::ObstacleAt),
+        (
+            "soil",
+            Kind::String,
+            "",
+            "rigid, or a soil of Wong's table: dry-sand, sandy-loam, clay, heavy-clay, lete-sand, snow",
+            Start::String("rigid".into()),
+            S::Soil,
+        ),
+        (
+            "tolerance",
+            Kind::Float64,
+            "1",
+            "the integrator's relative and absolute tolerance, 1e-12 to 0.1 (0: 1e-3 for the explicit method, 1e-2 for the implicit, chosen by stiffness, as the main job)",
+            Start::Float64(0.0),
+            S::Tolerance,
+        ),
+        (
+            "drive",
+            Kind::String,
+            "",
+            "what turns the sprocket: profile (the speed controller on profile_speed, profile_settle, profile_ramp), speed (the controller on the input target_speed) or torque (the input drive_torque)",
+            Start::String("profile".into()),
+            S::Drive,
+        ),
+        ("profile_speed", Kind::Float64, "m/s", "drive = profile: the target speed, -20 to 20", Start::Float64(defaults::SPEED), S::Speed),
+        ("profile_settle", Kind::Float64, "s", "drive = profile: the time at rest before the ramp, 0 to 1e6", Start::Float64(defaults::SETTLE), S::Settle),
+        ("profile_ramp", Kind::Float64, "s", "drive = profile: the ramp's duration, 0 to 1e6 (0: a step)", Start::Float64(defaults::RAMP), S::Ramp),
+    ];
+    for (name, kind, unit, description, start, setting) in settings {
+        push(name.into(), kind, P, unit, description.into(), start, Role::Setting(setting));
+    }
+    let config = system.config();
+    let arms = arm_names::<V>();
+    for (i, (part, body)) in arms.iter().enumerate() {
+        let spring = config
+            .arms
+            .iter()
+            .find(|a| a.body == *body)
+            .map(|a| a.spring)
+            .ok_or_else(|| FmuError::Build(format!("no spring for {part}'s arm")))?;
+        push(
+            format!("{part}.arm_stiffness"),
+            Kind::Float64,
+            P,
+            "N.m/rad",
+            format!("{part}'s arm: the torsion spring's rate, > 0 (declared {})", spring.stiffness),
+            Start::Float64(spring.stiffness),
+            Role::ArmStiffness(i),
+        );
+        push(
+            format!("{part}.arm_damping"),
+            Kind::Float64,
+            P,
+            "N.m.s/rad",
+            format!("{part}'s arm: the damper's rate, >= 0 (declared {})", spring.damping),
+            Start::Float64(spring.damping),
+            Role::ArmDamping(i),
+        );
+    }
+    let inputs = [
+        ("target_speed", "m/s", "drive = speed: the forward speed the controller holds", Input::TargetSpeed),
+        ("drive_torque", "N.m", "drive = torque: the torque on the sprocket", Input::DriveTorque),
+        (
+            "drawbar_pull",
+            "N",
+            "a horizontal force pulling the chassis back at its centroid (negative pushes)",
+            Input::DrawbarPull,
+        ),
+    ];
+    for (name, unit, description, input) in inputs {
+        push(
+            name.into(),
+            Kind::Float64,
+            Causality::Input,
+            unit,
+            description.into(),
+            Start::Float64(0.0),
+            Role::Input(input),
+        );
+    }
+    for (i, column) in system.columns().into_iter().enumerate() {
+        let (unit, description) = describe_column(&column);
+        push(
+            column,
+            Kind::Float64,
+            Causality::Output,
+            unit,
+            description,
+            Start::Computed,
+            Role::Column(i),
+        );
+    }
+    push(
+        "books_residual".into(),
+        Kind::Float64,
+        Causality::Output,
+        "1",
+        "the energy books since the start: (motor work - change of energy - dissipated) / the largest of the three".into(),
+        Start::Computed,
+        Role::BooksResidual,
+    );
+    Ok(table)
+}
+
+/// The arms of the declared parts, in declaration order: the part's name
+/// and the arm's body.
+pub fn arm_names<V: Vehicle>() -> Vec<(&'static str, usize)> {
+    <V::System as VehicleDynamics>::parts()
+        .iter()
+        .filter_map(|p| p.arm.map(|arm| (p.name, arm.body)))
+        .collect()
+}
+
+/// A recorded column's unit and description, from its name.
+fn describe_column(column: &str) -> (&'static str, String) {
+    let leaf = column.rsplit('.').next().unwrap_or(column);
+    let known: Option<(&'static str, &str)> = match leaf {
+        "x" => Some(("m", "horizontal position")),
+        "y" => Some(("m", "height")),
+        "vx" => Some(("m/s", "horizontal velocity")),
+        "vy" => Some(("m/s", "vertical velocity")),
+        "pitch" => Some(("rad", "the hull's pitch angle")),
+        "speed" => Some(("m/s", "the hull's forward speed")),
+        "sprocket_speed" => Some(("rad/s", "the sprocket's speed relative to the hull")),
+        "track_speed" => Some(("m/s", "the track's speed round the hull")),
+        "sprocket_torque" => Some(("N.m", "the drive's torque on the sprocket")),
+        "engine_load" => Some(("1", "1 where the engine, not the controller, sets the torque")),
+        "tension" => Some(("N", "the tension in the recorded link's joint")),
+        "tension_tight" => Some(("N", "the tension on the tight span")),
+        "tension_slack" => Some(("N", "the tension on the slack span")),
+        "ground_normal" => Some(("N", "the ground's normal force on the track")),
+        "ground_penetration" => Some(("m", "the deepest ground contact")),
+        "wheel_penetration" => Some(("m", "the deepest wheel contact")),
+        "sprocket_penetration" => Some(("m", "the deepest sprocket contact")),
+        "energy" => Some(("J", "the vehicle's mechanical energy")),
+        "kinetic" => Some(("J", "kinetic energy")),
+        "potential" => Some(("J", "potential energy")),
+        "motor_work" => Some(("J", "the drive's work since the start")),
+        "dissipated" => Some(("J", "the energy dissipated since the start")),
+        "seat_x" => Some(("m", "the driver's seat, horizontal position")),
+        "seat_y" => Some(("m", "the driver's seat, height")),
+        "seat_ax" => Some(("m/s2", "the seat's longitudinal acceleration in the hull's frame")),
+        "seat_az" => Some(("m/s2", "the seat's vertical acceleration in the hull's frame")),
+        "momentum_x" | "momentum_y" => Some(("N.s", "linear momentum")),
+        "angular_momentum" => Some(("N.m.s", "angular momentum about the origin")),
+        "closure_error" => Some(("m", "the loop's closure error")),
+        "closure_rate_error" => Some(("m/s", "the loop's closure rate error")),
+        "conditioning" => Some(("1", "the closure's conditioning")),
+        _ => None,
+    };
+    if let Some((unit, what)) = known {
+        return (unit, what.to_string());
+    }
+    if let Some(body) = leaf.strip_prefix("theta_") {
+        return ("rad", format!("angle of {body}"));
+    }
+    if let Some(body) = leaf.strip_prefix("omega_") {
+        return ("rad/s", format!("angular velocity of {body}"));
+    }
+    ("1", column.to_string())
+}
+
+/// Checks that the recorded columns of a built system are the table's.
+pub(crate) fn check_columns(
+    table: &[Variable],
+    system: &dyn Simulated,
+) -> Result<(), FmuError> {
+    let columns = system.columns();
+    let declared: Vec<&str> = table
+        .iter()
+        .filter(|v| matches!(v.role, Role::Column(_)))
+        .map(|v| v.name.as_str())
+        .collect();
+    if declared.len() == columns.len() && declared.iter().zip(&columns).all(|(a, b)| a == b) {
+        Ok(())
+    } else {
+        Err(FmuError::Build(
+            "this configuration records other columns than the model description declares \
+             (a soil adds none; report it)"
+                .into(),
+        ))
+    }
+}
