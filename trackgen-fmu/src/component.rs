@@ -28,8 +28,12 @@ pub enum Status {
 }
 
 /// FMI 3.0's logger: `(instanceEnvironment, status, category, message)`.
-pub type Fmi3Logger =
-    unsafe extern "C" fn(env: *mut c_void, status: c_int, category: *const c_char, message: *const c_char);
+pub type Fmi3Logger = unsafe extern "C" fn(
+    env: *mut c_void,
+    status: c_int,
+    category: *const c_char,
+    message: *const c_char,
+);
 
 /// FMI 2.0's logger: `(componentEnvironment, instanceName, status,
 /// category, message, ...)`, printf-style.
@@ -82,7 +86,12 @@ impl<V: Vehicle> Component<V> {
                 None
             }
             Err(panic) => {
-                log(logger, &name, Status::Error, &FmuError::Panic(panic_text(&*panic)).to_string());
+                log(
+                    logger,
+                    &name,
+                    Status::Error,
+                    &FmuError::Panic(panic_text(&*panic)).to_string(),
+                );
                 None
             }
         }
@@ -107,7 +116,9 @@ fn log(logger: Logger, name: &CStr, status: Status, message: &str) {
         Logger::None => {}
         // SAFETY: the master gave these callbacks for this instance's
         // lifetime; the strings outlive the calls.
-        Logger::Fmi3(f, env) => unsafe { f(env, status as c_int, category.as_ptr(), message.as_ptr()) },
+        Logger::Fmi3(f, env) => unsafe {
+            f(env, status as c_int, category.as_ptr(), message.as_ptr())
+        },
         // The message goes as an argument of "%s", never as the format.
         Logger::Fmi2(f, env) => unsafe {
             f(

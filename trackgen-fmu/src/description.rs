@@ -36,13 +36,22 @@ pub fn token<V: Vehicle>(table: &[Variable]) -> String {
 pub fn identifier<V: Vehicle>() -> String {
     V::NAME
         .chars()
-        .map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' })
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
         .collect()
 }
 
 /// FMI 3.0's model description.
 pub fn fmi3<V: Vehicle>(table: &[Variable]) -> String {
-    let mut x = header::<V>("3.0", &format!("instantiationToken=\"{}\"", token::<V>(table)));
+    let mut x = header::<V>(
+        "3.0",
+        &format!("instantiationToken=\"{}\"", token::<V>(table)),
+    );
     let _ = writeln!(
         x,
         "  <CoSimulation modelIdentifier=\"{}\" canHandleVariableCommunicationStepSize=\"true\" \
@@ -81,7 +90,11 @@ pub fn fmi3<V: Vehicle>(table: &[Variable]) -> String {
         let _ = writeln!(x, "    <Output valueReference=\"{}\"/>", v.value_reference);
     }
     for v in outputs(table) {
-        let _ = writeln!(x, "    <InitialUnknown valueReference=\"{}\"/>", v.value_reference);
+        let _ = writeln!(
+            x,
+            "    <InitialUnknown valueReference=\"{}\"/>",
+            v.value_reference
+        );
     }
     x.push_str("  </ModelStructure>\n</fmiModelDescription>\n");
     x
@@ -91,7 +104,10 @@ pub fn fmi3<V: Vehicle>(table: &[Variable]) -> String {
 pub fn fmi2<V: Vehicle>(table: &[Variable]) -> String {
     let mut x = header::<V>(
         "2.0",
-        &format!("guid=\"{}\" numberOfEventIndicators=\"0\"", token::<V>(table)),
+        &format!(
+            "guid=\"{}\" numberOfEventIndicators=\"0\"",
+            token::<V>(table)
+        ),
     );
     let _ = writeln!(
         x,
@@ -161,7 +177,11 @@ fn attributes(v: &Variable) -> String {
         Causality::Output => ("output", "continuous"),
         Causality::Independent => ("independent", "continuous"),
     };
-    let variability = if v.kind == Kind::Float64 { variability } else { "fixed" };
+    let variability = if v.kind == Kind::Float64 {
+        variability
+    } else {
+        "fixed"
+    };
     format!(
         "name=\"{}\" valueReference=\"{}\" causality=\"{causality}\" variability=\"{variability}\" description=\"{}\"",
         escape(&v.name),
@@ -202,7 +222,10 @@ fn units(x: &mut String, table: &[Variable]) {
     x.push_str("  <UnitDefinitions>\n");
     for (name, base) in UNITS {
         if table.iter().any(|v| v.unit == name) {
-            let _ = writeln!(x, "    <Unit name=\"{name}\">\n      <BaseUnit {base}/>\n    </Unit>");
+            let _ = writeln!(
+                x,
+                "    <Unit name=\"{name}\">\n      <BaseUnit {base}/>\n    </Unit>"
+            );
         }
     }
     x.push_str("  </UnitDefinitions>\n");

@@ -51,14 +51,20 @@ pub unsafe fn instantiate<V: Vehicle>(
         return std::ptr::null_mut();
     };
     if kind != 1 {
-        component.log(Status::Error, "this FMU is for co-simulation only (fmi2CoSimulation)");
+        component.log(
+            Status::Error,
+            "this FMU is for co-simulation only (fmi2CoSimulation)",
+        );
         return std::ptr::null_mut();
     }
     // SAFETY: as above.
     let guid = unsafe { component::text(guid) }.unwrap_or("");
     let expected = crate::description::token::<V>(component.instance.variables());
     if guid != expected {
-        component.log(Status::Error, &format!("GUID {guid} is not this FMU's ({expected})"));
+        component.log(
+            Status::Error,
+            &format!("GUID {guid} is not this FMU's ({expected})"),
+        );
         return std::ptr::null_mut();
     }
     Box::into_raw(component) as *mut c_void
@@ -97,7 +103,11 @@ pub unsafe fn set_string<V: Vehicle>(
 ///
 /// # Safety
 /// As [`get_string`]; `value` is null or writable.
-pub unsafe fn real_status<V: Vehicle>(instance: *mut c_void, kind: c_int, value: *mut f64) -> Status {
+pub unsafe fn real_status<V: Vehicle>(
+    instance: *mut c_void,
+    kind: c_int,
+    value: *mut f64,
+) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
         component::with::<V>(instance, |c: &mut Component<V>| {
@@ -117,7 +127,11 @@ pub unsafe fn real_status<V: Vehicle>(instance: *mut c_void, kind: c_int, value:
 ///
 /// # Safety
 /// As [`real_status`].
-pub unsafe fn boolean_status<V: Vehicle>(instance: *mut c_void, kind: c_int, value: *mut c_int) -> Status {
+pub unsafe fn boolean_status<V: Vehicle>(
+    instance: *mut c_void,
+    kind: c_int,
+    value: *mut c_int,
+) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
         component::with::<V>(instance, |c: &mut Component<V>| {

@@ -198,7 +198,8 @@ impl<V: Vehicle> Instance<V> {
     /// and starts the run; the outputs are the start's.
     pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
         self.expect(&[Mode::Initialization], "leaving initialisation mode")?;
-        let mut system = V::system_with(self.config()?).map_err(|e| FmuError::Build(e.to_string()))?;
+        let mut system =
+            V::system_with(self.config()?).map_err(|e| FmuError::Build(e.to_string()))?;
         variables::check_columns(&self.table, &system)?;
         system
             .set_drawbar_pull(self.input(Input::DrawbarPull))
@@ -216,7 +217,11 @@ impl<V: Vehicle> Instance<V> {
             pending: false,
             t: t0,
             y,
-            books: [(at(MOTOR_WORK), 0.0), (at(ENERGY), 0.0), (at(DISSIPATED), 0.0)],
+            books: [
+                (at(MOTOR_WORK), 0.0),
+                (at(ENERGY), 0.0),
+                (at(DISSIPATED), 0.0),
+            ],
         };
         let row = observe::<V>(&mut run, t0)?;
         for (column, start) in &mut run.books {
@@ -271,7 +276,10 @@ impl<V: Vehicle> Instance<V> {
 
     /// Terminates: outputs stay readable.
     pub fn terminate(&mut self) -> Result<(), FmuError> {
-        self.expect(&[Mode::Step, Mode::Failed, Mode::Initialization], "terminate")?;
+        self.expect(
+            &[Mode::Step, Mode::Failed, Mode::Initialization],
+            "terminate",
+        )?;
         self.mode = Mode::Terminated;
         Ok(())
     }
@@ -469,8 +477,10 @@ impl<V: Vehicle> Instance<V> {
             },
             "file" => CourseSpec::File(self.text(Setting::TerrainFile).into()),
             "random" => {
-                let roughness = course::roughness(self.text(Setting::Roughness))
-                    .map_err(|why| self.refuse_text("roughness", &self.text(Setting::Roughness), &why))?;
+                let roughness =
+                    course::roughness(self.text(Setting::Roughness)).map_err(|why| {
+                        self.refuse_text("roughness", &self.text(Setting::Roughness), &why)
+                    })?;
                 let seed = self.integers[self.setting(Setting::Seed)];
                 let seed = u64::try_from(seed)
                     .map_err(|_| self.refuse("seed", f64::from(seed), "0 or more"))?;
@@ -479,7 +489,8 @@ impl<V: Vehicle> Instance<V> {
                     given
                 } else {
                     let duration = self.stop_time.map_or(60.0, |s| s - self.start_time);
-                    (1.2 * self.number(Setting::Speed).abs() * duration + 20.0).min(MAX_COURSE_LENGTH)
+                    (1.2 * self.number(Setting::Speed).abs() * duration + 20.0)
+                        .min(MAX_COURSE_LENGTH)
                 };
                 CourseSpec::Rough {
                     roughness,
@@ -488,12 +499,17 @@ impl<V: Vehicle> Instance<V> {
                 }
             }
             "obstacle" => CourseSpec::Obstacle {
-                obstacle: course::obstacle(self.text(Setting::Obstacle))
-                    .map_err(|why| self.refuse_text("obstacle", &self.text(Setting::Obstacle), &why))?,
+                obstacle: course::obstacle(self.text(Setting::Obstacle)).map_err(|why| {
+                    self.refuse_text("obstacle", &self.text(Setting::Obstacle), &why)
+                })?,
                 at: self.number(Setting::ObstacleAt),
             },
             other => {
-                return Err(self.refuse_text("terrain", &other, "one of flat, bump, file, random, obstacle"));
+                return Err(self.refuse_text(
+                    "terrain",
+                    &other,
+                    "one of flat, bump, file, random, obstacle",
+                ));
             }
         })
     }
@@ -544,7 +560,11 @@ impl<V: Vehicle> Instance<V> {
         }
         for (i, (_, body)) in variables::arm_names::<V>().iter().enumerate() {
             let value = |role: Role| {
-                let k = self.table.iter().position(|v| v.role == role).expect("an arm's variable");
+                let k = self
+                    .table
+                    .iter()
+                    .position(|v| v.role == role)
+                    .expect("an arm's variable");
                 self.numbers[k]
             };
             if let Some(arm) = config.arms.iter_mut().find(|a| a.body == *body) {
@@ -589,13 +609,19 @@ fn observe<V: Vehicle>(run: &mut Running<V>, t: f64) -> Result<Vec<f64>, FmuErro
 /// The run from its communication point to `target` (s), in the native
 /// run's order: the pending step settled (or, inputs `changed`, dropped),
 /// steps until one covers `target`, the state there by dense output.
-fn advance<V: Vehicle>(run: &mut Running<V>, target: f64, changed: bool) -> Result<Vec<f64>, FmuError> {
+fn advance<V: Vehicle>(
+    run: &mut Running<V>,
+    target: f64,
+    changed: bool,
+) -> Result<Vec<f64>, FmuError> {
     let failed = |e: trackgen::integrate::SimulationError| FmuError::Run(e.to_string());
     let eps = run.march.eps();
     if run.pending {
         if changed {
             run.march.restart_at(run.t, run.y.clone());
-            run.march.settle(&mut run.system, &mut |_| {}).map_err(failed)?;
+            run.march
+                .settle(&mut run.system, &mut |_| {})
+                .map_err(failed)?;
             run.pending = false;
         } else if run.march.time() >= target - eps {
             // The same step covers this point too.
@@ -603,7 +629,9 @@ fn advance<V: Vehicle>(run: &mut Running<V>, target: f64, changed: bool) -> Resu
             run.t = target;
             return observe::<V>(run, target);
         } else {
-            run.march.settle(&mut run.system, &mut |_| {}).map_err(failed)?;
+            run.march
+                .settle(&mut run.system, &mut |_| {})
+                .map_err(failed)?;
             run.pending = false;
         }
     }
@@ -615,7 +643,9 @@ fn advance<V: Vehicle>(run: &mut Running<V>, target: f64, changed: bool) -> Resu
             run.pending = true;
             return observe::<V>(run, target);
         }
-        run.march.settle(&mut run.system, &mut |_| {}).map_err(failed)?;
+        run.march
+            .settle(&mut run.system, &mut |_| {})
+            .map_err(failed)?;
     }
 }
 
@@ -641,7 +671,11 @@ fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
             if value == 0.0 {
                 Ok(())
             } else {
-                range(10.0, MAX_COURSE_LENGTH, "0 (what the run covers) or from 10 to 100000 m")
+                range(
+                    10.0,
+                    MAX_COURSE_LENGTH,
+                    "0 (what the run covers) or from 10 to 100000 m",
+                )
             }
         }
         Role::Setting(Setting::Tolerance) => {

@@ -56,8 +56,16 @@ pub fn write_fmu<V: Vehicle>(
     let table = variables::table::<V>()?;
     let id = description::identifier::<V>();
     let (xml, platform, file) = match version {
-        Version::Fmi3 => (description::fmi3::<V>(&table), "x86_64-linux", format!("{id}.fmu")),
-        Version::Fmi2 => (description::fmi2::<V>(&table), "linux64", format!("{id}-fmi2.fmu")),
+        Version::Fmi3 => (
+            description::fmi3::<V>(&table),
+            "x86_64-linux",
+            format!("{id}.fmu"),
+        ),
+        Version::Fmi2 => (
+            description::fmi2::<V>(&table),
+            "linux64",
+            format!("{id}-fmi2.fmu"),
+        ),
     };
     let io = |path: &Path| {
         let path = path.to_path_buf();
@@ -72,7 +80,8 @@ pub fn write_fmu<V: Vehicle>(
     };
     let mut zip = zip::ZipWriter::new(File::create(&path).map_err(io(&path))?);
     let options = SimpleFileOptions::default();
-    zip.start_file("modelDescription.xml", options).map_err(zipped)?;
+    zip.start_file("modelDescription.xml", options)
+        .map_err(zipped)?;
     zip.write_all(xml.as_bytes()).map_err(io(&path))?;
     zip.start_file(format!("binaries/{platform}/{id}.so"), options)
         .map_err(zipped)?;

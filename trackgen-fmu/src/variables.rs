@@ -206,8 +206,22 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Start::String("bump".into()),
             S::Terrain,
         ),
-        ("bump_height", Kind::Float64, "m", "the bump's height (negative: a dip), -0.5 to 0.5", Start::Float64(defaults::BUMP_HEIGHT), S::BumpHeight),
-        ("bump_at", Kind::Float64, "m", "the bump's centre, -10000 to 10000", Start::Float64(defaults::BUMP_AT), S::BumpAt),
+        (
+            "bump_height",
+            Kind::Float64,
+            "m",
+            "the bump's height (negative: a dip), -0.5 to 0.5",
+            Start::Float64(defaults::BUMP_HEIGHT),
+            S::BumpHeight,
+        ),
+        (
+            "bump_at",
+            Kind::Float64,
+            "m",
+            "the bump's centre, -10000 to 10000",
+            Start::Float64(defaults::BUMP_AT),
+            S::BumpAt,
+        ),
         (
             "terrain_file",
             Kind::String,
@@ -224,7 +238,14 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Start::String("1in".into()),
             S::Roughness,
         ),
-        ("seed", Kind::Int32, "1", "the random course's seed (the same seed, the same course, bit for bit)", Start::Int32(1), S::Seed),
+        (
+            "seed",
+            Kind::Int32,
+            "1",
+            "the random course's seed (the same seed, the same course, bit for bit)",
+            Start::Int32(1),
+            S::Seed,
+        ),
         (
             "course_length",
             Kind::Float64,
@@ -241,7 +262,14 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Start::String("step:0.2".into()),
             S::Obstacle,
         ),
-        ("obstacle_at", Kind::Float64, "m", "where the obstacle starts, -10000 to 10000", Start::Float64(defaults::OBSTACLE_AT), S::ObstacleAt),
+        (
+            "obstacle_at",
+            Kind::Float64,
+            "m",
+            "where the obstacle starts, -10000 to 10000",
+            Start::Float64(defaults::OBSTACLE_AT),
+            S::ObstacleAt,
+        ),
         (
             "soil",
             Kind::String,
@@ -266,12 +294,41 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Start::String("profile".into()),
             S::Drive,
         ),
-        ("profile_speed", Kind::Float64, "m/s", "drive = profile: the target speed, -20 to 20", Start::Float64(defaults::SPEED), S::Speed),
-        ("profile_settle", Kind::Float64, "s", "drive = profile: the time at rest before the ramp, 0 to 1e6", Start::Float64(defaults::SETTLE), S::Settle),
-        ("profile_ramp", Kind::Float64, "s", "drive = profile: the ramp's duration, 0 to 1e6 (0: a step)", Start::Float64(defaults::RAMP), S::Ramp),
+        (
+            "profile_speed",
+            Kind::Float64,
+            "m/s",
+            "drive = profile: the target speed, -20 to 20",
+            Start::Float64(defaults::SPEED),
+            S::Speed,
+        ),
+        (
+            "profile_settle",
+            Kind::Float64,
+            "s",
+            "drive = profile: the time at rest before the ramp, 0 to 1e6",
+            Start::Float64(defaults::SETTLE),
+            S::Settle,
+        ),
+        (
+            "profile_ramp",
+            Kind::Float64,
+            "s",
+            "drive = profile: the ramp's duration, 0 to 1e6 (0: a step)",
+            Start::Float64(defaults::RAMP),
+            S::Ramp,
+        ),
     ];
     for (name, kind, unit, description, start, setting) in settings {
-        push(name.into(), kind, P, unit, description.into(), start, Role::Setting(setting));
+        push(
+            name.into(),
+            kind,
+            P,
+            unit,
+            description.into(),
+            start,
+            Role::Setting(setting),
+        );
     }
     let config = system.config();
     let arms = arm_names::<V>();
@@ -287,7 +344,10 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             P,
             "N.m/rad",
-            format!("{part}'s arm: the torsion spring's rate, > 0 (declared {})", spring.stiffness),
+            format!(
+                "{part}'s arm: the torsion spring's rate, > 0 (declared {})",
+                spring.stiffness
+            ),
             Start::Float64(spring.stiffness),
             Role::ArmStiffness(i),
         );
@@ -296,14 +356,27 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             P,
             "N.m.s/rad",
-            format!("{part}'s arm: the damper's rate, >= 0 (declared {})", spring.damping),
+            format!(
+                "{part}'s arm: the damper's rate, >= 0 (declared {})",
+                spring.damping
+            ),
             Start::Float64(spring.damping),
             Role::ArmDamping(i),
         );
     }
     let inputs = [
-        ("target_speed", "m/s", "drive = speed: the forward speed the controller holds", Input::TargetSpeed),
-        ("drive_torque", "N.m", "drive = torque: the torque on the sprocket", Input::DriveTorque),
+        (
+            "target_speed",
+            "m/s",
+            "drive = speed: the forward speed the controller holds",
+            Input::TargetSpeed,
+        ),
+        (
+            "drive_torque",
+            "N.m",
+            "drive = torque: the torque on the sprocket",
+            Input::DriveTorque,
+        ),
         (
             "drawbar_pull",
             "N",
@@ -368,7 +441,10 @@ fn describe_column(column: &str) -> (&'static str, String) {
         "sprocket_speed" => Some(("rad/s", "the sprocket's speed relative to the hull")),
         "track_speed" => Some(("m/s", "the track's speed round the hull")),
         "sprocket_torque" => Some(("N.m", "the drive's torque on the sprocket")),
-        "engine_load" => Some(("1", "1 where the engine, not the controller, sets the torque")),
+        "engine_load" => Some((
+            "1",
+            "1 where the engine, not the controller, sets the torque",
+        )),
         "tension" => Some(("N", "the tension in the recorded link's joint")),
         "tension_tight" => Some(("N", "the tension on the tight span")),
         "tension_slack" => Some(("N", "the tension on the slack span")),
@@ -383,8 +459,14 @@ fn describe_column(column: &str) -> (&'static str, String) {
         "dissipated" => Some(("J", "the energy dissipated since the start")),
         "seat_x" => Some(("m", "the driver's seat, horizontal position")),
         "seat_y" => Some(("m", "the driver's seat, height")),
-        "seat_ax" => Some(("m/s2", "the seat's longitudinal acceleration in the hull's frame")),
-        "seat_az" => Some(("m/s2", "the seat's vertical acceleration in the hull's frame")),
+        "seat_ax" => Some((
+            "m/s2",
+            "the seat's longitudinal acceleration in the hull's frame",
+        )),
+        "seat_az" => Some((
+            "m/s2",
+            "the seat's vertical acceleration in the hull's frame",
+        )),
         "momentum_x" | "momentum_y" => Some(("N.s", "linear momentum")),
         "angular_momentum" => Some(("N.m.s", "angular momentum about the origin")),
         "closure_error" => Some(("m", "the loop's closure error")),
@@ -405,10 +487,7 @@ fn describe_column(column: &str) -> (&'static str, String) {
 }
 
 /// Checks that the recorded columns of a built system are the table's.
-pub(crate) fn check_columns(
-    table: &[Variable],
-    system: &dyn Simulated,
-) -> Result<(), FmuError> {
+pub(crate) fn check_columns(table: &[Variable], system: &dyn Simulated) -> Result<(), FmuError> {
     let columns = system.columns();
     let declared: Vec<&str> = table
         .iter()

@@ -4,8 +4,8 @@
 //! syntax the main job's options and an FMU's parameters share
 //! ([`roughness`], [`obstacle`]).
 
-use thiserror::Error;
 use std::path::PathBuf;
+use thiserror::Error;
 
 use super::Terrain;
 use super::profile::{Course as Polyline, Obstacle, Profile, ProfileError};

@@ -18,8 +18,8 @@
 //! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
 //! decoupled everywhere else (spec §3).
 
-mod detect;
 pub mod course;
+mod detect;
 pub mod ground;
 pub mod profile;
 mod respond;

@@ -1,7 +1,7 @@
 use nalgebra::DVector;
 
-use super::{Output, Results, RunError, SimulationFailure, Sink};
 use super::march::{March, validate, validate_output};
+use super::{Output, Results, RunError, SimulationFailure, Sink};
 use crate::integrate::{Check, Integrator, SimulationError, Stats};
 use crate::system::Simulated;
 
