@@ -111,6 +111,8 @@ mod guide {
     struct Terrain;
     #[doc = include_str!("../book/src/mobility.md")]
     struct Mobility;
+    #[doc = include_str!("../book/src/fmu.md")]
+    struct Fmu;
     #[doc = include_str!("../book/src/formulation.md")]
     struct Formulation;
     #[doc = include_str!("../book/src/architecture.md")]

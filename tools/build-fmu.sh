@@ -3,6 +3,7 @@
 # or marder) writes OUTDIR/<Name>.fmu (FMI 3.0 co-simulation) and
 # OUTDIR/<Name>-fmi2.fmu (FMI 2.0), x86_64 Linux binaries. The guide's
 # chapter "The vehicle as an FMU" says what they hold and how to drive them.
+# TRACKGEN_FMU_PROFILE=dev builds with the test profile instead of release.
 set -euo pipefail
 if [ $# -ne 2 ] || { [ "$1" != m113 ] && [ "$1" != marder ]; }; then
     echo "usage: tools/build-fmu.sh m113|marder OUTDIR" >&2
@@ -11,6 +12,7 @@ fi
 vehicle=$1
 out=$2
 cd "$(dirname "$0")/.."
-cargo build --release --quiet -p "trackgen-fmu-$vehicle" -p trackgen-fmu
-target=${CARGO_TARGET_DIR:-target}
-"$target/release/trackgen-fmu" "$vehicle" "$target/release/libtrackgen_fmu_$vehicle.so" "$out"
+profile=${TRACKGEN_FMU_PROFILE:-release}
+cargo build --profile "$profile" --quiet -p "trackgen-fmu-$vehicle" -p trackgen-fmu
+dir=${CARGO_TARGET_DIR:-target}/$([ "$profile" = dev ] && echo debug || echo "$profile")
+"$dir/trackgen-fmu" "$vehicle" "$dir/libtrackgen_fmu_$vehicle.so" "$out"

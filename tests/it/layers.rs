@@ -160,8 +160,7 @@ pub const FACADE: Graph = &[
 /// on top.
 pub const MAIN_JOB: Graph = &[
     ("console", &[]),
-    ("course", &[]),
-    ("cli", &["course"]),
+    ("cli", &[]),
     ("nearest", &[]),
     ("scene", &["cli"]),
     ("animation", &["scene"]),

@@ -203,10 +203,10 @@ pub unsafe fn slice<'a, T>(pointer: *const T, n: usize) -> Result<&'a [T], FmuEr
     }
 }
 
-/// As [`slice`], mutable.
+/// As [`slice()`], mutable.
 ///
 /// # Safety
-/// As [`slice`].
+/// As [`slice()`].
 pub unsafe fn slice_mut<'a, T>(pointer: *mut T, n: usize) -> Result<&'a mut [T], FmuError> {
     if n == 0 {
         Ok(&mut [])

@@ -336,3 +336,20 @@ fn the_table_is_consistent() {
     }
     assert!(xml.contains(&description::token::<M113>(table)));
 }
+
+/// The guide's chapter lists every parameter and input (arms by their
+/// pattern).
+#[test]
+fn the_guide_lists_every_setting() {
+    let guide = include_str!("../../book/src/fmu.md");
+    let instance = Instance::<M113>::new().unwrap();
+    for v in instance.variables() {
+        let listed = match v.role {
+            Role::ArmStiffness(_) => "`<part>.arm_stiffness`".to_string(),
+            Role::ArmDamping(_) => "`<part>.arm_damping`".to_string(),
+            Role::Setting(_) | Role::Input(_) => format!("`{}`", v.name),
+            _ => continue,
+        };
+        assert!(guide.contains(&listed), "the guide lists {listed}");
+    }
+}
