@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The M113's FMUs through fmpy, an importer written outside this project.
 
-    tools/fmu-check.py FMU_DIR MAIN_JOB_DIR
+    tools/fmu-check.py FMU_DIR MAIN_JOB_DIR [FMUSIM]
 
 FMU_DIR holds M113.fmu and M113-fmi2.fmu (tools/build-fmu.sh m113 FMU_DIR);
 MAIN_JOB_DIR the default main job's output (`trackgen --out DIR`: the bump
@@ -15,11 +15,16 @@ course, 8 s, rows every 10 ms). Checks, each failing loudly:
 3. a bad parameter gives an error status and a logged message naming it,
    and the process and the instance go on;
 4. two instances in one process, stepped in turn with different spring
-   rates, each give what the same instance gives alone.
+   rates, each give what the same instance gives alone;
+5. with FMUSIM (the Reference FMUs' importer, tools/fmusim), each FMU
+   simulated by it equals the main job as in 2 (its CSV prints 16
+   significant digits, so the difference is its rounding).
 """
 
 import csv
+import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -33,16 +38,23 @@ STOP, STEP = 8.0, 0.01
 
 
 def native_rows(main_job_dir):
-    with open(Path(main_job_dir) / "all.csv", newline="") as f:
+    return read_csv(Path(main_job_dir) / "all.csv")
+
+
+def read_csv(path, time="t"):
+    with open(path, newline="") as f:
         rows = list(csv.reader(f))
-    header, values = rows[0], np.array(rows[1:], dtype=float)
-    return {name: values[:, i] for i, name in enumerate(header)}
+    header = [name.strip('"') for name in rows[0]]
+    values = np.array(rows[1:], dtype=float)
+    return {(time if name == "time" else name): values[:, i] for i, name in enumerate(header)}
 
 
 def compare(label, result, native):
     """The largest difference over every output column, relative to the
     column's largest magnitude; fails above TOLERANCE."""
-    assert np.array_equal(result["time"], native["t"]), f"{label}: the communication points"
+    # (fmusim prints times with 16 significant digits.)
+    assert np.allclose(result["time"], native["t"], rtol=0, atol=1e-12), \
+        f"{label}: the communication points"
     worst, where = 0.0, None
     for name, column in native.items():
         if name == "t":
@@ -140,6 +152,16 @@ def main():
     assert not np.array_equal(alone[0], alone[1]), "the spring rate changed nothing"
     print(f"two instances ({rate} {rates[0]:.0f} and {rates[1]:.0f} N m/rad), "
           f"stepped in turn for {n} steps: each equals its run alone")
+    if len(sys.argv) > 3:
+        fmusim = sys.argv[3]
+        for name in ["M113.fmu", "M113-fmi2.fmu"]:
+            with tempfile.TemporaryDirectory() as tmp:
+                out = Path(tmp) / "out.csv"
+                subprocess.run([fmusim, "--interface-type", "cs", "--set-stop-time",
+                                "--stop-time", str(STOP), "--output-interval", str(STEP),
+                                "--output-file", str(out), str(fmu_dir / name)], check=True)
+                compare(f"fmusim {name}", read_csv(out, time="time"), native)
+
     print("fmu-check: all checks passed")
 
 

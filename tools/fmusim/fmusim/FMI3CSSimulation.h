@@ -1,0 +1,6 @@
+#pragma once
+
+#include "FMISimulation.h"
+
+
+FMIStatus FMI3CSSimulate(const FMISimulationSettings* settings);
