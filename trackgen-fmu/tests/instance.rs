@@ -353,3 +353,29 @@ fn the_guide_lists_every_setting() {
         assert!(guide.contains(&listed), "the guide lists {listed}");
     }
 }
+
+/// `write_fmu` packs the description and the library where FMI 3.0 and
+/// 2.0 look for them.
+#[test]
+fn write_fmu_lays_out_the_archive() {
+    let dir = std::env::temp_dir().join(format!("trackgen-fmu-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let library = dir.join("libfake.so");
+    std::fs::write(&library, b"not really a library").unwrap();
+    for (version, file, binary) in [
+        (trackgen_fmu::Version::Fmi3, "M113.fmu", "binaries/x86_64-linux/M113.so"),
+        (trackgen_fmu::Version::Fmi2, "M113-fmi2.fmu", "binaries/linux64/M113.so"),
+    ] {
+        let path = trackgen_fmu::write_fmu::<M113>(&library, &dir, version).unwrap();
+        assert_eq!(path, dir.join(file));
+        let bytes = std::fs::read(&path).unwrap();
+        let has = |name: &str| bytes.windows(name.len()).any(|w| w == name.as_bytes());
+        assert!(has("modelDescription.xml") && has(binary), "{file}");
+        assert!(has("not really a library"), "{file}: the library, stored");
+    }
+    // A library that is not there: an error naming it.
+    let e = trackgen_fmu::write_fmu::<M113>(&dir.join("missing.so"), &dir, trackgen_fmu::Version::Fmi3)
+        .unwrap_err();
+    assert!(e.to_string().contains("missing.so"), "{e}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
