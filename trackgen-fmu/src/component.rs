@@ -5,7 +5,7 @@
 use std::ffi::{CStr, CString, c_char, c_int, c_void};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use trackgen::vehicle::Vehicle;
+use trackgen::vehicle::{Powertrain, Vehicle};
 
 use crate::error::FmuError;
 use crate::instance::Instance;
@@ -69,11 +69,16 @@ pub struct Component<V: Vehicle> {
 }
 
 impl<V: Vehicle> Component<V> {
-    /// A new instance named `name` logging to `logger`; `None` (after
-    /// logging why) if the vehicle cannot be built.
-    pub fn create(name: &str, logger: Logger) -> Option<Box<Component<V>>> {
+    /// A new instance named `name` logging to `logger`, with the
+    /// vehicle's engine if the library was exported with one; `None`
+    /// (after logging why) if the vehicle cannot be built.
+    pub fn create(
+        name: &str,
+        logger: Logger,
+        engine: Option<fn() -> Powertrain>,
+    ) -> Option<Box<Component<V>>> {
         let name = CString::new(name.replace('\0', " ")).unwrap_or_default();
-        let created = catch_unwind(Instance::<V>::new);
+        let created = catch_unwind(|| Instance::<V>::with_engine(engine.map(|f| f())));
         match created {
             Ok(Ok(instance)) => Some(Box::new(Component {
                 instance,

@@ -4,7 +4,7 @@
 
 use std::ffi::{c_char, c_int, c_void};
 
-use trackgen::vehicle::Vehicle;
+use trackgen::vehicle::{Powertrain, Vehicle};
 
 use crate::component::{self, Component, Fmi2Logger, Logger, Status};
 use crate::error::FmuError;
@@ -30,7 +30,8 @@ pub struct Callbacks {
     pub environment: *mut c_void,
 }
 
-/// `fmi2Instantiate`: co-simulation only; the GUID must be this FMU's.
+/// `fmi2Instantiate`: co-simulation only; the GUID must be this FMU's;
+/// with the engine `engine` makes, if any.
 ///
 /// # Safety
 /// The strings are null or NUL-terminated; `callbacks` is null or valid
@@ -40,6 +41,7 @@ pub unsafe fn instantiate<V: Vehicle>(
     kind: c_int,
     guid: *const c_char,
     callbacks: *const Callbacks,
+    engine: Option<fn() -> Powertrain>,
 ) -> *mut c_void {
     // SAFETY: by the caller's contract.
     let logger = unsafe { callbacks.as_ref() }
@@ -47,7 +49,7 @@ pub unsafe fn instantiate<V: Vehicle>(
         .unwrap_or(Logger::None);
     // SAFETY: as above.
     let name = unsafe { component::text(name) }.unwrap_or("trackgen");
-    let Some(component) = Component::<V>::create(name, logger) else {
+    let Some(component) = Component::<V>::create(name, logger, engine) else {
         return std::ptr::null_mut();
     };
     if kind != 1 {
@@ -152,7 +154,7 @@ pub unsafe fn boolean_status<V: Vehicle>(
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __export_fmi2 {
-    ($v:ty) => {
+    ($v:ty, $engine:expr) => {
         const _: () = {
             use ::std::ffi::{c_char, c_int, c_void};
             use $crate::component::{self as c, Status};
@@ -188,7 +190,7 @@ macro_rules! __export_fmi2 {
                 _visible: c_int,
                 _logging_on: c_int,
             ) -> *mut c_void {
-                unsafe { fmi2::instantiate::<$v>(name, kind, guid, callbacks) }
+                unsafe { fmi2::instantiate::<$v>(name, kind, guid, callbacks, $engine) }
             }
 
             #[unsafe(no_mangle)]

@@ -5,7 +5,7 @@
 
 use std::ffi::{CString, c_char, c_void};
 
-use trackgen::vehicle::Vehicle;
+use trackgen::vehicle::{Powertrain, Vehicle};
 
 use crate::component::{self, Component, Fmi3Logger, Logger, Status};
 use crate::error::FmuError;
@@ -13,8 +13,9 @@ use crate::error::FmuError;
 /// `fmi3GetVersion`.
 pub const VERSION: &std::ffi::CStr = c"3.0";
 
-/// `fmi3InstantiateCoSimulation`: a new instance, or null (logged) if the
-/// token is not this FMU's or the vehicle cannot be built.
+/// `fmi3InstantiateCoSimulation`: a new instance (with the engine
+/// `engine` makes, if any), or null (logged) if the token is not this
+/// FMU's or the vehicle cannot be built.
 ///
 /// # Safety
 /// The strings are null or NUL-terminated; the logger, if any, is callable
@@ -24,11 +25,12 @@ pub unsafe fn instantiate<V: Vehicle>(
     token: *const c_char,
     env: *mut c_void,
     logger: Option<Fmi3Logger>,
+    engine: Option<fn() -> Powertrain>,
 ) -> *mut c_void {
     let logger = logger.map_or(Logger::None, |f| Logger::Fmi3(f, env));
     // SAFETY: by the caller's contract.
     let name = unsafe { component::text(name) }.unwrap_or("trackgen");
-    let Some(component) = Component::<V>::create(name, logger) else {
+    let Some(component) = Component::<V>::create(name, logger, engine) else {
         return std::ptr::null_mut();
     };
     // SAFETY: as above.
@@ -194,7 +196,7 @@ pub unsafe fn unsupported<V: Vehicle>(instance: *mut c_void, name: &'static str)
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __export_fmi3 {
-    ($v:ty) => {
+    ($v:ty, $engine:expr) => {
         const _: () = {
             use ::std::ffi::{c_char, c_int, c_void};
             use $crate::component::{self as c, Status};
@@ -230,7 +232,7 @@ macro_rules! __export_fmi3 {
                 logger: Option<c::Fmi3Logger>,
                 _intermediate: *mut c_void,
             ) -> *mut c_void {
-                unsafe { fmi3::instantiate::<$v>(name, token, env, logger) }
+                unsafe { fmi3::instantiate::<$v>(name, token, env, logger, $engine) }
             }
 
             #[unsafe(no_mangle)]

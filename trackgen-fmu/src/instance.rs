@@ -21,7 +21,7 @@ use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
 use trackgen::simulate::{DISSIPATED, ENERGY, EnergyBalance, MOTOR_WORK, March};
 use trackgen::system::Simulated;
-use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics, speed_ramp};
+use trackgen::vehicle::{Drive, Powertrain, Vehicle, VehicleDynamics, speed_ramp};
 
 use crate::error::FmuError;
 use crate::variables::{self, Causality, Input, Kind, Role, Setting, Start, Variable, defaults};
@@ -101,6 +101,8 @@ pub struct Instance<V: Vehicle> {
     /// An input was changed since the last communication point.
     inputs_changed: bool,
     run: Option<Running<V>>,
+    /// The engine `engine = 1` drives through.
+    engine: Option<Powertrain>,
 }
 
 /// A course longer than this is refused, m.
@@ -109,8 +111,15 @@ const MAX_COURSE_LENGTH: f64 = 1e5;
 const OPEN_END: f64 = 1e6;
 
 impl<V: Vehicle> Instance<V> {
-    /// A new instance with every variable at its start value.
+    /// A new instance with every variable at its start value, without an
+    /// engine (the parameter `engine` must stay 0).
     pub fn new() -> Result<Self, FmuError> {
+        Self::with_engine(None)
+    }
+
+    /// A new instance whose parameter `engine = 1` drives through
+    /// `engine`.
+    pub fn with_engine(engine: Option<Powertrain>) -> Result<Self, FmuError> {
         let table = variables::table::<V>()?;
         let n = table.len();
         let mut instance = Instance {
@@ -125,6 +134,7 @@ impl<V: Vehicle> Instance<V> {
             cells: Arc::default(),
             inputs_changed: false,
             run: None,
+            engine,
         };
         instance.set_start_values();
         Ok(instance)
@@ -361,6 +371,13 @@ impl<V: Vehicle> Instance<V> {
         for (r, value) in refs.iter().zip(values) {
             let v = self.variable(*r, Kind::Int32)?.clone();
             self.settable(&v)?;
+            if v.role == Role::Setting(Setting::Engine) && !(0..=1).contains(value) {
+                return Err(self.refuse_text(
+                    &v.name,
+                    value,
+                    "0 (the controller alone) or 1 (through the engine)",
+                ));
+            }
             self.integers[*r as usize] = *value;
         }
         Ok(())
@@ -545,6 +562,15 @@ impl<V: Vehicle> Instance<V> {
             }
         };
         let mut config = V::declared_config(terrain, drive);
+        if self.integers[self.setting(Setting::Engine)] == 1 {
+            config.powertrain = Some(self.engine.clone().ok_or_else(|| {
+                self.refuse_text(
+                    "engine",
+                    &1,
+                    "this FMU was exported without an engine (export_fmu!'s powertrain)",
+                )
+            })?);
+        }
         match self.text(Setting::Soil) {
             "rigid" => {}
             name => {

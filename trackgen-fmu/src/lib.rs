@@ -50,10 +50,29 @@ pub use package::{PackageError, Version, write_fmu};
 /// vehicle `$vehicle` (a type implementing `trackgen::vehicle::Vehicle`)
 /// from the `cdylib` this is written in. One vehicle per library: the
 /// functions have the standard's fixed names.
+///
+/// With `powertrain = f` (a `fn() -> trackgen::vehicle::Powertrain`), the
+/// parameter `engine = 1` drives through that engine; without, `engine =
+/// 1` is refused.
+///
+/// ```ignore
+/// trackgen_fmu::export_fmu!(trackgen::vehicles::m113::M113,
+///                           powertrain = trackgen::vehicles::m113::powertrain);
+/// ```
 #[macro_export]
 macro_rules! export_fmu {
     ($vehicle:ty) => {
-        $crate::__export_fmi3!($vehicle);
-        $crate::__export_fmi2!($vehicle);
+        $crate::__export_fmi3!($vehicle, None);
+        $crate::__export_fmi2!($vehicle, None);
+    };
+    ($vehicle:ty, powertrain = $powertrain:path $(,)?) => {
+        $crate::__export_fmi3!(
+            $vehicle,
+            Some($powertrain as fn() -> ::trackgen::vehicle::Powertrain)
+        );
+        $crate::__export_fmi2!(
+            $vehicle,
+            Some($powertrain as fn() -> ::trackgen::vehicle::Powertrain)
+        );
     };
 }

@@ -98,6 +98,8 @@ pub enum Setting {
     Settle,
     /// `profile_ramp`, s.
     Ramp,
+    /// `engine`: 1 drives through the vehicle's engine.
+    Engine,
 }
 
 /// The inputs.
@@ -197,7 +199,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
     );
     use Causality::Parameter as P;
     use Setting as S;
-    let settings: [(&str, Kind, &'static str, &str, Start, Setting); 15] = [
+    let settings: [(&str, Kind, &'static str, &str, Start, Setting); 16] = [
         (
             "terrain",
             Kind::String,
@@ -317,6 +319,14 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             "drive = profile: the ramp's duration, 0 to 1e6 (0: a step)",
             Start::Float64(defaults::RAMP),
             S::Ramp,
+        ),
+        (
+            "engine",
+            Kind::Int32,
+            "1",
+            "1: the vehicle's engine caps the drive's torque (its power, not the controller, sets the speed where they disagree; engine_load is 1 there); 0: the controller alone",
+            Start::Int32(0),
+            S::Engine,
         ),
     ];
     for (name, kind, unit, description, start, setting) in settings {

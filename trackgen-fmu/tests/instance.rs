@@ -363,8 +363,16 @@ fn write_fmu_lays_out_the_archive() {
     let library = dir.join("libfake.so");
     std::fs::write(&library, b"not really a library").unwrap();
     for (version, file, binary) in [
-        (trackgen_fmu::Version::Fmi3, "M113.fmu", "binaries/x86_64-linux/M113.so"),
-        (trackgen_fmu::Version::Fmi2, "M113-fmi2.fmu", "binaries/linux64/M113.so"),
+        (
+            trackgen_fmu::Version::Fmi3,
+            "M113.fmu",
+            "binaries/x86_64-linux/M113.so",
+        ),
+        (
+            trackgen_fmu::Version::Fmi2,
+            "M113-fmi2.fmu",
+            "binaries/linux64/M113.so",
+        ),
     ] {
         let path = trackgen_fmu::write_fmu::<M113>(&library, &dir, version).unwrap();
         assert_eq!(path, dir.join(file));
@@ -374,8 +382,32 @@ fn write_fmu_lays_out_the_archive() {
         assert!(has("not really a library"), "{file}: the library, stored");
     }
     // A library that is not there: an error naming it.
-    let e = trackgen_fmu::write_fmu::<M113>(&dir.join("missing.so"), &dir, trackgen_fmu::Version::Fmi3)
-        .unwrap_err();
+    let e =
+        trackgen_fmu::write_fmu::<M113>(&dir.join("missing.so"), &dir, trackgen_fmu::Version::Fmi3)
+            .unwrap_err();
     assert!(e.to_string().contains("missing.so"), "{e}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `engine = 1` drives through the engine the library was exported with:
+/// the run is the native run with that powertrain; without one it is
+/// refused, and only 0 and 1 are values.
+#[test]
+fn engine_parameter_drives_through_the_powertrain() {
+    let engine = reference("engine");
+    let mut without = Instance::<M113>::new().unwrap();
+    assert!(without.set_i32(&[engine], &[2]).is_err());
+    without.set_i32(&[engine], &[1]).unwrap();
+    without.setup_experiment(None, 0.0, Some(1.0)).unwrap();
+    without.enter_initialization().unwrap();
+    let e = without.exit_initialization().unwrap_err();
+    assert!(e.to_string().contains("without an engine"), "{e}");
+
+    let powertrain = trackgen::vehicles::m113::powertrain();
+    let mut with = Instance::<M113>::with_engine(Some(powertrain.clone())).unwrap();
+    with.set_i32(&[engine], &[1]).unwrap();
+    let fmu = run_fmu(&mut with, 1.5, 0.01);
+    let mut config = main_job_config();
+    config.powertrain = Some(powertrain);
+    assert_same(&fmu, &native(config, 1.5, 0.01));
 }

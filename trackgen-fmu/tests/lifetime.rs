@@ -36,7 +36,12 @@ static ALLOCATOR: Counting = Counting;
 /// One cycle as a master makes it through the C API's shared layer:
 /// instantiate, initialise, two steps, a refused value, terminate, free.
 fn cycle() {
-    let created = Component::<M113>::create("cycle", Logger::None).unwrap();
+    let created = Component::<M113>::create(
+        "cycle",
+        Logger::None,
+        Some(trackgen::vehicles::m113::powertrain),
+    )
+    .unwrap();
     let pointer = Box::into_raw(created) as *mut std::ffi::c_void;
     // SAFETY: `pointer` is the instance just made, freed once at the end.
     unsafe {

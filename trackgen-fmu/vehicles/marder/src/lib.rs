@@ -1,5 +1,8 @@
 //! The Marder's FMU library: the FMI 3.0 and 2.0 functions for
-//! [`trackgen::vehicles::marder::Marder`]. `tools/build-fmu.sh marder OUTDIR` builds
+//! [`trackgen::vehicles::marder::Marder`], with its engine. `tools/build-fmu.sh marder OUTDIR` builds
 //! and packs it.
 
-trackgen_fmu::export_fmu!(trackgen::vehicles::marder::Marder);
+trackgen_fmu::export_fmu!(
+    trackgen::vehicles::marder::Marder,
+    powertrain = trackgen::vehicles::marder::powertrain
+);
