@@ -67,6 +67,15 @@ crate::model! {
     pub vehicle M113 {
         gravity: (0.0, -9.81),
         seat: (DRIVER_SEAT.0, DRIVER_SEAT.1),
+        // The hull's side outline in this frame, where the ground under
+        // the resting track is at y ≈ −0.58 (road wheels at −0.215, radius
+        // 0.305, shoes 0.06 thick). From the M113A1's published figures
+        // (TM 9-2300-257-10; Jane's Armour and Artillery): 4.863 m long,
+        // the roof 1.85 m and the belly 0.43 m above the ground; a lower
+        // and an upper glacis at about 45° meeting in a nose 0.93 m up,
+        // read from side-view drawings. For contact: the cupola, the trim
+        // vane and the ramp's hinge are left out.
+        hull: [(0.45, 0.35), (-0.05, -0.15), (-4.41, -0.15), (-4.41, 1.27), (-0.55, 1.27)],
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.006, 0.406) },
         // Tip circle 0.2605 m, gap arcs of 0.089 m centred 0.3 m out.
         sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.245,

@@ -96,6 +96,15 @@ crate::model! {
     pub vehicle Marder {
         gravity: (0.0, -9.81),
         seat: (DRIVER_SEAT.0, DRIVER_SEAT.1),
+        // The hull's side outline in this frame, where the ground under
+        // the resting track is at y ≈ −0.79 (road wheels at −0.376,
+        // radius 0.35, shoes 0.06 thick). From the Marder 1A3's published
+        // figures (Jane's Armour and Artillery): 6.79 m long, the hull
+        // roof about 1.9 m (the turret's top 2.98 m) and the belly 0.45 m
+        // above the ground; a steep lower and a flat upper glacis meeting
+        // in a nose 1.0 m up, read from side-view drawings. For contact:
+        // the turret and the stowage are left out.
+        hull: [(0.55, 0.25), (-0.25, -0.34), (-6.24, -0.34), (-6.24, 1.11), (-1.0, 1.11)],
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.7958, 0.0) },
         // Addendum circle 0.3 m, gap arcs of 0.07 m centred on the
         // 0.328414781 m circle (a 12-gon of 0.17 m sides).

@@ -159,3 +159,21 @@ fn m113_on_dry_sand() {
     }
     check_at("M113, dry sand", system, t + 2e-3, y);
 }
+
+/// Over a step's top edge: the edge, a corner of the polyline, is inside
+/// the shoes that bend over it ([`contact::outline`](trackgen::contact::outline)),
+/// whose force turns with the shoe; the M113's front road wheel has
+/// climbed the 0.2 m step at 2.0 s.
+#[test]
+fn m113_over_a_step_edge() {
+    let course = trackgen::contact::profile::Course::starting_at(-20.0, 0.0)
+        .unwrap()
+        .flat(24.0)
+        .unwrap()
+        .step(0.2)
+        .unwrap()
+        .flat(20.0)
+        .unwrap();
+    let terrain = Terrain::profile(course.profile().unwrap());
+    check::<M113>("M113, step edge", terrain, 2.0);
+}

@@ -81,6 +81,9 @@ pub struct Vehicle {
     /// The driver's seat on the frame, m, from the chassis centroid in the
     /// frame's axes (the centroid when not declared).
     pub seat: Vec2,
+    /// The hull's outline on the frame, m, from the chassis centroid, as
+    /// declared (empty: no hull).
+    pub hull: Vec<Vec2>,
     pub parts: Vec<Part>,
     pub track: Track,
     /// The chassis as a tree: the frame (body 0), then each part preceded

@@ -51,8 +51,9 @@ fn penalty_chain_with_named_constants() {
 #[test]
 fn small_vehicle() {
     insta::assert_snapshot!(pretty(expand(quote! {
-        /// Sprocket, one road wheel, idler; a 3-link track.
+        /// Sprocket, one road wheel, idler; a 3-link track; a hull.
         pub vehicle Small {
+            hull: [(0.3, -0.1), (0.3, 0.6), (-2.3, 0.6), (-2.3, -0.1)],
             chassis { mass: 1000.0, inertia: 500.0, centroid: (-1.0, 0.4) },
             sprocket drive { at: (0.0, 0.0), mass: 27.68, inertia: 0.883, radius: 0.245, teeth: 10 },
             road_wheel rw1 { at: (-1.0, -0.2), mass: 35.56, inertia: 2.16, radius: 0.305 },

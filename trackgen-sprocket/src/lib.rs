@@ -1,7 +1,8 @@
 //! A sprocket's arc tooth profile: its figures and the rules for a profile
 //! that can drive a track, in plain numbers so that the compiler checks a
 //! declaration with them at compile time and the runtime checks a vehicle
-//! built from anything else with the same rules (one owner).
+//! built from anything else with the same rules (one owner). The hull's
+//! outline has its rule here too ([`convex_outline`]), for the same reason.
 //!
 //! The profile: `N` teeth; a tip (addendum) circle of radius `r_a`; between
 //! every two teeth a circular gap of radius `ρ` centred `d` from the
@@ -12,6 +13,10 @@
 //! lie inside the gaps, clear of the teeth.
 
 #![warn(missing_docs)]
+
+mod outline;
+
+pub use outline::{OutlineProblem, convex_outline};
 
 use std::f64::consts::PI;
 use std::fmt;

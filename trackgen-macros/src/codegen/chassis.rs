@@ -83,6 +83,10 @@ fn chassis_type(
         "The chassis of [`{vehicle_name}`]: the frame (body 0) and its parts, pinned to it."
     );
     let (seat_x, seat_y) = (&vehicle.seat.x, &vehicle.seat.y);
+    let hull = vehicle.hull.iter().map(|p| {
+        let (x, y) = (&p.x, &p.y);
+        quote!([#x, #y])
+    });
     let indices = &vehicle.part_bodies;
     let parts = vehicle.parts.iter().zip(indices).map(|(p, &(body, arm_body))| {
         let label = p.name.to_string();
@@ -152,6 +156,7 @@ fn chassis_type(
         impl #rt::ChassisModel<#dof> for #name {
             const PARTS: &'static [#rt::ChassisPart] = &[#(#parts),*];
             const SEAT: [f64; 2] = [#seat_x, #seat_y];
+            const HULL: &'static [[f64; 2]] = &[#(#hull),*];
         }
     }
 }

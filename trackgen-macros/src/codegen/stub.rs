@@ -104,6 +104,7 @@ fn models(name: &Ident, chassis: bool) -> TokenStream {
             impl<const D: usize> #rt::ChassisModel<D> for #name {
                 const PARTS: &'static [#rt::ChassisPart] = &[];
                 const SEAT: [f64; 2] = [0.0, 0.0];
+                const HULL: &'static [[f64; 2]] = &[];
             }
         }
     } else {

@@ -24,9 +24,10 @@ const MAX_REPEAT: usize = 64;
 impl Lowering<'_> {
     pub(super) fn vehicle(&mut self, block: &crate::parse::Block, name: &Ident) -> Vehicle {
         use crate::parse::Entry;
-        let fields = self.fields("vehicle", block, &["gravity", "seat"]);
+        let fields = self.fields("vehicle", block, &["gravity", "seat", "hull"]);
         let gravity = self.gravity(&fields);
         let seat = self.point(&fields, "seat", false);
+        let hull = self.hull(&fields);
         let kinds = [
             "chassis",
             "track",
@@ -163,6 +164,7 @@ impl Lowering<'_> {
         // The seat on the frame, from its centroid (the default: the
         // centroid itself).
         let seat = seat.map_or_else(Vec2::zero, |s| s - centroid.clone());
+        let hull = hull.into_iter().map(|p| p - centroid.clone()).collect();
         for part in &mut parts {
             part.at = part.at.clone() - centroid.clone();
             if let Some(arm) = &mut part.arm {
@@ -181,6 +183,7 @@ impl Lowering<'_> {
         Vehicle {
             gravity,
             seat,
+            hull,
             parts,
             track,
             chassis,
@@ -519,6 +522,39 @@ impl Lowering<'_> {
                 None
             }
         }
+    }
+
+    /// `hull: [(x, y), …]`: the hull's outline on the frame, m, a convex
+    /// polygon of at least three corners in either winding, given in the
+    /// vehicle's frame (the seat's); none when not declared. Its
+    /// convexity is checked here when its numbers are literal, and when
+    /// the vehicle is built otherwise.
+    fn hull(&mut self, fields: &Fields) -> Vec<Vec2> {
+        let Some(points) = self.points(fields, "hull", false) else {
+            return Vec::new();
+        };
+        let expr = fields.map.get("hull").expect("points found it");
+        if points.len() < 3 {
+            self.errors.spanned(
+                expr,
+                format!(
+                    "`hull` is an outline: at least 3 corners, found {}",
+                    points.len()
+                ),
+            );
+            return Vec::new();
+        }
+        let known: Option<Vec<(f64, f64)>> = points
+            .iter()
+            .map(|p| Some((p.x.known()?, p.y.known()?)))
+            .collect();
+        if let Some(corners) = known
+            && let Err(why) = trackgen_sprocket::convex_outline(&corners)
+        {
+            self.errors.spanned(expr, format!("`hull`: {why}"));
+            return Vec::new();
+        }
+        points
     }
 
     /// A non-empty list of points `[(x, y), …]`, m.

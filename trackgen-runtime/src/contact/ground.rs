@@ -56,7 +56,10 @@ pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: 
 /// norm; `None` above it. A closed form's depth is `h(p_x) − p_y`, its
 /// gradient `(−h′, 1)`; a polyline's depth is the distance to the nearest
 /// edge, its gradient that edge's unit normal towards the surface.
-fn penetration(terrain: &Terrain, point: Vector2<f64>) -> Option<(f64, Vector2<f64>, f64)> {
+pub(super) fn penetration(
+    terrain: &Terrain,
+    point: Vector2<f64>,
+) -> Option<(f64, Vector2<f64>, f64)> {
     if let Terrain::Profile(profile) = terrain {
         let nearest = profile.nearest_boundary(point.x, point.y)?;
         if nearest.distance <= 0.0 {

@@ -21,6 +21,7 @@
 pub mod course;
 mod detect;
 pub mod ground;
+pub mod outline;
 pub mod profile;
 mod respond;
 pub mod roughness;

@@ -250,4 +250,10 @@ pub trait ChassisModel<const DOF: usize>: RecursiveModel<DOF> {
     /// centroid itself when the declaration gives none). Ride quality is
     /// measured there.
     const SEAT: [f64; 2];
+
+    /// The hull's outline: the corners of a convex polygon on the frame,
+    /// m, from the frame's centroid in its axes, as declared by `hull`
+    /// (empty when the declaration gives none: no hull touches anything).
+    /// Its contact with the terrain is [`crate::contact::outline`]'s.
+    const HULL: &'static [[f64; 2]];
 }

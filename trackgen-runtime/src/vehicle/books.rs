@@ -18,6 +18,10 @@ pub(super) struct EnergyBooks {
     pub wheel_penetration: f64,
     /// The deepest tooth contact, m.
     pub sprocket_penetration: f64,
+    /// The normal force of the ground on the hull, summed, N.
+    pub hull_normal: f64,
+    /// The deepest hull contact, m.
+    pub hull_penetration: f64,
     /// Elastic energy in the contacts (and soil), J.
     pub potential: f64,
     /// Elastic energy in the arms' springs, J.
@@ -41,6 +45,14 @@ impl EnergyBooks {
         self.potential += force.potential;
         self.dissipation += force.dissipation;
         force.penetration
+    }
+
+    /// Books a contact of the hull with the ground.
+    #[inline]
+    pub fn hull(&mut self, force: &ContactForce) {
+        self.hull_normal += force.normal;
+        let depth = self.contact(force);
+        self.hull_penetration = self.hull_penetration.max(depth);
     }
 
     /// Books a ground contact.

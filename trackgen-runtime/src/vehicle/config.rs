@@ -89,6 +89,21 @@ impl VehicleConfig {
         }
     }
 
+    /// The law of a terrain corner against a shoe's or the hull's outline
+    /// and of the hull's corners on the ground ([`outline`](crate::contact::outline)):
+    /// the ground's normal law, and Coulomb friction of the ground's μ
+    /// regularised at the rims' slip speed (the declared `wheels` law's):
+    /// a corner has no stiction state.
+    pub fn corner_laws(&self) -> ContactLaws {
+        ContactLaws {
+            normal: self.ground.normal,
+            friction: crate::laws::Friction {
+                mu: self.ground.friction.mu(),
+                ..self.wheels.friction
+            },
+        }
+    }
+
     /// Checks what the configuration alone can tell (the terrain, the
     /// drive, every law's parameters, the soil, the drawbar), every value
     /// against its range; what needs the compiled model is checked when

@@ -68,6 +68,10 @@ pub enum ConfigError {
     /// give.
     #[error("soft soil needs the track's width: declare `width` (m) in the vehicle's `shoe`")]
     NoTrackWidth,
+    /// The declared hull is no convex outline (a declaration whose numbers
+    /// the compiler could not check).
+    #[error("the hull's outline: {0}")]
+    Hull(trackgen_sprocket::OutlineProblem),
     /// The drawbar pull is not a number.
     #[error("drawbar_pull {pull} N is not a finite number")]
     Drawbar {

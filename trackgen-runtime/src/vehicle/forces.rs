@@ -7,6 +7,7 @@ use nalgebra::SVector;
 use super::books::EnergyBooks;
 use super::workspace::Workspace;
 use super::{Geometry, VehicleConfig, arms};
+use crate::contact::outline::{self, Outline, TERRAIN_CORNER};
 use crate::contact::soft_ground::SoftGround;
 use crate::contact::{ContactJacobian, GroundFriction, ground, sprocket, wheel};
 use crate::integrate::SimulationError;
@@ -41,22 +42,45 @@ pub(super) fn stiction_scale(friction: &GroundFriction, ground_load: f64) -> f64
     }
 }
 
+/// The outlines sharp terrain meets: the shoes' (the hull of their ground
+/// points and inner face; `None` for a shoe of no area) and the hull's
+/// (`None` when the declaration gives none).
+#[derive(Debug, Clone)]
+pub(super) struct Outlines {
+    pub shoe: Option<Outline>,
+    pub hull: Option<Outline>,
+}
+
 /// Stage 2, detection: every contact of the links (their states in
-/// `work`) with the ground and with each part, into `work.contacts`.
+/// `work`) with the ground and with each part, into `work.contacts`; on
+/// rigid ground the terrain's sharp corners inside the shoes too
+/// ([`outline`]); and the hull's with the ground into
+/// `work.hull_contacts`.
 pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
     work: &mut Workspace,
     config: &VehicleConfig,
     geometry: &Geometry,
+    outlines: &Outlines,
 ) {
     let Workspace {
         links,
         parts,
         contacts,
+        hull_contacts,
         ..
     } = work;
     contacts.clear();
+    hull_contacts.clear();
     let shoe = &geometry.shoe;
     ground::detect(&config.terrain, links, shoe, contacts);
+    if config.soil.is_none()
+        && let Some(outline) = &outlines.shoe
+    {
+        outline::detect_track_corners(&config.terrain, links, outline, contacts);
+    }
+    if let Some(hull) = &outlines.hull {
+        outline::detect_hull(&config.terrain, &parts[0], hull, hull_contacts);
+    }
     for part in C::PARTS {
         let body = &parts[part.body];
         if part.kind == PartKind::Sprocket {
@@ -141,6 +165,7 @@ pub(super) fn respond<const DC: usize>(
     let Workspace {
         parts,
         contacts,
+        hull_contacts,
         track_loads,
         chassis_loads,
         tangential_rate,
@@ -156,9 +181,17 @@ pub(super) fn respond<const DC: usize>(
     let sprocket_body = sprocket.map(|s| s.body);
     for contact in contacts.iter() {
         let link_load = &mut track_loads[contact.link];
-        let slot = contact.link * points + contact.feature;
+        // A ground point's tangential state (not a terrain corner's: it
+        // has none).
+        let slot = || contact.link * points + contact.feature;
         match (contact.other, soil) {
+            (None, _) if contact.feature == TERRAIN_CORNER => {
+                let force = config.corner_laws().respond(contact);
+                force.apply(contact, link_load, None);
+                books.ground(&force);
+            }
             (None, None) => {
+                let slot = slot();
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);
                 let (force, rate) = config.ground.respond(contact, z);
                 if let Some(r) = tangential_rate.get_mut(slot) {
@@ -169,6 +202,7 @@ pub(super) fn respond<const DC: usize>(
                 books.ground(&force);
             }
             (None, Some(soil)) => {
+                let slot = slot();
                 let (force, rate) = soil.respond(contact, points, tangential[slot]);
                 tangential_rate[slot] = rate;
                 // Below the surface the point shears the soil, bearing or
@@ -198,6 +232,11 @@ pub(super) fn respond<const DC: usize>(
                 *deepest = deepest.max(depth);
             }
         }
+    }
+    for contact in hull_contacts.iter() {
+        let force = config.corner_laws().respond(contact);
+        force.apply(contact, &mut chassis_loads[0], None);
+        books.hull(&force);
     }
     // Ground points off the ground: their stiction deflections relax.
     if let (None, GroundFriction::Stiction(stiction)) = (soil, config.ground.friction) {
@@ -268,6 +307,12 @@ pub(super) fn linearise(
     for (contact, out) in contacts.iter().zip(jacobians.iter_mut()) {
         let link = &links[contact.link];
         match contact.other {
+            None if contact.feature == TERRAIN_CORNER => {
+                let tangent = outline::tangent(contact);
+                config
+                    .corner_laws()
+                    .linearise(contact, &tangent, link, None, out);
+            }
             None => {
                 let slot = contact.link * points + contact.feature;
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);

@@ -331,7 +331,9 @@ impl Implicit {
                         body_by_rate: block(&jacobian.other, LINK_RATE),
                     });
                 }
-                None if !touching.is_empty() => {
+                None if !touching.is_empty()
+                    && contact.feature != crate::contact::outline::TERRAIN_CORNER =>
+                {
                     let state = i * per_link + contact.feature;
                     // In the state's unit: w = z / unit.
                     let by_state = jacobian.link.column(DEFLECTION) * unit;

@@ -218,8 +218,10 @@ impl Tangent {
                 .iter()
                 .zip(at.jacobians)
                 .map(|(contact, jacobian)| {
-                    let slot = (contact.other.is_none() && !touching.is_empty())
-                        .then(|| contact.link * per_link + contact.feature);
+                    let slot = (contact.other.is_none()
+                        && contact.feature != crate::contact::outline::TERRAIN_CORNER
+                        && !touching.is_empty())
+                    .then(|| contact.link * per_link + contact.feature);
                     Compact::of(contact, jacobian, slot)
                 }),
         );

@@ -49,6 +49,12 @@ record! {
         wheel_penetration,
         /// The deepest tooth contact, m.
         sprocket_penetration,
+        /// The ground's normal force on the hull, N (0 without a declared
+        /// hull, or clear of the ground).
+        hull_normal,
+        /// The deepest hull contact, m: a hull corner below the ground, or
+        /// a terrain corner inside the hull.
+        hull_penetration,
         /// Mechanical energy: kinetic, gravity, springs, contacts, J.
         energy,
         /// The motor's work since the start, J.

@@ -5,7 +5,7 @@
 use nalgebra::{DVector, SVector, Vector2};
 
 use super::declared::sealed::Build;
-use super::forces::{self, ChassisState, Sprocket, TangentialStates};
+use super::forces::{self, ChassisState, Outlines, Sprocket, TangentialStates};
 use super::implicit::Implicit;
 use super::jacobian::Tangent;
 use super::layout::track_coordinates;
@@ -18,6 +18,7 @@ use super::{
 };
 use crate::assembly::{self, Assembled};
 use crate::closure::Switch;
+use crate::contact::outline::Outline;
 use crate::contact::soft_ground::{Rut, SoftGround};
 use crate::contact::sprocket::{pitch_radius, rolling_radius};
 use crate::contact::{BodyState, GroundFriction};
@@ -57,6 +58,9 @@ pub struct VehicleSystem<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>
     stiction_scale: f64,
     /// `ū2` of every link: the joint to the next.
     forward_joints: Vec<Vector2<f64>>,
+    /// The shoes' and the hull's outlines, against the terrain's sharp
+    /// corners.
+    outlines: Outlines,
     /// What an evaluation works in, allocated once.
     work: Workspace,
     /// The linearly implicit integrator's own solves
@@ -146,6 +150,15 @@ where
             .joints()
             .map(|joints| joints.into_iter().map(|(_, u2)| u2).collect())
             .unwrap_or_else(|| vec![Vector2::zeros(); T::BODIES]);
+        let hull: Vec<Vector2<f64>> = C::HULL.iter().map(|&[x, y]| Vector2::new(x, y)).collect();
+        let outlines = Outlines {
+            shoe: Outline::of_shoe(&geometry.shoe),
+            hull: if hull.is_empty() {
+                None
+            } else {
+                Some(Outline::new(&hull).map_err(ConfigError::Hull)?)
+            },
+        };
         let track = TrackSystem::new(track, start.track, SVector::zeros(), config.closure)?;
         let chassis = TreeSystem::chassis(chassis, start.chassis, SVector::zeros());
         let bodies = Pair::new(track, "track", chassis, "chassis");
@@ -167,6 +180,7 @@ where
             sprocket,
             stiction_scale,
             forward_joints,
+            outlines,
             work: Workspace::new(T::BODIES, C::BODIES, tangential_states),
             implicit: None,
             tangent: None,
@@ -239,7 +253,7 @@ where
             self.bodies.second().model(),
             (&qc, &qdc),
         );
-        forces::detect::<C, DC>(&mut self.work, &self.config, &self.geometry);
+        forces::detect::<C, DC>(&mut self.work, &self.config, &self.geometry, &self.outlines);
         let points = self.geometry.shoe.ground_points.len();
         forces::respond(
             &mut self.work,
@@ -865,6 +879,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             ground_penetration: books.ground_penetration,
             wheel_penetration: books.wheel_penetration,
             sprocket_penetration: books.sprocket_penetration,
+            hull_normal: books.hull_normal,
+            hull_penetration: books.hull_penetration,
             energy,
             motor_work: work,
             dissipated,
