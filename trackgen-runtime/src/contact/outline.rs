@@ -27,13 +27,7 @@ use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
 use super::{BodyState, Contact, ShoeGeometry, Terrain};
 use crate::planar::perp;
 
-/// `sin` of the least turn of the ground at a corner that the outlines
-/// see: 10°. A gentler corner between two ground points 0.12 m apart (the
-/// M113's) stands at most `0.06 tan 5° ≈ 5 mm` above their chord, within
-/// the ground contact's own penetration (9 mm on the M113 driving), so the
-/// ground points carry it; a fine random course's vertices (a degree or
-/// two) cost nothing here.
-pub const SHARP_TURN: f64 = 0.173_648_177_666_930_33;
+pub use super::profile::SHARP_TURN;
 
 /// [`Contact::feature`] of a terrain corner inside a body's outline (the
 /// body's own features are numbered from 0).
@@ -143,8 +137,9 @@ fn convex_hull(mut points: Vec<Vector2<f64>>) -> Vec<Vector2<f64>> {
 }
 
 /// The sharp convex corners of `terrain` between `x0` and `x1` (m): a
-/// profile's corners turning by more than [`SHARP_TURN`]; none on a closed
-/// form (they are smooth).
+/// profile's corners turning by more than [`SHARP_TURN`]'s angle
+/// ([`Profile::sharp_corners_in`]); none on a closed form (they are
+/// smooth).
 pub fn sharp_corners(
     terrain: &Terrain,
     x0: f64,
@@ -156,9 +151,8 @@ pub fn sharp_corners(
     };
     profile
         .into_iter()
-        .flat_map(move |p| p.corners_in(x0, x1))
-        .filter(|c| c.turn_sin() > SHARP_TURN || c.turn_cos() < 0.0)
-        .map(|c| Vector2::new(c.point.0, c.point.1))
+        .flat_map(move |p| p.sharp_points_in(x0, x1))
+        .map(|(x, z)| Vector2::new(x, z))
 }
 
 /// Every sharp terrain corner inside a body's `outline`, the body in
@@ -177,26 +171,35 @@ pub fn detect_corners(
     }
 }
 
-/// As [`detect_corners`] for every link of a track, the corners found
-/// once over the track's extent and each link tested only if its
-/// outline's circle holds the corner.
+/// As [`detect_corners`] for every link of a track: links whose outline's
+/// circle clears the highest ground under the whole track are skipped, and
+/// each other link looks only at the sharp corners within its circle's
+/// x-range (`O(log n)` to find them), so a pass costs a comparison per
+/// link plus the links near the ground.
 pub fn detect_track_corners(
     terrain: &Terrain,
     links: &[BodyState],
     outline: &Outline,
     out: &mut Vec<Contact>,
 ) {
-    if !matches!(terrain, Terrain::Profile(_)) || links.is_empty() {
+    let Terrain::Profile(profile) = terrain else {
         return;
-    }
+    };
     let r = outline.radius;
     let (low, high) = links
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
             (lo.min(l.position.x), hi.max(l.position.x))
         });
-    for corner in sharp_corners(terrain, low - r, high + r) {
-        for (i, link) in links.iter().enumerate() {
+    let highest = profile.max_height(low - r, high + r);
+    for (i, link) in links.iter().enumerate() {
+        // A NaN position compares false and is looked at.
+        if link.position.y - r > highest {
+            continue;
+        }
+        let x = link.position.x;
+        for (cx, cz) in profile.sharp_points_in(x - r, x + r) {
+            let corner = Vector2::new(cx, cz);
             if (link.position - corner).norm_squared() < r * r {
                 push_corner(corner, (link, i), outline, out);
             }

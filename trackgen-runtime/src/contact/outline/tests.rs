@@ -227,3 +227,31 @@ fn hull_corners_below_the_ground() {
     detect_hull(&flat, &body(0.0, 0.5, 0.3), &box_outline(), &mut out);
     assert!(out.is_empty());
 }
+
+/// The profile's list of sharp corners, searched by range, is the scan of
+/// every corner in the range kept by [`Corner::is_sharp`], on a rough
+/// course (many corners, some sharp) over ranges of every size.
+#[test]
+fn sharp_corners_by_range_are_the_scans() {
+    use crate::contact::roughness::{Iso8608Class, RoughCourse, SPACING, Spectrum};
+    let profile = RoughCourse::new(Spectrum::Iso8608(Iso8608Class::F), 50.0, SPACING, 3)
+        .profile()
+        .unwrap();
+    let total = profile.sharp_points_in(-1e9, 1e9).count();
+    assert!(
+        total > 10 && total < profile.point_count(),
+        "{total} sharp corners"
+    );
+    for k in 0..200 {
+        let x0 = -1.0 + 0.26 * k as f64;
+        for width in [0.0, 0.05, 0.3, 2.0, 60.0] {
+            let listed: Vec<(f64, f64)> = profile.sharp_points_in(x0, x0 + width).collect();
+            let scanned: Vec<(f64, f64)> = profile
+                .corners_in(x0, x0 + width)
+                .filter(|c| c.is_sharp())
+                .map(|c| c.point)
+                .collect();
+            assert_eq!(listed, scanned, "[{x0}, {}]", x0 + width);
+        }
+    }
+}
