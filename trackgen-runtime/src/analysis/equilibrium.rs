@@ -348,6 +348,9 @@ fn relax<S: VehicleDynamics>(
             }
             Ok(())
         }
+        fn is_quadrature(&self, i: usize) -> bool {
+            self.system.is_quadrature(i)
+        }
     }
     if duration <= 0.0 {
         return Ok(());

@@ -261,6 +261,40 @@ pub fn detect_hull(terrain: &Terrain, frame: &BodyState, hull: &Outline, out: &m
     detect_corners(terrain, (frame, 0), hull, out);
 }
 
+/// The terrain's sharp corners inside a rim (a road wheel's, the idler's, a
+/// roller's, the sprocket's: a circle of `radius` m about the body's
+/// centre), appended to `out` with `link` the body's index: as deep as
+/// `radius − |c − C|` and pushing the body straight away from the corner,
+/// `n = (C − c)/|C − c|` (the force's line passes through the centre: the
+/// normal force turns nothing, friction does). The track is usually
+/// between rim and ground; this is for a corner that comes up between
+/// two shoes, or a rim off the track.
+pub fn detect_rim(
+    terrain: &Terrain,
+    (body, index, radius): (&BodyState, usize, f64),
+    out: &mut Vec<Contact>,
+) {
+    let x = body.position.x;
+    for corner in sharp_corners(terrain, x - radius, x + radius) {
+        let arm = corner - body.position;
+        let distance = arm.norm();
+        if distance >= radius || distance == 0.0 {
+            continue;
+        }
+        out.push(Contact {
+            link: index,
+            other: None,
+            feature: TERRAIN_CORNER,
+            point: corner,
+            arm,
+            depth: radius - distance,
+            gradient: -arm / distance,
+            gradient_norm: 1.0,
+            velocity: body.velocity_at(arm),
+        });
+    }
+}
+
 /// The derivatives of a terrain corner's contact ([`detect_corners`]'s)
 /// with the body's pose: the contact point is the corner, fixed (`∂p =
 /// 0`: the force's arm `c − R` moves with `−∂R` alone); the depth changes

@@ -119,6 +119,50 @@ pub(crate) fn weighted_rms(
     (sum / n).sqrt()
 }
 
+/// A step's error estimate `v` (from `y0` to `y1`) in one number, ≤ 1 to
+/// accept: the RMS of the components' errors, each weighted by `atol +
+/// rtol · max(|y0|, |y1|)` ([`weighted_rms`]), except the quadratures'
+/// ([`OdeSystem::is_quadrature`]: the energy books), weighted by `atol +
+/// rtol · |y1 − y0|`, their increment over the step.
+///
+/// A running integral grows without bound: weighted by its own size, a
+/// book of 10⁴ J lets each step err by 10 J at `rtol = 1e-3`, and over
+/// 10⁴ steps the errors add up to per cents of it (the books of a 14 s
+/// run at 1 m/s were off by 4.2 %, a 12 s crawl over a step by 1.6 %).
+/// Weighted by its increment, each step's contribution is held to `rtol`
+/// of itself (within the RMS), so the integral is, however long the run:
+/// 2e-4 and 7e-5 on those runs, in as many steps. (Their largest instead
+/// of the RMS held them tighter still, at 55 % more steps on the main
+/// job.)
+pub(crate) fn step_error(
+    v: &DVector<f64>,
+    y0: &DVector<f64>,
+    y1: &DVector<f64>,
+    (atol, rtol): (f64, f64),
+    quadrature: &[bool],
+) -> f64 {
+    if !quadrature.contains(&true) {
+        return weighted_rms(v, y0, y1, atol, rtol);
+    }
+    let n = v.len().max(1) as f64;
+    let sum: f64 = v
+        .as_slice()
+        .iter()
+        .zip(y0.as_slice().iter().zip(y1.as_slice()))
+        .zip(quadrature)
+        .map(|((&v, (&y0, &y1)), &q)| {
+            let size = if q {
+                (y1 - y0).abs()
+            } else {
+                y0.abs().max(y1.abs())
+            };
+            let r = v / (atol + rtol * size);
+            if v == 0.0 { 0.0 } else { r * r }
+        })
+        .sum();
+    (sum / n).sqrt()
+}
+
 /// `out = base + Σ w_j k_j` (base 0 if `None`) over the nonzero weights, on
 /// plain slices: nalgebra's `copy_from` and `axpy` took a generic
 /// element-by-element path that cost a step as much as a sixth of an
@@ -170,6 +214,9 @@ pub struct Embedded {
     dense: Vec<DVector<f64>>,
     span: (f64, f64),
     stats: Stats,
+    /// [`OdeSystem::is_quadrature`] of each component, asked at the first
+    /// step.
+    quadrature: Vec<bool>,
 }
 
 /// Dormand-Prince 5(4) (see [`Embedded`]).
@@ -208,11 +255,12 @@ impl Embedded {
             dense: vec![zero; dense],
             span: (0.0, 0.0),
             stats: Stats::default(),
+            quadrature: Vec::new(),
         }
     }
 
     fn norm(&self, v: &DVector<f64>, y0: &DVector<f64>, y1: &DVector<f64>) -> f64 {
-        weighted_rms(v, y0, y1, self.atol, self.rtol)
+        step_error(v, y0, y1, (self.atol, self.rtol), &self.quadrature)
     }
 
     /// Hairer's starting-step heuristic, from `f0 = stages[0]`. Norms
@@ -350,6 +398,9 @@ impl Stepper for Embedded {
         y: &mut DVector<f64>,
         t_limit: f64,
     ) -> Result<(), SimulationError> {
+        if self.quadrature.len() != y.len() {
+            self.quadrature = (0..y.len()).map(|i| system.is_quadrature(i)).collect();
+        }
         if !self.f_now {
             super::evaluate(system, &mut self.stats, *t, y, &mut self.stages[0])?;
             self.f_now = true;

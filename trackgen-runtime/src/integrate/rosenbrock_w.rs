@@ -10,7 +10,7 @@ use nalgebra::DVector;
 
 use super::control::StepControl;
 use super::differences::forward_jacobian;
-use super::embedded::weighted_rms;
+use super::embedded::{step_error, weighted_rms};
 use super::{OdeSystem, Stats, Stepper};
 use crate::integrate::SimulationError;
 
@@ -508,12 +508,12 @@ impl Ros34pw2 {
             self.trial.axpy(tab.m[i], &self.stages[i], 1.0);
             self.error.axpy(tab.error[i], &self.stages[i], 1.0);
         }
-        Ok(weighted_rms(
+        Ok(step_error(
             &self.error,
             y,
             &self.trial,
-            self.atol,
-            self.rtol,
+            (self.atol, self.rtol),
+            &self.quadrature,
         ))
     }
 

@@ -54,8 +54,8 @@ pub(super) struct Outlines {
 /// Stage 2, detection: every contact of the links (their states in
 /// `work`) with the ground and with each part, into `work.contacts`; on
 /// rigid ground the terrain's sharp corners inside the shoes too
-/// ([`outline`]); and the hull's with the ground into
-/// `work.hull_contacts`.
+/// ([`outline`]); and the hull's with the ground and the rims' with sharp
+/// corners into `work.chassis_contacts`.
 pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
     work: &mut Workspace,
     config: &VehicleConfig,
@@ -66,11 +66,11 @@ pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
         links,
         parts,
         contacts,
-        hull_contacts,
+        chassis_contacts,
         ..
     } = work;
     contacts.clear();
-    hull_contacts.clear();
+    chassis_contacts.clear();
     let shoe = &geometry.shoe;
     ground::detect(&config.terrain, links, shoe, contacts);
     if config.soil.is_none()
@@ -79,10 +79,15 @@ pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
         outline::detect_track_corners(&config.terrain, links, outline, contacts);
     }
     if let Some(hull) = &outlines.hull {
-        outline::detect_hull(&config.terrain, &parts[0], hull, hull_contacts);
+        outline::detect_hull(&config.terrain, &parts[0], hull, chassis_contacts);
     }
     for part in C::PARTS {
         let body = &parts[part.body];
+        outline::detect_rim(
+            &config.terrain,
+            (body, part.body, part.radius),
+            chassis_contacts,
+        );
         if part.kind == PartKind::Sprocket {
             sprocket::detect((body, part.body), &geometry.sprocket, links, shoe, contacts);
         } else {
@@ -165,7 +170,7 @@ pub(super) fn respond<const DC: usize>(
     let Workspace {
         parts,
         contacts,
-        hull_contacts,
+        chassis_contacts,
         track_loads,
         chassis_loads,
         tangential_rate,
@@ -233,10 +238,15 @@ pub(super) fn respond<const DC: usize>(
             }
         }
     }
-    for contact in hull_contacts.iter() {
+    for contact in chassis_contacts.iter() {
         let force = config.corner_laws().respond(contact);
-        force.apply(contact, &mut chassis_loads[0], None);
-        books.hull(&force);
+        force.apply(contact, &mut chassis_loads[contact.link], None);
+        if contact.link == 0 {
+            books.hull(&force);
+        } else {
+            let depth = books.contact(&force);
+            books.wheel_penetration = books.wheel_penetration.max(depth);
+        }
     }
     // Ground points off the ground: their stiction deflections relax.
     if let (None, GroundFriction::Stiction(stiction)) = (soil, config.ground.friction) {

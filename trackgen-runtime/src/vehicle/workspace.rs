@@ -27,9 +27,10 @@ pub(super) struct Workspace {
     pub contacts: Vec<Contact>,
     /// Every contact's Jacobian, in the order of `contacts`, when the
     /// evaluation was linearised ([`forces::linearise`](super::forces::linearise)).
-    /// The hull's contacts with the ground at the last evaluation (the
-    /// frame's: `link` is 0 and unused).
-    pub hull_contacts: Vec<Contact>,
+    /// The chassis' contacts with the ground at the last evaluation: the
+    /// hull's and the rims' on sharp corners; `link` is the chassis body
+    /// (0: the frame, whose outline is the hull).
+    pub chassis_contacts: Vec<Contact>,
     pub jacobians: Vec<ContactJacobian>,
     /// The loads on the links (force elements).
     pub track_loads: Vec<BodyLoad>,
@@ -78,7 +79,7 @@ impl Workspace {
             positions: vec![Vector2::zeros(); largest],
             velocities: vec![Vector2::zeros(); largest],
             contacts: Vec::with_capacity(8 * links),
-            hull_contacts: Vec::new(),
+            chassis_contacts: Vec::new(),
             jacobians: Vec::new(),
             track_loads: vec![BodyLoad::ZERO; links],
             chassis_loads: vec![BodyLoad::ZERO; bodies],

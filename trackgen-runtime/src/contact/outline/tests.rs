@@ -255,3 +255,47 @@ fn sharp_corners_by_range_are_the_scans() {
         }
     }
 }
+
+/// A rim on a step's edge: as deep as the radius less the distance to its
+/// centre, pushed straight away from the corner; its potential's gradient
+/// is that point force (no moment: the line passes through the centre).
+#[test]
+fn a_rim_on_a_corner() {
+    let terrain = step();
+    let laws = ContactLaws {
+        normal: NormalLaw::HuntCrossley {
+            stiffness: 2e6,
+            exponent: 1.0,
+            chi: 0.0,
+        },
+        friction: Friction { mu: 0.0, slip: 0.5 },
+    };
+    let contacts = |x: f64, y: f64| {
+        let mut out = Vec::new();
+        detect_rim(&terrain, (&body(x, y, 0.7), 5, 0.3), &mut out);
+        out
+    };
+    let (x, y) = (0.85, 0.5);
+    let found = contacts(x, y);
+    assert_eq!(found.len(), 1);
+    let c = found[0];
+    let centre = Vector2::new(x, y);
+    let corner = Vector2::new(1.0, 0.3);
+    assert_eq!(c.link, 5);
+    assert!((c.depth - (0.3 - (corner - centre).norm())).abs() < 1e-15);
+    let f = laws.respond(&c);
+    assert!((c.arm.x * f.force.y - c.arm.y * f.force.x).abs() < 1e-9 * f.force.norm());
+    let potential = |x: f64, y: f64| -> f64 {
+        contacts(x, y)
+            .iter()
+            .map(|c| laws.respond(c).potential)
+            .sum()
+    };
+    let h = 1e-6;
+    let gx = (potential(x + h, y) - potential(x - h, y)) / (2.0 * h);
+    let gy = (potential(x, y + h) - potential(x, y - h)) / (2.0 * h);
+    assert!((f.force.x + gx).abs() < 1e-7 * f.force.norm());
+    assert!((f.force.y + gy).abs() < 1e-7 * f.force.norm());
+    // Clear of the corner: nothing.
+    assert!(contacts(0.5, 0.7).is_empty());
+}
