@@ -3,6 +3,7 @@
 //! ```text
 //! cargo run --release --example mobility -- --vehicle m113 [--out FOLDER]
 //!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil] [--json] [--quick]
+//!     [--slice K/N | --merge FILE…]
 //! ```
 //!
 //! Runs the events of `trackgen::mobility` (each a limit found by
@@ -18,6 +19,20 @@
 //! `stalled`, `failed`), `unit`, `runs`, `failure`; SI units: roughness and heights in m,
 //! speeds in m/s, grades as rise over run). `--quick`: one parameter per
 //! event at loose search tolerances, a smoke test.
+//!
+//! A set too large for one machine splits into slices that run anywhere
+//! (a cluster's array job), and a merge puts them back together:
+//!
+//! * `mobility --vehicle m113 --slice K/N --out DIR` runs the tasks `i`
+//!   (an event at one parameter, in the order above) with `i mod N = K − 1`
+//!   (interleaved, so each slice has fast and slow ones) and writes their
+//!   results, trials included, to `DIR/slice-K-of-N.jsonl`;
+//! * `mobility --vehicle m113 --merge DIR/slice-*.jsonl --out DIR` checks
+//!   that the slices hold every task of that set exactly once (a missing
+//!   or repeated task is an error naming it; give the merge the slices'
+//!   `--events` and `--quick`) and writes what one machine would have:
+//!   the CSVs, the curves, the report. The numbers are the same: every
+//!   task is deterministic and independent.
 //!
 //! A run that fails is reported as a failure (the event, its parameter,
 //! the time and the cause) and the other events still run; the command
@@ -59,6 +74,29 @@ struct Args {
     /// One parameter per event at loose tolerances: a smoke test.
     #[arg(long)]
     quick: bool,
+    /// Run only slice K of N (1 ≤ K ≤ N): the tasks whose index i has
+    /// i mod N = K − 1; writes `slice-K-of-N.jsonl` in `--out`.
+    #[arg(long, value_name = "K/N", value_parser = parse_slice, requires = "out")]
+    slice: Option<(usize, usize)>,
+    /// Merge slices' `.jsonl` files (every task exactly once) into the
+    /// set's outputs in `--out`.
+    #[arg(long, value_name = "FILE", num_args = 1.., conflicts_with = "slice", requires = "out")]
+    merge: Vec<PathBuf>,
+}
+
+/// `K/N`, slice K of N.
+fn parse_slice(s: &str) -> Result<(usize, usize), String> {
+    let usage = "a slice is K/N, slice K of N with 1 ≤ K ≤ N, like 2/8";
+    let (k, n) = s.split_once('/').ok_or(usage)?;
+    let (k, n): (usize, usize) = (
+        k.trim().parse().map_err(|_| usage)?,
+        n.trim().parse().map_err(|_| usage)?,
+    );
+    if k >= 1 && k <= n {
+        Ok((k, n))
+    } else {
+        Err(format!("`{s}`: {usage}"))
+    }
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -378,8 +416,24 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
     };
     let events: Vec<&'static str> = args.events.clone().unwrap_or_else(|| EVENTS.to_vec());
     let work = tasks::<V>(&settings, &footprint, &events, args.quick);
+    let dir = args
+        .out
+        .clone()
+        .unwrap_or_else(|| Path::new("out/mobility").join(name));
+    if !args.merge.is_empty() {
+        return match slices::merge(&args.merge, work.len()) {
+            Ok((rows, wall)) => finish(args, name, &dir, &rows, wall),
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::FAILURE
+            }
+        };
+    }
+    let chosen: Vec<usize> = (0..work.len())
+        .filter(|i| args.slice.is_none_or(|(k, n)| i % n == k - 1))
+        .collect();
     let started = Instant::now();
-    let bar = ProgressBar::new(work.len() as u64);
+    let bar = ProgressBar::new(chosen.len() as u64);
     if let Ok(style) =
         ProgressStyle::with_template("{bar:40} {pos}/{len} results  {elapsed_precise}")
     {
@@ -387,22 +441,48 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
     }
     // Each task is deterministic and independent: the results do not
     // depend on the order rayon runs them in (collect keeps the order).
-    let rows: Vec<Row> = work
+    let done: Vec<(usize, Vec<Row>)> = chosen
         .par_iter()
-        .flat_map_iter(|task| {
-            let rows = task.rows();
+        .map(|&i| {
+            let rows = work[i].rows();
             bar.inc(1);
-            rows
+            (i, rows)
         })
         .collect();
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
+    if let Some((k, n)) = args.slice {
+        let path = dir.join(format!("slice-{k}-of-{n}.jsonl"));
+        return match slices::write(&path, &done, wall) {
+            Ok(()) => {
+                let rows: Vec<Row> = done.into_iter().flat_map(|(_, r)| r).collect();
+                print_summary(name, &rows, wall);
+                eprintln!(
+                    "wrote {} (slice {k} of {n}: {} of {} tasks)",
+                    path.display(),
+                    chosen.len(),
+                    work.len()
+                );
+                if rows.iter().any(|r| r.relation == "failed") {
+                    ExitCode::FAILURE
+                } else {
+                    ExitCode::SUCCESS
+                }
+            }
+            Err(e) => {
+                eprintln!("error: writing {}: {e}", path.display());
+                ExitCode::FAILURE
+            }
+        };
+    }
+    let rows: Vec<Row> = done.into_iter().flat_map(|(_, r)| r).collect();
+    finish(args, name, &dir, &rows, wall)
+}
 
-    let dir = args
-        .out
-        .clone()
-        .unwrap_or_else(|| Path::new("out/mobility").join(name));
-    let written = write_all(&dir, name, &rows, wall);
+/// The set's outputs, summary and exit status from its rows.
+fn finish(args: &Args, name: &str, dir: &Path, rows: &[Row], wall: f64) -> ExitCode {
+    let rows = rows.to_vec();
+    let written = write_all(dir, name, &rows, wall);
     print_summary(name, &rows, wall);
     if args.json {
         for row in &rows {
@@ -665,4 +745,187 @@ fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
     }
     html.push_str("</table></body></html>\n");
     html
+}
+
+/// Slices of a set: each task's rows, trials included, one JSON object a
+/// line; read back exactly (floats in their shortest round-trip form).
+mod slices {
+    use std::collections::BTreeMap;
+    use std::fs;
+    use std::path::{Path, PathBuf};
+
+    use serde_json::{Value, json};
+    use trackgen::mobility::search::{Limit, Search, Trial};
+
+    use super::Row;
+
+    fn number(v: f64) -> Value {
+        serde_json::Number::from_f64(v).map_or(Value::Null, Value::Number)
+    }
+
+    fn row_json(r: &Row) -> Value {
+        let search = r.search.as_ref().map(|s| {
+            let limit = match s.limit {
+                Limit::Found {
+                    value,
+                    passed,
+                    failed,
+                } => json!({"found": [number(value), number(passed), number(failed)]}),
+                Limit::Beyond { end } => json!({"beyond": number(end)}),
+                Limit::Before { start } => json!({"before": number(start)}),
+            };
+            let trials: Vec<Value> = s
+                .trials
+                .iter()
+                .map(|t| json!([number(t.parameter), number(t.figure), t.passed]))
+                .collect();
+            json!({"limit": limit, "trials": trials})
+        });
+        json!({
+            "event": r.event,
+            "parameter": r.parameter.map(|(n, v, u)| json!([n, number(v), u])),
+            "quantity": r.quantity,
+            "value": number(r.value),
+            "relation": r.relation,
+            "unit": r.unit,
+            "runs": r.runs,
+            "wall": number(r.wall),
+            "search": search,
+            "failure": r.failure,
+        })
+    }
+
+    /// Writes a slice: a line per task, `{"task": i, "wall": s, "rows": […]}`.
+    pub fn write(path: &Path, done: &[(usize, Vec<Row>)], wall: f64) -> std::io::Result<()> {
+        if let Some(dir) = path.parent() {
+            fs::create_dir_all(dir)?;
+        }
+        let mut text = String::new();
+        for (i, rows) in done {
+            let line = json!({
+                "task": i,
+                "slice_wall": number(wall),
+                "rows": rows.iter().map(row_json).collect::<Vec<_>>(),
+            });
+            text.push_str(&line.to_string());
+            text.push('\n');
+        }
+        fs::write(path, text)
+    }
+
+    /// The rows' strings live as long as the merge (a short command).
+    fn text(v: &Value, what: &str) -> Result<&'static str, String> {
+        v.as_str()
+            .map(|s| &*Box::leak(s.to_string().into_boxed_str()))
+            .ok_or_else(|| format!("`{what}` is not a string"))
+    }
+
+    fn float(v: &Value) -> f64 {
+        v.as_f64().unwrap_or(f64::NAN)
+    }
+
+    fn row_of(v: &Value) -> Result<Row, String> {
+        let search = match &v["search"] {
+            Value::Null => None,
+            s => {
+                let limit = &s["limit"];
+                let limit = if let Some(f) = limit.get("found") {
+                    Limit::Found {
+                        value: float(&f[0]),
+                        passed: float(&f[1]),
+                        failed: float(&f[2]),
+                    }
+                } else if let Some(end) = limit.get("beyond") {
+                    Limit::Beyond { end: float(end) }
+                } else if let Some(start) = limit.get("before") {
+                    Limit::Before {
+                        start: float(start),
+                    }
+                } else {
+                    return Err("a search without its limit".into());
+                };
+                let trials = s["trials"]
+                    .as_array()
+                    .ok_or("a search without its trials")?
+                    .iter()
+                    .map(|t| Trial {
+                        parameter: float(&t[0]),
+                        figure: float(&t[1]),
+                        passed: t[2].as_bool().unwrap_or(false),
+                    })
+                    .collect();
+                Some(Search { limit, trials })
+            }
+        };
+        let parameter = match &v["parameter"] {
+            Value::Null => None,
+            p => Some((
+                text(&p[0], "parameter")?,
+                float(&p[1]),
+                text(&p[2], "unit")?,
+            )),
+        };
+        Ok(Row {
+            event: text(&v["event"], "event")?,
+            parameter,
+            quantity: text(&v["quantity"], "quantity")?,
+            value: float(&v["value"]),
+            relation: text(&v["relation"], "relation")?,
+            unit: text(&v["unit"], "unit")?,
+            runs: v["runs"].as_u64().unwrap_or(0) as usize,
+            wall: float(&v["wall"]),
+            search,
+            failure: v["failure"].as_str().map(str::to_string),
+        })
+    }
+
+    /// The set's rows in task order from its slices, and the longest
+    /// slice's wall time; an error names the file and line, or the tasks
+    /// missing or given twice.
+    pub fn merge(files: &[PathBuf], tasks: usize) -> Result<(Vec<Row>, f64), String> {
+        let mut found: BTreeMap<usize, (Vec<Row>, String)> = BTreeMap::new();
+        let mut wall: f64 = 0.0;
+        for file in files {
+            let content =
+                fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
+            for (n, line) in content.lines().enumerate() {
+                let at = format!("{}:{}", file.display(), n + 1);
+                let v: Value = serde_json::from_str(line).map_err(|e| format!("{at}: {e}"))?;
+                let task = v["task"]
+                    .as_u64()
+                    .ok_or_else(|| format!("{at}: no task index"))?
+                    as usize;
+                if task >= tasks {
+                    return Err(format!(
+                        "{at}: task {task}, but this set has {tasks} (give the merge the slices' --events and --quick)"
+                    ));
+                }
+                wall = wall.max(float(&v["slice_wall"]));
+                let rows = v["rows"]
+                    .as_array()
+                    .ok_or_else(|| format!("{at}: no rows"))?
+                    .iter()
+                    .map(row_of)
+                    .collect::<Result<Vec<_>, _>>()
+                    .map_err(|e| format!("{at}: {e}"))?;
+                if let Some((_, first)) = found.insert(task, (rows, at.clone())) {
+                    return Err(format!("task {task} is in two slices: {first} and {at}"));
+                }
+            }
+        }
+        let missing: Vec<String> = (0..tasks)
+            .filter(|i| !found.contains_key(i))
+            .map(|i| i.to_string())
+            .collect();
+        if !missing.is_empty() {
+            return Err(format!(
+                "tasks missing from the slices: {} (of {tasks})",
+                missing.join(", ")
+            ));
+        }
+        Ok((
+            found.into_values().flat_map(|(rows, _)| rows).collect(),
+            wall,
+        ))
+    }
 }

@@ -858,3 +858,94 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
     let stderr = String::from_utf8_lossy(&refused.stderr);
     assert!(stderr.contains("unknown event `mud`"), "{stderr}");
 }
+
+/// `mobility --slice K/N` and `--merge`: two slices of the quick set, run
+/// apart and merged, give the event CSVs and the trials of the whole set
+/// run at once (every task is deterministic; the wall times aside); a
+/// merge missing a slice names the tasks it lacks, and one given a slice
+/// twice names the task and both places.
+#[test]
+fn mobility_slices_merge_into_the_whole_set() {
+    let mobility = example("mobility");
+    let dir = scratch("mobility-slices");
+    let common = ["--quick", "--events", "half-round,soil"];
+    let whole = dir.join("whole");
+    let args = |extra: &[&str]| {
+        let mut v: Vec<String> = common.iter().map(|s| s.to_string()).collect();
+        v.extend(extra.iter().map(|s| s.to_string()));
+        v
+    };
+    let run_with = |extra: &[&str]| {
+        let v = args(extra);
+        let refs: Vec<&str> = v.iter().map(String::as_str).collect();
+        run(&mobility, &refs, &dir)
+    };
+    assert_success("whole", &run_with(&["--out", whole.to_str().unwrap()]));
+    let sliced = dir.join("sliced");
+    for k in ["1/2", "2/2"] {
+        assert_success(
+            k,
+            &run_with(&["--slice", k, "--out", sliced.to_str().unwrap()]),
+        );
+    }
+    let (one, two) = (
+        sliced.join("slice-1-of-2.jsonl"),
+        sliced.join("slice-2-of-2.jsonl"),
+    );
+    let merged = dir.join("merged");
+    assert_success(
+        "merge",
+        &run_with(&[
+            "--merge",
+            one.to_str().unwrap(),
+            two.to_str().unwrap(),
+            "--out",
+            merged.to_str().unwrap(),
+        ]),
+    );
+    // The CSVs without their wall-time column.
+    let without_wall = |path: &std::path::Path| -> Vec<String> {
+        let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+        let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+        let wall = header.iter().position(|h| *h == "wall_s");
+        text.lines()
+            .map(|l| {
+                let mut f: Vec<&str> = l.split(',').collect();
+                if let Some(w) = wall {
+                    f.remove(w);
+                }
+                f.join(",")
+            })
+            .collect()
+    };
+    for file in ["half-round.csv", "soil.csv", "trials.csv"] {
+        assert_eq!(
+            without_wall(&whole.join(file)),
+            without_wall(&merged.join(file)),
+            "{file}"
+        );
+    }
+    let missing = run_with(&[
+        "--merge",
+        one.to_str().unwrap(),
+        "--out",
+        merged.to_str().unwrap(),
+    ]);
+    assert!(!missing.status.success());
+    let stderr = String::from_utf8_lossy(&missing.stderr);
+    assert!(
+        stderr.contains("tasks missing from the slices: 1"),
+        "{stderr}"
+    );
+    let twice = run_with(&[
+        "--merge",
+        one.to_str().unwrap(),
+        one.to_str().unwrap(),
+        two.to_str().unwrap(),
+        "--out",
+        merged.to_str().unwrap(),
+    ]);
+    assert!(!twice.status.success());
+    let stderr = String::from_utf8_lossy(&twice.stderr);
+    assert!(stderr.contains("is in two slices"), "{stderr}");
+}
