@@ -274,3 +274,48 @@ fn the_soil_event_carries_the_weight_and_slips_more_under_more_load() {
     );
     assert!((curve[2].pull - 0.4 * curve[0].weight).abs() < 1e-9 * weight);
 }
+
+/// `scan_then_bisect` finds the *first* crossing of a criterion that is
+/// not monotone (failing on 3.3–6 and above 12, passing between), where
+/// bisection over the range lands on the later one; its runs are the
+/// start, the scanned speeds up to the first failure, then the halvings
+/// of one step. All passing: beyond the end, every step run; the start
+/// failing: before it, one run.
+#[test]
+fn the_scan_finds_the_first_crossing_of_a_criterion_that_is_not_monotone() {
+    use trackgen::mobility::search::scan_then_bisect;
+    let twice = |p: f64| {
+        Ok(Trial {
+            parameter: p,
+            figure: p,
+            passed: p < 3.3 || (6.0..12.0).contains(&p),
+        })
+    };
+    let bisected = bisect(1.0, 20.0, 0.1, twice).unwrap();
+    assert!(
+        (bisected.limit.value() - 12.0).abs() < 0.1,
+        "{:?}",
+        bisected.limit
+    );
+    let scanned = scan_then_bisect(1.0, 20.0, 2.0, 0.1, twice).unwrap();
+    let Limit::Found { passed, failed, .. } = scanned.limit else {
+        panic!("{:?}", scanned.limit)
+    };
+    assert!(
+        passed < 3.3 && 3.3 <= failed && failed - passed <= 0.1,
+        "{passed}..{failed}"
+    );
+    let scanned_speeds: Vec<f64> = scanned.trials[..3].iter().map(|t| t.parameter).collect();
+    assert_eq!(scanned_speeds, [1.0, 3.0, 5.0]);
+    assert_eq!(scanned.runs(), 3 + (2.0f64 / 0.1).log2().ceil() as usize);
+    let beyond = scan_then_bisect(1.0, 20.0, 2.0, 0.1, criterion(100.0)).unwrap();
+    assert_eq!(beyond.limit, Limit::Beyond { end: 20.0 });
+    // 1, 3, 5, …, 19, then the end itself.
+    assert_eq!(beyond.runs(), 11);
+    assert_eq!(beyond.trials.last().unwrap().parameter, 20.0);
+    let before = scan_then_bisect(1.0, 20.0, 2.0, 0.1, criterion(0.0)).unwrap();
+    assert_eq!(
+        (before.limit, before.runs()),
+        (Limit::Before { start: 1.0 }, 1)
+    );
+}

@@ -114,7 +114,7 @@ pub fn limiting_speed<V: Vehicle>(
     search_speed(
         settings,
         footprint,
-        EVENT,
+        (EVENT, None),
         settings.absorbed_power_limit,
         |speed| {
             let point = ride_at::<V>(settings, footprint, roughness, speed)?;

@@ -4,7 +4,7 @@
 use nalgebra::Vector2;
 
 use super::EventError;
-use super::search::{Search, Trial, bisect};
+use super::search::{Search, Trial, bisect, scan_then_bisect};
 use crate::contact::Terrain;
 use crate::contact::profile::{Course, Obstacle, Profile, ProfileError};
 use crate::integrate::Integrator;
@@ -48,6 +48,10 @@ pub struct EventSettings {
     pub max_speed: f64,
     /// Speed searches stop when the bracket is this narrow, m/s.
     pub speed_tolerance: f64,
+    /// The half-round's speed search first steps up by this, m/s, to the
+    /// first speed over the limit, then bisects: its figure is not
+    /// monotone in speed ([`scan_then_bisect`](super::search::scan_then_bisect)).
+    pub speed_scan: f64,
     /// Height, width and depth searches stop at this, m.
     pub length_tolerance: f64,
     /// Grade searches stop at this, rise over run.
@@ -77,6 +81,7 @@ impl EventSettings {
             peak_limit: 2.5,
             max_speed: 20.0,
             speed_tolerance: 0.1,
+            speed_scan: 2.0,
             length_tolerance: 0.01,
             grade_tolerance: 0.01,
         }
@@ -284,16 +289,20 @@ pub(super) struct SpeedTrial {
 
 /// The speed, from 1 m/s to the powertrain's top speed, at which the
 /// figure `run` gives reaches `limit` (passing below it), to the settings'
-/// `speed_tolerance`; a stall is [`EventError::Stalled`].
+/// `speed_tolerance`: by bisection over the range, or with `scan` (m/s)
+/// the first such speed, stepping up by it first
+/// ([`scan_then_bisect`](super::search::scan_then_bisect)); a stall is
+/// [`EventError::Stalled`].
 pub(super) fn search_speed(
     settings: &EventSettings,
     footprint: &Footprint,
-    event: &'static str,
+    (event, scan): (&'static str, Option<f64>),
     limit: f64,
     mut run: impl FnMut(f64) -> Result<SpeedTrial, EventError>,
 ) -> Result<Search, EventError> {
     let top = settings.top_speed(footprint.sprocket_radius);
-    bisect(1.0_f64.min(top), top, settings.speed_tolerance, |speed| {
+    let start = 1.0_f64.min(top);
+    let trial = |speed| {
         let trial = run(speed)?;
         if trial.stalled {
             return Err(EventError::Stalled {
@@ -308,7 +317,11 @@ pub(super) fn search_speed(
             figure: trial.figure,
             passed: trial.figure < limit,
         })
-    })
+    };
+    match scan {
+        Some(step) => scan_then_bisect(start, top, step, settings.speed_tolerance, trial),
+        None => bisect(start, top, settings.speed_tolerance, trial),
+    }
 }
 
 /// Flat ground after an obstacle, m.

@@ -132,3 +132,72 @@ pub fn bisect(
         trials,
     })
 }
+
+/// The *first* parameter from `start` towards `end` where `trial` stops
+/// passing, to within `tolerance`: trials at `start`, then every `step`
+/// towards `end` (the last at `end`) until one fails, then bisection of
+/// that bracket. For a figure that need not be monotone in the parameter
+/// (a seat's peak acceleration rises and falls with speed through the
+/// suspension's resonances), where bisection over the whole range finds
+/// *a* crossing, not necessarily the first. A failing stretch narrower
+/// than `step` between two passing trials is not seen. Runs: 1 + the
+/// scanned trials + `⌈log₂(step / tolerance)⌉` at most. A failed run is
+/// the search's error.
+pub fn scan_then_bisect(
+    start: f64,
+    end: f64,
+    step: f64,
+    tolerance: f64,
+    mut trial: impl FnMut(f64) -> Result<Trial, EventError>,
+) -> Result<Search, EventError> {
+    let mut trials = Vec::new();
+    let mut run = |p: f64, trials: &mut Vec<Trial>| -> Result<bool, EventError> {
+        let t = trial(p)?;
+        trials.push(t);
+        Ok(t.passed)
+    };
+    if !run(start, &mut trials)? {
+        return Ok(Search {
+            limit: Limit::Before { start },
+            trials,
+        });
+    }
+    let direction = (end - start).signum();
+    let step = step.abs().max(tolerance.abs());
+    let mut passed = start;
+    let failed = loop {
+        let next = passed + direction * step;
+        let next = if (end - next) * direction <= 0.0 {
+            end
+        } else {
+            next
+        };
+        if !run(next, &mut trials)? {
+            break next;
+        }
+        if next == end {
+            return Ok(Search {
+                limit: Limit::Beyond { end },
+                trials,
+            });
+        }
+        passed = next;
+    };
+    let mut failed = failed;
+    while (failed - passed).abs() > tolerance {
+        let middle = 0.5 * (passed + failed);
+        if run(middle, &mut trials)? {
+            passed = middle;
+        } else {
+            failed = middle;
+        }
+    }
+    Ok(Search {
+        limit: Limit::Found {
+            value: 0.5 * (passed + failed),
+            passed,
+            failed,
+        },
+        trials,
+    })
+}
