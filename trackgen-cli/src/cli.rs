@@ -221,7 +221,7 @@ impl Args {
         } else if let Some(roughness) = self.roughness {
             let length = self
                 .course_length
-                .unwrap_or(1.2 * self.speed.abs() * self.duration + 20.0)
+                .unwrap_or_else(|| course::rough_length(self.speed, self.duration))
                 .clamp(10.0, 1e5);
             CourseSpec::Rough {
                 roughness,

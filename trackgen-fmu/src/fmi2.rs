@@ -260,13 +260,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *mut f64,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        c.instance
-                            .get_f64(c::slice(refs, n)?, c::slice_mut(values, n)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { $crate::fmi3::get_f64::<$v>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -276,13 +270,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *const f64,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        c.instance
-                            .set_f64(c::slice(refs, n)?, c::slice(values, n)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { $crate::fmi3::set_f64::<$v>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -292,13 +280,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *mut i32,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        c.instance
-                            .get_i32(c::slice(refs, n)?, c::slice_mut(values, n)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { $crate::fmi3::get_i32::<$v>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -308,13 +290,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *const i32,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        c.instance
-                            .set_i32(c::slice(refs, n)?, c::slice(values, n)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { $crate::fmi3::set_i32::<$v>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]

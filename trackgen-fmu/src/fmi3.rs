@@ -164,6 +164,94 @@ pub unsafe fn set_string<V: Vehicle>(
     }
 }
 
+/// `fmi3GetFloat64` (and `fmi2GetReal`, with `n_values = n_refs`).
+///
+/// # Safety
+/// As [`get_string`].
+pub unsafe fn get_f64<V: Vehicle>(
+    instance: *mut c_void,
+    (refs, n_refs): (*const u32, usize),
+    (values, n_values): (*mut f64, usize),
+) -> Status {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        component::with::<V>(instance, |c| {
+            same_length(n_refs, n_values)?;
+            let (refs, values) = (
+                component::slice(refs, n_refs)?,
+                component::slice_mut(values, n_values)?,
+            );
+            c.instance.get_f64(refs, values).map(|()| Status::Ok)
+        })
+    }
+}
+
+/// `fmi3SetFloat64` (and `fmi2SetReal`).
+///
+/// # Safety
+/// As [`get_string`].
+pub unsafe fn set_f64<V: Vehicle>(
+    instance: *mut c_void,
+    (refs, n_refs): (*const u32, usize),
+    (values, n_values): (*const f64, usize),
+) -> Status {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        component::with::<V>(instance, |c| {
+            same_length(n_refs, n_values)?;
+            let (refs, values) = (
+                component::slice(refs, n_refs)?,
+                component::slice(values, n_values)?,
+            );
+            c.instance.set_f64(refs, values).map(|()| Status::Ok)
+        })
+    }
+}
+
+/// `fmi3GetInt32` (and `fmi2GetInteger`).
+///
+/// # Safety
+/// As [`get_string`].
+pub unsafe fn get_i32<V: Vehicle>(
+    instance: *mut c_void,
+    (refs, n_refs): (*const u32, usize),
+    (values, n_values): (*mut i32, usize),
+) -> Status {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        component::with::<V>(instance, |c| {
+            same_length(n_refs, n_values)?;
+            let (refs, values) = (
+                component::slice(refs, n_refs)?,
+                component::slice_mut(values, n_values)?,
+            );
+            c.instance.get_i32(refs, values).map(|()| Status::Ok)
+        })
+    }
+}
+
+/// `fmi3SetInt32` (and `fmi2SetInteger`).
+///
+/// # Safety
+/// As [`get_string`].
+pub unsafe fn set_i32<V: Vehicle>(
+    instance: *mut c_void,
+    (refs, n_refs): (*const u32, usize),
+    (values, n_values): (*const i32, usize),
+) -> Status {
+    // SAFETY: by the caller's contract.
+    unsafe {
+        component::with::<V>(instance, |c| {
+            same_length(n_refs, n_values)?;
+            let (refs, values) = (
+                component::slice(refs, n_refs)?,
+                component::slice(values, n_values)?,
+            );
+            c.instance.set_i32(refs, values).map(|()| Status::Ok)
+        })
+    }
+}
+
 /// An array's length against its references'.
 pub fn same_length(n_refs: usize, n_values: usize) -> Result<(), FmuError> {
     if n_refs == n_values {
@@ -327,14 +415,7 @@ macro_rules! __export_fmi3 {
                 values: *mut f64,
                 n_values: usize,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        fmi3::same_length(n_refs, n_values)?;
-                        c.instance
-                            .get_f64(c::slice(refs, n_refs)?, c::slice_mut(values, n_values)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { fmi3::get_f64::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -345,14 +426,7 @@ macro_rules! __export_fmi3 {
                 values: *const f64,
                 n_values: usize,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        fmi3::same_length(n_refs, n_values)?;
-                        c.instance
-                            .set_f64(c::slice(refs, n_refs)?, c::slice(values, n_values)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { fmi3::set_f64::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -363,14 +437,7 @@ macro_rules! __export_fmi3 {
                 values: *mut i32,
                 n_values: usize,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        fmi3::same_length(n_refs, n_values)?;
-                        c.instance
-                            .get_i32(c::slice(refs, n_refs)?, c::slice_mut(values, n_values)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { fmi3::get_i32::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -381,14 +448,7 @@ macro_rules! __export_fmi3 {
                 values: *const i32,
                 n_values: usize,
             ) -> c_int {
-                unsafe {
-                    c::with::<$v>(instance, |c| {
-                        fmi3::same_length(n_refs, n_values)?;
-                        c.instance
-                            .set_i32(c::slice(refs, n_refs)?, c::slice(values, n_values)?)
-                            .map(|()| Status::Ok)
-                    }) as c_int
-                }
+                unsafe { fmi3::set_i32::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]

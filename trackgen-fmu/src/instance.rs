@@ -506,7 +506,7 @@ impl<V: Vehicle> Instance<V> {
                     given
                 } else {
                     let duration = self.stop_time.map_or(60.0, |s| s - self.start_time);
-                    (1.2 * self.number(Setting::Speed).abs() * duration + 20.0)
+                    course::rough_length(self.number(Setting::Speed), duration)
                         .min(MAX_COURSE_LENGTH)
                 };
                 CourseSpec::Rough {

@@ -37,6 +37,12 @@ pub enum CourseError {
     Roughness(#[from] RoughnessError),
 }
 
+/// A random course's length when none is given, m: what a run at `speed`
+/// (m/s) for `duration` (s) covers, a fifth more, and 20 m.
+pub fn rough_length(speed: f64, duration: f64) -> f64 {
+    1.2 * speed.abs() * duration + 20.0
+}
+
 /// How rough a random course is.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Roughness {

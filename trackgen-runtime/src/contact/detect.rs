@@ -39,7 +39,22 @@ pub struct Contact {
     pub velocity: Vector2<f64>,
 }
 
+/// [`Contact::feature`] of a terrain corner inside a body's outline
+/// ([`outline`](super::outline)): the body's own features are numbered
+/// from 0.
+pub const TERRAIN_CORNER: usize = usize::MAX;
+
 impl Contact {
+    /// Where this contact's tangential state sits among a track's ground
+    /// points (`per_link` to a link): `link · per_link + feature` for a
+    /// shoe's ground point on the ground; `None` for a rim, a tooth or a
+    /// terrain corner, which have none. The one place that knows it.
+    #[inline]
+    pub fn ground_point_slot(&self, per_link: usize) -> Option<usize> {
+        (self.other.is_none() && self.feature != TERRAIN_CORNER)
+            .then(|| self.link * per_link + self.feature)
+    }
+
     /// The closing rate `δ̇ = −v · g`, m/s.
     #[inline]
     pub fn rate(&self) -> f64 {

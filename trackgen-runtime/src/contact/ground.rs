@@ -26,7 +26,18 @@ use super::{BodyState, Contact, ShoeGeometry, Terrain};
 /// is a distance function, continuous, with `∂δ/∂p = −n`, so the elastic
 /// force is the gradient of the potential there too.
 pub fn detect(terrain: &Terrain, links: &[BodyState], shoe: &ShoeGeometry, out: &mut Vec<Contact>) {
-    let clear = clear_of(terrain, links, shoe);
+    detect_culled(terrain, links, shoe, &clear_of(terrain, links, shoe), out);
+}
+
+/// [`detect`] with the culling test given ([`clear_of`]'s, found once for
+/// every pass over the links of an evaluation).
+pub(crate) fn detect_culled(
+    terrain: &Terrain,
+    links: &[BodyState],
+    shoe: &ShoeGeometry,
+    clear: &impl Fn(&BodyState) -> bool,
+    out: &mut Vec<Contact>,
+) {
     for (i, link) in links.iter().enumerate() {
         if clear(link) {
             continue;

@@ -29,9 +29,7 @@ use crate::planar::perp;
 
 pub use super::profile::SHARP_TURN;
 
-/// [`Contact::feature`] of a terrain corner inside a body's outline (the
-/// body's own features are numbered from 0).
-pub const TERRAIN_CORNER: usize = usize::MAX;
+pub use super::detect::TERRAIN_CORNER;
 
 /// A convex outline on a body: its corners counter-clockwise in the
 /// body's frame (m, from its centroid), each side's inward unit normal,
@@ -171,30 +169,23 @@ pub fn detect_corners(
     }
 }
 
-/// As [`detect_corners`] for every link of a track: links whose outline's
-/// circle clears the highest ground under the whole track are skipped, and
-/// each other link looks only at the sharp corners within its circle's
-/// x-range (`O(log n)` to find them), so a pass costs a comparison per
-/// link plus the links near the ground.
+/// As [`detect_corners`] for every link of a track not `clear` of the
+/// ground (the ground points' culling test, found once per evaluation:
+/// its circle holds the outline's), each looking
+/// only at the sharp corners within its outline's circle (`O(log n)` to
+/// find them): a comparison per link plus the links near the ground.
 pub fn detect_track_corners(
     terrain: &Terrain,
     links: &[BodyState],
-    outline: &Outline,
+    (outline, clear): (&Outline, &impl Fn(&BodyState) -> bool),
     out: &mut Vec<Contact>,
 ) {
     let Terrain::Profile(profile) = terrain else {
         return;
     };
     let r = outline.radius;
-    let (low, high) = links
-        .iter()
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), l| {
-            (lo.min(l.position.x), hi.max(l.position.x))
-        });
-    let highest = profile.max_height(low - r, high + r);
     for (i, link) in links.iter().enumerate() {
-        // A NaN position compares false and is looked at.
-        if link.position.y - r > highest {
+        if clear(link) {
             continue;
         }
         let x = link.position.x;

@@ -94,43 +94,69 @@ pub fn bisect(
     start: f64,
     end: f64,
     tolerance: f64,
-    mut trial: impl FnMut(f64) -> Result<Trial, EventError>,
+    trial: impl FnMut(f64) -> Result<Trial, EventError>,
 ) -> Result<Search, EventError> {
-    let mut trials = Vec::new();
-    let mut run = |p: f64, trials: &mut Vec<Trial>| -> Result<bool, EventError> {
-        let t = trial(p)?;
-        trials.push(t);
-        Ok(t.passed)
-    };
-    if !run(start, &mut trials)? {
-        return Ok(Search {
-            limit: Limit::Before { start },
-            trials,
-        });
+    let mut runs = Runs::new(trial);
+    if !runs.passes(start)? {
+        return Ok(runs.search(Limit::Before { start }));
     }
-    if run(end, &mut trials)? {
-        return Ok(Search {
-            limit: Limit::Beyond { end },
-            trials,
-        });
+    if runs.passes(end)? {
+        return Ok(runs.search(Limit::Beyond { end }));
     }
-    let (mut passed, mut failed) = (start, end);
-    while (failed - passed).abs() > tolerance {
-        let middle = 0.5 * (passed + failed);
-        if run(middle, &mut trials)? {
-            passed = middle;
-        } else {
-            failed = middle;
+    let limit = runs.narrow(start, end, tolerance)?;
+    Ok(runs.search(limit))
+}
+
+/// The trials of one search, kept as they run.
+struct Runs<F> {
+    trial: F,
+    trials: Vec<Trial>,
+}
+
+impl<F: FnMut(f64) -> Result<Trial, EventError>> Runs<F> {
+    fn new(trial: F) -> Self {
+        Runs {
+            trial,
+            trials: Vec::new(),
         }
     }
-    Ok(Search {
-        limit: Limit::Found {
+
+    /// Runs a trial at `p`: whether it passed.
+    fn passes(&mut self, p: f64) -> Result<bool, EventError> {
+        let t = (self.trial)(p)?;
+        self.trials.push(t);
+        Ok(t.passed)
+    }
+
+    /// Halves the bracket from a passing to a failing parameter until it
+    /// is at most `tolerance` wide: the limit, its midpoint.
+    fn narrow(
+        &mut self,
+        mut passed: f64,
+        mut failed: f64,
+        tolerance: f64,
+    ) -> Result<Limit, EventError> {
+        while (failed - passed).abs() > tolerance {
+            let middle = 0.5 * (passed + failed);
+            if self.passes(middle)? {
+                passed = middle;
+            } else {
+                failed = middle;
+            }
+        }
+        Ok(Limit::Found {
             value: 0.5 * (passed + failed),
             passed,
             failed,
-        },
-        trials,
-    })
+        })
+    }
+
+    fn search(self, limit: Limit) -> Search {
+        Search {
+            limit,
+            trials: self.trials,
+        }
+    }
 }
 
 /// The *first* parameter from `start` towards `end` where `trial` stops
@@ -148,56 +174,29 @@ pub fn scan_then_bisect(
     end: f64,
     step: f64,
     tolerance: f64,
-    mut trial: impl FnMut(f64) -> Result<Trial, EventError>,
+    trial: impl FnMut(f64) -> Result<Trial, EventError>,
 ) -> Result<Search, EventError> {
-    let mut trials = Vec::new();
-    let mut run = |p: f64, trials: &mut Vec<Trial>| -> Result<bool, EventError> {
-        let t = trial(p)?;
-        trials.push(t);
-        Ok(t.passed)
-    };
-    if !run(start, &mut trials)? {
-        return Ok(Search {
-            limit: Limit::Before { start },
-            trials,
-        });
+    let mut runs = Runs::new(trial);
+    if !runs.passes(start)? {
+        return Ok(runs.search(Limit::Before { start }));
     }
     let direction = (end - start).signum();
     let step = step.abs().max(tolerance.abs());
     let mut passed = start;
-    let failed = loop {
+    loop {
         let next = passed + direction * step;
         let next = if (end - next) * direction <= 0.0 {
             end
         } else {
             next
         };
-        if !run(next, &mut trials)? {
-            break next;
+        if !runs.passes(next)? {
+            let limit = runs.narrow(passed, next, tolerance)?;
+            return Ok(runs.search(limit));
         }
         if next == end {
-            return Ok(Search {
-                limit: Limit::Beyond { end },
-                trials,
-            });
+            return Ok(runs.search(Limit::Beyond { end }));
         }
         passed = next;
-    };
-    let mut failed = failed;
-    while (failed - passed).abs() > tolerance {
-        let middle = 0.5 * (passed + failed);
-        if run(middle, &mut trials)? {
-            passed = middle;
-        } else {
-            failed = middle;
-        }
     }
-    Ok(Search {
-        limit: Limit::Found {
-            value: 0.5 * (passed + failed),
-            passed,
-            failed,
-        },
-        trials,
-    })
 }

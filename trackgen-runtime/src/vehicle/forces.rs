@@ -7,7 +7,7 @@ use nalgebra::SVector;
 use super::books::EnergyBooks;
 use super::workspace::Workspace;
 use super::{Geometry, VehicleConfig, arms};
-use crate::contact::outline::{self, Outline, TERRAIN_CORNER};
+use crate::contact::outline::{self, Outline};
 use crate::contact::soft_ground::SoftGround;
 use crate::contact::{ContactJacobian, GroundFriction, ground, sprocket, wheel};
 use crate::integrate::SimulationError;
@@ -72,11 +72,12 @@ pub(super) fn detect<C: ChassisModel<DC>, const DC: usize>(
     contacts.clear();
     chassis_contacts.clear();
     let shoe = &geometry.shoe;
-    ground::detect(&config.terrain, links, shoe, contacts);
+    let clear = ground::clear_of(&config.terrain, links, shoe);
+    ground::detect_culled(&config.terrain, links, shoe, &clear, contacts);
     if config.soil.is_none()
         && let Some(outline) = &outlines.shoe
     {
-        outline::detect_track_corners(&config.terrain, links, outline, contacts);
+        outline::detect_track_corners(&config.terrain, links, (outline, &clear), contacts);
     }
     if let Some(hull) = &outlines.hull {
         outline::detect_hull(&config.terrain, &parts[0], hull, chassis_contacts);
@@ -184,19 +185,17 @@ pub(super) fn respond<const DC: usize>(
     ground_normal.fill(None);
     *books = EnergyBooks::default();
     let sprocket_body = sprocket.map(|s| s.body);
+    let corner_laws = config.corner_laws();
     for contact in contacts.iter() {
         let link_load = &mut track_loads[contact.link];
-        // A ground point's tangential state (not a terrain corner's: it
-        // has none).
-        let slot = || contact.link * points + contact.feature;
-        match (contact.other, soil) {
-            (None, _) if contact.feature == TERRAIN_CORNER => {
-                let force = config.corner_laws().respond(contact);
+        match (contact.other, contact.ground_point_slot(points), soil) {
+            // A terrain corner in a shoe: no tangential state.
+            (None, None, _) => {
+                let force = corner_laws.respond(contact);
                 force.apply(contact, link_load, None);
                 books.ground(&force);
             }
-            (None, None) => {
-                let slot = slot();
+            (None, Some(slot), None) => {
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);
                 let (force, rate) = config.ground.respond(contact, z);
                 if let Some(r) = tangential_rate.get_mut(slot) {
@@ -206,8 +205,7 @@ pub(super) fn respond<const DC: usize>(
                 force.apply(contact, link_load, None);
                 books.ground(&force);
             }
-            (None, Some(soil)) => {
-                let slot = slot();
+            (None, Some(slot), Some(soil)) => {
                 let (force, rate) = soil.respond(contact, points, tangential[slot]);
                 tangential_rate[slot] = rate;
                 // Below the surface the point shears the soil, bearing or
@@ -218,7 +216,7 @@ pub(super) fn respond<const DC: usize>(
                     books.ground(&force);
                 }
             }
-            (Some(body), _) => {
+            (Some(body), ..) => {
                 let on_teeth = Some(body) == sprocket_body;
                 let laws = if on_teeth {
                     &config.sprocket
@@ -239,7 +237,7 @@ pub(super) fn respond<const DC: usize>(
         }
     }
     for contact in chassis_contacts.iter() {
-        let force = config.corner_laws().respond(contact);
+        let force = corner_laws.respond(contact);
         force.apply(contact, &mut chassis_loads[contact.link], None);
         if contact.link == 0 {
             books.hull(&force);
@@ -316,15 +314,14 @@ pub(super) fn linearise(
     let sprocket_body = sprocket.map(|s| s.body);
     for (contact, out) in contacts.iter().zip(jacobians.iter_mut()) {
         let link = &links[contact.link];
-        match contact.other {
-            None if contact.feature == TERRAIN_CORNER => {
+        match (contact.other, contact.ground_point_slot(points)) {
+            (None, None) => {
                 let tangent = outline::tangent(contact);
                 config
                     .corner_laws()
                     .linearise(contact, &tangent, link, None, out);
             }
-            None => {
-                let slot = contact.link * points + contact.feature;
+            (None, Some(slot)) => {
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);
                 let tangent = ground::tangent(&config.terrain, contact);
                 match soil {
@@ -332,7 +329,7 @@ pub(super) fn linearise(
                     None => config.ground.linearise(contact, z, &tangent, link, out),
                 }
             }
-            Some(body) if Some(body) == sprocket_body => {
+            (Some(body), _) if Some(body) == sprocket_body => {
                 let part = &parts[body];
                 let profile = &geometry.sprocket;
                 let tangent = sprocket::tangent(contact, link, part, profile, &geometry.shoe);
@@ -340,7 +337,7 @@ pub(super) fn linearise(
                     .sprocket
                     .linearise(contact, &tangent, link, Some(part), out);
             }
-            Some(body) => {
+            (Some(body), _) => {
                 let part = &parts[body];
                 let tangent = wheel::tangent(contact, link, part, &geometry.shoe);
                 config

@@ -318,8 +318,8 @@ impl Implicit {
             let i = contact.link;
             self.link_by_pose[i] += block(&jacobian.link, LINK_POSE);
             self.link_by_rate[i] += block(&jacobian.link, LINK_RATE);
-            match contact.other {
-                Some(body) => {
+            match (contact.other, contact.ground_point_slot(per_link)) {
+                (Some(body), _) => {
                     self.body_by_pose[body] += block(&jacobian.other, OTHER_POSE);
                     self.body_by_rate[body] += block(&jacobian.other, OTHER_RATE);
                     self.couplings.push(Coupling {
@@ -331,10 +331,7 @@ impl Implicit {
                         body_by_rate: block(&jacobian.other, LINK_RATE),
                     });
                 }
-                None if !touching.is_empty()
-                    && contact.feature != crate::contact::outline::TERRAIN_CORNER =>
-                {
-                    let state = i * per_link + contact.feature;
+                (None, Some(state)) if !touching.is_empty() => {
                     // In the state's unit: w = z / unit.
                     let by_state = jacobian.link.column(DEFLECTION) * unit;
                     let rate = &jacobian.rate;
@@ -357,7 +354,7 @@ impl Implicit {
                         }),
                     });
                 }
-                None => {}
+                (None, _) => {}
             }
         }
         if let Some(relax) = relaxation {

@@ -218,10 +218,9 @@ impl Tangent {
                 .iter()
                 .zip(at.jacobians)
                 .map(|(contact, jacobian)| {
-                    let slot = (contact.other.is_none()
-                        && contact.feature != crate::contact::outline::TERRAIN_CORNER
-                        && !touching.is_empty())
-                    .then(|| contact.link * per_link + contact.feature);
+                    let slot = contact
+                        .ground_point_slot(per_link)
+                        .filter(|_| !touching.is_empty());
                     Compact::of(contact, jacobian, slot)
                 }),
         );
