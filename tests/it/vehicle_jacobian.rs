@@ -177,3 +177,16 @@ fn m113_over_a_step_edge() {
     let terrain = Terrain::profile(course.profile().unwrap());
     check::<M113>("M113, step edge", terrain, 2.0);
 }
+
+/// Against a wall taller than its nose: the wall's top edge, a corner of
+/// the polyline, inside the hull's outline (`tests/it/hull.rs`'s wall),
+/// its force on the chassis' frame in the chassis' columns. The M113,
+/// asked for 1 m/s, meets the wall at about 2.0 s; at 3.0 s it leans on
+/// it (the hull's normal force is checked to be there). Without the
+/// hull's contacts in the Jacobian an entry is 7e3 times its bound.
+#[test]
+fn m113_leaning_on_a_wall_with_its_hull() {
+    let (system, t, y, hull) = support::vehicle::m113_leaning_on_a_wall();
+    assert!(hull > 1e3, "the hull bears on the wall: {hull} N");
+    check_at("M113, hull on a wall", system, t, y);
+}

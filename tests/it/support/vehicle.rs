@@ -153,3 +153,35 @@ pub fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
         .map(|(x, y)| (x + grade * y) / norm)
         .collect()
 }
+
+/// Flat ground up to a wall `height` m tall whose face is at x = 4 m (the
+/// M113's nose starts at about 2.46 m), flat again on top.
+pub fn wall(height: f64) -> Terrain {
+    let course = trackgen::contact::profile::Course::starting_at(-20.0, 0.0)
+        .unwrap()
+        .flat(24.0)
+        .unwrap()
+        .step(height)
+        .unwrap()
+        .flat(10.0)
+        .unwrap();
+    Terrain::profile(course.profile().unwrap())
+}
+
+/// The M113 asked for 1 m/s (reached in 1 s) at a 1.2 m [`wall`]: at
+/// 3.0 s it leans on the wall with its hull (the wall's top edge in the
+/// glacis), its tracks still driving. The state, and the hull's normal
+/// force there, N.
+pub fn m113_leaning_on_a_wall() -> (M113System, f64, DVector<f64>, f64) {
+    let (mut system, t, y) = driven_with::<M113>(
+        wall(1.2),
+        |config| config.drive = M113::speed_drive(|t| t.min(1.0)),
+        3.0,
+        1e-4,
+    );
+    let columns = system.columns();
+    let mut row = Vec::new();
+    system.observe(t, y.as_slice(), &mut row).expect("observes");
+    let hull = row[columns.iter().position(|c| c == "hull_normal").unwrap()];
+    (system, t, y, hull)
+}

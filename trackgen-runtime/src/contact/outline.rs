@@ -307,5 +307,28 @@ pub fn tangent(contact: &Contact) -> GeometryTangent {
     }
 }
 
+/// The derivatives of a rim's contact with a terrain corner
+/// ([`detect_rim`]'s) with the body's pose: the contact point is the
+/// corner, fixed; the depth `r − |c − C|` changes as `−n·∂C` (the
+/// material point's turning, `⟂(c − C)`, is square to `n`); the normal
+/// `n = (C − c)/|C − c|` turns as the centre moves past the corner,
+/// `∂n = (I − n nᵀ) ∂C / |C − c|`, and not with the body's angle.
+pub fn rim_tangent(contact: &Contact) -> GeometryTangent {
+    let material = body_point(contact.arm, LINK);
+    let n = contact.gradient;
+    let depth = material.row(0) * -n.x - material.row(1) * n.y;
+    let mut gradient = PoseRows2::zeros();
+    let distance = contact.arm.norm();
+    if distance > 0.0 {
+        let turning = (nalgebra::Matrix2::identity() - n * n.transpose()) / distance;
+        gradient.fixed_view_mut::<2, 2>(0, LINK).copy_from(&turning);
+    }
+    GeometryTangent {
+        point: PoseRows2::zeros(),
+        depth,
+        gradient,
+    }
+}
+
 #[cfg(test)]
 mod tests;

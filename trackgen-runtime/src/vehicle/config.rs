@@ -143,7 +143,11 @@ impl VehicleConfig {
     pub(super) fn torque_cap(&self, omega: f64) -> TorqueCap {
         self.powertrain.as_ref().map_or(TorqueCap::NONE, |p| {
             let (value, slope) = p.limit(omega.abs());
-            TorqueCap { value, slope }
+            TorqueCap {
+                value,
+                slope,
+                stall: p.limit(0.0).0,
+            }
         })
     }
 

@@ -1,5 +1,15 @@
 //! What turns the sprocket: a torque schedule or a speed controller,
-//! capped by the powertrain where it drives.
+//! capped by the powertrain where it pushes the way the driver asks.
+//!
+//! The cap is continuous in the sprocket's speed: a torque pushing the
+//! way the driver asks is held to the powertrain's torque at the
+//! sprocket's speed while the sprocket turns that way, and to its torque
+//! at rest (the stall torque) while the vehicle forces it back (rolling
+//! back down a grade it cannot climb, pushed back by an obstacle). A
+//! cap that let go at `ω = 0` (a torque "braking" a sprocket forced back)
+//! would jump there from the stall torque to the controller's limit, and
+//! a stalled vehicle chatters across that jump at tiny steps. A torque
+//! against the asked direction is the brakes', uncapped.
 
 use thiserror::Error;
 
@@ -69,16 +79,20 @@ pub enum Drive {
     },
 }
 
-/// The powertrain's cap on a driving torque at the sprocket's speed
-/// ([`Powertrain::limit`](super::Powertrain::limit)): a torque that turns
-/// the sprocket the way it turns (or starts it) is held to `value`, N m,
-/// whose slope with `|ω|` is `slope`, N m s/rad.
+/// The powertrain's cap on the sprocket's torque at its speed
+/// ([`Powertrain::limit`](super::Powertrain::limit)): a torque pushing the
+/// way the driver asks is held to `value`, N m, while the sprocket turns
+/// that way or rests (`value`'s slope with `|ω|` is `slope`, N m s/rad),
+/// and to `stall`, N m (the torque at rest), while the sprocket is forced
+/// the other way.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TorqueCap {
     /// N m, ≥ 0 (∞: no powertrain).
     pub value: f64,
     /// N m s/rad.
     pub slope: f64,
+    /// The cap at rest, N m (∞: no powertrain).
+    pub stall: f64,
 }
 
 impl TorqueCap {
@@ -86,35 +100,46 @@ impl TorqueCap {
     pub const NONE: TorqueCap = TorqueCap {
         value: f64::INFINITY,
         slope: 0.0,
+        stall: f64::INFINITY,
     };
 
-    /// `torque` capped: held to `±value` if it drives the sprocket turning
-    /// at `omega` (the same sign, or the sprocket at rest); whether it was.
-    fn apply(self, torque: f64, omega: f64) -> (f64, bool) {
-        if drives(torque, omega) && torque.abs() > self.value {
-            (self.value.copysign(torque), true)
+    /// The cap on a torque of `torque`'s sign at sprocket speed `omega`,
+    /// N m, and its slope with `ω`, N m s/rad: `value` while the sprocket
+    /// turns the torque's way (or rests), `stall` (flat) while forced the
+    /// other way.
+    fn at(self, torque: f64, omega: f64) -> (f64, f64) {
+        if torque * omega >= 0.0 {
+            (self.value, self.slope * torque.signum() * omega.signum())
         } else {
-            (torque, false)
+            (self.stall, 0.0)
         }
     }
 
+    /// `torque` capped if it pushes the way the driver asks (`direction`'s
+    /// sign; a torque against it brakes, uncapped); whether it was, and
+    /// the capped torque's slope with `omega`.
+    fn apply(self, torque: f64, omega: f64, direction: f64) -> (f64, Option<f64>) {
+        if torque * direction > 0.0 {
+            let (cap, slope) = self.at(torque, omega);
+            if torque.abs() > cap {
+                return (cap.copysign(torque), Some(slope));
+            }
+        }
+        (torque, None)
+    }
+
     /// How much of the cap `torque` uses at sprocket speed `omega`: its
-    /// size over the cap while it drives the sprocket (1 when capped), 0
-    /// while it brakes (the powertrain gives no braking torque) or without
+    /// size over the cap while it pushes the way the driver asks
+    /// (`direction`'s sign; 1 when capped), 0 while it brakes or without
     /// a powertrain.
-    pub fn load(self, torque: f64, omega: f64) -> f64 {
-        if drives(torque, omega) && self.value.is_finite() && self.value > 0.0 {
-            (torque.abs() / self.value).min(1.0)
+    pub fn load(self, torque: f64, omega: f64, direction: f64) -> f64 {
+        let (cap, _) = self.at(torque, omega);
+        if torque * direction > 0.0 && cap.is_finite() && cap > 0.0 {
+            (torque.abs() / cap).min(1.0)
         } else {
             0.0
         }
     }
-}
-
-/// Whether `torque` drives a sprocket turning at `omega`: turns it the way
-/// it already turns, or starts it.
-fn drives(torque: f64, omega: f64) -> bool {
-    torque * omega > 0.0 || (omega == 0.0 && torque != 0.0)
 }
 
 impl Drive {
@@ -194,45 +219,61 @@ impl Drive {
         state: f64,
         cap: TorqueCap,
     ) -> DriveSlopes {
-        let capped_slope = |torque: f64| cap.slope * torque.signum() * omega.signum();
+        let demand = self.demand(t);
+        let direction = self.direction(demand, radius);
         match self {
             Drive::Free => DriveSlopes::default(),
-            Drive::Torque(f) => {
-                let (_, capped) = cap.apply(f(t), omega);
-                DriveSlopes {
-                    torque: if capped {
-                        [capped_slope(f(t)), 0.0]
-                    } else {
-                        [0.0, 0.0]
-                    },
-                    rate: [0.0, 0.0],
-                }
-            }
+            Drive::Torque(_) => DriveSlopes {
+                torque: [cap.apply(demand, omega, direction).1.unwrap_or(0.0), 0.0],
+                rate: [0.0, 0.0],
+            },
             Drive::Speed {
                 proportional,
                 integral,
                 max_torque,
                 ..
             } => {
-                let demand = self.demand(t);
                 let error = -demand / radius - omega;
                 let wanted = proportional * error + integral * state;
-                let (torque, _) = self.respond(demand, omega, radius, state, cap);
-                let own = torque.abs() >= *max_torque && wanted.abs() > *max_torque;
+                let own_limited = wanted.abs() > *max_torque;
+                let (torque, capped) = cap.apply(within(wanted, *max_torque), omega, direction);
                 let limited = torque != wanted;
                 // As `respond` holds the integral.
                 let held = limited && wanted.signum() == error.signum();
                 DriveSlopes {
-                    torque: if !limited {
-                        [-proportional, *integral]
-                    } else if own {
-                        [0.0, 0.0]
-                    } else {
-                        [capped_slope(torque), 0.0]
+                    torque: match capped {
+                        Some(slope) => [slope, 0.0],
+                        None if own_limited => [0.0, 0.0],
+                        None => [-proportional, *integral],
                     },
                     rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
                 }
             }
+        }
+    }
+
+    /// How much of the powertrain's cap the drive's `torque` (N m) uses at
+    /// `t` at sprocket speed `omega` (rad/s, pitch radius `radius` m):
+    /// [`TorqueCap::load`] in the direction the driver asks.
+    pub fn engine_load(&self, t: f64, torque: f64, omega: f64, radius: f64, cap: TorqueCap) -> f64 {
+        cap.load(torque, omega, self.direction(self.demand(t), radius))
+    }
+
+    /// The way the driver asks the sprocket to turn, as a sign (0: to
+    /// stand): the target speed's (the sprocket turns as `−v / r`) or the
+    /// scheduled torque's.
+    fn direction(&self, demand: f64, radius: f64) -> f64 {
+        let asked = match self {
+            Drive::Free => 0.0,
+            Drive::Torque(_) => demand,
+            Drive::Speed { .. } => -demand / radius,
+        };
+        if asked > 0.0 {
+            1.0
+        } else if asked < 0.0 {
+            -1.0
+        } else {
+            0.0
         }
     }
 
@@ -255,7 +296,10 @@ impl Drive {
     ) -> (f64, f64) {
         match self {
             Drive::Free => (0.0, 0.0),
-            Drive::Torque(_) => (cap.apply(demand, omega).0, 0.0),
+            Drive::Torque(_) => (
+                cap.apply(demand, omega, self.direction(demand, radius)).0,
+                0.0,
+            ),
             Drive::Speed {
                 proportional,
                 integral,
@@ -264,21 +308,25 @@ impl Drive {
             } => {
                 let error = -demand / radius - omega;
                 let wanted = proportional * error + integral * state;
-                // Not `clamp`, which panics on a NaN or negative limit
-                // (refused by `check` when a vehicle is built); a NaN
-                // stays NaN.
-                let torque = if wanted > *max_torque {
-                    *max_torque
-                } else if wanted < -max_torque {
-                    -max_torque
-                } else {
-                    wanted
-                };
-                let (torque, _) = cap.apply(torque, omega);
+                let torque = within(wanted, *max_torque);
+                let (torque, _) = cap.apply(torque, omega, self.direction(demand, radius));
                 let saturated = wanted != torque && wanted.signum() == error.signum();
                 (torque, if saturated { 0.0 } else { error })
             }
         }
+    }
+}
+
+/// `wanted` held to `±max_torque`. Not `clamp`, which panics on a NaN or
+/// negative limit (refused by `check` when a vehicle is built); a NaN
+/// stays NaN.
+fn within(wanted: f64, max_torque: f64) -> f64 {
+    if wanted > max_torque {
+        max_torque
+    } else if wanted < -max_torque {
+        -max_torque
+    } else {
+        wanted
     }
 }
 

@@ -7,7 +7,7 @@ use nalgebra::SVector;
 use super::books::EnergyBooks;
 use super::workspace::Workspace;
 use super::{Geometry, VehicleConfig, arms};
-use crate::contact::outline::{self, Outline};
+use crate::contact::outline::{self, Outline, TERRAIN_CORNER};
 use crate::contact::soft_ground::SoftGround;
 use crate::contact::{ContactJacobian, GroundFriction, ground, sprocket, wheel};
 use crate::integrate::SimulationError;
@@ -275,7 +275,10 @@ pub(super) fn respond<const DC: usize>(
             config
                 .drive
                 .checked_torque(t, omega, sprocket.rolling_radius, integral, cap)?;
-        books.engine_load = cap.load(torque, omega);
+        books.engine_load =
+            config
+                .drive
+                .engine_load(t, torque, omega, sprocket.rolling_radius, cap);
         chassis_loads[sprocket.body].moment += torque;
         chassis_loads[0].moment -= torque;
         books.torque = torque;
@@ -308,8 +311,11 @@ pub(super) fn linearise(
         parts,
         contacts,
         jacobians,
+        chassis_contacts,
+        chassis_jacobians,
         ..
     } = work;
+    let corner_laws = config.corner_laws();
     jacobians.resize(contacts.len(), ContactJacobian::ZERO);
     let sprocket_body = sprocket.map(|s| s.body);
     for (contact, out) in contacts.iter().zip(jacobians.iter_mut()) {
@@ -317,9 +323,7 @@ pub(super) fn linearise(
         match (contact.other, contact.ground_point_slot(points)) {
             (None, None) => {
                 let tangent = outline::tangent(contact);
-                config
-                    .corner_laws()
-                    .linearise(contact, &tangent, link, None, out);
+                corner_laws.linearise(contact, &tangent, link, None, out);
             }
             (None, Some(slot)) => {
                 let z = tangential.get(slot).map_or(0.0, |w| w * scale);
@@ -345,5 +349,19 @@ pub(super) fn linearise(
                     .linearise(contact, &tangent, link, Some(part), out);
             }
         }
+    }
+    // The chassis' own contacts with the ground, the body in the `link`
+    // rows and columns: a terrain corner in the hull turns with it; the
+    // hull's corners below the ground meet it as ground points do; a rim
+    // pushes straight off a corner.
+    chassis_jacobians.resize(chassis_contacts.len(), ContactJacobian::ZERO);
+    for (contact, out) in chassis_contacts.iter().zip(chassis_jacobians.iter_mut()) {
+        let body = &parts[contact.link];
+        let tangent = match (contact.link, contact.feature) {
+            (0, TERRAIN_CORNER) => outline::tangent(contact),
+            (0, _) => ground::tangent(&config.terrain, contact),
+            _ => outline::rim_tangent(contact),
+        };
+        corner_laws.linearise(contact, &tangent, body, None, out);
     }
 }

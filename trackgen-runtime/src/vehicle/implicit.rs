@@ -30,7 +30,8 @@
 //!
 //! In the bodies' absolute coordinates the matrix is the masses plus a
 //! 3 × 3 block per contact: the ground's on its link alone, a rim's or a
-//! tooth's between a link and a chassis body. The track's part, with the
+//! tooth's between a link and a chassis body, the hull's and a rim's on a
+//! terrain corner on their chassis body alone. The track's part, with the
 //! loop's constraint, is [`ShiftedChain`]'s O(n) solve; the chassis'
 //! (a dozen coordinates) is dense, and the two meet through the rims and
 //! teeth by a Schur complement on the chassis: one chain solve per chassis
@@ -356,6 +357,13 @@ impl Implicit {
                 }
                 (None, _) => {}
             }
+        }
+        // The chassis' own contacts with the ground: their body's blocks.
+        let (chassis_contacts, chassis_jacobians) = at.chassis_contacts;
+        for (contact, jacobian) in chassis_contacts.iter().zip(chassis_jacobians) {
+            let body = contact.link;
+            self.body_by_pose[body] += block(&jacobian.link, LINK_POSE);
+            self.body_by_rate[body] += block(&jacobian.link, LINK_RATE);
         }
         if let Some(relax) = relaxation {
             for (state, normal) in touching.iter().enumerate() {

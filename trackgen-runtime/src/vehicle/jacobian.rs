@@ -132,6 +132,9 @@ pub(super) struct Tangent {
     block_loads: Vec<BodyLoad>,
     block_qdd: Vec<f64>,
     compact: Vec<Compact>,
+    /// The chassis bodies' own contacts with the ground: the body, and
+    /// its load's derivatives by its pose and rates.
+    chassis_compact: Vec<(usize, SMatrix<f64, 3, 6>)>,
 }
 
 impl Tangent {
@@ -169,6 +172,7 @@ impl Tangent {
             block_qdd: Vec::new(),
             chassis_qdd: vec![0.0; m + 2],
             compact: Vec::new(),
+            chassis_compact: Vec::new(),
         })
     }
 
@@ -224,6 +228,24 @@ impl Tangent {
                     Compact::of(contact, jacobian, slot)
                 }),
         );
+        let (chassis_contacts, chassis_jacobians) = at.chassis_contacts;
+        self.chassis_compact.clear();
+        self.chassis_compact
+            .extend(
+                chassis_contacts
+                    .iter()
+                    .zip(chassis_jacobians)
+                    .map(|(contact, jacobian)| {
+                        let mut by_body = SMatrix::<f64, 3, 6>::zeros();
+                        by_body
+                            .fixed_columns_mut::<3>(0)
+                            .copy_from(&jacobian.link.fixed_columns::<3>(LINK_POSE));
+                        by_body
+                            .fixed_columns_mut::<3>(3)
+                            .copy_from(&jacobian.link.fixed_columns::<3>(LINK_RATE));
+                        (contact.link, by_body)
+                    }),
+            );
         out.fill(0.0);
         let o = self.starts;
         let independent: Vec<usize> = (0..n + 2)
@@ -512,6 +534,16 @@ impl Tangent {
                         out,
                     );
                 }
+            }
+            for (b, by_body) in &self.chassis_compact {
+                let mut state = SVector::<f64, 6>::zeros();
+                state.fixed_rows_mut::<3>(0).copy_from(&self.body_pose[*b]);
+                state.fixed_rows_mut::<3>(3).copy_from(&self.body_rate[*b]);
+                let change = by_body * state;
+                self.body_loads[*b] = self.body_loads[*b].plus(BodyLoad {
+                    force: Vector2::new(change[0], change[1]),
+                    moment: change[2],
+                });
             }
         } else if let Some(slot) = deflection {
             for c in self.compact.iter().filter(|c| c.slot == Some(slot)) {

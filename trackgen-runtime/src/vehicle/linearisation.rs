@@ -37,6 +37,9 @@ pub(super) struct Linearisation<'a> {
     pub contacts: &'a [Contact],
     /// The contacts' Jacobians.
     pub jacobians: &'a [ContactJacobian],
+    /// The chassis bodies' contacts with the ground (the hull's, the
+    /// rims'), `link` the body, and their Jacobians in the same order.
+    pub chassis_contacts: (&'a [Contact], &'a [ContactJacobian]),
     /// The arms' springs.
     pub arms: &'a [ArmSpring],
     /// The sprocket's body and the drive's slopes.

@@ -443,6 +443,7 @@ where
             chassis: (qc.as_slice(), qdc.as_slice(), &self.work.part_rotations),
             contacts: &self.work.contacts,
             jacobians: &self.work.jacobians,
+            chassis_contacts: (&self.work.chassis_contacts, &self.work.chassis_jacobians),
             arms: &self.config.arms,
             drive,
             points: GroundPoints {
@@ -769,6 +770,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
             chassis: (qc.as_slice(), qdc.as_slice(), &self.work.part_rotations),
             contacts: &self.work.contacts,
             jacobians: &self.work.jacobians,
+            chassis_contacts: (&self.work.chassis_contacts, &self.work.chassis_jacobians),
             arms: &self.config.arms,
             drive,
             points: GroundPoints {

@@ -27,11 +27,14 @@ pub(super) struct Workspace {
     pub contacts: Vec<Contact>,
     /// Every contact's Jacobian, in the order of `contacts`, when the
     /// evaluation was linearised ([`forces::linearise`](super::forces::linearise)).
+    pub jacobians: Vec<ContactJacobian>,
     /// The chassis' contacts with the ground at the last evaluation: the
     /// hull's and the rims' on sharp corners; `link` is the chassis body
     /// (0: the frame, whose outline is the hull).
     pub chassis_contacts: Vec<Contact>,
-    pub jacobians: Vec<ContactJacobian>,
+    /// Their Jacobians, in their order, when linearised: the `link` rows
+    /// and columns are the chassis body's.
+    pub chassis_jacobians: Vec<ContactJacobian>,
     /// The loads on the links (force elements).
     pub track_loads: Vec<BodyLoad>,
     /// The loads on the chassis bodies.
@@ -79,8 +82,9 @@ impl Workspace {
             positions: vec![Vector2::zeros(); largest],
             velocities: vec![Vector2::zeros(); largest],
             contacts: Vec::with_capacity(8 * links),
-            chassis_contacts: Vec::new(),
             jacobians: Vec::new(),
+            chassis_contacts: Vec::new(),
+            chassis_jacobians: Vec::new(),
             track_loads: vec![BodyLoad::ZERO; links],
             chassis_loads: vec![BodyLoad::ZERO; bodies],
             tangential_rate: vec![0.0; tangential],

@@ -299,3 +299,51 @@ fn a_rim_on_a_corner() {
     // Clear of the corner: nothing.
     assert!(contacts(0.5, 0.7).is_empty());
 }
+
+/// [`rim_tangent`]'s depth and gradient rows against central differences
+/// of the detected rim contact over the body's pose (the angle too: the
+/// rim is round, so turning it changes neither).
+#[test]
+fn rim_tangent_matches_differences() {
+    let terrain = step();
+    let contact = |pose: [f64; 3]| {
+        let mut out = Vec::new();
+        detect_rim(
+            &terrain,
+            (&body(pose[0], pose[1], pose[2]), 2, 0.3),
+            &mut out,
+        );
+        out[0]
+    };
+    let pose = [0.85, 0.5, 0.7];
+    let t = rim_tangent(&contact(pose));
+    let h = 1e-7;
+    for k in 0..3 {
+        let (mut plus, mut minus) = (pose, pose);
+        plus[k] += h;
+        minus[k] -= h;
+        let (cp, cm) = (contact(plus), contact(minus));
+        let depth = (cp.depth - cm.depth) / (2.0 * h);
+        assert!(
+            (t.depth[k] - depth).abs() < 1e-7,
+            "∂δ/∂{k}: {} vs {depth}",
+            t.depth[k]
+        );
+        let g = (cp.gradient - cm.gradient) / (2.0 * h);
+        assert!(
+            (t.gradient[(0, k)] - g.x).abs() < 1e-7,
+            "∂gx/∂{k}: {} vs {}",
+            t.gradient[(0, k)],
+            g.x
+        );
+        assert!(
+            (t.gradient[(1, k)] - g.y).abs() < 1e-7,
+            "∂gy/∂{k}: {} vs {}",
+            t.gradient[(1, k)],
+            g.y
+        );
+        assert_eq!((cp.point - cm.point).norm(), 0.0);
+    }
+    // Not zero: the test can fail.
+    assert!(t.gradient.norm() > 1.0);
+}
