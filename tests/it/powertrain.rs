@@ -240,3 +240,67 @@ fn up_a_grade_at_full_power_it_holds_the_speed_its_power_buys() {
         );
     }
 }
+
+/// The cap through rest: the M113's speed controller asking for 1 m/s
+/// forward (the sprocket turning as `−v/r`) with its integral wound up, so
+/// that it wants more than the engine gives. Turning forward the torque is
+/// the envelope's at that speed; at rest and while the sprocket is forced
+/// back (ω > 0, a vehicle rolling back) it is the stall torque, the
+/// envelope's at rest, on both sides of ω = 0 to rounding; and the
+/// torque's slope is its central difference (step 1e-7 rad/s; the
+/// envelope's pieces are linear in ω or `P/ω`, so to 1e-6 relative plus
+/// the quotient's rounding, `4 ε τ / h`). A torque against the asked direction (the
+/// sprocket turning forward faster than asked, the integral run down)
+/// brakes, uncapped by the engine.
+#[test]
+fn the_cap_holds_the_stall_torque_through_rest() {
+    use trackgen::vehicle::TorqueCap;
+    let powertrain = m113::powertrain();
+    let cap = |omega: f64| {
+        let (value, slope) = powertrain.limit(omega.abs());
+        TorqueCap {
+            value,
+            slope,
+            stall: powertrain.limit(0.0).0,
+        }
+    };
+    let drive = M113::speed_drive(|_| 1.0);
+    let radius = 0.25;
+    let integral = -1e3; // wound up forward: the controller wants −1e3 I.
+    let torque = |omega: f64| {
+        drive
+            .checked_torque(0.0, omega, radius, integral, cap(omega))
+            .unwrap()
+            .0
+    };
+    let stall = powertrain.limit(0.0).0;
+    for omega in [1e-12, 1e-3, 0.5, 3.0] {
+        assert!(
+            (torque(omega) + stall).abs() <= 1e-12 * stall,
+            "forced back at {omega} rad/s: {} against the stall torque {stall}",
+            torque(omega)
+        );
+    }
+    assert!((torque(-1e-12) - torque(1e-12)).abs() <= 1e-9 * stall);
+    for omega in [-0.5, -2.0, -4.0] {
+        let envelope = powertrain.limit(-omega).0;
+        assert!((torque(omega) + envelope).abs() <= 1e-12 * envelope);
+    }
+    for omega in [-2.0, -0.5, 0.5, 2.0] {
+        let h = 1e-7;
+        let difference = (torque(omega + h) - torque(omega - h)) / (2.0 * h);
+        let slope = drive
+            .slopes(0.0, omega, radius, integral, cap(omega))
+            .torque[0];
+        assert!(
+            (slope - difference).abs() <= 1e-6 * slope.abs() + 4.0 * f64::EPSILON * stall / h,
+            "∂τ/∂ω at {omega}: {slope} against {difference}"
+        );
+    }
+    // Braking: forward faster than asked, the integral run down.
+    let braking = drive
+        .checked_torque(0.0, -10.0, radius, 0.0, cap(-10.0))
+        .unwrap()
+        .0;
+    assert!(braking > 0.0 && braking > powertrain.limit(10.0).0);
+}
