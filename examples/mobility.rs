@@ -7,7 +7,7 @@
 //! ```
 //!
 //! Runs the events of `trackgen::mobility` (each a limit found by
-//! bisection over runs, the vehicle driven through its engine) in parallel
+//! bracketing over runs, the vehicle driven through its engine) in parallel
 //! on every core, and writes to `out/mobility/<vehicle>/` (or `--out`):
 //! `<event>.csv` (one row per result: the parameter, the limit, its unit
 //! and the runs it took), `trials.csv` (every run), `summary.svg` (the
@@ -440,15 +440,21 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
         bar.set_style(style);
     }
     // Each task is deterministic and independent: the results do not
-    // depend on the order rayon runs them in (collect keeps the order).
-    let done: Vec<(usize, Vec<Row>)> = chosen
-        .par_iter()
+    // depend on the order rayon runs them in. The workers take them from
+    // one queue in the set's order (`par_bridge`), the long ride searches
+    // first, so that the short ones fill in beside them at the end
+    // (longest first; measured on the M113's set, 61.5 s split in halves
+    // by `par_iter`, 58.6 s so).
+    let mut done: Vec<(usize, Vec<Row>)> = chosen
+        .iter()
+        .par_bridge()
         .map(|&i| {
             let rows = work[i].rows();
             bar.inc(1);
             (i, rows)
         })
         .collect();
+    done.sort_by_key(|(i, _)| *i);
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
     if let Some((k, n)) = args.slice {

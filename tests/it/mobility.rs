@@ -7,6 +7,12 @@
 //!   criterion passing everywhere is `Beyond` the range, failing
 //!   everywhere `Before` it; an error in a trial is the search's error,
 //!   never a limit.
+//! * ITP interpolation (the ride's speed search) on figures with a known
+//!   crossing: the bracket holds it and is no wider than the tolerance;
+//!   on a smooth figure (a power law, as the absorbed power's rise with
+//!   speed) it takes fewer runs than bisection, and on a figure that
+//!   tells nothing but pass or fail (a step) at most one run more, the
+//!   method's guarantee; a trial's error is the search's.
 //! * A vehicle that stalls where a speed is searched (a half-round higher
 //!   than it climbs) is `EventError::Stalled`, not a speed limit.
 //! * A run that diverges (RK4 at a step far beyond the M113's stability,
@@ -23,7 +29,7 @@ use std::sync::Arc;
 
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
-use trackgen::mobility::search::{Limit, Trial, bisect};
+use trackgen::mobility::search::{Limit, Trial, bisect, interpolate};
 use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride, soil};
 use trackgen::vehicles::m113::{self, M113};
 
@@ -318,4 +324,88 @@ fn the_scan_finds_the_first_crossing_of_a_criterion_that_is_not_monotone() {
         (before.limit, before.runs()),
         (Limit::Before { start: 1.0 }, 1)
     );
+}
+
+/// `interpolate` on figures with known crossings, searched up and down.
+#[test]
+fn interpolation_brackets_a_known_crossing_in_at_most_bisection_s_runs_plus_one() {
+    let limit = 6.0;
+    for (start, end, tolerance, crossing, smooth) in [
+        (1.0, 20.0, 0.1, 3f64.powf(2.0 / 3.0), true),
+        (1.0, 20.0, 0.1, 5.55, true),
+        (1.0, 20.0, 0.1, 1.2, false),
+        (0.0, 1.0, 1e-3, 0.371_234, false),
+        (10.0, 1.0, 0.01, 3.3, true),
+    ] {
+        let up = start < end;
+        let figure = move |p: f64| {
+            // Smooth: a power law through the limit at the crossing
+            // (the figure rising the way the search runs); else a step.
+            let ratio = if up { p / crossing } else { crossing / p };
+            if smooth {
+                limit * ratio.powf(1.5)
+            } else if ratio < 1.0 {
+                1.0
+            } else {
+                100.0
+            }
+        };
+        let trial = |p: f64| {
+            let f = figure(p);
+            Ok(Trial {
+                parameter: p,
+                figure: f,
+                passed: f < limit,
+            })
+        };
+        let search = interpolate(start, end, tolerance, limit, trial).unwrap();
+        let Limit::Found { passed, failed, .. } = search.limit else {
+            panic!("{start}..{end}: {:?}", search.limit)
+        };
+        assert!((failed - passed).abs() <= tolerance, "{passed}..{failed}");
+        assert!(
+            (passed.min(failed)..=passed.max(failed)).contains(&crossing),
+            "{crossing} outside {passed}..{failed}"
+        );
+        let bisection = 2 + ((end - start).abs() / tolerance).log2().ceil() as usize;
+        assert!(search.runs() <= bisection + 1, "{} runs", search.runs());
+        if smooth {
+            assert!(
+                search.runs() < bisection,
+                "{start}..{end}: {} runs, bisection {bisection}",
+                search.runs()
+            );
+        }
+        println!(
+            "{start}..{end} to {crossing}: {} runs, bisection {bisection}",
+            search.runs()
+        );
+    }
+    let beyond = interpolate(0.0, 1.0, 1e-3, 1.0, |p| {
+        Ok(Trial {
+            parameter: p,
+            figure: 0.5,
+            passed: true,
+        })
+    })
+    .unwrap();
+    assert_eq!(beyond.limit, Limit::Beyond { end: 1.0 });
+    let mut calls = 0;
+    let failed = interpolate(1.0, 20.0, 0.1, 6.0, |p| {
+        calls += 1;
+        if calls == 4 {
+            return Err(EventError::Setting {
+                event: "test",
+                what: "the fourth trial",
+                range: "anything",
+                value: p,
+            });
+        }
+        Ok(Trial {
+            parameter: p,
+            figure: p,
+            passed: p < 6.0,
+        })
+    });
+    assert!(matches!(failed, Err(EventError::Setting { .. })));
 }

@@ -151,6 +151,13 @@ pub struct Profile {
     /// order: found once, so that contact finds those over a range in
     /// O(log n) plus the ones there.
     sharp: Vec<usize>,
+    /// Their vertices `(x, z)`, m, in the same order: contact wants the
+    /// points alone.
+    sharp_points: Vec<(f64, f64)>,
+    /// `sharp_before[j]`: how many sharp corners have a vertex index
+    /// below `j` (`n + 1` entries), so that the bucket lookup of a range's
+    /// vertices gives its sharp corners in O(1).
+    sharp_before: Vec<u32>,
 }
 
 /// `sin` of the least turn of the ground at a convex corner that contact
@@ -530,10 +537,25 @@ impl Profile {
             z,
             index,
             sharp: Vec::new(),
+            sharp_points: Vec::new(),
+            sharp_before: Vec::new(),
         };
         profile.sharp = (0..n)
             .filter(|&j| profile.corner(j).is_some_and(|c| c.is_sharp()))
             .collect();
+        profile.sharp_points = profile
+            .sharp
+            .iter()
+            .map(|&j| (profile.x[j], profile.z[j]))
+            .collect();
+        let mut before = vec![0u32; n + 1];
+        for &j in &profile.sharp {
+            before[j + 1] = 1;
+        }
+        for j in 1..=n {
+            before[j] += before[j - 1];
+        }
+        profile.sharp_before = before;
         Ok(profile)
     }
 
@@ -729,27 +751,29 @@ impl Profile {
     /// in `[x0, x1]`, left to right: O(log n) to start (they are listed
     /// when the profile is made), then O(1) each.
     pub fn sharp_corners_in(&self, x0: f64, x1: f64) -> impl Iterator<Item = Corner> + '_ {
-        self.sharp_in(x0, x1).filter_map(|j| self.corner(j))
+        let range = self.sharp_range(x0, x1);
+        self.sharp[range].iter().filter_map(|&j| self.corner(j))
     }
 
     /// As [`sharp_corners_in`](Self::sharp_corners_in), their vertices
     /// `(x, z)` (m) alone: what contact needs, without the edges'
     /// directions.
     pub fn sharp_points_in(&self, x0: f64, x1: f64) -> impl Iterator<Item = (f64, f64)> + '_ {
-        self.sharp_in(x0, x1).map(|j| (self.x[j], self.z[j]))
+        self.sharp_points[self.sharp_range(x0, x1)].iter().copied()
     }
 
-    /// The indices of the sharp corners in `[x0, x1]`.
-    fn sharp_in(&self, x0: f64, x1: f64) -> impl Iterator<Item = usize> + '_ {
-        let start = if x0 <= x1 {
-            self.sharp.partition_point(|&j| self.x[j] < x0)
-        } else {
-            self.sharp.len()
-        };
-        self.sharp[start..]
-            .iter()
-            .copied()
-            .take_while(move |&j| self.x[j] <= x1)
+    /// Where the sharp corners in `[x0, x1]` are in the lists (empty for
+    /// an empty range): the vertices' range by the bucket lookup, then
+    /// [`sharp_before`](Self::sharp_before)'s counts, O(1) on evenly
+    /// spaced points.
+    fn sharp_range(&self, x0: f64, x1: f64) -> std::ops::Range<usize> {
+        // NaN compares false: an empty range.
+        if x0.partial_cmp(&x1).is_none_or(|o| o.is_gt()) {
+            return 0..0;
+        }
+        let start = self.sharp_before[self.count_lt(x0)] as usize;
+        let end = self.sharp_before[self.count_le(x1)] as usize;
+        start..end.max(start)
     }
 
     /// The highest point of the ground over the closed range `[x0, x1]`,

@@ -101,8 +101,10 @@ pub fn ride_at<V: Vehicle>(
 }
 
 /// The ride-limiting speed over `roughness`: the speed asked at which the
-/// absorbed power reaches the settings' limit, by bisection between
-/// 1 m/s and the powertrain's top speed (or `max_speed`) to the settings'
+/// absorbed power reaches the settings' limit, by ITP interpolation
+/// ([`interpolate`](super::search::interpolate): bisection's bracket, in
+/// fewer runs where the power rises smoothly with speed) between 1 m/s
+/// and the powertrain's top speed (or `max_speed`) to the settings'
 /// `speed_tolerance`. Each trial is a [`ride_at`] run; its figure is the
 /// absorbed power, W. A course the vehicle cannot cross (it stalls) is
 /// [`EventError::Stalled`]: neither a pass nor a limit.

@@ -4,7 +4,7 @@
 use nalgebra::Vector2;
 
 use super::EventError;
-use super::search::{Search, Trial, bisect, scan_then_bisect};
+use super::search::{Search, Trial, interpolate, scan_then_bisect};
 use crate::contact::Terrain;
 use crate::contact::profile::{Course, Obstacle, Profile, ProfileError};
 use crate::integrate::Integrator;
@@ -289,7 +289,8 @@ pub(super) struct SpeedTrial {
 
 /// The speed, from 1 m/s to the powertrain's top speed, at which the
 /// figure `run` gives reaches `limit` (passing below it), to the settings'
-/// `speed_tolerance`: by bisection over the range, or with `scan` (m/s)
+/// `speed_tolerance`: by ITP interpolation over the range
+/// ([`interpolate`](super::search::interpolate)), or with `scan` (m/s)
 /// the first such speed, stepping up by it first
 /// ([`scan_then_bisect`](super::search::scan_then_bisect)); a stall is
 /// [`EventError::Stalled`].
@@ -320,7 +321,7 @@ pub(super) fn search_speed(
     };
     match scan {
         Some(step) => scan_then_bisect(start, top, step, settings.speed_tolerance, trial),
-        None => bisect(start, top, settings.speed_tolerance, trial),
+        None => interpolate(start, top, settings.speed_tolerance, limit, trial),
     }
 }
 
