@@ -12,8 +12,9 @@
 //! `<event>.csv` (one row per result: the parameter, the limit, its unit
 //! and the runs it took), `trials.csv` (every run), `summary.svg` (the
 //! curves: ride-limiting speed against roughness, half-round speed against
-//! height, speed against grade) and `report.html` (the tables and the
-//! curves in one file). It prints a summary table; with `--json`, one
+//! height, speed against grade), `<event>-limit.svg` (the vehicle at its
+//! steepest on the largest step, gap, ditch and barrier it crossed) and
+//! `report.html` (the tables, the curves and the pictures in one file). It prints a summary table; with `--json`, one
 //! JSON object per result per line (`event`, `parameter`, `quantity`,
 //! `value`, `relation` (`=`, `>` beyond the range, `<` before it,
 //! `stalled`, `failed`), `unit`, `runs`, `failure`; SI units: roughness and heights in m,
@@ -653,6 +654,15 @@ fn write_all(
     let svg = curves(rows)?;
     fs::write(dir.join("summary.svg"), &svg)?;
     files.push("summary.svg".into());
+    // The vehicle at each obstacle's limit: a picture per search that
+    // drew one.
+    for r in rows {
+        if let Some(picture) = r.search.as_ref().and_then(|s| s.picture.as_ref()) {
+            let file = format!("{}-limit.svg", r.event);
+            fs::write(dir.join(&file), picture)?;
+            files.push(file);
+        }
+    }
     fs::write(dir.join("report.html"), report(name, rows, wall, &svg))?;
     files.push("report.html".into());
     Ok(files)
@@ -749,7 +759,27 @@ fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
             r.wall
         );
     }
-    html.push_str("</table></body></html>\n");
+    html.push_str("</table>");
+    let pictures: Vec<(&Row, &String)> = rows
+        .iter()
+        .filter_map(|r| Some((r, r.search.as_ref()?.picture.as_ref()?)))
+        .collect();
+    if !pictures.is_empty() {
+        html.push_str(
+            "<h2>At the limits</h2><p>Each obstacle's largest crossed, the vehicle at its \
+             steepest moment on it (the largest pitch of that run).</p>",
+        );
+        for (r, picture) in pictures {
+            let _ = write!(
+                html,
+                "<figure><figcaption>{}: {} {}</figcaption>{picture}</figure>",
+                r.quantity,
+                value_text(r),
+                r.unit
+            );
+        }
+    }
+    html.push_str("</body></html>\n");
     html
 }
 
@@ -785,7 +815,7 @@ mod slices {
                 .iter()
                 .map(|t| json!([number(t.parameter), number(t.figure), t.passed]))
                 .collect();
-            json!({"limit": limit, "trials": trials})
+            json!({"limit": limit, "trials": trials, "picture": s.picture})
         });
         json!({
             "event": r.event,
@@ -860,7 +890,12 @@ mod slices {
                         passed: t[2].as_bool().unwrap_or(false),
                     })
                     .collect();
-                Some(Search { limit, trials })
+                let picture = s["picture"].as_str().map(str::to_owned);
+                Some(Search {
+                    limit,
+                    trials,
+                    picture,
+                })
             }
         };
         let parameter = match &v["parameter"] {

@@ -106,8 +106,19 @@ pub const RUNTIME: Graph = &[
         ],
     ),
     (
+        "scene",
+        &["planar", "multibody", "contact", "vehicle", "simulate"],
+    ),
+    (
         "mobility",
-        &["contact", "integrate", "system", "vehicle", "simulate"],
+        &[
+            "contact",
+            "integrate",
+            "system",
+            "vehicle",
+            "simulate",
+            "scene",
+        ],
     ),
     // `__private`: the paths generated code names (lib.rs).
     (
@@ -155,26 +166,24 @@ pub const FACADE: Graph = &[
     ("lib", &["vehicles"]),
 ];
 
-/// The main job: the options and the console at the bottom, the scene
-/// (what is drawn) over them, the outputs and reports over that, `main`
-/// on top.
+/// The main job: the options and the console at the bottom, the
+/// pictures (drawn from the runtime's `scene`) over them, the outputs and
+/// reports over that, `main` on top.
 pub const MAIN_JOB: Graph = &[
     ("console", &[]),
     ("cli", &[]),
     ("nearest", &[]),
-    ("scene", &["cli"]),
-    ("animation", &["scene"]),
-    ("plots", &["scene"]),
-    ("outputs", &["nearest", "scene", "animation", "plots"]),
+    ("animation", &[]),
+    ("plots", &[]),
+    ("outputs", &["nearest", "animation", "plots"]),
     ("report", &["console", "cli"]),
-    ("modes", &["console", "scene", "animation"]),
+    ("modes", &["console", "animation"]),
     (
         "main",
         &[
             "console",
             "cli",
             "nearest",
-            "scene",
             "animation",
             "plots",
             "outputs",

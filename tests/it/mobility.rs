@@ -13,6 +13,7 @@
 //!   speed) it takes fewer runs than bisection, and on a figure that
 //!   tells nothing but pass or fail (a step) at most one run more, the
 //!   method's guarantee; a trial's error is the search's.
+//! * The step event draws the vehicle at the largest step it crossed.
 //! * A vehicle that stalls where a speed is searched (a half-round higher
 //!   than it climbs) is `EventError::Stalled`, not a speed limit.
 //! * A run that diverges (RK4 at a step far beyond the M113's stability,
@@ -408,4 +409,32 @@ fn interpolation_brackets_a_known_crossing_in_at_most_bisection_s_runs_plus_one(
         })
     });
     assert!(matches!(failed, Err(EventError::Setting { .. })));
+}
+
+/// The step event draws the vehicle at its limit: the search's picture is
+/// the run at the largest step crossed (the bracket's passing end) at its
+/// steepest moment, an SVG with the ground and the hull's outline (two
+/// polygons), the wheels, the track, and a label naming that step. At a
+/// loose tolerance (0.1 m: six runs).
+#[test]
+fn the_step_event_draws_the_vehicle_at_its_limit() {
+    let mut settings = EventSettings::new(m113::powertrain());
+    settings.length_tolerance = 0.1;
+    let footprint = Footprint::of::<M113>("step").unwrap();
+    let search = obstacle::step::<M113>(&settings, &footprint).unwrap();
+    let Limit::Found { passed, .. } = search.limit else {
+        panic!("{:?}", search.limit)
+    };
+    let picture = search.picture.expect("a picture at the limit");
+    assert!(picture.starts_with("<svg"), "{picture}");
+    assert!(
+        picture.contains(&format!("step {passed:.3} m")),
+        "{picture}"
+    );
+    assert_eq!(
+        picture.matches("<polygon").count(),
+        2,
+        "the ground and the hull"
+    );
+    assert!(picture.matches("<circle").count() > 64, "wheels and joints");
 }

@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::scene::{Frame, Ground};
+use trackgen::scene::{Frame, Ground};
 
 /// A coordinate in metres to 0.1 mm, as `{:.4}` writes it but through
 /// integer formatting: the page holds ~10⁵ numbers, and float formatting

@@ -22,7 +22,6 @@ mod nearest;
 mod outputs;
 mod plots;
 mod report;
-mod scene;
 
 use std::error::Error;
 use std::time::Instant;
@@ -39,7 +38,7 @@ use trackgen::vehicles::marder::{self, Marder};
 use cli::{Args, Ground, Start};
 use console::say;
 use outputs::Outputs;
-use scene::Scene;
+use trackgen::scene::{self, Scene};
 
 fn main() {
     let args = Args::parse();

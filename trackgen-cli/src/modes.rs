@@ -10,7 +10,7 @@ use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
 use crate::animation;
 use crate::console::say;
-use crate::scene::{self, Scene};
+use trackgen::scene::{self, Scene};
 
 /// The vehicle at rest where it stands, and the wall time it took.
 pub fn find_rest<S: VehicleDynamics>(system: &mut S) -> Result<(Equilibrium, f64), Box<dyn Error>> {

@@ -10,8 +10,8 @@ use trackgen::simulate::{CsvSink, Results, RideSink, Select, Summary, Tee, Thinn
 use trackgen_arrow::ArrowSink;
 
 use super::nearest::Nearest;
-use super::scene::{Ground, Scene};
 use super::{animation, plots};
+use trackgen::scene::{Ground, Scene};
 
 /// The columns of `<vehicle>.csv`.
 const MAIN_COLUMNS: [&str; 11] = [
@@ -152,7 +152,10 @@ impl Outputs {
             .frames(self.recorders.at_bump.results(), 0.0)
             .first()
         {
-            std::fs::write(self.dir.join("frame.svg"), super::scene::svg(frame, ground))?;
+            std::fs::write(
+                self.dir.join("frame.svg"),
+                trackgen::scene::svg(frame, ground),
+            )?;
             written.push("frame.svg".to_string());
         }
         let span = kept.times().last().unwrap_or(&0.0) - kept.times()[0];

@@ -38,11 +38,13 @@
 //!    dynamics), the state's one layout, and the one linearisation that
 //!    feeds both the exact Jacobian and ROS34PW2's `W`;
 //! 9. drivers: [`simulate`] (runs, results, sinks: CSV, Arrow IPC, running
-//!    summaries; a failed run keeps what it computed) and [`analysis`]
-//!    (the state Jacobian, equilibrium, modes, sensitivities);
+//!    summaries; a failed run keeps what it computed), [`analysis`]
+//!    (the state Jacobian, equilibrium, modes, sensitivities) and
+//!    [`scene`] (the vehicle's geometry at recorded times, drawn as SVG);
 //! 10. [`mobility`]: the mobility engineer's events over any declared
 //!     vehicle (ride over random terrain, half-round, step, gap, ditch,
-//!     barrier, grade), each a limit found by bisection over runs.
+//!     barrier, grade), each a limit found by bracketing over runs, the
+//!     vehicle drawn at each obstacle's limit.
 //!
 //! With the `oracle` feature, `reference` (the textbook route: dense `H`
 //! of the paper's eq. (6) and (11), `Hᵀ M H`, `Hᵀ (Q − M γ)`), the generic
@@ -80,6 +82,7 @@ pub mod vehicle;
 // 9. drivers
 pub mod analysis;
 pub mod mobility;
+pub mod scene;
 pub mod simulate;
 
 /// The kernels and types that generated code names by absolute path, and

@@ -6,10 +6,12 @@
 use super::runs::{
     Footprint, Probe, SpeedTrial, drive, measure_ride, obstacle_course, ramp, search_speed,
 };
-use super::search::{Search, Trial, bisect};
+use super::search::{Limit, Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::contact::Terrain;
 use crate::contact::profile::Obstacle;
+use crate::scene::{self, Ground, Scene};
+use crate::simulate::{Sink, SinkError};
 use crate::vehicle::Vehicle;
 
 /// The half-round event's name in results.
@@ -120,36 +122,113 @@ pub fn cross<V: Vehicle>(
     obstacle: &Obstacle,
     parameter: f64,
 ) -> Result<Crossing, EventError> {
+    attempt::<V>(settings, footprint, event, obstacle, parameter).map(|(crossing, ..)| crossing)
+}
+
+/// [`cross`], with the run's steepest moment and the ground it ran on.
+fn attempt<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    event: &'static str,
+    obstacle: &Obstacle,
+    parameter: f64,
+) -> Result<(Crossing, Steepest, Terrain), EventError> {
     settings.check(event)?;
     let crawl = settings.crawl;
     let ramp_time = crawl / settings.acceleration;
     let at = footprint.front + 0.5 * crawl * ramp_time + 1.0;
     let (profile, far) = obstacle_course(event, footprint, at, obstacle)?;
+    let terrain = Terrain::profile(profile);
     let goal = far + 1.0 - footprint.rear;
-    let mut probe = Probe::new(goal);
+    let mut steepest = Steepest::new(Probe::new(goal));
     // At the crawl, with time for slowing on the obstacle; a stall ends
     // the run sooner.
     let duration = ramp_time + 4.0 * goal / crawl + 10.0;
     drive::<V>(
         settings,
-        Terrain::profile(profile),
+        terrain.clone(),
         ramp(crawl, settings.acceleration),
         duration,
         0.01,
-        &mut probe,
+        &mut steepest,
         (event, parameter, "m"),
     )?;
-    Ok(Crossing {
+    let probe = &steepest.probe;
+    let crossing = Crossing {
         crossed: probe.x >= goal,
         margin: probe.reached - goal,
         stalled: probe.stalled,
         max_pitch: probe.max_pitch,
-    })
+    };
+    Ok((crossing, steepest, terrain))
+}
+
+/// A crossing's [`Probe`], keeping the row where the hull's pitch was
+/// largest: the vehicle's steepest moment on the obstacle, drawn at the
+/// limit.
+struct Steepest {
+    probe: Probe,
+    columns: Vec<String>,
+    pitch: Option<usize>,
+    largest: f64,
+    t: f64,
+    row: Vec<f64>,
+}
+
+impl Steepest {
+    fn new(probe: Probe) -> Steepest {
+        Steepest {
+            probe,
+            columns: Vec::new(),
+            pitch: None,
+            largest: f64::NEG_INFINITY,
+            t: f64::NAN,
+            row: Vec::new(),
+        }
+    }
+
+    /// The vehicle `V` at its steepest moment on `terrain`, drawn (SVG)
+    /// and labelled `label`; `None` before any row.
+    fn picture<V: Vehicle>(&self, terrain: Terrain, label: String) -> Option<String> {
+        let mut frame = Scene::of::<V>().frame_of_row(self.t, &self.columns, &self.row)?;
+        frame.label = label;
+        let ground = Ground {
+            terrain,
+            rut: Vec::new(),
+        };
+        Some(scene::svg(&frame, &ground))
+    }
+}
+
+impl Sink for Steepest {
+    fn begin(&mut self, columns: &[String]) -> Result<(), SinkError> {
+        self.columns = columns.to_vec();
+        self.pitch = columns.iter().position(|c| c == "pitch");
+        self.probe.begin(columns)
+    }
+
+    fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
+        if let Some(pitch) = self.pitch
+            && values[pitch].abs() > self.largest
+        {
+            self.largest = values[pitch].abs();
+            self.t = t;
+            self.row.clear();
+            self.row.extend_from_slice(values);
+        }
+        self.probe.row(t, values)
+    }
+
+    fn finish(&mut self) -> Result<(), SinkError> {
+        self.probe.finish()
+    }
 }
 
 /// The largest obstacle `shape(p)` crossed for `p` in `[start, end]` (m),
 /// by bisection to the settings' `length_tolerance`. Each trial's figure
-/// is [`Crossing::margin`], m.
+/// is [`Crossing::margin`], m. The search's
+/// [`picture`](Search::picture) is the vehicle at its steepest moment
+/// crossing the largest obstacle it crossed.
 pub fn largest_crossed<V: Vehicle>(
     settings: &EventSettings,
     footprint: &Footprint,
@@ -158,14 +237,30 @@ pub fn largest_crossed<V: Vehicle>(
     shape: impl Fn(f64) -> Obstacle,
 ) -> Result<Search, EventError> {
     check_length(event, "the search's start (m)", start, end)?;
-    bisect(start, end, settings.length_tolerance, |p| {
-        let crossing = cross::<V>(settings, footprint, event, &shape(p), p)?;
+    // Bisection's last passing trial is its bracket's passing end.
+    let mut last_crossed: Option<(f64, Steepest, Terrain)> = None;
+    let mut search = bisect(start, end, settings.length_tolerance, |p| {
+        let (crossing, steepest, terrain) = attempt::<V>(settings, footprint, event, &shape(p), p)?;
+        if crossing.crossed {
+            last_crossed = Some((p, steepest, terrain));
+        }
         Ok(Trial {
             parameter: p,
             figure: crossing.margin,
             passed: crossing.crossed,
         })
-    })
+    })?;
+    if let (Limit::Found { passed, .. }, Some((p, steepest, terrain))) =
+        (search.limit, last_crossed)
+        && p == passed
+    {
+        let label = format!(
+            "{event} {p:.3} m, the largest crossed, at its steepest (t = {:.1} s)",
+            steepest.t
+        );
+        search.picture = steepest.picture::<V>(terrain, label);
+    }
+    Ok(search)
 }
 
 /// The highest step (m) climbed from a crawl, searched over

@@ -74,6 +74,9 @@ pub struct Search {
     pub limit: Limit,
     /// The trials, in the order they ran.
     pub trials: Vec<Trial>,
+    /// The vehicle drawn at the limit (SVG), for the events that draw it:
+    /// an obstacle's largest crossed, at its steepest moment.
+    pub picture: Option<String>,
 }
 
 impl Search {
@@ -268,6 +271,7 @@ impl<F: FnMut(f64) -> Result<Trial, EventError>> Runs<F> {
         Search {
             limit,
             trials: self.trials,
+            picture: None,
         }
     }
 }

@@ -163,6 +163,10 @@ pub trait VehicleDynamics: Simulated + Send + Sized + sealed::Build {
     /// The parts pinned to the chassis, as declared.
     fn parts() -> &'static [ChassisPart];
 
+    /// The hull's outline in the chassis frame, m, as declared (`hull:
+    /// [(x, y), …]`); empty for a vehicle that declares none.
+    fn hull() -> &'static [[f64; 2]];
+
     /// The track's description (masses and joints).
     fn track_description() -> TreeDescription;
 

@@ -637,6 +637,10 @@ where
         C::PARTS
     }
 
+    fn hull() -> &'static [[f64; 2]] {
+        C::HULL
+    }
+
     fn track_description() -> TreeDescription {
         T::default().description()
     }

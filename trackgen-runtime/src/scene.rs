@@ -1,15 +1,22 @@
-//! The vehicle's geometry at recorded times, for pictures.
+//! The vehicle's geometry at recorded times, for pictures: its track's
+//! joints, wheels, arms and hull from the track's and the chassis'
+//! coordinates ([`Scene`]), the ground under it ([`Ground`]), and a still
+//! picture of both as SVG ([`svg`]). The main job's `frame.svg` and
+//! animation and the mobility report's vehicles at their limits are
+//! drawn from it.
 
-use trackgen::contact::Terrain;
-use trackgen::multibody::PartKind;
-use trackgen::nalgebra::Vector2;
-use trackgen::planar::rotate;
-use trackgen::simulate::Results;
-use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use nalgebra::Vector2;
+
+use crate::contact::Terrain;
+use crate::multibody::PartKind;
+use crate::planar::rotate;
+use crate::simulate::Results;
+use crate::vehicle::{Vehicle, VehicleDynamics};
 
 /// One picture's worth of geometry.
 #[derive(Debug, Clone)]
 pub struct Frame {
+    /// The time, s.
     pub t: f64,
     /// Track joints, in order round the loop.
     pub joints: Vec<(f64, f64)>,
@@ -19,6 +26,8 @@ pub struct Frame {
     pub arms: Vec<((f64, f64), (f64, f64))>,
     /// Chassis centroid and pitch.
     pub chassis: (f64, f64, f64),
+    /// The hull's outline, m: the declared one (`hull: [...]`), or a side
+    /// view drawn over the running gear for a vehicle that declares none.
     pub hull: Vec<(f64, f64)>,
     /// What the picture says in its corner (`t = 1.00 s` when empty).
     pub label: String,
@@ -36,11 +45,17 @@ pub struct Scene {
 
 impl Scene {
     /// The scene of a vehicle declared with `model!`: its wheels, arms
-    /// and track from the compiled models, and a side view of a hull drawn
-    /// over its running gear.
+    /// and track from the compiled models, and its declared hull (or, for
+    /// a vehicle that declares none, a side view of one drawn over its
+    /// running gear).
     pub fn of<V: Vehicle>() -> Scene {
         type S<V> = <V as Vehicle>::System;
-        let hull = hull::<V>();
+        let declared = S::<V>::hull();
+        let hull: Vec<Vector2<f64>> = if declared.is_empty() {
+            hull::<V>()
+        } else {
+            declared.iter().map(|&[x, y]| Vector2::new(x, y)).collect()
+        };
         let joints = S::<V>::track_description()
             .joints()
             .expect("a track has joints");
@@ -109,6 +124,17 @@ impl Scene {
         (self.frame)(t, qt, qc)
     }
 
+    /// The frame at time `t` of a recorded `row` whose columns are
+    /// `columns` (every recorded one, or at least
+    /// [`Scene::columns`]'); `None` if they are not there.
+    pub fn frame_of_row(&self, t: f64, columns: &[String], row: &[f64]) -> Option<Frame> {
+        let start = |prefix: &str| columns.iter().position(|c| *c == format!("{prefix}.x"));
+        let (track, chassis) = (start("track")?, start("chassis")?);
+        let qt = row.get(track..track + self.dofs.0)?;
+        let qc = row.get(chassis..chassis + self.dofs.1)?;
+        Some((self.frame)(t, qt, qc))
+    }
+
     /// Frames every `dt` (s) of `results` (which hold [`columns`](Self::columns)).
     pub fn frames(&self, results: &Results, dt: f64) -> Vec<Frame> {
         let start = |prefix: &str| {
@@ -138,8 +164,8 @@ impl Scene {
     }
 }
 
-/// A side view of a hull over the running gear, in the chassis' centroid
-/// frame: from behind the rearmost wheel to past the foremost, its belly
+/// A side view of a hull over the running gear (for a vehicle that
+/// declares none), in the chassis' centroid frame: from behind the rearmost wheel to past the foremost, its belly
 /// clear of the track's upper run, a sloped glacis at the front.
 fn hull<V: Vehicle>() -> Vec<Vector2<f64>> {
     type S<V> = <V as Vehicle>::System;
@@ -173,7 +199,9 @@ fn hull<V: Vehicle>() -> Vec<Vector2<f64>> {
 /// The ground a run drove on: its undisturbed profile and, on soft soil,
 /// the rut the track left (plastic sinkage against x, in order of x).
 pub struct Ground {
+    /// The undisturbed ground.
     pub terrain: Terrain,
+    /// The rut, `(x, depth)` in m, in order of x (empty on rigid ground).
     pub rut: Vec<(f64, f64)>,
 }
 
