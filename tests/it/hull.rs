@@ -22,21 +22,11 @@ use trackgen::simulate::{EnergyBalance, Output, simulate};
 use trackgen::vehicle::{Vehicle, VehicleDynamics, speed_ramp};
 use trackgen::vehicles::m113::M113;
 
-/// Where the wall's face is, m (the chassis centroid starts at 0; the
-/// hull's nose at about 2.46 m).
-const WALL: f64 = 4.0;
+use crate::support::vehicle::wall;
 
-fn wall(height: f64) -> Terrain {
-    let course = Course::starting_at(-20.0, 0.0)
-        .unwrap()
-        .flat(20.0 + WALL)
-        .unwrap()
-        .step(height)
-        .unwrap()
-        .flat(10.0)
-        .unwrap();
-    Terrain::profile(course.profile().unwrap())
-}
+/// Where the wall's face is, m (the chassis centroid starts at 0; the
+/// hull's nose at about 2.46 m): [`wall`]'s.
+const WALL: f64 = 4.0;
 
 #[test]
 fn m113_stops_at_a_wall_with_its_hull() {

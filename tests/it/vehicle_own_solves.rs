@@ -150,6 +150,21 @@ fn w_near_the_jacobian(
     assert!(worst.0 <= bound * largest, "{label}: W off the Jacobian");
 }
 
+/// The vehicle's exact Jacobian at `(t, y)` (`OdeSystem::jacobian`, which
+/// `tests/it/vehicle_jacobian.rs` holds to differences), every column.
+fn exact_jacobian(system: &mut impl OdeSystem, t: f64, y: &[f64]) -> DMatrix<f64> {
+    let n = y.len();
+    let mut slope = vec![0.0; n];
+    system.derivative(t, y, &mut slope).expect("evaluates");
+    let mut exact = vec![0.0; n * n];
+    assert!(
+        system
+            .jacobian(t, y, &slope, &mut exact)
+            .expect("linearises")
+    );
+    DMatrix::from_column_slice(n, n, &exact)
+}
+
 /// The `count` stiffest eigenvalues of `w` and `j` (square, over the same
 /// states) agree within 0.5 %.
 fn same_stiffest(label: &str, w: &DMatrix<f64>, j: &DMatrix<f64>, count: usize) {
@@ -209,19 +224,8 @@ fn on_soil_w_is_the_jacobian_but_the_inertia_s_share() {
         1.5,
         1e-4,
     );
-    let n = y.len();
     let states: Vec<usize> = system.layout().dynamic().collect();
-    let mut slope = vec![0.0; n];
-    system
-        .derivative(t, y.as_slice(), &mut slope)
-        .expect("evaluates");
-    let mut exact = vec![0.0; n * n];
-    assert!(
-        system
-            .jacobian(t, y.as_slice(), &slope, &mut exact)
-            .expect("linearises")
-    );
-    let j = DMatrix::from_column_slice(n, n, &exact).select_columns(&states);
+    let j = exact_jacobian(&mut system, t, y.as_slice()).select_columns(&states);
     let w = own_matrix(&mut system, t, y.as_slice(), 1e-9);
     w_near_the_jacobian("M113 on dry sand", &w, &j, &states, 2e-3);
     let w = step_matrix(&mut system, t, y.as_slice(), 1e-3)
@@ -240,19 +244,8 @@ fn on_soil_w_is_the_jacobian_but_the_inertia_s_share() {
 fn leaning_on_a_wall_w_holds_the_hull() {
     let (mut system, t, y, hull) = support::vehicle::m113_leaning_on_a_wall();
     assert!(hull > 1e3, "the hull bears on the wall: {hull} N");
-    let n = y.len();
     let states: Vec<usize> = system.layout().dynamic().collect();
-    let mut slope = vec![0.0; n];
-    system
-        .derivative(t, y.as_slice(), &mut slope)
-        .expect("evaluates");
-    let mut exact = vec![0.0; n * n];
-    assert!(
-        system
-            .jacobian(t, y.as_slice(), &slope, &mut exact)
-            .expect("linearises")
-    );
-    let j = DMatrix::from_column_slice(n, n, &exact).select_columns(&states);
+    let j = exact_jacobian(&mut system, t, y.as_slice()).select_columns(&states);
     let w = own_matrix(&mut system, t, y.as_slice(), 1e-9);
     w_near_the_jacobian("M113 on a wall", &w, &j, &states, 2e-3);
     // The frame's accelerations by its pose (x, y, θ), where the hull

@@ -155,7 +155,8 @@ pub fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
 }
 
 /// Flat ground up to a wall `height` m tall whose face is at x = 4 m (the
-/// M113's nose starts at about 2.46 m), flat again on top.
+/// M113's nose starts at about 2.46 m), flat again on top
+/// (`tests/it/hull.rs`, the Jacobian's and `W`'s tests on the hull).
 pub fn wall(height: f64) -> Terrain {
     let course = trackgen::contact::profile::Course::starting_at(-20.0, 0.0)
         .unwrap()
