@@ -12,7 +12,8 @@
 //! `<event>.csv` (one row per result: the parameter, the limit, its unit
 //! and the runs it took), `trials.csv` (every run), `summary.svg` (the
 //! curves: ride-limiting speed against roughness, half-round speed against
-//! height, speed against grade), `<event>-limit.svg` (the vehicle at its
+//! height, speed against grade, drawbar pull against slip on each soil),
+//! `<event>-limit.svg` (the vehicle at its
 //! steepest on the largest step, gap, ditch and barrier it crossed) and
 //! `report.html` (the tables, the curves and the pictures in one file). It prints a summary table; with `--json`, one
 //! JSON object per result per line (`event`, `parameter`, `quantity`,
@@ -687,9 +688,10 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
     ];
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1200, 380)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (1600, 380)).into_drawing_area();
         root.fill(&WHITE)?;
-        let areas = root.split_evenly((1, 3));
+        let areas = root.split_evenly((1, 4));
+        drawbar_panel(rows, &areas[3])?;
         for ((event, x_label, y_label, scale), area) in panels.iter().zip(areas.iter()) {
             let points: Vec<(f64, f64, &str)> = rows
                 .iter()
@@ -727,6 +729,72 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
         root.present()?;
     }
     Ok(svg)
+}
+
+/// The soil event's curves: drawbar pull over weight against slip, a line
+/// per soil (from rest: no pull, no slip), the points the drive held with
+/// a slip below 1.
+fn drawbar_panel<DB: DrawingBackend>(
+    rows: &[Row],
+    area: &DrawingArea<DB, plotters::coord::Shift>,
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let mut soils: Vec<(&str, Vec<(f64, f64)>)> = Vec::new();
+    for r in rows
+        .iter()
+        .filter(|r| r.event == "soil" && r.quantity == "slip")
+    {
+        let Some((soil, pull, _)) = r.parameter else {
+            continue;
+        };
+        if !r.value.is_finite() {
+            continue;
+        }
+        match soils.iter_mut().find(|(name, _)| *name == soil) {
+            Some((_, points)) => points.push((r.value, pull)),
+            None => soils.push((soil, vec![(0.0, 0.0), (r.value, pull)])),
+        }
+    }
+    let x_max = soils
+        .iter()
+        .flat_map(|(_, p)| p.iter().map(|q| q.0))
+        .fold(1e-3, f64::max)
+        * 1.1;
+    let y_max = soils
+        .iter()
+        .flat_map(|(_, p)| p.iter().map(|q| q.1))
+        .fold(1e-3, f64::max)
+        * 1.2;
+    let mut chart = ChartBuilder::on(area)
+        .caption("soil", ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(48)
+        .build_cartesian_2d(0.0..x_max, 0.0..y_max)?;
+    chart
+        .configure_mesh()
+        .x_desc("slip")
+        .y_desc("drawbar pull / weight")
+        .draw()?;
+    const COLOURS: [RGBColor; 4] = [BLUE, RED, GREEN, MAGENTA];
+    for ((soil, points), &colour) in soils.iter().zip(COLOURS.iter().cycle()) {
+        chart
+            .draw_series(LineSeries::new(points.iter().copied(), colour))?
+            .label(*soil)
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 16, y)], colour));
+        chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+    }
+    if !soils.is_empty() {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE)
+            .border_style(BLACK)
+            .position(SeriesLabelPosition::LowerRight)
+            .draw()?;
+    }
+    Ok(())
 }
 
 fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
