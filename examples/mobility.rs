@@ -688,9 +688,9 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
     ];
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1600, 380)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (1200, 760)).into_drawing_area();
         root.fill(&WHITE)?;
-        let areas = root.split_evenly((1, 4));
+        let areas = root.split_evenly((2, 2));
         drawbar_panel(rows, &areas[3])?;
         for ((event, x_label, y_label, scale), area) in panels.iter().zip(areas.iter()) {
             let points: Vec<(f64, f64, &str)> = rows
