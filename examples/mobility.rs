@@ -686,13 +686,22 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
         ),
         ("grade", "grade, %", "speed at full power, m/s", 100.0),
     ];
+    // A panel per event of the set that has a curve, two to a row.
+    let ran = |event: &str| rows.iter().any(|r| r.event == event);
+    let panels: Vec<_> = panels.iter().filter(|p| ran(p.0)).collect();
+    let soil = ran("soil");
+    let count = panels.len() + usize::from(soil);
+    let (rows_of, columns) = (count.div_ceil(2).max(1), count.clamp(1, 2));
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (1200, 760)).into_drawing_area();
+        let size = (600 * columns as u32, 380 * rows_of as u32);
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
         root.fill(&WHITE)?;
-        let areas = root.split_evenly((2, 2));
-        drawbar_panel(rows, &areas[3])?;
-        for ((event, x_label, y_label, scale), area) in panels.iter().zip(areas.iter()) {
+        let areas = root.split_evenly((rows_of, columns));
+        if soil {
+            drawbar_panel(rows, &areas[panels.len()])?;
+        }
+        for (&(event, x_label, y_label, scale), area) in panels.iter().zip(areas.iter()) {
             let points: Vec<(f64, f64, &str)> = rows
                 .iter()
                 .filter(|r| r.event == *event)
