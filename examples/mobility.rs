@@ -713,17 +713,7 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
                 .collect();
             let x_max = points.iter().map(|p| p.0).fold(1e-9, f64::max) * 1.1;
             let y_max = points.iter().map(|p| p.1).fold(1e-9, f64::max) * 1.2;
-            let mut chart = ChartBuilder::on(area)
-                .caption(*event, ("sans-serif", 18))
-                .margin(12)
-                .x_label_area_size(36)
-                .y_label_area_size(48)
-                .build_cartesian_2d(0.0..x_max, 0.0..y_max)?;
-            chart
-                .configure_mesh()
-                .x_desc(*x_label)
-                .y_desc(*y_label)
-                .draw()?;
+            let mut chart = panel(area, event, (x_label, x_max), (y_label, y_max))?;
             chart.draw_series(LineSeries::new(points.iter().map(|p| (p.0, p.1)), &BLUE))?;
             // A limit beyond the search's range is drawn hollow.
             chart.draw_series(points.iter().map(|p| {
@@ -738,6 +728,38 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
         root.present()?;
     }
     Ok(svg)
+}
+
+/// One panel of the curves: `caption` over axes from 0 to `x_max` and
+/// `y_max`, labelled, its mesh drawn.
+fn panel<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, plotters::coord::Shift>,
+    caption: &str,
+    (x_label, x_max): (&str, f64),
+    (y_label, y_max): (&str, f64),
+) -> Result<
+    ChartContext<
+        'a,
+        DB,
+        Cartesian2d<plotters::coord::types::RangedCoordf64, plotters::coord::types::RangedCoordf64>,
+    >,
+    Box<dyn std::error::Error>,
+>
+where
+    DB::ErrorType: 'static,
+{
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", 18))
+        .margin(12)
+        .x_label_area_size(36)
+        .y_label_area_size(48)
+        .build_cartesian_2d(0.0..x_max, 0.0..y_max)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(y_label)
+        .draw()?;
+    Ok(chart)
 }
 
 /// The soil event's curves: drawbar pull over weight against slip, a line
@@ -776,17 +798,12 @@ where
         .flat_map(|(_, p)| p.iter().map(|q| q.1))
         .fold(1e-3, f64::max)
         * 1.2;
-    let mut chart = ChartBuilder::on(area)
-        .caption("soil", ("sans-serif", 18))
-        .margin(12)
-        .x_label_area_size(36)
-        .y_label_area_size(48)
-        .build_cartesian_2d(0.0..x_max, 0.0..y_max)?;
-    chart
-        .configure_mesh()
-        .x_desc("slip")
-        .y_desc("drawbar pull / weight")
-        .draw()?;
+    let mut chart = panel(
+        area,
+        "soil",
+        ("slip", x_max),
+        ("drawbar pull / weight", y_max),
+    )?;
     const COLOURS: [RGBColor; 4] = [BLUE, RED, GREEN, MAGENTA];
     for ((soil, points), &colour) in soils.iter().zip(COLOURS.iter().cycle()) {
         chart

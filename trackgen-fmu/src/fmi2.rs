@@ -260,7 +260,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *mut f64,
             ) -> c_int {
-                unsafe { $crate::fmi3::get_f64::<$v>(instance, (refs, n), (values, n)) as c_int }
+                unsafe { $crate::fmi3::get::<$v, f64>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -270,7 +270,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *const f64,
             ) -> c_int {
-                unsafe { $crate::fmi3::set_f64::<$v>(instance, (refs, n), (values, n)) as c_int }
+                unsafe { $crate::fmi3::set::<$v, f64>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -280,7 +280,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *mut i32,
             ) -> c_int {
-                unsafe { $crate::fmi3::get_i32::<$v>(instance, (refs, n), (values, n)) as c_int }
+                unsafe { $crate::fmi3::get::<$v, i32>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -290,7 +290,7 @@ macro_rules! __export_fmi2 {
                 n: usize,
                 values: *const i32,
             ) -> c_int {
-                unsafe { $crate::fmi3::set_i32::<$v>(instance, (refs, n), (values, n)) as c_int }
+                unsafe { $crate::fmi3::set::<$v, i32>(instance, (refs, n), (values, n)) as c_int }
             }
 
             #[unsafe(no_mangle)]

@@ -9,6 +9,7 @@ use trackgen::vehicle::{Powertrain, Vehicle};
 
 use crate::component::{self, Component, Fmi3Logger, Logger, Status};
 use crate::error::FmuError;
+use crate::instance::Instance;
 
 /// `fmi3GetVersion`.
 pub const VERSION: &std::ffi::CStr = c"3.0";
@@ -164,14 +165,67 @@ pub unsafe fn set_string<V: Vehicle>(
     }
 }
 
-/// `fmi3GetFloat64` (and `fmi2GetReal`, with `n_values = n_refs`).
+/// A value type the FMI getters and setters move: `fmi3Float64` (`f64`,
+/// FMI 2.0's `fmi2Real`) or `fmi3Int32` (`i32`, `fmi2Integer`), each
+/// read and written by the instance's own method.
+pub trait Value: Copy {
+    /// The instance's values of `refs` into `out`.
+    fn get<V: Vehicle>(
+        instance: &Instance<V>,
+        refs: &[u32],
+        out: &mut [Self],
+    ) -> Result<(), FmuError>;
+    /// Sets the instance's `refs` to `values`.
+    fn set<V: Vehicle>(
+        instance: &mut Instance<V>,
+        refs: &[u32],
+        values: &[Self],
+    ) -> Result<(), FmuError>;
+}
+
+impl Value for f64 {
+    fn get<V: Vehicle>(
+        instance: &Instance<V>,
+        refs: &[u32],
+        out: &mut [f64],
+    ) -> Result<(), FmuError> {
+        instance.get_f64(refs, out)
+    }
+    fn set<V: Vehicle>(
+        instance: &mut Instance<V>,
+        refs: &[u32],
+        values: &[f64],
+    ) -> Result<(), FmuError> {
+        instance.set_f64(refs, values)
+    }
+}
+
+impl Value for i32 {
+    fn get<V: Vehicle>(
+        instance: &Instance<V>,
+        refs: &[u32],
+        out: &mut [i32],
+    ) -> Result<(), FmuError> {
+        instance.get_i32(refs, out)
+    }
+    fn set<V: Vehicle>(
+        instance: &mut Instance<V>,
+        refs: &[u32],
+        values: &[i32],
+    ) -> Result<(), FmuError> {
+        instance.set_i32(refs, values)
+    }
+}
+
+/// `fmi3GetFloat64` and `fmi3GetInt32` (and FMI 2.0's `fmi2GetReal` and
+/// `fmi2GetInteger`, with `n_values = n_refs`).
 ///
 /// # Safety
 /// As [`get_string`].
-pub unsafe fn get_f64<V: Vehicle>(
+pub unsafe fn get<V: Vehicle, T: Value>(
     instance: *mut c_void,
     (refs, n_refs): (*const u32, usize),
-    (values, n_values): (*mut f64, usize),
+    (values, n_values): (*mut T, usize),
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
@@ -181,19 +235,20 @@ pub unsafe fn get_f64<V: Vehicle>(
                 component::slice(refs, n_refs)?,
                 component::slice_mut(values, n_values)?,
             );
-            c.instance.get_f64(refs, values).map(|()| Status::Ok)
+            T::get(&c.instance, refs, values).map(|()| Status::Ok)
         })
     }
 }
 
-/// `fmi3SetFloat64` (and `fmi2SetReal`).
+/// `fmi3SetFloat64` and `fmi3SetInt32` (and `fmi2SetReal`,
+/// `fmi2SetInteger`).
 ///
 /// # Safety
 /// As [`get_string`].
-pub unsafe fn set_f64<V: Vehicle>(
+pub unsafe fn set<V: Vehicle, T: Value>(
     instance: *mut c_void,
     (refs, n_refs): (*const u32, usize),
-    (values, n_values): (*const f64, usize),
+    (values, n_values): (*const T, usize),
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
@@ -203,51 +258,7 @@ pub unsafe fn set_f64<V: Vehicle>(
                 component::slice(refs, n_refs)?,
                 component::slice(values, n_values)?,
             );
-            c.instance.set_f64(refs, values).map(|()| Status::Ok)
-        })
-    }
-}
-
-/// `fmi3GetInt32` (and `fmi2GetInteger`).
-///
-/// # Safety
-/// As [`get_string`].
-pub unsafe fn get_i32<V: Vehicle>(
-    instance: *mut c_void,
-    (refs, n_refs): (*const u32, usize),
-    (values, n_values): (*mut i32, usize),
-) -> Status {
-    // SAFETY: by the caller's contract.
-    unsafe {
-        component::with::<V>(instance, |c| {
-            same_length(n_refs, n_values)?;
-            let (refs, values) = (
-                component::slice(refs, n_refs)?,
-                component::slice_mut(values, n_values)?,
-            );
-            c.instance.get_i32(refs, values).map(|()| Status::Ok)
-        })
-    }
-}
-
-/// `fmi3SetInt32` (and `fmi2SetInteger`).
-///
-/// # Safety
-/// As [`get_string`].
-pub unsafe fn set_i32<V: Vehicle>(
-    instance: *mut c_void,
-    (refs, n_refs): (*const u32, usize),
-    (values, n_values): (*const i32, usize),
-) -> Status {
-    // SAFETY: by the caller's contract.
-    unsafe {
-        component::with::<V>(instance, |c| {
-            same_length(n_refs, n_values)?;
-            let (refs, values) = (
-                component::slice(refs, n_refs)?,
-                component::slice(values, n_values)?,
-            );
-            c.instance.set_i32(refs, values).map(|()| Status::Ok)
+            T::set(&mut c.instance, refs, values).map(|()| Status::Ok)
         })
     }
 }
@@ -415,7 +426,7 @@ macro_rules! __export_fmi3 {
                 values: *mut f64,
                 n_values: usize,
             ) -> c_int {
-                unsafe { fmi3::get_f64::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
+                unsafe { fmi3::get::<$v, f64>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -426,7 +437,7 @@ macro_rules! __export_fmi3 {
                 values: *const f64,
                 n_values: usize,
             ) -> c_int {
-                unsafe { fmi3::set_f64::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
+                unsafe { fmi3::set::<$v, f64>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -437,7 +448,7 @@ macro_rules! __export_fmi3 {
                 values: *mut i32,
                 n_values: usize,
             ) -> c_int {
-                unsafe { fmi3::get_i32::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
+                unsafe { fmi3::get::<$v, i32>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]
@@ -448,7 +459,7 @@ macro_rules! __export_fmi3 {
                 values: *const i32,
                 n_values: usize,
             ) -> c_int {
-                unsafe { fmi3::set_i32::<$v>(instance, (refs, n_refs), (values, n_values)) as c_int }
+                unsafe { fmi3::set::<$v, i32>(instance, (refs, n_refs), (values, n_values)) as c_int }
             }
 
             #[unsafe(no_mangle)]

@@ -110,13 +110,21 @@ impl Scene {
     /// after it), out of all the recorded ones; `None` if they are not
     /// there.
     pub fn columns(&self, all: &[String]) -> Option<Vec<String>> {
+        let (track, chassis) = self.starts(all)?;
+        let mut names = all[track].to_vec();
+        names.extend_from_slice(&all[chassis]);
+        Some(names)
+    }
+
+    /// Where the track's and the chassis' coordinates are among `all`
+    /// columns (`track.x` and the ones after it, `chassis.x` and the ones
+    /// after it); `None` if they are not all there.
+    fn starts(&self, all: &[String]) -> Option<(std::ops::Range<usize>, std::ops::Range<usize>)> {
         let block = |prefix: &str, n: usize| {
             let start = all.iter().position(|c| *c == format!("{prefix}.x"))?;
-            all.get(start..start + n).map(<[String]>::to_vec)
+            (start + n <= all.len()).then_some(start..start + n)
         };
-        let mut names = block("track", self.dofs.0)?;
-        names.extend(block("chassis", self.dofs.1)?);
-        Some(names)
+        Some((block("track", self.dofs.0)?, block("chassis", self.dofs.1)?))
     }
 
     /// The frame at the track's coordinates `qt` and the chassis' `qc`.
@@ -128,23 +136,13 @@ impl Scene {
     /// `columns` (every recorded one, or at least
     /// [`Scene::columns`]'); `None` if they are not there.
     pub fn frame_of_row(&self, t: f64, columns: &[String], row: &[f64]) -> Option<Frame> {
-        let start = |prefix: &str| columns.iter().position(|c| *c == format!("{prefix}.x"));
-        let (track, chassis) = (start("track")?, start("chassis")?);
-        let qt = row.get(track..track + self.dofs.0)?;
-        let qc = row.get(chassis..chassis + self.dofs.1)?;
-        Some((self.frame)(t, qt, qc))
+        let (track, chassis) = self.starts(columns)?;
+        Some((self.frame)(t, row.get(track)?, row.get(chassis)?))
     }
 
     /// Frames every `dt` (s) of `results` (which hold [`columns`](Self::columns)).
     pub fn frames(&self, results: &Results, dt: f64) -> Vec<Frame> {
-        let start = |prefix: &str| {
-            results
-                .columns()
-                .iter()
-                .position(|c| c == &format!("{prefix}.x"))
-                .expect("coordinates")
-        };
-        let (track, chassis) = (start("track"), start("chassis"));
+        let (track, chassis) = self.starts(results.columns()).expect("coordinates");
         let mut out = Vec::new();
         let mut next = 0.0;
         for i in 0..results.len() {
@@ -156,8 +154,8 @@ impl Scene {
             let values = &sample.values;
             out.push((self.frame)(
                 sample.t,
-                &values[track..track + self.dofs.0],
-                &values[chassis..chassis + self.dofs.1],
+                &values[track.clone()],
+                &values[chassis.clone()],
             ));
         }
         out

@@ -100,13 +100,10 @@ pub fn bisect(
     trial: impl FnMut(f64) -> Result<Trial, EventError>,
 ) -> Result<Search, EventError> {
     let mut runs = Runs::new(trial);
-    if !runs.passes(start)? {
-        return Ok(runs.search(Limit::Before { start }));
-    }
-    if runs.passes(end)? {
-        return Ok(runs.search(Limit::Beyond { end }));
-    }
-    let limit = runs.narrow(start, end, tolerance)?;
+    let limit = match runs.bracket(start, end)? {
+        Ok(_) => runs.narrow(start, end, tolerance)?,
+        Err(outside) => outside,
+    };
     Ok(runs.search(limit))
 }
 
@@ -130,15 +127,10 @@ pub fn interpolate(
     trial: impl FnMut(f64) -> Result<Trial, EventError>,
 ) -> Result<Search, EventError> {
     let mut runs = Runs::new(trial);
-    let first = runs.run(start)?;
-    if !first.passed {
-        return Ok(runs.search(Limit::Before { start }));
-    }
-    let last = runs.run(end)?;
-    if last.passed {
-        return Ok(runs.search(Limit::Beyond { end }));
-    }
-    let limit = runs.narrow_itp(first, last, tolerance, limit)?;
+    let limit = match runs.bracket(start, end)? {
+        Ok((first, last)) => runs.narrow_itp(first, last, tolerance, limit)?,
+        Err(outside) => outside,
+    };
     Ok(runs.search(limit))
 }
 
@@ -159,6 +151,25 @@ impl<F: FnMut(f64) -> Result<Trial, EventError>> Runs<F> {
     /// Runs a trial at `p`: whether it passed.
     fn passes(&mut self, p: f64) -> Result<bool, EventError> {
         Ok(self.run(p)?.passed)
+    }
+
+    /// Runs `start`, then (if it passed) `end`: the two trials, a bracket
+    /// of the limit; or, as `Err`, the limit outside it (`start` failed:
+    /// before the range; `end` passed: beyond it).
+    fn bracket(
+        &mut self,
+        start: f64,
+        end: f64,
+    ) -> Result<Result<(Trial, Trial), Limit>, EventError> {
+        let first = self.run(start)?;
+        if !first.passed {
+            return Ok(Err(Limit::Before { start }));
+        }
+        let last = self.run(end)?;
+        if last.passed {
+            return Ok(Err(Limit::Beyond { end }));
+        }
+        Ok(Ok((first, last)))
     }
 
     /// Runs a trial at `p`, kept.

@@ -219,37 +219,7 @@ impl Drive {
         state: f64,
         cap: TorqueCap,
     ) -> DriveSlopes {
-        let demand = self.demand(t);
-        let direction = self.direction(demand, radius);
-        match self {
-            Drive::Free => DriveSlopes::default(),
-            Drive::Torque(_) => DriveSlopes {
-                torque: [cap.apply(demand, omega, direction).1.unwrap_or(0.0), 0.0],
-                rate: [0.0, 0.0],
-            },
-            Drive::Speed {
-                proportional,
-                integral,
-                max_torque,
-                ..
-            } => {
-                let error = -demand / radius - omega;
-                let wanted = proportional * error + integral * state;
-                let own_limited = wanted.abs() > *max_torque;
-                let (torque, capped) = cap.apply(within(wanted, *max_torque), omega, direction);
-                let limited = torque != wanted;
-                // As `respond` holds the integral.
-                let held = limited && wanted.signum() == error.signum();
-                DriveSlopes {
-                    torque: match capped {
-                        Some(slope) => [slope, 0.0],
-                        None if own_limited => [0.0, 0.0],
-                        None => [-proportional, *integral],
-                    },
-                    rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
-                }
-            }
-        }
+        self.law(self.demand(t), omega, radius, state, cap).2
     }
 
     /// How much of the powertrain's cap the drive's `torque` (N m) uses at
@@ -294,12 +264,33 @@ impl Drive {
         state: f64,
         cap: TorqueCap,
     ) -> (f64, f64) {
+        let (torque, rate, _) = self.law(demand, omega, radius, state, cap);
+        (torque, rate)
+    }
+
+    /// The drive's law at `demand` (the target speed or the scheduled
+    /// torque), in one place: the torque (N m), the controller integral's
+    /// rate (rad/s, held at 0 while the torque is limited the way the
+    /// error pushes: no wind-up), and their slopes ([`slopes`](Self::slopes)).
+    fn law(
+        &self,
+        demand: f64,
+        omega: f64,
+        radius: f64,
+        state: f64,
+        cap: TorqueCap,
+    ) -> (f64, f64, DriveSlopes) {
+        let direction = self.direction(demand, radius);
         match self {
-            Drive::Free => (0.0, 0.0),
-            Drive::Torque(_) => (
-                cap.apply(demand, omega, self.direction(demand, radius)).0,
-                0.0,
-            ),
+            Drive::Free => (0.0, 0.0, DriveSlopes::default()),
+            Drive::Torque(_) => {
+                let (torque, capped) = cap.apply(demand, omega, direction);
+                let slopes = DriveSlopes {
+                    torque: [capped.unwrap_or(0.0), 0.0],
+                    rate: [0.0, 0.0],
+                };
+                (torque, 0.0, slopes)
+            }
             Drive::Speed {
                 proportional,
                 integral,
@@ -308,10 +299,18 @@ impl Drive {
             } => {
                 let error = -demand / radius - omega;
                 let wanted = proportional * error + integral * state;
-                let torque = within(wanted, *max_torque);
-                let (torque, _) = cap.apply(torque, omega, self.direction(demand, radius));
-                let saturated = wanted != torque && wanted.signum() == error.signum();
-                (torque, if saturated { 0.0 } else { error })
+                let own_limited = wanted.abs() > *max_torque;
+                let (torque, capped) = cap.apply(within(wanted, *max_torque), omega, direction);
+                let held = torque != wanted && wanted.signum() == error.signum();
+                let slopes = DriveSlopes {
+                    torque: match capped {
+                        Some(slope) => [slope, 0.0],
+                        None if own_limited => [0.0, 0.0],
+                        None => [-proportional, *integral],
+                    },
+                    rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
+                };
+                (torque, if held { 0.0 } else { error }, slopes)
             }
         }
     }

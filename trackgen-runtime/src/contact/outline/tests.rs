@@ -121,35 +121,48 @@ fn the_force_is_the_gradient_of_the_potential() {
     }
 }
 
+/// `tangent`'s depth and gradient rows against central differences
+/// (step 1e-7, to 1e-7) of the contact `contact_at` detects with the body
+/// at each pose `(x, y, θ)` about `pose`; the contact point is the corner,
+/// fixed.
+fn tangent_against_differences(
+    contact_at: impl Fn([f64; 3]) -> Contact,
+    pose: [f64; 3],
+    tangent: &GeometryTangent,
+) {
+    let h = 1e-7;
+    for k in 0..3 {
+        let (mut plus, mut minus) = (pose, pose);
+        plus[k] += h;
+        minus[k] -= h;
+        let (cp, cm) = (contact_at(plus), contact_at(minus));
+        let depth = (cp.depth - cm.depth) / (2.0 * h);
+        assert!(
+            (tangent.depth[k] - depth).abs() < 1e-7,
+            "∂δ/∂{k}: {} vs {depth}",
+            tangent.depth[k]
+        );
+        let g = (cp.gradient - cm.gradient) / (2.0 * h);
+        for (row, diff) in [g.x, g.y].into_iter().enumerate() {
+            assert!(
+                (tangent.gradient[(row, k)] - diff).abs() < 1e-7,
+                "∂g{row}/∂{k}: {} vs {diff}",
+                tangent.gradient[(row, k)]
+            );
+        }
+        assert_eq!((cp.point - cm.point).norm(), 0.0);
+        assert_eq!(tangent.point.column(k).norm(), 0.0);
+    }
+}
+
 /// [`tangent`]'s depth and gradient rows against central differences of
 /// the detected contact over the body's pose.
 #[test]
 fn tangent_matches_differences() {
     let terrain = step();
-    let (x, y, a) = (1.1, 0.38, 0.2);
-    let c = corner_contacts(&terrain, &body(x, y, a))[0];
-    let t = tangent(&c);
-    let h = 1e-7;
-    for k in 0..3 {
-        let mut plus = [x, y, a];
-        let mut minus = [x, y, a];
-        plus[k] += h;
-        minus[k] -= h;
-        let cp = corner_contacts(&terrain, &body(plus[0], plus[1], plus[2]))[0];
-        let cm = corner_contacts(&terrain, &body(minus[0], minus[1], minus[2]))[0];
-        let depth = (cp.depth - cm.depth) / (2.0 * h);
-        assert!(
-            (t.depth[k] - depth).abs() < 1e-7,
-            "∂δ/∂{k}: {} vs {depth}",
-            t.depth[k]
-        );
-        let g = (cp.gradient - cm.gradient) / (2.0 * h);
-        assert!((t.gradient[(0, k)] - g.x).abs() < 1e-7, "∂gx/∂{k}");
-        assert!((t.gradient[(1, k)] - g.y).abs() < 1e-7, "∂gy/∂{k}");
-        // The contact point is the corner: fixed.
-        assert_eq!((cp.point - cm.point).norm(), 0.0);
-        assert_eq!(t.point.column(k).norm(), 0.0);
-    }
+    let contact_at = |p: [f64; 3]| corner_contacts(&terrain, &body(p[0], p[1], p[2]))[0];
+    let pose = [1.1, 0.38, 0.2];
+    tangent_against_differences(contact_at, pose, &tangent(&contact_at(pose)));
 }
 
 /// The M113's shoe: two ground points and the inner face make a
@@ -306,44 +319,14 @@ fn a_rim_on_a_corner() {
 #[test]
 fn rim_tangent_matches_differences() {
     let terrain = step();
-    let contact = |pose: [f64; 3]| {
+    let contact_at = |p: [f64; 3]| {
         let mut out = Vec::new();
-        detect_rim(
-            &terrain,
-            (&body(pose[0], pose[1], pose[2]), 2, 0.3),
-            &mut out,
-        );
+        detect_rim(&terrain, (&body(p[0], p[1], p[2]), 2, 0.3), &mut out);
         out[0]
     };
     let pose = [0.85, 0.5, 0.7];
-    let t = rim_tangent(&contact(pose));
-    let h = 1e-7;
-    for k in 0..3 {
-        let (mut plus, mut minus) = (pose, pose);
-        plus[k] += h;
-        minus[k] -= h;
-        let (cp, cm) = (contact(plus), contact(minus));
-        let depth = (cp.depth - cm.depth) / (2.0 * h);
-        assert!(
-            (t.depth[k] - depth).abs() < 1e-7,
-            "∂δ/∂{k}: {} vs {depth}",
-            t.depth[k]
-        );
-        let g = (cp.gradient - cm.gradient) / (2.0 * h);
-        assert!(
-            (t.gradient[(0, k)] - g.x).abs() < 1e-7,
-            "∂gx/∂{k}: {} vs {}",
-            t.gradient[(0, k)],
-            g.x
-        );
-        assert!(
-            (t.gradient[(1, k)] - g.y).abs() < 1e-7,
-            "∂gy/∂{k}: {} vs {}",
-            t.gradient[(1, k)],
-            g.y
-        );
-        assert_eq!((cp.point - cm.point).norm(), 0.0);
-    }
+    let t = rim_tangent(&contact_at(pose));
+    tangent_against_differences(contact_at, pose, &t);
     // Not zero: the test can fail.
     assert!(t.gradient.norm() > 1.0);
 }
