@@ -2,6 +2,7 @@
 
 use nalgebra::{Matrix2, Vector2};
 
+use super::profile::Profile;
 use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
 use super::{BodyState, Contact, ShoeGeometry, Terrain};
 
@@ -67,17 +68,16 @@ pub(crate) fn detect_culled(
 /// norm; `None` above it. A closed form's depth is `h(p_x) − p_y`, its
 /// gradient `(−h′, 1)`; a polyline's depth is the distance to the nearest
 /// edge, its gradient that edge's unit normal towards the surface.
+///
+/// Inlined into the contact passes (it runs per ground point and
+/// evaluation); the polyline's search stays out of line.
+#[inline]
 pub(super) fn penetration(
     terrain: &Terrain,
     point: Vector2<f64>,
 ) -> Option<(f64, Vector2<f64>, f64)> {
     if let Terrain::Profile(profile) = terrain {
-        let nearest = profile.nearest_boundary(point.x, point.y)?;
-        if nearest.distance <= 0.0 {
-            return None;
-        }
-        let normal = (Vector2::new(nearest.point.0, nearest.point.1) - point) / nearest.distance;
-        return Some((nearest.distance, normal, 1.0));
+        return profile_penetration(profile, point);
     }
     let (h, slope) = terrain.height_and_slope(point.x);
     let depth = h - point.y;
@@ -86,6 +86,18 @@ pub(super) fn penetration(
     }
     let gradient = Vector2::new(-slope, 1.0);
     Some((depth, gradient, gradient.norm()))
+}
+
+/// [`penetration`] on a polyline: the distance to the nearest edge, the
+/// edge's unit normal towards the surface.
+#[inline(never)]
+fn profile_penetration(profile: &Profile, point: Vector2<f64>) -> Option<(f64, Vector2<f64>, f64)> {
+    let nearest = profile.nearest_boundary(point.x, point.y)?;
+    if nearest.distance <= 0.0 {
+        return None;
+    }
+    let normal = (Vector2::new(nearest.point.0, nearest.point.1) - point) / nearest.distance;
+    Some((nearest.distance, normal, 1.0))
 }
 
 /// The derivatives of a ground contact's geometry ([`detect`]'s) with the
@@ -131,6 +143,7 @@ pub fn tangent(terrain: &Terrain, contact: &Contact) -> GeometryTangent {
 /// per link plus the links actually near the ground. A NaN position
 /// compares false and is looked at: its force is NaN, and the run stops
 /// with the cause.
+#[inline]
 pub(crate) fn clear_of(
     terrain: &Terrain,
     links: &[BodyState],

@@ -210,28 +210,10 @@ impl Terrain {
                 let k = 2.0 * std::f64::consts::PI / wavelength;
                 (amplitude * (k * x).sin(), amplitude * k * (k * x).cos())
             }
-            Terrain::Profile(profile) => profile.height_and_slope(x),
-            Terrain::Table(points) => {
-                // Built directly (not by `table`), a table may be empty.
-                let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
-                    return (0.0, 0.0);
-                };
-                // NaN is neither left of, right of nor between the points:
-                // it has no segment (the search below would find none).
-                if x.is_nan() {
-                    return (f64::NAN, f64::NAN);
-                }
-                if x <= first.0 {
-                    return (first.1, 0.0);
-                }
-                if x >= last.0 {
-                    return (last.1, 0.0);
-                }
-                let i = points.partition_point(|p| p.0 <= x);
-                let (a, b) = (points[i - 1], points[i]);
-                let slope = (b.1 - a.1) / (b.0 - a.0);
-                (a.1 + slope * (x - a.0), slope)
-            }
+            // Out of line: the closed forms above stay small enough to
+            // inline into the contact passes, which call this per point.
+            Terrain::Profile(profile) => profile_height_and_slope(profile, x),
+            Terrain::Table(points) => table_height_and_slope(points, x),
         }
     }
 
@@ -292,4 +274,34 @@ impl Terrain {
             Terrain::Profile(profile) => profile.max_height(x0, x1),
         }
     }
+}
+
+/// [`Profile::height_and_slope`], called out of line.
+#[inline(never)]
+fn profile_height_and_slope(profile: &Profile, x: f64) -> (f64, f64) {
+    profile.height_and_slope(x)
+}
+
+/// A table's `(h(x), h'(x))`: linear between its points, level beyond.
+#[inline(never)]
+fn table_height_and_slope(points: &[(f64, f64)], x: f64) -> (f64, f64) {
+    // Built directly (not by `table`), a table may be empty.
+    let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
+        return (0.0, 0.0);
+    };
+    // NaN is neither left of, right of nor between the points:
+    // it has no segment (the search below would find none).
+    if x.is_nan() {
+        return (f64::NAN, f64::NAN);
+    }
+    if x <= first.0 {
+        return (first.1, 0.0);
+    }
+    if x >= last.0 {
+        return (last.1, 0.0);
+    }
+    let i = points.partition_point(|p| p.0 <= x);
+    let (a, b) = (points[i - 1], points[i]);
+    let slope = (b.1 - a.1) / (b.0 - a.0);
+    (a.1 + slope * (x - a.0), slope)
 }
