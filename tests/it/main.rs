@@ -23,6 +23,7 @@ mod finite_differences;
 mod fitted_contact;
 mod generated_vs_reference;
 mod grade_hold;
+mod half_round_lift;
 mod hull;
 mod integrators;
 mod large_tracks;

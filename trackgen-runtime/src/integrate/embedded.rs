@@ -103,7 +103,9 @@ pub(crate) fn weighted_rms(
 ) -> f64 {
     let n = v.len();
     let (v, y0, y1) = (v.as_slice(), &y0.as_slice()[..n], &y1.as_slice()[..n]);
-    rms_of(n, |i| scaled_square(v[i], atol + rtol * y0[i].abs().max(y1[i].abs())))
+    rms_of(n, |i| {
+        scaled_square(v[i], atol + rtol * y0[i].abs().max(y1[i].abs()))
+    })
 }
 
 /// `(v / scale)²`, and 0 for `v = 0` whatever the scale: with `atol = 0`
