@@ -227,9 +227,18 @@ fn push_corner(
 /// `feature` the corner's index; then the terrain's sharp corners inside
 /// the hull.
 pub fn detect_hull(terrain: &Terrain, frame: &BodyState, hull: &Outline, out: &mut Vec<Contact>) {
-    let r = hull.radius;
-    let x = frame.position.x;
-    if frame.position.y - r > terrain.max_height(x - r, x + r) {
+    // Culled by the corners' box: the terrain touches the hull only where
+    // it rises above the lowest corner within the hull's x-range (a
+    // convex outline's lowest and outermost points are corners).
+    let (mut low, mut high, mut bottom) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY);
+    for local in &hull.corners {
+        let point = frame.position + frame.arm(*local);
+        low = low.min(point.x);
+        high = high.max(point.x);
+        bottom = bottom.min(point.y);
+    }
+    // Written so that a NaN pose is looked at (and its force is NaN).
+    if bottom > terrain.max_height(low, high) {
         return;
     }
     for (k, local) in hull.corners.iter().enumerate() {
@@ -265,6 +274,10 @@ pub fn detect_rim(
     (body, index, radius): (&BodyState, usize, f64),
     out: &mut Vec<Contact>,
 ) {
+    // Only a profile has sharp corners.
+    if !matches!(terrain, Terrain::Profile(_)) {
+        return;
+    }
     let x = body.position.x;
     for corner in sharp_corners(terrain, x - radius, x + radius) {
         let arm = corner - body.position;

@@ -10,7 +10,7 @@ use nalgebra::DVector;
 
 use super::control::StepControl;
 use super::differences::forward_jacobian;
-use super::embedded::{step_error, weighted_rms};
+use super::embedded::{Quadratures, step_error, weighted_rms};
 use super::{OdeSystem, Stats, Stepper};
 use crate::integrate::SimulationError;
 
@@ -224,7 +224,7 @@ pub struct Ros34pw2 {
     jacobian: Vec<f64>,
     jacobian_age: Option<u32>,
     /// [`OdeSystem::is_quadrature`] of each component, asked once.
-    quadrature: Vec<bool>,
+    quadratures: Quadratures,
     /// Whether the system solves its own linear systems
     /// ([`OdeSystem::implicit`]), asked at each Jacobian.
     own: bool,
@@ -282,7 +282,7 @@ impl Ros34pw2 {
             error: zero.clone(),
             jacobian: vec![0.0; dimension * dimension],
             jacobian_age: None,
-            quadrature: Vec::new(),
+            quadratures: Quadratures::default(),
             own: false,
             factorisation: None,
             dense_start: zero.clone(),
@@ -325,9 +325,7 @@ impl Ros34pw2 {
         }
         self.own = false;
         let n = y.len();
-        if self.quadrature.len() != n {
-            self.quadrature = (0..n).map(|i| system.is_quadrature(i)).collect();
-        }
+        self.quadratures.ask(system, n);
         if system.jacobian(t, y.as_slice(), self.f0.as_slice(), &mut self.jacobian)? {
             if !super::all_finite(&self.jacobian) {
                 return Err(SimulationError::NonFinite {
@@ -336,12 +334,12 @@ impl Ros34pw2 {
                 });
             }
         } else {
-            let quadrature = &self.quadrature;
+            let quadratures = &self.quadratures;
             forward_jacobian(
                 system,
                 &mut self.stats,
                 (t, y, &self.f0),
-                |j| quadrature[j],
+                |j| quadratures.contains(j),
                 &mut self.argument,
                 &mut self.slope,
                 &mut self.jacobian,
@@ -349,7 +347,7 @@ impl Ros34pw2 {
         }
         for (j, column) in self.jacobian.chunks_exact_mut(n).enumerate() {
             for (i, c) in column.iter_mut().enumerate() {
-                if self.quadrature[i] || self.quadrature[j] {
+                if self.quadratures.contains(i) || self.quadratures.contains(j) {
                     *c = 0.0;
                 }
             }
@@ -513,7 +511,7 @@ impl Ros34pw2 {
             y,
             &self.trial,
             (self.atol, self.rtol),
-            &self.quadrature,
+            &self.quadratures,
         ))
     }
 
@@ -539,6 +537,9 @@ impl Stepper for Ros34pw2 {
         y: &mut DVector<f64>,
         t_limit: f64,
     ) -> Result<(), SimulationError> {
+        // Here, not with the Jacobian: a system that solves its own linear
+        // systems has its books weighted by their increment too.
+        self.quadratures.ask(system, y.len());
         if !self.f_now {
             super::evaluate(system, &mut self.stats, *t, y, &mut self.f0)?;
             self.f_now = true;
