@@ -22,7 +22,7 @@ use trackgen::simulate::{EnergyBalance, Output, simulate};
 use trackgen::vehicle::{Vehicle, VehicleDynamics, speed_ramp};
 use trackgen::vehicles::m113::M113;
 
-use crate::support::vehicle::wall;
+use crate::support::vehicle::{main_job_integrator, wall};
 
 /// Where the wall's face is, m (the chassis centroid starts at 0; the
 /// hull's nose at about 2.46 m): [`wall`]'s.
@@ -114,11 +114,7 @@ fn the_wall_pushes_on_the_hull() {
     let mut system = M113::system_with(config).unwrap();
     let results = simulate(
         &mut system,
-        Integrator::Auto {
-            explicit_tolerance: 1e-3,
-            implicit_tolerance: 1e-2,
-            max_step: 0.01,
-        },
+        main_job_integrator(),
         0.0,
         6.0,
         Output::Every(0.01),

@@ -519,19 +519,10 @@ fn without_faces_heights_are_the_table_formula() {
         points.push((x + rng.uniform(0.001, 2.0), rng.uniform(-1.0, 1.0)));
     }
     let p = Profile::new(points.clone()).unwrap();
-    let table = |x: f64| -> (f64, f64) {
-        let (first, last) = (points[0], points[points.len() - 1]);
-        if x <= first.0 {
-            return (first.1, 0.0);
-        }
-        if x >= last.0 {
-            return (last.1, 0.0);
-        }
-        let i = points.partition_point(|p| p.0 <= x);
-        let (a, b) = (points[i - 1], points[i]);
-        let slope = (b.1 - a.1) / (b.0 - a.0);
-        (a.1 + slope * (x - a.0), slope)
-    };
+    // The table's own lookup (a binary search over its points) as the
+    // independent route to the profile's bucketed one.
+    let terrain = crate::contact::Terrain::Table(points.clone());
+    let table = |x: f64| terrain.height_and_slope(x);
     for k in 0..20_000 {
         let x = -5.0 + k as f64 * 0.0173;
         if x == 0.0 {
