@@ -11,8 +11,9 @@
 //! on every core, and writes to `out/mobility/<vehicle>/` (or `--out`):
 //! `<event>.csv` (one row per result: the parameter, the limit, its unit
 //! and the runs it took), `trials.csv` (every run), `summary.svg` (the
-//! curves: ride-limiting speed against roughness, half-round speed against
-//! height, speed against grade, drawbar pull against slip on each soil),
+//! curves of the events the set ran that have one: ride-limiting speed
+//! against roughness, half-round speed against height, speed against
+//! grade, drawbar pull against slip on each soil),
 //! `<event>-limit.svg` (the vehicle at its
 //! steepest on the largest step, gap, ditch and barrier it crossed) and
 //! `report.html` (the tables, the curves and the pictures in one file). It prints a summary table; with `--json`, one
@@ -652,9 +653,12 @@ fn write_all(
     }
     w.flush()?;
     files.push("trials.csv".into());
+    // Only a set with an event that has a curve draws them.
     let svg = curves(rows)?;
-    fs::write(dir.join("summary.svg"), &svg)?;
-    files.push("summary.svg".into());
+    if let Some(svg) = &svg {
+        fs::write(dir.join("summary.svg"), svg)?;
+        files.push("summary.svg".into());
+    }
     // The vehicle at each obstacle's limit: a picture per search that
     // drew one.
     for r in rows {
@@ -664,13 +668,17 @@ fn write_all(
             files.push(file);
         }
     }
-    fs::write(dir.join("report.html"), report(name, rows, wall, &svg))?;
+    fs::write(
+        dir.join("report.html"),
+        report(name, rows, wall, svg.as_deref().unwrap_or_default()),
+    )?;
     files.push("report.html".into());
     Ok(files)
 }
 
-/// The curves of the events with a parameter: one panel each.
-fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
+/// The curves of the events with a parameter: one panel each; `None`
+/// for a set without any (obstacles alone).
+fn curves(rows: &[Row]) -> Result<Option<String>, Box<dyn std::error::Error>> {
     let panels: [(&str, &str, &str, f64); 3] = [
         (
             "ride",
@@ -691,7 +699,10 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
     let panels: Vec<_> = panels.iter().filter(|p| ran(p.0)).collect();
     let soil = ran("soil");
     let count = panels.len() + usize::from(soil);
-    let (rows_of, columns) = (count.div_ceil(2).max(1), count.clamp(1, 2));
+    if count == 0 {
+        return Ok(None);
+    }
+    let (rows_of, columns) = (count.div_ceil(2), count.min(2));
     let mut svg = String::new();
     {
         let size = (600 * columns as u32, 380 * rows_of as u32);
@@ -727,7 +738,7 @@ fn curves(rows: &[Row]) -> Result<String, Box<dyn std::error::Error>> {
         }
         root.present()?;
     }
-    Ok(svg)
+    Ok(Some(svg))
 }
 
 /// One panel of the curves: `caption` over axes from 0 to `x_max` and

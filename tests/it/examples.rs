@@ -782,7 +782,7 @@ fn stiff_vehicle_runs_the_implicit_method_where_stiffness_holds_the_step() {
 /// ride's limit is a speed the search ran between 1 m/s and the top speed
 /// (its trials bracket it: the largest passing trial is below 6 W and
 /// the smallest failing one above); an unknown event is refused naming
-/// the events.
+/// the events; a set of obstacles alone writes no curves.
 #[test]
 fn mobility_answers_its_events_and_refuses_an_unknown_one() {
     let mobility = example("mobility");
@@ -852,6 +852,25 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
             .map(|m| m.len())
             .unwrap_or(0);
         assert!(len > 100, "{file}: {len} bytes");
+    }
+    // A set of obstacles alone has no curve: no blank `summary.svg`, the
+    // report and the vehicle at the limit still written.
+    let obstacles = dir.join("obstacles");
+    let out = run(
+        &mobility,
+        &[
+            "--quick",
+            "--events",
+            "step",
+            "--out",
+            obstacles.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("mobility --events step", &out);
+    assert!(!obstacles.join("summary.svg").exists());
+    for file in ["step.csv", "step-limit.svg", "report.html"] {
+        assert!(obstacles.join(file).exists(), "{file}");
     }
     let refused = run(&mobility, &["--events", "ride,mud"], &dir);
     assert!(!refused.status.success());
