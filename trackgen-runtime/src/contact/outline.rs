@@ -274,12 +274,12 @@ pub fn detect_rim(
     (body, index, radius): (&BodyState, usize, f64),
     out: &mut Vec<Contact>,
 ) {
-    // Only a profile has sharp corners.
-    if !matches!(terrain, Terrain::Profile(_)) {
+    let Terrain::Profile(profile) = terrain else {
         return;
-    }
+    };
     let x = body.position.x;
-    for corner in sharp_corners(terrain, x - radius, x + radius) {
+    for (cx, cz) in profile.sharp_points_in(x - radius, x + radius) {
+        let corner = Vector2::new(cx, cz);
         let arm = corner - body.position;
         let distance = arm.norm();
         if distance >= radius || distance == 0.0 {

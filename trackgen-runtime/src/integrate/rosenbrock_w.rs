@@ -325,7 +325,6 @@ impl Ros34pw2 {
         }
         self.own = false;
         let n = y.len();
-        self.quadratures.ask(system, n);
         if system.jacobian(t, y.as_slice(), self.f0.as_slice(), &mut self.jacobian)? {
             if !super::all_finite(&self.jacobian) {
                 return Err(SimulationError::NonFinite {
@@ -537,8 +536,9 @@ impl Stepper for Ros34pw2 {
         y: &mut DVector<f64>,
         t_limit: f64,
     ) -> Result<(), SimulationError> {
-        // Here, not with the Jacobian: a system that solves its own linear
-        // systems has its books weighted by their increment too.
+        // Here, not with the Jacobian (which only `step` reaches, after
+        // this): a system that solves its own linear systems has its books
+        // weighted by their increment too.
         self.quadratures.ask(system, y.len());
         if !self.f_now {
             super::evaluate(system, &mut self.stats, *t, y, &mut self.f0)?;

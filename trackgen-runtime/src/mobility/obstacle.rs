@@ -169,8 +169,8 @@ fn attempt<V: Vehicle>(
 struct Steepest {
     probe: Probe,
     columns: Vec<String>,
-    pitch: Option<usize>,
-    largest: f64,
+    /// The time and the values of the row of the largest pitch so far
+    /// (the probe's [`max_pitch`](Probe::max_pitch)).
     t: f64,
     row: Vec<f64>,
 }
@@ -180,8 +180,6 @@ impl Steepest {
         Steepest {
             probe,
             columns: Vec::new(),
-            pitch: None,
-            largest: f64::NEG_INFINITY,
             t: f64::NAN,
             row: Vec::new(),
         }
@@ -203,20 +201,18 @@ impl Steepest {
 impl Sink for Steepest {
     fn begin(&mut self, columns: &[String]) -> Result<(), SinkError> {
         self.columns = columns.to_vec();
-        self.pitch = columns.iter().position(|c| c == "pitch");
         self.probe.begin(columns)
     }
 
     fn row(&mut self, t: f64, values: &[f64]) -> Result<(), SinkError> {
-        if let Some(pitch) = self.pitch
-            && values[pitch].abs() > self.largest
-        {
-            self.largest = values[pitch].abs();
+        let largest = self.probe.max_pitch;
+        let outcome = self.probe.row(t, values);
+        if self.row.is_empty() || self.probe.max_pitch > largest {
             self.t = t;
             self.row.clear();
             self.row.extend_from_slice(values);
         }
-        self.probe.row(t, values)
+        outcome
     }
 
     fn finish(&mut self) -> Result<(), SinkError> {
