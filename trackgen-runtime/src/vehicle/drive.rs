@@ -152,7 +152,8 @@ impl Drive {
     /// unbounded torque here; [`checked_torque`](Self::checked_torque)
     /// refuses it.
     pub fn torque(&self, t: f64, omega: f64, radius: f64, state: f64) -> (f64, f64) {
-        self.respond(self.demand(t), omega, radius, state, TorqueCap::NONE)
+        let (torque, rate, _) = self.law(self.demand(t), omega, radius, state, TorqueCap::NONE);
+        (torque, rate)
     }
 
     /// [`torque`](Self::torque) under the powertrain's `cap`, refusing a
@@ -175,7 +176,8 @@ impl Drive {
             };
             return Err(SimulationError::NonFinite { t, what });
         }
-        Ok(self.respond(demand, omega, radius, state, cap))
+        let (torque, rate, _) = self.law(demand, omega, radius, state, cap);
+        Ok((torque, rate))
     }
 
     /// Why the settings of the drive make no controller: gains that are NaN
@@ -254,18 +256,6 @@ impl Drive {
             Drive::Torque(f) => f(t),
             Drive::Speed { target, .. } => target(t),
         }
-    }
-
-    fn respond(
-        &self,
-        demand: f64,
-        omega: f64,
-        radius: f64,
-        state: f64,
-        cap: TorqueCap,
-    ) -> (f64, f64) {
-        let (torque, rate, _) = self.law(demand, omega, radius, state, cap);
-        (torque, rate)
     }
 
     /// The drive's law at `demand` (the target speed or the scheduled
