@@ -35,7 +35,8 @@ use super::ParameterError;
 /// A deflection this close to 0 (m) has relaxed ([`Stiction::relax`]).
 ///
 /// Off the ground a deflection decays as `e^(−k t / c)` and never reaches
-/// 0: within a second of flight it is below `10⁻¹⁵⁴` m, where its stored
+/// 0: some 350 time constants `c/k` into a flight (under two seconds on
+/// the M113's fitted laws) it is below `10⁻¹⁵⁴` m, where its stored
 /// energy `½ k z²` underflows to a subnormal number, and then the state
 /// itself goes subnormal. Arithmetic on subnormals takes a microcode
 /// assist on x86 (about a hundred times an ordinary operation) in every
