@@ -232,6 +232,12 @@ fn up_a_grade_at_full_power_it_holds_the_speed_its_power_buys() {
         let resistance = flat_power / (weight * flat_speed);
         let theta = grade.atan();
         let want = (1.0 - slip) * power / (weight * (theta.sin() + resistance * theta.cos()));
+        println!(
+            "{} % grade at {power} W: {speed:.4} m/s against {want:.4} m/s ({:+.2} %; f = \
+             {resistance:.4}, slip {slip:.4})",
+            grade * 100.0,
+            100.0 * (speed / want - 1.0)
+        );
         assert!(
             (speed - want).abs() < 0.03 * want,
             "{} % grade: {speed} m/s, (1 − i) P / (m g (sin θ + f cos θ)) = {want} m/s \
