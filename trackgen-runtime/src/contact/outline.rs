@@ -269,6 +269,7 @@ pub fn detect_hull(terrain: &Terrain, frame: &BodyState, hull: &Outline, out: &m
 /// normal force turns nothing, friction does). The track is usually
 /// between rim and ground; this is for a corner that comes up between
 /// two shoes, or a rim off the track.
+#[inline]
 pub fn detect_rim(
     terrain: &Terrain,
     (body, index, radius): (&BodyState, usize, f64),

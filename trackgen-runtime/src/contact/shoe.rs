@@ -36,19 +36,25 @@ impl ShoeGeometry {
     /// radius of the link's bounding circle for culling.
     /// Every contact pair culls with it at every evaluation, so the
     /// squares are compared and one root taken per kind of feature.
+    #[inline]
     pub fn extent(&self) -> f64 {
-        let farthest = |points: &[Vector2<f64>]| {
+        // The largest squared distance (a NaN skipped, as `f64::max` skips
+        // it, by a comparison); one root per kind of feature, the faces'
+        // taken after their maximum (the root is monotonic and correctly
+        // rounded, so the same bits as the larger of two roots).
+        let farthest2 = |points: &[Vector2<f64>]| {
             points
                 .iter()
                 .map(|p| p.norm_squared())
-                .fold(0.0, f64::max)
-                .sqrt()
+                .fold(0.0, |m, d| if d > m { d } else { m })
         };
-        let faces = farthest(&self.ground_points).max(farthest(&self.inner_face));
+        let faces2 = farthest2(&self.ground_points);
+        let inner2 = farthest2(&self.inner_face);
+        let faces = (if inner2 > faces2 { inner2 } else { faces2 }).sqrt();
         let pins = if self.pins.is_empty() {
             0.0
         } else {
-            farthest(&self.pins) + self.pin_radius
+            farthest2(&self.pins).sqrt() + self.pin_radius
         };
         faces.max(pins)
     }
