@@ -170,8 +170,9 @@ pub(crate) fn each_near(
 /// links of `block`: the link is near, or its distance is NaN.
 ///
 /// Four links at a time in AVX where the processor has it, else two in
-/// SSE2 (every x86-64 processor has that): the culling is a sixteenth of
-/// the M113's evaluation (seven rims and a sprocket against 64 links), and
+/// SSE2 (every x86-64 processor has that): in SSE2 the culling was a
+/// sixteenth of the M113's evaluation (six rims and the sprocket against
+/// 64 links, 20 instructions a pair; 5 a link in AVX), and
 /// a link per iteration, its position loaded from a 64-byte state, is less
 /// than half the speed. The comparison is the same each way (`cmpngt` is
 /// `!(a > b)`, true for NaN; `d²` is `dx² + dy²` in that order, with no

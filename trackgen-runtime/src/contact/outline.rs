@@ -230,15 +230,18 @@ pub fn detect_hull(terrain: &Terrain, frame: &BodyState, hull: &Outline, out: &m
     // Culled by the corners' box: the terrain touches the hull only where
     // it rises above the lowest corner within the hull's x-range (a
     // convex outline's lowest and outermost points are corners).
+    // A NaN pose is looked at (and its force is NaN): `min` and `max` skip
+    // a NaN corner, so one is noted apart.
     let (mut low, mut high, mut bottom) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY);
+    let mut lost = false;
     for local in &hull.corners {
         let point = frame.position + frame.arm(*local);
         low = low.min(point.x);
         high = high.max(point.x);
         bottom = bottom.min(point.y);
+        lost |= point.x.is_nan() || point.y.is_nan();
     }
-    // Written so that a NaN pose is looked at (and its force is NaN).
-    if bottom > terrain.max_height(low, high) {
+    if !lost && bottom > terrain.max_height(low, high) {
         return;
     }
     for (k, local) in hull.corners.iter().enumerate() {

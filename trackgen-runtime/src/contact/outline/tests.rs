@@ -239,6 +239,28 @@ fn hull_corners_below_the_ground() {
     out.clear();
     detect_hull(&flat, &body(0.0, 0.5, 0.3), &box_outline(), &mut out);
     assert!(out.is_empty());
+    // A NaN pose is not culled, high above the ground as its numbers may
+    // be: its corners are looked at, and their depths are NaN (so is the
+    // force, and the run stops with the cause).
+    let waves = Terrain::Sine {
+        amplitude: 0.05,
+        wavelength: 2.0,
+    };
+    for pose in [
+        (f64::NAN, 0.5, 0.0),
+        (0.0, f64::NAN, 0.0),
+        (0.0, 0.5, f64::NAN),
+    ] {
+        out.clear();
+        detect_hull(
+            &waves,
+            &body(pose.0, pose.1, pose.2),
+            &box_outline(),
+            &mut out,
+        );
+        assert!(!out.is_empty(), "{pose:?}");
+        assert!(out.iter().all(|c| c.depth.is_nan()), "{pose:?}");
+    }
 }
 
 /// The profile's list of sharp corners, searched by range, is the scan of
