@@ -37,13 +37,14 @@
 
 use trackgen::contact::Terrain;
 use trackgen::contact::profile::Course;
+use trackgen::integrate::Integrator;
 use trackgen::laws::NormalLaw;
 use trackgen::scene::{Frame, Scene};
 use trackgen::simulate::{Output, simulate};
 use trackgen::vehicle::{Vehicle, speed_ramp};
 use trackgen::vehicles::m113::M113;
 
-use crate::support::vehicle::{m113_weight, main_job_integrator};
+use crate::support::vehicle::m113_weight;
 
 /// The half-round's radius (= height), m; its foot at x = 4 m, so its
 /// crest at 4.2 m (the chassis centroid starts at 0, the sprocket at
@@ -106,7 +107,7 @@ fn the_hull_lifts_over_a_half_round_as_its_running_gear_s_envelope() {
     let mut system = M113::system_with(config).unwrap();
     let results = simulate(
         &mut system,
-        main_job_integrator(),
+        Integrator::DEFAULT,
         0.0,
         16.0,
         Output::Every(0.01),

@@ -22,7 +22,7 @@ use trackgen::simulate::{EnergyBalance, Output, simulate};
 use trackgen::vehicle::{Vehicle, VehicleDynamics, speed_ramp};
 use trackgen::vehicles::m113::M113;
 
-use crate::support::vehicle::{main_job_integrator, wall};
+use crate::support::vehicle::wall;
 
 /// Where the wall's face is, m (the chassis centroid starts at 0; the
 /// hull's nose at about 2.46 m): [`wall`]'s.
@@ -45,14 +45,10 @@ fn m113_stops_at_a_wall_with_its_hull() {
     let static_depth = mu * mass * 9.81 / k;
     let bound = static_depth + (static_depth.powi(2) + mass * v * v / k).sqrt();
 
-    let tolerance = 1e-3;
+    let tolerance = Integrator::DEFAULT_EXPLICIT_TOLERANCE;
     let results = simulate(
         &mut system,
-        Integrator::Auto {
-            explicit_tolerance: tolerance,
-            implicit_tolerance: 1e-2,
-            max_step: 0.01,
-        },
+        Integrator::DEFAULT,
         0.0,
         10.0,
         Output::Every(0.01),
@@ -114,7 +110,7 @@ fn the_wall_pushes_on_the_hull() {
     let mut system = M113::system_with(config).unwrap();
     let results = simulate(
         &mut system,
-        main_job_integrator(),
+        Integrator::DEFAULT,
         0.0,
         6.0,
         Output::Every(0.01),
@@ -147,14 +143,10 @@ fn books_close_over_a_step_at_a_crawl() {
     );
     config.powertrain = Some(trackgen::vehicles::m113::powertrain());
     let mut system = M113::system_with(config).unwrap();
-    let tolerance = 1e-3;
+    let tolerance = Integrator::DEFAULT_EXPLICIT_TOLERANCE;
     let results = simulate(
         &mut system,
-        Integrator::Auto {
-            explicit_tolerance: tolerance,
-            implicit_tolerance: 1e-2,
-            max_step: 0.01,
-        },
+        Integrator::DEFAULT,
         0.0,
         12.0,
         Output::Every(0.01),

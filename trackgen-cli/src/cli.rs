@@ -195,12 +195,14 @@ pub enum Method {
 impl Args {
     /// The explicit methods' tolerance: given, or 1e-3.
     pub fn explicit_tolerance(&self) -> f64 {
-        self.tolerance.unwrap_or(1e-3)
+        self.tolerance
+            .unwrap_or(Integrator::DEFAULT_EXPLICIT_TOLERANCE)
     }
 
     /// ROS34PW2's tolerance: given, or 1e-2.
     pub fn implicit_tolerance(&self) -> f64 {
-        self.tolerance.unwrap_or(1e-2)
+        self.tolerance
+            .unwrap_or(Integrator::DEFAULT_IMPLICIT_TOLERANCE)
     }
 
     /// The tolerance the books are held to after a run whose integrator
@@ -250,7 +252,7 @@ impl Args {
 
     /// The integrator at the chosen tolerance, steps of at most 10 ms.
     pub fn integrator(&self) -> Integrator {
-        let max_step = 0.01;
+        let max_step = Integrator::DEFAULT_MAX_STEP;
         let (rtol, atol) = match self.integrator {
             Method::Ros34pw2 => (self.implicit_tolerance(), self.implicit_tolerance()),
             _ => (self.explicit_tolerance(), self.explicit_tolerance()),

@@ -138,6 +138,8 @@ pub struct Variable {
 /// defaults are the main job's (`trackgen-cli`'s `--help`), so a default
 /// FMU run is the main job's run.
 pub mod defaults {
+    use trackgen::integrate::Integrator;
+
     /// Bump height, m.
     pub const BUMP_HEIGHT: f64 = 0.1;
     /// Bump centre, m.
@@ -149,11 +151,11 @@ pub mod defaults {
     /// Ramp time, s.
     pub const RAMP: f64 = 2.0;
     /// Bogacki–Shampine's and Dormand–Prince's tolerance.
-    pub const EXPLICIT_TOLERANCE: f64 = 1e-3;
+    pub const EXPLICIT_TOLERANCE: f64 = Integrator::DEFAULT_EXPLICIT_TOLERANCE;
     /// ROS34PW2's tolerance.
-    pub const IMPLICIT_TOLERANCE: f64 = 1e-2;
+    pub const IMPLICIT_TOLERANCE: f64 = Integrator::DEFAULT_IMPLICIT_TOLERANCE;
     /// The longest step, s.
-    pub const MAX_STEP: f64 = 0.01;
+    pub const MAX_STEP: f64 = Integrator::DEFAULT_MAX_STEP;
     /// Where an obstacle starts, m.
     pub const OBSTACLE_AT: f64 = 12.0;
 }

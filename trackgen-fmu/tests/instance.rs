@@ -11,11 +11,7 @@ use trackgen_fmu::variables::{Causality, Role};
 use trackgen_fmu::{FmuError, Instance, Mode, description};
 
 /// The main job's integrator at its default tolerances.
-const INTEGRATOR: Integrator = Integrator::Auto {
-    explicit_tolerance: 1e-3,
-    implicit_tolerance: 1e-2,
-    max_step: 0.01,
-};
+const INTEGRATOR: Integrator = Integrator::DEFAULT;
 
 fn reference(name: &str) -> u32 {
     Instance::<M113>::new()

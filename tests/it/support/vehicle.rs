@@ -186,13 +186,3 @@ pub fn m113_leaning_on_a_wall() -> (M113System, f64, DVector<f64>, f64) {
     let hull = row[columns.iter().position(|c| c == "hull_normal").unwrap()];
     (system, t, y, hull)
 }
-
-/// The main job's integrator at its defaults: the automatic choice,
-/// Bogacki-Shampine at 1e-3 and ROS34PW2 at 1e-2, steps of at most 10 ms.
-pub fn main_job_integrator() -> trackgen::integrate::Integrator {
-    trackgen::integrate::Integrator::Auto {
-        explicit_tolerance: 1e-3,
-        implicit_tolerance: 1e-2,
-        max_step: 0.01,
-    }
-}

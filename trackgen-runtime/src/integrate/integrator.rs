@@ -58,6 +58,27 @@ pub enum Integrator {
 }
 
 impl Integrator {
+    /// What a run uses unless told otherwise (the main job, the mobility
+    /// events, the FMU): [`Auto`](Integrator::Auto) at
+    /// [`DEFAULT_EXPLICIT_TOLERANCE`](Self::DEFAULT_EXPLICIT_TOLERANCE) and
+    /// [`DEFAULT_IMPLICIT_TOLERANCE`](Self::DEFAULT_IMPLICIT_TOLERANCE),
+    /// steps of at most [`DEFAULT_MAX_STEP`](Self::DEFAULT_MAX_STEP).
+    pub const DEFAULT: Integrator = Integrator::Auto {
+        explicit_tolerance: Self::DEFAULT_EXPLICIT_TOLERANCE,
+        implicit_tolerance: Self::DEFAULT_IMPLICIT_TOLERANCE,
+        max_step: Self::DEFAULT_MAX_STEP,
+    };
+    /// The explicit methods' default tolerance, relative and absolute: the
+    /// M113 with Bogacki-Shampine closes its books to about 1e-3 of the
+    /// motor's work at it.
+    pub const DEFAULT_EXPLICIT_TOLERANCE: f64 = 1e-3;
+    /// ROS34PW2's default tolerance, relative and absolute: the Marder
+    /// closes its books to about 1e-3 at it.
+    pub const DEFAULT_IMPLICIT_TOLERANCE: f64 = 1e-2;
+    /// The default longest step, s: the rows of a run every 10 ms are
+    /// never interpolated across more.
+    pub const DEFAULT_MAX_STEP: f64 = 0.01;
+
     /// Dormand-Prince with `rtol = atol = tol` and no step limit.
     pub fn dopri5(tol: f64) -> Self {
         Integrator::Dopri5 {

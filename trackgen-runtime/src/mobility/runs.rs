@@ -68,11 +68,7 @@ impl EventSettings {
     pub fn new(powertrain: Powertrain) -> EventSettings {
         EventSettings {
             powertrain,
-            integrator: Integrator::Auto {
-                explicit_tolerance: 1e-3,
-                implicit_tolerance: 1e-2,
-                max_step: 0.01,
-            },
+            integrator: Integrator::DEFAULT,
             crawl: 1.0,
             acceleration: 1.0,
             ride_distance: 100.0,
