@@ -125,35 +125,160 @@ crate::model! {
     }
 }
 
-/// The driveline's efficiency assumed for the powertrain (the figures give
-/// none): a mechanical gearbox and final drive lose some 10–20 % of the
-/// engine's power.
+/// The driveline's efficiency assumed for Chrono's simple map
+/// ([`chrono_simple_map`]; its figures give none): a mechanical gearbox
+/// and final drive lose some 10–20 % of the engine's power.
 pub const DRIVELINE_EFFICIENCY: f64 = 0.85;
 
-/// The M113's engine and driveline as one side's sprocket sees them
-/// (`shared/spec/mobility.md` §4, from Chrono's
-/// `M113_EngineSimpleMap.cpp`, `M113_AutomaticTransmissionSimpleMap.cpp`
-/// and `M113_DrivelineBDS.cpp`): the full-load torque map of the Detroit
-/// Diesel 6V53 (450 lb·ft at 500–1000 rpm, falling to 380 at 3000 and
-/// cut off to −100 at 3200 rpm), the four forward gears 0.240, 0.427,
-/// 0.685, 0.962 times the conical gear's 0.5, shifted ideally, and half
-/// the engine's power, after [`DRIVELINE_EFFICIENCY`], for this side.
-pub fn powertrain() -> trackgen::vehicle::Powertrain {
-    const LB_FT: f64 = 1.355_817_948_331_400_4; // N m
-    const RPM: f64 = std::f64::consts::PI / 30.0; // rad/s
-    let map = [
-        (500.0, 450.0),
-        (1000.0, 450.0),
-        (1500.0, 445.0),
-        (2000.0, 435.0),
-        (2500.0, 410.0),
-        (2800.0, 395.0),
-        (3000.0, 380.0),
-        (3200.0, -100.0),
-    ];
+/// Project Chrono's M113 engine and gearbox (a secondary source), as one
+/// side's sprocket sees them: `M113_EngineSimpleMap.cpp`,
+/// `M113_AutomaticTransmissionSimpleMap.cpp` and `M113_DrivelineBDS.cpp`.
+/// The full-load torque map of a Detroit Diesel 6V53 (450 lb·ft at
+/// 500–1000 rpm, falling to 380 at 3000 and cut off to −100 at 3200 rpm),
+/// the four forward gears 0.240, 0.427, 0.685, 0.962 times the conical
+/// gear's 0.5, shifted ideally, and half the engine's power, after
+/// [`DRIVELINE_EFFICIENCY`], for this side. It has no torque converter
+/// and no final drive: it reaches the sprocket with about 0.16 of the
+/// weight at a crawl and twice the real top speed. Kept to compare
+/// against; the vehicle's own is [`powertrain`].
+pub fn chrono_simple_map() -> trackgen::vehicle::Powertrain {
+    let map = CHRONO_6V53_MAP.iter().map(|&(n, t)| (n * RPM, t * LB_FT));
     trackgen::vehicle::Powertrain::Engine {
-        map: map.iter().map(|&(n, t)| (n * RPM, t * LB_FT)).collect(),
+        map: map.collect(),
         ratios: [0.240, 0.427, 0.685, 0.962].map(|r| r * 0.5).to_vec(),
         fraction: DRIVELINE_EFFICIENCY * 0.5,
     }
+}
+
+/// N m per lb·ft.
+const LB_FT: f64 = 1.355_817_948_331_400_4;
+/// rad/s per rpm.
+const RPM: f64 = std::f64::consts::PI / 30.0;
+/// W per (mechanical) horsepower.
+const HP: f64 = 745.699_871_582_270_2;
+
+/// Chrono's full-load torque map of the Detroit Diesel 6V53 (lb·ft
+/// against rpm, `M113_EngineSimpleMap.cpp`; a secondary source).
+const CHRONO_6V53_MAP: [(f64, f64); 8] = [
+    (500.0, 450.0),
+    (1000.0, 450.0),
+    (1500.0, 445.0),
+    (2000.0, 435.0),
+    (2500.0, 410.0),
+    (2800.0, 395.0),
+    (3000.0, 380.0),
+    (3200.0, -100.0),
+];
+
+/// The M113A3's engine, a Detroit Diesel 6V53T, rated 275 hp at 2800 rpm
+/// (US Army Ordnance subcourse OD1712, *Introduction to the M113A3
+/// Armored Personnel Carrier*, lesson 1).
+pub const ENGINE_RATED_POWER: f64 = 275.0 * HP;
+/// The 6V53T's rated (governed full-load) speed, rad/s: 2800 rpm (OD1712).
+pub const ENGINE_RATED_SPEED: f64 = 2800.0 * RPM;
+/// The governor's high-idle speed, rad/s: 3000 rpm, where the full-load
+/// torque has fallen to 0. Assumed: a droop of about 7 % above the rated
+/// speed, usual for the mechanical governors of Detroit Diesel's Series 53
+/// (no M113A3 figure found).
+pub const ENGINE_HIGH_IDLE: f64 = 3000.0 * RPM;
+/// The X200-4 converter's stall torque ratio (US Army Ordnance subcourse
+/// OD1714, *M113A3 power train*, lesson 1: "a single-stage, three-element,
+/// polyphase hydraulic torque converter with a stall torque ratio of
+/// 3.32:1").
+pub const STALL_TORQUE_RATIO: f64 = 3.32;
+/// The engine speed at which the converter stalls at full load, rad/s:
+/// 2300 rpm. Assumed (no X200-4 stall-test figure found): a heavy-duty
+/// converter is matched to stall at some 80 % of the engine's rated speed,
+/// near its peak torque; it sets the capacity factor at stall,
+/// `K(0) = ω / √T_e(ω)`.
+pub const STALL_SPEED: f64 = 2300.0 * RPM;
+/// The X200-4's range reductions, first to fourth (OD1714: 4.16, 2.34,
+/// 1.46, 1.04:1; reverse 6.62:1).
+pub const RANGES: [f64; 4] = [4.16, 2.34, 1.46, 1.04];
+/// The M113A3's top speed on a level road, m/s: 41 mph (US Army Center of
+/// Military History, *Weapon Systems*, "M113 Series Armored Personnel
+/// Carrier": M113A3).
+pub const TOP_SPEED: f64 = 41.0 * 0.447_04;
+/// The sprocket's pitch radius, m: ten teeth on the 0.154 m shoe pitch,
+/// `p / (2 sin(π/10))`.
+pub const SPROCKET_PITCH_RADIUS: f64 = 0.249_177_234_267_483_8;
+/// The final drive's reduction: derived, not published (none found for
+/// the M113A3) — the reduction that turns the sprocket at [`TOP_SPEED`]
+/// with the engine at its rated speed in fourth range, locked up:
+/// `ω_e r / (1.04 v)` = 3.833.
+pub const FINAL_DRIVE: f64 = ENGINE_RATED_SPEED * SPROCKET_PITCH_RADIUS / (RANGES[3] * TOP_SPEED);
+/// The X200-4 gearbox's efficiency (its gears, bearings, pumps and the
+/// hydrostatic steer unit idling), assumed: 0.92, the usual figure for a
+/// planetary range box of four ranges (Wong, *Theory of Ground Vehicles*,
+/// 4th ed., §3.3, gives 0.90–0.95 for a transmission in a high gear).
+pub const GEARBOX_EFFICIENCY: f64 = 0.92;
+/// The final drive's efficiency, assumed: 0.97, a single-stage gear
+/// reduction (Wong, §3.3: about 0.97 a stage).
+pub const FINAL_DRIVE_EFFICIENCY: f64 = 0.97;
+
+/// The 6V53T's full-load torque, N m, against engine speed, rad/s.
+/// Estimated: no published curve was found. Chrono's 6V53 map (a
+/// secondary source, [`chrono_simple_map`]) scaled so that at 2800 rpm it
+/// gives the 6V53T's rated 275 hp (×1.306: 587 lb·ft, 796 N m, up to
+/// 1000 rpm, 516 lb·ft at 2800), then falling linearly to 0 at the
+/// governor's high idle ([`ENGINE_HIGH_IDLE`]).
+pub fn engine_map() -> Vec<(f64, f64)> {
+    let at_rated = 395.0 * LB_FT * ENGINE_RATED_SPEED;
+    let scale = ENGINE_RATED_POWER / at_rated;
+    let mut map: Vec<(f64, f64)> = CHRONO_6V53_MAP
+        .iter()
+        .filter(|p| p.0 <= 2800.0)
+        .map(|&(n, t)| (n * RPM, t * LB_FT * scale))
+        .collect();
+    map.push((ENGINE_HIGH_IDLE, 0.0));
+    map
+}
+
+/// The M113A3's powertrain as one side's sprocket sees it, at full load:
+/// the Detroit Diesel 6V53T ([`engine_map`]) through the Allison X200-4's
+/// torque converter (stall torque ratio [`STALL_TORQUE_RATIO`], lock-up in
+/// ranges 2 to 4, OD1714), its four ranges ([`RANGES`]) chosen ideally,
+/// and the final drive ([`FINAL_DRIVE`]), half of it for this side.
+///
+/// The converter's curves are estimated (no X200-4 curves were found),
+/// each point stated:
+/// * torque ratio 3.32 at stall (published), then 2.45, 1.66, 1.17 and
+///   1.00 at speed ratios 0.25, 0.5, 0.725 and 0.85 (the coupling point),
+///   1.00 beyond: the efficiency `SR · TR` peaks at 0.85 between 0.725 and
+///   0.85, the figures of the Allison TX-200 family's single-stage
+///   converters;
+/// * capacity factor `K` flat from stall to a speed ratio of 0.5, rising
+///   by 1/7 at 0.75, 2/7 at 0.9 and to 18/7 of it at 1 (the shape of
+///   Chrono's M113 converter map, `M113_AutomaticTransmissionShafts.cpp`),
+///   scaled so that the converter stalls at [`STALL_SPEED`];
+/// * the lock-up clutch engages at a speed ratio of 0.9.
+///
+/// Chrono's own M113 shafts powertrain has a converter of stall ratio 2.0
+/// and no final drive (its gear ratios are overall ratios of 0.240 to
+/// 0.962, sprocket over engine speed): it reaches about a third of this
+/// one's torque at stall.
+pub fn powertrain() -> trackgen::vehicle::Powertrain {
+    let engine = engine_map();
+    let stall_torque = trackgen::vehicle::Driveline::full_load(&engine, STALL_SPEED);
+    let k0 = STALL_SPEED / stall_torque.sqrt();
+    let capacity = [(0.0, 7.0), (0.5, 7.0), (0.75, 8.0), (0.9, 9.0), (1.0, 18.0)];
+    trackgen::vehicle::Powertrain::Converter(Box::new(trackgen::vehicle::Driveline {
+        engine,
+        capacity: capacity.iter().map(|&(sr, k)| (sr, k0 * k / 7.0)).collect(),
+        torque_ratio: vec![
+            (0.0, STALL_TORQUE_RATIO),
+            (0.25, 2.45),
+            (0.5, 1.66),
+            (0.725, 1.17),
+            (0.85, 1.0),
+            (1.0, 1.0),
+        ],
+        ranges: RANGES.to_vec(),
+        lockup_ranges: vec![1, 2, 3],
+        lockup_speed_ratio: 0.9,
+        final_drive: FINAL_DRIVE,
+        gearbox_efficiency: GEARBOX_EFFICIENCY,
+        final_drive_efficiency: FINAL_DRIVE_EFFICIENCY,
+        share: 0.5,
+    }))
 }

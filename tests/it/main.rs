@@ -14,6 +14,7 @@ mod constant_expressions;
 mod contact_geometry;
 mod contact_jacobians;
 mod contact_laws;
+mod converter;
 mod derivatives;
 mod derivatives_pinocchio;
 mod energy_books;

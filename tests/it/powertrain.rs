@@ -43,8 +43,8 @@ use trackgen::vehicle::{Powertrain, Vehicle, build};
 use trackgen::vehicles::m113::{self, M113};
 
 #[test]
-fn the_m113s_envelope_is_the_spec_s_engine_through_its_gears() {
-    let powertrain = m113::powertrain();
+fn chrono_s_m113_envelope_is_its_engine_through_its_gears() {
+    let powertrain = m113::chrono_simple_map();
     let fraction = m113::DRIVELINE_EFFICIENCY * 0.5;
     let lb_ft = 1.355_817_948_331_400_4;
     let (at_rest, slope) = powertrain.limit(0.0);
@@ -121,6 +121,7 @@ fn below_its_peak_torque_speed_the_clutch_slips_at_the_peak() {
 fn every_envelope_s_slope_is_its_difference() {
     let envelopes = [
         m113::powertrain(),
+        m113::chrono_simple_map(),
         trackgen::vehicles::marder::powertrain(),
         Powertrain::Power {
             power: 5e4,

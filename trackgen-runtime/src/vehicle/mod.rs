@@ -16,6 +16,7 @@ pub mod arms;
 mod books;
 mod brake;
 mod config;
+mod converter;
 mod declared;
 mod drive;
 mod error;
@@ -33,6 +34,7 @@ mod workspace;
 
 pub use brake::{Brake, BrakeError};
 pub use config::VehicleConfig;
+pub use converter::{Driveline, OperatingPoint};
 pub use declared::{Vehicle, VehicleDynamics, build};
 pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap, speed_ramp};
 pub use error::{BuildError, ConfigError};

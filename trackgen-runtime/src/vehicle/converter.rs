@@ -1,0 +1,419 @@
+//! An engine driving the sprocket through a hydrodynamic torque converter,
+//! a range gearbox and a final drive: what it gives at full load.
+//!
+//! The converter's two curves against the speed ratio `SR = ω_t / ω_p`
+//! (turbine over pump) are the form of Wong, *Theory of Ground Vehicles*
+//! (4th ed., 2008), §3.4, and of Project Chrono's
+//! `ChAutomaticTransmissionShafts`:
+//!
+//! * the capacity factor `K(SR) = ω_p / √T_p` (rad/s per √(N m)): the pump
+//!   absorbs `T_p = (ω_p / K)²`;
+//! * the torque ratio `TR(SR) = T_t / T_p`: the turbine gives
+//!   `T_t = TR · T_p`, and the converter's efficiency is `SR · TR`.
+//!
+//! At full load the engine runs where its full-load torque equals what the
+//! pump absorbs at the turbine's speed, `T_e(ω_e) = (ω_e / K(ω_t / ω_e))²`
+//! (the engine's and the pump's inertia play no part in the steady
+//! match); at stall (`ω_t = 0`) that is `T_e(ω_e) = (ω_e / K(0))²` and the
+//! turbine gives `TR(0)` times it. A range with a lock-up clutch locks
+//! once the converter's speed ratio reaches the clutch's: the engine then
+//! turns with the turbine and gives its full-load torque there.
+
+use super::PowertrainError;
+
+/// An engine, a torque converter with a lock-up clutch, a range gearbox and
+/// a final drive, as one side's sprocket sees them at full load
+/// ([`Powertrain::Converter`](super::Powertrain::Converter)).
+///
+/// Every speed is in rad/s and every torque in N m; ratios are reductions
+/// (input speed over output speed, the way manuals state them: `4.16:1`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Driveline {
+    /// Full-load (net, flywheel) engine torque, N m, against engine speed,
+    /// rad/s: at least two points of increasing speed, linear between
+    /// them; no torque beyond the last point (a negative value, a
+    /// governor's cut-off, counts as none), and none below the first (the
+    /// engine does not run below it).
+    pub engine: Vec<(f64, f64)>,
+    /// The converter's capacity factor `K`, rad/s per √(N m), against the
+    /// speed ratio: from `SR = 0` (stall), increasing, each `K > 0`;
+    /// linear between points, the last value held beyond the last.
+    pub capacity: Vec<(f64, f64)>,
+    /// The converter's torque ratio `TR` against the speed ratio: from
+    /// `SR = 0`, increasing, each `TR ≥ 0`, and its efficiency `SR · TR`
+    /// at most 1 at every point; linear between points, the last value
+    /// held beyond the last.
+    pub torque_ratio: Vec<(f64, f64)>,
+    /// The gearbox's forward ranges, reductions (engine side over output
+    /// side), each more than 0, lowest range first.
+    pub ranges: Vec<f64>,
+    /// The ranges (0-based, into [`ranges`](Self::ranges)) whose lock-up
+    /// clutch engages.
+    pub lockup_ranges: Vec<usize>,
+    /// The converter's speed ratio at which the lock-up clutch engages, in
+    /// (0, 1].
+    pub lockup_speed_ratio: f64,
+    /// The final drive's reduction, more than 0.
+    pub final_drive: f64,
+    /// The gearbox's efficiency (its gears, bearings and pumps), in (0, 1].
+    pub gearbox_efficiency: f64,
+    /// The final drive's efficiency, in (0, 1].
+    pub final_drive_efficiency: f64,
+    /// This sprocket's share of the driveline's output: 0.5 for a planar
+    /// model of one side of a two-track vehicle; in (0, 1].
+    pub share: f64,
+}
+
+/// Where the engine and converter run at full load for one range at one
+/// turbine speed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct OperatingPoint {
+    /// Engine (and pump) speed, rad/s.
+    pub engine_speed: f64,
+    /// Engine torque, N m.
+    pub engine_torque: f64,
+    /// The converter's speed ratio (1 when locked).
+    pub speed_ratio: f64,
+    /// The converter's torque ratio (1 when locked).
+    pub torque_ratio: f64,
+    /// Whether the lock-up clutch is engaged.
+    pub locked: bool,
+    /// The turbine's torque, N m.
+    pub turbine_torque: f64,
+    /// The turbine torque's slope with the turbine's speed, N m s/rad.
+    pub turbine_slope: f64,
+}
+
+impl Driveline {
+    /// Every figure in its range: the maps' axes increasing and finite, the
+    /// converter's maps starting at `SR = 0`, no ratio or efficiency out of
+    /// range, no converter efficiency over 1.
+    pub fn check(&self) -> Result<(), PowertrainError> {
+        table(&self.engine, "engine's full-load torque", |_| true)?;
+        if self.engine[0].0 <= 0.0 {
+            // The engine runs from its first speed up: at 0 the converter's
+            // speed ratio has no meaning.
+            return Err(PowertrainError::Table {
+                what: "engine's full-load torque",
+                point: 0,
+            });
+        }
+        table(&self.capacity, "converter's capacity factor", |k| k > 0.0)?;
+        table(&self.torque_ratio, "converter's torque ratio", |t| t >= 0.0)?;
+        for (what, map) in [
+            ("capacity factor", &self.capacity),
+            ("torque ratio", &self.torque_ratio),
+        ] {
+            if map[0].0 != 0.0 {
+                return Err(PowertrainError::ConverterStart {
+                    what,
+                    first: map[0].0,
+                });
+            }
+        }
+        for (point, &(sr, tr)) in self.torque_ratio.iter().enumerate() {
+            if sr * tr > 1.0 {
+                return Err(PowertrainError::ConverterEfficiency {
+                    point,
+                    efficiency: sr * tr,
+                });
+            }
+        }
+        if self.ranges.is_empty() {
+            return Err(PowertrainError::Ratio {
+                gear: 0,
+                ratio: f64::NAN,
+            });
+        }
+        for (gear, &ratio) in self.ranges.iter().enumerate() {
+            if !(ratio.is_finite() && ratio > 0.0) {
+                return Err(PowertrainError::Ratio { gear, ratio });
+            }
+        }
+        if !(self.final_drive.is_finite() && self.final_drive > 0.0) {
+            return Err(PowertrainError::FinalDrive(self.final_drive));
+        }
+        if let Some(&range) = self.lockup_ranges.iter().find(|&&r| r >= self.ranges.len()) {
+            return Err(PowertrainError::LockupRange {
+                range,
+                ranges: self.ranges.len(),
+            });
+        }
+        if !(self.lockup_speed_ratio > 0.0 && self.lockup_speed_ratio <= 1.0) {
+            return Err(PowertrainError::LockupSpeedRatio(self.lockup_speed_ratio));
+        }
+        for (what, value) in [
+            ("gearbox_efficiency", self.gearbox_efficiency),
+            ("final_drive_efficiency", self.final_drive_efficiency),
+            ("share", self.share),
+        ] {
+            if !(value > 0.0 && value <= 1.0) {
+                return Err(PowertrainError::Stage { what, value });
+            }
+        }
+        Ok(())
+    }
+
+    /// An engine map's full-load torque at `speed` (rad/s), N m: linear
+    /// between its points, none below its first speed or beyond its last,
+    /// none where it falls below 0 (as [`engine`](Self::engine) is read).
+    pub fn full_load(engine: &[(f64, f64)], speed: f64) -> f64 {
+        engine_torque(engine, speed).0
+    }
+
+    /// The part of the turbine's torque that reaches this sprocket: the
+    /// stages' efficiencies times the side's share.
+    pub fn fraction(&self) -> f64 {
+        self.gearbox_efficiency * self.final_drive_efficiency * self.share
+    }
+
+    /// The overall reduction in range `range` (0-based), engine side over
+    /// sprocket: the range's times the final drive's.
+    pub fn reduction(&self, range: usize) -> f64 {
+        self.ranges[range] * self.final_drive
+    }
+
+    /// The full-load operating point in range `range` (0-based) with the
+    /// turbine at `turbine_speed` (rad/s, ≥ 0): the converter's match, or
+    /// the lock-up's where the range locks and the match's speed ratio
+    /// reaches the clutch's. `None` where the engine cannot drive the
+    /// turbine that fast.
+    pub fn operating_point(&self, range: usize, turbine_speed: f64) -> Option<OperatingPoint> {
+        let matched = self.converter_match(turbine_speed);
+        let locks = self.lockup_ranges.contains(&range)
+            && matched.is_none_or(|m| m.speed_ratio >= self.lockup_speed_ratio);
+        if locks {
+            let (torque, slope) = engine_torque(&self.engine, turbine_speed);
+            if torque > 0.0 {
+                return Some(OperatingPoint {
+                    engine_speed: turbine_speed,
+                    engine_torque: torque,
+                    speed_ratio: 1.0,
+                    torque_ratio: 1.0,
+                    locked: true,
+                    turbine_torque: torque,
+                    turbine_slope: slope,
+                });
+            }
+        }
+        matched
+    }
+
+    /// The converter's full-load match at turbine speed `wt` (rad/s, ≥ 0):
+    /// the lowest engine speed at or above both `wt` and the map's first
+    /// speed where the engine's full-load torque falls to what the pump
+    /// absorbs, `g(ω_e) = T_e(ω_e) − (ω_e / K(wt / ω_e))² = 0` crossing
+    /// from positive (the speed the engine, opened from idle, accelerates
+    /// to). `None` where no such speed exists (the pump, even at
+    /// `SR = 1`, absorbs more than the engine gives).
+    pub fn converter_match(&self, wt: f64) -> Option<OperatingPoint> {
+        let first = self.engine[0].0;
+        let last = self.engine[self.engine.len() - 1].0;
+        let g = |we: f64| self.imbalance(we, wt);
+        let low = wt.max(first);
+        if !(low < last) || g(low).0 <= 0.0 {
+            return None;
+        }
+        // Bracket by the pieces' ends: the engine map's speeds and the
+        // speeds where the converter's maps have points (`ω_e = wt / SR`).
+        let mut ends: Vec<f64> = self.engine.iter().map(|p| p.0).collect();
+        if wt > 0.0 {
+            for &(sr, _) in self.capacity.iter().chain(&self.torque_ratio) {
+                if sr > 0.0 {
+                    ends.push(wt / sr);
+                }
+            }
+        }
+        ends.push(last);
+        ends.retain(|&w| w > low && w <= last);
+        ends.sort_by(f64::total_cmp);
+        let mut a = low;
+        for b in ends {
+            if g(b).0 <= 0.0 {
+                let we = solve_piece(&g, a, b);
+                return Some(self.matched(we, wt));
+            }
+            a = b;
+        }
+        None
+    }
+
+    /// `g(ω_e) = T_e(ω_e) − (ω_e / K(ω_t / ω_e))²` and `∂g/∂ω_e`.
+    fn imbalance(&self, we: f64, wt: f64) -> (f64, f64) {
+        let (te, dte) = engine_torque(&self.engine, we);
+        let (tp, dtp_dwe, _) = self.pump_torque(we, wt);
+        (te - tp, dte - dtp_dwe)
+    }
+
+    /// What the pump absorbs at engine speed `we` and turbine speed `wt`,
+    /// `T_p = (ω_e / K(SR))²`, and its partial slopes with `ω_e` and `ω_t`.
+    fn pump_torque(&self, we: f64, wt: f64) -> (f64, f64, f64) {
+        let sr = wt / we;
+        let (k, dk) = lerp(&self.capacity, sr);
+        let tp = (we / k) * (we / k);
+        // ∂T_p/∂K = −2 T_p / K; ∂SR/∂ω_e = −SR/ω_e, ∂SR/∂ω_t = 1/ω_e.
+        let dtp_dk = -2.0 * tp / k;
+        (
+            tp,
+            2.0 * tp / we + dtp_dk * dk * (-sr / we),
+            dtp_dk * dk / we,
+        )
+    }
+
+    /// The operating point at the converter's match `we` for turbine speed
+    /// `wt`, with the turbine torque's total slope with `wt` by the
+    /// implicit function theorem on `g(ω_e, ω_t) = 0`.
+    fn matched(&self, we: f64, wt: f64) -> OperatingPoint {
+        let sr = wt / we;
+        let (te, dte) = engine_torque(&self.engine, we);
+        let (tr, dtr) = lerp(&self.torque_ratio, sr);
+        let (_, dtp_dwe, dtp_dwt) = self.pump_torque(we, wt);
+        // g = T_e − T_p: dω_e/dω_t = −g_t / g_e = −T_p,t / (T_p,e − T_e').
+        let dwe = dtp_dwt / (dte - dtp_dwe);
+        let dsr = 1.0 / we - sr / we * dwe;
+        // T_t = TR(SR) T_p with T_p = T_e(ω_e) on the match.
+        OperatingPoint {
+            engine_speed: we,
+            engine_torque: te,
+            speed_ratio: sr,
+            torque_ratio: tr,
+            locked: false,
+            turbine_torque: tr * te,
+            turbine_slope: dtr * dsr * te + tr * dte * dwe,
+        }
+    }
+
+    /// The most torque any range gives the sprocket at sprocket speed
+    /// `speed` (rad/s, ≥ 0), N m, its slope with the speed, N m s/rad, and
+    /// the range (0-based) that gives it (`None` if none drives).
+    pub fn envelope(&self, speed: f64) -> (f64, f64, Option<usize>) {
+        let fraction = self.fraction();
+        let mut best = (0.0, 0.0, None);
+        for range in 0..self.ranges.len() {
+            let n = self.reduction(range);
+            if let Some(point) = self.operating_point(range, n * speed) {
+                let torque = fraction * n * point.turbine_torque;
+                if torque > best.0 {
+                    best = (torque, fraction * n * n * point.turbine_slope, Some(range));
+                }
+            }
+        }
+        best
+    }
+
+    /// The most power the sprocket gets at full load, W: the envelope's
+    /// largest `τ ω`, by a scan of 4000 speeds up to the highest range's
+    /// reach refined by golden sections about the best.
+    pub fn max_power(&self) -> f64 {
+        let lowest = (0..self.ranges.len())
+            .map(|r| self.reduction(r))
+            .fold(f64::INFINITY, f64::min);
+        let top = self.engine[self.engine.len() - 1].0 / lowest;
+        // The envelope is piecewise smooth: a fine scan of its power,
+        // refined at its best sample by golden sections.
+        let power = |w: f64| self.envelope(w).0 * w;
+        let n = 4000;
+        let (mut best_w, mut best) = (0.0, 0.0);
+        for i in 0..=n {
+            let w = top * i as f64 / n as f64;
+            let p = power(w);
+            if p > best {
+                (best_w, best) = (w, p);
+            }
+        }
+        let step = top / n as f64;
+        let (mut a, mut b) = ((best_w - step).max(0.0), (best_w + step).min(top));
+        let phi = 0.5 * (5f64.sqrt() - 1.0);
+        for _ in 0..80 {
+            let c = b - phi * (b - a);
+            let d = a + phi * (b - a);
+            if power(c) >= power(d) {
+                b = d;
+            } else {
+                a = c;
+            }
+        }
+        best.max(power(0.5 * (a + b)))
+    }
+}
+
+/// The root of `g` in `[a, b]` where `g(a) > 0 ≥ g(b)`, `g` smooth in
+/// between: Newton's steps kept inside the shrinking bracket, bisection
+/// where a step would leave it, to the last bits of `ω_e`.
+fn solve_piece(g: &impl Fn(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
+    let mut x = 0.5 * (a + b);
+    for _ in 0..100 {
+        let (value, slope) = g(x);
+        if value > 0.0 {
+            a = x;
+        } else {
+            b = x;
+        }
+        let newton = x - value / slope;
+        let next = if newton > a && newton < b {
+            newton
+        } else {
+            0.5 * (a + b)
+        };
+        if (next - x).abs() <= 4.0 * f64::EPSILON * x.abs() || b - a <= f64::EPSILON * b {
+            return next;
+        }
+        x = next;
+    }
+    x
+}
+
+/// A table's value at `x`, linear between points and held beyond the ends,
+/// and its slope (0 where held).
+fn lerp(points: &[(f64, f64)], x: f64) -> (f64, f64) {
+    let (first, last) = (points[0], points[points.len() - 1]);
+    if x <= first.0 {
+        return (first.1, 0.0);
+    }
+    if x >= last.0 {
+        return (last.1, 0.0);
+    }
+    let i = points
+        .partition_point(|p| p.0 <= x)
+        .clamp(1, points.len() - 1);
+    let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
+    let slope = (y1 - y0) / (x1 - x0);
+    (y0 + slope * (x - x0), slope)
+}
+
+/// The engine's full-load torque at `w` and its slope: the map, linear
+/// between its points, none below its first speed or beyond its last, and
+/// none where the map falls below 0 (a governor's cut-off).
+fn engine_torque(map: &[(f64, f64)], w: f64) -> (f64, f64) {
+    if w < map[0].0 || w > map[map.len() - 1].0 {
+        return (0.0, 0.0);
+    }
+    let (torque, slope) = lerp(map, w);
+    if torque > 0.0 {
+        (torque, slope)
+    } else {
+        (0.0, 0.0)
+    }
+}
+
+/// A table of two or more finite points of increasing abscissa, each value
+/// accepted by `valid`.
+fn table(
+    points: &[(f64, f64)],
+    what: &'static str,
+    valid: impl Fn(f64) -> bool,
+) -> Result<(), PowertrainError> {
+    if points.len() < 2 {
+        return Err(PowertrainError::Table {
+            what,
+            point: points.len(),
+        });
+    }
+    for (i, &(x, y)) in points.iter().enumerate() {
+        let increasing = i == 0 || x > points[i - 1].0;
+        if !(x.is_finite() && y.is_finite() && x >= 0.0 && increasing && valid(y)) {
+            return Err(PowertrainError::Table { what, point: i });
+        }
+    }
+    Ok(())
+}
