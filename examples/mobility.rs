@@ -54,7 +54,9 @@ use plotters::prelude::*;
 use rayon::prelude::*;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::mobility::search::{Limit, Search};
-use trackgen::mobility::{EventError, EventSettings, Footprint, grade, obstacle, ride, soil};
+use trackgen::mobility::{
+    EventError, EventSettings, Footprint, Published, grade, obstacle, ride, soil,
+};
 use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::{m113, marder};
 
@@ -397,12 +399,17 @@ fn tasks<'a, V: Vehicle>(
 fn main() -> ExitCode {
     let args = Args::parse();
     match args.vehicle {
-        Which::M113 => run::<m113::M113>(&args, "m113", m113::powertrain()),
-        Which::Marder => run::<marder::Marder>(&args, "marder", marder::powertrain()),
+        Which::M113 => run::<m113::M113>(&args, "m113", m113::powertrain(), &m113::PUBLISHED),
+        Which::Marder => run::<marder::Marder>(&args, "marder", marder::powertrain(), &[]),
     }
 }
 
-fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode {
+fn run<V: Vehicle>(
+    args: &Args,
+    name: &str,
+    powertrain: Powertrain,
+    published: &[Published],
+) -> ExitCode {
     let mut settings = EventSettings::new(powertrain);
     if args.quick {
         settings.speed_tolerance = 1.0;
@@ -425,7 +432,7 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
         .unwrap_or_else(|| Path::new("out/mobility").join(name));
     if !args.merge.is_empty() {
         return match slices::merge(&args.merge, work.len()) {
-            Ok((rows, wall)) => finish(args, name, &dir, &rows, wall),
+            Ok((rows, wall)) => finish(args, name, published, &dir, &rows, wall),
             Err(e) => {
                 eprintln!("error: {e}");
                 ExitCode::FAILURE
@@ -485,14 +492,22 @@ fn run<V: Vehicle>(args: &Args, name: &str, powertrain: Powertrain) -> ExitCode 
         };
     }
     let rows: Vec<Row> = done.into_iter().flat_map(|(_, r)| r).collect();
-    finish(args, name, &dir, &rows, wall)
+    finish(args, name, published, &dir, &rows, wall)
 }
 
 /// The set's outputs, summary and exit status from its rows.
-fn finish(args: &Args, name: &str, dir: &Path, rows: &[Row], wall: f64) -> ExitCode {
+fn finish(
+    args: &Args,
+    name: &str,
+    published: &[Published],
+    dir: &Path,
+    rows: &[Row],
+    wall: f64,
+) -> ExitCode {
     let rows = rows.to_vec();
-    let written = write_all(dir, name, &rows, wall);
+    let written = write_all(dir, name, published, &rows, wall);
     print_summary(name, &rows, wall);
+    print_against(published, &rows);
     if args.json {
         for row in &rows {
             println!("{}", json(row));
@@ -561,6 +576,62 @@ fn print_summary(name: &str, rows: &[Row], wall: f64) {
     }
 }
 
+/// Each published figure with the set's answer to it (the row of that
+/// quantity with no parameter) and the verdict: agrees, misses (by how
+/// much; the guide's "Against the real vehicle" gives the cause measured),
+/// or not run.
+fn against<'a>(
+    published: &'a [Published],
+    rows: &'a [Row],
+) -> Vec<(&'a Published, Option<&'a Row>, String)> {
+    published
+        .iter()
+        .map(|figure| {
+            let row = rows
+                .iter()
+                .find(|r| r.quantity == figure.quantity && r.parameter.is_none());
+            let verdict = match row {
+                None => "not run".to_string(),
+                Some(r) => {
+                    let c = figure.compare(r.value);
+                    if c.agrees {
+                        format!(
+                            "agrees within {:.0} %",
+                            100.0 * trackgen::mobility::AGREEMENT
+                        )
+                    } else if c.ratio.is_finite() {
+                        format!(
+                            "misses by {:+.0} % (the guide, Mobility events, \"Against the real \
+                             vehicle\", gives the cause)",
+                            100.0 * (c.ratio - 1.0)
+                        )
+                    } else {
+                        format!("no answer ({})", r.relation)
+                    }
+                }
+            };
+            (figure, row, verdict)
+        })
+        .collect()
+}
+
+/// The published figures beside the answers, on standard output after
+/// the table.
+fn print_against(published: &[Published], rows: &[Row]) {
+    let against = against(published, rows);
+    if against.is_empty() {
+        return;
+    }
+    println!("\nagainst the real vehicle:");
+    for (figure, row, verdict) in against {
+        let answer = row.map_or("not run".to_string(), value_text);
+        println!(
+            "{:<26} {:>12} against {:>6} {:<14} {verdict}\n{:<26} source: {}",
+            figure.quantity, answer, figure.value, figure.unit, "", figure.source
+        );
+    }
+}
+
 fn json(row: &Row) -> String {
     let number = |v: f64| v.is_finite().then_some(v);
     serde_json::json!({
@@ -581,6 +652,7 @@ fn json(row: &Row) -> String {
 fn write_all(
     dir: &Path,
     name: &str,
+    published: &[Published],
     rows: &[Row],
     wall: f64,
 ) -> Result<Vec<String>, Box<dyn std::error::Error>> {
@@ -670,7 +742,13 @@ fn write_all(
     }
     fs::write(
         dir.join("report.html"),
-        report(name, rows, wall, svg.as_deref().unwrap_or_default()),
+        report(
+            name,
+            published,
+            rows,
+            wall,
+            svg.as_deref().unwrap_or_default(),
+        ),
     )?;
     files.push("report.html".into());
     Ok(files)
@@ -834,7 +912,7 @@ where
     Ok(())
 }
 
-fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
+fn report(name: &str, published: &[Published], rows: &[Row], wall: f64, svg: &str) -> String {
     let runs: usize = rows.iter().map(|r| r.runs).sum();
     let mut html = String::new();
     let _ = write!(
@@ -865,6 +943,28 @@ fn report(name: &str, rows: &[Row], wall: f64, svg: &str) -> String {
         );
     }
     html.push_str("</table>");
+    let against = against(published, rows);
+    if !against.is_empty() {
+        html.push_str(
+            "<h2>Against the real vehicle</h2><table><tr><th>quantity</th><th>answer</th>\
+             <th>published</th><th>unit</th><th>ratio</th><th>verdict</th><th>source</th></tr>",
+        );
+        for (figure, row, verdict) in against {
+            let answer = row.map_or("not run".to_string(), value_text);
+            let ratio = row.map_or(f64::NAN, |r| figure.compare(r.value).ratio);
+            let _ = write!(
+                html,
+                "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>\
+                 <td class=\"n\">{ratio:.2}</td><td>{verdict}</td><td>{}</td></tr>",
+                figure.quantity,
+                answer.replace('>', "&gt;").replace('<', "&lt;"),
+                figure.value,
+                figure.unit,
+                figure.source
+            );
+        }
+        html.push_str("</table>");
+    }
     let pictures: Vec<(&Row, &String)> = rows
         .iter()
         .filter_map(|r| Some((r, r.search.as_ref()?.picture.as_ref()?)))

@@ -282,3 +282,30 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
         share: 0.5,
     }))
 }
+
+/// The real M113A3's published mobility figures that the pitch-plane
+/// events answer, each with its source. The grade, the vertical obstacle
+/// and the trench are the M113 family's (the A3 keeps them: its heavier
+/// hull came with the larger engine and the converter transmission).
+pub const PUBLISHED: [trackgen::mobility::Published; 3] = [
+    trackgen::mobility::Published {
+        quantity: "steepest grade",
+        value: 0.60,
+        unit: "rise over run",
+        source: "AFV Database, M113 (afvdatabase.com/usa/m113.html): maximum grade 60 %",
+    },
+    trackgen::mobility::Published {
+        quantity: "highest step",
+        value: 0.61,
+        unit: "m",
+        source: "power-projection.com, M113A3 (the manufacturer's figures): vertical \
+                 obstacle 0.61 m; AFV Database, M113: 24 in",
+    },
+    trackgen::mobility::Published {
+        quantity: "widest gap",
+        value: 1.68,
+        unit: "m",
+        source: "power-projection.com, M113A3 (the manufacturer's figures): trench \
+                 crossing 1.68 m; AFV Database, M113: 66 in",
+    },
+];

@@ -19,10 +19,12 @@
 mod error;
 pub mod grade;
 pub mod obstacle;
+mod published;
 pub mod ride;
 mod runs;
 pub mod search;
 pub mod soil;
 
 pub use error::EventError;
+pub use published::{AGREEMENT, Comparison, Published};
 pub use runs::{EventSettings, Footprint, STALL_DISTANCE, STALL_TIME};

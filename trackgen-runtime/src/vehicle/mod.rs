@@ -28,6 +28,7 @@ mod jacobian;
 mod layout;
 mod linearisation;
 mod powertrain;
+mod powertrain_error;
 mod record;
 mod system;
 mod workspace;
@@ -45,7 +46,8 @@ pub use fitted::{
 };
 pub use geometry::Geometry;
 pub use layout::StateLayout;
-pub use powertrain::{Powertrain, PowertrainError};
+pub use powertrain::Powertrain;
+pub use powertrain_error::PowertrainError;
 pub use record::VehicleRecord;
 pub use system::VehicleSystem;
 
