@@ -176,13 +176,10 @@ impl Driveline {
     /// The full-load operating point in range `range` (0-based) with the
     /// turbine at `turbine_speed` (rad/s, ≥ 0): the converter's match, or
     /// the lock-up's where the range locks and the match's speed ratio
-    /// reaches the clutch's. `None` where the engine cannot drive the
-    /// turbine that fast.
+    /// reaches the clutch's ([`locks`](Self::locks)). `None` where the
+    /// engine cannot drive the turbine that fast.
     pub fn operating_point(&self, range: usize, turbine_speed: f64) -> Option<OperatingPoint> {
-        let matched = self.converter_match(turbine_speed);
-        let locks = self.lockup_ranges.contains(&range)
-            && matched.is_none_or(|m| m.speed_ratio >= self.lockup_speed_ratio);
-        if locks {
+        if self.lockup_ranges.contains(&range) && self.locks(turbine_speed) {
             let (torque, slope) = engine_torque(&self.engine, turbine_speed);
             if torque > 0.0 {
                 return Some(OperatingPoint {
@@ -196,42 +193,50 @@ impl Driveline {
                 });
             }
         }
-        matched
+        self.converter_match(turbine_speed)
+    }
+
+    /// Whether a lock-up clutch engages with the turbine at `wt` (rad/s):
+    /// where the converter has no match, or its match's speed ratio is at
+    /// least [`lockup_speed_ratio`](Self::lockup_speed_ratio) — the match
+    /// lies at or below `ω_x = wt / SR_lock`, so `g(ω_x) ≤ 0` (the pump
+    /// there absorbs at least what the engine gives), without solving the
+    /// match.
+    pub fn locks(&self, wt: f64) -> bool {
+        let low = wt.max(self.engine[0].0);
+        if !(low < self.engine[self.engine.len() - 1].0) || self.imbalance(low, wt).0 <= 0.0 {
+            return true;
+        }
+        let at = wt / self.lockup_speed_ratio;
+        at >= low && self.imbalance(at, wt).0 <= 0.0
     }
 
     /// The converter's full-load match at turbine speed `wt` (rad/s, ≥ 0):
-    /// the lowest engine speed at or above both `wt` and the map's first
-    /// speed where the engine's full-load torque falls to what the pump
-    /// absorbs, `g(ω_e) = T_e(ω_e) − (ω_e / K(wt / ω_e))² = 0` crossing
-    /// from positive (the speed the engine, opened from idle, accelerates
-    /// to). `None` where no such speed exists (the pump, even at
-    /// `SR = 1`, absorbs more than the engine gives).
+    /// an engine speed at or above both `wt` and the map's first speed
+    /// where the engine's full-load torque equals what the pump absorbs,
+    /// `g(ω_e) = T_e(ω_e) − (ω_e / K(wt / ω_e))² = 0`, in the first piece
+    /// of the engine map at whose end `g ≤ 0` (so `g` crosses from
+    /// positive: the speed the engine, opened from idle, accelerates to).
+    /// The root is the only one where the full-load torque does not rise
+    /// faster with speed than the pump's absorption, the condition for the
+    /// match to be stable. `None` where no such speed exists (the pump,
+    /// even at `SR = 1`, absorbs more than the engine gives).
     pub fn converter_match(&self, wt: f64) -> Option<OperatingPoint> {
-        let first = self.engine[0].0;
-        let last = self.engine[self.engine.len() - 1].0;
-        let g = |we: f64| self.imbalance(we, wt);
-        let low = wt.max(first);
-        if !(low < last) || g(low).0 <= 0.0 {
+        let low = wt.max(self.engine[0].0);
+        if !(low < self.engine[self.engine.len() - 1].0) {
             return None;
         }
-        // Bracket by the pieces' ends: the engine map's speeds and the
-        // speeds where the converter's maps have points (`ω_e = wt / SR`).
-        let mut ends: Vec<f64> = self.engine.iter().map(|p| p.0).collect();
-        if wt > 0.0 {
-            for &(sr, _) in self.capacity.iter().chain(&self.torque_ratio) {
-                if sr > 0.0 {
-                    ends.push(wt / sr);
-                }
-            }
+        let g = |we: f64| self.imbalance(we, wt);
+        if g(low).0 <= 0.0 {
+            return None;
         }
-        ends.push(last);
-        ends.retain(|&w| w > low && w <= last);
-        ends.sort_by(f64::total_cmp);
         let mut a = low;
-        for b in ends {
+        for &(b, _) in &self.engine {
+            if b <= low {
+                continue;
+            }
             if g(b).0 <= 0.0 {
-                let we = solve_piece(&g, a, b);
-                return Some(self.matched(we, wt));
+                return Some(self.matched(solve_piece(&g, a, b), wt));
             }
             a = b;
         }
@@ -288,9 +293,18 @@ impl Driveline {
     /// the range (0-based) that gives it (`None` if none drives).
     pub fn envelope(&self, speed: f64) -> (f64, f64, Option<usize>) {
         let fraction = self.fraction();
+        // No range gives more than its reduction times the most any
+        // turbine gives: the largest torque ratio (or 1, locked) times the
+        // engine's largest torque. A range whose bound is below the best
+        // so far is not solved.
+        let most = |map: &[(f64, f64)]| map.iter().fold(0.0f64, |m, p| m.max(p.1));
+        let turbine_bound = most(&self.torque_ratio).max(1.0) * most(&self.engine);
         let mut best = (0.0, 0.0, None);
         for range in 0..self.ranges.len() {
             let n = self.reduction(range);
+            if fraction * n * turbine_bound <= best.0 {
+                continue;
+            }
             if let Some(point) = self.operating_point(range, n * speed) {
                 let torque = fraction * n * point.turbine_torque;
                 if torque > best.0 {
