@@ -244,7 +244,7 @@ fn lock_up_engages_as_declared() {
     let mut locked_seen = [false; 4];
     for i in 1..400 {
         let turbine = 320.0 * i as f64 / 400.0;
-        for range in 0..4 {
+        for (range, seen) in locked_seen.iter_mut().enumerate() {
             let Some(point) = driveline.operating_point(range, turbine) else {
                 continue;
             };
@@ -256,7 +256,7 @@ fn lock_up_engages_as_declared() {
             let should = matched.is_none_or(|m| m.speed_ratio >= 0.9);
             assert_eq!(point.locked, should, "range {} at {turbine}", range + 1);
             if point.locked {
-                locked_seen[range] = true;
+                *seen = true;
                 assert_eq!(point.engine_speed, turbine);
                 assert_eq!(point.speed_ratio, 1.0);
             }

@@ -204,7 +204,7 @@ impl Driveline {
     /// match.
     pub fn locks(&self, wt: f64) -> bool {
         let low = wt.max(self.engine[0].0);
-        if !(low < self.engine[self.engine.len() - 1].0) || self.imbalance(low, wt).0 <= 0.0 {
+        if low >= self.engine[self.engine.len() - 1].0 || self.imbalance(low, wt).0 <= 0.0 {
             return true;
         }
         let at = wt / self.lockup_speed_ratio;
@@ -223,7 +223,7 @@ impl Driveline {
     /// even at `SR = 1`, absorbs more than the engine gives).
     pub fn converter_match(&self, wt: f64) -> Option<OperatingPoint> {
         let low = wt.max(self.engine[0].0);
-        if !(low < self.engine[self.engine.len() - 1].0) {
+        if low >= self.engine[self.engine.len() - 1].0 {
             return None;
         }
         let g = |we: f64| self.imbalance(we, wt);
