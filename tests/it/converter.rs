@@ -343,3 +343,30 @@ fn bad_driveline_data_is_refused() {
         "{message}"
     );
 }
+
+/// The most power at the sprocket against a scan of the envelope's
+/// `τ ω` every 1e-4 of its reach (the envelope is smooth between its
+/// kinks, so the scan's miss is below 1e-6 of the peak).
+#[test]
+fn the_most_power_is_the_envelope_s_peak() {
+    let powertrain = m113::powertrain();
+    let reach = 1.1 * m113::ENGINE_HIGH_IDLE / (1.04 * m113::FINAL_DRIVE);
+    let scanned = (0..=10_000)
+        .map(|i| {
+            let w = reach * i as f64 / 10_000.0;
+            powertrain.limit(w).0 * w
+        })
+        .fold(0.0, f64::max);
+    let peak = powertrain.max_power();
+    assert!(
+        peak >= scanned * (1.0 - 1e-12) && peak <= scanned * (1.0 + 1e-6),
+        "{peak} W against the scan's {scanned} W"
+    );
+    // Locked in fourth at the rated speed, the sprocket gets the rated
+    // power through the stages: the peak is at least that.
+    let rated = m113::ENGINE_RATED_POWER * 0.92 * 0.97 * 0.5;
+    assert!(
+        peak >= rated * (1.0 - 1e-12),
+        "{peak} W, rated through the stages {rated} W"
+    );
+}
