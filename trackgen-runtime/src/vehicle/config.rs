@@ -139,16 +139,25 @@ impl VehicleConfig {
     }
 
     /// The powertrain's cap on the drive at sprocket speed `omega`
-    /// (rad/s): none without a powertrain.
-    pub(super) fn torque_cap(&self, omega: f64) -> TorqueCap {
+    /// (rad/s), its torque at rest being `stall` (N m,
+    /// [`stall_torque`](Self::stall_torque), found once per build): none
+    /// without a powertrain.
+    pub(super) fn torque_cap(&self, omega: f64, stall: f64) -> TorqueCap {
         self.powertrain.as_ref().map_or(TorqueCap::NONE, |p| {
             let (value, slope) = p.limit(omega.abs());
             TorqueCap {
                 value,
                 slope,
-                stall: p.limit(0.0).0,
+                stall,
             }
         })
+    }
+
+    /// The powertrain's torque at rest, N m (∞ without a powertrain).
+    pub(super) fn stall_torque(&self) -> f64 {
+        self.powertrain
+            .as_ref()
+            .map_or(f64::INFINITY, |p| p.limit(0.0).0)
     }
 
     /// The arms, checked to be one per arm of a chassis whose arms are at

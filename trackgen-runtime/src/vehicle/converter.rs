@@ -227,7 +227,8 @@ impl Driveline {
             return None;
         }
         let g = |we: f64| self.imbalance(we, wt);
-        if g(low).0 <= 0.0 {
+        let mut ga = g(low).0;
+        if ga <= 0.0 {
             return None;
         }
         let mut a = low;
@@ -235,10 +236,11 @@ impl Driveline {
             if b <= low {
                 continue;
             }
-            if g(b).0 <= 0.0 {
-                return Some(self.matched(solve_piece(&g, a, b), wt));
+            let gb = g(b).0;
+            if gb <= 0.0 {
+                return Some(self.matched(solve_piece(&g, (a, ga), (b, gb)), wt));
             }
-            a = b;
+            (a, ga) = (b, gb);
         }
         None
     }
@@ -293,16 +295,12 @@ impl Driveline {
     /// the range (0-based) that gives it (`None` if none drives).
     pub fn envelope(&self, speed: f64) -> (f64, f64, Option<usize>) {
         let fraction = self.fraction();
-        // No range gives more than its reduction times the most any
-        // turbine gives: the largest torque ratio (or 1, locked) times the
-        // engine's largest torque. A range whose bound is below the best
-        // so far is not solved.
-        let most = |map: &[(f64, f64)]| map.iter().fold(0.0f64, |m, p| m.max(p.1));
-        let turbine_bound = most(&self.torque_ratio).max(1.0) * most(&self.engine);
         let mut best = (0.0, 0.0, None);
         for range in 0..self.ranges.len() {
             let n = self.reduction(range);
-            if fraction * n * turbine_bound <= best.0 {
+            // A range whose bound cannot beat the best so far is not solved.
+            let locking = self.lockup_ranges.contains(&range);
+            if fraction * n * self.turbine_bound(n * speed, locking) <= best.0 {
                 continue;
             }
             if let Some(point) = self.operating_point(range, n * speed) {
@@ -313,6 +311,18 @@ impl Driveline {
             }
         }
         best
+    }
+
+    /// At most what the turbine gives at turbine speed `wt` (rad/s), N m:
+    /// the engine turns at least as fast as the turbine, so at most the
+    /// map's largest torque from `wt` up, times the largest torque ratio
+    /// at a speed ratio of at least `wt` over the map's last speed (or 1
+    /// where the range may lock).
+    fn turbine_bound(&self, wt: f64, locking: bool) -> f64 {
+        let last = self.engine[self.engine.len() - 1].0;
+        let torque = most_from(&self.engine, wt.max(self.engine[0].0));
+        let ratio = most_from(&self.torque_ratio, wt / last);
+        torque * if locking { ratio.max(1.0) } else { ratio }
     }
 
     /// The most power the sprocket gets at full load, W: the envelope's
@@ -351,11 +361,21 @@ impl Driveline {
     }
 }
 
-/// The root of `g` in `[a, b]` where `g(a) > 0 ≥ g(b)`, `g` smooth in
-/// between: Newton's steps kept inside the shrinking bracket, bisection
-/// where a step would leave it, to the last bits of `ω_e`.
-fn solve_piece(g: &impl Fn(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
-    let mut x = 0.5 * (a + b);
+/// The root of `g` in `[a, b]` where `g(a) > 0 ≥ g(b)` (given with their
+/// values), `g` piecewise smooth in between: from the secant's crossing,
+/// Newton's steps kept inside the shrinking bracket, bisection where a
+/// step would leave it. It stops after a Newton step shorter than 1e-10
+/// of `ω_e`: quadratic convergence leaves an error of the order of that
+/// step squared, at the last bits.
+fn solve_piece(
+    g: &impl Fn(f64) -> (f64, f64),
+    (mut a, ga): (f64, f64),
+    (mut b, gb): (f64, f64),
+) -> f64 {
+    let mut x = a + (b - a) * ga / (ga - gb);
+    if !(x > a && x < b) {
+        x = 0.5 * (a + b);
+    }
     for _ in 0..100 {
         let (value, slope) = g(x);
         if value > 0.0 {
@@ -364,17 +384,27 @@ fn solve_piece(g: &impl Fn(f64) -> (f64, f64), mut a: f64, mut b: f64) -> f64 {
             b = x;
         }
         let newton = x - value / slope;
-        let next = if newton > a && newton < b {
-            newton
+        if newton > a && newton < b {
+            if (newton - x).abs() <= 1e-10 * x.abs() {
+                return newton;
+            }
+            x = newton;
         } else {
-            0.5 * (a + b)
-        };
-        if (next - x).abs() <= 4.0 * f64::EPSILON * x.abs() || b - a <= f64::EPSILON * b {
-            return next;
+            x = 0.5 * (a + b);
         }
-        x = next;
+        if b - a <= f64::EPSILON * b {
+            return x;
+        }
     }
     x
+}
+
+/// The largest value of a table (as [`lerp`] reads it) at `x` or beyond.
+fn most_from(points: &[(f64, f64)], x: f64) -> f64 {
+    points
+        .iter()
+        .filter(|p| p.0 > x)
+        .fold(lerp(points, x).0, |m, p| m.max(p.1))
 }
 
 /// A table's value at `x`, linear between points and held beyond the ends,

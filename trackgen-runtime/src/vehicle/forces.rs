@@ -106,6 +106,10 @@ pub(super) struct Sprocket {
     pub body: usize,
     pub pitch_radius: f64,
     pub rolling_radius: f64,
+    /// The powertrain's torque at rest, N m ([`VehicleConfig::stall_torque`]),
+    /// found once when the vehicle is built: the powertrain does not
+    /// change in a run (a brake removes it, and then nothing caps).
+    pub stall: f64,
 }
 
 impl Sprocket {
@@ -270,7 +274,7 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
         let omega = sprocket.omega(qdc);
-        let cap = config.torque_cap(omega);
+        let cap = config.torque_cap(omega, sprocket.stall);
         let (torque, rate) =
             config
                 .drive

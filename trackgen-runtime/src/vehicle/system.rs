@@ -138,6 +138,7 @@ where
                 body: part.body,
                 pitch_radius: pitch_radius(part.teeth, pitch),
                 rolling_radius: rolling_radius(part.teeth, pitch),
+                stall: config.stall_torque(),
             });
         let chassis_description = chassis.description();
         let fit = ContactFit::of(&description, &chassis_description, C::PARTS, &geometry);
@@ -340,7 +341,7 @@ where
     ) -> (Option<(usize, super::DriveSlopes)>, Option<f64>) {
         let drive = self.sprocket.map(|s| {
             let omega = s.omega(qdc);
-            let cap = self.config.torque_cap(omega);
+            let cap = self.config.torque_cap(omega, s.stall);
             let slopes = self
                 .config
                 .drive
