@@ -302,42 +302,69 @@ fn tasks<'a, V: Vehicle>(
             // grade no steeper (a steady speed up a steeper one is 0: it
             // is not climbed even from a crawl at full load), so the runs
             // that would only stall are not made.
-            "grade" => out.push(task(
-                None,
-                "steepest grade",
-                "rise over run",
-                Box::new(move || {
-                    let steepest = grade::steepest::<V>(settings, footprint)?;
-                    let climbed = match steepest.limit {
-                        Limit::Found { passed, .. } => passed,
-                        Limit::Beyond { end } => end,
-                        Limit::Before { .. } => 0.0,
-                    };
-                    let mut runs = steepest.runs();
-                    let mut points = vec![(
-                        None,
-                        "steepest grade",
-                        steepest.limit.value(),
-                        steepest.limit.relation(),
-                        "rise over run",
-                    )];
-                    for &g in grades {
-                        let parameter = Some(("grade", g, "rise over run"));
-                        if g > climbed {
-                            points.push((parameter, "speed at full power", 0.0, "stalls", "m/s"));
-                            continue;
+            "grade" => {
+                out.push(task(
+                    None,
+                    "top speed on the flat",
+                    "m/s",
+                    Box::new(move || {
+                        let run = grade::top_speed::<V>(settings, footprint)?;
+                        Ok(Found::Curve {
+                            points: vec![(None, "top speed on the flat", run.speed, "=", "m/s")],
+                            runs: 1,
+                            search: None,
+                        })
+                    }),
+                ));
+                out.push(task(
+                    None,
+                    "steepest grade",
+                    "rise over run",
+                    Box::new(move || {
+                        let steepest = grade::steepest::<V>(settings, footprint)?;
+                        let climbed = match steepest.limit {
+                            Limit::Found { passed, .. } => passed,
+                            Limit::Beyond { end } => end,
+                            Limit::Before { .. } => 0.0,
+                        };
+                        let mut runs = steepest.runs();
+                        let mut points = vec![(
+                            None,
+                            "steepest grade",
+                            steepest.limit.value(),
+                            steepest.limit.relation(),
+                            "rise over run",
+                        )];
+                        for &g in grades {
+                            let parameter = Some(("grade", g, "rise over run"));
+                            if g > climbed {
+                                points.push((
+                                    parameter,
+                                    "speed at full power",
+                                    0.0,
+                                    "stalls",
+                                    "m/s",
+                                ));
+                                continue;
+                            }
+                            let climb = grade::speed_on::<V>(settings, footprint, g)?;
+                            runs += 1;
+                            points.push((
+                                parameter,
+                                "speed at full power",
+                                climb.speed,
+                                "=",
+                                "m/s",
+                            ));
                         }
-                        let climb = grade::speed_on::<V>(settings, footprint, g)?;
-                        runs += 1;
-                        points.push((parameter, "speed at full power", climb.speed, "=", "m/s"));
-                    }
-                    Ok(Found::Curve {
-                        points,
-                        runs,
-                        search: Some(steepest),
-                    })
-                }),
-            )),
+                        Ok(Found::Curve {
+                            points,
+                            runs,
+                            search: Some(steepest),
+                        })
+                    }),
+                ));
+            }
             "soil" => {
                 let soils: &[SoilPreset] = if quick {
                     &[SoilPreset::DrySand]
@@ -625,8 +652,9 @@ fn print_against(published: &[Published], rows: &[Row]) {
     println!("\nagainst the real vehicle:");
     for (figure, row, verdict) in against {
         let answer = row.map_or("not run".to_string(), value_text);
+        let ratio = row.map_or(f64::NAN, |r| figure.compare(r.value).ratio);
         println!(
-            "{:<26} {:>12} against {:>6} {:<14} {verdict}\n{:<26} source: {}",
+            "{:<26} {:>12} against {:>8.3} {:<14} ratio {ratio:.2}: {verdict}\n{:<26} source: {}",
             figure.quantity, answer, figure.value, figure.unit, "", figure.source
         );
     }
@@ -954,7 +982,7 @@ fn report(name: &str, published: &[Published], rows: &[Row], wall: f64, svg: &st
             let ratio = row.map_or(f64::NAN, |r| figure.compare(r.value).ratio);
             let _ = write!(
                 html,
-                "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>\
+                "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{:.3}</td><td>{}</td>\
                  <td class=\"n\">{ratio:.2}</td><td>{verdict}</td><td>{}</td></tr>",
                 figure.quantity,
                 answer.replace('>', "&gt;").replace('<', "&lt;"),

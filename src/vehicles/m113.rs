@@ -287,7 +287,14 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
 /// events answer, each with its source. The grade, the vertical obstacle
 /// and the trench are the M113 family's (the A3 keeps them: its heavier
 /// hull came with the larger engine and the converter transmission).
-pub const PUBLISHED: [trackgen::mobility::Published; 3] = [
+pub const PUBLISHED: [trackgen::mobility::Published; 4] = [
+    trackgen::mobility::Published {
+        quantity: "top speed on the flat",
+        value: TOP_SPEED,
+        unit: "m/s",
+        source: "US Army Center of Military History, Weapon Systems, M113 series: \
+                 M113A3, 41 mph (also the figure the final drive is derived from)",
+    },
     trackgen::mobility::Published {
         quantity: "steepest grade",
         value: 0.60,

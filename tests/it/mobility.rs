@@ -439,3 +439,26 @@ fn the_step_event_draws_the_vehicle_at_its_limit() {
     );
     assert!(picture.matches("<circle").count() > 64, "wheels and joints");
 }
+
+/// The M113A3's top speed on level ground at full power is within 10 % of
+/// its published 41 mph (`m113::PUBLISHED`; the figure the final drive is
+/// derived from at the rated 2800 rpm, so what is checked is that the
+/// governor's droop meets the running gear's resistance near the rated
+/// speed, and that the event finds it). Measured: 18.47 m/s, +0.8 %.
+#[test]
+fn the_m113a3_tops_out_near_its_published_speed() {
+    let settings = EventSettings::new(m113::powertrain());
+    let footprint = Footprint::of::<M113>("grade").unwrap();
+    let run = trackgen::mobility::grade::top_speed::<M113>(&settings, &footprint).unwrap();
+    let published = m113::PUBLISHED
+        .iter()
+        .find(|p| p.quantity == "top speed on the flat")
+        .expect("a published top speed");
+    assert!(run.climbed && !run.stalled, "{run:?}");
+    let ratio = run.speed / published.value;
+    println!(
+        "top speed {:.3} m/s against {:.3} m/s published ({ratio:.4})",
+        run.speed, published.value
+    );
+    assert!((ratio - 1.0).abs() < 0.10, "{} m/s", run.speed);
+}

@@ -100,6 +100,49 @@ pub fn steepest<V: Vehicle>(
     })
 }
 
+/// How far the top-speed run goes, m: the speed's last rise is slow (the
+/// engine's surplus vanishes as the speed nears the top), and the M113 is
+/// within 0.3 % of its top speed after some 600 m.
+pub const TOP_SPEED_RUN: f64 = 800.0;
+
+/// The top speed on level ground at full power: `V` asked at once for the
+/// powertrain's reach ([`EventSettings::top_speed`]) on flat ground, its
+/// mean speed over the last 10 m of [`TOP_SPEED_RUN`] m. What it gives is
+/// where the engine's full-load envelope (its governor's droop, in the
+/// highest range) meets the running gear's resistance: the model has no
+/// air drag.
+pub fn top_speed<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+) -> Result<Climb, EventError> {
+    settings.check(EVENT)?;
+    let top = settings.top_speed(footprint.sprocket_radius);
+    let goal = TOP_SPEED_RUN;
+    let mut probe = Probe::new(goal);
+    probe.mark_at = goal - 10.0;
+    // At a fifth of the reach the run still gets there; a stall ends it
+    // sooner.
+    let duration = 5.0 * goal / top + 5.0;
+    drive::<V>(
+        settings,
+        Terrain::Flat { height: 0.0 },
+        ramp(top, 1e3),
+        duration,
+        0.01,
+        &mut probe,
+        (EVENT, 0.0, "rise over run"),
+    )?;
+    Ok(Climb {
+        climbed: probe.x >= goal,
+        speed: if probe.stalled {
+            0.0
+        } else {
+            probe.speed_since_mark()
+        },
+        stalled: probe.stalled,
+    })
+}
+
 /// The speed held up a grade of `slope` at full power: `V` asked at once
 /// for the powertrain's top speed (the engine, at full load, sets the
 /// torque) up a grade long enough for 100 m of climb beyond its track's
