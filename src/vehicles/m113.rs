@@ -1,6 +1,17 @@
 //! The default vehicle: a planar M113, **one side** (the right).
 //!
-//! Figures from `shared/spec/m113.md` (Project Chrono's open M113 model).
+//! **Which M113.** The powertrain is the M113A3's ([`powertrain`]: the
+//! 6V53T and the X200-4 with its torque converter, each figure sourced
+//! there). The running gear, the masses and the contact are Project
+//! Chrono's open M113 model (a secondary source: `M113_TrackShoeSinglePin`,
+//! `M113_SprocketSinglePin`, `M113_RoadWheel`, `M113_Suspension`,
+//! `M113_IdlerWheel`, `M113_Idler`, `M113_Chassis` and
+//! `M113_TrackAssemblySinglePin`), which names no variant. Its masses add
+//! up to 11.35 t (the hull's 7 819 kg and both sides' running gear); the
+//! M113A3's combat weight is 12.34 t (27 200 lb, the manufacturer's
+//! figures as power-projection.com gives them): the masses are not yet the
+//! A3's, 8 % light.
+//!
 //! The planar model carries one track and the matching half of the chassis:
 //! half its mass and half its pitch inertia. Positions are given in
 //! Chrono's track-assembly frame (x forward, y up, origin at the sprocket
