@@ -133,6 +133,34 @@ crate::model! {
         // Half the vehicle's mass reflected through the 0.25 m sprocket
         // is ~250 kg m²: a closed loop of about 12 rad/s, well damped.
         drive { proportional: 3000.0, integral: 6000.0, max_torque: 2e4 },
+        // The M113A3's: the 6V53T's full-load torque (N m) against engine
+        // speed (rad/s) through the X200-4's converter, ranges and lock-up
+        // and the final drive; each figure's source is at `powertrain()`.
+        powertrain {
+            engine: [
+                (500.0 * RPM, 450.0 * LB_FT * SCALE_6V53T),
+                (1000.0 * RPM, 450.0 * LB_FT * SCALE_6V53T),
+                (1500.0 * RPM, 445.0 * LB_FT * SCALE_6V53T),
+                (2000.0 * RPM, 435.0 * LB_FT * SCALE_6V53T),
+                (2500.0 * RPM, 410.0 * LB_FT * SCALE_6V53T),
+                (ENGINE_RATED_SPEED, 395.0 * LB_FT * SCALE_6V53T),
+                (ENGINE_HIGH_IDLE, 0.0),
+            ],
+            capacity: [
+                (0.0, STALL_CAPACITY),
+                (0.5, STALL_CAPACITY),
+                (0.75, STALL_CAPACITY * 8.0 / 7.0),
+                (0.9, STALL_CAPACITY * 9.0 / 7.0),
+                (1.0, STALL_CAPACITY * 18.0 / 7.0),
+            ],
+            torque_ratio: [(0.0, 3.32), (0.25, 2.45), (0.5, 1.66), (0.725, 1.17), (0.85, 1.0), (1.0, 1.0)],
+            ranges: [4.16, 2.34, 1.46, 1.04],
+            lockup: [2, 3, 4],
+            lockup_speed_ratio: 0.9,
+            final_drive: FINAL_DRIVE,
+            gearbox_efficiency: GEARBOX_EFFICIENCY,
+            final_drive_efficiency: FINAL_DRIVE_EFFICIENCY,
+        },
     }
 }
 
@@ -227,41 +255,38 @@ pub const GEARBOX_EFFICIENCY: f64 = 0.92;
 /// reduction (Wong, §3.3: about 0.97 a stage).
 pub const FINAL_DRIVE_EFFICIENCY: f64 = 0.97;
 
-/// The 6V53T's full-load torque, N m, against engine speed, rad/s.
-/// Estimated: no published curve was found. Chrono's 6V53 map (a
-/// secondary source, [`chrono_simple_map`]) scaled so that at 2800 rpm it
-/// gives the 6V53T's rated 275 hp (×1.306: 587 lb·ft, 796 N m, up to
-/// 1000 rpm, 516 lb·ft at 2800), then falling linearly to 0 at the
-/// governor's high idle ([`ENGINE_HIGH_IDLE`]).
-pub fn engine_map() -> Vec<(f64, f64)> {
-    let at_rated = 395.0 * LB_FT * ENGINE_RATED_SPEED;
-    let scale = ENGINE_RATED_POWER / at_rated;
-    let mut map: Vec<(f64, f64)> = CHRONO_6V53_MAP
-        .iter()
-        .filter(|p| p.0 <= 2800.0)
-        .map(|&(n, t)| (n * RPM, t * LB_FT * scale))
-        .collect();
-    map.push((ENGINE_HIGH_IDLE, 0.0));
-    map
-}
+/// The 6V53T's full-load torque as Chrono's 6V53 map scaled: ×1.306, so
+/// that 395 lb·ft at 2800 rpm becomes the rated 275 hp there (the map's
+/// shape is estimated: no published 6V53T curve was found).
+pub const SCALE_6V53T: f64 = ENGINE_RATED_POWER / (395.0 * LB_FT * ENGINE_RATED_SPEED);
+
+/// The converter's capacity factor at stall, rad/s per √(N m): the one
+/// that stalls the engine at [`STALL_SPEED`], `K(0) = ω / √T_e(ω)` with
+/// the declared map's 743.64 N m there (a test holds the figure to that
+/// derivation).
+pub const STALL_CAPACITY: f64 = 8.832_330_266_045_645;
 
 /// The M113A3's powertrain as one side's sprocket sees it, at full load:
-/// the Detroit Diesel 6V53T ([`engine_map`]) through the Allison X200-4's
-/// torque converter (stall torque ratio [`STALL_TORQUE_RATIO`], lock-up in
-/// ranges 2 to 4, OD1714), its four ranges ([`RANGES`]) chosen ideally,
-/// and the final drive ([`FINAL_DRIVE`]), half of it for this side.
+/// the declared `powertrain` (the Detroit Diesel 6V53T through the Allison
+/// X200-4's torque converter, stall torque ratio [`STALL_TORQUE_RATIO`],
+/// lock-up in ranges 2 to 4 (OD1714), its four ranges ([`RANGES`]) chosen
+/// ideally, and the final drive ([`FINAL_DRIVE`]), half of it for this
+/// side), [`M113::powertrain`](crate::vehicle::Vehicle::powertrain).
 ///
-/// The converter's curves are estimated (no X200-4 curves were found),
-/// each point stated:
+/// The engine's curve and the converter's are estimated (no published
+/// 6V53T or X200-4 curves were found), each point stated in the
+/// declaration:
+/// * the engine: Chrono's 6V53 map × [`SCALE_6V53T`] to 2800 rpm, then
+///   the governor's droop to 0 at [`ENGINE_HIGH_IDLE`];
 /// * torque ratio 3.32 at stall (published), then 2.45, 1.66, 1.17 and
 ///   1.00 at speed ratios 0.25, 0.5, 0.725 and 0.85 (the coupling point),
 ///   1.00 beyond: the efficiency `SR · TR` peaks at 0.85 between 0.725 and
 ///   0.85, the figures of the Allison TX-200 family's single-stage
 ///   converters;
 /// * capacity factor `K` flat from stall to a speed ratio of 0.5, rising
-///   by 1/7 at 0.75, 2/7 at 0.9 and to 18/7 of it at 1 (the shape of
-///   Chrono's M113 converter map, `M113_AutomaticTransmissionShafts.cpp`),
-///   scaled so that the converter stalls at [`STALL_SPEED`];
+///   to 8/7, 9/7 and 18/7 of it at 0.75, 0.9 and 1 (the shape of Chrono's
+///   M113 converter map, `M113_AutomaticTransmissionShafts.cpp`), from
+///   [`STALL_CAPACITY`] at stall;
 /// * the lock-up clutch engages at a speed ratio of 0.9.
 ///
 /// Chrono's own M113 shafts powertrain has a converter of stall ratio 2.0
@@ -269,29 +294,12 @@ pub fn engine_map() -> Vec<(f64, f64)> {
 /// 0.962, sprocket over engine speed): it reaches about a third of this
 /// one's torque at stall.
 pub fn powertrain() -> trackgen::vehicle::Powertrain {
-    let engine = engine_map();
-    let stall_torque = trackgen::vehicle::Driveline::full_load(&engine, STALL_SPEED);
-    let k0 = STALL_SPEED / stall_torque.sqrt();
-    let capacity = [(0.0, 7.0), (0.5, 7.0), (0.75, 8.0), (0.9, 9.0), (1.0, 18.0)];
-    trackgen::vehicle::Powertrain::Converter(Box::new(trackgen::vehicle::Driveline {
-        engine,
-        capacity: capacity.iter().map(|&(sr, k)| (sr, k0 * k / 7.0)).collect(),
-        torque_ratio: vec![
-            (0.0, STALL_TORQUE_RATIO),
-            (0.25, 2.45),
-            (0.5, 1.66),
-            (0.725, 1.17),
-            (0.85, 1.0),
-            (1.0, 1.0),
-        ],
-        ranges: RANGES.to_vec(),
-        lockup_ranges: vec![1, 2, 3],
-        lockup_speed_ratio: 0.9,
-        final_drive: FINAL_DRIVE,
-        gearbox_efficiency: GEARBOX_EFFICIENCY,
-        final_drive_efficiency: FINAL_DRIVE_EFFICIENCY,
-        share: 0.5,
-    }))
+    use trackgen::vehicle::Vehicle;
+    match M113::powertrain() {
+        Some(declared) => declared,
+        // The declaration has one: this arm is never taken.
+        None => chrono_simple_map(),
+    }
 }
 
 /// The real M113A3's published mobility figures that the pitch-plane

@@ -370,3 +370,20 @@ fn the_most_power_is_the_envelope_s_peak() {
         "{peak} W, rated through the stages {rated} W"
     );
 }
+
+/// The declared capacity factor at stall is the one that stalls the
+/// declared engine at the stated speed: `K(0) = ω / √T_e(ω)`, to 1e-12
+/// (the declaration holds the figure as a literal: a square root is not a
+/// constant expression).
+#[test]
+fn the_declared_stall_capacity_is_its_derivation() {
+    let driveline = the_m113s();
+    let torque = Driveline::full_load(&driveline.engine, m113::STALL_SPEED);
+    let want = m113::STALL_SPEED / torque.sqrt();
+    assert!(
+        (m113::STALL_CAPACITY / want - 1.0).abs() < 1e-12,
+        "{} vs {want}",
+        m113::STALL_CAPACITY
+    );
+    assert_eq!(driveline.capacity[0], (0.0, m113::STALL_CAPACITY));
+}

@@ -111,6 +111,28 @@ pub struct Running {
     pub proportional: Num,
     pub integral: Num,
     pub max_torque: Num,
+    /// The declared `powertrain`, if any.
+    pub powertrain: Option<Powertrain>,
+}
+
+/// A declared powertrain: the runtime's `Driveline`, field for field
+/// (tables as `(x, y)` pairs, lock-up ranges 0-based).
+pub struct Powertrain {
+    /// Full-load torque, N m, against engine speed, rad/s.
+    pub engine: Vec<(Num, Num)>,
+    /// The converter's capacity factor against its speed ratio.
+    pub capacity: Vec<(Num, Num)>,
+    /// The converter's torque ratio against its speed ratio.
+    pub torque_ratio: Vec<(Num, Num)>,
+    /// The ranges' reductions, lowest range first.
+    pub ranges: Vec<Num>,
+    /// The ranges that lock up, 0-based.
+    pub lockup: Vec<usize>,
+    pub lockup_speed_ratio: Num,
+    pub final_drive: Num,
+    pub gearbox_efficiency: Num,
+    pub final_drive_efficiency: Num,
+    pub share: Num,
 }
 
 /// A shoe's contact features, link frame, m.

@@ -121,6 +121,41 @@ fn runnable_vehicle_with_repeated_wheels() {
     })));
 }
 
+/// A declared powertrain becomes the `Vehicle::powertrain` the runtime's
+/// `Driveline` is built from: the tables as pairs, the lock-up ranges
+/// 0-based, the side's share defaulting to a half, a named constant kept
+/// for rustc (and checked by it).
+#[test]
+fn vehicle_with_a_powertrain() {
+    insta::assert_snapshot!(pretty(expand(quote! {
+        pub vehicle Driven {
+            chassis { mass: 1000.0, inertia: 500.0, centroid: (-1.0, 0.3) },
+            sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 0.5, radius: 0.2, teeth: 9 },
+            road_wheel rw[2] { at: [(-0.5, -0.2), (-1.0, -0.2)], mass: 30.0, inertia: 1.5, radius: 0.25,
+                arm { pivot_offset: (0.25, 0.1), mass: 40.0, inertia: 0.5,
+                      stiffness: 2e4, damping: 400.0 } },
+            idler rear { at: (-1.6, 0.0), mass: 20.0, inertia: 1.0, radius: 0.2 },
+            track {
+                links: 3,
+                link { mass: 10.0, inertia: 0.02, u1: (-0.06, 0.0), u2: (0.06, 0.0) },
+            },
+            shoe { ground_points: [(-0.05, -0.025), (0.05, -0.025)], inner_offset: 0.025,
+                   pins: [(0.055, 0.0)], pin_radius: 0.012 },
+            powertrain {
+                engine: [(100.0, 500.0), (200.0, 600.0), (300.0, 0.0)],
+                capacity: [(0.0, 9.0), (1.0, 18.0)],
+                torque_ratio: [(0.0, 2.5), (0.8, 1.0), (1.0, 1.0)],
+                ranges: [3.0, 1.5],
+                lockup: [2],
+                lockup_speed_ratio: 0.9,
+                final_drive: FINAL,
+                gearbox_efficiency: 0.95,
+                final_drive_efficiency: 0.97,
+            },
+        }
+    })));
+}
+
 /// Each user expression is emitted once, as a named constant, however many
 /// links or generated places use it (issue 12: a bad expression copied into
 /// every generated place made a 64-link error path take minutes). Each of

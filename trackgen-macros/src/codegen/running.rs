@@ -7,7 +7,7 @@ use proc_macro2::{Ident, TokenStream};
 use quote::quote;
 
 use super::runtime_path::runtime;
-use crate::ir::{ContactPair, NormalLaw, Running, Vehicle};
+use crate::ir::{ContactPair, NormalLaw, Powertrain, Running, Vehicle};
 use crate::num::Vec2;
 
 /// The vehicle's DOF constants and system type, and with a declared shoe
@@ -67,6 +67,7 @@ pub fn running(
                 max_torque: #max_torque,
             }
         },
+        powertrain: run.powertrain.as_ref().map(powertrain),
     };
     let vehicle = vehicle_impl(name, (track, chassis), dofs, &bodies);
     quote! {
@@ -80,6 +81,44 @@ pub struct VehicleBodies {
     pub geometry: TokenStream,
     pub config: TokenStream,
     pub speed_drive: TokenStream,
+    /// The declared powertrain's value, if one is declared (the trait's
+    /// default, none, otherwise).
+    pub powertrain: Option<TokenStream>,
+}
+
+/// A declared powertrain as the runtime's `Powertrain::Converter`.
+fn powertrain(p: &Powertrain) -> TokenStream {
+    let rt = runtime();
+    let table = |points: &[(crate::num::Num, crate::num::Num)]| {
+        let (x, y): (Vec<_>, Vec<_>) = points.iter().map(|(x, y)| (x, y)).unzip();
+        quote!(::std::vec![#((#x, #y)),*])
+    };
+    let (engine, capacity, torque_ratio) =
+        (table(&p.engine), table(&p.capacity), table(&p.torque_ratio));
+    let ranges = &p.ranges;
+    let lockup = &p.lockup;
+    let Powertrain {
+        lockup_speed_ratio,
+        final_drive,
+        gearbox_efficiency,
+        final_drive_efficiency,
+        share,
+        ..
+    } = p;
+    quote! {
+        #rt::Powertrain::Converter(::std::boxed::Box::new(#rt::Driveline {
+            engine: #engine,
+            capacity: #capacity,
+            torque_ratio: #torque_ratio,
+            ranges: ::std::vec![#(#ranges),*],
+            lockup_ranges: ::std::vec![#(#lockup),*],
+            lockup_speed_ratio: #lockup_speed_ratio,
+            final_drive: #final_drive,
+            gearbox_efficiency: #gearbox_efficiency,
+            final_drive_efficiency: #final_drive_efficiency,
+            share: #share,
+        }))
+    }
 }
 
 /// The `Vehicle` impl of `name` with these method bodies (the real ones,
@@ -97,7 +136,15 @@ pub fn vehicle_impl(
         geometry,
         config,
         speed_drive,
+        powertrain,
     } = bodies;
+    let powertrain = powertrain.as_ref().map(|value| {
+        quote! {
+            fn powertrain() -> ::core::option::Option<#rt::Powertrain> {
+                ::core::option::Option::Some(#value)
+            }
+        }
+    });
     quote! {
         // Folded numbers (a default travel of ±π/2) may be close to a
         // named constant: they are meant as written.
@@ -123,6 +170,8 @@ pub fn vehicle_impl(
             ) -> #rt::Drive {
                 #speed_drive
             }
+
+            #powertrain
         }
     }
 }

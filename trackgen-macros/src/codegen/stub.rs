@@ -155,6 +155,7 @@ fn vehicle_impl(name: &Ident, parts: (&Ident, &Ident), dofs: (usize, usize)) -> 
         geometry: never.clone(),
         config: never.clone(),
         speed_drive: never,
+        powertrain: None,
     };
     super::running::vehicle_impl(name, parts, dofs, &bodies)
 }

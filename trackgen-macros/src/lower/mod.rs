@@ -14,6 +14,7 @@ use quote::ToTokens;
 use syn::Ident;
 
 mod keys;
+mod powertrain;
 mod running;
 mod sections;
 mod track;

@@ -43,7 +43,11 @@ impl Lowering<'_> {
     ) -> Option<Running> {
         let Some((shoe_kw, shoe_block)) = unique.shoe else {
             self.check_engagement(&profile, None, track);
-            for (section, block) in [("contact", unique.contact), ("drive", unique.drive)] {
+            for (section, block) in [
+                ("contact", unique.contact),
+                ("drive", unique.drive),
+                ("powertrain", unique.powertrain),
+            ] {
                 if let Some(block) = block {
                     self.errors.at(
                         block.span,
@@ -83,6 +87,11 @@ impl Lowering<'_> {
         let proportional = gain("proportional", Bound::NonNegative, DEFAULT_PROPORTIONAL);
         let integral = gain("integral", Bound::NonNegative, DEFAULT_INTEGRAL);
         let max_torque = gain("max_torque", Bound::Positive, DEFAULT_MAX_TORQUE);
+        // A declared powertrain with errors has been reported: no running.
+        let powertrain = match unique.powertrain {
+            Some(block) => Some(self.powertrain(block)?),
+            None => None,
+        };
         let (shoe, _) = shoe?;
         let [tip_radius, gap_radius, gap_centre] = profile.radii;
         Some(Running {
@@ -94,6 +103,7 @@ impl Lowering<'_> {
             proportional,
             integral,
             max_torque,
+            powertrain,
         })
     }
 

@@ -16,6 +16,7 @@ pub(super) struct VehicleSections<'a> {
     pub(super) shoe: Option<(&'a Ident, &'a crate::parse::Block)>,
     pub(super) contact: Option<&'a crate::parse::Block>,
     pub(super) drive: Option<&'a crate::parse::Block>,
+    pub(super) powertrain: Option<&'a crate::parse::Block>,
 }
 
 /// The declared sprocket profile: tip radius, gap arc radius, gap arc

@@ -34,6 +34,7 @@ impl Lowering<'_> {
             "shoe",
             "contact",
             "drive",
+            "powertrain",
             "sprocket",
             "idler",
             "road_wheel",
@@ -71,6 +72,7 @@ impl Lowering<'_> {
                     "track" => &mut unique.track,
                     "contact" => &mut unique.contact,
                     "drive" => &mut unique.drive,
+                    "powertrain" => &mut unique.powertrain,
                     _ => {
                         if unique.shoe.is_some() {
                             self.errors

@@ -4,7 +4,7 @@
 
 use nalgebra::{DVector, Vector2};
 
-use super::{BuildError, Drive, Geometry, StateLayout, VehicleConfig};
+use super::{BuildError, Drive, Geometry, Powertrain, StateLayout, VehicleConfig};
 use crate::contact::Terrain;
 use crate::contact::soft_ground::Rut;
 use crate::integrate::SimulationError;
@@ -48,6 +48,15 @@ pub trait Vehicle: Copy + Default + Send + Sync + 'static {
     /// A PI speed drive with the declared gains and torque limit: `target`
     /// is the forward speed wanted, m/s, against time, s.
     fn speed_drive(target: impl Fn(f64) -> f64 + Send + 'static) -> Drive;
+
+    /// The declared powertrain (`powertrain { … }` in the declaration: an
+    /// engine through a torque converter, a range gearbox and a final
+    /// drive, [`Powertrain::Converter`]), as this side's sprocket sees it;
+    /// `None` where none is declared. A run drives through it when it is
+    /// set as [`VehicleConfig::powertrain`].
+    fn powertrain() -> Option<Powertrain> {
+        None
+    }
 
     /// The vehicle assembled on `terrain` with its
     /// [`declared_config`](Self::declared_config) and `drive`: [`build`]

@@ -1,0 +1,271 @@
+//! Lowering a vehicle's `powertrain`: an engine's full-load map through a
+//! torque converter with a lock-up clutch, a range gearbox and a final
+//! drive (the runtime's `Driveline`). What the macro can evaluate is
+//! checked here, at the offending token, by the runtime's rules; what is a
+//! named constant is checked when the vehicle is built.
+
+use quote::quote;
+use syn::spanned::Spanned;
+use syn::{Expr, Lit};
+
+use super::Lowering;
+use super::keys::{Fields, strip};
+use crate::ir::{ConstCheck, Powertrain};
+use crate::num::Num;
+
+/// The keys of a `powertrain { … }` section.
+const KEYS: [&str; 10] = [
+    "engine",
+    "capacity",
+    "torque_ratio",
+    "ranges",
+    "lockup",
+    "lockup_speed_ratio",
+    "final_drive",
+    "gearbox_efficiency",
+    "final_drive_efficiency",
+    "share",
+];
+
+/// The side's share of the driveline's output when none is declared: a
+/// planar model is one side of a two-track vehicle.
+const DEFAULT_SHARE: f64 = 0.5;
+
+/// Which table, for its rules.
+#[derive(Clone, Copy, PartialEq)]
+enum Table {
+    /// Full-load torque against engine speed: speeds from one above 0.
+    Engine,
+    /// The converter's capacity factor: from speed ratio 0, each `K > 0`.
+    Capacity,
+    /// The converter's torque ratio: from speed ratio 0, each `TR ≥ 0`,
+    /// `SR · TR ≤ 1`.
+    TorqueRatio,
+}
+
+impl Lowering<'_> {
+    /// The `powertrain` section, every problem reported at its token.
+    pub(super) fn powertrain(&mut self, block: &crate::parse::Block) -> Option<Powertrain> {
+        let fields = self.fields("powertrain", block, &KEYS);
+        self.sections("powertrain", block, &[]);
+        let engine = self.table(&fields, "engine", Table::Engine);
+        let capacity = self.table(&fields, "capacity", Table::Capacity);
+        let torque_ratio = self.table(&fields, "torque_ratio", Table::TorqueRatio);
+        let ranges = self.ranges(&fields);
+        // The ranges declared, counted even where one of them is wrong.
+        let count = fields.map.get("ranges").and_then(|e| match strip(e) {
+            Expr::Array(list) => Some(list.elems.len()),
+            _ => None,
+        });
+        let lockup = self.lockup(&fields, count);
+        let locks = lockup.as_ref().is_some_and(|l| !l.is_empty());
+        // Without a locking range the clutch's speed ratio is never used.
+        let lockup_speed_ratio = self
+            .fraction(&fields, "lockup_speed_ratio", locks)
+            .or(if locks { None } else { Some(Num::Known(1.0)) });
+        let final_drive = self.positive(&fields, "final_drive", true);
+        let gearbox_efficiency = self.fraction(&fields, "gearbox_efficiency", true);
+        let final_drive_efficiency = self.fraction(&fields, "final_drive_efficiency", true);
+        let share = match fields.map.get("share") {
+            Some(_) => self.fraction(&fields, "share", true),
+            None => Some(Num::Known(DEFAULT_SHARE)),
+        };
+        Some(Powertrain {
+            engine: engine?,
+            capacity: capacity?,
+            torque_ratio: torque_ratio?,
+            ranges: ranges?,
+            lockup: lockup?,
+            lockup_speed_ratio: lockup_speed_ratio?,
+            final_drive: final_drive?,
+            gearbox_efficiency: gearbox_efficiency?,
+            final_drive_efficiency: final_drive_efficiency?,
+            share: share?,
+        })
+    }
+
+    /// A number in (0, 1]: an efficiency, a share, a speed ratio.
+    fn fraction(&mut self, fields: &Fields, key: &str, required: bool) -> Option<Num> {
+        let expr = fields.map.get(key).copied();
+        let value = self.number(fields, key, required)?;
+        match &value {
+            Num::Known(v) => {
+                if !(*v > 0.0 && *v <= 1.0) {
+                    self.errors
+                        .spanned(expr?, format!("`{key}` must be in (0, 1], found {v}"));
+                }
+            }
+            Num::Expr(_) => self.checks.push(ConstCheck {
+                span: expr?.span(),
+                condition: quote!((#value) > 0.0 && (#value) <= 1.0),
+                message: format!("`{key}` must be in (0, 1]"),
+            }),
+        }
+        Some(value)
+    }
+
+    /// A table `[(x, y), …]` of two or more points, its abscissae
+    /// increasing, each point by `table`'s rules where the macro knows it.
+    fn table(&mut self, fields: &Fields, key: &str, table: Table) -> Option<Vec<(Num, Num)>> {
+        let Some(expr) = fields.map.get(key) else {
+            self.missing(fields, key);
+            return None;
+        };
+        let Expr::Array(list) = strip(expr) else {
+            self.errors
+                .spanned(expr, format!("`{key}` must be a table `[(x, y), …]`"));
+            return None;
+        };
+        if list.elems.len() < 2 {
+            self.errors
+                .spanned(list, format!("`{key}` needs two or more points"));
+            return None;
+        }
+        let mut points = Vec::new();
+        let mut previous: Option<f64> = None;
+        let mut fine = true;
+        for (i, element) in list.elems.iter().enumerate() {
+            let Ok(point) = self.eval_point(element, key) else {
+                fine = false;
+                continue;
+            };
+            let (x, y) = (point.x.known(), point.y.known());
+            if let Some(x) = x {
+                let problem = if i == 0 && table != Table::Engine && x != 0.0 {
+                    Some(format!(
+                        "`{key}` must start at speed ratio 0 (stall), not {x}"
+                    ))
+                } else if i == 0 && table == Table::Engine && x <= 0.0 {
+                    Some(format!(
+                        "`{key}` must start at an engine speed above 0 rad/s, not {x}"
+                    ))
+                } else if previous.is_some_and(|p| x <= p) {
+                    Some(format!(
+                        "`{key}`'s abscissae must increase: point {} ({x}) is not past the one before",
+                        i + 1
+                    ))
+                } else {
+                    None
+                };
+                if let Some(problem) = problem {
+                    self.errors.spanned(element, problem);
+                    fine = false;
+                }
+                previous = Some(x);
+            } else {
+                previous = None;
+            }
+            if let Some(y) = y {
+                let problem = match table {
+                    Table::Capacity if y <= 0.0 => Some(format!(
+                        "`{key}`: a capacity factor must be above 0, found {y}"
+                    )),
+                    Table::TorqueRatio if y < 0.0 => Some(format!(
+                        "`{key}`: a torque ratio must be 0 or more, found {y}"
+                    )),
+                    Table::TorqueRatio if x.is_some_and(|x| x * y > 1.0) => Some(format!(
+                        "`{key}`: the converter's efficiency SR·TR is {:.3} at point {}: more than 1",
+                        x.unwrap_or(f64::NAN) * y,
+                        i + 1
+                    )),
+                    _ => None,
+                };
+                if let Some(problem) = problem {
+                    self.errors.spanned(element, problem);
+                    fine = false;
+                }
+            }
+            points.push((point.x, point.y));
+        }
+        fine.then_some(points)
+    }
+
+    /// The ranges' reductions `[r₁, r₂, …]`, each above 0, lowest range
+    /// first.
+    fn ranges(&mut self, fields: &Fields) -> Option<Vec<Num>> {
+        let Some(expr) = fields.map.get("ranges") else {
+            self.missing(fields, "ranges");
+            return None;
+        };
+        let Expr::Array(list) = strip(expr) else {
+            self.errors.spanned(
+                expr,
+                "`ranges` must be a list of reductions `[r₁, r₂, …]`, lowest range first",
+            );
+            return None;
+        };
+        if list.elems.is_empty() {
+            self.errors
+                .spanned(list, "`ranges` needs at least one range");
+            return None;
+        }
+        let mut out = Vec::new();
+        let mut fine = true;
+        for element in &list.elems {
+            match self.eval(element, "ranges") {
+                Ok(Num::Known(v)) if v <= 0.0 => {
+                    self.errors.spanned(
+                        element,
+                        format!("a range's reduction must be above 0, found {v}"),
+                    );
+                    fine = false;
+                }
+                Ok(value) => {
+                    if let Num::Expr(_) = value {
+                        self.checks.push(ConstCheck {
+                            span: element.span(),
+                            condition: quote!((#value) > 0.0 && (#value) <= f64::MAX),
+                            message: "a range's reduction must be above 0 and finite".into(),
+                        });
+                    }
+                    out.push(value);
+                }
+                Err(()) => fine = false,
+            }
+        }
+        fine.then_some(out)
+    }
+
+    /// The ranges that lock up, `[2, 3, 4]`, numbered from 1 as manuals
+    /// number them; 0-based for the runtime. None declared: none lock.
+    fn lockup(&mut self, fields: &Fields, ranges: Option<usize>) -> Option<Vec<usize>> {
+        let Some(expr) = fields.map.get("lockup") else {
+            return Some(Vec::new());
+        };
+        let Expr::Array(list) = strip(expr) else {
+            self.errors.spanned(
+                expr,
+                "`lockup` must be a list of range numbers `[2, 3, …]` (from 1)",
+            );
+            return None;
+        };
+        let mut out = Vec::new();
+        let mut fine = true;
+        for element in &list.elems {
+            let number = match strip(element) {
+                Expr::Lit(l) => match &l.lit {
+                    Lit::Int(i) => self.integer::<usize>(i, "usize").ok().flatten(),
+                    _ => None,
+                },
+                _ => None,
+            };
+            match (number, ranges) {
+                (Some(n), Some(count)) if n >= 1 && n <= count => out.push(n - 1),
+                (Some(n), None) if n >= 1 => out.push(n - 1),
+                (Some(n), Some(count)) => {
+                    self.errors.spanned(
+                        element,
+                        format!("`lockup`: range {n} is not one of the {count} declared (from 1)"),
+                    );
+                    fine = false;
+                }
+                _ => {
+                    self.errors
+                        .spanned(element, "`lockup` takes range numbers from 1, as literals");
+                    fine = false;
+                }
+            }
+        }
+        fine.then_some(out)
+    }
+}
