@@ -950,7 +950,7 @@ fn report(name: &str, published: &[Published], rows: &[Row], wall: f64, svg: &st
          td.n{{text-align:right}}tr:nth-child(even){{background:#f4f4f4}}</style></head><body>\
          <h1>{name}: pitch-plane mobility events</h1>\
          <p>{} results from {runs} runs in {wall:.1} s of wall time. A limit marked &gt; lies beyond \
-         the searched range, &lt; before it; <i>stalled</i>: the vehicle did not get over (hover for where). Events and criteria: <code>shared/spec/mobility.md</code>; \
+         the searched range, &lt; before it; <i>stalled</i>: the vehicle did not get over (hover for where). Events, criteria and what the answers rest on: \
          the guide's Mobility chapter.</p>{svg}<table><tr><th>event</th><th>parameter</th>\
          <th>quantity</th><th>value</th><th>unit</th><th>runs</th><th>wall, s</th></tr>",
         rows.len()
