@@ -75,10 +75,11 @@ pub struct Args {
     #[arg(long, default_value_t = 0.01, value_name = "SECONDS", value_parser = output_interval)]
     pub output_every: f64,
     /// Drive through the vehicle's engine as well as its speed controller:
-    /// the published full-load torque map through ideally shifted gears
-    /// caps the sprocket's torque, so the vehicle's power, not the
-    /// controller's target, sets its speed where they disagree (the
-    /// `engine_load` column is 1 there).
+    /// its full-load envelope (the M113's: the M113A3's engine through its
+    /// torque converter, ranges and final drive; the Marder's: its engine
+    /// map through ideally shifted gears) caps the sprocket's torque, so
+    /// the vehicle's power, not the controller's target, sets its speed
+    /// where they disagree (the `engine_load` column is 1 there).
     #[arg(long)]
     pub engine: bool,
     /// Simulated time, s: more than 0, at most 1e6.
