@@ -58,15 +58,31 @@ pub fn climb<V: Vehicle>(
     let terrain = course(footprint, at, slope, climb)?;
     let goal = at + climb - footprint.rear;
     let ramp_time = speed / settings.acceleration;
-    let mut probe = Probe::new(goal);
     // At a tenth of the speed asked the climb still finishes; a stall
     // ends the run sooner.
     let duration = ramp_time + 10.0 * goal / speed + 5.0;
+    let target = ramp(speed, settings.acceleration);
+    drive_to::<V>(settings, terrain, target, goal, duration, slope)
+}
+
+/// `V` driven on `terrain` asking for `target` (m/s against s) until its
+/// hull's x reaches `goal` (m), it stalls or `duration` (s) passes:
+/// whether it got there, and its mean speed over the last 10 m (0 if it
+/// stalled). A failure names the grade `slope`.
+fn drive_to<V: Vehicle>(
+    settings: &EventSettings,
+    terrain: Terrain,
+    target: impl Fn(f64) -> f64 + Send + 'static,
+    goal: f64,
+    duration: f64,
+    slope: f64,
+) -> Result<Climb, EventError> {
+    let mut probe = Probe::new(goal);
     probe.mark_at = goal - 10.0;
     drive::<V>(
         settings,
         terrain,
-        ramp(speed, settings.acceleration),
+        target,
         duration,
         0.01,
         &mut probe,
@@ -118,29 +134,11 @@ pub fn top_speed<V: Vehicle>(
     settings.check(EVENT)?;
     let top = settings.top_speed(footprint.sprocket_radius);
     let goal = TOP_SPEED_RUN;
-    let mut probe = Probe::new(goal);
-    probe.mark_at = goal - 10.0;
     // At a fifth of the reach the run still gets there; a stall ends it
     // sooner.
     let duration = 5.0 * goal / top + 5.0;
-    drive::<V>(
-        settings,
-        Terrain::Flat { height: 0.0 },
-        ramp(top, 1e3),
-        duration,
-        0.01,
-        &mut probe,
-        (EVENT, 0.0, "rise over run"),
-    )?;
-    Ok(Climb {
-        climbed: probe.x >= goal,
-        speed: if probe.stalled {
-            0.0
-        } else {
-            probe.speed_since_mark()
-        },
-        stalled: probe.stalled,
-    })
+    let flat = Terrain::Flat { height: 0.0 };
+    drive_to::<V>(settings, flat, ramp(top, 1e3), goal, duration, 0.0)
 }
 
 /// The speed held up a grade of `slope` at full power: `V` asked at once
