@@ -51,7 +51,7 @@
 //! `dynamics::LinearTimeSolver` and the dense partitioned equations are
 //! built too: the independent routes the tests hold the generated code to.
 //!
-//! Conventions follow `shared/spec/recursive-formulation.md` §0: planar, SI
+//! Conventions (the guide's chapter "The formulation"): planar, SI
 //! units, `A(θ)` the rotation matrix, body frames at the centroid, recursive
 //! coordinates `q_i = [R¹, θ¹ … θⁿ]` (the root's centroid, then the
 //! absolute angle of every body).

@@ -1,5 +1,8 @@
-//! Soft soil: the terramechanics laws a deformable terrain is made of
-//! (`shared/spec/soil.md`), and the textbook soils.
+//! Soft soil: the terramechanics laws a deformable terrain is made of, as
+//! Wong, *Theory of Ground Vehicles* (4th ed., Wiley, 2008, chapter 2)
+//! gives them after Bekker and Janosi–Hanamoto, with the elastic unloading
+//! of Project Chrono's SCM terrain (`SCMTerrain.cpp`); and the textbook
+//! soils (the guide's chapter "Soft soil").
 //!
 //! * Loading: Bekker's pressure–sinkage law `p = (k_c/b + k_φ) zⁿ`, with
 //!   `b` the track's width (the planar model does not see it, so it is a
@@ -7,7 +10,7 @@
 //! * Unloading and reloading below the largest pressure reached: elastic,
 //!   `p = K_e (z − z_p)`, with `z_p` the plastic sinkage left behind (the
 //!   linear unloading of Wong's repetitive-loading model and of Chrono's
-//!   SCM, spec "Laws and units").
+//!   SCM).
 //! * Shear: Mohr–Coulomb strength `τ_max = c + p tan φ`, mobilised with the
 //!   shear displacement `j` by Janosi–Hanamoto,
 //!   `τ = τ_max (1 − e^{−j/K})`.
@@ -15,8 +18,9 @@
 //! [`Soil`] holds a soil's parameters and evaluates the laws;
 //! [`SoilPreset`] names the rows of Wong's Table 2.3; [`SoilMemory`] is
 //! what a patch of ground remembers of its loading (the plastic sinkage
-//! and the yield pressure). The closed forms of spec "Closed-form checks"
-//! ([`Soil::static_sinkage`], [`Soil::tractive_effort`],
+//! and the yield pressure). The closed forms of a track on soil under a
+//! uniform pressure (Wong, chapter 2: [`Soil::static_sinkage`],
+//! [`Soil::tractive_effort`],
 //! [`Soil::compaction_resistance`]) are the test oracles of the simulated
 //! soil.
 
@@ -45,10 +49,11 @@ pub struct Soil {
     pub shear_modulus: f64,
     /// Unloading and reloading stiffness `K_e`, Pa/m (≥ `k_φ`, as Chrono's
     /// SCM asks; keep it above the Bekker secant stiffness at working
-    /// sinkage, spec "Conversion notes").
+    /// sinkage).
     pub unloading_stiffness: f64,
     /// Normal damping `R`, Pa s/m (≥ 0): a pressure `R · (rate of sinkage)`
-    /// added while the ground is being pressed (Chrono's SCM, spec step 4).
+    /// added while the ground is being pressed (Chrono's SCM,
+    /// `SCMTerrain.cpp`).
     pub damping: f64,
 }
 
@@ -84,13 +89,14 @@ pub enum SoilError {
 }
 
 /// Default `K_e`, Pa/m, for the textbook soils, which have none: the
-/// softest of Chrono's SCM presets (spec "Chrono SCM parameter sets"),
+/// softest of Chrono's SCM presets (its co-simulation "soft" set,
+/// `data/vehicle/cosim/terrain/scm_soft.json`),
 /// 200 times the stiffest `k_φ` of Table 2.3 and far above the Bekker
 /// secant stiffness of every row at 1 cm or more of sinkage.
 pub const DEFAULT_UNLOADING_STIFFNESS: f64 = 4e7;
 
-/// Default `R`, Pa s/m: Chrono's SCM demos (spec "Chrono SCM parameter
-/// sets").
+/// Default `R`, Pa s/m: Chrono's SCM demos and presets
+/// (`demo_VEH_SCMTerrain_TrackedVehicle.cpp`, `scm_soft.json`).
 pub const DEFAULT_DAMPING: f64 = 3e4;
 
 impl Soil {
@@ -323,8 +329,8 @@ impl SoilMemory {
 }
 
 /// The textbook soils: rows of Wong, *Theory of Ground Vehicles*, 4th ed.,
-/// Table 2.3 (spec "Textbook soils"), with the shear modulus `K` of spec
-/// "Textbook soils" (1 cm firm sandy terrain, 2.5 cm loose sand, 0.6 cm
+/// Table 2.3, with the shear modulus `K` (not in that table) as commonly
+/// quoted from Wong's chapter 2 after Bekker (1 cm firm sandy terrain, 2.5 cm loose sand, 0.6 cm
 /// clay; where no textbook value exists — loams, snow — 2.5 cm, the middle
 /// of the 2–3 cm third-party scripts use, marked on each), and the default
 /// `K_e` and `R`.

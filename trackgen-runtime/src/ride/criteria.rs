@@ -1,5 +1,7 @@
-//! The three ride criteria of `shared/spec/mobility.md` §2 as streaming
-//! filters with running statistics.
+//! The three ride criteria a mobility study measures at the driver's seat
+//! (absorbed power, ISO 2631-1 weighted acceleration, peak vertical
+//! acceleration; the guide's "The seat and the ride") as streaming filters
+//! with running statistics.
 
 use std::f64::consts::{FRAC_1_SQRT_2, PI};
 
@@ -33,7 +35,7 @@ impl MeanSquare {
 /// Vertical absorbed power (Pradko & Lee; Lee & Pradko, "Analytical
 /// analysis of human vibration", SAE 680091, 1968) in the form published
 /// with Project Chrono (`ChAbsorbedPowerVertical`,
-/// `src/chrono/utils/ChFilters.cpp`; `shared/spec/mobility.md` §2):
+/// `src/chrono/utils/ChFilters.cpp`):
 ///
 /// `H(s) = 14.5 s (s + 44) / ((s + 63)(s² + 24 s + 750))`
 ///
@@ -135,7 +137,7 @@ impl AbsorbedPower {
 }
 
 /// An ISO 2631-1:1997 frequency weighting (its Annex A, with `s = j2πf`,
-/// `ω_i = 2πf_i`; `shared/spec/mobility.md` §2) and the weighted r.m.s.
+/// `ω_i = 2πf_i`) and the weighted r.m.s.
 /// acceleration (ISO 2631-1:1997, 6.4.1): the square root of the mean of
 /// the squared weighted acceleration over the samples measured.
 ///
@@ -252,9 +254,9 @@ impl IsoWeighting {
 }
 
 /// Peak vertical acceleration for the half-round obstacle criterion
-/// (`shared/spec/mobility.md` §2; NRMM's 2.5 g limit): a 4-pole
+/// (the NATO Reference Mobility Model's 2.5 g limit): a 4-pole
 /// Butterworth low-pass at 30 Hz, then the running extremes of the output,
-/// in g. This is the spec's 30 Hz variant; Chrono's
+/// in g. This is the 30 Hz variant the mobility events use; Chrono's
 /// `ChISO2631_Shock_SeatCushionLogger::GetLegacyAz` first passes a 4-pole
 /// 75 Hz stage (and a 0.2–0.5 s fade-in), then this 30 Hz one, and takes
 /// the signed maximum ([`PeakVertical::max_g`]).

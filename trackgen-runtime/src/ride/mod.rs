@@ -1,6 +1,7 @@
 //! Ride criteria at the driver's seat: streaming filters over a uniformly
 //! sampled acceleration and the running figures computed from their
-//! output (`shared/spec/mobility.md` §2).
+//! output (the guide's "The seat and the ride" states each filter and its
+//! published source).
 //!
 //! - [`AbsorbedPower`]: vertical absorbed power in W (Pradko & Lee, in the
 //!   form published with Project Chrono); the random-terrain ride limit
@@ -54,8 +55,9 @@
 //! gravity term does not matter to them; the peak filter passes 0 Hz, so
 //! feed it the kinematic acceleration (zero at rest), not an
 //! accelerometer's specific force. Run-in is excluded with
-//! `start_measuring` (statistics restart, filter state kept): the spec's
-//! courses exclude their first 100 m.
+//! `start_measuring` (statistics restart, filter state kept): the
+//! next-generation NRMM's random-course benchmark (NATO ET-148, 2016)
+//! excludes each course's first 100 m.
 
 mod biquad;
 mod criteria;

@@ -1,12 +1,14 @@
-//! Tests of the ride criteria against the closed forms and test values of
-//! `shared/spec/mobility.md` §2. Run with `--nocapture` to see the
-//! measured figures.
+//! Tests of the ride criteria against their continuous closed forms
+//! (Lee & Pradko's absorbed-power filter as Project Chrono publishes it,
+//! ISO 2631-1:1997 Annex A, a 4-pole Butterworth; the guide's "The seat
+//! and the ride" states each) and the values they give by hand. Run with
+//! `--nocapture` to see the measured figures.
 
 use std::f64::consts::PI;
 
 use super::*;
 
-/// The sample interval of the spec's runs.
+/// The sample interval of the runs here, s.
 const DT: f64 = 1e-3;
 
 /// The continuous frequency the bilinear image of a section prewarped at
@@ -92,10 +94,11 @@ fn averaging_bound(f: f64, n: usize) -> f64 {
 
 #[test]
 fn absorbed_power_closed_form() {
-    // The spec's values to the 4 significant digits given: tolerance half
-    // a unit in the last digit, plus 1e-12 for rounding.
+    // The closed form's values `|H(j2πf)|²`, W/(ft/s²)², computed apart to
+    // 4 significant digits: tolerance half a unit in the last digit, plus
+    // 1e-12 for rounding.
     let ap = AbsorbedPower::new(DT);
-    // The spec's (and Chrono's) 1 m = 3.280839895 ft, to its 10 digits.
+    // Chrono's 1 m = 3.280839895 ft (the exact 1/0.3048), to its 10 digits.
     assert!((FT_PER_M - 3.280839895).abs() < 5e-10);
     let cases = [
         (1.0, 0.007754, 5e-7),
@@ -107,17 +110,18 @@ fn absorbed_power_closed_form() {
     ];
     for (f, want, tol) in cases {
         let got = ap.response_continuous(f).powi(2);
-        println!("AP |H({f} Hz)|^2 = {got:.7} (spec {want})");
+        println!("AP |H({f} Hz)|^2 = {got:.7} (closed form {want})");
         assert!((got - want).abs() <= tol + 1e-12, "{f} Hz: {got} vs {want}");
     }
 }
 
 #[test]
 fn iso_weightings_closed_form() {
-    // The spec's values to the 3 digits given: tolerance half a unit in
-    // the last digit (5e-4), except W_k at 16 Hz: the formula gives
-    // 0.76870 (0.76895 without band limiting), 0.769 when rounded; the
-    // spec's 0.768 is 0.7 of a unit below, and is held to one unit (1e-3).
+    // ISO 2631-1:1997's tabulated weighting factors (its Table 3, in
+    // thousandths): tolerance half a unit in the last digit (5e-4), except
+    // W_k at 16 Hz: the formula gives 0.76870 (0.76895 without band
+    // limiting), 0.769 when rounded; the table's 0.768 is 0.7 of a unit
+    // below, and is held to one unit (1e-3).
     let wk = IsoWeighting::wk(DT);
     for (f, want, tol) in [
         (1.0, 0.482, 5e-4),
@@ -126,7 +130,7 @@ fn iso_weightings_closed_form() {
         (16.0, 0.768, 1e-3),
     ] {
         let got = wk.response_continuous(f);
-        println!("|W_k({f} Hz)| = {got:.6} (spec {want})");
+        println!("|W_k({f} Hz)| = {got:.6} (table {want})");
         assert!((got - want).abs() <= tol, "W_k {f} Hz: {got} vs {want}");
     }
     assert!((wk.response_continuous(16.0) - 0.769).abs() < 5e-4);
@@ -140,10 +144,10 @@ fn iso_weightings_closed_form() {
         (16.0, 0.125),
     ] {
         let got = wd.response_continuous(f);
-        println!("|W_d({f} Hz)| = {got:.6} (spec {want})");
+        println!("|W_d({f} Hz)| = {got:.6} (table {want})");
         assert!((got - want).abs() <= 5e-4, "W_d {f} Hz: {got} vs {want}");
     }
-    // The spec's values include the band limiting: without it (stages 3
+    // The table's values include the band limiting: without it (stages 3
     // and 4 only) |W_d(0.5 Hz)| = 1.0125 and |W_k(1 Hz)| = 0.4886, both
     // off by more than 5e-3.
     let unlimited = |w: &IsoWeighting, f: f64| -> f64 {
