@@ -603,41 +603,56 @@ fn print_summary(name: &str, rows: &[Row], wall: f64) {
     }
 }
 
-/// Each published figure with the set's answer to it (the row of that
-/// quantity with no parameter) and the verdict: agrees, misses (by how
-/// much; the guide's "Against the real vehicle" gives the cause measured),
-/// or not run.
-fn against<'a>(
-    published: &'a [Published],
-    rows: &'a [Row],
-) -> Vec<(&'a Published, Option<&'a Row>, String)> {
+/// A published figure beside the set's answer to it.
+struct Against<'a> {
+    figure: &'a Published,
+    /// The answer as the table prints it, or `not run`.
+    answer: String,
+    /// The answer over the published value (NaN if none).
+    ratio: f64,
+    /// Agrees, misses (by how much; the guide's "Against the real
+    /// vehicle" gives the cause measured), or not run.
+    verdict: String,
+}
+
+/// Each published figure with the set's answer to it: the row of that
+/// quantity with no parameter.
+fn against<'a>(published: &'a [Published], rows: &[Row]) -> Vec<Against<'a>> {
     published
         .iter()
         .map(|figure| {
             let row = rows
                 .iter()
                 .find(|r| r.quantity == figure.quantity && r.parameter.is_none());
-            let verdict = match row {
-                None => "not run".to_string(),
-                Some(r) => {
-                    let c = figure.compare(r.value);
-                    if c.agrees {
-                        format!(
-                            "agrees within {:.0} %",
-                            100.0 * trackgen::mobility::AGREEMENT
-                        )
-                    } else if c.ratio.is_finite() {
-                        format!(
-                            "misses by {:+.0} % (the guide, Mobility events, \"Against the real \
-                             vehicle\", gives the cause)",
-                            100.0 * (c.ratio - 1.0)
-                        )
-                    } else {
-                        format!("no answer ({})", r.relation)
-                    }
-                }
+            let Some(r) = row else {
+                return Against {
+                    figure,
+                    answer: "not run".into(),
+                    ratio: f64::NAN,
+                    verdict: "not run".into(),
+                };
             };
-            (figure, row, verdict)
+            let c = figure.compare(r.value);
+            let verdict = if c.agrees {
+                format!(
+                    "agrees within {:.0} %",
+                    100.0 * trackgen::mobility::AGREEMENT
+                )
+            } else if c.ratio.is_finite() {
+                format!(
+                    "misses by {:+.0} % (the guide, Mobility events, \"Against the real \
+                     vehicle\", gives the cause)",
+                    100.0 * (c.ratio - 1.0)
+                )
+            } else {
+                format!("no answer ({})", r.relation)
+            };
+            Against {
+                figure,
+                answer: value_text(r),
+                ratio: c.ratio,
+                verdict,
+            }
         })
         .collect()
 }
@@ -650,9 +665,13 @@ fn print_against(published: &[Published], rows: &[Row]) {
         return;
     }
     println!("\nagainst the real vehicle:");
-    for (figure, row, verdict) in against {
-        let answer = row.map_or("not run".to_string(), value_text);
-        let ratio = row.map_or(f64::NAN, |r| figure.compare(r.value).ratio);
+    for Against {
+        figure,
+        answer,
+        ratio,
+        verdict,
+    } in against
+    {
         println!(
             "{:<26} {:>12} against {:>8.3} {:<14} ratio {ratio:.2}: {verdict}\n{:<26} source: {}",
             figure.quantity, answer, figure.value, figure.unit, "", figure.source
@@ -977,9 +996,13 @@ fn report(name: &str, published: &[Published], rows: &[Row], wall: f64, svg: &st
             "<h2>Against the real vehicle</h2><table><tr><th>quantity</th><th>answer</th>\
              <th>published</th><th>unit</th><th>ratio</th><th>verdict</th><th>source</th></tr>",
         );
-        for (figure, row, verdict) in against {
-            let answer = row.map_or("not run".to_string(), value_text);
-            let ratio = row.map_or(f64::NAN, |r| figure.compare(r.value).ratio);
+        for Against {
+            figure,
+            answer,
+            ratio,
+            verdict,
+        } in against
+        {
             let _ = write!(
                 html,
                 "<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{:.3}</td><td>{}</td>\

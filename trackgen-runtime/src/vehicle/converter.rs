@@ -427,8 +427,10 @@ fn lerp(points: &[(f64, f64)], x: f64) -> (f64, f64) {
 
 /// The engine's full-load torque at `w` and its slope: the map, linear
 /// between its points, none below its first speed or beyond its last, and
-/// none where the map falls below 0 (a governor's cut-off).
-fn engine_torque(map: &[(f64, f64)], w: f64) -> (f64, f64) {
+/// none where the map falls below 0 (a governor's cut-off). The one
+/// reading of an engine map, [`Powertrain::Engine`](super::Powertrain::Engine)'s
+/// too.
+pub(super) fn engine_torque(map: &[(f64, f64)], w: f64) -> (f64, f64) {
     if w < map[0].0 || w > map[map.len() - 1].0 {
         return (0.0, 0.0);
     }

@@ -2,7 +2,7 @@
 //! for, as a function of the sprocket's speed.
 
 use super::PowertrainError;
-use super::converter::Driveline;
+use super::converter::{Driveline, engine_torque};
 
 /// The engine and the driveline behind a sprocket, as the largest torque
 /// they give it at each sprocket speed ([`limit`](Self::limit)). A drive
@@ -176,22 +176,11 @@ fn peak_of(map: &[(f64, f64)]) -> Option<(f64, f64)> {
 /// 0): the clutch slips with the engine held at its peak torque, as it
 /// does at a start or a crawl.
 fn map_at(map: &[(f64, f64)], peak: Option<(f64, f64)>, w: f64) -> (f64, f64) {
-    let (Some(&last), Some(peak)) = (map.last(), peak) else {
+    let Some(peak) = peak else {
         return (0.0, 0.0);
     };
     if w <= peak.0 {
         return (peak.1.max(0.0), 0.0);
     }
-    if w > last.0 {
-        return (0.0, 0.0);
-    }
-    let i = map.partition_point(|p| p.0 < w).max(1);
-    let ((w0, t0), (w1, t1)) = (map[i - 1], map[i]);
-    let slope = (t1 - t0) / (w1 - w0);
-    let torque = t0 + slope * (w - w0);
-    if torque > 0.0 {
-        (torque, slope)
-    } else {
-        (0.0, 0.0)
-    }
+    engine_torque(map, w)
 }
