@@ -390,3 +390,18 @@ fn the_declared_stall_capacity_is_its_derivation() {
     );
     assert_eq!(driveline.capacity[0], (0.0, m113::STALL_CAPACITY));
 }
+
+/// An ideally shifted engine map is refused by the same rule as the
+/// converter's tables: at the point where its speeds stop increasing.
+#[test]
+fn a_bad_engine_map_is_refused_by_the_tables_rule() {
+    let bad = Powertrain::Engine {
+        map: vec![(50.0, 500.0), (200.0, 600.0), (150.0, 550.0)],
+        ratios: vec![0.2],
+        fraction: 0.4,
+    };
+    assert!(matches!(
+        bad.check(),
+        Err(PowertrainError::Table { point: 2, .. })
+    ));
+}

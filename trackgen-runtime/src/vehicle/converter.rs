@@ -442,9 +442,10 @@ pub(super) fn engine_torque(map: &[(f64, f64)], w: f64) -> (f64, f64) {
     }
 }
 
-/// A table of two or more finite points of increasing abscissa, each value
-/// accepted by `valid`.
-fn table(
+/// A table of two or more finite points of increasing abscissa from one
+/// ≥ 0, each value accepted by `valid`: the one rule of every powertrain
+/// table (an engine map, a converter's curves).
+pub(super) fn table(
     points: &[(f64, f64)],
     what: &'static str,
     valid: impl Fn(f64) -> bool,

@@ -2,7 +2,7 @@
 //! for, as a function of the sprocket's speed.
 
 use super::PowertrainError;
-use super::converter::{Driveline, engine_torque};
+use super::converter::{Driveline, engine_torque, table};
 
 /// The engine and the driveline behind a sprocket, as the largest torque
 /// they give it at each sprocket speed ([`limit`](Self::limit)). A drive
@@ -68,15 +68,7 @@ impl Powertrain {
                 ratios,
                 fraction,
             } => {
-                if map.len() < 2 {
-                    return Err(PowertrainError::Map { point: map.len() });
-                }
-                for (i, &(speed, torque)) in map.iter().enumerate() {
-                    let increasing = i == 0 || speed > map[i - 1].0;
-                    if !(speed.is_finite() && torque.is_finite() && increasing && speed >= 0.0) {
-                        return Err(PowertrainError::Map { point: i });
-                    }
-                }
+                table(map, "engine's full-load torque", |_| true)?;
                 if ratios.is_empty() {
                     return Err(PowertrainError::Ratio {
                         gear: 0,

@@ -13,15 +13,6 @@ pub enum PowertrainError {
         /// What was given.
         value: f64,
     },
-    /// A torque map of fewer than two points, or speeds not increasing, or
-    /// a value not finite.
-    #[error(
-        "the engine's torque map needs two or more finite points of increasing speed (at point {point})"
-    )]
-    Map {
-        /// The offending point (0-based).
-        point: usize,
-    },
     /// No gears, or a ratio not finite and positive.
     #[error("the gearbox needs ratios finite and more than 0 (gear {gear}: {ratio})")]
     Ratio {
