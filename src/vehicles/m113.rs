@@ -57,12 +57,12 @@ pub const TORSION_DAMPING: f64 = 500.0;
 pub const TORSION_PRELOAD: f64 = 1.0e4;
 /// Track width, m, for soft soil (which the planar model otherwise does
 /// not see): the M113's 15-inch (0.381 m) single-pin track; Chrono's model
-/// and `shared/spec/m113.md` give none.
+/// gives none (the 15 in: AFV Database, M113, track T130E1).
 pub const TRACK_WIDTH: f64 = 0.381;
 /// The driver's seat, m, in the track-assembly frame: Chrono's
 /// `M113_Chassis` puts the driver at (0, 0.5, 1.2) m in the chassis
-/// reference frame, whose x-z positions this frame shares
-/// (`shared/spec/mobility.md` §4): over the sprocket, 1.2 m up.
+/// reference frame, whose x-z positions this frame shares: over the
+/// sprocket, 1.2 m up.
 pub const DRIVER_SEAT: (f64, f64) = (0.0, 1.2);
 /// Length of the idler's tensioner arm, m. Chrono's tensioner is a
 /// translational spring-damper (1e6 N/m, 1.4e4 N s/m, 2e4 N preload); here

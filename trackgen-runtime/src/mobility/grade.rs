@@ -1,4 +1,5 @@
-//! Grades (`shared/spec/mobility.md` §1): the steepest grade climbed from
+//! Grades (the NG-NRMM's grade event; the guide's "Mobility events"): the
+//! steepest grade climbed from
 //! a crawl, and the speed held up a grade at full power.
 
 use super::runs::{Footprint, Probe, drive, obstacle_course, ramp};

@@ -1,5 +1,7 @@
 //! The mobility engineer's questions, asked of any declared vehicle in
-//! its pitch plane (`shared/spec/mobility.md` §1): the ride over random
+//! its pitch plane (the NATO Reference Mobility Model's events and the
+//! next-generation NRMM's benchmark, NATO ET-148, 2016; the guide's
+//! "Mobility events"): the ride over random
 //! terrain and the speed at which the driver's absorbed power reaches
 //! 6 W, the speed over a half-round obstacle at which the seat sees
 //! 2.5 g, the highest step and widest gap crossed from a crawl, the
