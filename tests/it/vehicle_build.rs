@@ -72,12 +72,13 @@ fn runs<V: Vehicle>() -> f64 {
     let mut system = V::system(FLAT, V::speed_drive(|t| t.min(1.0))).expect("it builds");
     let n = system.dimension();
     // Partitioned track: n independent coordinates and rates; chassis
-    // coordinates and rates; the drive's integral, work and dissipation;
-    // the ground's stiction deflection at every ground point.
+    // coordinates and rates; the drive's integral, the motor's work, the
+    // dissipation and the engine's work; the ground's stiction deflection
+    // at every ground point.
     let points = V::geometry().shoe.ground_points.len();
     assert_eq!(
         n,
-        2 * (V::TRACK_DOF - 2) + 2 * V::CHASSIS_DOF + 3 + points * (V::TRACK_DOF - 2),
+        2 * (V::TRACK_DOF - 2) + 2 * V::CHASSIS_DOF + 4 + points * (V::TRACK_DOF - 2),
         "{}",
         V::NAME
     );

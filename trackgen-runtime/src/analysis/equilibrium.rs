@@ -167,8 +167,9 @@ pub fn equilibrium<S: VehicleDynamics>(
     for i in layout.rates().chain(layout.tangential.clone()) {
         y[i] = 0.0;
     }
-    y[layout.books[0]] = 0.0;
-    y[layout.books[1]] = 0.0;
+    for &book in &layout.books {
+        y[book] = 0.0;
+    }
 
     let points = system.geometry().shoe.ground_points.len();
     // First the rest that holds nothing in friction; then, if something

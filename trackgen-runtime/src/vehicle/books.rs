@@ -3,6 +3,7 @@
 //! the drive balances the change of energy plus the dissipated work by
 //! construction (each element gives its load with its energy terms).
 
+use super::EngineSide;
 use crate::contact::ContactForce;
 
 /// What the force elements did at one evaluation: the energy books' terms
@@ -36,6 +37,11 @@ pub(super) struct EnergyBooks {
     pub engine_load: f64,
     /// The rate of the drive controller's integral, rad/s.
     pub integral_rate: f64,
+    /// The engine's side of the drive ([`Powertrain::engine_side`](super::Powertrain::engine_side)):
+    /// its `engine_power` is the engine work's rate. Without a powertrain
+    /// the drive is its own engine (its power is the sprocket's); braking,
+    /// the engine gives nothing ([`EngineSide::IDLE`]).
+    pub engine: EngineSide,
 }
 
 impl EnergyBooks {

@@ -143,14 +143,25 @@ impl VehicleConfig {
     /// [`stall_torque`](Self::stall_torque), found once per build): none
     /// without a powertrain.
     pub(super) fn torque_cap(&self, omega: f64, stall: f64) -> TorqueCap {
-        self.powertrain.as_ref().map_or(TorqueCap::NONE, |p| {
-            let (value, slope) = p.limit(omega.abs());
-            TorqueCap {
-                value,
-                slope,
-                stall,
-            }
-        })
+        self.torque_cap_in_gear(omega, stall).0
+    }
+
+    /// [`torque_cap`](Self::torque_cap), and the gear that gives it
+    /// ([`Powertrain::limit_in_gear`]).
+    pub(super) fn torque_cap_in_gear(&self, omega: f64, stall: f64) -> (TorqueCap, Option<usize>) {
+        self.powertrain
+            .as_ref()
+            .map_or((TorqueCap::NONE, None), |p| {
+                let (value, slope, gear) = p.limit_in_gear(omega.abs());
+                (
+                    TorqueCap {
+                        value,
+                        slope,
+                        stall,
+                    },
+                    gear,
+                )
+            })
     }
 
     /// The powertrain's torque at rest, N m (∞ without a powertrain).

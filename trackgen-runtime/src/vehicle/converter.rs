@@ -290,6 +290,101 @@ impl Driveline {
         }
     }
 
+    /// Where the engine and converter run in range `range` (0-based) when
+    /// the turbine turns at `wt` (rad/s) and gives `tt` (N m, the whole
+    /// turbine's, ≥ 0) — at part load as at full: the converter's own
+    /// characteristic sets the engine's speed, `TR(SR) (ω_e / K(SR))² = T_t`
+    /// with `SR = ω_t / ω_e`, and the engine gives what the pump absorbs,
+    /// `T_e = T_t / TR` (the throttle is whatever gives it). The root is
+    /// found between `ω_t` (the coupling) and the full-load match's speed,
+    /// where the turbine gives at least `tt`; a range that locks is locked
+    /// where the root's speed ratio reaches the clutch's, or where the
+    /// full-load point is locked, and then `ω_e = ω_t`, `T_e = T_t`.
+    /// A turbine turned backwards (`wt < 0`, the vehicle forcing the
+    /// sprocket back) is the converter at stall. Where even the coupling
+    /// gives more than `tt` (a light load near `SR = 1`) the converter is
+    /// at the coupling, `ω_e = ω_t`. `turbine_slope` is not computed (0).
+    pub fn part_load(&self, range: usize, wt: f64, tt: f64) -> OperatingPoint {
+        let locking = self.lockup_ranges.contains(&range);
+        let locked = |we: f64, te: f64| OperatingPoint {
+            engine_speed: we,
+            engine_torque: te,
+            speed_ratio: 1.0,
+            torque_ratio: 1.0,
+            locked: true,
+            turbine_torque: te,
+            turbine_slope: 0.0,
+        };
+        let w = wt.max(0.0);
+        let full = self.operating_point(range, w);
+        if let Some(point) = full
+            && point.locked
+        {
+            return locked(w, tt);
+        }
+        // h(ω_e) = T_t − TR(SR) (ω_e / K(SR))²: positive at the coupling
+        // (the converter gives less than asked), ≤ 0 at the full-load match.
+        let turbine = |we: f64| -> (f64, f64) {
+            let sr = w / we;
+            let (k, dk) = lerp(&self.capacity, sr);
+            let (tr, dtr) = lerp(&self.torque_ratio, sr);
+            let tp = (we / k) * (we / k);
+            let dsr = -sr / we;
+            let dtp = 2.0 * tp / we - 2.0 * tp / k * dk * dsr;
+            (tr * tp, dtr * dsr * tp + tr * dtp)
+        };
+        let h = |we: f64| {
+            let (t, dt) = turbine(we);
+            (tt - t, -dt)
+        };
+        let coupling = || OperatingPoint {
+            engine_speed: w,
+            engine_torque: tt / lerp(&self.torque_ratio, 1.0).0,
+            speed_ratio: 1.0,
+            torque_ratio: lerp(&self.torque_ratio, 1.0).0,
+            locked: false,
+            turbine_torque: tt,
+            turbine_slope: 0.0,
+        };
+        if w > 0.0 && h(w).0 <= 0.0 {
+            return if locking { locked(w, tt) } else { coupling() };
+        }
+        if tt <= 0.0 {
+            // At rest with nothing asked: the engine gives nothing.
+            return coupling();
+        }
+        // The full-load match gives at least `tt` (the drive is capped
+        // there): the upper end of the bracket. A torque past it (by the
+        // cap's rounding) runs at it; with no match (the cap is 0 there,
+        // so nothing is asked) the converter is at the coupling.
+        let Some(full) = full else {
+            return coupling();
+        };
+        let b = full.engine_speed;
+        let gb = h(b).0;
+        if gb > 0.0 || b <= w {
+            return full;
+        }
+        // At stall `SR = 0` at every engine speed but 0, where it has no
+        // meaning: there `h` is `T_t`, its limit.
+        let ga = if w > 0.0 { h(w).0 } else { tt };
+        let we = solve_piece(&h, (w, ga), (b, gb));
+        let sr = w / we;
+        if locking && sr >= self.lockup_speed_ratio {
+            return locked(w, tt);
+        }
+        let tr = lerp(&self.torque_ratio, sr).0;
+        OperatingPoint {
+            engine_speed: we,
+            engine_torque: tt / tr,
+            speed_ratio: sr,
+            torque_ratio: tr,
+            locked: false,
+            turbine_torque: tt,
+            turbine_slope: 0.0,
+        }
+    }
+
     /// The most torque any range gives the sprocket at sprocket speed
     /// `speed` (rad/s, ≥ 0), N m, its slope with the speed, N m s/rad, and
     /// the range (0-based) that gives it (`None` if none drives).

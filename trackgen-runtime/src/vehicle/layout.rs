@@ -5,7 +5,7 @@ use std::ops::Range;
 
 /// The places in a vehicle's state `y` ([`VehicleSystem`](super::VehicleSystem)'s
 /// layout): the track's integrated coordinates and their rates, the
-/// chassis' coordinates and rates, the drive's integral, the books' two
+/// chassis' coordinates and rates, the drive's integral, the books' three
 /// quadratures and the ground points' tangential states.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StateLayout {
@@ -25,9 +25,9 @@ pub struct StateLayout {
     pub chassis_rates: Range<usize>,
     /// The speed drive's integral, rad.
     pub integral: usize,
-    /// The books' quadratures: the motor's work and the dissipated work, J.
-    /// They feed nothing back.
-    pub books: [usize; 2],
+    /// The books' quadratures: the motor's work, the dissipated work and
+    /// the engine's work (this side's share), J. They feed nothing back.
+    pub books: [usize; 3],
     /// The ground points' tangential states (stiction deflections or soil
     /// shear displacements), link by link; empty with regularised friction.
     pub tangential: Range<usize>,
@@ -66,7 +66,7 @@ impl StateLayout {
     /// The one layout of a vehicle's state: the track's integrated
     /// coordinates `track_coordinates` (`q_i` indices) and their rates,
     /// the chassis' `chassis_dof` coordinates and rates, the drive's
-    /// integral, the books' two quadratures, then `tangential` tangential
+    /// integral, the books' three quadratures, then `tangential` tangential
     /// states.
     pub(crate) fn new(
         track_coordinates: Vec<usize>,
@@ -84,8 +84,8 @@ impl StateLayout {
             chassis: chassis..chassis + chassis_dof,
             chassis_rates: chassis + chassis_dof..integral,
             integral,
-            books: [integral + 1, integral + 2],
-            tangential: integral + 3..integral + 3 + tangential,
+            books: [integral + 1, integral + 2, integral + 3],
+            tangential: integral + 4..integral + 4 + tangential,
             sprocket,
         }
     }

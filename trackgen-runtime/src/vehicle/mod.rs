@@ -46,7 +46,7 @@ pub use fitted::{
 };
 pub use geometry::Geometry;
 pub use layout::StateLayout;
-pub use powertrain::Powertrain;
+pub use powertrain::{EngineSide, Powertrain};
 pub use powertrain_error::PowertrainError;
 pub use record::VehicleRecord;
 pub use system::VehicleSystem;

@@ -92,12 +92,20 @@ impl Powertrain {
     /// The largest driving torque at sprocket speed `|ω|` (`speed`, rad/s,
     /// ≥ 0), N m, and its slope with `|ω|`, N m s/rad.
     pub fn limit(&self, speed: f64) -> (f64, f64) {
+        let (torque, slope, _) = self.limit_in_gear(speed);
+        (torque, slope)
+    }
+
+    /// [`limit`](Self::limit), and the gear (0-based) that gives it: the
+    /// range an ideally shifted gearbox is in at that speed (`None` for a
+    /// [`Power`](Self::Power) limit, or where no gear drives).
+    pub fn limit_in_gear(&self, speed: f64) -> (f64, f64, Option<usize>) {
         match self {
             Powertrain::Power { power, max_torque } => {
                 if speed * max_torque > *power {
-                    (power / speed, -power / (speed * speed))
+                    (power / speed, -power / (speed * speed), None)
                 } else {
-                    (*max_torque, 0.0)
+                    (*max_torque, 0.0, None)
                 }
             }
             Powertrain::Engine {
@@ -105,9 +113,9 @@ impl Powertrain {
                 ratios,
                 fraction,
             } => {
-                let mut best = (0.0, 0.0);
+                let mut best = (0.0, 0.0, None);
                 let peak = peak_of(map);
-                for &ratio in ratios {
+                for (gear, &ratio) in ratios.iter().enumerate() {
                     let engine = speed / ratio;
                     let (torque, slope) = map_at(map, peak, engine);
                     let (torque, slope) = (
@@ -115,15 +123,79 @@ impl Powertrain {
                         fraction * slope / (ratio * ratio),
                     );
                     if torque > best.0 {
-                        best = (torque, slope);
+                        best = (torque, slope, Some(gear));
                     }
                 }
                 best
             }
-            Powertrain::Converter(driveline) => {
-                let (torque, slope, _) = driveline.envelope(speed);
-                (torque, slope)
+            Powertrain::Converter(driveline) => driveline.envelope(speed),
+        }
+    }
+
+    /// The engine's side of a drive that gives the sprocket `torque`
+    /// (N m, ≥ 0, pushing the way the driver asks) while it turns at
+    /// `speed` (rad/s, positive the way the torque pushes, negative while
+    /// the vehicle forces it back) in `gear` (0-based, as
+    /// [`limit_in_gear`](Self::limit_in_gear) found it): the engine's
+    /// speed and torque, the converter's state, and the power at each
+    /// stage for this side.
+    ///
+    /// Through a [`Converter`](Self::Converter): [`Driveline::part_load`],
+    /// the turbine at `n ω` giving `τ / (fraction · n)` (`n` the range's
+    /// reduction with the final drive's); this side's share of the
+    /// engine's power is `share · T_e ω_e`, of the turbine's
+    /// `share · T_t ω_t`, and the sprocket gets the gearbox's and final
+    /// drive's efficiencies times the turbine's. The simple forms state no
+    /// stages apart: through an [`Engine`](Self::Engine) map the engine's
+    /// speed and torque are the gear's (held at the map's peak while the
+    /// clutch slips), and with a [`Power`](Self::Power) limit there is no
+    /// engine speed; for both the engine's power is booked at the
+    /// sprocket, `τ ω`.
+    pub fn engine_side(&self, gear: Option<usize>, speed: f64, torque: f64) -> EngineSide {
+        let at_sprocket = EngineSide {
+            gear,
+            engine_speed: 0.0,
+            engine_torque: 0.0,
+            speed_ratio: 0.0,
+            torque_ratio: 0.0,
+            locked: None,
+            engine_power: torque * speed,
+            turbine_power: torque * speed,
+        };
+        match (self, gear) {
+            (
+                Powertrain::Engine {
+                    map,
+                    ratios,
+                    fraction,
+                },
+                Some(gear),
+            ) => {
+                let ratio = ratios[gear];
+                let held = peak_of(map).map_or(0.0, |p| p.0);
+                EngineSide {
+                    engine_speed: (speed / ratio).max(held),
+                    engine_torque: torque * ratio / fraction,
+                    ..at_sprocket
+                }
             }
+            (Powertrain::Converter(driveline), Some(range)) => {
+                let n = driveline.reduction(range);
+                let tt = torque / (driveline.fraction() * n);
+                let point = driveline.part_load(range, n * speed, tt);
+                let share = driveline.share;
+                EngineSide {
+                    gear: Some(range),
+                    engine_speed: point.engine_speed,
+                    engine_torque: point.engine_torque,
+                    speed_ratio: point.speed_ratio,
+                    torque_ratio: point.torque_ratio,
+                    locked: Some(point.locked),
+                    engine_power: share * point.engine_torque * point.engine_speed,
+                    turbine_power: share * tt * n * speed,
+                }
+            }
+            _ => at_sprocket,
         }
     }
 
@@ -152,6 +224,52 @@ impl Powertrain {
             Powertrain::Converter(driveline) => driveline.max_power(),
         }
     }
+}
+
+/// The engine's side of the drive at one instant
+/// ([`Powertrain::engine_side`]): what a run records of its powertrain.
+/// Speeds in rad/s, torques in N m, powers in W; a figure the powertrain
+/// does not define is 0 (a run's results hold numbers only).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EngineSide {
+    /// The gear or range (0-based), if the powertrain has gears.
+    pub gear: Option<usize>,
+    /// The engine's speed.
+    pub engine_speed: f64,
+    /// The engine's torque (the whole engine's, both sides').
+    pub engine_torque: f64,
+    /// The converter's speed ratio `ω_t / ω_p` (1 when locked).
+    pub speed_ratio: f64,
+    /// The converter's torque ratio `T_t / T_p` (1 when locked).
+    pub torque_ratio: f64,
+    /// Whether the converter's lock-up clutch is engaged (`None`: no
+    /// converter).
+    pub locked: Option<bool>,
+    /// This side's share of the engine's power.
+    pub engine_power: f64,
+    /// This side's share of the converter's output (the turbine's) power.
+    pub turbine_power: f64,
+}
+
+impl Default for EngineSide {
+    fn default() -> EngineSide {
+        EngineSide::IDLE
+    }
+}
+
+impl EngineSide {
+    /// The engine side of a drive that takes nothing from the engine (no
+    /// powertrain, or braking): no power at any stage, no figure.
+    pub const IDLE: EngineSide = EngineSide {
+        gear: None,
+        engine_speed: 0.0,
+        engine_torque: 0.0,
+        speed_ratio: 0.0,
+        torque_ratio: 0.0,
+        locked: None,
+        engine_power: 0.0,
+        turbine_power: 0.0,
+    };
 }
 
 /// The map's point of largest torque (the first, if several), once per

@@ -61,6 +61,36 @@ record! {
         motor_work,
         /// The work dissipated since the start, J.
         dissipated,
+        /// This side's share of the engine's work since the start, J: the
+        /// motor's work plus what the converter and the gears lost on the
+        /// way ([`Powertrain::engine_side`](super::Powertrain::engine_side));
+        /// the motor's work itself without a powertrain.
+        engine_work,
+        /// This side's share of the engine's power, W (0 while the drive
+        /// brakes).
+        engine_power,
+        /// This side's share of the converter's output power (the
+        /// turbine's), W; the engine's without a converter.
+        turbine_power,
+        /// The engine's speed, rad/s (0 where the powertrain defines none,
+        /// or the engine gives nothing: without a powertrain, with a
+        /// power limit, or braking).
+        engine_speed,
+        /// The engine's torque, N m (the whole engine's; 0 as
+        /// `engine_speed`).
+        engine_torque,
+        /// The gear or range engaged, numbered from 1 (0 without gears, or
+        /// with the engine giving nothing).
+        gear,
+        /// The converter's speed ratio, turbine over pump (1 locked; 0
+        /// without a converter, as the next two).
+        speed_ratio,
+        /// The converter's torque ratio, turbine over pump (1 locked).
+        torque_ratio,
+        /// The converter's efficiency, `speed_ratio · torque_ratio`.
+        converter_efficiency,
+        /// 1 with the converter's lock-up clutch engaged, else 0.
+        locked,
         /// The driver's seat ([`ChassisModel::SEAT`](crate::multibody::ChassisModel::SEAT)),
         /// x, m.
         seat_x,

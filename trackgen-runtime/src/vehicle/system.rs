@@ -218,13 +218,13 @@ where
     }
 
     /// The bodies' part of a state; the drive's integral, the motor's
-    /// work and the dissipated work; the ground points' tangential
-    /// states.
-    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; 3], &'y [f64]) {
+    /// work, the dissipated work and the engine's work; the ground points'
+    /// tangential states.
+    fn split<'y>(&self, y: &'y [f64]) -> (&'y [f64], [f64; 4], &'y [f64]) {
         let l = &self.layout;
         (
             &y[l.bodies()],
-            [y[l.integral], y[l.books[0]], y[l.books[1]]],
+            [y[l.integral], y[l.books[0]], y[l.books[1]], y[l.books[2]]],
             &y[l.tangential.clone()],
         )
     }
@@ -674,7 +674,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.y0.len()
     }
 
-    /// The books' two quadratures (the motor's work, the dissipated work).
+    /// The books' three quadratures (the motor's, the dissipated and the
+    /// engine's work).
     fn is_quadrature(&self, i: usize) -> bool {
         self.layout.books.contains(&i)
     }
@@ -722,6 +723,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         dy[l.integral] = books.integral_rate;
         dy[l.books[0]] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
         dy[l.books[1]] = books.dissipation + self.track().closure_energy(qt, qdt).1;
+        dy[l.books[2]] = books.engine.engine_power;
         dy[l.tangential.clone()].copy_from_slice(&self.work.tangential_rate);
         Ok(())
     }
@@ -830,7 +832,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
     }
 
     fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
-        let (bodies, [_, work, dissipated], _) = self.split(y);
+        let (bodies, [_, work, dissipated, engine_work], _) = self.split(y);
         self.bodies.observe(t, bodies, row)?;
         let (qc, qdc) = self.evaluate(t, y)?;
         let (track, chassis) = self.bodies.parts_mut();
@@ -891,6 +893,16 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             energy,
             motor_work: work,
             dissipated,
+            engine_work,
+            engine_power: books.engine.engine_power,
+            turbine_power: books.engine.turbine_power,
+            engine_speed: books.engine.engine_speed,
+            engine_torque: books.engine.engine_torque,
+            gear: books.engine.gear.map_or(0.0, |g| (g + 1) as f64),
+            speed_ratio: books.engine.speed_ratio,
+            torque_ratio: books.engine.torque_ratio,
+            converter_efficiency: books.engine.speed_ratio * books.engine.torque_ratio,
+            locked: f64::from(u8::from(books.engine.locked == Some(true))),
             seat_x: seat.position.x,
             seat_y: seat.position.y,
             seat_ax: seat.acceleration.x,
