@@ -38,7 +38,7 @@ use trackgen::laws::PenaltyJoint;
 use trackgen::multibody::{BodyLoad, RecursiveModel};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
 use trackgen::simulate::{Output, simulate};
-use trackgen::system::{TrackSystem, TreeSystem};
+use trackgen::system::{Simulated, TrackSystem, TreeSystem};
 
 /// Gravity of the tumbler, declared explicitly: the exact solution uses it.
 const GRAVITY: Vector2<f64> = Vector2::new(0.0, -9.81);
@@ -506,6 +506,111 @@ fn bogacki_shampine_follows_its_tolerance() {
         assert!(
             worst < 5.0 * tol,
             "tol {tol}: dense output off by {worst:e}"
+        );
+    }
+}
+
+/// A damped oscillator with its books (`y₂`: the work its damper
+/// dissipates), and with a passive quadrature besides (`y₃ = ∫ x² dt`) or
+/// without it.
+struct Oscillating {
+    passive: bool,
+}
+
+impl OdeSystem for Oscillating {
+    fn dimension(&self) -> usize {
+        if self.passive { 4 } else { 3 }
+    }
+
+    fn derivative(&mut self, _t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
+        dy[0] = y[1];
+        dy[1] = -40.0 * y[0] - 0.3 * y[1];
+        dy[2] = 0.3 * y[1] * y[1];
+        if self.passive {
+            dy[3] = y[0] * y[0];
+        }
+        Ok(())
+    }
+
+    fn is_quadrature(&self, i: usize) -> bool {
+        i >= 2
+    }
+
+    fn is_passive(&self, i: usize) -> bool {
+        i == 3
+    }
+}
+
+impl Simulated for Oscillating {
+    fn initial_state(&self) -> DVector<f64> {
+        DVector::from_vec(vec![1.0, 0.0, 0.0, 0.0][..self.dimension()].to_vec())
+    }
+
+    fn columns(&self) -> Vec<String> {
+        ["x", "v", "dissipated", "passive"][..self.dimension()]
+            .iter()
+            .map(|c| c.to_string())
+            .collect()
+    }
+
+    fn observe(&mut self, _t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError> {
+        row.extend_from_slice(y);
+        Ok(())
+    }
+}
+
+/// A passive quadrature (`OdeSystem::is_passive`) changes no step: with
+/// it and without it every method takes the same steps to the same bits
+/// (the norms leave it out, and a zero term changes no sum), and it is
+/// still integrated: `∫ x² dt` against the trapezoidal sum of the rows
+/// every 1 ms, whose error is at most `T h² max|(x²)''| / 12` with
+/// `|(x²)''| = 2 |v² + x a| ≤ 160` here: 6.7e-5 over 5 s; 1e-4 allowed.
+#[test]
+fn a_passive_quadrature_changes_no_step() {
+    for integrator in [
+        Integrator::Bs23 {
+            rtol: 1e-6,
+            atol: 1e-6,
+            max_step: 0.05,
+        },
+        Integrator::Dopri5 {
+            rtol: 1e-6,
+            atol: 1e-6,
+            max_step: 0.05,
+        },
+        Integrator::Ros34pw2 {
+            rtol: 1e-6,
+            atol: 1e-6,
+            max_step: 0.05,
+        },
+    ] {
+        let run = |passive| {
+            simulate(
+                &mut Oscillating { passive },
+                integrator,
+                0.0,
+                5.0,
+                Output::Every(0.001),
+            )
+            .expect("runs")
+        };
+        let (with, without) = (run(true), run(false));
+        assert_eq!(with.stats, without.stats, "{integrator:?}");
+        for name in ["x", "v", "dissipated"] {
+            assert_eq!(
+                with.column(name),
+                without.column(name),
+                "{integrator:?}: {name}"
+            );
+        }
+        let (t, x) = (with.times(), with.column("x").unwrap());
+        let trapezoid: f64 = (1..t.len())
+            .map(|i| 0.5 * (x[i] * x[i] + x[i - 1] * x[i - 1]) * (t[i] - t[i - 1]))
+            .sum();
+        let passive = with.last().unwrap().get("passive").unwrap();
+        assert!(
+            (passive - trapezoid).abs() < 1e-4,
+            "{integrator:?}: {passive} against {trapezoid}"
         );
     }
 }

@@ -352,6 +352,9 @@ fn relax<S: VehicleDynamics>(
         fn is_quadrature(&self, i: usize) -> bool {
             self.system.is_quadrature(i)
         }
+        fn is_passive(&self, i: usize) -> bool {
+            self.system.is_passive(i)
+        }
     }
     if duration <= 0.0 {
         return Ok(());

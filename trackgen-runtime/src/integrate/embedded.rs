@@ -123,6 +123,14 @@ fn scaled_square(v: f64, scale: f64) -> f64 {
 /// then adds them one by one.
 #[inline(always)]
 fn rms_of(n: usize, term: impl Fn(usize) -> f64) -> f64 {
+    rms_of_live(n, n, term)
+}
+
+/// [`rms_of`] divided by `live` (≤ `n`) terms rather than `n`: the others
+/// are 0 and not counted. Adding a zero term leaves a sum's bits as they
+/// were, so a passive component changes no norm.
+#[inline(always)]
+fn rms_of_live(n: usize, live: usize, term: impl Fn(usize) -> f64) -> f64 {
     const BLOCK: usize = 32;
     let mut terms = [0.0; BLOCK];
     let mut sum = 0.0;
@@ -137,7 +145,7 @@ fn rms_of(n: usize, term: impl Fn(usize) -> f64) -> f64 {
         }
         start += len;
     }
-    (sum / n.max(1) as f64).sqrt()
+    (sum / live.max(1) as f64).sqrt()
 }
 
 /// Which components of a system are quadratures
@@ -146,8 +154,13 @@ fn rms_of(n: usize, term: impl Fn(usize) -> f64) -> f64 {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Quadratures {
     mask: Vec<bool>,
+    /// The passive ones ([`OdeSystem::is_passive`]): left out of every
+    /// norm.
+    passive: Vec<bool>,
     /// Whether any component is one.
     any: bool,
+    /// How many components the norms weigh: all but the passive.
+    live: usize,
 }
 
 impl Quadratures {
@@ -155,8 +168,12 @@ impl Quadratures {
     /// asked for `n`.
     pub fn ask(&mut self, system: &dyn OdeSystem, n: usize) {
         if self.mask.len() != n {
-            self.mask = (0..n).map(|i| system.is_quadrature(i)).collect();
+            self.passive = (0..n).map(|i| system.is_passive(i)).collect();
+            self.mask = (0..n)
+                .map(|i| system.is_quadrature(i) || self.passive[i])
+                .collect();
             self.any = self.mask.contains(&true);
+            self.live = self.passive.iter().filter(|&&p| !p).count();
         }
     }
 
@@ -198,14 +215,41 @@ pub(crate) fn step_error(
     }
     let n = v.len();
     let (v, y0, y1) = (v.as_slice(), &y0.as_slice()[..n], &y1.as_slice()[..n]);
-    let mask = &quadratures.mask[..n];
-    rms_of(n, |i| {
+    let (mask, passive) = (&quadratures.mask[..n], &quadratures.passive[..n]);
+    rms_of_live(n, quadratures.live, |i| {
+        if passive[i] {
+            return 0.0;
+        }
         let size = if mask[i] {
             (y1[i] - y0[i]).abs()
         } else {
             y0[i].abs().max(y1[i].abs())
         };
         scaled_square(v[i], atol + rtol * size)
+    })
+}
+
+/// [`weighted_rms`] over the components the norms weigh: the passive
+/// quadratures left out (no term, and not counted).
+pub(crate) fn live_rms(
+    v: &DVector<f64>,
+    y0: &DVector<f64>,
+    y1: &DVector<f64>,
+    (atol, rtol): (f64, f64),
+    quadratures: &Quadratures,
+) -> f64 {
+    if !quadratures.any {
+        return weighted_rms(v, y0, y1, atol, rtol);
+    }
+    let n = v.len();
+    let (v, y0, y1) = (v.as_slice(), &y0.as_slice()[..n], &y1.as_slice()[..n]);
+    let passive = &quadratures.passive[..n];
+    rms_of_live(n, quadratures.live, |i| {
+        if passive[i] {
+            0.0
+        } else {
+            scaled_square(v[i], atol + rtol * y0[i].abs().max(y1[i].abs()))
+        }
     })
 }
 
@@ -332,7 +376,7 @@ impl Embedded {
         let d2 = match super::evaluate(system, &mut self.stats, t + h0, &self.trial, f1) {
             Ok(()) => {
                 f1.axpy(-1.0, f0, 1.0);
-                weighted_rms(f1, y, y, self.atol, self.rtol) / h0
+                live_rms(f1, y, y, (self.atol, self.rtol), &self.quadratures) / h0
             }
             Err(_) => return h0 * 0.1,
         };

@@ -32,6 +32,16 @@ pub trait OdeSystem {
         false
     }
 
+    /// Whether component `i` is a passive quadrature: a figure derived
+    /// from the state (the engine's work, behind the converter) whose
+    /// accuracy follows the steps the rest asks, left out of the step's
+    /// error and every other norm, so that recording it changes no
+    /// answer. A passive component is a quadrature too. None by default.
+    fn is_passive(&self, i: usize) -> bool {
+        let _ = i;
+        false
+    }
+
     /// Writes `∂f/∂y` at `(t, y)` (whose `f` is `slope`) into `jacobian`,
     /// column-major, and returns `true`; or returns `false` (the default)
     /// and leaves it to the integrator's differences. Only the linearly

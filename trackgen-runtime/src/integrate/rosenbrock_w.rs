@@ -10,7 +10,7 @@ use nalgebra::DVector;
 
 use super::control::StepControl;
 use super::differences::forward_jacobian;
-use super::embedded::{Quadratures, step_error, weighted_rms};
+use super::embedded::{Quadratures, live_rms, step_error};
 use super::{OdeSystem, Stats, Stepper};
 use crate::integrate::SimulationError;
 
@@ -517,8 +517,9 @@ impl Ros34pw2 {
     /// Hairer's starting step from the slope alone (the explicit methods'
     /// heuristic without its second evaluation): `0.01 ‖y‖ / ‖f‖`, capped.
     fn initial_step(&self, y: &DVector<f64>) -> f64 {
-        let d0 = weighted_rms(y, y, y, self.atol, self.rtol);
-        let d1 = weighted_rms(&self.f0, y, y, self.atol, self.rtol);
+        let tolerances = (self.atol, self.rtol);
+        let d0 = live_rms(y, y, y, tolerances, &self.quadratures);
+        let d1 = live_rms(&self.f0, y, y, tolerances, &self.quadratures);
         let h = if d0 < 1e-5 || d1 < 1e-5 || !d1.is_finite() {
             1e-6
         } else {

@@ -4,6 +4,7 @@
 //! joints, wheels, shoes, teeth) is compiled in ([`Geometry`](super::Geometry)).
 
 use super::fitted::ContactLawSet;
+use super::powertrain::Cap;
 use super::{Brake, ConfigError, Drive, Powertrain, TorqueCap};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
@@ -146,20 +147,20 @@ impl VehicleConfig {
         self.torque_cap_in_gear(omega, stall).0
     }
 
-    /// [`torque_cap`](Self::torque_cap), and the gear that gives it
-    /// ([`Powertrain::limit_in_gear`]).
-    pub(super) fn torque_cap_in_gear(&self, omega: f64, stall: f64) -> (TorqueCap, Option<usize>) {
+    /// [`torque_cap`](Self::torque_cap), and the powertrain's own cap
+    /// (its gear and full-load point) for the engine's side.
+    pub(super) fn torque_cap_in_gear(&self, omega: f64, stall: f64) -> (TorqueCap, Option<Cap>) {
         self.powertrain
             .as_ref()
             .map_or((TorqueCap::NONE, None), |p| {
-                let (value, slope, gear) = p.limit_in_gear(omega.abs());
+                let cap = p.cap(omega.abs());
                 (
                     TorqueCap {
-                        value,
-                        slope,
+                        value: cap.torque,
+                        slope: cap.slope,
                         stall,
                     },
-                    gear,
+                    Some(cap),
                 )
             })
     }

@@ -305,6 +305,19 @@ impl Driveline {
     /// gives more than `tt` (a light load near `SR = 1`) the converter is
     /// at the coupling, `ω_e = ω_t`. `turbine_slope` is not computed (0).
     pub fn part_load(&self, range: usize, wt: f64, tt: f64) -> OperatingPoint {
+        self.part_load_near(range, wt, tt, self.operating_point(range, wt.max(0.0)))
+    }
+
+    /// [`part_load`](Self::part_load) given the range's full-load point at
+    /// the turbine's speed (`max(wt, 0)`): the envelope's, found with the
+    /// cap, solved once.
+    pub(super) fn part_load_near(
+        &self,
+        range: usize,
+        wt: f64,
+        tt: f64,
+        full: Option<OperatingPoint>,
+    ) -> OperatingPoint {
         let locking = self.lockup_ranges.contains(&range);
         let locked = |we: f64, te: f64| OperatingPoint {
             engine_speed: we,
@@ -316,7 +329,6 @@ impl Driveline {
             turbine_slope: 0.0,
         };
         let w = wt.max(0.0);
-        let full = self.operating_point(range, w);
         if let Some(point) = full
             && point.locked
         {
@@ -346,7 +358,10 @@ impl Driveline {
             turbine_torque: tt,
             turbine_slope: 0.0,
         };
-        if w > 0.0 && h(w).0 <= 0.0 {
+        // At stall `SR = 0` at every engine speed but 0, where it has no
+        // meaning: there `h` is `T_t`, its limit.
+        let ga = if w > 0.0 { h(w).0 } else { tt };
+        if ga <= 0.0 && w > 0.0 {
             return if locking { locked(w, tt) } else { coupling() };
         }
         if tt <= 0.0 {
@@ -354,20 +369,17 @@ impl Driveline {
             return coupling();
         }
         // The full-load match gives at least `tt` (the drive is capped
-        // there): the upper end of the bracket. A torque past it (by the
-        // cap's rounding) runs at it; with no match (the cap is 0 there,
-        // so nothing is asked) the converter is at the coupling.
+        // there): the upper end of the bracket, where the turbine gives
+        // the match's torque. A torque past it (by the cap's rounding)
+        // runs at it; with no match (the cap is 0 there, so nothing is
+        // asked) the converter is at the coupling.
         let Some(full) = full else {
             return coupling();
         };
-        let b = full.engine_speed;
-        let gb = h(b).0;
+        let (b, gb) = (full.engine_speed, tt - full.turbine_torque);
         if gb > 0.0 || b <= w {
             return full;
         }
-        // At stall `SR = 0` at every engine speed but 0, where it has no
-        // meaning: there `h` is `T_t`, its limit.
-        let ga = if w > 0.0 { h(w).0 } else { tt };
         let we = solve_piece(&h, (w, ga), (b, gb));
         let sr = w / we;
         if locking && sr >= self.lockup_speed_ratio {
@@ -389,6 +401,13 @@ impl Driveline {
     /// `speed` (rad/s, ≥ 0), N m, its slope with the speed, N m s/rad, and
     /// the range (0-based) that gives it (`None` if none drives).
     pub fn envelope(&self, speed: f64) -> (f64, f64, Option<usize>) {
+        let (torque, slope, best) = self.envelope_point(speed);
+        (torque, slope, best.map(|(range, _)| range))
+    }
+
+    /// [`envelope`](Self::envelope), with the best range's full-load
+    /// operating point.
+    pub(super) fn envelope_point(&self, speed: f64) -> (f64, f64, Option<(usize, OperatingPoint)>) {
         let fraction = self.fraction();
         let mut best = (0.0, 0.0, None);
         for range in 0..self.ranges.len() {
@@ -401,7 +420,8 @@ impl Driveline {
             if let Some(point) = self.operating_point(range, n * speed) {
                 let torque = fraction * n * point.turbine_torque;
                 if torque > best.0 {
-                    best = (torque, fraction * n * n * point.turbine_slope, Some(range));
+                    let slope = fraction * n * n * point.turbine_slope;
+                    best = (torque, slope, Some((range, point)));
                 }
             }
         }

@@ -274,7 +274,7 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
         let omega = sprocket.omega(qdc);
-        let (cap, gear) = config.torque_cap_in_gear(omega, sprocket.stall);
+        let (cap, own) = config.torque_cap_in_gear(omega, sprocket.stall);
         let (torque, rate) =
             config
                 .drive
@@ -283,18 +283,18 @@ pub(super) fn respond<const DC: usize>(
             config
                 .drive
                 .engine_load(t, torque, omega, sprocket.rolling_radius, cap);
-        books.engine = match &config.powertrain {
-            None => EngineSide {
+        books.engine = match (&config.powertrain, own) {
+            // Driving: the torque pushes the way the driver asks, at `ω`
+            // signed the torque's way (negative: forced back).
+            (Some(powertrain), Some(own)) if books.engine_load > 0.0 => {
+                powertrain.engine_side_near(&own, omega * torque.signum(), torque.abs())
+            }
+            (Some(_), _) => EngineSide::IDLE,
+            (None, _) => EngineSide {
                 engine_power: torque * omega,
                 turbine_power: torque * omega,
                 ..EngineSide::IDLE
             },
-            // Driving: the torque pushes the way the driver asks, at
-            // `ω` signed the torque's way (negative: forced back).
-            Some(powertrain) if books.engine_load > 0.0 => {
-                powertrain.engine_side(gear, omega * torque.signum(), torque.abs())
-            }
-            Some(_) => EngineSide::IDLE,
         };
         chassis_loads[sprocket.body].moment += torque;
         chassis_loads[0].moment -= torque;

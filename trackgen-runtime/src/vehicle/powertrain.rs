@@ -2,7 +2,7 @@
 //! for, as a function of the sprocket's speed.
 
 use super::PowertrainError;
-use super::converter::{Driveline, engine_torque, table};
+use super::converter::{Driveline, OperatingPoint, engine_torque, table};
 
 /// The engine and the driveline behind a sprocket, as the largest torque
 /// they give it at each sprocket speed ([`limit`](Self::limit)). A drive
@@ -100,7 +100,15 @@ impl Powertrain {
     /// range an ideally shifted gearbox is in at that speed (`None` for a
     /// [`Power`](Self::Power) limit, or where no gear drives).
     pub fn limit_in_gear(&self, speed: f64) -> (f64, f64, Option<usize>) {
-        match self {
+        let cap = self.cap(speed);
+        (cap.torque, cap.slope, cap.gear)
+    }
+
+    /// [`limit_in_gear`](Self::limit_in_gear), with a converter's
+    /// full-load point in that gear (for [`engine_side`](Self::engine_side)
+    /// to start from).
+    pub(super) fn cap(&self, speed: f64) -> Cap {
+        let (torque, slope, gear) = match self {
             Powertrain::Power { power, max_torque } => {
                 if speed * max_torque > *power {
                     (power / speed, -power / (speed * speed), None)
@@ -128,7 +136,21 @@ impl Powertrain {
                 }
                 best
             }
-            Powertrain::Converter(driveline) => driveline.envelope(speed),
+            Powertrain::Converter(driveline) => {
+                let (torque, slope, best) = driveline.envelope_point(speed);
+                return Cap {
+                    torque,
+                    slope,
+                    gear: best.map(|(range, _)| range),
+                    point: best.map(|(_, point)| point),
+                };
+            }
+        };
+        Cap {
+            torque,
+            slope,
+            gear,
+            point: None,
         }
     }
 
@@ -152,6 +174,20 @@ impl Powertrain {
     /// engine speed; for both the engine's power is booked at the
     /// sprocket, `τ ω`.
     pub fn engine_side(&self, gear: Option<usize>, speed: f64, torque: f64) -> EngineSide {
+        let cap = Cap {
+            torque: f64::NAN,
+            slope: f64::NAN,
+            gear,
+            point: None,
+        };
+        self.engine_side_near(&cap, speed, torque)
+    }
+
+    /// [`engine_side`](Self::engine_side) in the gear of `cap`, the cap at
+    /// `|speed|`: a converter's full-load point there starts the part-load
+    /// solve while the sprocket turns the torque's way.
+    pub(super) fn engine_side_near(&self, cap: &Cap, speed: f64, torque: f64) -> EngineSide {
+        let gear = cap.gear;
         let at_sprocket = EngineSide {
             gear,
             engine_speed: 0.0,
@@ -182,7 +218,12 @@ impl Powertrain {
             (Powertrain::Converter(driveline), Some(range)) => {
                 let n = driveline.reduction(range);
                 let tt = torque / (driveline.fraction() * n);
-                let point = driveline.part_load(range, n * speed, tt);
+                let point = match cap.point {
+                    Some(full) if speed >= 0.0 => {
+                        driveline.part_load_near(range, n * speed, tt, Some(full))
+                    }
+                    _ => driveline.part_load(range, n * speed, tt),
+                };
                 let share = driveline.share;
                 EngineSide {
                     gear: Some(range),
@@ -224,6 +265,20 @@ impl Powertrain {
             Powertrain::Converter(driveline) => driveline.max_power(),
         }
     }
+}
+
+/// The powertrain's cap at one sprocket speed
+/// ([`Powertrain::limit_in_gear`]), with a converter's full-load point in
+/// the gear that gives it.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Cap {
+    /// N m.
+    pub torque: f64,
+    /// N m s/rad.
+    pub slope: f64,
+    /// 0-based.
+    pub gear: Option<usize>,
+    pub point: Option<OperatingPoint>,
 }
 
 /// The engine's side of the drive at one instant

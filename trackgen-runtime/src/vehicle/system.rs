@@ -680,6 +680,13 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         self.layout.books.contains(&i)
     }
 
+    /// The engine's work: derived from the state behind the converter,
+    /// its accuracy follows the steps the motion and the other two books
+    /// ask (recording it changes no answer).
+    fn is_passive(&self, i: usize) -> bool {
+        i == self.layout.books[2]
+    }
+
     /// The exact `∂f/∂y` (`vehicle/jacobian.rs`: every force element's Jacobian
     /// through the bodies' kinematics and the dynamics' own derivatives),
     /// on rigid ground or soil, with the track closed by partitioning;
