@@ -51,6 +51,7 @@ fn a_driveline(engine: Vec<(f64, f64)>, capacity: Vec<(f64, f64)>) -> Driveline 
         gearbox_efficiency: 0.9,
         final_drive_efficiency: 0.95,
         share: 0.5,
+        shift: None,
     }
 }
 

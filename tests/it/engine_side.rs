@@ -67,6 +67,7 @@ fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
         gearbox_efficiency: 0.9,
         final_drive_efficiency: 0.95,
         share: 0.5,
+        shift: None,
     };
     driveline.check().unwrap();
     for wt in [0.0, 20.0, 60.0, 120.0, 200.0] {

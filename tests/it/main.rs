@@ -44,6 +44,7 @@ mod ride_chain;
 mod rosenbrock_w;
 mod run_settings_properties;
 mod seat;
+mod shift;
 mod shifted_chain;
 mod soft_ground;
 mod soil_laws;

@@ -133,6 +133,9 @@ pub struct Powertrain {
     pub gearbox_efficiency: Num,
     pub final_drive_efficiency: Num,
     pub share: Num,
+    /// The shift schedule: upshift and downshift speeds per range (rad/s)
+    /// and the shift time (s); `None`: shifted ideally.
+    pub shift: Option<(Vec<Num>, Vec<Num>, Num)>,
 }
 
 /// A shoe's contact features, link frame, m.

@@ -124,7 +124,7 @@ fn runnable_vehicle_with_repeated_wheels() {
 /// A declared powertrain becomes the `Vehicle::powertrain` the runtime's
 /// `Driveline` is built from: the tables as pairs, the lock-up ranges
 /// 0-based, the side's share defaulting to a half, a named constant kept
-/// for rustc (and checked by it).
+/// for rustc (and checked by it), and a shift schedule.
 #[test]
 fn vehicle_with_a_powertrain() {
     insta::assert_snapshot!(pretty(expand(quote! {
@@ -151,6 +151,9 @@ fn vehicle_with_a_powertrain() {
                 final_drive: FINAL,
                 gearbox_efficiency: 0.95,
                 final_drive_efficiency: 0.97,
+                upshift: [250.0, 0.0],
+                downshift: [0.0, 100.0],
+                shift_time: 0.4,
             },
         }
     })));

@@ -105,6 +105,16 @@ fn powertrain(p: &Powertrain) -> TokenStream {
         share,
         ..
     } = p;
+    let shift = match &p.shift {
+        Some((up, down, time)) => quote! {
+            ::std::option::Option::Some(#rt::Shift {
+                up: ::std::vec![#(#up),*],
+                down: ::std::vec![#(#down),*],
+                time: #time,
+            })
+        },
+        None => quote!(::std::option::Option::None),
+    };
     quote! {
         #rt::Powertrain::Converter(::std::boxed::Box::new(#rt::Driveline {
             engine: #engine,
@@ -117,6 +127,7 @@ fn powertrain(p: &Powertrain) -> TokenStream {
             gearbox_efficiency: #gearbox_efficiency,
             final_drive_efficiency: #final_drive_efficiency,
             share: #share,
+            shift: #shift,
         }))
     }
 }

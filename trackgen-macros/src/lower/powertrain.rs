@@ -14,7 +14,10 @@ use crate::ir::{ConstCheck, Powertrain};
 use crate::num::Num;
 
 /// The keys of a `powertrain { … }` section.
-const KEYS: [&str; 10] = [
+const KEYS: [&str; 13] = [
+    "upshift",
+    "downshift",
+    "shift_time",
     "engine",
     "capacity",
     "torque_ratio",
@@ -70,6 +73,7 @@ impl Lowering<'_> {
             Some(_) => self.fraction(&fields, "share", true),
             None => Some(Num::Known(DEFAULT_SHARE)),
         };
+        let shift = self.shift(&fields, count, ranges.as_deref());
         Some(Powertrain {
             engine: engine?,
             capacity: capacity?,
@@ -81,7 +85,128 @@ impl Lowering<'_> {
             gearbox_efficiency: gearbox_efficiency?,
             final_drive_efficiency: final_drive_efficiency?,
             share: share?,
+            shift: shift?,
         })
+    }
+
+    /// The shift schedule: `upshift` and `downshift`, one speed (rad/s,
+    /// ≥ 0) per declared range, and `shift_time` (s, ≥ 0), all three or
+    /// none (none: shifted ideally). Each downshift below its range's
+    /// upshift and each upshift landing above the next range's
+    /// downshift, where the macro knows the figures; the runtime's rule
+    /// checks the rest when the vehicle is built.
+    #[allow(clippy::type_complexity)]
+    fn shift(
+        &mut self,
+        fields: &Fields,
+        count: Option<usize>,
+        ranges: Option<&[Num]>,
+    ) -> Option<Option<(Vec<Num>, Vec<Num>, Num)>> {
+        let keys = ["upshift", "downshift", "shift_time"];
+        let given: Vec<&str> = keys
+            .iter()
+            .copied()
+            .filter(|k| fields.map.contains_key(*k))
+            .collect();
+        if given.is_empty() {
+            return Some(None);
+        }
+        if given.len() < keys.len() {
+            let missing: Vec<String> = keys
+                .iter()
+                .filter(|k| !given.contains(k))
+                .map(|k| format!("`{k}`"))
+                .collect();
+            let at = fields.map[given[0]];
+            self.errors.spanned(
+                at,
+                format!(
+                    "a shift schedule needs `upshift`, `downshift` and `shift_time` together: {} missing",
+                    missing.join(" and ")
+                ),
+            );
+            return None;
+        }
+        let up = self.speeds(fields, "upshift", count);
+        let down = self.speeds(fields, "downshift", count);
+        let time = self.non_negative(fields, "shift_time");
+        let (up, down, time) = (up?, down?, time?);
+        let known = |v: &[Num]| v.iter().map(Num::known).collect::<Option<Vec<f64>>>();
+        let mut fine = true;
+        if let (Some(u), Some(d), Some(r)) = (known(&up), known(&down), ranges.and_then(known)) {
+            let list = fields.map["downshift"];
+            for k in 1..u.len() {
+                if k + 1 < u.len() && d[k] >= u[k] {
+                    self.errors.spanned(
+                        list,
+                        format!(
+                            "range {}'s downshift speed {} is not below its upshift speed {}",
+                            k + 1,
+                            d[k],
+                            u[k]
+                        ),
+                    );
+                    fine = false;
+                }
+                let lands = u[k - 1] * r[k] / r[k - 1];
+                if lands <= d[k] {
+                    self.errors.spanned(
+                        list,
+                        format!(
+                            "the upshift from range {} lands at {lands:.3} rad/s, not above range {}'s downshift speed {}: the gearbox would hunt",
+                            k,
+                            k + 1,
+                            d[k]
+                        ),
+                    );
+                    fine = false;
+                }
+            }
+        }
+        if !fine {
+            return None;
+        }
+        Some(Some((up, down, time)))
+    }
+
+    /// One gearbox input speed per range, rad/s, each ≥ 0.
+    fn speeds(&mut self, fields: &Fields, key: &str, count: Option<usize>) -> Option<Vec<Num>> {
+        let expr = fields.map[key];
+        let Expr::Array(list) = strip(expr) else {
+            self.errors.spanned(
+                expr,
+                format!("`{key}` must be a list of speeds `[ω₁, ω₂, …]`, rad/s, one per range"),
+            );
+            return None;
+        };
+        if let Some(count) = count
+            && list.elems.len() != count
+        {
+            self.errors.spanned(
+                list,
+                format!(
+                    "`{key}` needs one speed per range: {} given for {count} ranges",
+                    list.elems.len()
+                ),
+            );
+            return None;
+        }
+        let mut out = Vec::new();
+        let mut fine = true;
+        for element in &list.elems {
+            match self.eval(element, key) {
+                Ok(Num::Known(v)) if v < 0.0 => {
+                    self.errors.spanned(
+                        element,
+                        format!("`{key}`: a speed must be 0 or more, found {v}"),
+                    );
+                    fine = false;
+                }
+                Ok(value) => out.push(value),
+                Err(()) => fine = false,
+            }
+        }
+        fine.then_some(out)
     }
 
     /// A number in (0, 1]: an efficiency, a share, a speed ratio.

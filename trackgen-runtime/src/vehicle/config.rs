@@ -5,6 +5,7 @@
 
 use super::fitted::ContactLawSet;
 use super::powertrain::Cap;
+use super::shift::Engaged;
 use super::{Brake, ConfigError, Drive, Powertrain, TorqueCap};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
@@ -141,19 +142,25 @@ impl VehicleConfig {
 
     /// The powertrain's cap on the drive at sprocket speed `omega`
     /// (rad/s), its torque at rest being `stall` (N m,
-    /// [`stall_torque`](Self::stall_torque), found once per build): none
-    /// without a powertrain.
-    pub(super) fn torque_cap(&self, omega: f64, stall: f64) -> TorqueCap {
-        self.torque_cap_in_gear(omega, stall).0
+    /// [`stall_torque`](Self::stall_torque), found once per build), a
+    /// scheduled gearbox in the range `engaged`: none without a
+    /// powertrain.
+    pub(super) fn torque_cap(&self, omega: f64, stall: f64, engaged: Option<Engaged>) -> TorqueCap {
+        self.torque_cap_in_gear(omega, stall, engaged).0
     }
 
     /// [`torque_cap`](Self::torque_cap), and the powertrain's own cap
     /// (its gear and full-load point) for the engine's side.
-    pub(super) fn torque_cap_in_gear(&self, omega: f64, stall: f64) -> (TorqueCap, Option<Cap>) {
+    pub(super) fn torque_cap_in_gear(
+        &self,
+        omega: f64,
+        stall: f64,
+        engaged: Option<Engaged>,
+    ) -> (TorqueCap, Option<Cap>) {
         self.powertrain
             .as_ref()
             .map_or((TorqueCap::NONE, None), |p| {
-                let cap = p.cap(omega.abs());
+                let cap = p.cap(omega.abs(), engaged);
                 (
                     TorqueCap {
                         value: cap.torque,
@@ -163,6 +170,18 @@ impl VehicleConfig {
                     Some(cap),
                 )
             })
+    }
+
+    /// Where a run through this configuration's powertrain starts its
+    /// gearbox: a converter driveline with a shift schedule in its lowest
+    /// range; `None` (shifted ideally, or no gears to schedule) else.
+    pub(super) fn first_engaged(&self) -> Option<Engaged> {
+        match &self.powertrain {
+            Some(Powertrain::Converter(driveline)) if driveline.shift.is_some() => {
+                Some(Engaged::LOWEST)
+            }
+            _ => None,
+        }
     }
 
     /// The powertrain's torque at rest, N m (∞ without a powertrain).

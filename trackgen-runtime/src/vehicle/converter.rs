@@ -20,6 +20,7 @@
 //! turns with the turbine and gives its full-load torque there.
 
 use super::PowertrainError;
+use super::shift::{Engaged, Shift};
 
 /// An engine, a torque converter with a lock-up clutch, a range gearbox and
 /// a final drive, as one side's sprocket sees them at full load
@@ -62,6 +63,10 @@ pub struct Driveline {
     /// This sprocket's share of the driveline's output: 0.5 for a planar
     /// model of one side of a two-track vehicle; in (0, 1].
     pub share: f64,
+    /// The gearbox's shift schedule; `None`: shifted ideally, each speed
+    /// in the range that gives the most torque (the tractive-effort
+    /// envelope a mobility model uses).
+    pub shift: Option<Shift>,
 }
 
 /// Where the engine and converter run at full load for one range at one
@@ -141,6 +146,9 @@ impl Driveline {
         }
         if !(self.lockup_speed_ratio > 0.0 && self.lockup_speed_ratio <= 1.0) {
             return Err(PowertrainError::LockupSpeedRatio(self.lockup_speed_ratio));
+        }
+        if let Some(shift) = &self.shift {
+            shift.check(&self.ranges)?;
         }
         for (what, value) in [
             ("gearbox_efficiency", self.gearbox_efficiency),
@@ -395,6 +403,42 @@ impl Driveline {
             turbine_torque: tt,
             turbine_slope: 0.0,
         }
+    }
+
+    /// What range `range` gives the sprocket at full load at sprocket
+    /// speed `speed` (rad/s, ≥ 0): N m, its slope with the speed, N m
+    /// s/rad, and the range's full-load point (`None`: the engine cannot
+    /// drive the turbine that fast, and the range gives nothing).
+    pub fn in_range(&self, range: usize, speed: f64) -> (f64, f64, Option<OperatingPoint>) {
+        let n = self.reduction(range);
+        let fraction = self.fraction();
+        match self.operating_point(range, n * speed) {
+            Some(point) => (
+                fraction * n * point.turbine_torque,
+                fraction * n * n * point.turbine_slope,
+                Some(point),
+            ),
+            None => (0.0, 0.0, None),
+        }
+    }
+
+    /// What the gearbox `engaged` gives the sprocket at full load at
+    /// sprocket speed `speed` (rad/s, ≥ 0): the engaged range's
+    /// [`in_range`](Self::in_range), or while a shift takes its time the
+    /// lesser of the two ranges'; with the range that gives it.
+    pub fn scheduled(
+        &self,
+        engaged: Engaged,
+        speed: f64,
+    ) -> (f64, f64, usize, Option<OperatingPoint>) {
+        let (torque, slope, point) = self.in_range(engaged.range, speed);
+        if let Some((from, _)) = engaged.from {
+            let (before, before_slope, before_point) = self.in_range(from, speed);
+            if before < torque {
+                return (before, before_slope, from, before_point);
+            }
+        }
+        (torque, slope, engaged.range, point)
     }
 
     /// The most torque any range gives the sprocket at sprocket speed

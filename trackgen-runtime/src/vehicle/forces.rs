@@ -6,7 +6,7 @@ use nalgebra::SVector;
 
 use super::books::EnergyBooks;
 use super::workspace::Workspace;
-use super::{EngineSide, Geometry, VehicleConfig, arms};
+use super::{Engaged, EngineSide, Geometry, VehicleConfig, arms};
 use crate::contact::outline::{self, Outline, TERRAIN_CORNER};
 use crate::contact::soft_ground::SoftGround;
 use crate::contact::{ContactJacobian, GroundFriction, ground, sprocket, wheel};
@@ -110,6 +110,9 @@ pub(super) struct Sprocket {
     /// found once when the vehicle is built: the powertrain does not
     /// change in a run (a brake removes it, and then nothing caps).
     pub stall: f64,
+    /// A scheduled gearbox's range, kept by the run as it shifts
+    /// ([`Shift::next`](super::Shift::next)); `None`: shifted ideally.
+    pub engaged: Option<Engaged>,
 }
 
 impl Sprocket {
@@ -274,7 +277,7 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
         let omega = sprocket.omega(qdc);
-        let (cap, own) = config.torque_cap_in_gear(omega, sprocket.stall);
+        let (cap, own) = config.torque_cap_in_gear(omega, sprocket.stall, sprocket.engaged);
         let (torque, rate) =
             config
                 .drive
@@ -289,7 +292,12 @@ pub(super) fn respond<const DC: usize>(
             (Some(powertrain), Some(own)) if books.engine_load > 0.0 => {
                 powertrain.engine_side_near(&own, omega * torque.signum(), torque.abs())
             }
-            (Some(_), _) => EngineSide::IDLE,
+            // Braking: the engine gives nothing, the gearbox stays in its
+            // range.
+            (Some(_), own) => EngineSide {
+                gear: own.and_then(|cap| cap.gear),
+                ..EngineSide::IDLE
+            },
             (None, _) => EngineSide {
                 engine_power: torque * omega,
                 turbine_power: torque * omega,

@@ -30,6 +30,7 @@ mod linearisation;
 mod powertrain;
 mod powertrain_error;
 mod record;
+mod shift;
 mod system;
 mod workspace;
 
@@ -49,6 +50,7 @@ pub use layout::StateLayout;
 pub use powertrain::{EngineSide, Powertrain};
 pub use powertrain_error::PowertrainError;
 pub use record::VehicleRecord;
+pub use shift::{Engaged, Shift};
 pub use system::VehicleSystem;
 
 /// The slip of a track driving at `track_speed` (m/s, its mean speed,

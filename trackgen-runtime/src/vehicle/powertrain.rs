@@ -3,6 +3,7 @@
 
 use super::PowertrainError;
 use super::converter::{Driveline, OperatingPoint, engine_torque, table};
+use super::shift::Engaged;
 
 /// The engine and the driveline behind a sprocket, as the largest torque
 /// they give it at each sprocket speed ([`limit`](Self::limit)). A drive
@@ -100,14 +101,26 @@ impl Powertrain {
     /// range an ideally shifted gearbox is in at that speed (`None` for a
     /// [`Power`](Self::Power) limit, or where no gear drives).
     pub fn limit_in_gear(&self, speed: f64) -> (f64, f64, Option<usize>) {
-        let cap = self.cap(speed);
+        let cap = self.cap(speed, None);
         (cap.torque, cap.slope, cap.gear)
     }
 
     /// [`limit_in_gear`](Self::limit_in_gear), with a converter's
     /// full-load point in that gear (for [`engine_side`](Self::engine_side)
-    /// to start from).
-    pub(super) fn cap(&self, speed: f64) -> Cap {
+    /// to start from); a converter with a shift schedule in the range
+    /// `engaged` ([`Driveline::scheduled`]).
+    pub(super) fn cap(&self, speed: f64, engaged: Option<Engaged>) -> Cap {
+        if let (Powertrain::Converter(driveline), Some(engaged)) = (self, engaged)
+            && driveline.shift.is_some()
+        {
+            let (torque, slope, range, point) = driveline.scheduled(engaged, speed);
+            return Cap {
+                torque,
+                slope,
+                gear: Some(range),
+                point,
+            };
+        }
         let (torque, slope, gear) = match self {
             Powertrain::Power { power, max_torque } => {
                 if speed * max_torque > *power {

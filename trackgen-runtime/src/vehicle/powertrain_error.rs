@@ -70,6 +70,17 @@ pub enum PowertrainError {
     /// A lock-up speed ratio outside (0, 1].
     #[error("the lock-up clutch's speed ratio must be in (0, 1], got {0}")]
     LockupSpeedRatio(f64),
+    /// A shift schedule's figure out of its range: a speed list not one
+    /// per range, a speed not finite or below 0, a downshift speed at or
+    /// above its range's upshift speed or above where the upshift before
+    /// it lands (the gearbox would hunt), a shift time below 0.
+    #[error("the shift schedule's {what} for range {range} (0-based) is out of its range")]
+    Shift {
+        /// The range (0-based).
+        range: usize,
+        /// Which figure, and why.
+        what: &'static str,
+    },
     /// A stage's efficiency or the side's share outside (0, 1].
     #[error("the driveline's {what} must be in (0, 1], got {value}")]
     Stage {

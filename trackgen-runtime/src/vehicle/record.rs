@@ -79,8 +79,9 @@ record! {
         /// The engine's torque, N m (the whole engine's; 0 as
         /// `engine_speed`).
         engine_torque,
-        /// The gear or range engaged, numbered from 1 (0 without gears, or
-        /// with the engine giving nothing).
+        /// The gear or range engaged, numbered from 1 (0 without gears):
+        /// while a shift takes its time, the range whose torque the
+        /// sprocket gets (the lesser of the two).
         gear,
         /// The converter's speed ratio, turbine over pump (1 locked; 0
         /// without a converter, as the next two).

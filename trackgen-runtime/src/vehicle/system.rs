@@ -13,8 +13,8 @@ use super::linearisation::{GroundPoints, Linearisation};
 use super::record::{VehicleRecord, sprocket_spans};
 use super::workspace::Workspace;
 use super::{
-    BuildError, ConfigError, ContactFit, Geometry, StateLayout, VehicleConfig, VehicleDynamics,
-    arms,
+    BuildError, ConfigError, ContactFit, Geometry, Powertrain, StateLayout, VehicleConfig,
+    VehicleDynamics, arms,
 };
 use crate::assembly::{self, Assembled};
 use crate::closure::Switch;
@@ -139,6 +139,7 @@ where
                 pitch_radius: pitch_radius(part.teeth, pitch),
                 rolling_radius: rolling_radius(part.teeth, pitch),
                 stall: config.stall_torque(),
+                engaged: config.first_engaged(),
             });
         let chassis_description = chassis.description();
         let fit = ContactFit::of(&description, &chassis_description, C::PARTS, &geometry);
@@ -204,6 +205,32 @@ where
                 true
             }
             _ => false,
+        }
+    }
+
+    /// Shifts a scheduled gearbox where its schedule says at the end of
+    /// a step ([`Shift::next`](super::Shift::next): its input at the
+    /// sprocket's speed through the engaged range), or ends a shift whose
+    /// time has come. Whether it did (the integrator then restarts: the
+    /// cap changed).
+    fn shift_gears(&mut self, t: f64, y: &[f64]) -> bool {
+        let (Some(sprocket), Some(Powertrain::Converter(driveline))) =
+            (self.sprocket.as_mut(), self.config.powertrain.as_ref())
+        else {
+            return false;
+        };
+        let (Some(engaged), Some(shift)) = (sprocket.engaged, driveline.shift.as_ref()) else {
+            return false;
+        };
+        let rates = self.layout.chassis_rates.start;
+        let omega = y[rates + 2 + sprocket.body] - y[rates + 2];
+        let input = driveline.reduction(engaged.range) * omega.abs();
+        match shift.next(engaged, input, t) {
+            Some(next) => {
+                sprocket.engaged = Some(next);
+                true
+            }
+            None => false,
         }
     }
 
@@ -341,7 +368,7 @@ where
     ) -> (Option<(usize, super::DriveSlopes)>, Option<f64>) {
         let drive = self.sprocket.map(|s| {
             let omega = s.omega(qdc);
-            let cap = self.config.torque_cap(omega, s.stall);
+            let cap = self.config.torque_cap(omega, s.stall, s.engaged);
             let slopes = self
                 .config
                 .drive
@@ -929,6 +956,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let mut restart = self.bodies.after_step(t, &mut y[..nb], switched)?;
         restart |= self.press_soil(t, y)?;
         restart |= self.apply_brake(t, y);
+        restart |= self.shift_gears(t, y);
         Ok(restart)
     }
 }
