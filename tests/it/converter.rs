@@ -23,21 +23,10 @@
 //!   `powertrain.rs`, with every other envelope).
 //! * Bad data refused, each with its own error.
 
+use crate::support::table_at;
+use crate::support::vehicle::m113a3_driveline;
 use trackgen::vehicle::{Driveline, Powertrain, PowertrainError};
 use trackgen::vehicles::m113;
-
-fn linear(points: &[(f64, f64)], x: f64) -> f64 {
-    if x <= points[0].0 {
-        return points[0].1;
-    }
-    let last = points[points.len() - 1];
-    if x >= last.0 {
-        return last.1;
-    }
-    let i = points.iter().position(|p| p.0 > x).unwrap();
-    let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
-    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
-}
 
 fn a_driveline(engine: Vec<(f64, f64)>, capacity: Vec<(f64, f64)>) -> Driveline {
     Driveline {
@@ -104,7 +93,7 @@ fn a_flat_engine_and_a_constant_capacity_give_the_efficiency_curve() {
         let sr = i as f64 * 0.01;
         let wt = sr * we;
         let point = driveline.converter_match(wt).unwrap();
-        let tr = linear(&driveline.torque_ratio, sr);
+        let tr = table_at(&driveline.torque_ratio, sr);
         assert!((point.engine_speed - we).abs() <= 1e-12 * we);
         assert!((point.speed_ratio - sr).abs() <= 1e-12);
         assert!((point.turbine_torque - tr * t0).abs() <= 1e-12 * t0);
@@ -129,11 +118,11 @@ fn independent_match(d: &Driveline, wt: f64) -> Option<(f64, f64)> {
         if w < first || w > last {
             0.0
         } else {
-            linear(&d.engine, w).max(0.0)
+            table_at(&d.engine, w).max(0.0)
         }
     };
     let g = |w: f64| {
-        let k = linear(&d.capacity, wt / w);
+        let k = table_at(&d.capacity, wt / w);
         te(w) - (w / k) * (w / k)
     };
     let low = wt.max(first);
@@ -155,7 +144,7 @@ fn independent_match(d: &Driveline, wt: f64) -> Option<(f64, f64)> {
                 }
             }
             let we = 0.5 * (lo + hi);
-            let tr = linear(&d.torque_ratio, wt / we);
+            let tr = table_at(&d.torque_ratio, wt / we);
             return Some((we, tr * te(we)));
         }
         a = b;
@@ -177,9 +166,9 @@ fn independent_envelope(d: &Driveline, speed: f64) -> f64 {
             && matched.is_none_or(|(we, _)| wt / we >= d.lockup_speed_ratio)
             && wt >= d.engine[0].0
             && wt <= last
-            && linear(&d.engine, wt) > 0.0;
+            && table_at(&d.engine, wt) > 0.0;
         let turbine = if locked {
-            linear(&d.engine, wt)
+            table_at(&d.engine, wt)
         } else {
             matched.map_or(0.0, |(_, t)| t)
         };
@@ -188,16 +177,9 @@ fn independent_envelope(d: &Driveline, speed: f64) -> f64 {
     best
 }
 
-fn the_m113s() -> Driveline {
-    match m113::powertrain() {
-        Powertrain::Converter(driveline) => *driveline,
-        other => panic!("the M113A3 has a torque converter, not {other:?}"),
-    }
-}
-
 #[test]
 fn the_m113a3s_envelope_is_the_independent_route_s() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     driveline.check().unwrap();
     let top = m113::TOP_SPEED / m113::SPROCKET_PITCH_RADIUS;
     let mut worst: f64 = 0.0;
@@ -218,7 +200,7 @@ fn the_m113a3s_envelope_is_the_independent_route_s() {
 
 #[test]
 fn the_m113a3_stalls_at_its_stated_speed_with_the_published_ratio() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     let stall = driveline.converter_match(0.0).unwrap();
     let want = m113::STALL_SPEED;
     assert!((stall.engine_speed - want).abs() <= 1e-12 * want);
@@ -244,7 +226,7 @@ fn the_m113a3_stalls_at_its_stated_speed_with_the_published_ratio() {
 
 #[test]
 fn lock_up_engages_as_declared() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     let mut locked_seen = [false; 4];
     for i in 1..400 {
         let turbine = 320.0 * i as f64 / 400.0;
@@ -271,7 +253,7 @@ fn lock_up_engages_as_declared() {
 
 #[test]
 fn bad_driveline_data_is_refused() {
-    let good = the_m113s();
+    let good = m113a3_driveline();
     good.check().unwrap();
     let refused = |change: &dyn Fn(&mut Driveline)| {
         let mut bad = good.clone();
@@ -381,7 +363,7 @@ fn the_most_power_is_the_envelope_s_peak() {
 /// constant expression).
 #[test]
 fn the_declared_stall_capacity_is_its_derivation() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     let torque = Driveline::full_load(&driveline.engine, m113::STALL_SPEED);
     let want = m113::STALL_SPEED / torque.sqrt();
     assert!(

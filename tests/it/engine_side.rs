@@ -26,32 +26,11 @@
 //!   the jump); the converter and gears lose what the engine gives beyond
 //!   the sprocket's work.
 
+use crate::support::table_at;
+use crate::support::vehicle::{m113_through, m113a3_driveline};
 use trackgen::contact::Terrain;
 use trackgen::contact::profile::Course;
-use trackgen::integrate::Integrator;
-use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::{Driveline, Powertrain, Vehicle, build};
-use trackgen::vehicles::m113::{self, M113};
-
-fn the_m113s() -> Driveline {
-    match m113::powertrain() {
-        Powertrain::Converter(driveline) => *driveline,
-        other => panic!("the M113A3 has a torque converter, not {other:?}"),
-    }
-}
-
-fn linear(points: &[(f64, f64)], x: f64) -> f64 {
-    if x <= points[0].0 {
-        return points[0].1;
-    }
-    let last = points[points.len() - 1];
-    if x >= last.0 {
-        return last.1;
-    }
-    let i = points.iter().position(|p| p.0 > x).unwrap();
-    let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
-    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
-}
+use trackgen::vehicle::{Driveline, Powertrain};
 
 #[test]
 fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
@@ -98,7 +77,7 @@ fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
 
 #[test]
 fn at_full_load_the_part_load_point_is_the_full_load_match() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     let mut compared = 0;
     for range in 0..driveline.ranges.len() {
         let n = driveline.reduction(range);
@@ -125,7 +104,7 @@ fn at_full_load_the_part_load_point_is_the_full_load_match() {
 
 #[test]
 fn at_part_load_the_locking_ranges_lock_at_the_clutch_s_speed_ratio() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     // Unlocked at full load, about 0.8 of the clutch's speed ratio.
     let wt = 200.0;
     for range in 0..driveline.ranges.len() {
@@ -153,7 +132,7 @@ fn at_part_load_the_locking_ranges_lock_at_the_clutch_s_speed_ratio() {
 
 #[test]
 fn the_stages_powers_follow_the_efficiencies() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     let powertrain = Powertrain::Converter(Box::new(driveline.clone()));
     for speed in [0.5, 5.0, 20.0, 40.0, 60.0] {
         let (cap, _, gear) = powertrain.limit_in_gear(speed);
@@ -183,8 +162,8 @@ fn independent_engine_speed(d: &Driveline, range: usize, speed: f64, torque: f64
     let (wt, tt) = (n * speed.max(0.0), torque / (fraction * n));
     let gives = |w: f64| {
         let sr = wt / w;
-        let k = linear(&d.capacity, sr);
-        linear(&d.torque_ratio, sr) * (w / k) * (w / k)
+        let k = table_at(&d.capacity, sr);
+        table_at(&d.torque_ratio, sr) * (w / k) * (w / k)
     };
     let locking = d.lockup_ranges.contains(&range);
     // Where the range locks at full load (the envelope's rule, checked
@@ -209,31 +188,15 @@ fn independent_engine_speed(d: &Driveline, range: usize, speed: f64, torque: f64
 
 #[test]
 fn a_run_records_the_converter_and_books_the_engine_s_work() {
-    let driveline = the_m113s();
+    let driveline = m113a3_driveline();
     let course = Course::starting_at(-20.0, 0.0)
         .and_then(|c| c.flat(28.0))
         .and_then(|c| c.step(0.3))
         .and_then(|c| c.flat(150.0))
         .and_then(Course::profile)
         .expect("a step");
-    let mut config = M113::declared_config(
-        Terrain::profile(course),
-        M113::speed_drive(move |t| if t < 0.5 { 0.0 } else { 15.0 }),
-    );
-    config.powertrain = Some(Powertrain::Converter(Box::new(driveline.clone())));
-    let mut system = build::<M113>(config).expect("the M113 builds");
-    let results = simulate(
-        &mut system,
-        Integrator::Bs23 {
-            rtol: 1e-4,
-            atol: 1e-4,
-            max_step: 0.01,
-        },
-        0.0,
-        8.0,
-        Output::Every(0.002),
-    )
-    .expect("the run finishes");
+    let target = |t: f64| if t < 0.5 { 0.0 } else { 15.0 };
+    let results = m113_through(&driveline, Terrain::profile(course), target, 8.0, 0.002);
     let column = |name: &str| results.column(name).expect(name);
     let t = results.times().to_vec();
     let (torque, omega) = (column("sprocket_torque"), column("sprocket_speed"));

@@ -23,18 +23,9 @@
 //!   each range up once and down once at most (no hunting), and the
 //!   downshifts at lower speeds than the upshifts.
 
+use crate::support::vehicle::{m113_through, m113a3_driveline};
 use trackgen::contact::Terrain;
-use trackgen::integrate::Integrator;
-use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::{Driveline, Engaged, Powertrain, PowertrainError, Shift, Vehicle, build};
-use trackgen::vehicles::m113::{self, M113};
-
-fn the_m113s() -> Driveline {
-    match m113::powertrain() {
-        Powertrain::Converter(driveline) => *driveline,
-        other => panic!("the M113A3 has a torque converter, not {other:?}"),
-    }
-}
+use trackgen::vehicle::{Driveline, Engaged, PowertrainError, Shift};
 
 /// The sprocket speed (rad/s) above which range `r + 1` gives more
 /// full-load torque than range `r`, by bisection between where `r` gives
@@ -77,7 +68,7 @@ fn ideal_schedule(d: &Driveline, time: f64) -> Shift {
 
 #[test]
 fn a_schedule_that_cannot_work_is_refused() {
-    let mut d = the_m113s();
+    let mut d = m113a3_driveline();
     let good = ideal_schedule(&d, 0.3);
     d.shift = Some(good.clone());
     d.check().expect("the ideal schedule is a good one");
@@ -163,7 +154,7 @@ fn it_shifts_past_the_band_and_holds_within_it() {
 
 #[test]
 fn during_a_shift_the_sprocket_gets_the_lesser_range_s_torque() {
-    let d = the_m113s();
+    let d = m113a3_driveline();
     for i in 0..=160 {
         let w = 0.5 * i as f64;
         let (low, high) = (d.in_range(1, w), d.in_range(2, w));
@@ -195,7 +186,7 @@ fn during_a_shift_the_sprocket_gets_the_lesser_range_s_torque() {
 
 #[test]
 fn a_run_shifts_where_the_schedule_says() {
-    let mut d = the_m113s();
+    let mut d = m113a3_driveline();
     let schedule = ideal_schedule(&d, 0.0);
     d.shift = Some(schedule.clone());
     // Up to 16 m/s at full throttle, then slowing evenly to 6 m/s (a
@@ -211,22 +202,7 @@ fn a_run_shifts_where_the_schedule_says() {
             16.0 - 10.0 * ((t - 14.0) / 6.0).min(1.0)
         }
     };
-    let mut config =
-        M113::declared_config(Terrain::Flat { height: 0.0 }, M113::speed_drive(target));
-    config.powertrain = Some(Powertrain::Converter(Box::new(d.clone())));
-    let mut system = build::<M113>(config).expect("the M113 builds");
-    let results = simulate(
-        &mut system,
-        Integrator::Bs23 {
-            rtol: 1e-4,
-            atol: 1e-4,
-            max_step: 0.01,
-        },
-        0.0,
-        24.0,
-        Output::Every(0.002),
-    )
-    .expect("the run finishes");
+    let results = m113_through(&d, Terrain::Flat { height: 0.0 }, target, 24.0, 0.002);
     let gear = results.column("gear").unwrap();
     let omega = results.column("sprocket_speed").unwrap();
     let t = results.times();

@@ -138,3 +138,19 @@ pub mod arms {
         apply(&declared::<M, D>(), &SVector::zeros(), qd, &mut loads).dissipation
     }
 }
+
+/// A table of points `(x, y)`, x increasing, read at `x`: linear between
+/// the points, held beyond the ends (the powertrain's tables' reading,
+/// written apart for the tests' independent routes).
+pub fn table_at(points: &[(f64, f64)], x: f64) -> f64 {
+    if x <= points[0].0 {
+        return points[0].1;
+    }
+    let last = points[points.len() - 1];
+    if x >= last.0 {
+        return last.1;
+    }
+    let i = points.iter().position(|p| p.0 > x).unwrap();
+    let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
+    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+}

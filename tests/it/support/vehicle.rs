@@ -7,9 +7,9 @@ use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::DVector;
-use trackgen::simulate::Results;
+use trackgen::simulate::{Output, Results, simulate};
 use trackgen::system::Simulated;
-use trackgen::vehicle::{Drive, Vehicle, VehicleConfig, build};
+use trackgen::vehicle::{Drive, Driveline, Powertrain, Vehicle, VehicleConfig, build};
 use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis, m113::M113System, m113::M113Track};
 
 use super::{max_abs, min_of};
@@ -185,4 +185,40 @@ pub fn m113_leaning_on_a_wall() -> (M113System, f64, DVector<f64>, f64) {
     system.observe(t, y.as_slice(), &mut row).expect("observes");
     let hull = row[columns.iter().position(|c| c == "hull_normal").unwrap()];
     (system, t, y, hull)
+}
+
+/// The M113A3's driveline as the M113 declares it
+/// (`m113::powertrain()`).
+pub fn m113a3_driveline() -> Driveline {
+    match m113::powertrain() {
+        Powertrain::Converter(driveline) => *driveline,
+        other => panic!("the M113A3 has a torque converter, not {other:?}"),
+    }
+}
+
+/// The M113 through `driveline` on `terrain`, its speed drive aiming at
+/// `target(t)` (m/s), run `duration` s by Bogacki-Shampine at 1e-4 (max
+/// step 10 ms), a row every `every` s.
+pub fn m113_through(
+    driveline: &Driveline,
+    terrain: Terrain,
+    target: impl Fn(f64) -> f64 + Send + 'static,
+    duration: f64,
+    every: f64,
+) -> Results {
+    let mut config = M113::declared_config(terrain, M113::speed_drive(target));
+    config.powertrain = Some(Powertrain::Converter(Box::new(driveline.clone())));
+    let mut system = build::<M113>(config).expect("the M113 builds");
+    simulate(
+        &mut system,
+        Integrator::Bs23 {
+            rtol: 1e-4,
+            atol: 1e-4,
+            max_step: 0.01,
+        },
+        0.0,
+        duration,
+        Output::Every(every),
+    )
+    .expect("the run finishes")
 }

@@ -207,8 +207,34 @@ pub(crate) fn step_error(
     v: &DVector<f64>,
     y0: &DVector<f64>,
     y1: &DVector<f64>,
+    tolerances: (f64, f64),
+    quadratures: &Quadratures,
+) -> f64 {
+    norm_over(v, (y0, y1), tolerances, quadratures, true)
+}
+
+/// [`weighted_rms`] over the components the norms weigh: the passive
+/// quadratures left out (no term, and not counted).
+pub(crate) fn live_rms(
+    v: &DVector<f64>,
+    y0: &DVector<f64>,
+    y1: &DVector<f64>,
+    tolerances: (f64, f64),
+    quadratures: &Quadratures,
+) -> f64 {
+    norm_over(v, (y0, y1), tolerances, quadratures, false)
+}
+
+/// The RMS of `v` weighted by `atol + rtol · max(|y0|, |y1|)` per
+/// component, the quadratures by their increment `|y1 − y0|` where
+/// `by_increment`, the passive ones left out (no term, not counted).
+#[inline(always)]
+fn norm_over(
+    v: &DVector<f64>,
+    (y0, y1): (&DVector<f64>, &DVector<f64>),
     (atol, rtol): (f64, f64),
     quadratures: &Quadratures,
+    by_increment: bool,
 ) -> f64 {
     if !quadratures.any {
         return weighted_rms(v, y0, y1, atol, rtol);
@@ -220,36 +246,12 @@ pub(crate) fn step_error(
         if passive[i] {
             return 0.0;
         }
-        let size = if mask[i] {
+        let size = if by_increment && mask[i] {
             (y1[i] - y0[i]).abs()
         } else {
             y0[i].abs().max(y1[i].abs())
         };
         scaled_square(v[i], atol + rtol * size)
-    })
-}
-
-/// [`weighted_rms`] over the components the norms weigh: the passive
-/// quadratures left out (no term, and not counted).
-pub(crate) fn live_rms(
-    v: &DVector<f64>,
-    y0: &DVector<f64>,
-    y1: &DVector<f64>,
-    (atol, rtol): (f64, f64),
-    quadratures: &Quadratures,
-) -> f64 {
-    if !quadratures.any {
-        return weighted_rms(v, y0, y1, atol, rtol);
-    }
-    let n = v.len();
-    let (v, y0, y1) = (v.as_slice(), &y0.as_slice()[..n], &y1.as_slice()[..n]);
-    let passive = &quadratures.passive[..n];
-    rms_of_live(n, quadratures.live, |i| {
-        if passive[i] {
-            0.0
-        } else {
-            scaled_square(v[i], atol + rtol * y0[i].abs().max(y1[i].abs()))
-        }
     })
 }
 
