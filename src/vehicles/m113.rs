@@ -155,6 +155,7 @@ crate::model! {
             ],
             torque_ratio: [(0.0, 3.32), (0.25, 2.45), (0.5, 1.66), (0.725, 1.17), (0.85, 1.0), (1.0, 1.0)],
             ranges: [4.16, 2.34, 1.46, 1.04],
+            reverse: REVERSE,
             lockup: [2, 3, 4],
             lockup_speed_ratio: 0.9,
             final_drive: FINAL_DRIVE,
@@ -234,6 +235,9 @@ pub const STALL_SPEED: f64 = 2300.0 * RPM;
 /// The X200-4's range reductions, first to fourth (OD1714: 4.16, 2.34,
 /// 1.46, 1.04:1; reverse 6.62:1).
 pub const RANGES: [f64; 4] = [4.16, 2.34, 1.46, 1.04];
+/// The X200-4's reverse reduction (OD1714: 6.62:1), through the converter
+/// (reverse does not lock up: OD1714 names ranges 2 to 4).
+pub const REVERSE: f64 = 6.62;
 /// The M113A3's top speed on a level road, m/s: 41 mph (US Army Center of
 /// Military History, *Weapon Systems*, "M113 Series Armored Personnel
 /// Carrier": M113A3).
@@ -270,7 +274,8 @@ pub const STALL_CAPACITY: f64 = 8.832_330_266_045_645;
 /// the declared `powertrain` (the Detroit Diesel 6V53T through the Allison
 /// X200-4's torque converter, stall torque ratio [`STALL_TORQUE_RATIO`],
 /// lock-up in ranges 2 to 4 (OD1714), its four ranges ([`RANGES`]) chosen
-/// ideally, and the final drive ([`FINAL_DRIVE`]), half of it for this
+/// ideally, reverse ([`REVERSE`]) where the driver asks to back, and the
+/// final drive ([`FINAL_DRIVE`]), half of it for this
 /// side), [`M113::powertrain`](crate::vehicle::Vehicle::powertrain).
 ///
 /// The engine's curve and the converter's are estimated (no published

@@ -40,6 +40,7 @@ fn a_driveline(engine: Vec<(f64, f64)>, capacity: Vec<(f64, f64)>) -> Driveline 
         gearbox_efficiency: 0.9,
         final_drive_efficiency: 0.95,
         share: 0.5,
+        reverse: None,
         shift: None,
     }
 }
@@ -386,5 +387,33 @@ fn a_bad_engine_map_is_refused_by_the_tables_rule() {
     assert!(matches!(
         bad.check(),
         Err(PowertrainError::Table { point: 2, .. })
+    ));
+}
+
+/// Reverse is one more range through the converter: at stall the engine
+/// and the converter run as in any range (the turbine at rest), so the
+/// sprocket's stall torque in reverse is the first range's times the ratio
+/// of their reductions, 6.62 / 4.16 for the X200-4 (to 1e-12: the same
+/// match, scaled); it never locks up; a reverse reduction not above 0 is
+/// refused.
+#[test]
+fn reverse_is_a_range_through_the_converter() {
+    let d = m113a3_driveline();
+    let reverse = d.reverse_range().expect("the X200-4 has a reverse range");
+    assert_eq!(reverse, d.ranges.len());
+    let (first, back) = (d.in_range(0, 0.0).0, d.in_range(reverse, 0.0).0);
+    let want = first * 6.62 / 4.16;
+    assert!((back - want).abs() <= 1e-12 * want, "{back} against {want}");
+    for i in 0..=100 {
+        let w = 0.2 * i as f64;
+        if let (_, _, Some(point)) = d.in_range(reverse, w) {
+            assert!(!point.locked, "reverse locked at {w} rad/s");
+        }
+    }
+    let mut bad = d.clone();
+    bad.reverse = Some(-6.62);
+    assert!(matches!(
+        bad.check(),
+        Err(PowertrainError::Ratio { gear: 4, .. })
     ));
 }

@@ -46,6 +46,7 @@ fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
         gearbox_efficiency: 0.9,
         final_drive_efficiency: 0.95,
         share: 0.5,
+        reverse: None,
         shift: None,
     };
     driveline.check().unwrap();
@@ -251,4 +252,47 @@ fn a_run_records_the_converter_and_books_the_engine_s_work() {
     );
     assert!((work - trapezoid).abs() <= 1e-3 * work);
     assert!(motor > 0.0 && work > motor);
+}
+
+/// Backing at full throttle the M113A3 takes its reverse range: the
+/// recorded gear is −1, and wherever the engine sets the torque (load 1)
+/// the sprocket's is the reverse range's full-load torque at its speed
+/// (to 1e-9: the same match, the cap's rounding).
+#[test]
+fn backing_at_full_throttle_takes_the_reverse_range() {
+    let driveline = m113a3_driveline();
+    let reverse = driveline.reverse_range().unwrap();
+    let target = |t: f64| if t < 0.5 { 0.0 } else { -3.0 };
+    let results = m113_through(
+        &driveline,
+        Terrain::Flat { height: 0.0 },
+        target,
+        3.0,
+        0.002,
+    );
+    let column = |name: &str| results.column(name).expect(name);
+    let (gear, load, torque, omega) = (
+        column("gear"),
+        column("engine_load"),
+        column("sprocket_torque"),
+        column("sprocket_speed"),
+    );
+    let mut capped = 0;
+    for i in 0..gear.len() {
+        if results.times()[i] < 0.6 {
+            continue;
+        }
+        assert_eq!(gear[i], -1.0, "at {} s", results.times()[i]);
+        if load[i] == 1.0 && torque[i] * omega[i] >= 0.0 {
+            let (want, _, _) = driveline.in_range(reverse, omega[i].abs());
+            assert!(
+                (torque[i].abs() - want).abs() <= 1e-9 * want,
+                "at {} s: {} N m against reverse's {want}",
+                results.times()[i],
+                torque[i]
+            );
+            capped += 1;
+        }
+    }
+    assert!(capped > 100, "{capped} rows at full load");
 }

@@ -136,6 +136,8 @@ pub struct Powertrain {
     /// The shift schedule: upshift and downshift speeds per range (rad/s)
     /// and the shift time (s); `None`: shifted ideally.
     pub shift: Option<(Vec<Num>, Vec<Num>, Num)>,
+    /// The reverse range's reduction, if declared.
+    pub reverse: Option<Num>,
 }
 
 /// A shoe's contact features, link frame, m.

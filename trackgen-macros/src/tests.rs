@@ -146,6 +146,7 @@ fn vehicle_with_a_powertrain() {
                 capacity: [(0.0, 9.0), (1.0, 18.0)],
                 torque_ratio: [(0.0, 2.5), (0.8, 1.0), (1.0, 1.0)],
                 ranges: [3.0, 1.5],
+                reverse: 4.0,
                 lockup: [2],
                 lockup_speed_ratio: 0.9,
                 final_drive: FINAL,

@@ -115,6 +115,10 @@ fn powertrain(p: &Powertrain) -> TokenStream {
         },
         None => quote!(::std::option::Option::None),
     };
+    let reverse = match &p.reverse {
+        Some(ratio) => quote!(::std::option::Option::Some(#ratio)),
+        None => quote!(::std::option::Option::None),
+    };
     quote! {
         #rt::Powertrain::Converter(::std::boxed::Box::new(#rt::Driveline {
             engine: #engine,
@@ -127,6 +131,7 @@ fn powertrain(p: &Powertrain) -> TokenStream {
             gearbox_efficiency: #gearbox_efficiency,
             final_drive_efficiency: #final_drive_efficiency,
             share: #share,
+            reverse: #reverse,
             shift: #shift,
         }))
     }

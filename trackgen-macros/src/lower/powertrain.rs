@@ -14,7 +14,8 @@ use crate::ir::{ConstCheck, Powertrain};
 use crate::num::Num;
 
 /// The keys of a `powertrain { … }` section.
-const KEYS: [&str; 13] = [
+const KEYS: [&str; 14] = [
+    "reverse",
     "upshift",
     "downshift",
     "shift_time",
@@ -74,6 +75,10 @@ impl Lowering<'_> {
             None => Some(Num::Known(DEFAULT_SHARE)),
         };
         let shift = self.shift(&fields, count, ranges.as_deref());
+        let reverse = match fields.map.get("reverse") {
+            Some(_) => self.positive(&fields, "reverse", true).map(Some),
+            None => Some(None),
+        };
         Some(Powertrain {
             engine: engine?,
             capacity: capacity?,
@@ -86,6 +91,7 @@ impl Lowering<'_> {
             final_drive_efficiency: final_drive_efficiency?,
             share: share?,
             shift: shift?,
+            reverse: reverse?,
         })
     }
 

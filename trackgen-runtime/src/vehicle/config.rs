@@ -143,10 +143,16 @@ impl VehicleConfig {
     /// The powertrain's cap on the drive at sprocket speed `omega`
     /// (rad/s), its torque at rest being `stall` (N m,
     /// [`stall_torque`](Self::stall_torque), found once per build), a
-    /// scheduled gearbox in the range `engaged`: none without a
+    /// scheduled gearbox in the range `engaged`, in reverse where the
+    /// driver asks (`reverse`, [`Drive::asks_reverse`]): none without a
     /// powertrain.
-    pub(super) fn torque_cap(&self, omega: f64, stall: f64, engaged: Option<Engaged>) -> TorqueCap {
-        self.torque_cap_in_gear(omega, stall, engaged).0
+    pub(super) fn torque_cap(
+        &self,
+        omega: f64,
+        stall: f64,
+        (engaged, reverse): (Option<Engaged>, bool),
+    ) -> TorqueCap {
+        self.torque_cap_in_gear(omega, stall, (engaged, reverse)).0
     }
 
     /// [`torque_cap`](Self::torque_cap), and the powertrain's own cap
@@ -155,12 +161,12 @@ impl VehicleConfig {
         &self,
         omega: f64,
         stall: f64,
-        engaged: Option<Engaged>,
+        (engaged, reverse): (Option<Engaged>, bool),
     ) -> (TorqueCap, Option<Cap>) {
         self.powertrain
             .as_ref()
             .map_or((TorqueCap::NONE, None), |p| {
-                let cap = p.cap(omega.abs(), engaged);
+                let cap = p.cap(omega.abs(), engaged, reverse);
                 (
                     TorqueCap {
                         value: cap.torque,
@@ -184,11 +190,14 @@ impl VehicleConfig {
         }
     }
 
-    /// The powertrain's torque at rest, N m (∞ without a powertrain).
-    pub(super) fn stall_torque(&self) -> f64 {
+    /// The powertrain's torque at rest, N m, forward and in reverse (∞
+    /// without a powertrain; reverse as forward without a reverse range).
+    pub(super) fn stall_torque(&self) -> (f64, f64) {
         self.powertrain
             .as_ref()
-            .map_or(f64::INFINITY, |p| p.limit(0.0).0)
+            .map_or((f64::INFINITY, f64::INFINITY), |p| {
+                (p.limit(0.0).0, p.cap(0.0, None, true).torque)
+            })
     }
 
     /// The arms, checked to be one per arm of a chassis whose arms are at

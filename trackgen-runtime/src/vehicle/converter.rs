@@ -63,6 +63,11 @@ pub struct Driveline {
     /// This sprocket's share of the driveline's output: 0.5 for a planar
     /// model of one side of a two-track vehicle; in (0, 1].
     pub share: f64,
+    /// The reverse range's reduction (input over output speed, more than
+    /// 0), if the gearbox has one: a driver asking the sprocket to turn
+    /// backwards gets it, through the converter (it never locks up).
+    /// `None`: reversing gets the forward ranges' envelope.
+    pub reverse: Option<f64>,
     /// The gearbox's shift schedule; `None`: shifted ideally, each speed
     /// in the range that gives the most torque (the tractive-effort
     /// envelope a mobility model uses).
@@ -135,6 +140,14 @@ impl Driveline {
                 return Err(PowertrainError::Ratio { gear, ratio });
             }
         }
+        if let Some(ratio) = self.reverse
+            && !(ratio.is_finite() && ratio > 0.0)
+        {
+            return Err(PowertrainError::Ratio {
+                gear: self.ranges.len(),
+                ratio,
+            });
+        }
         if !(self.final_drive.is_finite() && self.final_drive > 0.0) {
             return Err(PowertrainError::FinalDrive(self.final_drive));
         }
@@ -175,10 +188,21 @@ impl Driveline {
         self.gearbox_efficiency * self.final_drive_efficiency * self.share
     }
 
-    /// The overall reduction in range `range` (0-based), engine side over
-    /// sprocket: the range's times the final drive's.
+    /// The overall reduction in range `range` (0-based; the
+    /// [`reverse_range`](Self::reverse_range)'s index for reverse), engine
+    /// side over sprocket: the range's times the final drive's.
     pub fn reduction(&self, range: usize) -> f64 {
-        self.ranges[range] * self.final_drive
+        let ratio = match self.ranges.get(range) {
+            Some(&ratio) => ratio,
+            None => self.reverse.unwrap_or(f64::NAN),
+        };
+        ratio * self.final_drive
+    }
+
+    /// The reverse range's index, one past the forward ranges', if the
+    /// gearbox has one ([`reverse`](Self::reverse)).
+    pub fn reverse_range(&self) -> Option<usize> {
+        self.reverse.map(|_| self.ranges.len())
     }
 
     /// The full-load operating point in range `range` (0-based) with the

@@ -231,6 +231,13 @@ impl Drive {
         cap.load(torque, omega, self.direction(self.demand(t), radius))
     }
 
+    /// Whether the driver asks the vehicle backwards at `t`: a target
+    /// speed below 0, or a scheduled torque turning the sprocket as when
+    /// reversing (positive: driving forward turns it negative).
+    pub fn asks_reverse(&self, t: f64) -> bool {
+        self.direction(self.demand(t), 1.0) > 0.0
+    }
+
     /// The way the driver asks the sprocket to turn, as a sign (0: to
     /// stand): the target speed's (the sprocket turns as `−v / r`) or the
     /// scheduled torque's.

@@ -110,12 +110,28 @@ pub(super) struct Sprocket {
     /// found once when the vehicle is built: the powertrain does not
     /// change in a run (a brake removes it, and then nothing caps).
     pub stall: f64,
+    /// The powertrain's torque at rest in reverse, N m (as `stall`
+    /// without a reverse range).
+    pub stall_reverse: f64,
     /// A scheduled gearbox's range, kept by the run as it shifts
     /// ([`Shift::next`](super::Shift::next)); `None`: shifted ideally.
     pub engaged: Option<Engaged>,
 }
 
 impl Sprocket {
+    /// The stall torque and the gearbox's state at `t`: the engaged range
+    /// and whether the driver asks reverse (then the reverse stall).
+    #[inline]
+    pub fn gearbox(&self, config: &VehicleConfig, t: f64) -> (f64, (Option<Engaged>, bool)) {
+        let reverse = config.drive.asks_reverse(t);
+        let stall = if reverse {
+            self.stall_reverse
+        } else {
+            self.stall
+        };
+        (stall, (self.engaged, reverse))
+    }
+
     /// The sprocket's speed relative to the chassis, rad/s.
     #[inline]
     pub fn omega<const DC: usize>(&self, qdc: &SVector<f64, DC>) -> f64 {
@@ -277,7 +293,8 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
         let omega = sprocket.omega(qdc);
-        let (cap, own) = config.torque_cap_in_gear(omega, sprocket.stall, sprocket.engaged);
+        let (stall, gearbox) = sprocket.gearbox(config, t);
+        let (cap, own) = config.torque_cap_in_gear(omega, stall, gearbox);
         let (torque, rate) =
             config
                 .drive

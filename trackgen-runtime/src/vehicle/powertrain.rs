@@ -101,15 +101,27 @@ impl Powertrain {
     /// range an ideally shifted gearbox is in at that speed (`None` for a
     /// [`Power`](Self::Power) limit, or where no gear drives).
     pub fn limit_in_gear(&self, speed: f64) -> (f64, f64, Option<usize>) {
-        let cap = self.cap(speed, None);
+        let cap = self.cap(speed, None, false);
         (cap.torque, cap.slope, cap.gear)
     }
 
     /// [`limit_in_gear`](Self::limit_in_gear), with a converter's
     /// full-load point in that gear (for [`engine_side`](Self::engine_side)
     /// to start from); a converter with a shift schedule in the range
-    /// `engaged` ([`Driveline::scheduled`]).
-    pub(super) fn cap(&self, speed: f64, engaged: Option<Engaged>) -> Cap {
+    /// `engaged` ([`Driveline::scheduled`]); a converter with a reverse
+    /// range in it where the driver asks to `reverse`.
+    pub(super) fn cap(&self, speed: f64, engaged: Option<Engaged>, reverse: bool) -> Cap {
+        if let (Powertrain::Converter(driveline), true) = (self, reverse)
+            && let Some(range) = driveline.reverse_range()
+        {
+            let (torque, slope, point) = driveline.in_range(range, speed);
+            return Cap {
+                torque,
+                slope,
+                gear: Some(range),
+                point,
+            };
+        }
         if let (Powertrain::Converter(driveline), Some(engaged)) = (self, engaged)
             && driveline.shift.is_some()
         {

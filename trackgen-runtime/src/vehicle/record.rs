@@ -79,7 +79,8 @@ record! {
         /// The engine's torque, N m (the whole engine's; 0 as
         /// `engine_speed`).
         engine_torque,
-        /// The gear or range engaged, numbered from 1 (0 without gears):
+        /// The gear or range engaged, numbered from 1, −1 in reverse (0
+        /// without gears):
         /// while a shift takes its time, the range whose torque the
         /// sprocket gets (the lesser of the two).
         gear,

@@ -138,7 +138,8 @@ where
                 body: part.body,
                 pitch_radius: pitch_radius(part.teeth, pitch),
                 rolling_radius: rolling_radius(part.teeth, pitch),
-                stall: config.stall_torque(),
+                stall: config.stall_torque().0,
+                stall_reverse: config.stall_torque().1,
                 engaged: config.first_engaged(),
             });
         let chassis_description = chassis.description();
@@ -222,6 +223,10 @@ where
         let (Some(engaged), Some(shift)) = (sprocket.engaged, driveline.shift.as_ref()) else {
             return false;
         };
+        if self.config.drive.asks_reverse(t) {
+            // In reverse the forward ranges wait where they are.
+            return false;
+        }
         let rates = self.layout.chassis_rates.start;
         let omega = y[rates + 2 + sprocket.body] - y[rates + 2];
         let input = driveline.reduction(engaged.range) * omega.abs();
@@ -368,7 +373,8 @@ where
     ) -> (Option<(usize, super::DriveSlopes)>, Option<f64>) {
         let drive = self.sprocket.map(|s| {
             let omega = s.omega(qdc);
-            let cap = self.config.torque_cap(omega, s.stall, s.engaged);
+            let (stall, gearbox) = s.gearbox(&self.config, t);
+            let cap = self.config.torque_cap(omega, stall, gearbox);
             let slopes = self
                 .config
                 .drive
@@ -932,7 +938,11 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             turbine_power: books.engine.turbine_power,
             engine_speed: books.engine.engine_speed,
             engine_torque: books.engine.engine_torque,
-            gear: books.engine.gear.map_or(0.0, |g| (g + 1) as f64),
+            gear: match (books.engine.gear, &self.config.powertrain) {
+                (None, _) => 0.0,
+                (Some(g), Some(Powertrain::Converter(d))) if Some(g) == d.reverse_range() => -1.0,
+                (Some(g), _) => (g + 1) as f64,
+            },
             speed_ratio: books.engine.speed_ratio,
             torque_ratio: books.engine.torque_ratio,
             converter_efficiency: books.engine.speed_ratio * books.engine.torque_ratio,
