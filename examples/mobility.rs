@@ -55,7 +55,7 @@ use rayon::prelude::*;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::mobility::search::{Limit, Search};
 use trackgen::mobility::{
-    EventError, EventSettings, Footprint, Published, grade, obstacle, ride, soil,
+    EventError, EventSettings, Footprint, Published, grade, obstacle, quantity, ride, soil,
 };
 use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::{m113, marder};
@@ -286,10 +286,10 @@ fn tasks<'a, V: Vehicle>(
             }
             "step" | "gap" | "ditch" | "barrier" => {
                 let (search, quantity): (fn(&EventSettings, &Footprint) -> _, _) = match event {
-                    "step" => (obstacle::step::<V>, "highest step"),
-                    "gap" => (obstacle::gap::<V>, "widest gap"),
-                    "ditch" => (obstacle::ditch::<V>, "deepest ditch"),
-                    _ => (obstacle::barrier::<V>, "highest barrier"),
+                    "step" => (obstacle::step::<V>, quantity::HIGHEST_STEP),
+                    "gap" => (obstacle::gap::<V>, quantity::WIDEST_GAP),
+                    "ditch" => (obstacle::ditch::<V>, quantity::DEEPEST_DITCH),
+                    _ => (obstacle::barrier::<V>, quantity::HIGHEST_BARRIER),
                 };
                 out.push(task(
                     None,
@@ -305,12 +305,12 @@ fn tasks<'a, V: Vehicle>(
             "grade" => {
                 out.push(task(
                     None,
-                    "top speed on the flat",
+                    quantity::TOP_SPEED,
                     "m/s",
                     Box::new(move || {
                         let run = grade::top_speed::<V>(settings, footprint)?;
                         Ok(Found::Curve {
-                            points: vec![(None, "top speed on the flat", run.speed, "=", "m/s")],
+                            points: vec![(None, quantity::TOP_SPEED, run.speed, "=", "m/s")],
                             runs: 1,
                             search: None,
                         })
@@ -318,7 +318,7 @@ fn tasks<'a, V: Vehicle>(
                 ));
                 out.push(task(
                     None,
-                    "steepest grade",
+                    quantity::STEEPEST_GRADE,
                     "rise over run",
                     Box::new(move || {
                         let steepest = grade::steepest::<V>(settings, footprint)?;
@@ -330,7 +330,7 @@ fn tasks<'a, V: Vehicle>(
                         let mut runs = steepest.runs();
                         let mut points = vec![(
                             None,
-                            "steepest grade",
+                            quantity::STEEPEST_GRADE,
                             steepest.limit.value(),
                             steepest.limit.relation(),
                             "rise over run",

@@ -311,32 +311,35 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
 /// events answer, each with its source. The grade, the vertical obstacle
 /// and the trench are the M113 family's (the A3 keeps them: its heavier
 /// hull came with the larger engine and the converter transmission).
-pub const PUBLISHED: [trackgen::mobility::Published; 4] = [
-    trackgen::mobility::Published {
-        quantity: "top speed on the flat",
-        value: TOP_SPEED,
-        unit: "m/s",
-        source: "US Army Center of Military History, Weapon Systems, M113 series: \
+pub const PUBLISHED: [trackgen::mobility::Published; 4] = {
+    use trackgen::mobility::quantity;
+    [
+        trackgen::mobility::Published {
+            quantity: quantity::TOP_SPEED,
+            value: TOP_SPEED,
+            unit: "m/s",
+            source: "US Army Center of Military History, Weapon Systems, M113 series: \
                  M113A3, 41 mph (also the figure the final drive is derived from)",
-    },
-    trackgen::mobility::Published {
-        quantity: "steepest grade",
-        value: 0.60,
-        unit: "rise over run",
-        source: "AFV Database, M113 (afvdatabase.com/usa/m113.html): maximum grade 60 %",
-    },
-    trackgen::mobility::Published {
-        quantity: "highest step",
-        value: 0.61,
-        unit: "m",
-        source: "power-projection.com, M113A3 (the manufacturer's figures): vertical \
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::STEEPEST_GRADE,
+            value: 0.60,
+            unit: "rise over run",
+            source: "AFV Database, M113 (afvdatabase.com/usa/m113.html): maximum grade 60 %",
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::HIGHEST_STEP,
+            value: 0.61,
+            unit: "m",
+            source: "power-projection.com, M113A3 (the manufacturer's figures): vertical \
                  obstacle 0.61 m; AFV Database, M113: 24 in",
-    },
-    trackgen::mobility::Published {
-        quantity: "widest gap",
-        value: 1.68,
-        unit: "m",
-        source: "power-projection.com, M113A3 (the manufacturer's figures): trench \
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::WIDEST_GAP,
+            value: 1.68,
+            unit: "m",
+            source: "power-projection.com, M113A3 (the manufacturer's figures): trench \
                  crossing 1.68 m; AFV Database, M113: 66 in",
-    },
-];
+        },
+    ]
+};

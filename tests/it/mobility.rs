@@ -452,7 +452,7 @@ fn the_m113a3_tops_out_near_its_published_speed() {
     let run = trackgen::mobility::grade::top_speed::<M113>(&settings, &footprint).unwrap();
     let published = m113::PUBLISHED
         .iter()
-        .find(|p| p.quantity == "top speed on the flat")
+        .find(|p| p.quantity == trackgen::mobility::quantity::TOP_SPEED)
         .expect("a published top speed");
     assert!(run.climbed && !run.stalled, "{run:?}");
     let ratio = run.speed / published.value;

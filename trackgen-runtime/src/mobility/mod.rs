@@ -22,6 +22,7 @@ mod error;
 pub mod grade;
 pub mod obstacle;
 mod published;
+pub mod quantity;
 pub mod ride;
 mod runs;
 pub mod search;

@@ -7,8 +7,8 @@ pub const AGREEMENT: f64 = 0.15;
 /// A figure published for a real vehicle that one of the events answers.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Published {
-    /// The event's quantity it answers, as the events name it
-    /// (`"steepest grade"`, `"highest step"`, `"widest gap"`).
+    /// The event's quantity it answers, by its name in
+    /// [`quantity`](super::quantity) ([`quantity::HIGHEST_STEP`](super::quantity::HIGHEST_STEP), …).
     pub quantity: &'static str,
     /// The published value, in [`unit`](Self::unit).
     pub value: f64,
@@ -47,7 +47,7 @@ mod tests {
     #[test]
     fn agreement_is_within_fifteen_percent_either_way() {
         let step = Published {
-            quantity: "highest step",
+            quantity: crate::mobility::quantity::HIGHEST_STEP,
             value: 0.61,
             unit: "m",
             source: "",
