@@ -51,9 +51,10 @@ fn crossover(d: &Driveline, r: usize) -> f64 {
     0.5 * (low + high)
 }
 
-/// The ideal shift points as a schedule: range `r` shifts up where range
-/// `r + 1` overtakes it, range `r + 1` down at 80 % of that sprocket speed;
-/// both as the gearbox input's speeds.
+/// The ideal shift points as a schedule, by the crossovers found here:
+/// range `r` shifts up where range `r + 1` overtakes it, range `r + 1`
+/// down at 80 % of that sprocket speed; both as the gearbox input's
+/// speeds.
 fn ideal_schedule(d: &Driveline, time: f64) -> Shift {
     let n = d.ranges.len();
     let mut up = vec![0.0; n];
@@ -64,6 +65,31 @@ fn ideal_schedule(d: &Driveline, time: f64) -> Shift {
         down[r + 1] = d.reduction(r + 1) * 0.8 * w;
     }
     Shift { up, down, time }
+}
+
+/// `Driveline::ideal_schedule`, the library's, against the crossovers
+/// found here by a coarser scan and 60 bisections (1e-9 relative: the
+/// bisections' width).
+#[test]
+fn the_ideal_schedule_shifts_at_the_envelope_s_crossovers() {
+    let d = m113a3_driveline();
+    let want = ideal_schedule(&d, 0.25);
+    let got = d.ideal_schedule(0.8, 0.25).expect("every range overtakes");
+    for (g, w) in got
+        .up
+        .iter()
+        .zip(&want.up)
+        .chain(got.down.iter().zip(&want.down))
+    {
+        assert!(
+            (g - w).abs() <= 1e-9 * w.abs().max(1.0),
+            "{got:?} against {want:?}"
+        );
+    }
+    assert_eq!(got.time, 0.25);
+    let mut scheduled = d.clone();
+    scheduled.shift = Some(got);
+    scheduled.check().expect("a schedule that does not hunt");
 }
 
 #[test]

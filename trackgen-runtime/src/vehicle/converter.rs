@@ -446,6 +446,46 @@ impl Driveline {
         }
     }
 
+    /// A shift schedule at this gearbox's ideal shift points, for a
+    /// vehicle whose own are not published: range `r` shifts up at the
+    /// sprocket speed where range `r + 1`'s full-load torque overtakes it
+    /// (found by a scan of 4000 speeds to the range's reach, then
+    /// bisection to the last bits), and range `r + 1` down at `down` (in
+    /// (0, 1)) of that speed; both as the gearbox's input speeds; a shift
+    /// takes `time` s. Accelerating at full throttle it shifts where the
+    /// envelope changes range; slowing, `1 − down` later. `None` where a
+    /// range never overtakes the one below it.
+    pub fn ideal_schedule(&self, down: f64, time: f64) -> Option<Shift> {
+        let n = self.ranges.len();
+        let (mut up, mut low) = (vec![0.0; n], vec![0.0; n]);
+        for r in 0..n.saturating_sub(1) {
+            let better = |w: f64| self.in_range(r + 1, w).0 > self.in_range(r, w).0;
+            let reach = self.engine[self.engine.len() - 1].0 / self.reduction(r);
+            let steps = 4000;
+            let step = reach / steps as f64;
+            let first = (1..=steps).map(|k| k as f64 * step).find(|&w| better(w))?;
+            let (mut a, mut b) = (first - step, first);
+            while b - a > f64::EPSILON * b {
+                let mid = 0.5 * (a + b);
+                if mid <= a || mid >= b {
+                    break;
+                }
+                if better(mid) {
+                    b = mid;
+                } else {
+                    a = mid;
+                }
+            }
+            up[r] = self.reduction(r) * b;
+            low[r + 1] = self.reduction(r + 1) * down * b;
+        }
+        Some(Shift {
+            up,
+            down: low,
+            time,
+        })
+    }
+
     /// What the gearbox `engaged` gives the sprocket at full load at
     /// sprocket speed `speed` (rad/s, ≥ 0): the engaged range's
     /// [`in_range`](Self::in_range), or while a shift takes its time the
