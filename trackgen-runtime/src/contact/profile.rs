@@ -3,8 +3,10 @@
 //! face** (a step, a trench wall). Beyond its ends the ground is flat at
 //! the end heights.
 //!
-//! The obstacles of the mobility events (`shared/spec/mobility.md` §3
-//! "Obstacles": a half-round of radius = height, a step, a gap with
+//! The obstacles of the mobility events (the NATO Reference Mobility
+//! Model's obstacle-crossing events and the next-generation NRMM's
+//! benchmark, NATO ET-148, 2016; the guide's "Terrain, obstacles and
+//! roughness"): a half-round of radius = height, a step, a gap with
 //! vertical walls, trapezoidal ditches and barriers; with grades, and
 //! courses of run-in, obstacle and run-out) cannot be
 //! written as a height function `z = h(x)`: a vertical face has no height
@@ -997,7 +999,8 @@ fn parse_csv(bytes: &[u8], name: &str) -> Result<Profile, ProfileError> {
     })
 }
 
-/// An obstacle of the mobility events (`shared/spec/mobility.md` §3), for
+/// An obstacle of the mobility events (NRMM and NG-NRMM, NATO ET-148,
+/// 2016; the guide's "Obstacle courses"), for
 /// [`Course::then`] and [`Obstacle::course`]. Lengths in m; each is
 /// range-checked when it is laid (the ranges are in [`Course`]'s methods).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -3,7 +3,8 @@
 //!
 //! # Spectrum
 //!
-//! ISO 8608 (`shared/spec/mobility.md` §3): the one-sided displacement
+//! ISO 8608:2016, *Mechanical vibration — Road surface profiles —
+//! Reporting of measured data*, §5 and annex C: the one-sided displacement
 //! PSD `G_d(n) = G_d(n₀) (n / n₀)^−2` (m³), `n` in cycles/m,
 //! `n₀ =` [`N0`] `= 0.1` cycles/m, with the classes' geometric means
 //! `G_d(n₀) = 16·10⁻⁶ m³` for A and 4 times more per class up to H,

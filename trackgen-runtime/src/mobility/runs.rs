@@ -16,7 +16,9 @@ use crate::vehicle::{Powertrain, Vehicle, VehicleConfig, VehicleDynamics, build}
 
 /// How the events drive the vehicle and read their criteria. Every event
 /// takes these; [`new`](Self::new) gives the defaults the mobility
-/// literature's events use (`shared/spec/mobility.md` §1–2).
+/// literature's events use (NRMM and the NG-NRMM benchmark, NATO
+/// ET-148, 2016; the 6 W absorbed power of Pradko & Lee, SAE 680091,
+/// 1968; the guide's "Mobility events").
 #[derive(Debug, Clone, PartialEq)]
 pub struct EventSettings {
     /// The engine and driveline at the sprocket: it caps the speed

@@ -1,4 +1,6 @@
-//! Soils (`shared/spec/mobility.md` §1, `shared/spec/soil.md`): drawbar
+//! Soils (Bekker–Wong: Wong, *Theory of Ground Vehicles*, 4th ed., 2008,
+//! ch. 2; NRMM's drawbar and motion-resistance figures; the guide's "Soft
+//! soil" and "Mobility events"): drawbar
 //! pull against slip, and the motion resistance, on a soft soil.
 //!
 //! These measure the soil and the running gear, not the engine: the

@@ -8,8 +8,9 @@ use super::drive::Drive;
 /// A brake on the sprocket, applied from a time on (the driver's or a
 /// schedule's): from then its torque replaces the drive's and the engine
 /// is declutched. It holds by stiction as a friction brake does: an
-/// elastic stage (the bristle model of the ground's stiction,
-/// `shared/spec/friction.md`) of stiffness `k` and damping `c` on the
+/// elastic stage (the ground's stiction law, a spring-dashpot in series
+/// with a Coulomb slider: Cundall & Strack, *Géotechnique* 29(1), 1979;
+/// the guide's "Friction with stiction") of stiffness `k` and damping `c` on the
 /// sprocket's rotation since the brake was applied, `φ`, gives
 /// `τ = −k φ − c ω`; at `|τ| = T` it slips, `φ` held (the drive's
 /// integral state is `φ`'s negative, its anti-windup the slip). While
