@@ -381,14 +381,17 @@ impl Driveline {
             let (t, dt) = turbine(we);
             (tt - t, -dt)
         };
-        let coupling = || OperatingPoint {
-            engine_speed: w,
-            engine_torque: tt / lerp(&self.torque_ratio, 1.0).0,
-            speed_ratio: 1.0,
-            torque_ratio: lerp(&self.torque_ratio, 1.0).0,
-            locked: false,
-            turbine_torque: tt,
-            turbine_slope: 0.0,
+        let coupling = || {
+            let tr = lerp(&self.torque_ratio, 1.0).0;
+            OperatingPoint {
+                engine_speed: w,
+                engine_torque: tt / tr,
+                speed_ratio: 1.0,
+                torque_ratio: tr,
+                locked: false,
+                turbine_torque: tt,
+                turbine_slope: 0.0,
+            }
         };
         // At stall `SR = 0` at every engine speed but 0, where it has no
         // meaning: there `h` is `T_t`, its limit.

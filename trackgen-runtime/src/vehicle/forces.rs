@@ -123,7 +123,9 @@ impl Sprocket {
     /// and whether the driver asks reverse (then the reverse stall).
     #[inline]
     pub fn gearbox(&self, config: &VehicleConfig, t: f64) -> (f64, (Option<Engaged>, bool)) {
-        let reverse = config.drive.asks_reverse(t);
+        // Without a powertrain nothing reads it: the driver's demand is
+        // not evaluated for it.
+        let reverse = config.powertrain.is_some() && config.drive.asks_reverse(t);
         let stall = if reverse {
             self.stall_reverse
         } else {
@@ -135,6 +137,12 @@ impl Sprocket {
     /// The sprocket's speed relative to the chassis, rad/s.
     #[inline]
     pub fn omega<const DC: usize>(&self, qdc: &SVector<f64, DC>) -> f64 {
+        self.omega_of(qdc.as_slice())
+    }
+
+    /// [`omega`](Self::omega) from the chassis' rates as a slice.
+    #[inline]
+    pub fn omega_of(&self, qdc: &[f64]) -> f64 {
         qdc[2 + self.body] - qdc[2]
     }
 }

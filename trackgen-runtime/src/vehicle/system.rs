@@ -131,6 +131,7 @@ where
         } else {
             0
         };
+        let (stall, stall_reverse) = config.stall_torque();
         let sprocket = C::PARTS
             .iter()
             .find(|p| p.kind == PartKind::Sprocket)
@@ -138,8 +139,8 @@ where
                 body: part.body,
                 pitch_radius: pitch_radius(part.teeth, pitch),
                 rolling_radius: rolling_radius(part.teeth, pitch),
-                stall: config.stall_torque().0,
-                stall_reverse: config.stall_torque().1,
+                stall,
+                stall_reverse,
                 engaged: config.first_engaged(),
             });
         let chassis_description = chassis.description();
@@ -227,8 +228,7 @@ where
             // In reverse the forward ranges wait where they are.
             return false;
         }
-        let rates = self.layout.chassis_rates.start;
-        let omega = y[rates + 2 + sprocket.body] - y[rates + 2];
+        let omega = sprocket.omega_of(&y[self.layout.chassis_rates.clone()]);
         let input = driveline.reduction(engaged.range) * omega.abs();
         match shift.next(engaged, input, t) {
             Some(next) => {
