@@ -136,13 +136,15 @@ fn drive<V: Vehicle>(args: &Args, engine: Powertrain) -> Result<(), Box<dyn Erro
         rut: Vec::new(),
     };
     let mut extra_files = Vec::new();
+    let mut hull_modes = Vec::new();
     if args.start == Start::Equilibrium || args.modes {
         // Finding the rest may switch the track's partition: a run from the
         // assembled start needs a vehicle that has not been moved.
         let mut resting = V::system_with(config())?;
         let (rest, _) = modes::find_rest(&mut resting)?;
         if args.modes {
-            extra_files = modes::report::<V>(&mut resting, &rest, outputs.dir(), &rest_ground)?;
+            (extra_files, hull_modes) =
+                modes::report::<V>(&mut resting, &rest, outputs.dir(), &rest_ground)?;
         }
         if args.start == Start::Equilibrium {
             system = resting;
@@ -202,6 +204,15 @@ fn drive<V: Vehicle>(args: &Args, engine: Powertrain) -> Result<(), Box<dyn Erro
             report::engine(&outputs.recorders.summary);
         }
         report::ride(outputs.recorders.ride.as_ref(), args.output_every);
+        if let Some(ride) = outputs.recorders.ride.as_ref() {
+            let pitch = <V as Vehicle>::System::track_description().pitch().ok();
+            extra_files.extend(report::seat_spectrum(
+                ride,
+                pitch,
+                &hull_modes,
+                outputs.dir(),
+            )?);
+        }
         let ground = scene::Ground {
             terrain: terrain.clone(),
             rut: system

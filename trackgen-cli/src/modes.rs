@@ -41,13 +41,15 @@ const DRAWN_AMPLITUDE: f64 = 0.08;
 
 /// The modes at `rest`: printed (the lowest that oscillate), written to
 /// `dir/modes.csv` (every one) and drawn in `dir/modes.svg`. Returns the
-/// files written.
+/// files written and the modes that move the hull (a tenth or more of the
+/// mode's kinetic energy in its bounce and pitch), as (frequency in Hz,
+/// name): what the seat's spectrum is named against.
 pub fn report<V: Vehicle>(
     system: &mut V::System,
     rest: &Equilibrium,
     dir: &Path,
     ground: &scene::Ground,
-) -> Result<Vec<String>, Box<dyn Error>> {
+) -> Result<(Vec<String>, HullModes), Box<dyn Error>> {
     let started = Instant::now();
     let modes = modes(system, rest.t, &rest.state).map_err(|e| format!("the modes: {e}"))?;
     let states = system.layout().dynamic().count();
@@ -112,12 +114,27 @@ pub fn report<V: Vehicle>(
         dir.join("modes.html"),
         animation::html(&frames, ground, &title),
     )?;
-    Ok(vec![
-        "modes.csv".to_string(),
-        "modes.svg".to_string(),
-        "modes.html".to_string(),
-    ])
+    let hull_modes = oscillating
+        .iter()
+        .filter(|m| m.share_of("hull bounce") + m.share_of("hull pitch") >= HULL_SHARE)
+        .map(|m| (m.frequency, m.name.clone()))
+        .collect();
+    Ok((
+        vec![
+            "modes.csv".to_string(),
+            "modes.svg".to_string(),
+            "modes.html".to_string(),
+        ],
+        hull_modes,
+    ))
 }
+
+/// Modes the seat feels: (frequency in Hz, name).
+pub type HullModes = Vec<(f64, String)>;
+
+/// The share of a mode's kinetic energy in the hull's bounce and pitch
+/// that makes it a mode the seat feels.
+const HULL_SHARE: f64 = 0.1;
 
 /// `hull pitch 56 %, track span (links 29–41) 28 %, …`
 fn shares(mode: &Mode, most: usize) -> String {

@@ -1,6 +1,10 @@
 //! The figures printed after a run, from running summaries: no row is
 //! kept for them.
 
+use std::error::Error;
+use std::path::Path;
+
+use trackgen::ride::Line;
 use trackgen::simulate::{EnergyBalance, RideSink, RunReport, Summary};
 
 use crate::console::say;
@@ -132,4 +136,94 @@ pub fn ride(ride: Option<&RideSink>, output_every: f64) {
         figures.wd_rms,
         figures.peak_g
     );
+}
+
+/// How many of the seat's lines are printed.
+const LINES: usize = 5;
+
+/// The seat's spectrum over the measured rows: the lines that carry the
+/// most absorbed power, named when they are the shoe passage's harmonics
+/// (`pitch`, m) or near one of `hull_modes` (Hz, name; from `--modes`),
+/// printed; every bin written to `dir/seat_spectrum.csv`. Returns the
+/// file written, if any.
+pub fn seat_spectrum(
+    ride: &RideSink,
+    pitch: Option<f64>,
+    hull_modes: &[(f64, String)],
+    dir: &Path,
+) -> Result<Option<String>, Box<dyn Error>> {
+    let Some(spectrum) = ride.spectrum() else {
+        if ride.figures().samples > 0 {
+            say!(
+                "seat spectrum: fewer than {} s measured, no spectrum",
+                RideSink::SPECTRUM_SEGMENT
+            );
+        }
+        return Ok(None);
+    };
+    let absorbed = spectrum.absorbed();
+    let total: f64 = absorbed.iter().sum();
+    let speed = ride.mean_speed().unwrap_or(f64::NAN);
+    let pitch = pitch.unwrap_or(f64::NAN);
+    let df = spectrum.df;
+    // A line's bin and one each side hold a tone (the Hann window); a
+    // harmonic is matched within that and the speed's spread over the
+    // measurement (0.5 %), a mode at rest within 5 % (it moves at speed).
+    let lines = spectrum.lines(&absorbed, LINES, 1);
+    let near = |line: &Line, spread: f64| 1.5 * df + spread * line.frequency;
+    say!(
+        "seat spectrum ({} segments, bins {:.3} Hz apart) at {:.2} m/s, shoe passage v/p {:.2} Hz: \
+         absorbed power {:.2} W; the lines that carry most:",
+        spectrum.segments,
+        df,
+        speed,
+        speed / pitch,
+        total
+    );
+    for line in &lines {
+        let name = line
+            .name(speed, pitch, &[], near(line, 0.01))
+            .or_else(|| line.name(f64::NAN, pitch, hull_modes, near(line, 0.05)))
+            .unwrap_or_else(|| {
+                if hull_modes.is_empty() {
+                    "not the shoe passage (--modes names the hull's modes)".to_string()
+                } else {
+                    "not the shoe passage nor a hull mode at rest".to_string()
+                }
+            });
+        say!(
+            "  {:7.2} Hz  {:6.3} W ({:4.1} %)  {name}",
+            line.frequency,
+            line.carried,
+            100.0 * line.carried / total
+        );
+    }
+    let harmonics: f64 = absorbed
+        .iter()
+        .enumerate()
+        .filter(|&(k, _)| {
+            let line = Line {
+                frequency: spectrum.frequency(k),
+                carried: 0.0,
+            };
+            line.shoe_harmonic(speed, pitch, near(&line, 0.005))
+                .is_some()
+        })
+        .map(|(_, w)| w)
+        .sum();
+    say!(
+        "  the bins on the shoe passage's harmonics (v/2p, v/p to 12 v/p) carry {:.1} % of it",
+        100.0 * harmonics / total
+    );
+    let mut csv = csv::Writer::from_path(dir.join("seat_spectrum.csv"))?;
+    csv.write_record(["frequency_hz", "seat_az_psd", "absorbed_power_w"])?;
+    for (k, (psd, w)) in spectrum.psd.iter().zip(&absorbed).enumerate() {
+        csv.write_record([
+            format!("{}", spectrum.frequency(k)),
+            format!("{psd}"),
+            format!("{w}"),
+        ])?;
+    }
+    csv.flush()?;
+    Ok(Some("seat_spectrum.csv".to_string()))
 }

@@ -11,7 +11,10 @@
 //!   acceleration in m/s²;
 //! - [`PeakVertical`]: peak of the vertical acceleration after a 4-pole
 //!   30 Hz Butterworth low-pass, in g; the half-round obstacle limit is
-//!   2.5 g.
+//!   2.5 g;
+//! - [`Welch`]: the acceleration's spectrum, and [`Spectrum::absorbed`]
+//!   the absorbed power each frequency carries, with the lines that carry
+//!   most ([`Spectrum::lines`]) named when they are the shoe passage's.
 //!
 //! Each is built from continuous second-order sections ([`Section`]),
 //! discretised one by one by the bilinear transform with prewarping into
@@ -61,11 +64,13 @@
 
 mod biquad;
 mod criteria;
+mod spectrum;
 #[cfg(test)]
 mod tests;
 
 pub use biquad::{Biquad, Cascade, Section};
 pub use criteria::{AbsorbedPower, IsoWeighting, PeakVertical};
+pub use spectrum::{Line, Spectrum, SpectrumError, Welch};
 
 /// Feet per metre (exact: 1 ft = 0.3048 m), the conversion applied inside
 /// [`AbsorbedPower`] (Chrono's `meter_to_ft = 3.280839895`).

@@ -412,3 +412,152 @@ fn constant_memory() {
     assert!(ap.power().is_finite() && wk.rms().is_finite() && wd.rms().is_finite());
     assert!(p.peak_g().is_finite() && p.peak_g() > 0.0);
 }
+
+/// A deterministic pseudo-random phase in `[0, 2π)` (SplitMix64).
+fn phase(i: u64) -> f64 {
+    let mut z = i
+        .wrapping_add(0x9E37_79B9_7F4A_7C15)
+        .wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 31;
+    2.0 * PI * (z >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// A tone on a bin's frequency puts its mean square, `A²/2`, into that
+/// bin and one each side (the Hann window's main lobe), exactly: Welch's
+/// density is scaled so that `Σ S Δf` is the mean square.
+#[test]
+fn a_tone_on_a_bin_carries_its_mean_square() {
+    let segment = 4096;
+    let mut welch = Welch::new(DT, segment).unwrap();
+    let df = 1.0 / (segment as f64 * DT);
+    let (amplitude, bin) = (1.7, 123);
+    let f = bin as f64 * df;
+    for i in 0..(segment * 6) {
+        welch.push(amplitude * (2.0 * PI * f * i as f64 * DT + 0.3).sin());
+    }
+    let s = welch.spectrum().unwrap();
+    assert_eq!(s.segments, 11);
+    let expected = amplitude * amplitude / 2.0;
+    let total = s.mean_square();
+    let lobe: f64 = s.psd[bin - 1..=bin + 1].iter().sum::<f64>() * s.df;
+    println!("tone: mean square {total:.12}, main lobe {lobe:.12}, A²/2 {expected}");
+    // Rounding only: the window's cross terms vanish on a bin.
+    assert!((total / expected - 1.0).abs() < 1e-9);
+    assert!((lobe / expected - 1.0).abs() < 1e-9);
+    let lines = s.lines(&s.psd.iter().map(|p| p * s.df).collect::<Vec<_>>(), 3, 1);
+    assert_eq!(lines[0].frequency, f);
+    assert!((lines[0].carried / expected - 1.0).abs() < 1e-9);
+}
+
+/// A tone between bins leaks: the Hann window's first sidelobes are
+/// −31 dB, so two bins either side hold all but a part in a thousand of
+/// it, and the total is still its mean square (to the window's ripple
+/// over a non-integer number of cycles, 1e-3).
+#[test]
+fn a_tone_between_bins_stays_within_two_bins() {
+    let segment = 2048;
+    let mut welch = Welch::new(DT, segment).unwrap();
+    let df = 1.0 / (segment as f64 * DT);
+    let f = 40.5 * df;
+    for i in 0..(segment * 20) {
+        welch.push((2.0 * PI * f * i as f64 * DT).cos());
+    }
+    let s = welch.spectrum().unwrap();
+    let total = s.mean_square();
+    let near: f64 = s.psd[38..=43].iter().sum::<f64>() * s.df;
+    println!("off-bin tone: mean square {total:.6}, within two bins {near:.6}");
+    assert!((total / 0.5 - 1.0).abs() < 1e-3);
+    assert!(near / total > 0.999);
+}
+
+/// The absorbed power summed over the spectrum equals the time-domain
+/// filter's mean square over the same samples: a course-like signal (200
+/// tones from 0.5 to 60 Hz with random phases, 400 s at 1 ms). The two
+/// routes differ by the bilinear filter's discretisation (1.3e-3 in `|H|`
+/// below 20 Hz, `ride`'s docs: 2.6e-3 in `|H|²`), the Hann window's
+/// leakage, and the filter's start and the segments' edges over a finite
+/// record: 3e-3 against the filter; against the tones' closed form
+/// `Σ |H|² A²/2`, leakage and the record alone, 1e-3.
+#[test]
+fn the_spectrum_sums_to_the_absorbed_power() {
+    let segment = Welch::segment_for(DT, 8.0);
+    assert_eq!(segment, 8192);
+    let mut welch = Welch::new(DT, segment).unwrap();
+    let mut filter = AbsorbedPower::new(DT);
+    let tones: Vec<(f64, f64, f64)> = (0..200u64)
+        .map(|i| {
+            let f = 0.5 + 59.5 * (i as f64 + 0.5) / 200.0;
+            (f, 2.0 / (1.0 + f / 5.0), phase(i))
+        })
+        .collect();
+    let n = 400_000;
+    for i in 0..n {
+        let t = i as f64 * DT;
+        let a: f64 = tones
+            .iter()
+            .map(|(f, amp, ph)| amp * (2.0 * PI * f * t + ph).sin())
+            .sum();
+        if i == 10_000 {
+            filter.start_measuring();
+        }
+        filter.push(a);
+        welch.push(a);
+    }
+    let s = welch.spectrum().unwrap();
+    let spectral: f64 = s.absorbed().iter().sum();
+    let direct = filter.power();
+    let closed: f64 = tones
+        .iter()
+        .map(|(f, amp, _)| {
+            let h = filter.response_continuous(*f);
+            h * h * (amp * FT_PER_M).powi(2) / 2.0
+        })
+        .sum();
+    println!(
+        "absorbed power: spectrum {spectral:.5} W, filter {direct:.5} W, closed form {closed:.5} W"
+    );
+    assert!((spectral / direct - 1.0).abs() < 3e-3);
+    assert!((spectral / closed - 1.0).abs() < 1e-3);
+}
+
+/// Lines on the shoe passage's harmonics are named so; others are not,
+/// unless a mode is near.
+#[test]
+fn lines_are_named_by_the_shoe_passage() {
+    let (speed, pitch) = (5.0, 0.154);
+    let passage = speed / pitch;
+    let line = |f| Line {
+        frequency: f,
+        carried: 1.0,
+    };
+    assert_eq!(
+        line(2.0 * passage + 0.05).shoe_harmonic(speed, pitch, 0.1),
+        Some(2.0)
+    );
+    assert_eq!(
+        line(0.5 * passage).shoe_harmonic(speed, pitch, 0.1),
+        Some(0.5)
+    );
+    assert_eq!(line(0.7 * passage).shoe_harmonic(speed, pitch, 0.1), None);
+    let modes = [(3.2, "hull bounce".to_string())];
+    assert_eq!(
+        line(3.25).name(speed, pitch, &modes, 0.1).as_deref(),
+        Some("hull bounce (3.20 Hz at rest)")
+    );
+    assert_eq!(line(4.0).name(speed, pitch, &modes, 0.1), None);
+}
+
+#[test]
+fn a_bad_segment_or_interval_is_refused() {
+    assert_eq!(
+        Welch::new(DT, 1000).unwrap_err(),
+        SpectrumError::Segment(1000)
+    );
+    assert_eq!(Welch::new(DT, 8).unwrap_err(), SpectrumError::Segment(8));
+    assert!(matches!(
+        Welch::new(0.0, 1024),
+        Err(SpectrumError::Interval(_))
+    ));
+    assert!(Welch::new(DT, 1024).unwrap().spectrum().is_none());
+}

@@ -2,7 +2,7 @@
 //! through the criteria of [`ride`](crate::ride), in O(1) memory.
 
 use super::{Sink, SinkError};
-use crate::ride::{AbsorbedPower, IsoWeighting, PeakVertical};
+use crate::ride::{AbsorbedPower, IsoWeighting, PeakVertical, Spectrum, Welch};
 
 /// The most the rows' spacing may differ from the sink's `dt`, relative:
 /// output times are multiples of the interval computed in `f64`.
@@ -51,8 +51,9 @@ struct Stretch {
 
 /// A sink that runs the seat's recorded acceleration through the ride
 /// criteria as the rows arrive: the vertical column (`seat_az` by
-/// default) through the absorbed power, `W_k` and the peak, the
-/// longitudinal one (`seat_ax`) through `W_d`. The filters run from the
+/// default) through the absorbed power, `W_k` and the peak and into its
+/// spectrum ([`spectrum`](Self::spectrum)), the longitudinal one
+/// (`seat_ax`) through `W_d`. The filters run from the
 /// first row, so their state has settled when the measurement starts at
 /// [`from`](Self::from) (a speed ramp, a run-in). The rows must be evenly
 /// spaced by the `dt` it was made for (the run's `Output::Every(dt)`): a
@@ -71,9 +72,19 @@ pub struct RideSink {
     wk: IsoWeighting,
     wd: IsoWeighting,
     peak: PeakVertical,
+    spectrum: Welch,
+    /// The column `x`, if the run has one, and the first and last
+    /// measured (t, x): the mean speed over the measurement.
+    x: Option<usize>,
+    travel: Option<[(f64, f64); 2]>,
 }
 
 impl RideSink {
+    /// The least span of a spectrum's segment, s: its bins are at most
+    /// 0.25 Hz apart, finer than a hull's pitch and bounce (1–4 Hz) are
+    /// wide.
+    pub const SPECTRUM_SEGMENT: f64 = 4.0;
+
     /// The largest row interval the criteria take, s: 2 ms, a Nyquist
     /// frequency of 250 Hz, well above the 100 Hz band limit of ISO
     /// 2631-1's weightings (the filters are exact to a part in a thousand
@@ -113,6 +124,10 @@ impl RideSink {
             wk: IsoWeighting::wk(dt),
             wd: IsoWeighting::wd(dt),
             peak: PeakVertical::new(dt),
+            spectrum: Welch::new(dt, Welch::segment_for(dt, Self::SPECTRUM_SEGMENT))
+                .expect("a positive interval and a power-of-two segment"),
+            x: None,
+            travel: None,
         })
     }
 
@@ -141,6 +156,22 @@ impl RideSink {
     /// stretch's end ([`over_stretch`](Self::over_stretch)).
     pub fn ended(&self) -> bool {
         self.ended
+    }
+
+    /// The spectrum of the vertical acceleration over the rows measured
+    /// so far (Welch's, segments of at least
+    /// [`SPECTRUM_SEGMENT`](Self::SPECTRUM_SEGMENT)); `None` until one
+    /// segment has been measured. [`Spectrum::absorbed`] splits the
+    /// absorbed power by frequency.
+    pub fn spectrum(&self) -> Option<Spectrum> {
+        self.spectrum.spectrum()
+    }
+
+    /// The mean forward speed over the rows measured so far, m/s, from
+    /// the column `x`; `None` without it or before two rows.
+    pub fn mean_speed(&self) -> Option<f64> {
+        let [(t0, x0), (t1, x1)] = self.travel?;
+        (t1 > t0).then(|| (x1 - x0) / (t1 - t0))
     }
 
     /// The figures over the rows measured so far (NaN, and no samples,
@@ -173,6 +204,7 @@ impl Sink for RideSink {
             })
         };
         self.at = Some([find(&self.columns[0])?, find(&self.columns[1])?]);
+        self.x = columns.iter().position(|c| c == "x");
         if let Some(stretch) = &mut self.stretch {
             stretch.column = Some(find("x")?);
         }
@@ -227,6 +259,15 @@ impl Sink for RideSink {
             self.peak.start_measuring();
         }
         self.absorbed.push(az);
+        // The spectrum has no filter state to settle: the measured rows
+        // only.
+        if self.measuring {
+            self.spectrum.push(az);
+            if let Some(x) = self.x.and_then(|c| values.get(c)).copied() {
+                let first = self.travel.map_or((t, x), |[first, _]| first);
+                self.travel = Some([first, (t, x)]);
+            }
+        }
         self.wk.push(az);
         self.wd.push(ax);
         self.peak.push(az);
