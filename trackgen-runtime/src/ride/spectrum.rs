@@ -51,7 +51,12 @@ pub enum SpectrumError {
 }
 
 /// Welch's averaged, Hann-windowed periodogram of a uniformly sampled
-/// signal, streamed (see the [module docs](self)).
+/// signal, streamed (P. D. Welch, *IEEE Trans. Audio Electroacoust.*
+/// 15(2), 1967): segments of `N` samples overlapping by half, each less
+/// its mean, times `w_n = sin²(πn/N)`; the one-sided density
+/// `S_k = c_k |X_k|² / (f_s Σw_n²)` (`c_k = 2` but at `k = 0` and `N/2`),
+/// averaged, so that `Σ S_k Δf` is the windowed samples' mean square. A
+/// segment is transformed when it fills: one segment's memory.
 #[derive(Clone)]
 pub struct Welch {
     dt: f64,
