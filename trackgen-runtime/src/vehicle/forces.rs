@@ -314,9 +314,8 @@ pub(super) fn respond<const DC: usize>(
         books.engine = match (&config.powertrain, own) {
             // Driving: the torque pushes the way the driver asks, at `ω`
             // signed the torque's way (negative: forced back).
-            (Some(powertrain), Some(own)) if books.engine_load > 0.0 => {
-                powertrain.engine_side_near(&own, omega * torque.signum(), torque.abs())
-            }
+            (Some(powertrain), Some(own)) if books.engine_load > 0.0 => powertrain
+                .engine_side_near(own.gear, own.point, omega * torque.signum(), torque.abs()),
             // Braking: the engine gives nothing, the gearbox stays in its
             // range.
             (Some(_), own) => EngineSide {

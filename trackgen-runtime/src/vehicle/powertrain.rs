@@ -199,20 +199,20 @@ impl Powertrain {
     /// engine speed; for both the engine's power is booked at the
     /// sprocket, `τ ω`.
     pub fn engine_side(&self, gear: Option<usize>, speed: f64, torque: f64) -> EngineSide {
-        let cap = Cap {
-            torque: f64::NAN,
-            slope: f64::NAN,
-            gear,
-            point: None,
-        };
-        self.engine_side_near(&cap, speed, torque)
+        self.engine_side_near(gear, None, speed, torque)
     }
 
-    /// [`engine_side`](Self::engine_side) in the gear of `cap`, the cap at
-    /// `|speed|`: a converter's full-load point there starts the part-load
-    /// solve while the sprocket turns the torque's way.
-    pub(super) fn engine_side_near(&self, cap: &Cap, speed: f64, torque: f64) -> EngineSide {
-        let gear = cap.gear;
+    /// [`engine_side`](Self::engine_side) with a converter's full-load
+    /// point in `gear` at `|speed|` (`full`, as the cap found it), which
+    /// starts the part-load solve while the sprocket turns the torque's
+    /// way.
+    pub(super) fn engine_side_near(
+        &self,
+        gear: Option<usize>,
+        full: Option<OperatingPoint>,
+        speed: f64,
+        torque: f64,
+    ) -> EngineSide {
         let at_sprocket = EngineSide {
             gear,
             engine_speed: 0.0,
@@ -243,7 +243,7 @@ impl Powertrain {
             (Powertrain::Converter(driveline), Some(range)) => {
                 let n = driveline.reduction(range);
                 let tt = torque / (driveline.fraction() * n);
-                let point = match cap.point {
+                let point = match full {
                     Some(full) if speed >= 0.0 => {
                         driveline.part_load_near(range, n * speed, tt, Some(full))
                     }
