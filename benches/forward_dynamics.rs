@@ -1,5 +1,5 @@
 //! Closed-track forward dynamics, side by side at n = 16, 32, 64, 128:
-//! the generated linear-time route (spec §5, each track's own code:
+//! the generated linear-time route (formulation §5, each track's own code:
 //! `TrackModel::linear_time_dynamics`), the generic linear-time solver
 //! (the same algorithm over a run-time description: the baseline), and the
 //! dense multiplier form on the generated `M_i`.

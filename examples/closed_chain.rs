@@ -1,6 +1,6 @@
 //! Releases a closed chain of 32 M113 shoes in zero gravity, spinning and
 //! flexing, and integrates it by generalised coordinate partitioning with
-//! switching (spec §2). Prints the switches of the dependent pair, the
+//! switching (formulation §2). Prints the switches of the dependent pair, the
 //! energy and momentum drift and the closure error; writes the time series
 //! (CSV) and two plots (SVG) to `out/closed_chain/`.
 //!

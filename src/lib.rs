@@ -4,8 +4,8 @@
 //! vehicle (or a free track) with [`model!`]; the macro generates
 //! specialised, unrolled code for its dynamics in the recursive coordinates
 //! of Shin, Choi & Yi, *Dynamic Analysis of Multibody Tracked Vehicles (I)*
-//! (the mathematics, corrected, is `shared/spec/recursive-formulation.md`;
-//! the guide's chapter "The formulation" says it in the project's words).
+//! (the mathematics, corrected, is the guide's chapter "The formulation",
+//! whose sections the code cites as "formulation §n").
 //! The runtime's modules, re-exported here, evaluate, integrate and
 //! analyse it.
 //!

@@ -300,11 +300,7 @@ pub const STALL_CAPACITY: f64 = 8.832_330_266_045_645;
 /// one's torque at stall.
 pub fn powertrain() -> trackgen::vehicle::Powertrain {
     use trackgen::vehicle::Vehicle;
-    match M113::powertrain() {
-        Some(declared) => declared,
-        // The declaration has one: this arm is never taken.
-        None => chrono_simple_map(),
-    }
+    M113::powertrain().unwrap_or_else(|| unreachable!("the M113's declaration has a powertrain"))
 }
 
 /// The real M113A3's published mobility figures that the pitch-plane

@@ -1,8 +1,9 @@
 //! The second vehicle: a planar Marder, **one side** (the left track set,
 //! 77 shoes).
 //!
-//! Figures from `shared/spec/marder.md` (Project Chrono's open Marder
-//! model), converted as its notes say: Chrono's x forward and z up are our
+//! Figures from Project Chrono's open Marder model (a secondary source:
+//! its `Marder_*` files under `src/chrono_models/vehicle/marder/`),
+//! converted so: Chrono's x forward and z up are our
 //! x and y, angles change sign (a counter-clockwise planar angle is a
 //! negative rotation about Chrono's +y), and the planar inertia of every
 //! body is Chrono's `Iyy`. The planar model carries one track and the
@@ -29,7 +30,7 @@
 //! gives, (+0.200, +0.0325) m from the wheel). Contact laws are the M113's
 //! (no Marder-specific figures exist); the drive's torque limit is the
 //! simple engine's in its one gear, `2400 / 0.1708 / 2 ≈ 7026` N m per
-//! sprocket (the spec's example).
+//! sprocket.
 //!
 //! Everything that makes it run is declared with it; as a
 //! [`Vehicle`](crate::vehicle::Vehicle), `Marder::system(terrain, drive)` assembles
@@ -71,7 +72,7 @@ pub const SHOCK_DAMPING: f64 = 17_771.53;
 /// = 0.161082 / 0.401168.
 pub const SHOCK_LEVER: f64 = 0.401_532_2;
 /// Track width, m, for soft soil: the shoe's ground pad, 0.40 m
-/// (`shared/spec/marder.md`; 0.48 m over the side pads).
+/// (Chrono's `Marder_TrackShoeSinglePin`; 0.48 m over the side pads).
 pub const TRACK_WIDTH: f64 = 0.40;
 /// Length of the idler's tensioner arm, m (see the module docs).
 pub const TENSIONER_ARM: f64 = 0.2;
@@ -178,8 +179,7 @@ crate::model! {
 pub const DRIVELINE_EFFICIENCY: f64 = super::m113::DRIVELINE_EFFICIENCY;
 
 /// The Marder's engine and driveline as one side's sprocket sees them
-/// (`shared/spec/marder.md`, "Powertrain, driveline, brakes", from
-/// Chrono's `Marder_EngineSimpleMap.cpp` and
+/// (Chrono's `Marder_EngineSimpleMap.cpp` and
 /// `Marder_AutomaticTransmissionSimpleMap.cpp`): the MTU MB 833's
 /// full-load torque map (700 N m at 702 rpm, 2702 at 1499, 2154 at 2323,
 /// cut off to −1000 N m at 2450 rpm), the six forward gears 0.1708 to

@@ -1,4 +1,4 @@
-//! Integrating closed chains (spec §2): conservation, switching of the
+//! Integrating closed chains (formulation §2): conservation, switching of the
 //! dependent pair, the three closure methods against one another. Each
 //! test's tolerances are justified at the test. Largest and smallest values
 //! over a run are taken with `support::max_of` / `min_of` / `max_abs`, which

@@ -1,6 +1,6 @@
 //! The derivatives of the forward dynamics against Pinocchio 4.1.0
-//! (tests/data/pinocchio_derivatives.json, a copy of
-//! shared/reference/derivatives.json; see its README there): `∂q̈/∂q` and
+//! (tests/data/pinocchio_derivatives.json; tests/data/README.md says how
+//! it was computed): `∂q̈/∂q` and
 //! `∂q̈/∂q̇` of the four reference chains at their states, under gravity.
 //!
 //! Tolerances (norm-wise relative, `support::assert_close`):

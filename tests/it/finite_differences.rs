@@ -3,7 +3,7 @@
 //!
 //! * `H` is the Jacobian of the positions (eq. (6));
 //! * `γ = Ḣ q̇_i` (eq. (14)): the derivative of `H(q) q̇_i` along `q̇_i`;
-//! * `C_q` is the Jacobian of `C`, and `γ_c = −(d/dt C_q) q̇_i` (spec §2);
+//! * `C_q` is the Jacobian of `C`, and `γ_c = −(d/dt C_q) q̇_i` (formulation §2);
 //! * at rest, `Q_i = −∂V/∂q_i` for the conservative forces (gravity and the
 //!   penalty spring).
 //!

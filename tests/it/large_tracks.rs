@@ -8,7 +8,7 @@
 //! runs) keep this test's build to seconds; 1000 links are measured by
 //! `tools/compile-time-stress.sh large 1000`.
 //!
-//! The multiplier form is compared with the linear-time solver (spec §5),
+//! The multiplier form is compared with the linear-time solver (formulation §5),
 //! the open route with the reference route on the same chain without its
 //! loop joint: the same equations solved two ways, to 1e-9 relative,
 //! norm-wise. The dense elimination's rounding grows with `M_i`'s condition

@@ -1,4 +1,4 @@
-//! The linear-time forward dynamics (spec §5) against the dense route
+//! The linear-time forward dynamics (formulation §5) against the dense route
 //! (`M_i q̈_i = Q_i` and the multiplier form), at random states of random
 //! heterogeneous chains, open, closed and penalty-closed, n = 3 … 64; and
 //! against Pinocchio's accelerations.
@@ -12,7 +12,7 @@
 //!
 //! Against Pinocchio (4 stored states of `closed-10`, written with 17
 //! significant digits): 1e-12, two independent double-precision codes of
-//! a 12-coordinate system (spec §5 states 1e-13); measured 2.3e-14.
+//! a 12-coordinate system (formulation §5 states 1e-13); measured 2.3e-14.
 //!
 //! The generated route (`TrackModel::linear_time_dynamics`, each model's
 //! own code) is held to the same 1e-10 against the dense route and the
@@ -211,7 +211,7 @@ fn agrees_with_pinocchio() {
     }
 }
 
-/// On the closure manifold, the partitioned equations of spec §2 (dense,
+/// On the closure manifold, the partitioned equations of formulation §2 (dense,
 /// `(Bᵀ M_i B) z̈ = Bᵀ(Q_i − M_i β)`) have the linear-time solution, for
 /// any choice of the dependent pair.
 #[test]

@@ -48,6 +48,7 @@ mod shift;
 mod shifted_chain;
 mod soft_ground;
 mod soil_laws;
+mod stands_alone;
 mod stiction;
 mod terrain;
 mod track_speed;

@@ -5,7 +5,7 @@
 //! * `½ q̇_iᵀ M_i q̇_i` is the kinetic energy summed from the absolute
 //!   velocities (generated `kinetic_energy`, eq. (6) velocities);
 //! * closed-chain accelerations satisfy the closure's acceleration equation
-//!   `C_q q̈_i = γ_c` (spec §2).
+//!   `C_q q̈_i = γ_c` (formulation §2).
 //!
 //! Tolerances: symmetry is exact by construction (checked bit for bit);
 //! the energy identity 1e-12 relative (two O(n)-term sums of the same

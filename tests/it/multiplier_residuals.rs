@@ -3,13 +3,13 @@
 //! (`solve_closed`) with the generated route, so comparing the two re-tests
 //! `M_i` and `Q_i` only; these tests check the solves of both
 //! `dynamics::forward_dynamics` (dense, range-space) and
-//! `dynamics::LinearTimeSolver` (spec §5, in absolute coordinates), and λ
+//! `dynamics::LinearTimeSolver` (formulation §5, in absolute coordinates), and λ
 //! on its own. Chains: PinocchioClosed4, Hetero4Partitioned,
 //! PinocchioClosed10, Hetero64Partitioned (tests/support/chains.rs) and the
 //! M113's 64 identical shoes; at random states off the closure manifold
 //! (the equations hold at any state) and on it, with and without loads.
 //!
-//! 1. **Residuals of spec §2's multiplier form**,
+//! 1. **Residuals of formulation §2's multiplier form**,
 //!    `M_i q̈_i + C_qᵀ λ − Q_i` and `C_q q̈_i − γ_c`, with `M_i`, `Q_i` from
 //!    the model's `equations_of_motion`, `C_q` from `closure_jacobian`, `γ_c`
 //!    from `closure_gamma`. Each is measured against the size of its
@@ -34,7 +34,7 @@
 //!    generalised load `C_qᵀ F` (`C = P_n − P_1`). The joint cancels it, so
 //!    the chain falls freely (`R̈ = g`, `θ̈ = 0`, which satisfies
 //!    `M_i q̈_i = Q_i(gravity)` and `C_q q̈_i = 0 = γ_c`) and, by uniqueness,
-//!    `λ = F`: its value and its sign (spec §2: λ is minus the force the
+//!    `λ = F`: its value and its sign (formulation §2: λ is minus the force the
 //!    joint puts on link n, and that force is `−F`). `|F|` from 10 to
 //!    1000 N in any direction, at any state. Tolerance 1e-10 relative to
 //!    `|F|` for λ and to `|g|` for q̈_i (a solve with `M_i`'s condition

@@ -1,5 +1,5 @@
 //! The generated recovery of generalised coordinate partitioning
-//! (`TrackModel::recover_closure`, spec §2): from a closed loop with every
+//! (`TrackModel::recover_closure`, formulation §2): from a closed loop with every
 //! coordinate moved by up to 1e-3 (more than a step of the vehicle moves
 //! the loop's gap), the dependent pair's angles close the loop
 //! and their rates keep it closed, checked with the generated closure and

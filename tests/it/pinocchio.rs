@@ -1,7 +1,7 @@
 //! The generated code against an independent rigid-body library: mass
 //! matrices and accelerations of four chains computed by Pinocchio 4.1.0
-//! (tests/data/pinocchio_chains.json, a copy of
-//! shared/reference/chains.json; see its README there).
+//! (tests/data/pinocchio_chains.json; tests/data/README.md says how it
+//! was computed).
 //!
 //! Tolerance 1e-12 relative (norm-wise, see `support::assert_close`): the
 //! reference quotes "about 1e-12", both sides are double precision and the

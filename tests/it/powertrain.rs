@@ -1,11 +1,11 @@
 //! The powertrain: what an engine gives at the sprocket, and the speed it
 //! holds up a grade.
 //!
-//! * The M113's envelope against the spec's figures: at rest its lowest
+//! * The M113's envelope against Chrono's figures: at rest its lowest
 //!   gear gives the map's 450 lb·ft through 0.240 × 0.5, times the
 //!   driveline's fraction (to 1e-12 relative: the same products in another
-//!   order); 395 lb·ft at 2800 rpm is the spec's 157 kW
-//!   (`shared/spec/mobility.md` §4), and the most power, the fraction of
+//!   order); 395 lb·ft at 2800 rpm is 157 kW
+//!   (Chrono's `M113_EngineSimpleMap.cpp`), and the most power, the fraction of
 //!   the map's largest `T ω` (past 2800 rpm: 162 kW at 3000), is a scan's
 //!   to 1e-9.
 //! * Below the speed of its map's peak torque the clutch slips: the
@@ -59,7 +59,7 @@ fn chrono_s_m113_envelope_is_its_engine_through_its_gears() {
         "{at_rest} vs {want}"
     );
     assert_eq!(slope, 0.0, "flat below the speed of the map's peak");
-    // The spec's figure: 395 lb·ft at 2800 rpm is 157 kW.
+    // 395 lb·ft at 2800 rpm is 157 kW.
     let rpm = std::f64::consts::PI / 30.0;
     let at_2800 = 395.0 * lb_ft * 2800.0 * rpm;
     assert!((at_2800 - 157e3).abs() < 0.5e3, "{at_2800} W");

@@ -1,9 +1,10 @@
 //! The terramechanics laws of soft soil (`trackgen::contact::soil`) against
-//! the closed forms and worked numbers of `shared/spec/soil.md`, and
+//! the closed forms of Wong's *Theory of Ground Vehicles* (the guide's
+//! "Soft soil"), worked numbers computed from them by hand, and
 //! against independent quadrature.
 //!
 //! Tolerances, and why:
-//! - Worked numbers of the spec ("Closed-form checks", dry sand, b = 0.4 m,
+//! - Worked numbers (dry sand, b = 0.4 m,
 //!   l = 4 m, W = 1.4e5 N, K = 2.5 cm): to the half unit of their last
 //!   printed digit (z₀ = 0.07414 m ± 5e-6, R_c = 1235.7 N ± 0.05, F ± 0.5 N).
 //! - Wong's tractive effort against Simpson quadrature of the
@@ -22,7 +23,7 @@ fn close(label: &str, got: f64, want: f64, abs: f64) {
     );
 }
 
-/// The spec's dry sand, in SI, with K = 0.025 m.
+/// Wong's dry sand (Table 2.3), in SI, with K = 0.025 m.
 fn dry_sand() -> Soil {
     let soil = SoilPreset::DrySand.soil();
     assert_eq!(

@@ -1,5 +1,5 @@
-//! Friction with stiction (`trackgen::laws::Stiction`) against the closed
-//! forms of `shared/spec/friction.md`: a block on an incline, a tangential
+//! Friction with stiction (`trackgen::laws::Stiction`) against closed
+//! forms (the guide's "Friction and stiction"): a block on an incline, a tangential
 //! load ramp, and the energy books along any motion.
 //!
 //! The block: mass `m` on one contact point of the law, normal load

@@ -1,4 +1,4 @@
-//! The chassis subsystem (spec §3) of a declared vehicle: generated code
+//! The chassis subsystem (formulation §3) of a declared vehicle: generated code
 //! against the reference route, against the paper's eq. (11) written out
 //! by hand, and the vehicle's generated items.
 //!

@@ -3,8 +3,9 @@
 //! overrides of `VehicleConfig`, each a number that could fail.
 //!
 //! Tolerances, and why:
-//! - **Declared = the spec's M113 figures** (`shared/spec/m113.md`, the
-//!   shoe, sprocket and track width written out here again): exact; any
+//! - **Declared = Chrono's M113 figures** (`M113_TrackShoeSinglePin`,
+//!   `M113_SprocketSinglePin`; the shoe, sprocket and track width written
+//!   out here again): exact; any
 //!   difference is a transcription error.
 //! - **Scaled profile** (`ToothProfile::scaled(10, 0.154)` against the
 //!   M113's 0.2605, 0.3 and 0.089 m): 2e-4 m. Its proportions are rounded

@@ -6,7 +6,7 @@
 //! Tolerances, and why:
 //! - **Weight**: the mean ground force over the last 0.5 s of a 5 s settle
 //!   equals the weight within 5e-4 (the issue asks 1 %; measured 1.1e-4).
-//!   The weight is summed here from `shared/spec/marder.md`'s part masses
+//!   The weight is summed here from Chrono's Marder part masses
 //!   (half hull, 77 shoes, sprocket, six road wheels and arms, three
 //!   rollers, idler and its carrier), not read from the model. A part left
 //!   out of the model or counted twice moves it by ≥ 7e-4 (a roller; the
@@ -20,7 +20,7 @@
 //!   (`EnergyBalance::bound_for_tolerance(1e-4)`; measured ~1e-4); the
 //!   issue asks 2 %. Dissipation never decreases (exactly).
 //! - **Speed**: the track's mean speed `−ω N p / (2π)` (one pitch per
-//!   tooth, computed here from the recorded sprocket speed and the spec's
+//!   tooth, computed here from the recorded sprocket speed and Chrono's
 //!   pitch and teeth) is the recorded `track_speed` (to 1e-12 relative)
 //!   and over the last 4 s (two of the chassis' surges on the track)
 //!   within 1 % of the 3 m/s command (measured 0.29 %; a drive aiming
@@ -64,7 +64,7 @@ fn run(drive: Drive, duration: f64) -> Results {
     .expect("the run completes")
 }
 
-/// The weight of one side, N, from the spec's part masses.
+/// The weight of one side, N, from Chrono's part masses.
 fn weight() -> f64 {
     let hull = 25_000.0 / 2.0;
     let shoes = 77.0 * 18.02;
@@ -120,7 +120,7 @@ fn marder_drives_to_speed_with_closed_books() {
         -books.least_dissipation_step
     );
     // The track's mean speed: one pitch per tooth, from the recorded
-    // sprocket speed, the spec's pitch and the teeth.
+    // sprocket speed, Chrono's pitch and the teeth.
     let rolling = 12.0 * 0.17 / (2.0 * std::f64::consts::PI);
     let (t0, t1) = (5.0, 9.0);
     let omega = window(&results, "sprocket_speed", t0, t1);

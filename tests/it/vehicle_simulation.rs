@@ -1,5 +1,5 @@
 //! A declared vehicle in motion: its chassis and track integrated together
-//! as two subsystems (spec §3: no contact yet, so they do not interact),
+//! as two subsystems (formulation §3: no contact yet, so they do not interact),
 //! driven by a sprocket torque.
 
 use crate::support;

@@ -1,5 +1,5 @@
 //! Soft soil under a track, checked against the textbook's closed forms
-//! (`shared/spec/soil.md`, "Closed-form checks"): the static sinkage of a
+//! (Wong, *Theory of Ground Vehicles*; the guide's "Soft soil"): the static sinkage of a
 //! vehicle at rest, the tractive effort of a track under uniform pressure
 //! against slip, a second pass over the rut, and the energy books.
 //!
@@ -17,7 +17,7 @@
 //!   overshoot (at Chrono's `R` = 3e4 the mean sinkage is 1.22 `z₀`).
 //! - **Tractive effort**: a straight track of M113-pitch shoes laid at the
 //!   front and lifted at the rear of a 4 m contact, under the uniform
-//!   pressure of 1.4e5 N on 0.4 × 4 m (the spec's worked example), slipping
+//!   pressure of 1.4e5 N on 0.4 × 4 m (the soil tests' worked example), slipping
 //!   at `i` = 5 … 50 % at a track speed of 4 m/s, its shear displacements
 //!   integrated as the vehicle does (`j̇` = slip speed while loaded, reset
 //!   when lifted), the rut pressed after each step. Its horizontal force

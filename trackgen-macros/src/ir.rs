@@ -32,7 +32,7 @@ pub enum ItemKind {
     Vehicle(Box<Vehicle>),
 }
 
-/// A chain of links, possibly closed (spec §1, §2).
+/// A chain of links, possibly closed (formulation §1, §2).
 pub struct Track {
     pub links: Vec<Link>,
     pub closure: Closure,
@@ -43,7 +43,7 @@ pub struct Track {
 }
 
 /// A body of a tree in recursive coordinates: the track's chain and the
-/// chassis are both lowered to these (spec §1, §3). Body `b` hangs from its
+/// chassis are both lowered to these (formulation §1, §3). Body `b` hangs from its
 /// parent by a revolute joint: `Rᵇ = Rᵖ + Aᵖ at_parent − Aᵇ at_self`.
 #[derive(Clone)]
 pub struct TreeBody {
@@ -58,7 +58,7 @@ pub struct TreeBody {
     pub at_self: Vec2,
 }
 
-/// One track link (spec §1).
+/// One track link (formulation §1).
 #[derive(Clone)]
 pub struct Link {
     pub mass: Num,

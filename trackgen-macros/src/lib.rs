@@ -5,8 +5,8 @@
 //! dynamics in recursive coordinates: positions (eq. (4)), the velocity
 //! transform as the structured product `H̄₁ H̄ₙ` (eq. (7)), the quadratic
 //! velocity terms `γ` (eq. (14)), the mass matrix `M_i` from the closed
-//! forms of spec §1, `Q_i` in O(n), the loop closure (spec §2) and the
-//! chassis tree (spec §3). Every constant is folded at compile time.
+//! forms of formulation §1, `Q_i` in O(n), the loop closure (formulation §2) and the
+//! chassis tree (formulation §3). Every constant is folded at compile time.
 //!
 //! The pipeline follows serde_derive: `parse` turns tokens into a syntax
 //! tree that keeps every span, `lower` validates it into an IR and

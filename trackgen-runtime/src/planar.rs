@@ -1,4 +1,4 @@
-//! Planar geometry (spec §0): the rotation `A(θ)`, kept as its
+//! Planar geometry (formulation §0): the rotation `A(θ)`, kept as its
 //! `(sin θ, cos θ)` so that every body's trigonometry is computed once per
 //! evaluation (as nalgebra's `UnitComplex` keeps `(cos, sin)`), and the
 //! planar cross product and quarter turn. The one owner of them: every
@@ -71,7 +71,7 @@ pub fn rotate_derivative(theta: f64, v: Vector2<f64>) -> Vector2<f64> {
     Rotation::new(theta).derivative(v)
 }
 
-/// The planar cross product `a × b = a.x b.y − a.y b.x` (spec §0): the
+/// The planar cross product `a × b = a.x b.y − a.y b.x` (formulation §0): the
 /// moment of force `b` at arm `a`, the sine of the angle between unit
 /// vectors.
 #[inline]

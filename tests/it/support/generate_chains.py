@@ -2,9 +2,8 @@
 """Writes tests/support/chains.rs: the test chains as `trackgen::model!`
 declarations.
 
-* `Pinocchio*`: the four chains of tests/data/pinocchio_chains.json (a copy
-  of shared/reference/chains.json, computed by Pinocchio 4.1.0), link by
-  link; the tests check the declared values against the JSON too.
+* `Pinocchio*`: the four chains of tests/data/pinocchio_chains.json
+  (computed by Pinocchio 4.1.0; tests/data/README.md), link by link; the tests check the declared values against the JSON too.
 * `Hetero*`: heterogeneous chains with random links (seed fixed below), for
   the generated-versus-reference property tests.
 

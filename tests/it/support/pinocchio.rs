@@ -1,5 +1,5 @@
 //! Reading the reference data computed with Pinocchio
-//! (`tests/data/pinocchio_*.json`, copies of `../shared/reference/`).
+//! (`tests/data/pinocchio_*.json`; `tests/data/README.md`).
 
 use serde_json::Value;
 

@@ -1,4 +1,4 @@
-//! `RecursiveModel::tree_dynamics` of a body tree (the chassis, spec §3):
+//! `RecursiveModel::tree_dynamics` of a body tree (the chassis, formulation §3):
 //! forward dynamics in O(n), generated and unrolled.
 //!
 //! Spec §5's route with the joint forces eliminated from the leaves: the

@@ -1,4 +1,4 @@
-//! A vehicle: its chassis (spec §3) as a tree of the frame and the parts
+//! A vehicle: its chassis (formulation §3) as a tree of the frame and the parts
 //! pinned to it, and its track.
 
 use proc_macro2::{Ident, TokenStream};

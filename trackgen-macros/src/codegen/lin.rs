@@ -184,7 +184,7 @@ impl Trig {
         }
     }
 
-    /// `A(θ) v` (spec §0).
+    /// `A(θ) v` (formulation §0).
     pub fn rotate(&self, v: &Vec2) -> LinVec {
         let (s, c) = (&self.s, &self.c);
         LinVec {
@@ -193,7 +193,7 @@ impl Trig {
         }
     }
 
-    /// `A_θ(θ) v = dA/dθ v` (spec §0).
+    /// `A_θ(θ) v = dA/dθ v` (formulation §0).
     pub fn rotate_derivative(&self, v: &Vec2) -> LinVec {
         let (s, c) = (&self.s, &self.c);
         LinVec {

@@ -1,5 +1,5 @@
 //! `TrackModel::linear_time_dynamics`: the track's forward dynamics in
-//! O(n) by spec §5, generated.
+//! O(n) by formulation §5, generated.
 //!
 //! Unknowns are each link's absolute accelerations and each joint's force
 //! `λ`; with `D⁺ⱼ = [A_θʲ ū2ʲ | I]`, `D⁻ₖ = [A_θᵏ ū1ᵏ | I]` and

@@ -1,4 +1,4 @@
-//! The closure under generalised coordinate partitioning (spec §2, the
+//! The closure under generalised coordinate partitioning (formulation §2, the
 //! paper's eqs. (17)-(21)), generated: `TrackModel::recover_closure` and
 //! `TrackModel::closure_columns`.
 //!

@@ -1,5 +1,5 @@
-//! A track: `RecursiveModel` of the chain (spec §1) plus `TrackModel`, the
-//! loop closure (spec §2).
+//! A track: `RecursiveModel` of the chain (formulation §1) plus `TrackModel`, the
+//! loop closure (formulation §2).
 
 use proc_macro2::{Ident, TokenStream};
 use quote::{format_ident, quote};
@@ -132,7 +132,7 @@ fn penalty_energy(track: &Track, tree: &Tree) -> Option<TokenStream> {
     })
 }
 
-/// `C = Σ Aʲ d̄ʲ` (spec §2).
+/// `C = Σ Aʲ d̄ʲ` (formulation §2).
 fn gap(tree: &Tree, track: &Track) -> LinVec {
     spans(track)
         .iter()

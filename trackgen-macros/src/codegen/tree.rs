@@ -1,10 +1,10 @@
 //! `RecursiveModel` for a tree of bodies in recursive coordinates: one
-//! generator for the track (a chain, spec §1) and the chassis (a frame with
-//! pinned parts, spec §3).
+//! generator for the track (a chain, formulation §1) and the chassis (a frame with
+//! pinned parts, formulation §3).
 //!
 //! Body `b` hangs from its parent `p` by a revolute joint:
 //! `Rᵇ = Rᵖ + Aᵖ ū_p − Aᵇ ū_b`. Writing `w_{p→b} = ū_p − ū_{p's own joint}`
-//! (the spec's `c_j`: `ū2¹`, then `d̄ʲ`), every closed form of spec §1
+//! (formulation §1's `c_j`: `ū2¹`, then `d̄ʲ`), every closed form of formulation §1
 //! generalises from a chain to a tree with subtree sums in place of the
 //! suffix sums `S_k`:
 //!
@@ -16,7 +16,7 @@
 //! Q_θb    = Σ_c (A_θᵇ w_{b→c}) · Φ^c − (A_θᵇ ū_b) · F̃ᵇ + Tᵇ,  Φ = subtree sum of F̃
 //! ```
 //!
-//! For a chain these are exactly spec §1's `M_Rθj = S_{j+1} b_j − m_j a_j`,
+//! For a chain these are exactly formulation §1's `M_Rθj = S_{j+1} b_j − m_j a_j`,
 //! `M_θjθk = S_{k+1} b_j·b_k − m_k b_j·a_k` and `Q_θj`.
 
 use proc_macro2::{Ident, TokenStream};
@@ -253,7 +253,7 @@ impl Tree {
         self.trig(b).rotate_derivative(&self.bodies[b].at_self)
     }
 
-    /// The local naming `A_θᵇ w_{b→c}` (`b_j` of spec §1).
+    /// The local naming `A_θᵇ w_{b→c}` (`b_j` of formulation §1).
     fn lever_names(&self, b: usize, c: usize) -> (Ident, Ident) {
         if self.children[b].len() == 1 {
             pair("b", &self.bodies[b].tag)
@@ -446,7 +446,7 @@ impl Tree {
         out
     }
 
-    /// `Q_i += C_qᵀ F`, `F = −k C − c Ċ` (spec §2, secondary joint).
+    /// `Q_i += C_qᵀ F`, `F = −k C − c Ċ` (formulation §2, secondary joint).
     fn penalty_forces(&self, penalty: &Penalty) -> TokenStream {
         let mut out = TokenStream::new();
         let mut gap = LinVec::zero();

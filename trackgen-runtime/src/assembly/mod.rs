@@ -1,6 +1,6 @@
 //! Initial assembly of a track: wrap the links around the sprocket, idler,
 //! road wheels and return rollers so that the loop closes at t = 0
-//! (spec §4).
+//! (formulation §4).
 //!
 //! The belt path runs counter-clockwise round the wheels'
 //! pitch circles: arcs on the wheels it touches, straight spans on the

@@ -1,4 +1,4 @@
-//! Closing the track loop (spec §2): three methods.
+//! Closing the track loop (formulation §2): three methods.
 //!
 //! * **Generalised coordinate partitioning** ([`partitioning`], the
 //!   default): two angles are dependent; only the other `n` coordinates are
@@ -6,7 +6,7 @@
 //!   Newton-Raphson and from `C_q q̇ = 0`. The pair is switched whenever its
 //!   block `C_d` degrades (paper eq. (21)), and every switch is recorded.
 //! * **Multipliers** ([`multipliers`]): all `n + 2` coordinates are
-//!   integrated with the multiplier form of spec §2, with Baumgarte
+//!   integrated with the multiplier form of formulation §2, with Baumgarte
 //!   stabilisation and a projection onto `C = 0`, `C_q q̇ = 0` after each
 //!   step.
 //! * **Penalty** ([`PenaltyJoint`], paper Fig. 5): the closing joint is cut and
@@ -83,7 +83,7 @@ pub enum ClosureMethod {
 }
 
 /// Why the loop's dependent coordinates could not be recovered at a step
-/// (generalised coordinate partitioning, spec §2; the multipliers'
+/// (generalised coordinate partitioning, formulation §2; the multipliers'
 /// projection). Every variant carries the simulation time `t` (s).
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum RecoveryError {

@@ -1,4 +1,4 @@
-//! The multiplier form of spec §2 as an integration method: all `n + 2`
+//! The multiplier form of formulation §2 as an integration method: all `n + 2`
 //! coordinates integrated, the closure kept by Baumgarte stabilisation
 //! during a step and by projection after it.
 

@@ -1,5 +1,5 @@
 //! Generalised coordinate partitioning with switching of the dependent
-//! pair (spec §2; Wehage & Haug; the paper's eqs. (18)-(21)).
+//! pair (formulation §2; Wehage & Haug; the paper's eqs. (18)-(21)).
 
 #[cfg(feature = "oracle")]
 use nalgebra::{DMatrix, DVector, Matrix2};
@@ -8,7 +8,7 @@ use nalgebra::{SMatrix, SVector, Vector2};
 use super::{ClosureError, RecoveryError};
 use crate::multibody::TrackModel;
 
-/// A change of the dependent coordinates of a partitioned track (spec §2).
+/// A change of the dependent coordinates of a partitioned track (formulation §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Switch {
     /// Time, s.
@@ -114,7 +114,7 @@ fn block<const D: usize>(cq: &SMatrix<f64, 2, D>, pair: [usize; 2]) -> Matrix2<f
 
 /// The accelerations of the dense partitioned equations
 /// `(Bᵀ M_i B) z̈ = Bᵀ (Q_i − M_i β)`, `q̈_i = B z̈ + β`, with
-/// `B = [I ; −C_d⁻¹ C_z]` and `β = [0 ; C_d⁻¹ γ_c]` (spec §2), for the
+/// `B = [I ; −C_d⁻¹ C_z]` and `β = [0 ; C_d⁻¹ γ_c]` (formulation §2), for the
 /// dependent links `pair` (0-based). `None` if a matrix is singular.
 ///
 /// O(n³): the cross-check of the simulation, which takes `z̈` from the

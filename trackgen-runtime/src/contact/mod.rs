@@ -1,5 +1,5 @@
 //! Contact between the track and the world (paper part II, which we design
-//! here; spec §4), in two stages:
+//! here; formulation §4), in two stages:
 //!
 //! 1. **Detection** ([`ground`], [`wheel`], [`sprocket`]): from the bodies'
 //!    states, every [`Contact`] — which link and which other body, the
@@ -16,7 +16,7 @@
 //! against the sprocket's teeth; and the terramechanics laws of soft soil
 //! ([`soil`]). Forces come from positions and velocities only, as
 //! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
-//! decoupled everywhere else (spec §3).
+//! decoupled everywhere else (formulation §3).
 
 pub mod course;
 mod detect;

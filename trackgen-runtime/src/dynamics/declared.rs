@@ -9,7 +9,7 @@ use crate::multibody::{BodyLoad, ClosingJoint, Closure, TrackModel};
 
 /// Forward dynamics of `model` as declared (a constrained loop, an open
 /// chain, or its declared penalty joint), by the generated linear-time
-/// route (spec §5): the same accelerations as
+/// route (formulation §5): the same accelerations as
 /// [`dense_forward_dynamics`](super::dense_forward_dynamics) in O(n), with the closing
 /// joint's `λ` for a constrained loop (minus the force it puts on link n,
 /// as the multiplier form's).

@@ -1,6 +1,6 @@
 //! The 2 × 2 block steps of the twisted elimination that every generated
 //! [`linear_time_dynamics`](crate::multibody::TrackModel::linear_time_dynamics) is made
-//! of (spec §5): the joint-force system is eliminated from both ends of the
+//! of (formulation §5): the joint-force system is eliminated from both ends of the
 //! chain at once, each end a [`Sweep`], and solved back outward by
 //! [`back`]. `CLOSED` carries the closing joint's two columns along
 //! (bordering, for a constrained loop).
@@ -17,7 +17,7 @@ use std::cell::RefCell;
 
 use crate::multibody::DynamicsError;
 
-/// One link's terms of the joint-force system (spec §5), written by every
+/// One link's terms of the joint-force system (formulation §5), written by every
 /// solve before it reads them: the levers `p1 = A_θ ū1`, `p2 = A_θ ū2`,
 /// the moment on the link, the blocks `A2 = p2 p2ᵀ/J + I/m` and
 /// `A1 = p1 p1ᵀ/J + I/m` (symmetric), the coupling

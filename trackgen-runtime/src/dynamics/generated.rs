@@ -37,7 +37,7 @@ pub fn dense_open_dynamics<M: RecursiveModel<D>, const D: usize>(
 }
 
 /// Forward dynamics of a track as declared: a loop closed by a constraint
-/// takes the multiplier form of spec §2 (and returns `λ`); an open or
+/// takes the multiplier form of formulation §2 (and returns `λ`); an open or
 /// penalty-closed chain solves `M_i q̈_i = Q_i`.
 ///
 /// As for [`dense_open_dynamics`], `M_i` is on the stack for small tracks and on

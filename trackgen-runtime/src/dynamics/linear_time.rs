@@ -1,4 +1,4 @@
-//! Linear-time forward dynamics of a track (spec §5): each link's absolute
+//! Linear-time forward dynamics of a track (formulation §5): each link's absolute
 //! accelerations and the joint forces `λ` as unknowns. The joint forces
 //! solve a block-tridiagonal system with 2 × 2 blocks (cyclic for a closed
 //! loop, handled by bordering), so the cost is O(n) instead of the dense
@@ -130,7 +130,7 @@ impl LinearTimeSolver {
         let constrained = self.closure.is_constrained();
         let (qdd, multipliers) =
             self.accelerations(q, qd, loads, constrained, Vector2::zeros(), penalty)?;
-        // λ of spec §2 is minus the force the closing joint puts on link n.
+        // λ of formulation §2 is minus the force the closing joint puts on link n.
         Ok(super::Accelerations {
             qdd,
             multipliers: multipliers.map(|f| -f),
@@ -142,7 +142,7 @@ impl LinearTimeSolver {
     /// loop gets `C_q q̈ = γ_c − stabilisation` (Baumgarte: `2ω Ċ + ω² C`;
     /// zero for the plain equations); a cut one may carry a penalty
     /// spring's force (on link n at ū2ⁿ, reversed on link 1 at ū1¹).
-    /// When constrained, also returns the closing joint's `λ` of spec §5:
+    /// When constrained, also returns the closing joint's `λ` of formulation §5:
     /// the force it puts on link n (link 1 gets the opposite).
     pub fn accelerations<const D: usize>(
         &mut self,

@@ -1,6 +1,6 @@
 //! Forward dynamics at a given state: `q̈_i` from `(q_i, q̇_i)`.
 //!
-//! Both routes end in the same dense solves (spec §2): an open (or
+//! Both routes end in the same dense solves (formulation §2): an open (or
 //! penalty-closed) chain solves `M_i q̈_i = Q_i` by Cholesky; a loop closed by
 //! a constraint solves the multiplier form
 //!

@@ -1,4 +1,4 @@
-//! A closed track's linear-time equations (spec §5) with each link's mass
+//! A closed track's linear-time equations (formulation §5) with each link's mass
 //! replaced by a general 3 × 3 block: the linear systems of a linearly
 //! implicit integrator, in O(n).
 //!
@@ -8,7 +8,7 @@
 //! (`a = γ h`). In the links' absolute coordinates `M` is block-diagonal and
 //! a contact with the ground touches one link only, so the matrix is
 //! block-diagonal too, one block `Xᵢ` per link; the revolute joints keep
-//! the links together, their forces `λ` the unknowns of spec §5:
+//! the links together, their forces `λ` the unknowns of formulation §5:
 //!
 //! ```text
 //! Xᵢ xᵢ = fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁,        D⁺ⱼ xⱼ − D⁻ₖ xₖ = 0
@@ -17,7 +17,7 @@
 //! with `xᵢ = (x, y, θ)` increments (the order of a
 //! [`BodyLoad`](crate::multibody::BodyLoad)'s force and moment), `D⁺ⱼ = [I₂ | A_θʲ ū2ʲ]`,
 //! `D⁻ₖ = [I₂ | A_θᵏ ū1ᵏ]`. With `Wᵢ = Xᵢ⁻¹` the joint forces solve the
-//! cyclic block-tridiagonal system of spec §5, no longer symmetric
+//! cyclic block-tridiagonal system of formulation §5, no longer symmetric
 //! (`C` and `K` of friction are not):
 //!
 //! ```text
@@ -31,7 +31,7 @@
 //! then solved for as many right sides as asked, each O(n). The solution
 //! `x` satisfies the loop's velocity constraint, `C_q x = 0`: in recursive
 //! coordinates it is `B z` for the independent increments `z` of
-//! partitioning (spec §2), and the projected system `Bᵀ Hᵀ X H B z = Bᵀ Hᵀ f`
+//! partitioning (formulation §2), and the projected system `Bᵀ Hᵀ X H B z = Bᵀ Hᵀ f`
 //! is what this solves.
 //!
 //! The joints' rows may also carry the linearised velocity constraint of a

@@ -9,7 +9,7 @@ use super::{ParameterError, Response};
 
 /// A spring-damper between the two points of the cut closing joint,
 /// `P_n = Rⁿ + Aⁿ ū2ⁿ` on link n and `P_1 = R¹ + A¹ ū1¹` on link 1.
-/// Their gap is the closure `C = P_n − P_1` (spec §2) and its rate
+/// Their gap is the closure `C = P_n − P_1` (formulation §2) and its rate
 /// `Ċ = C_q q̇`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PenaltyJoint {

@@ -1,4 +1,5 @@
-//! Obstacles (`shared/spec/mobility.md` §1, §3): the speed over a
+//! Obstacles (the NRMM's obstacle events; the guide's "Mobility
+//! events"): the speed over a
 //! half-round at which the seat's peak vertical acceleration reaches the
 //! limit (2.5 g), and the largest step, gap, ditch and barrier crossed
 //! from a crawl at full power.

@@ -1,4 +1,5 @@
-//! Random-terrain ride (`shared/spec/mobility.md` §1–2): the absorbed
+//! Random-terrain ride (the NATO Reference Mobility Model's event; the
+//! guide's "Mobility events"): the absorbed
 //! power and ISO 2631-1 weighted accelerations at the driver's seat over
 //! a random course of given roughness, and the ride-limiting speed, where
 //! the absorbed power reaches the limit (6 W, the NRMM's criterion).

@@ -1,4 +1,4 @@
-//! The closing joint as the linear-time route (spec §5) sees it.
+//! The closing joint as the linear-time route (formulation §5) sees it.
 
 use nalgebra::Vector2;
 

@@ -3,7 +3,7 @@ use nalgebra::{DMatrix, Vector2};
 use crate::laws::{PenaltyJoint, TorsionSpring};
 use crate::planar::{Rotation, perp};
 
-/// How a track loop is closed (spec §2).
+/// How a track loop is closed (formulation §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Closure {
     /// A plain open chain: link `n` and link 1 are not joined.
@@ -17,7 +17,7 @@ pub enum Closure {
 }
 
 impl Closure {
-    /// Whether the loop carries the two constraint rows of spec §2.
+    /// Whether the loop carries the two constraint rows of formulation §2.
     pub fn is_constrained(self) -> bool {
         matches!(self, Closure::Partitioned)
     }
@@ -46,7 +46,7 @@ pub struct BodyDescription {
 }
 
 /// The loop-closing joint of a track: it joins link `n` at `ū2ⁿ` to link 1
-/// at `ū1¹` (spec §2, eq. (17)).
+/// at `ū1¹` (formulation §2, eq. (17)).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct LoopJoint {
     /// How the joint is treated.
@@ -71,7 +71,7 @@ pub struct TreeDescription {
 }
 
 impl TreeDescription {
-    /// A chain of links `1..n` with joint points `ū1ⁱ`, `ū2ⁱ` (spec §1): link
+    /// A chain of links `1..n` with joint points `ū1ⁱ`, `ū2ⁱ` (formulation §1): link
     /// `i` hangs from link `i − 1` at `ū2^{i−1}` by its own `ū1ⁱ`.
     ///
     /// `links` holds `(m, J, ū1, ū2)` per link.
@@ -198,7 +198,7 @@ impl TreeDescription {
     }
 
     /// `d̄ʲ = ū2ʲ − ū1ʲ` of every link of a track, the vectors whose rotated
-    /// sum is the loop closure `C(q_i)` (spec §2). `None` for a tree that is
+    /// sum is the loop closure `C(q_i)` (formulation §2). `None` for a tree that is
     /// not a chain with a loop joint.
     pub fn link_spans(&self) -> Option<Vec<Vector2<f64>>> {
         Some(self.joints()?.into_iter().map(|(u1, u2)| u2 - u1).collect())

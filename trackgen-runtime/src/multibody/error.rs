@@ -17,7 +17,7 @@ pub enum DynamicsError {
     #[error("the closure constraints are singular (C_q M_i⁻¹ C_qᵀ not invertible)")]
     SingularClosure,
     /// A 2 × 2 block of the joint-force system of the linear-time route
-    /// (spec §5) is singular. The system is positive definite for finite
+    /// (formulation §5) is singular. The system is positive definite for finite
     /// states of an open chain; a closed loop's last block is singular when
     /// the loop is fully stretched (every link parallel).
     #[error(

@@ -35,7 +35,7 @@ impl BodyLoad {
 
     /// A force applied at a point of the body whose offset from the centroid,
     /// in the global frame, is `arm` (`A ū` for a body point `ū`). Adds the
-    /// moment `arm × F` (spec §0).
+    /// moment `arm × F` (formulation §0).
     #[inline]
     pub fn force_at(force: Vector2<f64>, arm: Vector2<f64>) -> Self {
         BodyLoad {

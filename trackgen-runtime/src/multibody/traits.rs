@@ -3,7 +3,7 @@ use nalgebra::{DMatrix, DVector, SMatrix, SVector, Vector2};
 use super::{BodyLoad, ChassisPart, ClosingJoint, Closure, TreeDescription};
 use crate::multibody::DynamicsError;
 
-/// A body tree in recursive coordinates, compiled to code (spec §1, §3).
+/// A body tree in recursive coordinates, compiled to code (formulation §1, §3).
 ///
 /// `DOF` is the number of recursive coordinates: the root's centroid `R`
 /// (2) plus the absolute angle of each of the [`BODIES`](Self::BODIES)
@@ -77,13 +77,13 @@ pub trait RecursiveModel<const DOF: usize> {
     );
 
     /// The mass matrix `M_i = Hᵀ M H` (eq. (15)), from the closed forms of
-    /// spec §1.
+    /// formulation §1.
     fn mass_matrix(&self, q: &SVector<f64, DOF>, out: &mut SMatrix<f64, DOF, DOF>);
 
     /// The generalised forces `Q_i = Hᵀ (Q − M γ)` (eq. (16)) of gravity,
     /// the given loads (one per body, or an empty slice for none) and, for a
     /// penalty-closed track, the secondary joint's spring-damper; O(n) by
-    /// running sums (spec §1).
+    /// running sums (formulation §1).
     fn generalized_forces(
         &self,
         q: &SVector<f64, DOF>,
@@ -108,7 +108,7 @@ pub trait RecursiveModel<const DOF: usize> {
     /// Forward dynamics of the tree without constraints, in O(n),
     /// generated: `q̈_i` from every body's `(sin θ, cos θ)` (`trig`, one per
     /// body), `q̇_i` and the loads besides gravity (one per body, or none).
-    /// A chassis eliminates its joint forces from the leaves (spec §5's
+    /// A chassis eliminates its joint forces from the leaves (formulation §5's
     /// route on a tree; `trackgen-macros/src/codegen/articulated.rs`); a
     /// track is its [`linear_time_dynamics`](TrackModel::linear_time_dynamics)
     /// with the closing joint cut (its declared penalty spring across the
@@ -166,7 +166,7 @@ pub trait RecursiveModel<const DOF: usize> {
 }
 
 /// A track: a chain of links with a loop-closing joint between link `n` and
-/// link 1 (spec §2).
+/// link 1 (formulation §2).
 pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
     /// How the loop is closed.
     const CLOSURE: Closure;
@@ -180,7 +180,7 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
     /// `γ_c = Σ Aʲ d̄ʲ ωʲ²`, so that `C_q q̈_i = γ_c`.
     fn closure_gamma(&self, q: &SVector<f64, DOF>, qd: &SVector<f64, DOF>) -> Vector2<f64>;
 
-    /// Generalised coordinate partitioning's recovery (spec §2, the
+    /// Generalised coordinate partitioning's recovery (formulation §2, the
     /// paper's eqs. (18)-(21)), generated with every span `d̄ʲ` folded: the
     /// angles of the dependent `pair` (0-based links) from `C = 0` by
     /// Newton-Raphson, starting from their values in `q`, the others
@@ -209,7 +209,7 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
     /// (eq. (21)) is measured on.
     fn closure_columns(&self, trig: &[(f64, f64)], out: &mut [Vector2<f64>]);
 
-    /// Forward dynamics in O(n) by spec §5, generated for this track: the
+    /// Forward dynamics in O(n) by formulation §5, generated for this track: the
     /// links' absolute accelerations and the joint forces `λ` as unknowns,
     /// the joint forces from a block-tridiagonal system (cyclic for a
     /// constrained loop, solved by bordering), with every per-link
@@ -240,7 +240,7 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
 }
 
 /// A chassis: a frame with named parts (sprocket, idler, road wheels,
-/// rollers) pinned to it (spec §3).
+/// rollers) pinned to it (formulation §3).
 pub trait ChassisModel<const DOF: usize>: RecursiveModel<DOF> {
     /// The parts, in declaration order.
     const PARTS: &'static [ChassisPart];

@@ -259,7 +259,7 @@ impl ReferenceModel {
 
     /// Forward dynamics `q̈_i` at a state: an open or penalty-closed chain
     /// solves `M_i q̈_i = Q_i`; a constrained loop solves the multiplier form
-    /// of spec §2 and also returns `λ`.
+    /// of formulation §2 and also returns `λ`.
     pub fn forward_dynamics(
         &self,
         q: &DVector<f64>,

@@ -6,7 +6,7 @@ use crate::integrate::OdeSystem;
 use crate::integrate::SimulationError;
 
 /// Two subsystems integrated together, their states side by side in one
-/// vector: the chassis and the track of a vehicle (spec §3: assembled
+/// vector: the chassis and the track of a vehicle (formulation §3: assembled
 /// separately, coupled only through the forces between them). Each
 /// subsystem works on its own part of the state, in place: nothing is
 /// copied per evaluation. Columns are prefixed with the subsystems' names.

@@ -282,7 +282,7 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     }
 
     /// `q̈_i` at the kept recovery ([`recover`](Self::recover)) under the
-    /// current method, by the generated linear-time route (spec §5). Under
+    /// current method, by the generated linear-time route (formulation §5). Under
     /// partitioning the state satisfies the closure, where the partitioned
     /// equations and the multiplier form have the same solution. Every
     /// joint's force is kept for [`tensions`](Self::tensions).

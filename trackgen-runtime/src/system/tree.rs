@@ -7,7 +7,7 @@ use crate::integrate::OdeSystem;
 use crate::integrate::SimulationError;
 use crate::multibody::{BodyLoad, ChassisModel, RecursiveModel};
 
-/// A body tree without constraints in motion: a chassis (spec §3), an open
+/// A body tree without constraints in motion: a chassis (formulation §3), an open
 /// chain, or a track closed by its declared penalty joint. The state is
 /// `y = [q_i, q̇_i]`; the accelerations come from the model's generated
 /// O(n) [`tree_dynamics`](RecursiveModel::tree_dynamics).

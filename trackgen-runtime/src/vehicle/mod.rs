@@ -1,4 +1,4 @@
-//! A vehicle in motion: track and chassis coupled by contact (spec §3-4),
+//! A vehicle in motion: track and chassis coupled by contact (formulation §3-4),
 //! sprung arms, a sprocket drive, on rigid ground or soft soil.
 //!
 //! * [`Vehicle`]: a declared vehicle as a type; [`build`] makes any of them

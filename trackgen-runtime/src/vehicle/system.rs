@@ -982,7 +982,7 @@ struct PointMotion {
 
 /// The frame's point `offset` (from its centroid, in its axes, m) at
 /// `(q_i, q̇_i)` with accelerations `qdd`: `p = R + A s̄` and, turned into
-/// the frame's axes by `Aᵀ`, `p̈ = R̈ + θ̈ ⟂(A s̄) − θ̇² A s̄` (spec §0: the
+/// the frame's axes by `Aᵀ`, `p̈ = R̈ + θ̈ ⟂(A s̄) − θ̇² A s̄` (formulation §0: the
 /// frame is the chassis' root body, `q_i = [R, θ, …]`).
 fn seat_motion<const DC: usize>(
     offset: [f64; 2],

@@ -9,8 +9,8 @@
 //!   the shortest representation that reads back to the same bits, and a
 //!   lookup that finds the same segment computes the same expression.
 //! * Half-round: every point of every facet (sampled at 101 points) within
-//!   [`HALF_ROUND_TOLERANCE`] = 0.1 mm inside the circle (the spec's
-//!   bound, the quantity the facet count is chosen for), and no point
+//!   [`HALF_ROUND_TOLERANCE`] = 0.1 mm inside the circle (the bound
+//!   asked, the quantity the facet count is chosen for), and no point
 //!   outside it by more than `1e-12 r` (the vertices are on the circle up
 //!   to `sin_cos`'s one ulp and a rounding or two of `r sin`, `r cos`:
 //!   ~1e-16 r; a vertex off the circle by a wrong formula is off by

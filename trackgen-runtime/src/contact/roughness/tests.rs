@@ -24,7 +24,7 @@
 //!   closed form is exact over a whole period; 10 km of a 13.1 km period
 //!   with wavelengths ≤ 20 m differs from it by cross terms of relative
 //!   size ~ (longest wavelength / length) ≈ 0.2 %.
-//! * Detrended RMS of a course by target: 5 % (the spec's bound); it is
+//! * Detrended RMS of a course by target: 5 % (the bound asked of a course); it is
 //!   scaled to the target, so it meets it to rounding (~1e-16).
 //! * Detrended RMS of a class course against the closed form
 //!   `Σ G_d(n_i) Δn (1 − H(n_i))²`, `H` the moving average's response

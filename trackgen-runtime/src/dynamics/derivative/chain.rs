@@ -1,8 +1,8 @@
-//! The derivative of a track's linear-time forward dynamics (spec §5):
+//! The derivative of a track's linear-time forward dynamics (formulation §5):
 //! the equations factored once at a state, then solved for as many
 //! directions as asked, each in O(n).
 //!
-//! The unknowns of spec §5 are every link's absolute accelerations
+//! The unknowns of formulation §5 are every link's absolute accelerations
 //! `aᵢ = (θ̈ⁱ, ẍⁱ, ÿⁱ)` and every joint's force `λⱼ`:
 //!
 //! ```text

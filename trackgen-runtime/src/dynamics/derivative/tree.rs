@@ -1,5 +1,5 @@
 //! The derivative of a body tree's forward dynamics in recursive
-//! coordinates, densely (spec §1-3): for a chassis (a handful of bodies),
+//! coordinates, densely (formulation §1-3): for a chassis (a handful of bodies),
 //! and as the independent route the linear-time derivative of a track is
 //! tested against.
 //!
@@ -18,7 +18,7 @@
 //! `Rᵇ = Rᵖ + Aᵖ ūₚ − Aᵇ ūᵇ`, so `∂²R/∂θⱼ∂θₖ` vanishes for `j ≠ k` and
 //! `δHᵀ r` is diagonal in the angles: `sₖ δθₖ`, with `sₖ = Σ_b rᵇ·∂²Rᵇ/∂θₖ²`
 //! worked out once. A track closed by a constraint adds the multiplier
-//! form (spec §2): `[M_i C_qᵀ; C_q 0]`, right sides
+//! form (formulation §2): `[M_i C_qᵀ; C_q 0]`, right sides
 //! `−δC_qᵀ λ` and `δγ_c − δC_q q̈_i`.
 
 use nalgebra::{DMatrix, DVector, Vector2};

@@ -58,7 +58,7 @@ pub trait Sink {
     /// The end of the run: writes out whatever is buffered.
     fn finish(&mut self) -> Result<(), SinkError>;
 
-    /// A re-partitioning of a track (spec §2), as it happens. Sinks of
+    /// A re-partitioning of a track (formulation §2), as it happens. Sinks of
     /// rows ignore it; [`Results`](crate::simulate::Results) keeps every
     /// one.
     fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
