@@ -40,6 +40,7 @@ mod pinocchio;
 mod powertrain;
 mod private_paths;
 mod pure_evaluation;
+mod readme_figures;
 mod ride_chain;
 mod rosenbrock_w;
 mod run_settings_properties;
