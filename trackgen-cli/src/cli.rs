@@ -355,3 +355,67 @@ fn folder(s: &str) -> Result<PathBuf, String> {
         Ok(PathBuf::from(s))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    use super::Args;
+
+    /// The guide's table of the main job's options
+    /// (`book/src/simulating.md`, "Options"): (option, values, default).
+    fn guide_table() -> Vec<(String, String, String)> {
+        let page = include_str!("../../book/src/simulating.md");
+        let start = page
+            .find("### Options")
+            .expect("the guide has an Options section");
+        page[start..]
+            .lines()
+            .skip_while(|l| !l.starts_with("| option"))
+            .skip(2)
+            .take_while(|l| l.starts_with('|'))
+            .map(|line| {
+                let cells: Vec<&str> = line
+                    .split(" | ")
+                    .map(|c| c.trim_matches(['|', ' ']))
+                    .collect();
+                let option = cells[0].trim_matches('`').to_string();
+                (option, cells[1].to_string(), cells[2].to_string())
+            })
+            .collect()
+    }
+
+    /// Every option of the main job is in the guide's table, every row of
+    /// the table is an option, and where the option has a default the
+    /// table's default starts with it (as `--help` prints it).
+    #[test]
+    fn the_guide_lists_every_option_with_its_default() {
+        let table = guide_table();
+        let command = Args::command();
+        let options: Vec<_> = command
+            .get_arguments()
+            .filter_map(|a| a.get_long().map(|long| (format!("--{long}"), a)))
+            .filter(|(long, _)| long != "--help" && long != "--version")
+            .collect();
+        for (long, arg) in &options {
+            let row = table.iter().find(|(option, _, _)| option == long);
+            let Some((_, _, default)) = row else {
+                panic!("`{long}` is not in the guide's table of options");
+            };
+            if let Some(value) = arg.get_default_values().first() {
+                let value = value.to_string_lossy();
+                let shown = default.trim_matches('`');
+                assert!(
+                    shown.starts_with(value.as_ref()),
+                    "`{long}`: the guide's default `{default}`, --help's `{value}`"
+                );
+            }
+        }
+        for (option, _, _) in &table {
+            assert!(
+                options.iter().any(|(long, _)| long == option),
+                "the guide's table lists `{option}`, which the main job does not take"
+            );
+        }
+    }
+}
