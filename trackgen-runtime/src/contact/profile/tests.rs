@@ -21,7 +21,9 @@
 //! * Grade end height: exact (`z + slope · length`, one product and one
 //!   sum, is what the builder computes).
 
+use super::course::half_round_facets;
 use super::*;
+use std::io;
 
 use proptest::prelude::*;
 use std::path::PathBuf;
