@@ -484,4 +484,14 @@ impl Sink for Probe {
     fn finish(&mut self) -> Result<(), SinkError> {
         Ok(())
     }
+
+    /// The hull's `x` and `pitch`, and what its ride reads.
+    fn reads(&self) -> Option<Vec<usize>> {
+        let [x, pitch] = self.columns?;
+        let mut read = vec![x, pitch];
+        if let Some(ride) = &self.ride {
+            read.extend(ride.reads()?);
+        }
+        Some(read)
+    }
 }

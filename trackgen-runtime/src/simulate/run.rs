@@ -106,9 +106,23 @@ fn run(
 ) -> Result<(), RunError> {
     let width = columns.len();
     let mut row = Vec::with_capacity(width);
+    // The columns the sink reads, if not every one: the system may leave
+    // the rest unobserved.
+    let wanted: Option<Vec<bool>> = sink.reads().map(|read| {
+        let mut wanted = vec![false; width];
+        for i in read {
+            if let Some(w) = wanted.get_mut(i) {
+                *w = true;
+            }
+        }
+        wanted
+    });
     let mut record = |system: &mut dyn Simulated, t: f64, y: &DVector<f64>, sink: &mut dyn Sink| {
         row.clear();
-        system.observe(t, y.as_slice(), &mut row)?;
+        match &wanted {
+            Some(wanted) => system.observe_some(t, y.as_slice(), wanted, &mut row)?,
+            None => system.observe(t, y.as_slice(), &mut row)?,
+        }
         if row.len() != width {
             return Err(RunError::Simulation(SimulationError::RecordWidth {
                 t,
@@ -118,7 +132,8 @@ fn run(
         }
         // Every system's results hold numbers only; the state is finite
         // here (checked after each step), so a NaN is the observation's.
-        if let Some(i) = row.iter().position(|v| !v.is_finite()) {
+        let read = |i: &usize| wanted.as_ref().is_none_or(|w| w[*i]);
+        if let Some(i) = (0..width).filter(read).find(|&i| !row[i].is_finite()) {
             return Err(RunError::Simulation(SimulationError::NonFiniteRecord {
                 t,
                 column: columns[i].clone(),

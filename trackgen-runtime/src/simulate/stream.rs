@@ -176,6 +176,10 @@ impl Sink for Counted<'_> {
         self.inner.finish()
     }
 
+    fn reads(&self) -> Option<Vec<usize>> {
+        self.inner.reads()
+    }
+
     fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
         self.inner.switch(switch)?;
         self.switches += 1;

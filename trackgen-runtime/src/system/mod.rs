@@ -54,6 +54,22 @@ pub trait Simulated: OdeSystem {
     /// [`columns`](Self::columns).
     fn observe(&mut self, t: f64, y: &[f64], row: &mut Vec<f64>) -> Result<(), SimulationError>;
 
+    /// As [`observe`](Self::observe) for a run whose sinks read only the
+    /// columns `wanted[i]` (one flag per [`columns`](Self::columns)): the
+    /// others may be left NaN, and a system may skip computing them. The
+    /// columns it does give are bit for bit what `observe` gives. The
+    /// default observes every column.
+    fn observe_some(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        wanted: &[bool],
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
+        let _ = wanted;
+        self.observe(t, y, row)
+    }
+
     /// Called after every accepted step; may change the coordinates of the
     /// state (re-partitioning, projection), telling `switched` of every
     /// re-partitioning. Returns whether it changed the state, so the

@@ -21,6 +21,12 @@ macro_rules! record {
             /// The column names, in order: the fields' names.
             pub const COLUMNS: &'static [&'static str] = &[$(stringify!($field)),*];
 
+            /// Every value NaN: not observed. A lean observation fills in
+            /// the fields that were asked for.
+            pub const fn unobserved() -> Self {
+                $name { $( $field: f64::NAN, )* }
+            }
+
             /// Appends the values to `row`, in the order of
             /// [`COLUMNS`](Self::COLUMNS).
             #[inline]

@@ -875,13 +875,8 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let (bodies, [_, work, dissipated, engine_work], _) = self.split(y);
         self.bodies.observe(t, bodies, row)?;
         let (qc, qdc) = self.evaluate(t, y)?;
-        let (track, chassis) = self.bodies.parts_mut();
-        track.accelerations(t)?;
-        // The chassis' accelerations at the state (for the seat's).
-        let yc = &y[self.layout.chassis.start..self.layout.chassis_rates.end];
-        let rates = &mut self.work.chassis_rates;
-        chassis.derivative_with_trig(t, yc, &self.work.part_trig, rates)?;
-        let seat = seat_motion::<DC>(C::SEAT, &qc, &qdc, &rates[DC..]);
+        self.bodies.parts_mut().0.accelerations(t)?;
+        let seat = self.seat(t, y, &qc, &qdc)?;
         let Workspace {
             links,
             parts,
@@ -956,6 +951,44 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         Ok(())
     }
 
+    /// Lean when the sinks read only the hull's position, pitch and speed
+    /// and the seat's motion (`x`, `y`, `pitch`, `speed`, `seat_x`, `seat_y`,
+    /// `seat_ax`, `seat_az`): the forces and the
+    /// chassis' accelerations alone, as [`observe`](Self::observe)
+    /// computes them (the same bits), and no track accelerations, link
+    /// kinematics, tensions or energies; the rest of the row NaN.
+    fn observe_some(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        wanted: &[bool],
+        row: &mut Vec<f64>,
+    ) -> Result<(), SimulationError> {
+        let offset = wanted.len().saturating_sub(VehicleRecord::COLUMNS.len());
+        let lean = wanted.iter().enumerate().all(|(i, &read)| {
+            !read || (i >= offset && LEAN_COLUMNS.contains(&VehicleRecord::COLUMNS[i - offset]))
+        });
+        if !lean {
+            return self.observe(t, y, row);
+        }
+        row.resize(row.len() + offset, f64::NAN);
+        let (qc, qdc) = self.evaluate(t, y)?;
+        let seat = self.seat(t, y, &qc, &qdc)?;
+        VehicleRecord {
+            x: qc[0],
+            y: qc[1],
+            pitch: qc[2],
+            speed: qdc[0],
+            seat_x: seat.position.x,
+            seat_y: seat.position.y,
+            seat_ax: seat.acceleration.x,
+            seat_az: seat.acceleration.y,
+            ..VehicleRecord::unobserved()
+        }
+        .extend_row(row);
+        Ok(())
+    }
+
     fn after_step(
         &mut self,
         t: f64,
@@ -968,6 +1001,35 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         restart |= self.apply_brake(t, y);
         restart |= self.shift_gears(t, y);
         Ok(restart)
+    }
+}
+
+/// The columns of a [`VehicleRecord`] a lean observation
+/// ([`Simulated::observe_some`]) gives: the hull's and the seat's.
+const LEAN_COLUMNS: [&str; 8] = [
+    "x", "y", "pitch", "speed", "seat_x", "seat_y", "seat_ax", "seat_az",
+];
+
+impl<T, const DT: usize, C, const DC: usize> VehicleSystem<T, DT, C, DC>
+where
+    T: TrackModel<DT>,
+    C: ChassisModel<DC>,
+{
+    /// The seat's motion at `(t, y)` after [`evaluate`](Self::evaluate)
+    /// gave the chassis' `(q, q̇)`: the chassis' accelerations from the
+    /// loads the evaluation left on it.
+    fn seat(
+        &mut self,
+        t: f64,
+        y: &[f64],
+        qc: &SVector<f64, DC>,
+        qdc: &SVector<f64, DC>,
+    ) -> Result<PointMotion, SimulationError> {
+        let chassis = self.bodies.parts_mut().1;
+        let yc = &y[self.layout.chassis.start..self.layout.chassis_rates.end];
+        let rates = &mut self.work.chassis_rates;
+        chassis.derivative_with_trig(t, yc, &self.work.part_trig, rates)?;
+        Ok(seat_motion::<DC>(C::SEAT, qc, qdc, &rates[DC..]))
     }
 }
 

@@ -58,6 +58,15 @@ pub trait Sink {
     /// The end of the run: writes out whatever is buffered.
     fn finish(&mut self) -> Result<(), SinkError>;
 
+    /// The columns this sink reads, as indices into the names `begin`
+    /// gave it, once `begin` has run; `None`, the default, reads every
+    /// one. A run whose sink reads only some may leave the others
+    /// unobserved (NaN in the row): a system need not compute what no one
+    /// reads ([`Simulated::observe_some`](crate::system::Simulated::observe_some)).
+    fn reads(&self) -> Option<Vec<usize>> {
+        None
+    }
+
     /// A re-partitioning of a track (formulation §2), as it happens. Sinks of
     /// rows ignore it; [`Results`](crate::simulate::Results) keeps every
     /// one.
@@ -80,6 +89,10 @@ impl<S: Sink + ?Sized> Sink for &mut S {
         (**self).finish()
     }
 
+    fn reads(&self) -> Option<Vec<usize>> {
+        (**self).reads()
+    }
+
     fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {
         (**self).switch(switch)
     }
@@ -96,6 +109,10 @@ impl<S: Sink + ?Sized> Sink for Box<S> {
 
     fn finish(&mut self) -> Result<(), SinkError> {
         (**self).finish()
+    }
+
+    fn reads(&self) -> Option<Vec<usize>> {
+        (**self).reads()
     }
 
     fn switch(&mut self, switch: &Switch) -> Result<(), SinkError> {

@@ -277,4 +277,16 @@ impl Sink for RideSink {
     fn finish(&mut self) -> Result<(), SinkError> {
         Ok(())
     }
+
+    /// The seat's two columns and, where the run has it, `x`.
+    fn reads(&self) -> Option<Vec<usize>> {
+        let [vertical, longitudinal] = self.at?;
+        let stretch = self.stretch.and_then(|s| s.column);
+        Some(
+            [Some(vertical), Some(longitudinal), self.x, stretch]
+                .into_iter()
+                .flatten()
+                .collect(),
+        )
+    }
 }

@@ -62,6 +62,17 @@ impl Sink for Tee<'_> {
         self.sinks.iter_mut().try_for_each(|s| s.switch(switch))
     }
 
+    /// What any of its sinks reads; every column if one reads every one.
+    fn reads(&self) -> Option<Vec<usize>> {
+        let mut all = Vec::new();
+        for sink in &self.sinks {
+            all.extend(sink.reads()?);
+        }
+        all.sort_unstable();
+        all.dedup();
+        Some(all)
+    }
+
     fn finish(&mut self) -> Result<(), SinkError> {
         let mut first = Ok(());
         for s in &mut self.sinks {
