@@ -163,6 +163,13 @@ pub fn ride(ride: Option<&RideSink>, output_every: f64) {
 
 /// How many of the seat's lines are printed.
 const LINES: usize = 5;
+/// How far a line may be from a harmonic of the shoe passage, as a share
+/// of its frequency, beyond a bin and a half: the speed's spread over the
+/// measurement.
+const SPEED_SPREAD: f64 = 0.005;
+/// How far from a hull mode at rest, as a share of its frequency beyond
+/// a bin and a half: a mode moves at speed.
+const MODE_SPREAD: f64 = 0.05;
 
 /// The seat's spectrum over the measured rows: the lines that carry the
 /// most absorbed power, named when they are the shoe passage's harmonics
@@ -189,9 +196,8 @@ pub fn seat_spectrum(
     let speed = ride.mean_speed().unwrap_or(f64::NAN);
     let pitch = pitch.unwrap_or(f64::NAN);
     let df = spectrum.df;
-    // A line's bin and one each side hold a tone (the Hann window); a
-    // harmonic is matched within that and the speed's spread over the
-    // measurement (0.5 %), a mode at rest within 5 % (it moves at speed).
+    // A line's bin and one each side hold a tone (the Hann window): a
+    // line is matched within a bin and a half and its spread.
     let lines = spectrum.lines(&absorbed, LINES, 1);
     let near = |line: &Line, spread: f64| 1.5 * df + spread * line.frequency;
     say!(
@@ -205,8 +211,8 @@ pub fn seat_spectrum(
     );
     for line in &lines {
         let name = line
-            .name(speed, pitch, &[], near(line, 0.01))
-            .or_else(|| line.name(f64::NAN, pitch, hull_modes, near(line, 0.05)))
+            .name(speed, pitch, &[], near(line, SPEED_SPREAD))
+            .or_else(|| line.name(f64::NAN, pitch, hull_modes, near(line, MODE_SPREAD)))
             .unwrap_or_else(|| {
                 if hull_modes.is_empty() {
                     "not the shoe passage (--modes names the hull's modes)".to_string()
@@ -229,7 +235,7 @@ pub fn seat_spectrum(
                 frequency: spectrum.frequency(k),
                 carried: 0.0,
             };
-            line.shoe_harmonic(speed, pitch, near(&line, 0.005))
+            line.shoe_harmonic(speed, pitch, near(&line, SPEED_SPREAD))
                 .is_some()
         })
         .map(|(_, w)| w)
