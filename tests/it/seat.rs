@@ -36,6 +36,18 @@ fn the_m113_declares_its_seat_at_the_drivers_position() {
     assert_eq!(DRIVER_SEAT, (0.0, 1.2));
 }
 
+/// The M113 driven to 3 m/s in 0.5 s towards a 0.1 m bump 1 m wide at
+/// x = 3.5 m.
+fn m113_over_the_bump() -> trackgen::vehicles::m113::M113System {
+    let drive = M113::speed_drive(|t| 3.0 * (t / 0.5).clamp(0.0, 1.0));
+    let terrain = Terrain::Bump {
+        centre: 3.5,
+        width: 1.0,
+        height: 0.1,
+    };
+    M113::system(terrain, drive).expect("the M113 assembles")
+}
+
 /// The seat's recorded acceleration against the central second
 /// difference of its recorded position (turned into the frame's axes by
 /// the sample's pitch) at spacing `h`, over the M113 crossing the bump:
@@ -43,13 +55,7 @@ fn the_m113_declares_its_seat_at_the_drivers_position() {
 /// acceleration's range (m/s²). Also checks the recorded position is the
 /// frame's point.
 fn seat_against_differences(h: f64) -> (f64, f64, f64) {
-    let drive = M113::speed_drive(|t| 3.0 * (t / 0.5).clamp(0.0, 1.0));
-    let terrain = Terrain::Bump {
-        centre: 3.5,
-        width: 1.0,
-        height: 0.1,
-    };
-    let mut system = M113::system(terrain, drive).expect("the M113 assembles");
+    let mut system = m113_over_the_bump();
     // The front road wheels cross the bump between 1.2 and 1.8 s.
     let samples = (0.6 / h).round() as usize;
     let times: Vec<f64> = (0..=samples).map(|k| 1.2 + k as f64 * h).collect();
@@ -173,13 +179,7 @@ impl trackgen::simulate::Sink for SeatOnly {
 #[test]
 fn a_lean_observation_gives_the_full_ones_bits() {
     let run = |sink: &mut dyn trackgen::simulate::Sink| {
-        let drive = M113::speed_drive(|t| 3.0 * (t / 0.5).clamp(0.0, 1.0));
-        let terrain = Terrain::Bump {
-            centre: 3.5,
-            width: 1.0,
-            height: 0.1,
-        };
-        let mut system = M113::system(terrain, drive).expect("the M113 assembles");
+        let mut system = m113_over_the_bump();
         trackgen::simulate::simulate_into(
             &mut system,
             Integrator::Bs23 {
