@@ -214,10 +214,14 @@ pub fn seat_spectrum(
             .name(speed, pitch, &[], near(line, SPEED_SPREAD))
             .or_else(|| line.name(f64::NAN, pitch, hull_modes, near(line, MODE_SPREAD)))
             .unwrap_or_else(|| {
+                // Where it stands against the passage tells a sub-harmonic
+                // (a line at a third of it, say) from a resonance, over
+                // runs at two speeds.
+                let share = line.frequency * pitch / speed;
                 if hull_modes.is_empty() {
-                    "not the shoe passage (--modes names the hull's modes)".to_string()
+                    format!("{share:.2} v/p: not a harmonic (--modes names the hull's modes)")
                 } else {
-                    "not the shoe passage nor a hull mode at rest".to_string()
+                    format!("{share:.2} v/p: not a harmonic nor a hull mode at rest")
                 }
             });
         say!(
