@@ -40,11 +40,9 @@
 
 use crate::support;
 
-use support::vehicle::{m113_weight, window};
+use support::vehicle::{m113_run, m113_weight, window};
 use trackgen::contact::Terrain;
-use trackgen::integrate::Integrator;
-use trackgen::simulate::{Output, simulate};
-use trackgen::vehicle::{Powertrain, Vehicle, build};
+use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::m113::{self, M113};
 
 #[test]
@@ -171,24 +169,13 @@ fn steady(
     powertrain: Option<Powertrain>,
     duration: f64,
 ) -> (f64, f64, f64, Vec<f64>) {
-    let mut config = M113::declared_config(
+    let results = m113_run(
+        powertrain,
         terrain,
-        M113::speed_drive(move |t| target * (t / 1.0).min(1.0)),
-    );
-    config.powertrain = powertrain;
-    let mut system = build::<M113>(config).expect("the M113 builds");
-    let results = simulate(
-        &mut system,
-        Integrator::Bs23 {
-            rtol: 1e-4,
-            atol: 1e-4,
-            max_step: 0.01,
-        },
-        0.0,
+        move |t| target * (t / 1.0).min(1.0),
         duration,
-        Output::Every(0.001),
-    )
-    .expect("the run finishes");
+        0.001,
+    );
     let mean = |v: Vec<f64>| v.iter().sum::<f64>() / v.len() as f64;
     let track_speed = mean(window(&results, "track_speed", duration - 4.0, duration));
     let period = m113::SHOE_PITCH / track_speed;

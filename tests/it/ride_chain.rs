@@ -172,7 +172,7 @@ fn the_ride_chain_matches_the_steady_state_in_closed_form() {
         // to the closed form within that and its resolution bias (the
         // window spreads a tone over a bin each side, where `|H|²`, rising
         // as `f²` below its peak, is larger on average by `(Δf/f)²/3`: 2 %
-        // at 1 Hz with 0.244 Hz bins, taken twice), in one line at the
+        // at 1 Hz with 0.244 Hz bins), in one line at the
         // road's frequency (within its bin); the speed from the rows' `x`.
         // Runs measured for less than one segment (the 8 Hz road's 2.5 s)
         // have none.
@@ -193,7 +193,7 @@ fn the_ride_chain_matches_the_steady_state_in_closed_form() {
                     "{f} Hz: mean square {}",
                     spectrum.mean_square()
                 );
-                let bias = 2.0 * (spectrum.df / f).powi(2) / 3.0;
+                let bias = (spectrum.df / f).powi(2) / 3.0;
                 assert!(
                     (total - power).abs() < (0.02 + bias) * power,
                     "{f} Hz: spectrum {total} W"

@@ -211,8 +211,12 @@ pub fn seat_spectrum(
     );
     for line in &lines {
         let name = line
-            .name(speed, pitch, &[], near(line, SPEED_SPREAD))
-            .or_else(|| line.name(f64::NAN, pitch, hull_modes, near(line, MODE_SPREAD)))
+            .name(
+                speed,
+                pitch,
+                hull_modes,
+                (near(line, SPEED_SPREAD), near(line, MODE_SPREAD)),
+            )
             .unwrap_or_else(|| {
                 // Where it stands against the passage tells a sub-harmonic
                 // (a line at a third of it, say) from a resonance, over

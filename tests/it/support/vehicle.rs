@@ -206,8 +206,20 @@ pub fn m113_through(
     duration: f64,
     every: f64,
 ) -> Results {
+    let powertrain = Powertrain::Converter(Box::new(driveline.clone()));
+    m113_run(Some(powertrain), terrain, target, duration, every)
+}
+
+/// [`m113_through`] under any `powertrain` (`None`: the speed drive alone).
+pub fn m113_run(
+    powertrain: Option<Powertrain>,
+    terrain: Terrain,
+    target: impl Fn(f64) -> f64 + Send + 'static,
+    duration: f64,
+    every: f64,
+) -> Results {
     let mut config = M113::declared_config(terrain, M113::speed_drive(target));
-    config.powertrain = Some(Powertrain::Converter(Box::new(driveline.clone())));
+    config.powertrain = powertrain;
     let mut system = build::<M113>(config).expect("the M113 builds");
     simulate(
         &mut system,

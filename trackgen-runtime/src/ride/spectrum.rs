@@ -264,18 +264,18 @@ impl Line {
             .find(|k| (k * passage - self.frequency).abs() <= tolerance)
     }
 
-    /// A name for the line: the shoe passage's harmonic it is
-    /// ([`shoe_harmonic`](Self::shoe_harmonic)), else the nearest of
-    /// `modes` (frequency in Hz, name) within `tolerance` Hz, else
+    /// A name for the line: the shoe passage's harmonic it is within
+    /// `harmonic` Hz ([`shoe_harmonic`](Self::shoe_harmonic)), else the
+    /// nearest of `modes` (frequency in Hz, name) within `mode` Hz, else
     /// `None`.
     pub fn name(
         &self,
         speed: f64,
         pitch: f64,
         modes: &[(f64, String)],
-        tolerance: f64,
+        (harmonic, mode): (f64, f64),
     ) -> Option<String> {
-        if let Some(k) = self.shoe_harmonic(speed, pitch, tolerance) {
+        if let Some(k) = self.shoe_harmonic(speed, pitch, harmonic) {
             let passage = speed.abs() / pitch;
             return Some(if k == 1.0 {
                 format!("shoe passage v/p ({passage:.2} Hz)")
@@ -287,7 +287,7 @@ impl Line {
         }
         modes
             .iter()
-            .filter(|(f, _)| (f - self.frequency).abs() <= tolerance)
+            .filter(|(f, _)| (f - self.frequency).abs() <= mode)
             .min_by(|a, b| {
                 (a.0 - self.frequency)
                     .abs()

@@ -542,10 +542,10 @@ fn lines_are_named_by_the_shoe_passage() {
     assert_eq!(line(0.7 * passage).shoe_harmonic(speed, pitch, 0.1), None);
     let modes = [(3.2, "hull bounce".to_string())];
     assert_eq!(
-        line(3.25).name(speed, pitch, &modes, 0.1).as_deref(),
+        line(3.25).name(speed, pitch, &modes, (0.1, 0.1)).as_deref(),
         Some("hull bounce (3.20 Hz at rest)")
     );
-    assert_eq!(line(4.0).name(speed, pitch, &modes, 0.1), None);
+    assert_eq!(line(4.0).name(speed, pitch, &modes, (0.1, 0.1)), None);
 }
 
 #[test]

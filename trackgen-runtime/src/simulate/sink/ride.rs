@@ -40,11 +40,10 @@ pub struct RideIntervalError {
     pub max: f64,
 }
 
-/// A stretch of ground to measure over: the hull's `x` from `x0` to `x1`,
-/// m, and the index of the `x` column once the run has begun.
+/// A stretch of ground to measure over: the hull's `x` (the column `x`)
+/// from `x0` to `x1`, m.
 #[derive(Debug, Clone, Copy)]
 struct Stretch {
-    column: Option<usize>,
     x0: f64,
     x1: f64,
 }
@@ -143,11 +142,7 @@ impl RideSink {
     /// stretch whatever speed the vehicle actually reaches.
     pub fn over_stretch(self, x0: f64, x1: f64) -> RideSink {
         RideSink {
-            stretch: Some(Stretch {
-                column: None,
-                x0,
-                x1,
-            }),
+            stretch: Some(Stretch { x0, x1 }),
             ..self
         }
     }
@@ -204,10 +199,12 @@ impl Sink for RideSink {
             })
         };
         self.at = Some([find(&self.columns[0])?, find(&self.columns[1])?]);
-        self.x = columns.iter().position(|c| c == "x");
-        if let Some(stretch) = &mut self.stretch {
-            stretch.column = Some(find("x")?);
-        }
+        // A stretch needs the hull's `x`; the mean speed takes it where
+        // the run has it.
+        self.x = match self.stretch {
+            Some(_) => Some(find("x")?),
+            None => columns.iter().position(|c| c == "x"),
+        };
         Ok(())
     }
 
@@ -234,13 +231,9 @@ impl Sink for RideSink {
                 vertical.max(longitudinal) + 1,
             ));
         };
-        let (reached, passed) = match &self.stretch {
-            Some(Stretch {
-                column: Some(c),
-                x0,
-                x1,
-            }) => {
-                let x = values.get(*c).copied().unwrap_or(f64::NAN);
+        let (reached, passed) = match (&self.stretch, self.x) {
+            (Some(Stretch { x0, x1 }), Some(c)) => {
+                let x = values.get(c).copied().unwrap_or(f64::NAN);
                 (x >= *x0, x > *x1)
             }
             _ => (true, false),
@@ -281,9 +274,8 @@ impl Sink for RideSink {
     /// The seat's two columns and, where the run has it, `x`.
     fn reads(&self) -> Option<Vec<usize>> {
         let [vertical, longitudinal] = self.at?;
-        let stretch = self.stretch.and_then(|s| s.column);
         Some(
-            [Some(vertical), Some(longitudinal), self.x, stretch]
+            [Some(vertical), Some(longitudinal), self.x]
                 .into_iter()
                 .flatten()
                 .collect(),
