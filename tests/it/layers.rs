@@ -3,7 +3,7 @@
 //! files need each other.
 //!
 //! Every source file of the runtime, the macro crate, the facade and the
-//! main job is parsed with `syn`. The module tree is read from the `mod`
+//! application is parsed with `syn`. The module tree is read from the `mod`
 //! declarations (inline and in files); every `use` (groups, renames,
 //! `self`, globs) and every path in code (types, expressions, patterns,
 //! trait bounds, and the tokens of macro calls) that starts with
@@ -15,7 +15,7 @@
 //! Three rules, each failing with the file and line:
 //! * **edges**: the top-level module of the importing file may import the
 //!   top-level module of the defining file only if the crate's graph
-//!   ([`RUNTIME`], [`MACROS`], [`MAIN_JOB`], [`FACADE`]) has the edge;
+//!   ([`RUNTIME`], [`MACROS`], [`APP`], [`FACADE`]) has the edge;
 //! * **one path**: a path may pass through re-exports only inside the
 //!   defining item's own top-level module (`crate::vehicle::VehicleSystem`,
 //!   re-exported by `vehicle/mod.rs` from `vehicle/system.rs`, is its own
@@ -166,31 +166,32 @@ pub const FACADE: Graph = &[
     ("lib", &["vehicles"]),
 ];
 
-/// The main job: the options and the console at the bottom, the
-/// pictures (drawn from the runtime's `scene`) over them, the outputs and
-/// reports over that, `main` on top.
-pub const MAIN_JOB: Graph = &[
+/// The application (`trackgen-app`): the options, the console and what
+/// the subcommands know of a vehicle at the bottom, the pictures (drawn
+/// from the runtime's `scene`) over them, the outputs and reports over
+/// that, a module per subcommand, and `app` (the command line and the
+/// dispatch to a vehicle's type) on top.
+pub const APP: Graph = &[
     ("console", &[]),
     ("cli", &[]),
+    ("offered", &[]),
     ("nearest", &[]),
     ("animation", &[]),
     ("plots", &[]),
     ("outputs", &["nearest", "animation", "plots"]),
     ("report", &["console", "cli"]),
-    ("modes", &["console", "animation"]),
+    ("modes", &["console", "animation", "cli", "offered"]),
+    ("fmu", &["cli", "offered"]),
+    ("mobility", &["offered"]),
     (
-        "main",
-        &[
-            "console",
-            "cli",
-            "nearest",
-            "animation",
-            "plots",
-            "outputs",
-            "report",
-            "modes",
-        ],
+        "run",
+        &["console", "cli", "offered", "outputs", "report", "modes"],
     ),
+    (
+        "app",
+        &["cli", "offered", "run", "mobility", "modes", "fmu"],
+    ),
+    ("lib", &["app"]),
 ];
 
 /// A module of a crate: its file, what it defines, what it imports.
@@ -852,8 +853,8 @@ fn the_facade_is_layered() {
 }
 
 #[test]
-fn the_main_job_is_layered() {
-    assert_layered("trackgen-cli/src/main.rs", "main", MAIN_JOB, 9, 30);
+fn the_application_is_layered() {
+    assert_layered("trackgen-app/src/lib.rs", "lib", APP, 17, 40);
 }
 
 /// The runtime's layers are one list: every module of the graph is named
@@ -1004,7 +1005,7 @@ fn the_check_finds_what_it_must() {
 
     // A graph with a cycle is refused.
     assert!(!graph_cycles(&[("a", &["b"]), ("b", &["a"])]).is_empty());
-    for graph in [RUNTIME, MACROS, FACADE, MAIN_JOB] {
+    for graph in [RUNTIME, MACROS, FACADE, APP] {
         assert!(graph_cycles(graph).is_empty());
     }
 }

@@ -3,27 +3,26 @@
 
 use std::path::PathBuf;
 
-use clap::{Parser, ValueEnum};
+use clap::ValueEnum;
 use trackgen::contact::profile::Obstacle;
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 
 use trackgen::contact::course::{self, CourseSpec, Roughness};
 
-/// Drive a planar tracked vehicle (the M113 by default, or the Marder) over
-/// a bump (or through a dip), a terrain file, a random course or an
-/// obstacle.
+/// Drive the vehicle over a bump (or through a dip), a terrain file, a
+/// random course or an obstacle.
 ///
 /// Streams every recorded quantity to `all.csv` and `all.arrow` as it runs
 /// (memory stays flat however long the run), the main quantities to
 /// `<vehicle>.csv`; then draws `<vehicle>.svg`, `frame.svg` and
 /// `animation.html`.
-#[derive(Parser, Debug)]
-#[command(version, about, allow_negative_numbers = true)]
-pub struct Args {
-    /// The vehicle.
-    #[arg(long, value_enum, default_value_t = Vehicle::M113)]
-    pub vehicle: Vehicle,
+#[derive(clap::Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct RunArgs {
+    /// The vehicle (the application's first by default).
+    #[arg(long, value_name = "NAME")]
+    pub vehicle: Option<String>,
     /// Target forward speed, m/s, from -20 to 20 (negative: in reverse).
     #[arg(long, default_value_t = 3.0, value_name = "M/S", value_parser = speed)]
     pub speed: f64,
@@ -148,27 +147,6 @@ fn ground(s: &str) -> Result<Ground, String> {
         .map_err(|_| format!("`{s}` is no ground; one of rigid, {}", SoilPreset::names()))
 }
 
-/// The vehicles the main job drives.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Vehicle {
-    /// The M113 (one side): 64 shoes, 5 road wheels, a rear idler on a
-    /// tensioner.
-    M113,
-    /// The Marder (one side): 77 shoes, 6 road wheels, 3 return rollers,
-    /// a rear idler on a tensioner.
-    Marder,
-}
-
-impl Vehicle {
-    /// Its name in file names and folders.
-    pub fn name(self) -> &'static str {
-        match self {
-            Vehicle::M113 => "m113",
-            Vehicle::Marder => "marder",
-        }
-    }
-}
-
 /// Where a run starts.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Start {
@@ -193,7 +171,7 @@ pub enum Method {
     Ros34pw2,
 }
 
-impl Args {
+impl RunArgs {
     /// The explicit methods' tolerance: given, or 1e-3.
     pub fn explicit_tolerance(&self) -> f64 {
         self.tolerance
@@ -244,11 +222,12 @@ impl Args {
         }
     }
 
-    /// The output folder given, or `out/<vehicle>`.
-    pub fn out(&self) -> PathBuf {
+    /// The output folder given, or `out/<vehicle>` for the vehicle named
+    /// `name`.
+    pub fn out(&self, name: &str) -> PathBuf {
         self.out
             .clone()
-            .unwrap_or_else(|| PathBuf::from("out").join(self.vehicle.name()))
+            .unwrap_or_else(|| PathBuf::from("out").join(name))
     }
 
     /// The integrator at the chosen tolerance, steps of at most 10 ms.
@@ -348,74 +327,10 @@ fn tolerance(s: &str) -> Result<f64, String> {
     within(s, 1e-12, 0.1, "a tolerance is from 1e-12 to 0.1")
 }
 
-fn folder(s: &str) -> Result<PathBuf, String> {
+pub(crate) fn folder(s: &str) -> Result<PathBuf, String> {
     if s.trim().is_empty() {
         Err("an empty folder name; give a path".to_string())
     } else {
         Ok(PathBuf::from(s))
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use clap::CommandFactory;
-
-    use super::Args;
-
-    /// The guide's table of the main job's options
-    /// (`book/src/simulating.md`, "Options"): (option, values, default).
-    fn guide_table() -> Vec<(String, String, String)> {
-        let page = include_str!("../../book/src/simulating.md");
-        let start = page
-            .find("### Options")
-            .expect("the guide has an Options section");
-        page[start..]
-            .lines()
-            .skip_while(|l| !l.starts_with("| option"))
-            .skip(2)
-            .take_while(|l| l.starts_with('|'))
-            .map(|line| {
-                let cells: Vec<&str> = line
-                    .split(" | ")
-                    .map(|c| c.trim_matches(['|', ' ']))
-                    .collect();
-                let option = cells[0].trim_matches('`').to_string();
-                (option, cells[1].to_string(), cells[2].to_string())
-            })
-            .collect()
-    }
-
-    /// Every option of the main job is in the guide's table, every row of
-    /// the table is an option, and where the option has a default the
-    /// table's default starts with it (as `--help` prints it).
-    #[test]
-    fn the_guide_lists_every_option_with_its_default() {
-        let table = guide_table();
-        let command = Args::command();
-        let options: Vec<_> = command
-            .get_arguments()
-            .filter_map(|a| a.get_long().map(|long| (format!("--{long}"), a)))
-            .filter(|(long, _)| long != "--help" && long != "--version")
-            .collect();
-        for (long, arg) in &options {
-            let row = table.iter().find(|(option, _, _)| option == long);
-            let Some((_, _, default)) = row else {
-                panic!("`{long}` is not in the guide's table of options");
-            };
-            if let Some(value) = arg.get_default_values().first() {
-                let value = value.to_string_lossy();
-                let shown = default.trim_matches('`');
-                assert!(
-                    shown.starts_with(value.as_ref()),
-                    "`{long}`: the guide's default `{default}`, --help's `{value}`"
-                );
-            }
-        }
-        for (option, _, _) in &table {
-            assert!(
-                options.iter().any(|(long, _)| long == option),
-                "the guide's table lists `{option}`, which the main job does not take"
-            );
-        }
     }
 }

@@ -38,7 +38,7 @@ const MAX_FRAMES: f64 = 1500.0;
 pub struct Outputs {
     dir: PathBuf,
     /// The vehicle's name, in file names.
-    name: &'static str,
+    name: String,
     /// Its title, in the animation.
     title: String,
     scene: Scene,
@@ -84,7 +84,7 @@ impl Outputs {
     /// picture is taken where the chassis centroid passes `focus` (m).
     pub fn create(
         dir: &Path,
-        (name, title, scene): (&'static str, String, Scene),
+        (name, title, scene): (&str, String, Scene),
         columns: &[String],
         focus: f64,
     ) -> Result<Self, Box<dyn Error>> {
@@ -97,7 +97,7 @@ impl Outputs {
         picture_columns.push("x".to_string());
         Ok(Outputs {
             dir: dir.to_path_buf(),
-            name,
+            name: name.to_string(),
             title,
             scene,
             recorders: Recorders {

@@ -1,16 +1,65 @@
-//! The vehicle at rest and how it vibrates there: `--start equilibrium`
-//! and `--modes` (the table, `modes.csv`, `modes.svg`, `modes.html`).
+//! The vehicle at rest and how it vibrates there: the `modes` subcommand,
+//! and `run`'s `--start equilibrium` and `--modes` (the table,
+//! `modes.csv`, `modes.svg`, `modes.html`).
 
 use std::error::Error;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 use std::time::Instant;
 
 use trackgen::analysis::{Equilibrium, EquilibriumOptions, Mode, equilibrium, mode_of, modes};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
+use trackgen::contact::Terrain;
+use trackgen::scene::{self, Scene};
+
 use crate::animation;
 use crate::console::say;
-use trackgen::scene::{self, Scene};
+use crate::offered::Offered;
+
+/// The vehicle at rest on flat ground, held by its speed controller at
+/// standstill, and its modes there: the lowest printed, every one in
+/// `modes.csv`, the six lowest drawn in `modes.svg` and played in
+/// `modes.html`.
+#[derive(clap::Args, Debug)]
+pub struct ModesArgs {
+    /// The vehicle (the application's first by default).
+    #[arg(long, value_name = "NAME")]
+    pub vehicle: Option<String>,
+    /// Output folder (created if missing); default `out/<vehicle>`.
+    #[arg(long, value_name = "DIR", value_parser = crate::cli::folder)]
+    pub out: Option<PathBuf>,
+}
+
+/// `modes` for the vehicle `V`: exits 1, saying why, when the rest or the
+/// modes cannot be found or written.
+pub fn main<V: Vehicle>(entry: &Offered, args: &ModesArgs) -> ExitCode {
+    let dir = args
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out").join(entry.name()));
+    let found = || -> Result<Vec<String>, Box<dyn Error>> {
+        std::fs::create_dir_all(&dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
+        let terrain = Terrain::Flat { height: 0.0 };
+        let mut system = V::system(terrain.clone(), V::speed_drive(|_| 0.0))?;
+        let (rest, _) = find_rest(&mut system)?;
+        let ground = scene::Ground {
+            terrain,
+            rut: Vec::new(),
+        };
+        Ok(report::<V>(&mut system, &rest, &dir, &ground)?.0)
+    };
+    match found() {
+        Ok(files) => {
+            say!("wrote {}/{{{}}}", dir.display(), files.join(", "));
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
 
 /// The vehicle at rest where it stands, and the wall time it took.
 pub fn find_rest<S: VehicleDynamics>(system: &mut S) -> Result<(Equilibrium, f64), Box<dyn Error>> {

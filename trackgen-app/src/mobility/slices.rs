@@ -1,0 +1,184 @@
+//! Slices of a set: each task's rows, trials included, one JSON object a
+//! line; read back exactly (floats in their shortest round-trip form).
+
+use std::collections::BTreeMap;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use serde_json::{Value, json};
+use trackgen::mobility::search::{Limit, Search, Trial};
+
+use super::tasks::Row;
+
+fn number(v: f64) -> Value {
+    serde_json::Number::from_f64(v).map_or(Value::Null, Value::Number)
+}
+
+fn row_json(r: &Row) -> Value {
+    let search = r.search.as_ref().map(|s| {
+        let limit = match s.limit {
+            Limit::Found {
+                value,
+                passed,
+                failed,
+            } => json!({"found": [number(value), number(passed), number(failed)]}),
+            Limit::Beyond { end } => json!({"beyond": number(end)}),
+            Limit::Before { start } => json!({"before": number(start)}),
+        };
+        let trials: Vec<Value> = s
+            .trials
+            .iter()
+            .map(|t| json!([number(t.parameter), number(t.figure), t.passed]))
+            .collect();
+        json!({"limit": limit, "trials": trials, "picture": s.picture})
+    });
+    json!({
+        "event": r.event,
+        "parameter": r.parameter.map(|(n, v, u)| json!([n, number(v), u])),
+        "quantity": r.quantity,
+        "value": number(r.value),
+        "relation": r.relation,
+        "unit": r.unit,
+        "runs": r.runs,
+        "wall": number(r.wall),
+        "search": search,
+        "failure": r.failure,
+    })
+}
+
+/// Writes a slice: a line per task, `{"task": i, "wall": s, "rows": […]}`.
+pub fn write(path: &Path, done: &[(usize, Vec<Row>)], wall: f64) -> std::io::Result<()> {
+    if let Some(dir) = path.parent() {
+        fs::create_dir_all(dir)?;
+    }
+    let mut text = String::new();
+    for (i, rows) in done {
+        let line = json!({
+            "task": i,
+            "slice_wall": number(wall),
+            "rows": rows.iter().map(row_json).collect::<Vec<_>>(),
+        });
+        text.push_str(&line.to_string());
+        text.push('\n');
+    }
+    fs::write(path, text)
+}
+
+/// The rows' strings live as long as the merge (a short command).
+fn text(v: &Value, what: &str) -> Result<&'static str, String> {
+    v.as_str()
+        .map(|s| &*Box::leak(s.to_string().into_boxed_str()))
+        .ok_or_else(|| format!("`{what}` is not a string"))
+}
+
+fn float(v: &Value) -> f64 {
+    v.as_f64().unwrap_or(f64::NAN)
+}
+
+fn row_of(v: &Value) -> Result<Row, String> {
+    let search = match &v["search"] {
+        Value::Null => None,
+        s => {
+            let limit = &s["limit"];
+            let limit = if let Some(f) = limit.get("found") {
+                Limit::Found {
+                    value: float(&f[0]),
+                    passed: float(&f[1]),
+                    failed: float(&f[2]),
+                }
+            } else if let Some(end) = limit.get("beyond") {
+                Limit::Beyond { end: float(end) }
+            } else if let Some(start) = limit.get("before") {
+                Limit::Before {
+                    start: float(start),
+                }
+            } else {
+                return Err("a search without its limit".into());
+            };
+            let trials = s["trials"]
+                .as_array()
+                .ok_or("a search without its trials")?
+                .iter()
+                .map(|t| Trial {
+                    parameter: float(&t[0]),
+                    figure: float(&t[1]),
+                    passed: t[2].as_bool().unwrap_or(false),
+                })
+                .collect();
+            let picture = s["picture"].as_str().map(str::to_owned);
+            Some(Search {
+                limit,
+                trials,
+                picture,
+            })
+        }
+    };
+    let parameter = match &v["parameter"] {
+        Value::Null => None,
+        p => Some((
+            text(&p[0], "parameter")?,
+            float(&p[1]),
+            text(&p[2], "unit")?,
+        )),
+    };
+    Ok(Row {
+        event: text(&v["event"], "event")?,
+        parameter,
+        quantity: text(&v["quantity"], "quantity")?,
+        value: float(&v["value"]),
+        relation: text(&v["relation"], "relation")?,
+        unit: text(&v["unit"], "unit")?,
+        runs: v["runs"].as_u64().unwrap_or(0) as usize,
+        wall: float(&v["wall"]),
+        search,
+        failure: v["failure"].as_str().map(str::to_string),
+    })
+}
+
+/// The set's rows in task order from its slices, and the longest
+/// slice's wall time; an error names the file and line, or the tasks
+/// missing or given twice.
+pub fn merge(files: &[PathBuf], tasks: usize) -> Result<(Vec<Row>, f64), String> {
+    let mut found: BTreeMap<usize, (Vec<Row>, String)> = BTreeMap::new();
+    let mut wall: f64 = 0.0;
+    for file in files {
+        let content = fs::read_to_string(file).map_err(|e| format!("{}: {e}", file.display()))?;
+        for (n, line) in content.lines().enumerate() {
+            let at = format!("{}:{}", file.display(), n + 1);
+            let v: Value = serde_json::from_str(line).map_err(|e| format!("{at}: {e}"))?;
+            let task = v["task"]
+                .as_u64()
+                .ok_or_else(|| format!("{at}: no task index"))? as usize;
+            if task >= tasks {
+                return Err(format!(
+                    "{at}: task {task}, but this set has {tasks} (give the merge the slices' --events and --quick)"
+                ));
+            }
+            wall = wall.max(float(&v["slice_wall"]));
+            let rows = v["rows"]
+                .as_array()
+                .ok_or_else(|| format!("{at}: no rows"))?
+                .iter()
+                .map(row_of)
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|e| format!("{at}: {e}"))?;
+            if let Some((_, first)) = found.insert(task, (rows, at.clone())) {
+                return Err(format!("task {task} is in two slices: {first} and {at}"));
+            }
+        }
+    }
+    let missing: Vec<String> = (0..tasks)
+        .filter(|i| !found.contains_key(i))
+        .map(|i| i.to_string())
+        .collect();
+    if !missing.is_empty() {
+        return Err(format!(
+            "tasks missing from the slices: {} (of {tasks})",
+            missing.join(", ")
+        ));
+    }
+    Ok((
+        found.into_values().flat_map(|(rows, _)| rows).collect(),
+        wall,
+    ))
+}

@@ -1,0 +1,324 @@
+//! The set's work: each event at each of its parameters a task, and the
+//! rows a task's answer becomes.
+
+use std::time::Instant;
+
+use trackgen::contact::soil::SoilPreset;
+use trackgen::mobility::search::{Limit, Search};
+use trackgen::mobility::{
+    EventError, EventSettings, Footprint, grade, obstacle, quantity, ride, soil,
+};
+use trackgen::vehicle::Vehicle;
+
+/// Every event, in the order they are reported.
+pub(super) const EVENTS: [&str; 8] = [
+    "ride",
+    "half-round",
+    "step",
+    "gap",
+    "ditch",
+    "barrier",
+    "grade",
+    "soil",
+];
+
+pub(super) fn event_name(s: &str) -> Result<&'static str, String> {
+    EVENTS
+        .iter()
+        .find(|e| **e == s)
+        .copied()
+        .ok_or_else(|| format!("unknown event `{s}`: the events are {}", EVENTS.join(", ")))
+}
+
+/// One answer: a limit, a quantity at a parameter, or why there is none.
+#[derive(Debug, Clone)]
+pub(super) struct Row {
+    pub(super) event: &'static str,
+    /// What was held fixed, with its unit (`roughness 0.0254 m`), or
+    /// empty.
+    pub(super) parameter: Option<(&'static str, f64, &'static str)>,
+    /// What was found and its unit.
+    pub(super) quantity: &'static str,
+    pub(super) value: f64,
+    /// `=`, `>` (beyond the searched range), `<` (before it), or, without
+    /// an answer, `stalled` or `failed`.
+    pub(super) relation: &'static str,
+    pub(super) unit: &'static str,
+    pub(super) runs: usize,
+    pub(super) wall: f64,
+    pub(super) search: Option<Search>,
+    /// Why there is no answer.
+    pub(super) failure: Option<String>,
+}
+
+/// What a task found: a limit's search, or a curve: quantities at
+/// parameters from `runs` runs.
+pub(super) enum Found {
+    Limit(Search),
+    Curve {
+        points: Vec<Point>,
+        runs: usize,
+        /// The search behind the first point, if it is a limit.
+        search: Option<Search>,
+    },
+}
+
+/// A curve's point: what was held fixed, the quantity, its value, how the
+/// value stands (`=`, or why there is none) and its unit.
+type Point = (Parameter, &'static str, f64, &'static str, &'static str);
+
+/// What was held fixed: its name, value and unit.
+type Parameter = Option<(&'static str, f64, &'static str)>;
+
+/// One piece of work: an event at one parameter, and what it reports.
+pub(super) struct Task<'a> {
+    event: &'static str,
+    parameter: Option<(&'static str, f64, &'static str)>,
+    quantity: &'static str,
+    unit: &'static str,
+    run: Box<dyn Fn() -> Result<Found, EventError> + Send + Sync + 'a>,
+}
+
+impl Task<'_> {
+    /// Runs it: its rows, with the wall time it took.
+    pub(super) fn rows(&self) -> Vec<Row> {
+        let start = Instant::now();
+        let found = (self.run)();
+        let wall = start.elapsed().as_secs_f64();
+        let row = |value, relation, runs, search, failure| Row {
+            event: self.event,
+            parameter: self.parameter,
+            quantity: self.quantity,
+            value,
+            relation,
+            unit: self.unit,
+            runs,
+            wall,
+            search,
+            failure,
+        };
+        match found {
+            Ok(Found::Limit(s)) => vec![row(
+                s.limit.value(),
+                s.limit.relation(),
+                s.runs(),
+                Some(s),
+                None,
+            )],
+            Ok(Found::Curve {
+                points,
+                runs,
+                mut search,
+            }) => points
+                .into_iter()
+                .enumerate()
+                .map(|(k, (parameter, quantity, value, relation, unit))| Row {
+                    parameter,
+                    quantity,
+                    unit,
+                    // The runs and the time are the curve's, on its first row.
+                    runs: if k == 0 { runs } else { 0 },
+                    wall: if k == 0 { wall } else { 0.0 },
+                    ..row(value, relation, 0, search.take(), None)
+                })
+                .collect(),
+            Err(e) => {
+                let relation = match e {
+                    EventError::Stalled { .. } => "stalled",
+                    _ => "failed",
+                };
+                vec![row(f64::NAN, relation, 0, None, Some(e.to_string()))]
+            }
+        }
+    }
+}
+
+pub(super) fn tasks<'a, V: Vehicle>(
+    settings: &'a EventSettings,
+    footprint: &'a Footprint,
+    events: &[&'static str],
+    quick: bool,
+) -> Vec<Task<'a>> {
+    const INCH: f64 = 0.0254;
+    let pick = |all: &'static [f64], one: &'static [f64]| if quick { one } else { all };
+    let roughnesses = pick(&[0.5, 1.0, 1.5, 2.0, 3.0, 4.0], &[1.0]);
+    let heights = pick(&[4.0, 6.0, 8.0, 10.0, 12.0], &[8.0]);
+    let grades = pick(&[0.1, 0.2, 0.3, 0.4, 0.5, 0.6], &[0.1]);
+    let mut out: Vec<Task<'a>> = Vec::new();
+    for &event in events {
+        let task = |parameter, quantity, unit, run| Task {
+            event,
+            parameter,
+            quantity,
+            unit,
+            run,
+        };
+        match event {
+            "ride" => {
+                for &r in roughnesses {
+                    let roughness = ride::Roughness {
+                        rms: r * INCH,
+                        seed: 1,
+                    };
+                    out.push(task(
+                        Some(("roughness", r * INCH, "m")),
+                        "ride-limiting speed",
+                        "m/s",
+                        Box::new(move || {
+                            ride::limiting_speed::<V>(settings, footprint, roughness)
+                                .map(Found::Limit)
+                        }),
+                    ));
+                }
+            }
+            "half-round" => {
+                for &h in heights {
+                    out.push(task(
+                        Some(("height", h * INCH, "m")),
+                        "speed at the peak limit",
+                        "m/s",
+                        Box::new(move || {
+                            obstacle::half_round_speed::<V>(settings, footprint, h * INCH)
+                                .map(Found::Limit)
+                        }),
+                    ));
+                }
+            }
+            "step" | "gap" | "ditch" | "barrier" => {
+                let (search, quantity): (fn(&EventSettings, &Footprint) -> _, _) = match event {
+                    "step" => (obstacle::step::<V>, quantity::HIGHEST_STEP),
+                    "gap" => (obstacle::gap::<V>, quantity::WIDEST_GAP),
+                    "ditch" => (obstacle::ditch::<V>, quantity::DEEPEST_DITCH),
+                    _ => (obstacle::barrier::<V>, quantity::HIGHEST_BARRIER),
+                };
+                out.push(task(
+                    None,
+                    quantity,
+                    "m",
+                    Box::new(move || search(settings, footprint).map(Found::Limit)),
+                ));
+            }
+            // One task: the steepest grade first, then the speed on each
+            // grade no steeper (a steady speed up a steeper one is 0: it
+            // is not climbed even from a crawl at full load), so the runs
+            // that would only stall are not made.
+            "grade" => {
+                out.push(task(
+                    None,
+                    quantity::TOP_SPEED,
+                    "m/s",
+                    Box::new(move || {
+                        let run = grade::top_speed::<V>(settings, footprint)?;
+                        Ok(Found::Curve {
+                            points: vec![(None, quantity::TOP_SPEED, run.speed, "=", "m/s")],
+                            runs: 1,
+                            search: None,
+                        })
+                    }),
+                ));
+                out.push(task(
+                    None,
+                    quantity::STEEPEST_GRADE,
+                    "rise over run",
+                    Box::new(move || {
+                        let steepest = grade::steepest::<V>(settings, footprint)?;
+                        let climbed = match steepest.limit {
+                            Limit::Found { passed, .. } => passed,
+                            Limit::Beyond { end } => end,
+                            Limit::Before { .. } => 0.0,
+                        };
+                        let mut runs = steepest.runs();
+                        let mut points = vec![(
+                            None,
+                            quantity::STEEPEST_GRADE,
+                            steepest.limit.value(),
+                            steepest.limit.relation(),
+                            "rise over run",
+                        )];
+                        for &g in grades {
+                            let parameter = Some(("grade", g, "rise over run"));
+                            if g > climbed {
+                                points.push((
+                                    parameter,
+                                    "speed at full power",
+                                    0.0,
+                                    "stalls",
+                                    "m/s",
+                                ));
+                                continue;
+                            }
+                            let climb = grade::speed_on::<V>(settings, footprint, g)?;
+                            runs += 1;
+                            points.push((
+                                parameter,
+                                "speed at full power",
+                                climb.speed,
+                                "=",
+                                "m/s",
+                            ));
+                        }
+                        Ok(Found::Curve {
+                            points,
+                            runs,
+                            search: Some(steepest),
+                        })
+                    }),
+                ));
+            }
+            "soil" => {
+                let soils: &[SoilPreset] = if quick {
+                    &[SoilPreset::DrySand]
+                } else {
+                    &[SoilPreset::DrySand, SoilPreset::Clay]
+                };
+                let fractions = pick(&[0.1, 0.2, 0.3, 0.4, 0.5], &[0.2]);
+                for &preset in soils {
+                    out.push(task(
+                        None,
+                        "drawbar curve",
+                        "",
+                        Box::new(move || {
+                            let curve = soil::drawbar_curve::<V>(settings, preset, fractions)?;
+                            let name = preset.name();
+                            let mut points = vec![(
+                                Some((name, 0.0, "drawbar pull / weight")),
+                                "motion resistance / weight",
+                                curve[0].resistance_coefficient(),
+                                if curve[0].held { "=" } else { "not held" },
+                                "",
+                            )];
+                            for p in &curve[1..] {
+                                // A load the drive could not hold is no point
+                                // of the soil's curve.
+                                points.push((
+                                    Some((name, p.pull / curve[0].weight, "drawbar pull / weight")),
+                                    "slip",
+                                    if p.held && p.slip < 1.0 {
+                                        p.slip
+                                    } else {
+                                        f64::NAN
+                                    },
+                                    // A slip of 1 or more: the load drags the
+                                    // vehicle back, beyond what the soil holds.
+                                    match (p.held, p.slip < 1.0) {
+                                        (false, _) => "not held",
+                                        (true, false) => "dragged back",
+                                        (true, true) => "=",
+                                    },
+                                    "",
+                                ));
+                            }
+                            Ok(Found::Curve {
+                                runs: curve.len(),
+                                points,
+                                search: None,
+                            })
+                        }),
+                    ));
+                }
+            }
+            _ => unreachable!("events are parsed from EVENTS"),
+        }
+    }
+    out
+}

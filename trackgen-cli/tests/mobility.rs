@@ -1,0 +1,211 @@
+//! The `mobility` subcommand of the main binary (`trackgen mobility`)
+//! answers its events, writes what it says it writes, refuses what it
+//! cannot answer, and its slices merge into the whole set.
+//!
+//! The binary is cargo's `CARGO_BIN_EXE_trackgen`, built with this test;
+//! outputs go to folders under `CARGO_TARGET_TMPDIR`.
+
+#[path = "../../tests/it/support/programs.rs"]
+mod programs;
+
+use std::path::{Path, PathBuf};
+use std::process::Output;
+
+use programs::{assert_success, run, scratch};
+
+/// `trackgen mobility ARGS…` run in `cwd`.
+fn mobility(args: &[&str], cwd: &Path) -> Output {
+    let binary = PathBuf::from(env!("CARGO_BIN_EXE_trackgen"));
+    let mut all = vec!["mobility"];
+    all.extend_from_slice(args);
+    run(&binary, &all, cwd)
+}
+
+/// `mobility --quick --events ride,half-round,soil --json`: one result per
+/// speed event and the soil's two rows, each a JSON line with the fields the issue names (SI units), a
+/// CSV per event, the trials, the curves and the report written; the
+/// ride's limit is a speed the search ran between 1 m/s and the top speed
+/// (its trials bracket it: the largest passing trial is below 6 W and
+/// the smallest failing one above); an unknown event is refused naming
+/// the events; a set of obstacles alone writes no curves.
+#[test]
+fn mobility_answers_its_events_and_refuses_an_unknown_one() {
+    let dir = scratch("mobility");
+    let out = mobility(
+        &[
+            "--quick",
+            "--events",
+            "ride,half-round,soil",
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("mobility --quick", &out);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let results: Vec<serde_json::Value> = stdout
+        .lines()
+        .filter(|l| l.starts_with('{'))
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
+        .collect();
+    // The ride, the half-round, and the soil's two rows (the resistance,
+    // the slip at 0.2 of the weight).
+    assert_eq!(results.len(), 4, "{stdout}");
+    assert_eq!(results[2]["quantity"], "motion resistance / weight");
+    assert_eq!(results[3]["quantity"], "slip");
+    for (result, event) in results.iter().zip(["ride", "half-round"]) {
+        assert_eq!(result["event"], event);
+        assert_eq!(result["unit"], "m/s");
+        assert!(result["runs"].as_u64().unwrap() >= 2, "{result}");
+        assert_eq!(result["parameter"]["unit"], "m");
+    }
+    let ride = &results[0];
+    let speed = ride["value"].as_f64().expect("a ride-limiting speed");
+    assert!(speed > 1.0 && speed < 20.0, "{speed} m/s");
+    let trials = std::fs::read_to_string(dir.join("trials.csv")).unwrap();
+    let ride_trials: Vec<(f64, f64, bool)> = trials
+        .lines()
+        .skip(1)
+        .filter(|l| l.starts_with("ride,"))
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            (f[4].parse().unwrap(), f[5].parse().unwrap(), f[6] == "true")
+        })
+        .collect();
+    let passed = ride_trials
+        .iter()
+        .filter(|t| t.2)
+        .map(|t| t.0)
+        .fold(0.0, f64::max);
+    let failed = ride_trials
+        .iter()
+        .filter(|t| !t.2)
+        .map(|t| t.0)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        passed < speed && speed < failed,
+        "{passed} < {speed} < {failed}"
+    );
+    for t in &ride_trials {
+        assert_eq!(t.2, t.1 < 6.0, "trial {t:?}: passes below 6 W");
+    }
+    for file in ["ride.csv", "half-round.csv", "summary.svg", "report.html"] {
+        let len = std::fs::metadata(dir.join(file))
+            .map(|m| m.len())
+            .unwrap_or(0);
+        assert!(len > 100, "{file}: {len} bytes");
+    }
+    // A set of obstacles alone has no curve: no blank `summary.svg`, the
+    // report and the vehicle at the limit still written.
+    let obstacles = dir.join("obstacles");
+    let out = mobility(
+        &[
+            "--quick",
+            "--events",
+            "step",
+            "--out",
+            obstacles.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("mobility --events step", &out);
+    assert!(!obstacles.join("summary.svg").exists());
+    for file in ["step.csv", "step-limit.svg", "report.html"] {
+        assert!(obstacles.join(file).exists(), "{file}");
+    }
+    let refused = mobility(&["--events", "ride,mud"], &dir);
+    assert!(!refused.status.success());
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(stderr.contains("unknown event `mud`"), "{stderr}");
+}
+
+/// `mobility --slice K/N` and `--merge`: two slices of the quick set, run
+/// apart and merged, give the event CSVs and the trials of the whole set
+/// run at once (every task is deterministic; the wall times aside); a
+/// merge missing a slice names the tasks it lacks, and one given a slice
+/// twice names the task and both places.
+#[test]
+fn mobility_slices_merge_into_the_whole_set() {
+    let dir = scratch("mobility-slices");
+    let common = ["--quick", "--events", "half-round,soil"];
+    let whole = dir.join("whole");
+    let args = |extra: &[&str]| {
+        let mut v: Vec<String> = common.iter().map(|s| s.to_string()).collect();
+        v.extend(extra.iter().map(|s| s.to_string()));
+        v
+    };
+    let run_with = |extra: &[&str]| {
+        let v = args(extra);
+        let refs: Vec<&str> = v.iter().map(String::as_str).collect();
+        mobility(&refs, &dir)
+    };
+    assert_success("whole", &run_with(&["--out", whole.to_str().unwrap()]));
+    let sliced = dir.join("sliced");
+    for k in ["1/2", "2/2"] {
+        assert_success(
+            k,
+            &run_with(&["--slice", k, "--out", sliced.to_str().unwrap()]),
+        );
+    }
+    let (one, two) = (
+        sliced.join("slice-1-of-2.jsonl"),
+        sliced.join("slice-2-of-2.jsonl"),
+    );
+    let merged = dir.join("merged");
+    assert_success(
+        "merge",
+        &run_with(&[
+            "--merge",
+            one.to_str().unwrap(),
+            two.to_str().unwrap(),
+            "--out",
+            merged.to_str().unwrap(),
+        ]),
+    );
+    // The CSVs without their wall-time column.
+    let without_wall = |path: &std::path::Path| -> Vec<String> {
+        let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{path:?}: {e}"));
+        let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
+        let wall = header.iter().position(|h| *h == "wall_s");
+        text.lines()
+            .map(|l| {
+                let mut f: Vec<&str> = l.split(',').collect();
+                if let Some(w) = wall {
+                    f.remove(w);
+                }
+                f.join(",")
+            })
+            .collect()
+    };
+    for file in ["half-round.csv", "soil.csv", "trials.csv"] {
+        assert_eq!(
+            without_wall(&whole.join(file)),
+            without_wall(&merged.join(file)),
+            "{file}"
+        );
+    }
+    let missing = run_with(&[
+        "--merge",
+        one.to_str().unwrap(),
+        "--out",
+        merged.to_str().unwrap(),
+    ]);
+    assert!(!missing.status.success());
+    let stderr = String::from_utf8_lossy(&missing.stderr);
+    assert!(
+        stderr.contains("tasks missing from the slices: 1"),
+        "{stderr}"
+    );
+    let twice = run_with(&[
+        "--merge",
+        one.to_str().unwrap(),
+        one.to_str().unwrap(),
+        two.to_str().unwrap(),
+        "--out",
+        merged.to_str().unwrap(),
+    ]);
+    assert!(!twice.status.success());
+    let stderr = String::from_utf8_lossy(&twice.stderr);
+    assert!(stderr.contains("is in two slices"), "{stderr}");
+}

@@ -1,0 +1,153 @@
+//! The main binary's subcommands: `run` is the default (the same files,
+//! byte for byte, with or without the word), `modes` writes the modes that
+//! `run --modes` writes, `fmu` refuses a file that is no FMU library, and
+//! a bad subcommand or vehicle is refused, naming it (exit status 2,
+//! nothing run).
+//!
+//! The binary is cargo's `CARGO_BIN_EXE_trackgen`, built with this test;
+//! outputs go to folders under `CARGO_TARGET_TMPDIR`.
+
+#[path = "../../tests/it/support/programs.rs"]
+mod programs;
+
+use std::path::{Path, PathBuf};
+
+use programs::{assert_rejected, assert_success, run, scratch};
+
+fn binary() -> PathBuf {
+    PathBuf::from(env!("CARGO_BIN_EXE_trackgen"))
+}
+
+fn path(p: &Path) -> &str {
+    p.to_str().expect("a UTF-8 scratch path")
+}
+
+/// `trackgen ARGS` and `trackgen run ARGS` write the same files, byte for
+/// byte (every run is deterministic).
+#[test]
+fn run_is_the_default_subcommand() {
+    let dir = scratch("default-run");
+    let (bare, named) = (dir.join("bare"), dir.join("named"));
+    let args = ["--duration", "0.2", "--settle", "0.1", "--ramp", "0"];
+    let mut with_out = args.to_vec();
+    with_out.extend(["--out", path(&bare)]);
+    assert_success("trackgen", &run(&binary(), &with_out, &dir));
+    let mut named_args = vec!["run"];
+    named_args.extend(args);
+    named_args.extend(["--out", path(&named)]);
+    assert_success("trackgen run", &run(&binary(), &named_args, &dir));
+    for file in ["m113.csv", "all.csv", "all.arrow"] {
+        let a = std::fs::read(bare.join(file)).expect(file);
+        let b = std::fs::read(named.join(file)).expect(file);
+        assert!(
+            a == b,
+            "{file} differs between `trackgen` and `trackgen run`"
+        );
+    }
+}
+
+/// `modes` writes `modes.csv`, `modes.svg` and `modes.html`; its modes are
+/// `run --modes`'s (the same rest on flat ground: the run's bump lies
+/// 12 m ahead, beyond the vehicle's reach): every frequency within 1e-6
+/// relative (both rests are Newton's to its own tolerance, from the same
+/// start on the same ground, so they agree far closer than that).
+#[test]
+fn modes_writes_what_run_modes_writes() {
+    let dir = scratch("modes-subcommand");
+    let (alone, in_run) = (dir.join("alone"), dir.join("in-run"));
+    assert_success(
+        "trackgen modes",
+        &run(&binary(), &["modes", "--out", path(&alone)], &dir),
+    );
+    for file in ["modes.csv", "modes.svg", "modes.html"] {
+        assert!(alone.join(file).is_file(), "{file} not written");
+    }
+    assert_success(
+        "trackgen run --modes",
+        &run(
+            &binary(),
+            &[
+                "run",
+                "--modes",
+                "--duration",
+                "0.05",
+                "--out",
+                path(&in_run),
+            ],
+            &dir,
+        ),
+    );
+    // The first column, `frequency_hz` (the last ones are words).
+    let frequencies = |dir: &Path| -> Vec<f64> {
+        let text = std::fs::read_to_string(dir.join("modes.csv")).expect("modes.csv");
+        let mut lines = text.lines();
+        assert!(lines.next().unwrap_or("").starts_with("frequency_hz,"));
+        lines
+            .map(|l| l.split(',').next().unwrap_or("").parse().expect(l))
+            .collect()
+    };
+    let (a, b) = (frequencies(&alone), frequencies(&in_run));
+    assert_eq!(a.len(), b.len());
+    assert!(a.len() > 10, "{} modes", a.len());
+    for (fa, fb) in a.iter().zip(&b) {
+        assert!(
+            (fa - fb).abs() <= 1e-6 * fa.abs().max(1e-3),
+            "{fa} Hz against {fb} Hz"
+        );
+    }
+}
+
+/// `fmu` packs only an FMU library: a file without the FMI functions is
+/// refused, naming the file and `export_fmu!`, and no archive is written;
+/// a missing library is named.
+#[test]
+fn fmu_refuses_what_is_no_fmu_library() {
+    let dir = scratch("fmu-subcommand");
+    let not_a_library = dir.join("not-a-library.so");
+    std::fs::write(&not_a_library, b"\x7fELF, but nothing exported").unwrap();
+    let out_dir = dir.join("fmu");
+    let out = run(
+        &binary(),
+        &[
+            "fmu",
+            "--library",
+            path(&not_a_library),
+            "--out",
+            path(&out_dir),
+        ],
+        &dir,
+    );
+    assert_rejected(
+        "fmu with no FMU library",
+        &out,
+        &["not-a-library.so", "export_fmu!"],
+    );
+    assert!(!out_dir.exists(), "an archive folder was made");
+    let missing = dir.join("missing.so");
+    let out = run(&binary(), &["fmu", "--library", path(&missing)], &dir);
+    assert_rejected("fmu with a missing library", &out, &["missing.so"]);
+}
+
+/// An unknown subcommand, an unknown vehicle and `run`'s options before
+/// another subcommand are refused by the parser (exit status 2), naming
+/// what is wrong; nothing is run or written.
+#[test]
+fn a_bad_command_line_is_refused_naming_it() {
+    let dir = scratch("bad-subcommand");
+    let cases: [(&[&str], &[&str]); 4] = [
+        (&["mobilty"], &["mobilty"]),
+        (&["--vehicle", "tiger"], &["tiger", "m113", "marder"]),
+        (
+            &["modes", "--vehicle", "tiger"],
+            &["tiger", "m113", "marder"],
+        ),
+        (&["--speed", "2", "mobility"], &["mobility", "--speed"]),
+    ];
+    for (args, mentions) in cases {
+        let out = run(&binary(), args, &dir);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_rejected(&format!("{args:?}"), &out, mentions);
+    }
+    let written: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert!(written.is_empty(), "{written:?}");
+}
