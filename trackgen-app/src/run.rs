@@ -56,13 +56,23 @@ fn about<V: Vehicle>() -> String {
     let sprung = parts
         .iter()
         .all(|p| p.kind != PartKind::RoadWheel || p.arm.is_some());
+    let plural = |n: usize| if n == 1 { "" } else { "s" };
     words.push(format!(
-        "{wheels} road wheels{}",
-        if sprung { " on torsion arms" } else { "" }
+        "{wheels} road wheel{}{}",
+        plural(wheels),
+        if sprung {
+            if wheels == 1 {
+                " on a torsion arm"
+            } else {
+                " on torsion arms"
+            }
+        } else {
+            ""
+        }
     ));
     match count(PartKind::Roller) {
         0 => {}
-        n => words.push(format!("{n} return rollers")),
+        n => words.push(format!("{n} return roller{}", plural(n))),
     }
     for idler in parts.iter().filter(|p| p.kind == PartKind::Idler) {
         words.push(match idler.arm {

@@ -69,16 +69,18 @@ pub struct Component<V: Vehicle> {
 }
 
 impl<V: Vehicle> Component<V> {
-    /// A new instance named `name` logging to `logger`, with the
-    /// vehicle's engine if the library was exported with one; `None`
-    /// (after logging why) if the vehicle cannot be built.
+    /// A new instance named `name` logging to `logger`, with the engine
+    /// the library was exported with, else the vehicle's declared one
+    /// ([`Vehicle::powertrain`]), if any; `None` (after logging why) if
+    /// the vehicle cannot be built.
     pub fn create(
         name: &str,
         logger: Logger,
         engine: Option<fn() -> Powertrain>,
     ) -> Option<Box<Component<V>>> {
         let name = CString::new(name.replace('\0', " ")).unwrap_or_default();
-        let created = catch_unwind(|| Instance::<V>::with_engine(engine.map(|f| f())));
+        let created =
+            catch_unwind(|| Instance::<V>::with_engine(engine.map(|f| f()).or_else(V::powertrain)));
         match created {
             Ok(Ok(instance)) => Some(Box::new(Component {
                 instance,

@@ -8,12 +8,15 @@
 //! [`export_fmu!`]; [`write_fmu`] packs the library with its model
 //! description into `<Name>.fmu` (3.0) and `<Name>-fmi2.fmu` (2.0).
 //! `tools/build-fmu.sh m113 OUTDIR` does both for the M113 (and `marder`
-//! for the Marder).
+//! for the Marder); for a user's own vehicle, the `fmu` subcommand of
+//! its application (`trackgen_app`) packs the library its crate built.
 //!
 //! ```ignore
-//! // src/lib.rs of a crate with `crate-type = ["cdylib"]`:
-//! trackgen_fmu::export_fmu!(my_crate::MyVehicle);
-//! // then, from a build step or a binary that links `MyVehicle`:
+//! // src/lib.rs of a crate with `crate-type = ["cdylib", "rlib"]`:
+//! trackgen_fmu::export_fmu!(MyVehicle);
+//! // then, from its binary (`trackgen_app::main::<MyVehicle>()`):
+//! //   my-vehicle fmu --library target/release/libmy_vehicle.so --out fmu
+//! // or from any code that links `MyVehicle`:
 //! trackgen_fmu::write_fmu::<MyVehicle>(library, out_dir, trackgen_fmu::Version::Fmi3)?;
 //! ```
 //!
@@ -52,8 +55,9 @@ pub use package::{PackageError, Version, write_fmu};
 /// functions have the standard's fixed names.
 ///
 /// With `powertrain = f` (a `fn() -> trackgen::vehicle::Powertrain`), the
-/// parameter `engine = 1` drives through that engine; without, `engine =
-/// 1` is refused.
+/// parameter `engine = 1` drives through that engine; without, through the
+/// vehicle's declared powertrain (`powertrain { … }` in its declaration),
+/// and where it declares none `engine = 1` is refused.
 ///
 /// ```ignore
 /// trackgen_fmu::export_fmu!(trackgen::vehicles::m113::M113,
