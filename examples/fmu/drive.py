@@ -27,7 +27,7 @@ result = simulate_fmu(
     fmu,
     stop_time=10.0,
     output_interval=0.01,
-    start_values={"drive": "speed", "terrain": "random", "roughness": "1in", "seed": 7},
+    start_values={"drive": "speed", "course": "random", "roughness": "1in", "seed": 7},
     input=inputs,
     output=["x", "speed", "pitch", "seat_az", "sprocket_torque", "books_residual"],
 )

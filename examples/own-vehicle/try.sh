@@ -11,7 +11,7 @@ target=${CARGO_TARGET_DIR:-target}/release
 mule=$target/mule
 
 # The main job over our own course, recording every 2 ms for the ride.
-$mule run --terrain-file course.csv --duration 12 --output-every 0.002 --out out/run
+$mule run --course-file course.csv --duration 12 --output-every 0.002 --out out/run
 
 # The mobility events, one parameter each (a smoke test: drop --quick for
 # the whole set), as JSON lines too.

@@ -120,6 +120,7 @@ pub const RUNTIME: Graph = &[
             "scene",
         ],
     ),
+    ("scenario", &["contact", "integrate", "vehicle"]),
     // `__private`: the paths generated code names (lib.rs).
     (
         "__private",

@@ -3,12 +3,10 @@
 
 use std::path::PathBuf;
 
-use clap::ValueEnum;
-use trackgen::contact::profile::Obstacle;
-use trackgen::contact::soil::SoilPreset;
-use trackgen::integrate::Integrator;
-
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use trackgen::contact::course::{self, CourseSpec, Roughness};
+use trackgen::contact::profile::Obstacle;
+use trackgen::scenario::{Method, Scenario, Soil, Start};
 
 /// Drive the vehicle over a bump (or through a dip), a terrain file, a
 /// random course or an obstacle.
@@ -24,27 +22,27 @@ pub struct RunArgs {
     #[arg(long, value_name = "NAME")]
     pub vehicle: Option<String>,
     /// Target forward speed, m/s, from -20 to 20 (negative: in reverse).
-    #[arg(long, default_value_t = 3.0, value_name = "M/S", value_parser = speed)]
+    #[arg(long, default_value_t = Scenario::SPEED, value_name = "M/S", value_parser = speed)]
     pub speed: f64,
     /// Bump height, m, from -0.5 to 0.5 (negative: a dip). The bump is a
     /// cosine 1 m wide.
-    #[arg(long, default_value_t = 0.1, value_name = "M", value_parser = bump_height)]
+    #[arg(long, default_value_t = Scenario::BUMP_HEIGHT, value_name = "M", value_parser = bump_height)]
     pub bump_height: f64,
-    /// The ground: `rigid`, or a soil of Wong's table (Bekker–Wong soft
+    /// The soil: `rigid`, or a soil of Wong's table (Bekker–Wong soft
     /// soil over the same profile, leaving a rut): dry-sand, sandy-loam,
     /// clay, heavy-clay, lete-sand, snow.
-    #[arg(long, default_value = "rigid", value_name = "GROUND", value_parser = ground)]
-    pub terrain: Ground,
+    #[arg(long, alias = "terrain", default_value = "rigid", value_name = "SOIL", value_parser = soil)]
+    pub soil: Soil,
     /// Where the bump's centre is, m, from -10000 to 10000 (the chassis
     /// centroid starts at 0 and the vehicle spans about -2.4 to 2.4).
-    #[arg(long, default_value_t = 12.0, value_name = "M", value_parser = position)]
+    #[arg(long, default_value_t = Scenario::BUMP_AT, value_name = "M", value_parser = position)]
     pub bump_at: f64,
     /// Drive over a terrain profile read from a CSV file instead of the
     /// bump: a header `x,z`, then one point per line (m), x never
     /// decreasing (two points at one x are a vertical face); `#` starts a
     /// comment line. An error names the line.
-    #[arg(long, value_name = "FILE.csv", conflicts_with_all = ["roughness", "obstacle"])]
-    pub terrain_file: Option<PathBuf>,
+    #[arg(long, alias = "terrain-file", value_name = "FILE.csv", conflicts_with_all = ["roughness", "obstacle"])]
+    pub course_file: Option<PathBuf>,
     /// Drive over a random course instead of the bump: an ISO 8608 class
     /// (A to H), or a detrended RMS elevation with its unit (1in, 25mm,
     /// 0.03m; up to 0.5 m). Sampled every 5 cm, flat up to x = 5 m, the
@@ -67,11 +65,11 @@ pub struct RunArgs {
     #[arg(long, value_name = "SPEC", value_parser = course::obstacle)]
     pub obstacle: Option<Obstacle>,
     /// Where the obstacle starts, m, from -10000 to 10000.
-    #[arg(long, default_value_t = 12.0, value_name = "M", value_parser = position)]
+    #[arg(long, default_value_t = Scenario::OBSTACLE_AT, value_name = "M", value_parser = position)]
     pub obstacle_at: f64,
     /// The output interval, s, from 1e-4 to 1 (ride figures want 1–2 ms:
     /// they are printed when it is at most 2 ms).
-    #[arg(long, default_value_t = 0.01, value_name = "SECONDS", value_parser = output_interval)]
+    #[arg(long, default_value_t = Scenario::OUTPUT_EVERY, value_name = "SECONDS", value_parser = output_interval)]
     pub output_every: f64,
     /// Drive through the vehicle's engine as well as its speed controller:
     /// its full-load envelope (the M113's: the M113A3's engine through its
@@ -82,13 +80,13 @@ pub struct RunArgs {
     #[arg(long)]
     pub engine: bool,
     /// Simulated time, s: more than 0, at most 1e6.
-    #[arg(long, default_value_t = 8.0, value_name = "SECONDS", value_parser = duration)]
+    #[arg(long, default_value_t = Scenario::DURATION, value_name = "SECONDS", value_parser = duration)]
     pub duration: f64,
     /// Settling time before driving, s: 0 to 1e6.
-    #[arg(long, default_value_t = 1.0, value_name = "SECONDS", value_parser = non_negative_seconds)]
+    #[arg(long, default_value_t = Scenario::SETTLE, value_name = "SECONDS", value_parser = non_negative_seconds)]
     pub settle: f64,
     /// Time to ramp the speed up, s: 0 to 1e6 (0: a step).
-    #[arg(long, default_value_t = 2.0, value_name = "SECONDS", value_parser = non_negative_seconds)]
+    #[arg(long, default_value_t = Scenario::RAMP, value_name = "SECONDS", value_parser = non_negative_seconds)]
     pub ramp: f64,
     /// Integrator tolerance, relative and absolute, from 1e-12 to 0.1;
     /// default 1e-3 for Bogacki-Shampine and Dormand-Prince, 1e-2 for
@@ -101,14 +99,14 @@ pub struct RunArgs {
     /// Integrator: `auto` runs Bogacki-Shampine while accuracy sets its
     /// step and ROS34PW2 while the stiffest mode would (checked at the
     /// start and every second), and says which it ran.
-    #[arg(long, value_enum, default_value_t = Method::Auto)]
+    #[arg(long, default_value = "auto", value_name = "METHOD", value_parser = named(&Method::NAMED))]
     pub integrator: Method,
     /// Where the run starts: `assembled` (the track wrapped, shoes 1 mm
     /// above the ground, then `--settle` seconds of settling) or
     /// `equilibrium` (at rest on the ground, found by Newton's method: no
     /// ringing left; the settling time still passes before the drive
     /// starts, `--settle 0` to drive at once).
-    #[arg(long, value_enum, default_value_t = Start::Assembled)]
+    #[arg(long, default_value = "assembled", value_name = "START", value_parser = named(&Start::NAMED))]
     pub start: Start,
     /// Also find the vehicle's modes at rest: print the lowest, write
     /// `modes.csv` (every mode), `modes.svg` (the vehicle displaced along
@@ -120,84 +118,28 @@ pub struct RunArgs {
     pub out: Option<PathBuf>,
 }
 
-/// What the ground is made of.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Ground {
-    /// Rigid: the contact laws of the vehicle's declaration.
-    Rigid,
-    /// Soft soil.
-    Soil(SoilPreset),
-}
-
-impl std::fmt::Display for Ground {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Ground::Rigid => f.write_str("rigid ground"),
-            Ground::Soil(soil) => write!(f, "{soil} soil"),
-        }
-    }
-}
-
-fn ground(s: &str) -> Result<Ground, String> {
-    if s == "rigid" {
-        return Ok(Ground::Rigid);
-    }
-    s.parse()
-        .map(Ground::Soil)
-        .map_err(|_| format!("`{s}` is no ground; one of rigid, {}", SoilPreset::names()))
-}
-
-/// Where a run starts.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Start {
-    /// As assembled: the track wrapped and tensioned, shoes 1 mm above the
-    /// ground.
-    Assembled,
-    /// At rest on the ground (`trackgen::analysis::equilibrium`).
-    Equilibrium,
-}
-
-/// The integrators offered.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Method {
-    /// Bogacki-Shampine or ROS34PW2, by the stiffness as the run goes.
-    Auto,
-    /// Bogacki-Shampine 3(2): three evaluations a step, the fastest at
-    /// loose tolerances.
-    Bs23,
-    /// Dormand-Prince 5(4).
-    Dopri5,
-    /// ROS34PW2, linearly implicit (Rosenbrock-W 3(2)).
-    Ros34pw2,
-}
-
 impl RunArgs {
-    /// The explicit methods' tolerance: given, or 1e-3.
-    pub fn explicit_tolerance(&self) -> f64 {
-        self.tolerance
-            .unwrap_or(Integrator::DEFAULT_EXPLICIT_TOLERANCE)
-    }
-
-    /// ROS34PW2's tolerance: given, or 1e-2.
-    pub fn implicit_tolerance(&self) -> f64 {
-        self.tolerance
-            .unwrap_or(Integrator::DEFAULT_IMPLICIT_TOLERANCE)
-    }
-
-    /// The tolerance the books are held to after a run whose integrator
-    /// made `implicit` of its accepted steps with ROS34PW2.
-    pub fn books_tolerance(&self, implicit: u64) -> f64 {
-        match self.integrator {
-            Method::Ros34pw2 => self.implicit_tolerance(),
-            Method::Auto if implicit > 0 => self.implicit_tolerance(),
-            _ => self.explicit_tolerance(),
+    /// The run these options name.
+    pub fn scenario(&self) -> Scenario {
+        Scenario {
+            course: self.course(),
+            soil: self.soil,
+            speed: self.speed,
+            settle: self.settle,
+            ramp: self.ramp,
+            engine: self.engine,
+            method: self.integrator,
+            tolerance: self.tolerance,
+            output_every: self.output_every,
+            duration: self.duration,
+            start: self.start,
         }
     }
 
     /// The course: a terrain file, a random course or an obstacle if one
     /// is given, else the bump.
-    pub fn course(&self) -> CourseSpec {
-        if let Some(path) = &self.terrain_file {
+    fn course(&self) -> CourseSpec {
+        if let Some(path) = &self.course_file {
             CourseSpec::File(path.clone())
         } else if let Some(roughness) = self.roughness {
             let length = self
@@ -229,44 +171,21 @@ impl RunArgs {
             .clone()
             .unwrap_or_else(|| PathBuf::from("out").join(name))
     }
+}
 
-    /// The integrator at the chosen tolerance, steps of at most 10 ms.
-    pub fn integrator(&self) -> Integrator {
-        let max_step = Integrator::DEFAULT_MAX_STEP;
-        let (rtol, atol) = match self.integrator {
-            Method::Ros34pw2 => (self.implicit_tolerance(), self.implicit_tolerance()),
-            _ => (self.explicit_tolerance(), self.explicit_tolerance()),
-        };
-        match self.integrator {
-            Method::Auto => Integrator::Auto {
-                explicit_tolerance: self.explicit_tolerance(),
-                implicit_tolerance: self.implicit_tolerance(),
-                max_step,
-            },
-            Method::Bs23 => Integrator::Bs23 {
-                rtol,
-                atol,
-                max_step,
-            },
-            Method::Dopri5 => Integrator::Dopri5 {
-                rtol,
-                atol,
-                max_step,
-            },
-            Method::Ros34pw2 => Integrator::Ros34pw2 {
-                rtol,
-                atol,
-                max_step,
-            },
-        }
-    }
+/// A parser of the names in `table` (listed by `--help`), each parsed by
+/// the runtime's `FromStr` of its type.
+fn named<T>(table: &[(&'static str, T)]) -> impl TypedValueParser<Value = T>
+where
+    T: std::str::FromStr<Err = String> + Clone + Send + Sync + 'static,
+{
+    let names: Vec<&'static str> = table.iter().map(|(name, _)| *name).collect();
+    PossibleValuesParser::new(names).try_map(|s: String| s.parse::<T>())
+}
 
-    /// The target speed (m/s) against time (s): 0 while settling, then a
-    /// linear ramp to `--speed` over `--ramp` s; a ramp of 0 s is a step
-    /// at the end of settling.
-    pub fn speed_profile(&self) -> impl Fn(f64) -> f64 + Send + 'static {
-        trackgen::vehicle::speed_ramp(self.settle, self.ramp, self.speed)
-    }
+/// `rigid`, or a soil of Wong's table.
+fn soil(s: &str) -> Result<Soil, String> {
+    s.parse()
 }
 
 /// A finite number in `[lo, hi]`, or why not (`what` names the range).

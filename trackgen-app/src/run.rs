@@ -17,12 +17,13 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::multibody::PartKind;
+use trackgen::scenario::Start;
 use trackgen::scene::{self, Scene};
 use trackgen::simulate::{Background, Output, RideSink, StreamFailure, simulate_into};
 use trackgen::system::Simulated;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
-use crate::cli::{Ground, RunArgs, Start};
+use crate::cli::RunArgs;
 use crate::console::say;
 use crate::modes;
 use crate::offered::Offered;
@@ -83,28 +84,20 @@ fn about<V: Vehicle>() -> String {
     format!("{} (one side): {}", V::NAME, words.join(", "))
 }
 
-/// Assembles the vehicle `V` with the options given (`engine`: its
-/// powertrain, used with `--engine`), runs it, streaming its outputs, and
-/// reports.
+/// Assembles the vehicle `V` for the scenario the options name (through
+/// `entry`'s powertrain with `--engine`), runs it, streaming its outputs,
+/// and reports.
 fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Error>> {
-    let engine = if args.engine {
+    let scenario = args.scenario();
+    let engine = if scenario.engine {
         Some(entry.engine()?)
     } else {
         None
     };
-    let course = args.course();
-    let terrain = course.terrain()?;
+    let course = &scenario.course;
+    let terrain = scenario.terrain()?;
     let assembling = Instant::now();
-    let config = || {
-        let mut config = V::declared_config(terrain.clone(), V::speed_drive(args.speed_profile()));
-        if let Ground::Soil(soil) = args.terrain {
-            config.soil = Some(soil.soil());
-        }
-        if let Some(engine) = &engine {
-            config.powertrain = Some(engine.clone());
-        }
-        config
-    };
+    let config = || scenario.config::<V>(terrain.clone(), engine.clone());
     let mut system = V::system_with(config())?;
     let assembly = assembling.elapsed().as_secs_f64();
     let about = about::<V>();
@@ -123,8 +116,8 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
 
     // The ride at the seat, from the end of the speed ramp on, when the
     // rows resolve its band.
-    if args.output_every <= RideSink::MAX_INTERVAL {
-        outputs.recorders.ride = Some(RideSink::new(args.output_every, args.settle + args.ramp)?);
+    if scenario.output_every <= RideSink::MAX_INTERVAL {
+        outputs.recorders.ride = Some(RideSink::new(scenario.output_every, scenario.at_speed())?);
     }
 
     say!("{about}");
@@ -138,7 +131,7 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
     };
     let mut extra_files = Vec::new();
     let mut hull_modes = Vec::new();
-    if args.start == Start::Equilibrium || args.modes {
+    if scenario.start == Start::Equilibrium || args.modes {
         // Finding the rest may switch the track's partition: a run from the
         // assembled start needs a vehicle that has not been moved.
         let mut resting = V::system_with(config())?;
@@ -147,25 +140,25 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
             (extra_files, hull_modes) =
                 modes::report::<V>(&mut resting, &rest, outputs.dir(), &rest_ground)?;
         }
-        if args.start == Start::Equilibrium {
+        if scenario.start == Start::Equilibrium {
             system = resting;
             system.set_start(rest.state.as_slice())?;
         }
     }
-    let ramp = if args.ramp > 0.0 {
-        format!("in {:.1} s", args.ramp)
+    let ramp = if scenario.ramp > 0.0 {
+        format!("in {:.1} s", scenario.ramp)
     } else {
         "at once".to_string()
     };
     say!(
         "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {}; {:.1} s in all",
-        args.terrain,
-        args.settle,
-        args.speed,
+        scenario.soil,
+        scenario.settle,
+        scenario.speed,
         course.describe(),
-        args.duration
+        scenario.duration
     );
-    let bar = ProgressBar::new((args.duration * 1000.0) as u64);
+    let bar = ProgressBar::new((scenario.duration * 1000.0) as u64);
     bar.set_style(ProgressStyle::with_template(
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
     )?);
@@ -178,10 +171,10 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
         let mut sink = Background::spawn(scope, move || recorders.sink());
         simulate_into(
             &mut system,
-            args.integrator(),
+            scenario.integrator(),
             0.0,
-            args.duration,
-            Output::Every(args.output_every),
+            scenario.duration,
+            Output::Every(scenario.output_every),
             &mut sink,
             &mut |t| bar.set_position((t * 1000.0) as u64),
         )
@@ -199,12 +192,12 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
     // A run that stopped at its start has nothing to summarise or draw.
     let started = report.rows >= 2;
     let written = if started {
-        let tolerance = args.books_tolerance(report.stats.implicit);
+        let tolerance = scenario.books_tolerance(report.stats.implicit);
         report::print(&outputs.recorders.summary, &report, wall, tolerance);
-        if args.engine {
+        if scenario.engine {
             report::engine(&outputs.recorders.summary);
         }
-        report::ride(outputs.recorders.ride.as_ref(), args.output_every);
+        report::ride(outputs.recorders.ride.as_ref(), scenario.output_every);
         if let Some(ride) = outputs.recorders.ride.as_ref() {
             let pitch = <V as Vehicle>::System::track_description().pitch().ok();
             extra_files.extend(report::seat_spectrum(

@@ -413,7 +413,7 @@ fn m113_refuses_a_start_inside_the_ground() {
     assert!(!out_dir.exists(), "no files are written");
 }
 
-/// `--terrain dry-sand`: the M113 on soft soil sinks centimetres (on rigid
+/// `--soil dry-sand`: the M113 on soft soil sinks centimetres (on rigid
 /// ground, millimetres) and the run writes its outputs; `--vehicle
 /// marder` on rigid ground writes the Marder's.
 #[test]
@@ -423,7 +423,7 @@ fn m113_drives_on_soft_soil_and_the_marder_runs() {
     let out = run(
         &m113,
         &[
-            "--terrain",
+            "--soil",
             "dry-sand",
             "--settle",
             "0.3",
@@ -436,7 +436,7 @@ fn m113_drives_on_soft_soil_and_the_marder_runs() {
         ],
         &dir,
     );
-    assert_success("m113 --terrain dry-sand", &out);
+    assert_success("m113 --soil dry-sand", &out);
     assert!(
         text(&out.stdout).contains("on dry-sand soil"),
         "{}",
@@ -516,10 +516,7 @@ fn m113_rejects_bad_options() {
             &["--bump-height", "-0.5 to 0.5 m"],
         ),
         (&["--bump-at", "inf"], &["--bump-at", "-10000 to 10000 m"]),
-        (
-            &["--terrain", "mud"],
-            &["--terrain", "mud", "rigid", "dry-sand"],
-        ),
+        (&["--soil", "mud"], &["--soil", "mud", "rigid", "dry-sand"]),
         (
             &["--vehicle", "tiger"],
             &["--vehicle", "tiger", "m113", "marder"],
@@ -593,10 +590,7 @@ fn m113_drives_a_terrain_file_a_random_course_and_an_obstacle() {
     std::fs::write(&file, "x,z\n-50,0\n10,0\n10,0.15\n60,0.15\n").unwrap();
     let short = ["--duration", "0.3", "--settle", "0.1", "--ramp", "0.1"];
     let cases: [(&[&str], &str); 3] = [
-        (
-            &["--terrain-file", file.to_str().unwrap()],
-            "the profile of",
-        ),
+        (&["--course-file", file.to_str().unwrap()], "the profile of"),
         (&["--roughness", "C", "--seed", "7"], "ISO 8608 class C"),
         (
             &["--obstacle", "half-round:0.2"],
@@ -618,7 +612,7 @@ fn m113_drives_a_terrain_file_a_random_course_and_an_obstacle() {
     let refused = run(
         &m113,
         &[
-            "--terrain-file",
+            "--course-file",
             bad.to_str().unwrap(),
             "--out",
             out.to_str().unwrap(),

@@ -1,5 +1,6 @@
 //! The main binary's subcommands: `run` is the default (the same files,
-//! byte for byte, with or without the word), `modes` writes the modes that
+//! byte for byte, with or without the word, and under the options'
+//! earlier names), `modes` writes the modes that
 //! `run --modes` writes, `fmu` refuses a file that is no FMU library, and
 //! a bad subcommand or vehicle is refused, naming it (exit status 2,
 //! nothing run).
@@ -42,6 +43,42 @@ fn run_is_the_default_subcommand() {
         assert!(
             a == b,
             "{file} differs between `trackgen` and `trackgen run`"
+        );
+    }
+}
+
+/// The options' earlier names, `--terrain` (now `--soil`) and
+/// `--terrain-file` (now `--course-file`), still work: the same files,
+/// byte for byte.
+#[test]
+fn the_earlier_option_names_still_work() {
+    let dir = scratch("earlier-names");
+    let profile = dir.join("ground.csv");
+    std::fs::write(&profile, "x,z\n-10,0\n3,0\n4,0.05\n30,0.05\n").unwrap();
+    let runs = [
+        ("old", ["--terrain", "dry-sand", "--terrain-file"]),
+        ("new", ["--soil", "dry-sand", "--course-file"]),
+    ];
+    for (name, [soil, preset, file]) in runs {
+        let out = dir.join(name);
+        let args = [
+            soil,
+            preset,
+            file,
+            path(&profile),
+            "--duration",
+            "0.2",
+            "--out",
+            path(&out),
+        ];
+        assert_success(name, &run(&binary(), &args, &dir));
+    }
+    for file in ["m113.csv", "all.csv"] {
+        let a = std::fs::read(dir.join("old").join(file)).expect(file);
+        let b = std::fs::read(dir.join("new").join(file)).expect(file);
+        assert!(
+            a == b,
+            "{file} differs between the earlier and the new names"
         );
     }
 }

@@ -14,17 +14,17 @@
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use trackgen::contact::Terrain;
 use trackgen::contact::course::{self, CourseSpec};
 use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
+use trackgen::scenario::{Method, Scenario, Soil};
 use trackgen::simulate::{DISSIPATED, ENERGY, EnergyBalance, MOTOR_WORK, March};
 use trackgen::system::Simulated;
-use trackgen::vehicle::{Drive, Powertrain, Vehicle, VehicleDynamics, speed_ramp};
+use trackgen::vehicle::{Drive, Powertrain, Vehicle, VehicleDynamics};
 
 use crate::error::FmuError;
-use crate::variables::{self, Causality, Input, Kind, Role, Setting, Start, Variable, defaults};
+use crate::variables::{self, Causality, Input, Kind, Role, Setting, Start, Variable};
 
 /// Where the instance is in FMI's state machine.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -474,25 +474,64 @@ impl<V: Vehicle> Instance<V> {
     /// most 10 ms) at the `tolerance` parameter, else the master's, else
     /// the main job's defaults.
     fn integrator(&self) -> Integrator {
-        let tolerance = Some(self.number(Setting::Tolerance))
-            .filter(|t| *t > 0.0)
-            .or(self.master_tolerance);
-        Integrator::Auto {
-            explicit_tolerance: tolerance.unwrap_or(defaults::EXPLICIT_TOLERANCE),
-            implicit_tolerance: tolerance.unwrap_or(defaults::IMPLICIT_TOLERANCE),
-            max_step: defaults::MAX_STEP,
+        Scenario {
+            method: Method::Auto,
+            tolerance: self.tolerance(),
+            ..Scenario::default()
         }
+        .integrator()
+    }
+
+    /// The `tolerance` parameter where it is set (above 0), else the
+    /// master's.
+    fn tolerance(&self) -> Option<f64> {
+        Some(self.number(Setting::Tolerance))
+            .filter(|t| *t > 0.0)
+            .or(self.master_tolerance)
+    }
+
+    /// The run the parameters name, as the main job's [`Scenario`]: the
+    /// course, the soil, the speed profile, the engine and the integrator
+    /// (`auto` at the `tolerance` parameter, else the master's, else the
+    /// defaults). The master, not the scenario, sets the duration and the
+    /// communication points. With every parameter at its start value,
+    /// [`Scenario::default`] (a test holds them to it).
+    pub fn scenario(&self) -> Result<Scenario, FmuError> {
+        Ok(Scenario {
+            course: self.course()?,
+            soil: self.soil()?,
+            speed: self.number(Setting::Speed),
+            settle: self.number(Setting::Settle),
+            ramp: self.number(Setting::Ramp),
+            engine: self.integers[self.setting(Setting::Engine)] == 1,
+            method: Method::Auto,
+            tolerance: self.tolerance(),
+            ..Scenario::default()
+        })
+    }
+
+    /// The soil the `soil` parameter names.
+    fn soil(&self) -> Result<Soil, FmuError> {
+        let name = self.text(Setting::Soil);
+        name.parse().map_err(|_| {
+            self.refuse_text(
+                "soil",
+                &name,
+                &format!("rigid or one of {}", SoilPreset::names()),
+            )
+        })
     }
 
     /// The course the parameters name.
     fn course(&self) -> Result<CourseSpec, FmuError> {
-        let terrain = self.text(Setting::Terrain);
-        Ok(match terrain {
+        let course = self.text(Setting::Course);
+        Ok(match course {
+            "flat" => CourseSpec::Flat,
             "bump" => CourseSpec::Bump {
                 at: self.number(Setting::BumpAt),
                 height: self.number(Setting::BumpHeight),
             },
-            "file" => CourseSpec::File(self.text(Setting::TerrainFile).into()),
+            "file" => CourseSpec::File(self.text(Setting::CourseFile).into()),
             "random" => {
                 let roughness =
                     course::roughness(self.text(Setting::Roughness)).map_err(|why| {
@@ -523,7 +562,7 @@ impl<V: Vehicle> Instance<V> {
             },
             other => {
                 return Err(self.refuse_text(
-                    "terrain",
+                    "course",
                     &other,
                     "one of flat, bump, file, random, obstacle",
                 ));
@@ -533,22 +572,12 @@ impl<V: Vehicle> Instance<V> {
 
     /// The vehicle's configuration from the parameters.
     fn config(&self) -> Result<trackgen::vehicle::VehicleConfig, FmuError> {
-        let terrain = match self.text(Setting::Terrain) {
-            "flat" => Terrain::Flat { height: 0.0 },
-            _ => self
-                .course()?
-                .terrain()
-                .map_err(|e| FmuError::Build(e.to_string()))?,
-        };
+        let scenario = self.scenario()?;
+        let terrain = scenario
+            .terrain()
+            .map_err(|e| FmuError::Build(e.to_string()))?;
         let drive = match self.text(Setting::Drive) {
-            "profile" => {
-                let (settle, ramp, speed) = (
-                    self.number(Setting::Settle),
-                    self.number(Setting::Ramp),
-                    self.number(Setting::Speed),
-                );
-                V::speed_drive(speed_ramp(settle, ramp, speed))
-            }
+            "profile" => V::speed_drive(scenario.speed_profile()),
             "speed" => {
                 let cells = Arc::clone(&self.cells);
                 V::speed_drive(move |_| Cells::get(&cells.target_speed))
@@ -561,29 +590,19 @@ impl<V: Vehicle> Instance<V> {
                 return Err(self.refuse_text("drive", &other, "one of profile, speed, torque"));
             }
         };
-        let mut config = V::declared_config(terrain, drive);
-        if self.integers[self.setting(Setting::Engine)] == 1 {
-            config.powertrain = Some(self.engine.clone().ok_or_else(|| {
+        let powertrain = if scenario.engine {
+            Some(self.engine.clone().ok_or_else(|| {
                 self.refuse_text(
                     "engine",
                     &1,
-                    "this FMU was exported without an engine (export_fmu!'s powertrain)",
+                    "this FMU has no engine: its vehicle declares no powertrain and export_fmu! \
+                     was given none",
                 )
-            })?);
-        }
-        match self.text(Setting::Soil) {
-            "rigid" => {}
-            name => {
-                let preset: SoilPreset = name.parse().map_err(|_| {
-                    self.refuse_text(
-                        "soil",
-                        &name,
-                        &format!("rigid or one of {}", SoilPreset::names()),
-                    )
-                })?;
-                config.soil = Some(preset.soil());
-            }
-        }
+            })?)
+        } else {
+            None
+        };
+        let mut config = scenario.config_with::<V>(terrain, drive, powertrain);
         for (i, (_, body)) in variables::arm_names::<V>().iter().enumerate() {
             let value = |role: Role| {
                 let k = self
@@ -734,7 +753,7 @@ fn check_string(setting: Setting, name: &str, value: &str) -> Result<(), FmuErro
         why,
     };
     match setting {
-        Setting::Terrain => ["flat", "bump", "file", "random", "obstacle"]
+        Setting::Course => ["flat", "bump", "file", "random", "obstacle"]
             .contains(&value)
             .then_some(())
             .ok_or_else(|| refuse("one of flat, bump, file, random, obstacle".into())),

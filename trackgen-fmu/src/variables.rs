@@ -2,6 +2,7 @@
 //! the model description and the instance read, so the two cannot
 //! disagree on a value reference.
 
+use trackgen::scenario::Scenario;
 use trackgen::system::Simulated;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
@@ -68,14 +69,14 @@ pub enum Role {
 /// The run's settings, as parameters.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Setting {
-    /// `terrain`: flat, bump, file, random or obstacle.
-    Terrain,
+    /// `course`: flat, bump, file, random or obstacle.
+    Course,
     /// `bump_height`, m.
     BumpHeight,
     /// `bump_at`, m.
     BumpAt,
-    /// `terrain_file`: a profile CSV.
-    TerrainFile,
+    /// `course_file`: a profile CSV.
+    CourseFile,
     /// `roughness`: ISO 8608 class or RMS with its unit.
     Roughness,
     /// `seed`.
@@ -134,32 +135,6 @@ pub struct Variable {
     pub role: Role,
 }
 
-/// The default course's bump and the main job's drive: the FMU's
-/// defaults are the main job's (`trackgen-cli`'s `--help`), so a default
-/// FMU run is the main job's run.
-pub mod defaults {
-    use trackgen::integrate::Integrator;
-
-    /// Bump height, m.
-    pub const BUMP_HEIGHT: f64 = 0.1;
-    /// Bump centre, m.
-    pub const BUMP_AT: f64 = 12.0;
-    /// Target speed, m/s.
-    pub const SPEED: f64 = 3.0;
-    /// Settling time, s.
-    pub const SETTLE: f64 = 1.0;
-    /// Ramp time, s.
-    pub const RAMP: f64 = 2.0;
-    /// Bogacki–Shampine's and Dormand–Prince's tolerance.
-    pub const EXPLICIT_TOLERANCE: f64 = Integrator::DEFAULT_EXPLICIT_TOLERANCE;
-    /// ROS34PW2's tolerance.
-    pub const IMPLICIT_TOLERANCE: f64 = Integrator::DEFAULT_IMPLICIT_TOLERANCE;
-    /// The longest step, s.
-    pub const MAX_STEP: f64 = Integrator::DEFAULT_MAX_STEP;
-    /// Where an obstacle starts, m.
-    pub const OBSTACLE_AT: f64 = 12.0;
-}
-
 /// The table for the vehicle `V`: parameters, inputs, then one output per
 /// recorded column and the books' residual. The columns are those of the
 /// vehicle built with its declared configuration on flat ground; building
@@ -203,19 +178,19 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
     use Setting as S;
     let settings: [(&str, Kind, &'static str, &str, Start, Setting); 16] = [
         (
-            "terrain",
+            "course",
             Kind::String,
             "",
-            "the course: flat, bump (a cosine bump 1 m wide), file (terrain_file), random (roughness, seed, course_length) or obstacle (obstacle, obstacle_at)",
+            "the course: flat, bump (a cosine bump 1 m wide), file (course_file), random (roughness, seed, course_length) or obstacle (obstacle, obstacle_at)",
             Start::String("bump".into()),
-            S::Terrain,
+            S::Course,
         ),
         (
             "bump_height",
             Kind::Float64,
             "m",
             "the bump's height (negative: a dip), -0.5 to 0.5",
-            Start::Float64(defaults::BUMP_HEIGHT),
+            Start::Float64(Scenario::BUMP_HEIGHT),
             S::BumpHeight,
         ),
         (
@@ -223,22 +198,22 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             "m",
             "the bump's centre, -10000 to 10000",
-            Start::Float64(defaults::BUMP_AT),
+            Start::Float64(Scenario::BUMP_AT),
             S::BumpAt,
         ),
         (
-            "terrain_file",
+            "course_file",
             Kind::String,
             "",
-            "a profile CSV (header x,z, metres, x never decreasing) for terrain = file",
+            "a profile CSV (header x,z, metres, x never decreasing) for course = file",
             Start::String(String::new()),
-            S::TerrainFile,
+            S::CourseFile,
         ),
         (
             "roughness",
             Kind::String,
             "",
-            "for terrain = random: an ISO 8608 class A to H, or a detrended RMS elevation with its unit (1in, 25mm, 0.03m)",
+            "for course = random: an ISO 8608 class A to H, or a detrended RMS elevation with its unit (1in, 25mm, 0.03m)",
             Start::String("1in".into()),
             S::Roughness,
         ),
@@ -262,7 +237,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             "obstacle",
             Kind::String,
             "",
-            "for terrain = obstacle: half-round:R, step:H, gap:WIDTH:DEPTH, ditch:DEPTH:BOTTOM:ANGLE, barrier:HEIGHT:TOP:ANGLE or grade:SLOPE:LENGTH (m, degrees)",
+            "for course = obstacle: half-round:R, step:H, gap:WIDTH:DEPTH, ditch:DEPTH:BOTTOM:ANGLE, barrier:HEIGHT:TOP:ANGLE or grade:SLOPE:LENGTH (m, degrees)",
             Start::String("step:0.2".into()),
             S::Obstacle,
         ),
@@ -271,7 +246,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             "m",
             "where the obstacle starts, -10000 to 10000",
-            Start::Float64(defaults::OBSTACLE_AT),
+            Start::Float64(Scenario::OBSTACLE_AT),
             S::ObstacleAt,
         ),
         (
@@ -303,7 +278,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             "m/s",
             "drive = profile: the target speed, -20 to 20",
-            Start::Float64(defaults::SPEED),
+            Start::Float64(Scenario::SPEED),
             S::Speed,
         ),
         (
@@ -311,7 +286,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             "s",
             "drive = profile: the time at rest before the ramp, 0 to 1e6",
-            Start::Float64(defaults::SETTLE),
+            Start::Float64(Scenario::SETTLE),
             S::Settle,
         ),
         (
@@ -319,7 +294,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Kind::Float64,
             "s",
             "drive = profile: the ramp's duration, 0 to 1e6 (0: a step)",
-            Start::Float64(defaults::RAMP),
+            Start::Float64(Scenario::RAMP),
             S::Ramp,
         ),
         (

@@ -4,6 +4,7 @@
 
 use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
+use trackgen::scenario::Scenario;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::vehicle::{Vehicle, VehicleConfig, speed_ramp};
 use trackgen::vehicles::m113::M113;
@@ -86,6 +87,27 @@ fn assert_same(fmu: &[Vec<f64>], native: &Results) {
     }
 }
 
+/// The FMU's parameters at their start values name the main job's run:
+/// the instance's scenario is `Scenario::default()`, and that scenario's
+/// configuration runs bit for bit as this file's main job, written out
+/// from the guide's figures (the bump 0.1 m high at 12 m, the ramp to
+/// 3 m/s from 1 s over 2 s), and through the FMU.
+#[test]
+fn the_default_parameters_are_the_main_jobs_scenario() {
+    let mut instance = Instance::<M113>::new().unwrap();
+    let scenario = instance.scenario().unwrap();
+    assert_eq!(scenario, Scenario::default());
+    let config = scenario.config::<M113>(scenario.terrain().unwrap(), None);
+    let from_scenario = native(config, 1.5, 0.01);
+    let fmu = run_fmu(&mut instance, 1.5, 0.01);
+    assert_same(&fmu, &from_scenario);
+    let written_out = native(main_job_config(), 1.5, 0.01);
+    let rows: Vec<Vec<f64>> = (0..written_out.len())
+        .map(|i| written_out.sample(i).values.to_vec())
+        .collect();
+    assert_same(&rows, &from_scenario);
+}
+
 /// The FMU's outputs are the native run's bit for bit: the same steps (to
 /// the stop time, never clipped at a communication point), the same
 /// dense output. At 10 ms (the main job's rows; a step covers at most one
@@ -143,7 +165,7 @@ fn spring_rates_are_parameters() {
 fn speed_input_changes_at_communication_points() {
     let start = |instance: &mut Instance<M113>| {
         instance.set_string(reference("drive"), "speed").unwrap();
-        instance.set_string(reference("terrain"), "flat").unwrap();
+        instance.set_string(reference("course"), "flat").unwrap();
         instance
             .set_f64(&[reference("target_speed")], &[1.0])
             .unwrap();
@@ -227,7 +249,7 @@ fn bad_values_are_refused_by_name() {
         );
     }
     let strings = [
-        ("terrain", "moon"),
+        ("course", "moon"),
         ("soil", "mud"),
         ("roughness", "rough"),
         ("obstacle", "step"),
@@ -243,16 +265,16 @@ fn bad_values_are_refused_by_name() {
     assert!(instance.get_f64(&[100_000], &mut [0.0]).is_err());
     assert!(instance.get_string(reference("x")).is_err());
     // A file that is not there: an error when the vehicle is built.
-    instance.set_string(reference("terrain"), "file").unwrap();
+    instance.set_string(reference("course"), "file").unwrap();
     instance
-        .set_string(reference("terrain_file"), "/nonexistent.csv")
+        .set_string(reference("course_file"), "/nonexistent.csv")
         .unwrap();
     instance.setup_experiment(None, 0.0, Some(1.0)).unwrap();
     instance.enter_initialization().unwrap();
     let e = instance.exit_initialization().unwrap_err();
     assert!(e.to_string().contains("/nonexistent.csv"), "{e}");
     // Still usable: a good terrain, and it runs.
-    instance.set_string(reference("terrain"), "flat").unwrap();
+    instance.set_string(reference("course"), "flat").unwrap();
     instance.exit_initialization().unwrap();
     assert_eq!(instance.mode(), Mode::Step);
     // Parameters are fixed once it runs; the time must be the one reached.
@@ -272,18 +294,18 @@ fn bad_values_are_refused_by_name() {
         .get_f64(&[reference("bump_height")], &mut height)
         .unwrap();
     assert_eq!(height[0], 0.1);
-    assert_eq!(instance.get_string(reference("terrain")).unwrap(), "bump");
+    assert_eq!(instance.get_string(reference("course")).unwrap(), "bump");
 }
 
 /// A random course, an obstacle and soft soil build and run (their syntax
 /// is the main job's).
 #[test]
-fn every_terrain_kind_runs() {
+fn every_course_kind_runs() {
     let cases: [&[(&str, &str)]; 4] = [
-        &[("terrain", "random"), ("roughness", "C")],
-        &[("terrain", "obstacle"), ("obstacle", "half-round:0.2")],
-        &[("terrain", "flat"), ("soil", "dry-sand")],
-        &[("terrain", "flat"), ("drive", "torque")],
+        &[("course", "random"), ("roughness", "C")],
+        &[("course", "obstacle"), ("obstacle", "half-round:0.2")],
+        &[("course", "flat"), ("soil", "dry-sand")],
+        &[("course", "flat"), ("drive", "torque")],
     ];
     for case in cases {
         let mut instance = Instance::<M113>::new().unwrap();
@@ -397,7 +419,7 @@ fn engine_parameter_drives_through_the_powertrain() {
     without.setup_experiment(None, 0.0, Some(1.0)).unwrap();
     without.enter_initialization().unwrap();
     let e = without.exit_initialization().unwrap_err();
-    assert!(e.to_string().contains("without an engine"), "{e}");
+    assert!(e.to_string().contains("has no engine"), "{e}");
 
     let powertrain = trackgen::vehicles::m113::powertrain();
     let mut with = Instance::<M113>::with_engine(Some(powertrain.clone())).unwrap();

@@ -44,7 +44,10 @@
 //! 10. [`mobility`]: the mobility engineer's events over any declared
 //!     vehicle (ride over random terrain, half-round, step, gap, ditch,
 //!     barrier, grade), each a limit found by bracketing over runs, the
-//!     vehicle drawn at each obstacle's limit.
+//!     vehicle drawn at each obstacle's limit; [`scenario`]: one owner of
+//!     a run (its course, soil, drive, integrator, output and duration, the
+//!     main job's by default), from which the main job and the FMU build
+//!     their runs.
 //!
 //! With the `oracle` feature, `reference` (the textbook route: dense `H`
 //! of the paper's eq. (6) and (11), `Hᵀ M H`, `Hᵀ (Q − M γ)`), the generic
@@ -82,6 +85,7 @@ pub mod vehicle;
 // 9. drivers
 pub mod analysis;
 pub mod mobility;
+pub mod scenario;
 pub mod scene;
 pub mod simulate;
 

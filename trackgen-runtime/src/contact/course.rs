@@ -55,6 +55,8 @@ pub enum Roughness {
 /// The ground's profile.
 #[derive(Debug, Clone, PartialEq)]
 pub enum CourseSpec {
+    /// Flat ground at height 0.
+    Flat,
     /// A cosine bump (a dip if the height is negative) 1 m wide.
     Bump {
         /// Its centre, m.
@@ -87,6 +89,7 @@ impl CourseSpec {
     /// Errors name the file and line, or the parameter and its range.
     pub fn terrain(&self) -> Result<Terrain, CourseError> {
         Ok(match self {
+            CourseSpec::Flat => Terrain::Flat { height: 0.0 },
             CourseSpec::Bump { at, height } => Terrain::Bump {
                 centre: *at,
                 width: 1.0,
@@ -124,6 +127,7 @@ impl CourseSpec {
     /// x = 12.0 m`.
     pub fn describe(&self) -> String {
         match self {
+            CourseSpec::Flat => "flat ground".to_string(),
             CourseSpec::Bump { at, height } => format!(
                 "{} {:.2} m {} at x = {at:.1} m",
                 if *height < 0.0 { "dip" } else { "bump" },
@@ -158,6 +162,7 @@ impl CourseSpec {
         match self {
             CourseSpec::Bump { height, .. } if *height < 0.0 => "through a dip".to_string(),
             CourseSpec::Bump { .. } => "over a bump".to_string(),
+            CourseSpec::Flat => "on flat ground".to_string(),
             CourseSpec::File(_) => "over a surveyed profile".to_string(),
             CourseSpec::Rough { .. } => "over rough ground".to_string(),
             CourseSpec::Obstacle { obstacle, .. } => format!("at {}", describe_obstacle(obstacle)),
@@ -170,7 +175,7 @@ impl CourseSpec {
     pub fn focus(&self) -> f64 {
         match self {
             CourseSpec::Bump { at, .. } | CourseSpec::Obstacle { at, .. } => at - 1.0,
-            CourseSpec::File(_) | CourseSpec::Rough { .. } => 0.0,
+            CourseSpec::Flat | CourseSpec::File(_) | CourseSpec::Rough { .. } => 0.0,
         }
     }
 }
