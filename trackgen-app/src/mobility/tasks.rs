@@ -220,49 +220,7 @@ pub(super) fn tasks<'a, V: Vehicle>(
                     None,
                     quantity::STEEPEST_GRADE,
                     "rise over run",
-                    Box::new(move || {
-                        let steepest = grade::steepest::<V>(settings, footprint)?;
-                        let climbed = match steepest.limit {
-                            Limit::Found { passed, .. } => passed,
-                            Limit::Beyond { end } => end,
-                            Limit::Before { .. } => 0.0,
-                        };
-                        let mut runs = steepest.runs();
-                        let mut points = vec![(
-                            None,
-                            quantity::STEEPEST_GRADE,
-                            steepest.limit.value(),
-                            steepest.limit.relation(),
-                            "rise over run",
-                        )];
-                        for &g in grades {
-                            let parameter = Some(("grade", g, "rise over run"));
-                            if g > climbed {
-                                points.push((
-                                    parameter,
-                                    "speed at full power",
-                                    0.0,
-                                    "stalls",
-                                    "m/s",
-                                ));
-                                continue;
-                            }
-                            let climb = grade::speed_on::<V>(settings, footprint, g)?;
-                            runs += 1;
-                            points.push((
-                                parameter,
-                                "speed at full power",
-                                climb.speed,
-                                "=",
-                                "m/s",
-                            ));
-                        }
-                        Ok(Found::Curve {
-                            points,
-                            runs,
-                            search: Some(steepest),
-                        })
-                    }),
+                    Box::new(move || grade_curve::<V>(settings, footprint, grades)),
                 ));
             }
             "soil" => {
@@ -277,43 +235,7 @@ pub(super) fn tasks<'a, V: Vehicle>(
                         None,
                         "drawbar curve",
                         "",
-                        Box::new(move || {
-                            let curve = soil::drawbar_curve::<V>(settings, preset, fractions)?;
-                            let name = preset.name();
-                            let mut points = vec![(
-                                Some((name, 0.0, "drawbar pull / weight")),
-                                "motion resistance / weight",
-                                curve[0].resistance_coefficient(),
-                                if curve[0].held { "=" } else { "not held" },
-                                "",
-                            )];
-                            for p in &curve[1..] {
-                                // A load the drive could not hold is no point
-                                // of the soil's curve.
-                                points.push((
-                                    Some((name, p.pull / curve[0].weight, "drawbar pull / weight")),
-                                    "slip",
-                                    if p.held && p.slip < 1.0 {
-                                        p.slip
-                                    } else {
-                                        f64::NAN
-                                    },
-                                    // A slip of 1 or more: the load drags the
-                                    // vehicle back, beyond what the soil holds.
-                                    match (p.held, p.slip < 1.0) {
-                                        (false, _) => "not held",
-                                        (true, false) => "dragged back",
-                                        (true, true) => "=",
-                                    },
-                                    "",
-                                ));
-                            }
-                            Ok(Found::Curve {
-                                runs: curve.len(),
-                                points,
-                                search: None,
-                            })
-                        }),
+                        Box::new(move || soil_curve::<V>(settings, preset, fractions)),
                     ));
                 }
             }
@@ -321,4 +243,88 @@ pub(super) fn tasks<'a, V: Vehicle>(
         }
     }
     out
+}
+
+/// The steepest grade climbed, then the speed at full power on each of
+/// `grades` no steeper (a steady speed up a steeper one is 0: it is not
+/// climbed even from a crawl at full load, so the runs that would only
+/// stall are not made).
+fn grade_curve<V: Vehicle>(
+    settings: &EventSettings,
+    footprint: &Footprint,
+    grades: &[f64],
+) -> Result<Found, EventError> {
+    let steepest = grade::steepest::<V>(settings, footprint)?;
+    let climbed = match steepest.limit {
+        Limit::Found { passed, .. } => passed,
+        Limit::Beyond { end } => end,
+        Limit::Before { .. } => 0.0,
+    };
+    let mut runs = steepest.runs();
+    let mut points = vec![(
+        None,
+        quantity::STEEPEST_GRADE,
+        steepest.limit.value(),
+        steepest.limit.relation(),
+        "rise over run",
+    )];
+    for &g in grades {
+        let parameter = Some(("grade", g, "rise over run"));
+        if g > climbed {
+            points.push((parameter, "speed at full power", 0.0, "stalls", "m/s"));
+            continue;
+        }
+        let climb = grade::speed_on::<V>(settings, footprint, g)?;
+        runs += 1;
+        points.push((parameter, "speed at full power", climb.speed, "=", "m/s"));
+    }
+    Ok(Found::Curve {
+        points,
+        runs,
+        search: Some(steepest),
+    })
+}
+
+/// The motion resistance on `preset` and the slip at each drawbar load
+/// (`fractions` of the weight).
+fn soil_curve<V: Vehicle>(
+    settings: &EventSettings,
+    preset: SoilPreset,
+    fractions: &[f64],
+) -> Result<Found, EventError> {
+    let curve = soil::drawbar_curve::<V>(settings, preset, fractions)?;
+    let name = preset.name();
+    let mut points = vec![(
+        Some((name, 0.0, "drawbar pull / weight")),
+        "motion resistance / weight",
+        curve[0].resistance_coefficient(),
+        if curve[0].held { "=" } else { "not held" },
+        "",
+    )];
+    for p in &curve[1..] {
+        // A load the drive could not hold is no point
+        // of the soil's curve.
+        points.push((
+            Some((name, p.pull / curve[0].weight, "drawbar pull / weight")),
+            "slip",
+            if p.held && p.slip < 1.0 {
+                p.slip
+            } else {
+                f64::NAN
+            },
+            // A slip of 1 or more: the load drags the
+            // vehicle back, beyond what the soil holds.
+            match (p.held, p.slip < 1.0) {
+                (false, _) => "not held",
+                (true, false) => "dragged back",
+                (true, true) => "=",
+            },
+            "",
+        ));
+    }
+    Ok(Found::Curve {
+        runs: curve.len(),
+        points,
+        search: None,
+    })
 }
