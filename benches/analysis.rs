@@ -22,12 +22,12 @@ use criterion::{BatchSize, BenchmarkGroup, Criterion, criterion_group, criterion
 use std::hint::black_box;
 use std::time::Duration;
 use trackgen::analysis::{EquilibriumOptions, equilibrium, state_jacobian};
-use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::dynamics::track_jacobian;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::multibody::TrackModel;
 use trackgen::simulate::{Output, simulate};
 use trackgen::system::Simulated;
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, m113::M113System};
 use trackgen_benches::{Track64, Track128, driven, state};

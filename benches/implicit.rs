@@ -9,8 +9,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use std::hint::black_box;
-use trackgen::contact::Terrain;
 use trackgen::integrate::OdeSystem;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::marder::Marder;
 use trackgen_benches::driven;

@@ -7,8 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use trackgen::contact::profile::Profile;
-use trackgen::contact::roughness::{Iso8608Class, RoughCourse, Spectrum};
+use trackgen::terrain::profile::Profile;
+use trackgen::terrain::roughness::{Iso8608Class, RoughCourse, Spectrum};
 
 /// A 10 km course at 5 cm spacing, as a CSV file's bytes.
 fn ten_kilometres() -> Vec<u8> {

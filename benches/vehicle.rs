@@ -17,9 +17,9 @@ use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use rayon::prelude::*;
 use std::hint::black_box;
 use std::time::Duration;
-use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::{m113, m113::M113};
 

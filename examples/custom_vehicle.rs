@@ -17,9 +17,9 @@
 use std::error::Error;
 use std::path::PathBuf;
 
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{EnergyBalance, Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 
 trackgen::model! {

@@ -30,9 +30,9 @@ use std::path::PathBuf;
 use clap::Parser;
 use plotters::prelude::*;
 use rayon::prelude::*;
-use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Drive, Vehicle, slip};
 use trackgen::vehicles::{m113, m113::M113};
 
@@ -53,7 +53,7 @@ struct Args {
 
 fn soil(s: &str) -> Result<SoilPreset, String> {
     s.parse()
-        .map_err(|e: trackgen::contact::soil::SoilError| e.to_string())
+        .map_err(|e: trackgen::terrain::soil::SoilError| e.to_string())
 }
 
 /// Track speed, m/s.

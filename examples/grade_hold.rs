@@ -19,10 +19,11 @@ use std::error::Error;
 use std::path::PathBuf;
 
 use plotters::prelude::*;
-use trackgen::contact::{GroundFriction, Terrain};
+use trackgen::contact::GroundFriction;
 use trackgen::integrate::Integrator;
 use trackgen::laws::Friction;
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

@@ -29,12 +29,13 @@
 use std::time::Instant;
 
 use trackgen::analysis::linearise;
-use trackgen::contact::{GroundFriction, Terrain};
+use trackgen::contact::GroundFriction;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::laws::{Friction, NormalLaw};
 use trackgen::nalgebra::DMatrix;
 use trackgen::simulate::{Output, simulate};
 use trackgen::system::Simulated;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleConfig, VehicleDynamics, build};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

@@ -20,9 +20,9 @@
 use std::error::Error;
 use std::time::Instant;
 
-use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, auto::EXPLICIT_STABILITY};
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Drive, Vehicle, VehicleConfig, build};
 use trackgen::vehicles::marder::Marder;
 

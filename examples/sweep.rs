@@ -42,9 +42,9 @@ use std::time::Instant;
 
 use clap::{Parser, ValueEnum};
 use rayon::prelude::*;
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 

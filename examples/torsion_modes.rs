@@ -12,8 +12,8 @@ use std::error::Error;
 use trackgen::analysis::{
     EquilibriumOptions, equilibrium, equilibrium_sensitivity, mode_of, modes,
 };
-use trackgen::contact::Terrain;
 use trackgen::multibody::PartKind;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

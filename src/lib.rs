@@ -71,7 +71,7 @@ pub use trackgen_macros::model;
 
 pub use trackgen_runtime::{
     analysis, assembly, closure, contact, dynamics, integrate, laws, mobility, multibody, planar,
-    ride, scenario, scene, simulate, system, trig, vehicle,
+    ride, scenario, scene, simulate, system, terrain, trig, vehicle,
 };
 
 #[cfg(feature = "oracle")]

@@ -39,10 +39,11 @@ use proptest::prelude::*;
 use trackgen::assembly::{
     Assembled, AssemblyError, LinkCounts, PitchCircle, SlackLimit, Touching, Wrap, assemble, wrap,
 };
-use trackgen::contact::{Terrain, sprocket::pitch_radius};
+use trackgen::contact::sprocket::pitch_radius;
 use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::planar::rotate;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{
     ConfigError, Drive, Geometry, Vehicle, VehicleConfig, VehicleDynamics, VehicleSystem,
 };

@@ -26,10 +26,10 @@
 use crate::support;
 
 use support::vehicle::{along_slope, m113_weight};
-use trackgen::contact::Terrain;
 use trackgen::contact::sprocket::track_speed;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Brake, Vehicle};
 use trackgen::vehicles::m113::{self, M113};
 

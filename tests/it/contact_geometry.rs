@@ -57,9 +57,10 @@ use support::contact::{GroundContact, SprocketContact, WheelContact};
 use std::f64::consts::PI;
 
 use support::{Lcg, assert_close, max_abs, min_of};
-use trackgen::contact::{BodyState, ContactForce, Terrain, sprocket::ToothProfile};
+use trackgen::contact::{BodyState, ContactForce, sprocket::ToothProfile};
 use trackgen::laws::{Friction, NormalLaw};
 use trackgen::nalgebra::{DVector, SVector, Vector2};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::{m113::M113, m113::M113Track};
 use trackgen_runtime::reference::ReferenceModel;

@@ -23,14 +23,14 @@
 use crate::support;
 
 use support::Lcg;
-use trackgen::contact::profile::{Course, ProfileError};
 use trackgen::contact::{
     BodyState, Contact, ContactJacobian, ContactLaws, GroundFriction, GroundLaws, ShoeGeometry,
-    Terrain, ground, soft_ground::Rut, soft_ground::SoftGround, soil::SoilMemory, soil::SoilPreset,
-    sprocket, sprocket::ToothProfile, wheel,
+    ground, soft_ground::Rut, soft_ground::SoftGround, sprocket, sprocket::ToothProfile, wheel,
 };
 use trackgen::multibody::BodyLoad;
 use trackgen::nalgebra::{SMatrix, Vector2};
+use trackgen::terrain::profile::{Course, ProfileError};
+use trackgen::terrain::{Terrain, soil::SoilMemory, soil::SoilPreset};
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 

@@ -44,10 +44,11 @@ use crate::support;
 use support::contact::{GroundContact, SprocketContact, WheelContact};
 
 use support::{Lcg, max_of, min_of};
-use trackgen::contact::{BodyState, ContactForce, Terrain};
+use trackgen::contact::{BodyState, ContactForce};
 use trackgen::laws::{Friction, NormalLaw};
 use trackgen::multibody::BodyLoad;
 use trackgen::nalgebra::Vector2;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 

@@ -18,9 +18,9 @@ use crate::support;
 
 use support::vehicle::m113_with;
 use trackgen::closure::ClosureMethod;
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{EnergyBalance, Output, RESIDUAL_FLOOR, Results, Sink, Summary, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 

@@ -30,8 +30,8 @@
 
 use crate::support::table_at;
 use crate::support::vehicle::{m113_through, m113a3_driveline};
-use trackgen::contact::Terrain;
-use trackgen::contact::profile::Course;
+use trackgen::terrain::Terrain;
+use trackgen::terrain::profile::Course;
 use trackgen::vehicle::{Driveline, Powertrain};
 
 #[test]

@@ -7,11 +7,12 @@ use trackgen::analysis::{
     AnalysisError, Equilibrium, EquilibriumOptions, equilibrium, equilibrium_sensitivity, mode_of,
     modes,
 };
-use trackgen::contact::{GroundFriction, Terrain};
+use trackgen::contact::GroundFriction;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::laws::Friction;
 use trackgen::simulate::{Output, simulate};
 use trackgen::system::Simulated;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics, build};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

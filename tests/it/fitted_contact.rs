@@ -29,10 +29,11 @@
 //!   0.5 s/m, 0.5 m/s): the rules are stated to give the same scale, not
 //!   the same numbers.
 
-use trackgen::contact::{GroundFriction, Terrain};
+use trackgen::contact::GroundFriction;
 use trackgen::integrate::Integrator;
 use trackgen::laws::NormalLaw;
 use trackgen::simulate::{EnergyBalance, Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{ContactFit, DeclaredContact, Vehicle, VehicleDynamics};
 use trackgen::vehicles::m113::M113;
 

@@ -24,10 +24,10 @@
 use crate::support;
 
 use trackgen::assembly::Assembled;
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::SVector;
 use trackgen::simulate::{EnergyBalance, Output, Results, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleDynamics, VehicleSystem};
 use trackgen::vehicles::{m113::M113, m113::M113Chassis, m113::M113Track};
 

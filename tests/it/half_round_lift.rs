@@ -35,12 +35,12 @@
 //! centroid 0.9–1.5 cm under the exact geometry, the pitch within
 //! 8.4e-3 rad of it (2.0e-3 with the rear wheel as the pivot).
 
-use trackgen::contact::Terrain;
-use trackgen::contact::profile::Course;
 use trackgen::integrate::Integrator;
 use trackgen::laws::NormalLaw;
 use trackgen::scene::{Frame, Scene};
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
+use trackgen::terrain::profile::Course;
 use trackgen::vehicle::{Vehicle, speed_ramp};
 use trackgen::vehicles::m113::M113;
 

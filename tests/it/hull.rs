@@ -14,11 +14,11 @@
 //! (0.064 rad) until the wall's top edge rests in the upper glacis, 39 mm
 //! deep, where it stays.
 
-use trackgen::contact::Terrain;
-use trackgen::contact::profile::Course;
 use trackgen::integrate::Integrator;
 use trackgen::laws::NormalLaw;
 use trackgen::simulate::{EnergyBalance, Output, simulate};
+use trackgen::terrain::Terrain;
+use trackgen::terrain::profile::Course;
 use trackgen::vehicle::{Vehicle, VehicleDynamics, speed_ramp};
 use trackgen::vehicles::m113::M113;
 

@@ -52,7 +52,11 @@ pub const RUNTIME: Graph = &[
     // physics: the laws, the bodies, contact
     ("laws", &["planar"]),
     ("multibody", &["planar", "laws"]),
-    ("contact", &["planar", "trig", "laws", "multibody"]),
+    ("terrain", &["trig"]),
+    (
+        "contact",
+        &["planar", "trig", "laws", "multibody", "terrain"],
+    ),
     // solvers
     ("dynamics", &["planar", "simd", "laws", "multibody"]),
     ("closure", &["planar", "trig", "laws", "multibody"]),
@@ -72,7 +76,7 @@ pub const RUNTIME: Graph = &[
             "integrate",
         ],
     ),
-    ("assembly", &["planar", "multibody", "contact"]),
+    ("assembly", &["planar", "multibody", "contact", "terrain"]),
     // the vehicle
     (
         "vehicle",
@@ -82,6 +86,7 @@ pub const RUNTIME: Graph = &[
             "simd",
             "laws",
             "multibody",
+            "terrain",
             "contact",
             "dynamics",
             "closure",
@@ -107,11 +112,19 @@ pub const RUNTIME: Graph = &[
     ),
     (
         "scene",
-        &["planar", "multibody", "contact", "vehicle", "simulate"],
+        &[
+            "planar",
+            "multibody",
+            "terrain",
+            "contact",
+            "vehicle",
+            "simulate",
+        ],
     ),
     (
         "mobility",
         &[
+            "terrain",
             "contact",
             "integrate",
             "system",
@@ -120,7 +133,7 @@ pub const RUNTIME: Graph = &[
             "scene",
         ],
     ),
-    ("scenario", &["contact", "integrate", "vehicle"]),
+    ("scenario", &["terrain", "integrate", "vehicle"]),
     // `__private`: the paths generated code names (lib.rs).
     (
         "__private",
@@ -129,6 +142,7 @@ pub const RUNTIME: Graph = &[
             "trig",
             "laws",
             "multibody",
+            "terrain",
             "contact",
             "dynamics",
             "vehicle",

@@ -28,10 +28,10 @@
 
 use std::sync::Arc;
 
-use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 use trackgen::mobility::search::{Limit, Trial, bisect, interpolate};
 use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride, soil};
+use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicles::m113::{self, M113};
 
 fn criterion(crossing: f64) -> impl FnMut(f64) -> Result<Trial, EventError> {

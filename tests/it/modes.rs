@@ -3,12 +3,12 @@
 //! nonlinear free response.
 
 use trackgen::analysis::{EquilibriumOptions, Mode, equilibrium, modes};
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::laws::NormalLaw;
 use trackgen::multibody::PartKind;
 use trackgen::nalgebra::{Matrix2, Vector2};
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

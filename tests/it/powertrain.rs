@@ -41,7 +41,7 @@
 use crate::support;
 
 use support::vehicle::{m113_run, m113_weight, window};
-use trackgen::contact::Terrain;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::m113::{self, M113};
 

@@ -10,8 +10,8 @@
 use crate::support;
 use support::vehicle::driven;
 
-use trackgen::contact::Terrain;
 use trackgen::integrate::OdeSystem;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

@@ -59,11 +59,11 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use proptest::prelude::*;
 use trackgen::closure::Switch;
-use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::nalgebra::DVector;
 use trackgen::simulate::{Output, Results, SimulationFailure, simulate};
 use trackgen::system::Simulated;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 
@@ -634,7 +634,7 @@ proptest! {
 #[test]
 fn terrain_with_a_non_finite_parameter_is_refused() {
     use trackgen::assembly::{AssemblyError, assemble};
-    use trackgen::contact::TerrainError;
+    use trackgen::terrain::TerrainError;
     use trackgen::vehicle::{ConfigError, Drive, VehicleSystem};
     use trackgen::vehicles::{m113::M113Chassis, m113::M113Track};
 

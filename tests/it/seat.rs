@@ -17,12 +17,12 @@
 //!   sample's, exact. A recorded acceleration off by a term (the
 //!   centripetal `−θ̇² A s̄`, say) does not shrink with the spacing.
 
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::multibody::ChassisModel;
 use trackgen::nalgebra::Vector2;
 use trackgen::planar::Rotation;
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::{DRIVER_SEAT, M113, M113Chassis};
 

@@ -24,7 +24,7 @@
 //!   downshifts at lower speeds than the upshifts.
 
 use crate::support::vehicle::{m113_through, m113a3_driveline};
-use trackgen::contact::Terrain;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Driveline, Engaged, PowertrainError, Shift};
 
 /// The sprocket speed (rad/s) above which range `r + 1` gives more

@@ -13,12 +13,10 @@
 
 use crate::support;
 
-use trackgen::contact::{
-    BodyState, ContactForce, ShoeGeometry, Terrain, soft_ground::SoftGround, soil::Soil,
-    soil::SoilError, soil::SoilPreset,
-};
+use trackgen::contact::{BodyState, ContactForce, ShoeGeometry, soft_ground::SoftGround};
 use trackgen::multibody::BodyLoad;
 use trackgen::nalgebra::Vector2;
+use trackgen::terrain::{Terrain, soil::Soil, soil::SoilError, soil::SoilPreset};
 use trackgen::vehicle::Vehicle;
 use trackgen::vehicles::m113::M113;
 

@@ -1,4 +1,4 @@
-//! The terramechanics laws of soft soil (`trackgen::contact::soil`) against
+//! The terramechanics laws of soft soil (`trackgen::terrain::soil`) against
 //! the closed forms of Wong's *Theory of Ground Vehicles* (the guide's
 //! "Soft soil"), worked numbers computed from them by hand, and
 //! against independent quadrature.
@@ -14,7 +14,7 @@
 //! - The inverse of the static sinkage, and the memory's continuity at its
 //!   yield point: 1e-12 relative (a handful of roundings).
 
-use trackgen::contact::{soil::Soil, soil::SoilError, soil::SoilMemory, soil::SoilPreset};
+use trackgen::terrain::{soil::Soil, soil::SoilError, soil::SoilMemory, soil::SoilPreset};
 
 fn close(label: &str, got: f64, want: f64, abs: f64) {
     assert!(

@@ -1,4 +1,4 @@
-//! Terrain profiles (`trackgen::contact::Terrain`): heights and slopes of
+//! Terrain profiles (`trackgen::terrain::Terrain`): heights and slopes of
 //! every variant by hand, slopes against a central finite difference of the
 //! height, the culling bound `max_height` against dense sampling, and the
 //! errors of `Terrain::table` with their messages.
@@ -25,7 +25,7 @@
 use crate::support;
 
 use support::{Lcg, max_of};
-use trackgen::contact::{Terrain, TerrainError};
+use trackgen::terrain::{Terrain, TerrainError};
 
 use std::f64::consts::PI;
 

@@ -33,10 +33,11 @@
 //! - **The drive aims for the mean speed**: the mean track speed within
 //!   0.5 % of the command (measured within 0.05 %).
 
-use trackgen::contact::{GroundFriction, Terrain};
+use trackgen::contact::GroundFriction;
 use trackgen::integrate::Integrator;
 use trackgen::laws::Friction;
 use trackgen::simulate::{Output, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, slip};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

@@ -55,13 +55,13 @@
 use crate::support;
 
 use trackgen::closure::{ClosureMethod, MultiplierOptions};
-use trackgen::contact::Terrain;
 use trackgen::dynamics::dense_forward_dynamics;
 use trackgen::integrate::Integrator;
 use trackgen::laws::PenaltyJoint;
 use trackgen::multibody::{BodyLoad, ClosingJoint, RecursiveModel, TrackModel};
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Drive, Vehicle};
 use trackgen::vehicles::{m113, m113::M113};
 

@@ -11,10 +11,10 @@
 use crate::support;
 
 use trackgen::closure::ClosureMethod;
-use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::simulate::{Output, simulate};
 use trackgen::system::Simulated;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleDynamics, build};
 use trackgen::vehicles::{m113::M113, m113::M113Chassis, marder::Marder};
 

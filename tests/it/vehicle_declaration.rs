@@ -27,12 +27,13 @@
 use crate::support;
 
 use trackgen::contact::{
-    ContactLaws, GroundFriction, GroundLaws, ShoeGeometry, Terrain, sprocket::ToothProfile,
+    ContactLaws, GroundFriction, GroundLaws, ShoeGeometry, sprocket::ToothProfile,
 };
 use trackgen::integrate::Integrator;
 use trackgen::laws::{Friction, NormalLaw, ParameterError, Stiction};
 use trackgen::nalgebra::Vector2;
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{BuildError, ConfigError, Drive, Vehicle, VehicleConfig};
 use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis};
 

@@ -19,9 +19,9 @@
 
 use crate::support;
 
-use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Vehicle, VehicleDynamics, build};
 use trackgen::vehicles::m113::M113;
 

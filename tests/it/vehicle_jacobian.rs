@@ -24,9 +24,9 @@
 use crate::support;
 use support::vehicle::{driven, driven_with};
 
-use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::OdeSystem;
 use trackgen::nalgebra::DVector;
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 
@@ -166,7 +166,7 @@ fn m113_on_dry_sand() {
 /// climbed the 0.2 m step at 2.0 s.
 #[test]
 fn m113_over_a_step_edge() {
-    let course = trackgen::contact::profile::Course::starting_at(-20.0, 0.0)
+    let course = trackgen::terrain::profile::Course::starting_at(-20.0, 0.0)
         .unwrap()
         .flat(24.0)
         .unwrap()

@@ -59,11 +59,11 @@ use crate::support;
 
 use trackgen::assembly::{AssemblyError, assemble};
 use trackgen::closure::ClosureMethod;
-use trackgen::contact::{Terrain, TerrainError};
 use trackgen::integrate::Integrator;
 use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::{Terrain, TerrainError};
 use trackgen::vehicle::{Drive, Vehicle};
 use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis, m113::M113Track};
 

@@ -33,9 +33,9 @@
 
 use crate::support;
 
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Drive, Vehicle};
 use trackgen::vehicles::marder::Marder;
 

@@ -21,9 +21,9 @@ use crate::support;
 use support::vehicle::{driven, driven_with};
 
 use trackgen::analysis::state_jacobian;
-use trackgen::contact::{Terrain, soil::SoilPreset};
 use trackgen::integrate::{ImplicitSolve, OdeSystem};
 use trackgen::nalgebra::{DMatrix, DVector};
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
 

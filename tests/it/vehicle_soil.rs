@@ -42,14 +42,13 @@
 
 use crate::support;
 
-use trackgen::contact::{
-    BodyState, ShoeGeometry, Terrain, soft_ground::Rut, soft_ground::SoftGround, soil::SoilPreset,
-};
+use trackgen::contact::{BodyState, ShoeGeometry, soft_ground::Rut, soft_ground::SoftGround};
 use trackgen::integrate::Integrator;
 use trackgen::multibody::{BodyLoad, RecursiveModel};
 use trackgen::nalgebra::{SVector, Vector2};
 use trackgen::planar::rotate;
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Drive, Vehicle, VehicleConfig, VehicleDynamics};
 use trackgen::vehicles::{m113, m113::M113, m113::M113System, m113::M113Track};
 

@@ -4,9 +4,9 @@
 use std::path::PathBuf;
 
 use clap::builder::{PossibleValuesParser, TypedValueParser};
-use trackgen::contact::course::{self, CourseSpec, Roughness};
-use trackgen::contact::profile::Obstacle;
 use trackgen::scenario::{Method, Scenario, Soil, Start};
+use trackgen::terrain::course::{self, CourseSpec, Roughness};
+use trackgen::terrain::profile::Obstacle;
 
 /// Drive the vehicle over a bump (or through a dip), a terrain file, a
 /// random course or an obstacle.

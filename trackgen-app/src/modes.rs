@@ -10,8 +10,8 @@ use std::time::Instant;
 use trackgen::analysis::{Equilibrium, EquilibriumOptions, Mode, equilibrium, mode_of, modes};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
-use trackgen::contact::Terrain;
 use trackgen::scene::{self, Scene};
+use trackgen::terrain::Terrain;
 
 use crate::animation;
 use crate::console::say;

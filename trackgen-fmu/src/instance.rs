@@ -14,13 +14,13 @@
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use trackgen::contact::course::{self, CourseSpec};
-use trackgen::contact::soil::SoilPreset;
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
 use trackgen::scenario::{Method, Scenario, Soil};
 use trackgen::simulate::{DISSIPATED, ENERGY, EnergyBalance, MOTOR_WORK, March};
 use trackgen::system::Simulated;
+use trackgen::terrain::course::{self, CourseSpec};
+use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::{Drive, Powertrain, Vehicle, VehicleDynamics};
 
 use crate::error::FmuError;

@@ -141,7 +141,7 @@ pub struct Variable {
 /// it is the one thing that can fail.
 pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
     let system = V::system_with(V::declared_config(
-        trackgen::contact::Terrain::Flat { height: 0.0 },
+        trackgen::terrain::Terrain::Flat { height: 0.0 },
         trackgen::vehicle::Drive::Free,
     ))
     .map_err(|e| FmuError::Build(e.to_string()))?;

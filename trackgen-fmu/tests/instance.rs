@@ -2,10 +2,10 @@
 //! description. The C API over it is checked by fmpy in CI
 //! (`tools/fmu-check.py`).
 
-use trackgen::contact::Terrain;
 use trackgen::integrate::Integrator;
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{Output, Results, simulate};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleConfig, speed_ramp};
 use trackgen::vehicles::m113::M113;
 use trackgen_fmu::variables::{Causality, Role};

@@ -17,8 +17,11 @@
 //! 3. [`multibody`]: the traits generated code implements, the run-time
 //!    description of the same body tree, the loads on its bodies, the
 //!    closing joint, [`DynamicsError`](multibody::DynamicsError);
-//! 4. [`contact`]: terrain; detection of the link-ground, link-wheel and
-//!    sprocket contacts; their response; soft soil; each contact's
+//! 4. [`terrain`]: the ground's shape (closed forms, tables, polylines
+//!    with vertical faces, their files, obstacle courses, random
+//!    roughness, courses named in words) and its strength (the soils);
+//!    [`contact`]: detection of the link-ground, link-wheel and sprocket
+//!    contacts against it; their response; soft soil's; each contact's
 //!    Jacobian;
 //! 5. solvers: [`dynamics`] (forward dynamics at a state: the generated
 //!    O(n) route, the dense cross-check, their derivatives, the shifted
@@ -70,6 +73,7 @@ pub mod trig;
 pub mod contact;
 pub mod laws;
 pub mod multibody;
+pub mod terrain;
 // 5. solvers
 pub mod closure;
 pub mod dynamics;
@@ -97,8 +101,9 @@ pub mod simulate;
 pub mod __private {
     pub use ::nalgebra;
 
+    pub use crate::contact::ShoeGeometry;
     pub use crate::contact::sprocket::ToothProfile;
-    pub use crate::contact::{ShoeGeometry, Terrain};
+    pub use crate::terrain::Terrain;
     /// The generated linear-time solve's per-thread tables and steps.
     pub mod elimination {
         pub use crate::dynamics::elimination::{JointTerms, LinkTerms, Sweep, back, with_tables};

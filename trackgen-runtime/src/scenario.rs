@@ -17,10 +17,10 @@ use std::fmt;
 use std::path::PathBuf;
 use std::str::FromStr;
 
-use crate::contact::Terrain;
-use crate::contact::course::{self, CourseError, CourseSpec};
-use crate::contact::soil::SoilPreset;
 use crate::integrate::Integrator;
+use crate::terrain::Terrain;
+use crate::terrain::course::{self, CourseError, CourseSpec};
+use crate::terrain::soil::SoilPreset;
 use crate::vehicle::{Drive, Powertrain, Vehicle, VehicleConfig, speed_ramp};
 
 /// A run's course, soil, drive, integrator, output and duration.

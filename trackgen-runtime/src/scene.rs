@@ -7,10 +7,10 @@
 
 use nalgebra::Vector2;
 
-use crate::contact::Terrain;
 use crate::multibody::PartKind;
 use crate::planar::rotate;
 use crate::simulate::Results;
+use crate::terrain::Terrain;
 use crate::vehicle::{Vehicle, VehicleDynamics};
 
 /// One picture's worth of geometry.

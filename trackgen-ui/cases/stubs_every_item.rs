@@ -1,7 +1,7 @@
 // After an error in a declaration, every item it would generate still
 // exists: code that uses each of them reports nothing more than the one
 // real error (a negative mass).
-use trackgen::contact::Terrain;
+use trackgen::terrain::Terrain;
 use trackgen::system::Simulated;
 use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};

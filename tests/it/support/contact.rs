@@ -4,10 +4,11 @@
 //! check by hand.
 
 use trackgen::contact::{
-    BodyState, Contact, ContactForce, ContactLaws, ShoeGeometry, Terrain, ground,
-    soft_ground::SoftGround, sprocket, sprocket::ToothProfile, wheel,
+    BodyState, Contact, ContactForce, ContactLaws, ShoeGeometry, ground, soft_ground::SoftGround,
+    sprocket, sprocket::ToothProfile, wheel,
 };
 use trackgen::multibody::BodyLoad;
+use trackgen::terrain::Terrain;
 
 /// The ground's forces on `links` under `laws`, added to `loads`; every
 /// contact passed to `each` with its link.

@@ -3,12 +3,12 @@
 //! and reading its energy books and time windows from the results.
 
 use trackgen::closure::ClosureMethod;
-use trackgen::contact::Terrain;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::DVector;
 use trackgen::simulate::{Output, Results, simulate};
 use trackgen::system::Simulated;
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Drive, Driveline, Powertrain, Vehicle, VehicleConfig, build};
 use trackgen::vehicles::{m113, m113::M113, m113::M113Chassis, m113::M113System, m113::M113Track};
 
@@ -158,7 +158,7 @@ pub fn along_slope(results: &Results, grade: f64) -> Vec<f64> {
 /// M113's nose starts at about 2.46 m), flat again on top
 /// (`tests/it/hull.rs`, the Jacobian's and `W`'s tests on the hull).
 pub fn wall(height: f64) -> Terrain {
-    let course = trackgen::contact::profile::Course::starting_at(-20.0, 0.0)
+    let course = trackgen::terrain::profile::Course::starting_at(-20.0, 0.0)
         .unwrap()
         .flat(24.0)
         .unwrap()

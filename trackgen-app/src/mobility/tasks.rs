@@ -3,11 +3,11 @@
 
 use std::time::Instant;
 
-use trackgen::contact::soil::SoilPreset;
 use trackgen::mobility::search::{Limit, Search};
 use trackgen::mobility::{
     EventError, EventSettings, Footprint, grade, obstacle, quantity, ride, soil,
 };
+use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::Vehicle;
 
 /// Every event, in the order they are reported.

@@ -151,7 +151,7 @@ pub enum AssemblyError {
     /// The terrain to place the vehicle on is invalid (a NaN or infinite
     /// parameter, a bad table).
     #[error(transparent)]
-    Terrain(#[from] crate::contact::TerrainError),
+    Terrain(#[from] crate::terrain::TerrainError),
     /// The track's links differ in length: its sprocket and pitch circles
     /// need one pitch.
     #[error(transparent)]

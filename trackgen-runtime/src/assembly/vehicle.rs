@@ -9,8 +9,9 @@ use super::{
     links_round, wrap, wrap_at,
 };
 use crate::contact::sprocket::{self, ToothProfile};
-use crate::contact::{BodyState, Contact, ShoeGeometry, Terrain, ground, wheel};
+use crate::contact::{BodyState, Contact, ShoeGeometry, ground, wheel};
 use crate::multibody::{ChassisModel, PartKind, TrackModel};
+use crate::terrain::Terrain;
 
 /// Initial coordinates of a vehicle.
 #[derive(Debug, Clone, PartialEq)]

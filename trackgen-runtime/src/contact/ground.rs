@@ -2,9 +2,10 @@
 
 use nalgebra::{Matrix2, Vector2};
 
-use super::profile::Profile;
 use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
-use super::{BodyState, Contact, ShoeGeometry, Terrain};
+use super::{BodyState, Contact, ShoeGeometry};
+use crate::terrain::Terrain;
+use crate::terrain::profile::Profile;
 
 /// Every shoe ground point below `terrain`, link by link and the shoe's
 /// points in order, appended to `out`.
@@ -21,7 +22,7 @@ use super::{BodyState, Contact, ShoeGeometry, Terrain};
 ///
 /// On a polyline ([`Terrain::Profile`]) a point below the surface is as
 /// deep as its distance to the nearest edge, vertical faces included
-/// ([`Profile::nearest_boundary`](super::profile::Profile::nearest_boundary)), and is pushed along the unit normal
+/// ([`Profile::nearest_boundary`](crate::terrain::profile::Profile::nearest_boundary)), and is pushed along the unit normal
 /// toward it, `g = n`: a face pushes sideways, as a wall does, where the
 /// vertical depth would lift the point onto the step it meets. The depth
 /// is a distance function, continuous, with `∂δ/∂p = −n`, so the elastic

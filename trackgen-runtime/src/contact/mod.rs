@@ -14,30 +14,24 @@
 //! The pairs: the shoes' ground points against a terrain, the shoes' inner
 //! faces against wheel rims (road wheels, idler, rollers), the shoes' pins
 //! against the sprocket's teeth; and the terramechanics laws of soft soil
-//! ([`soil`]). Forces come from positions and velocities only, as
+//! ([`soil`](crate::terrain::soil)). Forces come from positions and velocities only, as
 //! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
 //! decoupled everywhere else (formulation §3).
 
-pub mod course;
 mod detect;
 pub mod ground;
 pub mod outline;
-pub mod profile;
 mod respond;
-pub mod roughness;
 pub mod shoe;
 pub mod soft_ground;
-pub mod soil;
 pub mod sprocket;
 pub(crate) mod tangent;
-pub mod terrain;
 pub mod wheel;
 
 pub use detect::Contact;
 pub use respond::{ContactForce, ContactLaws, GroundFriction, GroundLaws};
 pub use shoe::ShoeGeometry;
 pub use tangent::{ContactJacobian, GeometryTangent};
-pub use terrain::{Terrain, TerrainError};
 
 use nalgebra::Vector2;
 

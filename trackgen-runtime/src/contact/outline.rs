@@ -4,7 +4,7 @@
 //! the ground.
 //!
 //! A shoe touches the ground at its declared ground points; a corner
-//! sharper than [`SHARP_TURN`] between two of them would pass into the
+//! sharper than [`SHARP_TURN`](crate::terrain::profile::SHARP_TURN) between two of them would pass into the
 //! shoe unseen. Here it is seen: a corner `c` inside a body's outline is
 //! as deep as its distance to the nearest side,
 //! `δ = minᵢ nᵢ·(c − aᵢ)` (`nᵢ` the side's inward unit normal, `aᵢ` a
@@ -22,12 +22,11 @@
 
 use nalgebra::Vector2;
 
-use super::profile::Profile;
 use super::tangent::{GeometryTangent, LINK, PoseRows2, body_point};
-use super::{BodyState, Contact, ShoeGeometry, Terrain};
+use super::{BodyState, Contact, ShoeGeometry};
 use crate::planar::perp;
-
-pub use super::profile::SHARP_TURN;
+use crate::terrain::Terrain;
+use crate::terrain::profile::Profile;
 
 pub use super::detect::TERRAIN_CORNER;
 
@@ -135,7 +134,7 @@ fn convex_hull(mut points: Vec<Vector2<f64>>) -> Vec<Vector2<f64>> {
 }
 
 /// The sharp convex corners of `terrain` between `x0` and `x1` (m): a
-/// profile's corners turning by more than [`SHARP_TURN`]'s angle
+/// profile's corners turning by more than [`SHARP_TURN`](crate::terrain::profile::SHARP_TURN)'s angle
 /// ([`Profile::sharp_corners_in`]); none on a closed form (they are
 /// smooth).
 pub fn sharp_corners(

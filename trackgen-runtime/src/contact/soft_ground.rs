@@ -1,5 +1,5 @@
 //! Link-ground contact on soft soil: the shoes' ground points pressing a
-//! deformable terrain (the laws of [`soil`](super::soil)), which keeps
+//! deformable terrain (the laws of [`soil`](crate::terrain::soil)), which keeps
 //! the rut they leave.
 //!
 //! Each ground point carries a patch of the shoe's ground face (its area
@@ -45,11 +45,12 @@
 
 use nalgebra::Vector2;
 
-use super::soil::{ShearLaw, Soil, SoilError, SoilMemory};
 use super::tangent::{
     ForceTangent, GeometryTangent, PoseRow, PoseRows2, dot_rows, loads, unit_tangent, velocity,
 };
-use super::{BodyState, Contact, ContactForce, ContactJacobian, ShoeGeometry, Terrain};
+use super::{BodyState, Contact, ContactForce, ContactJacobian, ShoeGeometry};
+use crate::terrain::Terrain;
+use crate::terrain::soil::{ShearLaw, Soil, SoilError, SoilMemory};
 
 /// The plastic memory of the ground along x: a [`SoilMemory`] per cell of
 /// `cell` m, fresh soil where nothing has pressed. The cells are one

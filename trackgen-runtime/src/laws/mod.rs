@@ -12,7 +12,7 @@
 //!
 //! The laws know nothing of bodies or geometry: they take a deflection
 //! and its rate and give a [`Response`]. The soil's laws
-//! ([`crate::contact::soil`]) are kept with the soil they describe.
+//! ([`crate::terrain::soil`]) are kept with the soil they describe.
 
 pub mod contact;
 pub mod penalty;

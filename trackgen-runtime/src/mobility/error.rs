@@ -2,9 +2,9 @@
 
 use thiserror::Error;
 
-use crate::contact::profile::ProfileError;
-use crate::contact::roughness::RoughnessError;
 use crate::simulate::RunError;
+use crate::terrain::profile::ProfileError;
+use crate::terrain::roughness::RoughnessError;
 use crate::vehicle::{BuildError, PowertrainError};
 
 /// An event that could not be answered. A run's failure says which event,

@@ -5,8 +5,8 @@
 use super::runs::{Footprint, Probe, drive, obstacle_course, ramp};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
-use crate::contact::Terrain;
-use crate::contact::profile::Obstacle;
+use crate::terrain::Terrain;
+use crate::terrain::profile::Obstacle;
 use crate::vehicle::Vehicle;
 
 /// The event's name in results.

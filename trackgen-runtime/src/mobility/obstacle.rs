@@ -9,10 +9,10 @@ use super::runs::{
 };
 use super::search::{Limit, Search, Trial, bisect};
 use super::{EventError, EventSettings};
-use crate::contact::Terrain;
-use crate::contact::profile::Obstacle;
 use crate::scene::{self, Ground, Scene};
 use crate::simulate::{Sink, SinkError};
+use crate::terrain::Terrain;
+use crate::terrain::profile::Obstacle;
 use crate::vehicle::Vehicle;
 
 /// The half-round event's name in results.

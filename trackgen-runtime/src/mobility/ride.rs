@@ -7,9 +7,9 @@
 use super::runs::{Footprint, SpeedTrial, measure_ride, search_speed};
 use super::search::Search;
 use super::{EventError, EventSettings};
-use crate::contact::Terrain;
-use crate::contact::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, SPACING, Spectrum};
 use crate::simulate::RideFigures;
+use crate::terrain::Terrain;
+use crate::terrain::roughness::{DETRENDING_BASE_LENGTH, RoughCourse, SPACING, Spectrum};
 use crate::vehicle::Vehicle;
 
 /// The event's name in results.

@@ -5,13 +5,13 @@ use nalgebra::Vector2;
 
 use super::EventError;
 use super::search::{Search, Trial, interpolate, scan_then_bisect};
-use crate::contact::Terrain;
-use crate::contact::profile::{Course, Obstacle, Profile, ProfileError};
 use crate::integrate::Integrator;
 use crate::simulate::{
     Output, RideFigures, RideSink, RunError, RunReport, Sink, SinkError, simulate_into,
 };
 use crate::system::Simulated;
+use crate::terrain::Terrain;
+use crate::terrain::profile::{Course, Obstacle, Profile, ProfileError};
 use crate::vehicle::{Powertrain, Vehicle, VehicleConfig, VehicleDynamics, build};
 
 /// How the events drive the vehicle and read their criteria. Every event

@@ -13,9 +13,9 @@
 
 use super::runs::run_config;
 use super::{EventError, EventSettings};
-use crate::contact::Terrain;
-use crate::contact::soil::SoilPreset;
 use crate::simulate::{Sink, SinkError};
+use crate::terrain::Terrain;
+use crate::terrain::soil::SoilPreset;
 use crate::vehicle::{Vehicle, slip};
 
 /// The event's name in results.

@@ -9,9 +9,10 @@ use super::shift::Engaged;
 use super::{Brake, ConfigError, Drive, Powertrain, TorqueCap};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
-use crate::contact::soil::Soil;
-use crate::contact::{ContactLaws, GroundLaws, Terrain};
+use crate::contact::{ContactLaws, GroundLaws};
 use crate::multibody::ArmSpring;
+use crate::terrain::Terrain;
+use crate::terrain::soil::Soil;
 
 /// How a vehicle meets the world. Nothing here enters the mass matrix:
 /// every field can be changed between runs without recompiling (a vehicle

@@ -5,11 +5,11 @@
 use nalgebra::{DVector, Vector2};
 
 use super::{BuildError, Drive, Geometry, Powertrain, StateLayout, VehicleConfig};
-use crate::contact::Terrain;
 use crate::contact::soft_ground::Rut;
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisPart, TreeDescription};
 use crate::system::Simulated;
+use crate::terrain::Terrain;
 
 /// A vehicle declared with `trackgen::model!`: its compiled track and
 /// chassis, their coordinate counts, its contact geometry and declared

@@ -6,10 +6,10 @@ use thiserror::Error;
 use super::{BrakeError, DriveError, PowertrainError};
 use crate::assembly::AssemblyError;
 use crate::closure::ClosureError;
-use crate::contact::TerrainError;
-use crate::contact::soil::SoilError;
 use crate::laws::ParameterError;
 use crate::multibody::PitchError;
+use crate::terrain::TerrainError;
+use crate::terrain::soil::SoilError;
 
 /// A configuration that makes no vehicle ([`VehicleConfig`](super::VehicleConfig)
 /// checked against the compiled model).

@@ -5,9 +5,10 @@
 use nalgebra::Vector2;
 
 use super::*;
-use crate::contact::profile::Course;
-use crate::contact::{ContactLaws, Terrain};
+use crate::contact::ContactLaws;
 use crate::laws::{Friction, NormalLaw};
+use crate::terrain::Terrain;
+use crate::terrain::profile::Course;
 
 /// A step 0.3 m high at x = 1: its top edge, (1, 0.3), is a 90° corner.
 fn step() -> Terrain {
@@ -268,7 +269,7 @@ fn hull_corners_below_the_ground() {
 /// course (many corners, some sharp) over ranges of every size.
 #[test]
 fn sharp_corners_by_range_are_the_scans() {
-    use crate::contact::roughness::{Iso8608Class, RoughCourse, SPACING, Spectrum};
+    use crate::terrain::roughness::{Iso8608Class, RoughCourse, SPACING, Spectrum};
     let profile = RoughCourse::new(Spectrum::Iso8608(Iso8608Class::F), 50.0, SPACING, 3)
         .profile()
         .unwrap();

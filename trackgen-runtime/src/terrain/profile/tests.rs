@@ -523,7 +523,7 @@ fn without_faces_heights_are_the_table_formula() {
     let p = Profile::new(points.clone()).unwrap();
     // The table's own lookup (a binary search over its points) as the
     // independent route to the profile's bucketed one.
-    let terrain = crate::contact::Terrain::Table(points.clone());
+    let terrain = crate::terrain::Terrain::Table(points.clone());
     let table = |x: f64| terrain.height_and_slope(x);
     for k in 0..20_000 {
         let x = -5.0 + k as f64 * 0.0173;

@@ -52,7 +52,7 @@ pub enum Terrain {
     /// ([`RoughCourse`](super::roughness::RoughCourse)). Its height is the
     /// surface's from the right at a face; the ground meets a shoe's
     /// points by their distance to its nearest edge, so a face pushes a
-    /// point sideways ([`ground::detect`](super::ground::detect)). Shared:
+    /// point sideways ([`ground::detect`](crate::contact::ground::detect)). Shared:
     /// cloning a configuration does not copy a long course.
     Profile(Arc<Profile>),
 }

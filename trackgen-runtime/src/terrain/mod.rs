@@ -1,0 +1,14 @@
+//! The ground a vehicle drives on, apart from how the vehicle meets it
+//! (`contact`): its shape — a closed form, a table or a polyline with
+//! vertical faces ([`Terrain`], [`profile`]), read from and written to
+//! files, laid out as obstacle courses ([`profile::Course`]) or generated
+//! as random roughness ([`roughness`]), and named as a user names it
+//! ([`course`]) — and its strength: the soils of soft ground ([`soil`]).
+
+pub mod course;
+pub mod profile;
+pub mod roughness;
+pub mod soil;
+mod surface;
+
+pub use surface::{Terrain, TerrainError};
