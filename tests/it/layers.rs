@@ -182,20 +182,18 @@ pub const FACADE: Graph = &[
 ];
 
 /// The application (`trackgen-app`): the options, the console and what
-/// the subcommands know of a vehicle at the bottom, the pictures (drawn
-/// from the runtime's `scene`) over them, the outputs and reports over
-/// that, a module per subcommand, and `app` (the command line and the
-/// dispatch to a vehicle's type) on top.
+/// the subcommands know of a vehicle at the bottom, the outputs and
+/// reports over them (drawn by the crate `trackgen-draw`), a module per
+/// subcommand, and `app` (the command line and the dispatch to a
+/// vehicle's type) on top.
 pub const APP: Graph = &[
     ("console", &[]),
     ("cli", &[]),
     ("offered", &[]),
     ("nearest", &[]),
-    ("animation", &[]),
-    ("plots", &[]),
-    ("outputs", &["nearest", "animation", "plots"]),
+    ("outputs", &["nearest"]),
     ("report", &["console", "cli"]),
-    ("modes", &["console", "animation", "cli", "offered"]),
+    ("modes", &["console", "cli", "offered"]),
     ("fmu", &["cli", "offered"]),
     ("mobility", &["offered"]),
     (
@@ -869,7 +867,7 @@ fn the_facade_is_layered() {
 
 #[test]
 fn the_application_is_layered() {
-    assert_layered("trackgen-app/src/lib.rs", "lib", APP, 17, 40);
+    assert_layered("trackgen-app/src/lib.rs", "lib", APP, 15, 40);
 }
 
 /// The runtime's layers are one list: every module of the graph is named

@@ -30,7 +30,6 @@
 //! `run` is the default subcommand: `my-tank --speed 5` is
 //! `my-tank run --speed 5`.
 
-mod animation;
 mod app;
 mod cli;
 mod console;
@@ -40,7 +39,6 @@ mod modes;
 mod nearest;
 mod offered;
 mod outputs;
-mod plots;
 mod report;
 mod run;
 

@@ -12,8 +12,8 @@ use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
 use trackgen::scene::{self, Scene};
 use trackgen::terrain::Terrain;
+use trackgen_draw::{animation, vehicle};
 
-use crate::animation;
 use crate::console::say;
 use crate::offered::Offered;
 
@@ -213,7 +213,7 @@ fn picture<V: Vehicle>(
         let (qt, qc) = system.coordinates(t, (y + &mode.shape * scale).as_slice())?;
         let mut frame = scene.frame(t, qt.as_slice(), qc.as_slice());
         frame.label = label(k, mode);
-        panels.push(scene::svg(&frame, ground));
+        panels.push(vehicle::svg(&frame, ground));
     }
     Ok(stack(&panels))
 }

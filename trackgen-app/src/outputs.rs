@@ -8,9 +8,9 @@ use std::path::{Path, PathBuf};
 
 use trackgen::simulate::{CsvSink, Results, RideSink, Select, Summary, Tee, Thinned};
 use trackgen_arrow::ArrowSink;
+use trackgen_draw::{animation, plots, vehicle};
 
 use super::nearest::Nearest;
-use super::{animation, plots};
 use trackgen::scene::{Ground, Scene};
 
 /// The columns of `<vehicle>.csv`.
@@ -152,10 +152,7 @@ impl Outputs {
             .frames(self.recorders.at_bump.results(), 0.0)
             .first()
         {
-            std::fs::write(
-                self.dir.join("frame.svg"),
-                trackgen::scene::svg(frame, ground),
-            )?;
+            std::fs::write(self.dir.join("frame.svg"), vehicle::svg(frame, ground))?;
             written.push("frame.svg".to_string());
         }
         let span = kept.times().last().unwrap_or(&0.0) - kept.times()[0];

@@ -43,7 +43,8 @@
 //! 9. drivers: [`simulate`] (runs, results, sinks: CSV, Arrow IPC, running
 //!    summaries; a failed run keeps what it computed), [`analysis`]
 //!    (the state Jacobian, equilibrium, modes, sensitivities) and
-//!    [`scene`] (the vehicle's geometry at recorded times, drawn as SVG);
+//!    [`scene`] (the vehicle's geometry at recorded times, for pictures:
+//!    the crate `trackgen-draw` draws it);
 //! 10. [`mobility`]: the mobility engineer's events over any declared
 //!     vehicle (ride over random terrain, half-round, step, gap, ditch,
 //!     barrier, grade), each a limit found by bracketing over runs, the

@@ -1,9 +1,9 @@
 //! The vehicle's geometry at recorded times, for pictures: its track's
 //! joints, wheels, arms and hull from the track's and the chassis'
-//! coordinates ([`Scene`]), the ground under it ([`Ground`]), and a still
-//! picture of both as SVG ([`svg`]). The main job's `frame.svg` and
-//! animation and the mobility report's vehicles at their limits are
-//! drawn from it.
+//! coordinates ([`Scene`]), the ground under it ([`Ground`]), and the two
+//! together, one [`Picture`]. Drawing them is the `trackgen-draw` crate's
+//! (the main job's `frame.svg` and animation, the mobility report's
+//! vehicles at their limits): the physics draws nothing.
 
 use nalgebra::Vector2;
 
@@ -14,7 +14,7 @@ use crate::terrain::Terrain;
 use crate::vehicle::{Vehicle, VehicleDynamics};
 
 /// One picture's worth of geometry.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
     /// The time, s.
     pub t: f64,
@@ -196,6 +196,7 @@ fn hull<V: Vehicle>() -> Vec<Vector2<f64>> {
 
 /// The ground a run drove on: its undisturbed profile and, on soft soil,
 /// the rut the track left (plastic sinkage against x, in order of x).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Ground {
     /// The undisturbed ground.
     pub terrain: Terrain,
@@ -246,75 +247,12 @@ impl Ground {
     }
 }
 
-/// A still picture of one frame, SVG.
-pub fn svg(frame: &Frame, ground: &Ground) -> String {
-    // The vehicle (track and hull) with a margin, the ground below it.
-    let points_x = frame.joints.iter().chain(&frame.hull).map(|p| p.0);
-    let (lo, hi) = points_x.fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(x), hi.max(x)));
-    let top = frame.hull.iter().map(|p| p.1).fold(f64::MIN, f64::max);
-    let bottom = frame.joints.iter().map(|p| p.1).fold(f64::MAX, f64::min);
-    let (x0, x1, y0, y1) = (lo - 0.6, hi + 0.6, bottom - 0.8, top + 0.3);
-    let scale = 140.0;
-    let px = |x: f64| (x - x0) * scale;
-    let py = |y: f64| (y1 - y) * scale;
-    let points = |ps: &[(f64, f64)]| {
-        ps.iter()
-            .map(|&(x, y)| format!("{:.1},{:.1}", px(x), py(y)))
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{:.0}\" height=\"{:.0}\" style=\"background:#fff\">\n",
-        (x1 - x0) * scale,
-        (y1 - y0) * scale
-    );
-    let front = frame.joints.iter().map(|p| p.0).fold(f64::MIN, f64::max);
-    let mut terrain_line = ground.surface(x0, x1, front);
-    terrain_line.push((x1, y0));
-    terrain_line.push((x0, y0));
-    s += &format!(
-        "<polygon points=\"{}\" fill=\"#d8c9a8\" stroke=\"#8a7650\"/>\n",
-        points(&terrain_line)
-    );
-    s += &format!(
-        "<polygon points=\"{}\" fill=\"#7d8b6a\" stroke=\"#3d4633\" stroke-width=\"2\"/>\n",
-        points(&frame.hull)
-    );
-    for &((ax, ay), (bx, by)) in &frame.arms {
-        s += &format!(
-            "<line x1=\"{:.1}\" y1=\"{:.1}\" x2=\"{:.1}\" y2=\"{:.1}\" stroke=\"#444\" stroke-width=\"7\"/>\n",
-            px(ax),
-            py(ay),
-            px(bx),
-            py(by)
-        );
-    }
-    for &(x, y, r) in &frame.wheels {
-        s += &format!(
-            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"{:.1}\" fill=\"#555\" stroke=\"#222\" stroke-width=\"2\"/>\n",
-            px(x),
-            py(y),
-            r * scale
-        );
-    }
-    s += &format!(
-        "<polyline points=\"{}\" fill=\"none\" stroke=\"#222\" stroke-width=\"6\"/>\n",
-        points(&frame.joints)
-    );
-    for &(x, y) in &frame.joints {
-        s += &format!(
-            "<circle cx=\"{:.1}\" cy=\"{:.1}\" r=\"2.5\" fill=\"#ddd\"/>\n",
-            px(x),
-            py(y)
-        );
-    }
-    let label = if frame.label.is_empty() {
-        format!("t = {:.2} s", frame.t)
-    } else {
-        frame.label.clone()
-    };
-    s += &format!(
-        "<text x=\"10\" y=\"24\" font-family=\"sans-serif\" font-size=\"18\">{label}</text>\n"
-    );
-    s + "</svg>\n"
+/// The vehicle at one moment on the ground it drove on: what a still
+/// picture shows.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Picture {
+    /// The vehicle.
+    pub frame: Frame,
+    /// The ground.
+    pub ground: Ground,
 }

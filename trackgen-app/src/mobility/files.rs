@@ -96,7 +96,7 @@ pub(super) fn write_all(
     // The vehicle at each obstacle's limit: a picture per search that
     // drew one.
     for r in rows {
-        if let Some(picture) = r.search.as_ref().and_then(|s| s.picture.as_ref()) {
+        if let Some(picture) = r.picture.as_ref() {
             let file = format!("{}-limit.svg", r.event);
             fs::write(dir.join(&file), picture)?;
             files.push(file);
@@ -333,7 +333,7 @@ fn report(name: &str, published: &[Published], rows: &[Row], wall: f64, svg: &st
     }
     let pictures: Vec<(&Row, &String)> = rows
         .iter()
-        .filter_map(|r| Some((r, r.search.as_ref()?.picture.as_ref()?)))
+        .filter_map(|r| Some((r, r.picture.as_ref()?)))
         .collect();
     if !pictures.is_empty() {
         html.push_str(

@@ -30,7 +30,7 @@ fn row_json(r: &Row) -> Value {
             .iter()
             .map(|t| json!([number(t.parameter), number(t.figure), t.passed]))
             .collect();
-        json!({"limit": limit, "trials": trials, "picture": s.picture})
+        json!({"limit": limit, "trials": trials, "picture": r.picture})
     });
     json!({
         "event": r.event,
@@ -105,11 +105,11 @@ fn row_of(v: &Value) -> Result<Row, String> {
                     passed: t[2].as_bool().unwrap_or(false),
                 })
                 .collect();
-            let picture = s["picture"].as_str().map(str::to_owned);
+            // The picture travels drawn (the row's), not as its geometry.
             Some(Search {
                 limit,
                 trials,
-                picture,
+                picture: None,
             })
         }
     };
@@ -130,6 +130,7 @@ fn row_of(v: &Value) -> Result<Row, String> {
         unit: text(&v["unit"], "unit")?,
         runs: v["runs"].as_u64().unwrap_or(0) as usize,
         wall: float(&v["wall"]),
+        picture: v["search"]["picture"].as_str().map(str::to_owned),
         search,
         failure: v["failure"].as_str().map(str::to_string),
     })

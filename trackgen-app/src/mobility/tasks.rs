@@ -9,6 +9,7 @@ use trackgen::mobility::{
 };
 use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::Vehicle;
+use trackgen_draw::vehicle;
 
 /// Every event, in the order they are reported.
 pub(super) const EVENTS: [&str; 8] = [
@@ -47,6 +48,9 @@ pub(super) struct Row {
     pub(super) runs: usize,
     pub(super) wall: f64,
     pub(super) search: Option<Search>,
+    /// The vehicle at the limit, drawn (SVG), for the searches that show
+    /// it.
+    pub(super) picture: Option<String>,
     /// Why there is no answer.
     pub(super) failure: Option<String>,
 }
@@ -85,7 +89,7 @@ impl Task<'_> {
         let start = Instant::now();
         let found = (self.run)();
         let wall = start.elapsed().as_secs_f64();
-        let row = |value, relation, runs, search, failure| Row {
+        let row = |value, relation, runs, search: Option<Search>, failure| Row {
             event: self.event,
             parameter: self.parameter,
             quantity: self.quantity,
@@ -94,6 +98,10 @@ impl Task<'_> {
             unit: self.unit,
             runs,
             wall,
+            picture: search
+                .as_ref()
+                .and_then(|s| s.picture.as_ref())
+                .map(vehicle::picture),
             search,
             failure,
         };

@@ -9,7 +9,7 @@ use super::runs::{
 };
 use super::search::{Limit, Search, Trial, bisect};
 use super::{EventError, EventSettings};
-use crate::scene::{self, Ground, Scene};
+use crate::scene::{Ground, Picture, Scene};
 use crate::simulate::{Sink, SinkError};
 use crate::terrain::Terrain;
 use crate::terrain::profile::Obstacle;
@@ -186,16 +186,16 @@ impl Steepest {
         }
     }
 
-    /// The vehicle `V` at its steepest moment on `terrain`, drawn (SVG)
-    /// and labelled `label`; `None` before any row.
-    fn picture<V: Vehicle>(&self, terrain: Terrain, label: String) -> Option<String> {
+    /// The vehicle `V` at its steepest moment on `terrain`, labelled
+    /// `label`; `None` before any row.
+    fn picture<V: Vehicle>(&self, terrain: Terrain, label: String) -> Option<Picture> {
         let mut frame = Scene::of::<V>().frame_of_row(self.t, &self.columns, &self.row)?;
         frame.label = label;
         let ground = Ground {
             terrain,
             rut: Vec::new(),
         };
-        Some(scene::svg(&frame, &ground))
+        Some(Picture { frame, ground })
     }
 }
 

@@ -74,9 +74,10 @@ pub struct Search {
     pub limit: Limit,
     /// The trials, in the order they ran.
     pub trials: Vec<Trial>,
-    /// The vehicle drawn at the limit (SVG), for the events that draw it:
-    /// an obstacle's largest crossed, at its steepest moment.
-    pub picture: Option<String>,
+    /// The vehicle at the limit, for the events that show it: on an
+    /// obstacle's largest crossed, at its steepest moment (the geometry
+    /// to draw, `trackgen-draw`'s `vehicle::picture`).
+    pub picture: Option<crate::scene::Picture>,
 }
 
 impl Search {

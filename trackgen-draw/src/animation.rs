@@ -1,4 +1,4 @@
-//! A self-contained HTML page that plays the run (canvas, no external
+//! A self-contained HTML page that plays a run (canvas, no external
 //! files): open it in a browser.
 
 use std::fmt::Write;

@@ -1,4 +1,7 @@
-//! Time histories of the run, one panel per quantity pair (SVG).
+//! The run's time histories (SVG): chassis speed, height and pitch,
+//! sprocket torque and speed, the tension in link 1 and the ground's
+//! normal force, one panel each, from the recorded columns [`columns`]
+//! names.
 
 use std::error::Error;
 use std::path::Path;
@@ -49,6 +52,8 @@ pub fn columns() -> Vec<String> {
         .collect()
 }
 
+/// Draws the panels from `results` (which must hold [`columns`]) into the
+/// SVG file `path`.
 pub fn draw(results: &Results, path: &Path) -> Result<(), Box<dyn Error>> {
     let root = SVGBackend::new(path, (1000, 1050)).into_drawing_area();
     root.fill(&WHITE)?;
