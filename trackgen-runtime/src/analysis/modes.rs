@@ -14,7 +14,7 @@ use crate::vehicle::VehicleDynamics;
 pub struct Share {
     /// What moves: `hull bounce`, `hull pitch`, `hull surge`, `road wheel
     /// rw3 on its arm`, `idler idler on its tensioner`, `sprocket`, `upper
-    /// track span (links 29–41)` (above the wheels' centres at rest, or
+    /// track span (links 29–41)` or `(link 10)` (above the wheels' centres at rest, or
     /// `lower`: the run on the ground and round the wheels).
     pub what: String,
     /// Its share of the mode's kinetic energy, 0 to 1.
@@ -289,10 +289,12 @@ impl<S: VehicleDynamics> Bodies<S> {
             };
             let height = run.iter().map(|&k| links[k].y).sum::<f64>() / run.len() as f64;
             let side = if height > axles { "upper" } else { "lower" };
-            add(
-                &format!("{side} track span (links {}–{})", a + 1, b + 1),
-                track_total,
-            );
+            let which = if a == b {
+                format!("link {}", a + 1)
+            } else {
+                format!("links {}–{}", a + 1, b + 1)
+            };
+            add(&format!("{side} track span ({which})"), track_total);
         }
         let total: f64 = groups.iter().map(|g| g.1).sum();
         if total <= 0.0 {
