@@ -207,6 +207,23 @@ impl LinearTimeSolver {
                 got: n,
             });
         }
+        self.link_kinematics(q, loads, penalty_force, trig);
+        self.joint_blocks(qd, closed, stabilisation);
+        let closing = self.eliminate(closed)?;
+        Ok((self.link_accelerations(closed), closing))
+    }
+
+    /// Each link's lever arms `⟂(A ū1)`, `⟂(A ū2)` and its applied force
+    /// and moment (gravity, `loads`, the penalty joint's force on the last
+    /// link and its reaction on the first).
+    fn link_kinematics<const D: usize>(
+        &mut self,
+        q: &SVector<f64, D>,
+        loads: &[BodyLoad],
+        penalty_force: Option<Vector2<f64>>,
+        trig: Option<&[(f64, f64)]>,
+    ) {
+        let n = self.links.len();
         // Per link: lever arms, applied loads.
         for i in 0..n {
             let link = &self.links[i];
@@ -233,6 +250,18 @@ impl LinearTimeSolver {
             self.kin[0].force -= f;
             self.kin[0].moment -= first.p1.dot(&f);
         }
+    }
+
+    /// The joints' 2×2 blocks of `D W Dᵀ` (diagonal, and the coupling to
+    /// the joint before) and their right sides, with `stabilisation` on
+    /// the closing joint's.
+    fn joint_blocks<const D: usize>(
+        &mut self,
+        qd: &SVector<f64, D>,
+        closed: bool,
+        stabilisation: Vector2<f64>,
+    ) {
+        let n = self.links.len();
         // Joint j joins link j to link k = j + 1 (the closing joint, n − 1,
         // joins link n − 1 to link 0).
         let joints = if closed { n } else { n - 1 };
@@ -273,6 +302,13 @@ impl LinearTimeSolver {
         if closed {
             self.rhs[n - 1] -= stabilisation;
         }
+    }
+
+    /// Block elimination and back substitution of the joints' system,
+    /// bordered by the closing joint's columns for a closed loop: the
+    /// multipliers `λ` of every joint, and the closing joint's.
+    fn eliminate(&mut self, closed: bool) -> Result<Option<Vector2<f64>>, DynamicsError> {
+        let n = self.links.len();
         // Block elimination over joints 0 … m−1; for a closed loop the
         // closing joint's two columns ride along (bordering).
         let m = n - 1;
@@ -331,7 +367,7 @@ impl LinearTimeSolver {
             next = Some(*reduced);
         }
         let solution = &self.reduced;
-        let closing = if closed {
+        Ok(if closed {
             // (C − Bᵀ Z) y = s − Bᵀ x₀, with B's blocks at joints 0 and m−1.
             let (b0, bm) = (self.lower[0], self.lower[n - 1].transpose());
             let mut schur = self.diagonal[n - 1];
@@ -354,7 +390,13 @@ impl LinearTimeSolver {
                 *lambda = x.column(0).into_owned();
             }
             None
-        };
+        })
+    }
+
+    /// The links' accelerations from their loads and the joints'
+    /// multipliers: `aᵢ = Wᵢ (Fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁)`.
+    fn link_accelerations<const D: usize>(&self, closed: bool) -> SVector<f64, D> {
+        let n = self.links.len();
         // Accelerations: aᵢ = Wᵢ (Fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁).
         let mut qdd = SVector::<f64, D>::zeros();
         for i in 0..n {
@@ -378,6 +420,6 @@ impl LinearTimeSolver {
                 qdd[1] = a.y;
             }
         }
-        Ok((qdd, closing))
+        qdd
     }
 }

@@ -594,20 +594,14 @@ impl Implicit {
     /// [`solve`](Self::solve)'s loops, inlined into its wide build.
     #[inline(always)]
     fn solve_inline(&mut self, r: &mut [f64]) {
-        let a = self.shift;
         let dof = self.dof;
-        let Starts {
-            track,
-            chassis,
-            integral,
-            tangential,
-        } = self.starts;
+        let Starts { track, chassis, .. } = self.starts;
         let nt = self.independent.len();
         let mut track_q = std::mem::take(&mut self.track_q);
         let mut track_v = std::mem::take(&mut self.track_v);
         self.track_increments(&r[track..track + nt], &mut track_q);
         self.track_increments(&r[track + nt..track + 2 * nt], &mut track_v);
-        let (r_qc, r_vc) = r[chassis..chassis + 2 * dof].split_at(dof);
+        let r_qc = &r[chassis..chassis + dof];
         // The chassis bodies' position increments, `H r_q`, column by
         // column (H is column-major).
         let rows = self.h.nrows();
@@ -619,6 +613,23 @@ impl Implicit {
                 }
             }
         }
+        self.stage_loads(r, &track_q, &track_v);
+        let mut x = std::mem::take(&mut self.x);
+        self.solve_track_and_chassis(r, &track_q, &mut x);
+        self.increments(r, &track_q, &x);
+        self.track_q = track_q;
+        self.track_v = track_v;
+        self.x = x;
+    }
+
+    /// The links' and the chassis bodies' loads of a solve's right side:
+    /// `M u_v + a K u_q` (own and coupled), the velocities the
+    /// configuration's increment turns, the ground points' deflections'
+    /// share. Part of [`solve_inline`](Self::solve_inline).
+    #[inline(always)]
+    fn stage_loads(&mut self, r: &[f64], track_q: &[f64], track_v: &[f64]) {
+        let a = self.shift;
+        let tangential = self.starts.tangential;
         // The links' loads: M u_v + a K u_q (own and coupled), the
         // deflections' share; the chassis bodies': a K u_q.
         for (i, ((load, v), q)) in self
@@ -638,7 +649,7 @@ impl Implicit {
         // velocity changes, `H B k_v + V k_q`, so `M V r_q` joins `M u_v`
         // (`a M V k_v`, the inertia's convective share, is left out).
         let mut turned = std::mem::take(&mut self.turned);
-        self.convective(&track_q, &mut turned);
+        self.convective(track_q, &mut turned);
         for (i, (load, v)) in self
             .loads
             .chunks_exact_mut(3)
@@ -664,7 +675,7 @@ impl Implicit {
             add(
                 &mut self.body_forces,
                 c.body,
-                c.body_by_pose * (at(&track_q, c.link) * a),
+                c.body_by_pose * (at(track_q, c.link) * a),
             );
         }
         for point in &self.points {
@@ -675,11 +686,26 @@ impl Implicit {
                 ..
             }) = point.link
             {
-                let free = (r[tangential + point.state] + a * by_pose.dot(&at(&track_q, i)))
+                let free = (r[tangential + point.state] + a * by_pose.dot(&at(track_q, i)))
                     / (1.0 - a * point.by_self);
                 add(&mut self.loads, i, by_state * (a * free));
             }
         }
+    }
+
+    /// The track's solve without the chassis' answer, the chassis' right
+    /// side and its solve through the Schur complement, then the track's
+    /// answer corrected: `x` the links' velocity increments, the chassis'
+    /// in `chassis_rhs`. Part of [`solve_inline`](Self::solve_inline).
+    #[inline(always)]
+    fn solve_track_and_chassis(&mut self, r: &[f64], track_q: &[f64], x: &mut [f64]) {
+        let a = self.shift;
+        let dof = self.dof;
+        let Starts {
+            chassis, integral, ..
+        } = self.starts;
+        let (r_qc, r_vc) = r[chassis..chassis + 2 * dof].split_at(dof);
+        let rows = self.h.nrows();
         // The track without the chassis' answer, and what it does to the
         // chassis through the rims and teeth.
         // The joints' rows: a turned link turns its joints' velocities,
@@ -690,11 +716,10 @@ impl Implicit {
             self.joint_rhs[j] =
                 self.spin[j].1 * track_q[3 * j + 2] - self.spin[k].0 * track_q[3 * k + 2];
         }
-        let mut x = std::mem::take(&mut self.x);
-        self.chain.solve(&self.loads, &self.joint_rhs, &mut x);
+        self.chain.solve(&self.loads, &self.joint_rhs, x);
         for c in &self.couplings {
             let e = c.body_by_rate * a + c.body_by_pose * (a * a);
-            add(&mut self.body_forces, c.body, e * at(&x, c.link));
+            add(&mut self.body_forces, c.body, e * at(x, c.link));
         }
         // The chassis' right side: M r_v + Hᵀ (the bodies' loads), the
         // arms, the drive; then its increments.
@@ -742,6 +767,22 @@ impl Implicit {
                 }
             }
         }
+    }
+
+    /// Back to the state's increments from the links' `x` and the
+    /// chassis' `chassis_rhs`. Part of [`solve_inline`](Self::solve_inline).
+    #[inline(always)]
+    fn increments(&self, r: &mut [f64], track_q: &[f64], x: &[f64]) {
+        let a = self.shift;
+        let dof = self.dof;
+        let Starts {
+            track,
+            chassis,
+            integral,
+            tangential,
+        } = self.starts;
+        let nt = self.independent.len();
+        let x_c = self.chassis_rhs.as_slice();
         // Back to the state's increments.
         for point in &self.points {
             let denominator = 1.0 - a * point.by_self;
@@ -753,8 +794,8 @@ impl Implicit {
                     by_rate,
                     ..
                 }) => {
-                    let xi = at(&x, i);
-                    (r[slot] + a * by_pose.dot(&(at(&track_q, i) + xi * a)) + a * by_rate.dot(&xi))
+                    let xi = at(x, i);
+                    (r[slot] + a * by_pose.dot(&(at(track_q, i) + xi * a)) + a * by_rate.dot(&xi))
                         / denominator
                 }
                 None => r[slot] / denominator,
@@ -774,9 +815,6 @@ impl Implicit {
             r[chassis + dof + j] = v;
             r[chassis + j] += a * v;
         }
-        self.track_q = track_q;
-        self.track_v = track_v;
-        self.x = x;
     }
 }
 
