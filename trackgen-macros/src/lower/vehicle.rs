@@ -67,28 +67,7 @@ impl Lowering<'_> {
                 if let Some(name) = name {
                     self.errors.at(name.span(), format!("`{k}` takes no name"));
                 }
-                let slot = match k.as_str() {
-                    "chassis" => &mut unique.chassis,
-                    "track" => &mut unique.track,
-                    "contact" => &mut unique.contact,
-                    "drive" => &mut unique.drive,
-                    "powertrain" => &mut unique.powertrain,
-                    _ => {
-                        if unique.shoe.is_some() {
-                            self.errors
-                                .at(kind.span(), "duplicate `shoe` section".to_string());
-                        } else {
-                            unique.shoe = Some((kind, body));
-                        }
-                        continue;
-                    }
-                };
-                if slot.is_some() {
-                    self.errors
-                        .at(kind.span(), format!("duplicate `{k}` section"));
-                } else {
-                    *slot = Some(body);
-                }
+                self.unique_section(&mut unique, kind, body);
                 continue;
             };
             let Some(name) = name else {
@@ -111,20 +90,7 @@ impl Lowering<'_> {
                     .collect(),
                 None => vec![name.clone()],
             };
-            for part_name in &names {
-                // Part names become body-index constants (`RW1`) and local
-                // names beside the frame's (`chassis`).
-                let upper = part_name.to_string().to_uppercase();
-                if upper == "FRAME" || upper == "CHASSIS" {
-                    self.errors.at(
-                        name.span(),
-                        format!("`{part_name}` is reserved for the chassis frame; choose another part name"),
-                    );
-                } else if part_names.insert(upper, part_name.clone()).is_some() {
-                    self.errors
-                        .at(name.span(), format!("duplicate part name `{part_name}`"));
-                }
-            }
+            self.claim_part_names(name, &names, &mut part_names);
             if kind_ir == PartKind::Sprocket {
                 match sprocket {
                     // The runtime drives and meshes one sprocket.
@@ -191,6 +157,67 @@ impl Lowering<'_> {
             chassis,
             part_bodies,
             running,
+        }
+    }
+
+    /// A section of which a vehicle has at most one (`chassis`, `track`,
+    /// `shoe`, `contact`, `drive`, `powertrain`), kept in `unique`; a
+    /// second is an error at its keyword.
+    fn unique_section<'a>(
+        &mut self,
+        unique: &mut VehicleSections<'a>,
+        kind: &'a Ident,
+        body: &'a crate::parse::Block,
+    ) {
+        let k = kind.to_string();
+        let slot = match k.as_str() {
+            "chassis" => &mut unique.chassis,
+            "track" => &mut unique.track,
+            "contact" => &mut unique.contact,
+            "drive" => &mut unique.drive,
+            "powertrain" => &mut unique.powertrain,
+            _ => {
+                if unique.shoe.is_some() {
+                    self.errors
+                        .at(kind.span(), "duplicate `shoe` section".to_string());
+                } else {
+                    unique.shoe = Some((kind, body));
+                }
+                return;
+            }
+        };
+        if slot.is_some() {
+            self.errors
+                .at(kind.span(), format!("duplicate `{k}` section"));
+        } else {
+            *slot = Some(body);
+        }
+    }
+
+    /// Claims the part names `names` (declared as `name`, one or a
+    /// repeated block's) in `taken`, by their upper case: part names
+    /// become body-index constants (`RW1`) and local names beside the
+    /// frame's (`chassis`), so a name taken twice, or the frame's, is an
+    /// error at `name`.
+    fn claim_part_names(
+        &mut self,
+        name: &Ident,
+        names: &[Ident],
+        taken: &mut BTreeMap<String, Ident>,
+    ) {
+        for part_name in names {
+            let upper = part_name.to_string().to_uppercase();
+            if upper == "FRAME" || upper == "CHASSIS" {
+                self.errors.at(
+                    name.span(),
+                    format!(
+                        "`{part_name}` is reserved for the chassis frame; choose another part name"
+                    ),
+                );
+            } else if taken.insert(upper, part_name.clone()).is_some() {
+                self.errors
+                    .at(name.span(), format!("duplicate part name `{part_name}`"));
+            }
         }
     }
 

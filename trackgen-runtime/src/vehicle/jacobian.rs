@@ -401,10 +401,64 @@ impl Tangent {
         (b, kb): (usize, usize),
         out: &mut [f64],
     ) {
-        let n = self.joints.len();
         let (_, qdc, _) = at.chassis;
         let dof = qdc.len();
         let o = self.starts;
+        let root = self.track_motion(at, direction);
+        // The chassis.
+        self.chassis_q.fill(0.0);
+        self.chassis_qd.fill(0.0);
+        if let Some((coordinate, rate)) = direction.chassis {
+            if rate {
+                self.chassis_qd[coordinate] = 1.0;
+            } else {
+                self.chassis_q[coordinate] = 1.0;
+            }
+        }
+        if direction.chassis.is_some() {
+            self.body_motion(at);
+        }
+        self.contact_loads(at, direction, (b, kb), out);
+        // The arms: τ = preload − k φ − c φ̇, φ = θ_b − θ_frame.
+        for arm in at.arms {
+            let (by_angle, by_rate) = arm.spring.slopes();
+            let b = arm.body;
+            let torque = by_angle * (self.chassis_q[2 + b] - self.chassis_q[2])
+                + by_rate * (self.chassis_qd[2 + b] - self.chassis_qd[2]);
+            self.body_loads[b].moment += torque;
+            self.body_loads[0].moment -= torque;
+        }
+        // The drive on the sprocket's speed relative to the frame, and its
+        // integral.
+        if let Some((s, slopes)) = at.drive {
+            let speed = self.chassis_qd[2 + s] - self.chassis_qd[2];
+            let integral = if direction.integral { 1.0 } else { 0.0 };
+            let torque = slopes.torque[0] * speed + slopes.torque[1] * integral;
+            self.body_loads[s].moment += torque;
+            self.body_loads[0].moment -= torque;
+            out[o.integral] = slopes.rate[0] * speed + slopes.rate[1] * integral;
+        }
+        if direction.track.is_some_and(|(_, rate)| rate) {
+            // ∂ż/∂y: the rates' own columns.
+            for (slot, &c) in independent.iter().enumerate() {
+                out[o.track + slot] = if c < 2 { root.1[c] } else { self.rates[c - 2] };
+            }
+        }
+        out[o.chassis..o.chassis + dof].copy_from_slice(&self.chassis_qd);
+    }
+
+    /// A track column's motion: every link's full angle and rate change
+    /// (the independent coordinate's, the loop's pair following it, and at
+    /// fixed independent rates the pair's rates following the
+    /// configuration), then every link's pose and velocity change down the
+    /// chain; the root's position and velocity change. A column that does
+    /// not move the track moves no link.
+    fn track_motion(
+        &mut self,
+        at: &Linearisation<'_>,
+        direction: Direction,
+    ) -> (Vector2<f64>, Vector2<f64>) {
+        let n = self.joints.len();
         // The track: full angle and rate changes of every link.
         self.angles.fill(0.0);
         self.rates.fill(0.0);
@@ -462,19 +516,22 @@ impl Tangent {
                 velocity += perp(*a2) * dw - a2 * (w * dt);
             }
         }
-        // The chassis.
-        self.chassis_q.fill(0.0);
-        self.chassis_qd.fill(0.0);
-        if let Some((coordinate, rate)) = direction.chassis {
-            if rate {
-                self.chassis_qd[coordinate] = 1.0;
-            } else {
-                self.chassis_q[coordinate] = 1.0;
-            }
-        }
-        if direction.chassis.is_some() {
-            self.body_motion(at);
-        }
+        root
+    }
+
+    /// Each contact's load by what the column moves — the links' states
+    /// (a track column), the bodies' (a chassis column: the rims and teeth
+    /// alone), or one ground point's deflection — into the links' block
+    /// (`(b, kb)`: this column's place in it) and the bodies' loads, the
+    /// deflections' rows into `out`.
+    fn contact_loads(
+        &mut self,
+        at: &Linearisation<'_>,
+        direction: Direction,
+        (b, kb): (usize, usize),
+        out: &mut [f64],
+    ) {
+        let o = self.starts;
         // The loads' changes.
         self.body_loads.fill(BodyLoad::ZERO);
         let unit = at.points.unit;
@@ -556,32 +613,6 @@ impl Tangent {
                 );
             }
         }
-        // The arms: τ = preload − k φ − c φ̇, φ = θ_b − θ_frame.
-        for arm in at.arms {
-            let (by_angle, by_rate) = arm.spring.slopes();
-            let b = arm.body;
-            let torque = by_angle * (self.chassis_q[2 + b] - self.chassis_q[2])
-                + by_rate * (self.chassis_qd[2 + b] - self.chassis_qd[2]);
-            self.body_loads[b].moment += torque;
-            self.body_loads[0].moment -= torque;
-        }
-        // The drive on the sprocket's speed relative to the frame, and its
-        // integral.
-        if let Some((s, slopes)) = at.drive {
-            let speed = self.chassis_qd[2 + s] - self.chassis_qd[2];
-            let integral = if direction.integral { 1.0 } else { 0.0 };
-            let torque = slopes.torque[0] * speed + slopes.torque[1] * integral;
-            self.body_loads[s].moment += torque;
-            self.body_loads[0].moment -= torque;
-            out[o.integral] = slopes.rate[0] * speed + slopes.rate[1] * integral;
-        }
-        if direction.track.is_some_and(|(_, rate)| rate) {
-            // ∂ż/∂y: the rates' own columns.
-            for (slot, &c) in independent.iter().enumerate() {
-                out[o.track + slot] = if c < 2 { root.1[c] } else { self.rates[c - 2] };
-            }
-        }
-        out[o.chassis..o.chassis + dof].copy_from_slice(&self.chassis_qd);
     }
 
     /// Every chassis body's pose and velocity change from the chassis'
