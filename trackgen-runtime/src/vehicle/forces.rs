@@ -300,39 +300,57 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += config.drawbar_pull * qdc[0];
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
-        let omega = sprocket.omega(qdc);
-        let (stall, gearbox) = sprocket.gearbox(config, t);
-        let (cap, own) = config.torque_cap_in_gear(omega, stall, gearbox);
-        let (torque, rate) =
-            config
-                .drive
-                .checked_torque(t, omega, sprocket.rolling_radius, integral, cap)?;
-        books.engine_load =
-            config
-                .drive
-                .engine_load(t, torque, omega, sprocket.rolling_radius, cap);
-        books.engine = match (&config.powertrain, own) {
-            // Driving: the torque pushes the way the driver asks, at `ω`
-            // signed the torque's way (negative: forced back).
-            (Some(powertrain), Some(own)) if books.engine_load > 0.0 => powertrain
-                .engine_side_near(own.gear, own.point, omega * torque.signum(), torque.abs()),
-            // Braking: the engine gives nothing, the gearbox stays in its
-            // range.
-            (Some(_), own) => EngineSide {
-                gear: own.and_then(|cap| cap.gear),
-                ..EngineSide::IDLE
-            },
-            (None, _) => EngineSide {
-                engine_power: torque * omega,
-                turbine_power: torque * omega,
-                ..EngineSide::IDLE
-            },
-        };
-        chassis_loads[sprocket.body].moment += torque;
-        chassis_loads[0].moment -= torque;
-        books.torque = torque;
-        books.integral_rate = rate;
+        drive(&sprocket, config, t, qdc, integral, chassis_loads, books)?;
     }
+    Ok(())
+}
+
+/// The drive's torque on the sprocket (and its reaction on the frame) at
+/// time `t`: the speed controller's, capped by the powertrain in its gear
+/// where there is one; the engine's side and the controller's integral
+/// rate into `books`. Part of [`respond`].
+#[inline(always)]
+fn drive<const DC: usize>(
+    sprocket: &Sprocket,
+    config: &VehicleConfig,
+    t: f64,
+    qdc: &SVector<f64, DC>,
+    integral: f64,
+    chassis_loads: &mut [BodyLoad],
+    books: &mut EnergyBooks,
+) -> Result<(), SimulationError> {
+    let omega = sprocket.omega(qdc);
+    let (stall, gearbox) = sprocket.gearbox(config, t);
+    let (cap, own) = config.torque_cap_in_gear(omega, stall, gearbox);
+    let (torque, rate) =
+        config
+            .drive
+            .checked_torque(t, omega, sprocket.rolling_radius, integral, cap)?;
+    books.engine_load = config
+        .drive
+        .engine_load(t, torque, omega, sprocket.rolling_radius, cap);
+    books.engine = match (&config.powertrain, own) {
+        // Driving: the torque pushes the way the driver asks, at `ω`
+        // signed the torque's way (negative: forced back).
+        (Some(powertrain), Some(own)) if books.engine_load > 0.0 => {
+            powertrain.engine_side_near(own.gear, own.point, omega * torque.signum(), torque.abs())
+        }
+        // Braking: the engine gives nothing, the gearbox stays in its
+        // range.
+        (Some(_), own) => EngineSide {
+            gear: own.and_then(|cap| cap.gear),
+            ..EngineSide::IDLE
+        },
+        (None, _) => EngineSide {
+            engine_power: torque * omega,
+            turbine_power: torque * omega,
+            ..EngineSide::IDLE
+        },
+    };
+    chassis_loads[sprocket.body].moment += torque;
+    chassis_loads[0].moment -= torque;
+    books.torque = torque;
+    books.integral_rate = rate;
     Ok(())
 }
 
