@@ -5,9 +5,10 @@
 //! A user's own binary gets every subcommand, option, output and report
 //! the built-in vehicles have:
 //!
-//! ```ignore
+//! ```no_run
+//! # use trackgen::vehicles::m113::M113 as MyTank;
 //! fn main() -> std::process::ExitCode {
-//!     trackgen_app::main::<my_tank::MyTank>()
+//!     trackgen_app::main::<MyTank>()
 //! }
 //! ```
 //!
@@ -15,7 +16,7 @@
 //! first the default) lists them, each with what the vehicle's declaration
 //! cannot say (a powertrain given as a function, its published figures):
 //!
-//! ```ignore
+//! ```no_run
 //! use trackgen::vehicles::{m113::{self, M113}, marder::{self, Marder}};
 //! use trackgen_app::{App, Entry};
 //!
