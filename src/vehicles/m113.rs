@@ -161,9 +161,57 @@ crate::model! {
             final_drive: FINAL_DRIVE,
             gearbox_efficiency: GEARBOX_EFFICIENCY,
             final_drive_efficiency: FINAL_DRIVE_EFFICIENCY,
+            upshift: [UPSHIFT[0], UPSHIFT[1], UPSHIFT[2], UPSHIFT[3]],
+            downshift: [DOWNSHIFT[0], DOWNSHIFT[1], DOWNSHIFT[2], DOWNSHIFT[3]],
+            shift_time: SHIFT_TIME,
+            engine_inertia: ENGINE_INERTIA,
+            engine_drag: [
+                (0.0, 0.0),
+                (50.0 * RPM, -30.0),
+                (1000.0 * RPM, -50.0),
+                (2000.0 * RPM, -70.0),
+                (3000.0 * RPM, -90.0),
+            ],
         },
     }
 }
+
+/// The X200-4's upshift speeds of its input (the converter's turbine),
+/// rad/s, ranges 1 to 3 (the fourth's is not read): where the next range's
+/// full-load torque overtakes this one's, the envelope's crossovers
+/// (`Driveline::ideal_schedule`; a test holds these to it). Derived, not
+/// published: no X200-4 shift points were found.
+pub const UPSHIFT: [f64; 4] = [
+    268.671_479_760_973_7,
+    297.644_828_098_624_5,
+    297.266_455_361_766_25,
+    0.0,
+];
+/// The X200-4's downshift speeds of its input, rad/s, ranges 2 to 4 (the
+/// first's is not read): at [`DOWNSHIFT_FRACTION`] of the sprocket speed
+/// of the upshift into the range, the hysteresis (assumed).
+pub const DOWNSHIFT: [f64; 4] = [
+    0.0,
+    120.902_165_892_438_16,
+    148.568_016_760_339_08,
+    169.401_158_123_965_42,
+];
+/// The sprocket speed of a downshift over that of the upshift it undoes:
+/// 0.8, a 20 % band (assumed: an automatic gearbox's usual hysteresis).
+pub const DOWNSHIFT_FRACTION: f64 = 0.8;
+/// How long a shift takes, s: 0.5 (assumed: a clutch-to-clutch power
+/// shift of a planetary range box hands over in some 0.3–0.8 s).
+pub const SHIFT_TIME: f64 = 0.5;
+
+/// The engine's rotating inertia with the converter's pump, kg m²: Project
+/// Chrono's M113 shafts powertrain (a secondary source), its engine's
+/// crankshaft, 1.1 kg m² (`M113_EngineShafts`), and its transmission's
+/// input shaft, the converter's pump, 0.5 kg m²
+/// (`M113_AutomaticTransmissionShafts`). No 6V53T or X200-4 figure was
+/// found. The engine's torque at no fuel (`engine_drag`) is the same
+/// model's losses map, 30 N m at 50 rpm rising to 90 N m at 3000 rpm,
+/// unscaled: the 6V53T shares the 6V53's displacement and running gear.
+pub const ENGINE_INERTIA: f64 = 1.1 + 0.5;
 
 /// The driveline's efficiency assumed for Chrono's simple map
 /// ([`chrono_simple_map`]; its figures give none): a mechanical gearbox

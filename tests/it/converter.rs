@@ -42,6 +42,7 @@ fn a_driveline(engine: Vec<(f64, f64)>, capacity: Vec<(f64, f64)>) -> Driveline 
         share: 0.5,
         reverse: None,
         shift: None,
+        dynamics: None,
     }
 }
 

@@ -29,7 +29,7 @@
 //!   the 12 s, within 1e-3 of it at Bogacki-Shampine 1e-4.
 
 use crate::support::table_at;
-use crate::support::vehicle::{m113_through, m113a3_driveline};
+use crate::support::vehicle::{m113_through, m113a3_quasi_static};
 use trackgen::terrain::Terrain;
 use trackgen::terrain::profile::Course;
 use trackgen::vehicle::{Driveline, Powertrain};
@@ -50,6 +50,7 @@ fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
         share: 0.5,
         reverse: None,
         shift: None,
+        dynamics: None,
     };
     driveline.check().unwrap();
     for wt in [0.0, 20.0, 60.0, 120.0, 200.0] {
@@ -80,7 +81,7 @@ fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
 
 #[test]
 fn at_full_load_the_part_load_point_is_the_full_load_match() {
-    let driveline = m113a3_driveline();
+    let driveline = m113a3_quasi_static();
     let mut compared = 0;
     for range in 0..driveline.ranges.len() {
         let n = driveline.reduction(range);
@@ -107,7 +108,7 @@ fn at_full_load_the_part_load_point_is_the_full_load_match() {
 
 #[test]
 fn at_part_load_the_locking_ranges_lock_at_the_clutch_s_speed_ratio() {
-    let driveline = m113a3_driveline();
+    let driveline = m113a3_quasi_static();
     // Unlocked at full load, about 0.8 of the clutch's speed ratio.
     let wt = 200.0;
     for range in 0..driveline.ranges.len() {
@@ -135,7 +136,7 @@ fn at_part_load_the_locking_ranges_lock_at_the_clutch_s_speed_ratio() {
 
 #[test]
 fn the_stages_powers_follow_the_efficiencies() {
-    let driveline = m113a3_driveline();
+    let driveline = m113a3_quasi_static();
     let powertrain = Powertrain::Converter(Box::new(driveline.clone()));
     for speed in [0.5, 5.0, 20.0, 40.0, 60.0] {
         let (cap, _, gear) = powertrain.limit_in_gear(speed);
@@ -191,7 +192,7 @@ fn independent_engine_speed(d: &Driveline, range: usize, speed: f64, torque: f64
 
 #[test]
 fn a_run_records_the_converter_and_books_the_engine_s_work() {
-    let driveline = m113a3_driveline();
+    let driveline = m113a3_quasi_static();
     let course = Course::starting_at(-20.0, 0.0)
         .and_then(|c| c.flat(28.0))
         .and_then(|c| c.step(0.3))
@@ -280,7 +281,7 @@ fn a_run_records_the_converter_and_books_the_engine_s_work() {
 /// (to 1e-9: the same match, the cap's rounding).
 #[test]
 fn backing_at_full_throttle_takes_the_reverse_range() {
-    let driveline = m113a3_driveline();
+    let driveline = m113a3_quasi_static();
     let reverse = driveline.reverse_range().unwrap();
     let target = |t: f64| if t < 0.5 { 0.0 } else { -3.0 };
     let results = m113_through(

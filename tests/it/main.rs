@@ -18,6 +18,7 @@ mod converter;
 mod derivatives;
 mod derivatives_pinocchio;
 mod energy_books;
+mod engine_dynamics;
 mod engine_side;
 mod equilibrium;
 mod examples;

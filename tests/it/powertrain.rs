@@ -40,7 +40,9 @@
 
 use crate::support;
 
-use support::vehicle::{m113_run, m113_weight, window};
+use support::converter_torques;
+use support::table_at;
+use support::vehicle::{m113_run, m113_weight, m113a3_driveline, m113a3_quasi_static, window};
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Powertrain, Vehicle};
 use trackgen::vehicles::m113::{self, M113};
@@ -203,7 +205,7 @@ fn up_a_grade_at_full_power_it_holds_the_speed_its_power_buys() {
         max_torque: 8e3,
     };
     let weight = m113_weight();
-    for grade in [0.1, 0.2, 0.3] {
+    for grade in [0.2, 0.3, 0.1] {
         // Assembled on the flat, the grade starting just ahead of the
         // track (which spans about ±2.4 m); the whole track is on it after
         // some 5 m, within the first 8 s at the slowest speed (about
@@ -331,8 +333,80 @@ fn the_cap_holds_the_stall_torque_through_rest() {
 /// of torque is 5 % of speed.
 #[test]
 fn up_a_grade_through_the_converter_it_settles_on_the_envelope() {
+    let powertrain = Powertrain::Converter(Box::new(m113a3_quasi_static()));
+    let averaged = |ripple: &[f64], w: f64| {
+        ripple
+            .iter()
+            .map(|d| powertrain.limit((w + d).max(0.0)).0)
+            .sum::<f64>()
+            / ripple.len() as f64
+    };
+    settles("quasi-static converter", powertrain.clone(), &averaged);
+}
+
+/// [`up_a_grade_through_the_converter_it_settles_on_the_envelope`] through
+/// the M113A3 as declared: its engine's speed a state, its gearbox on its
+/// schedule. The engine's inertia does not follow the sprocket's ripple:
+/// at the run's mean speed `w` in the range the schedule holds there (the
+/// envelope's best: it shifts up at the crossovers), the engine's speed
+/// is where its full-load torque meets the pump's absorption averaged over
+/// the ripple, `T_e(ω_e) = ⟨(ω_e / K(SR_k))²⟩`, and the sprocket gets `f n
+/// ⟨TR(SR_k) (ω_e / K(SR_k))²⟩`, `SR_k = n (w + δ_k) / ω_e` over the
+/// measured ripple `δ_k` — the tables read here, the engine's speed and
+/// the crossing by bisection. The scheduled range does not switch with
+/// the ripple, so the convex kink of the quasi-static envelope at the
+/// ranges' crossover is not there to average over.
+#[test]
+fn up_a_grade_through_the_declared_engine_it_settles_where_its_converter_says() {
+    let d = m113a3_driveline();
+    let powertrain = Powertrain::Converter(Box::new(d.clone()));
+    let f = d.gearbox_efficiency * d.final_drive_efficiency * d.share;
+    let inertial = |ripple: &[f64], w: f64| {
+        let range = powertrain
+            .limit_in_gear(w.max(0.0))
+            .2
+            .expect("a range drives");
+        let n = d.reduction(range);
+        if d.lockup_ranges.contains(&range) && d.locks(n * w) {
+            // Locked, the engine turns with the turbine's mean speed.
+            return f * n * table_at(&d.engine, n * w).max(0.0);
+        }
+        let turbine: Vec<f64> = ripple.iter().map(|r| n * (w + r).max(0.0)).collect();
+        let mean = |g: &dyn Fn(f64) -> f64| {
+            turbine.iter().map(|&wt| g(wt)).sum::<f64>() / turbine.len() as f64
+        };
+        let balance = |we: f64| {
+            table_at(&d.engine, we).max(0.0) - mean(&|wt| converter_torques(&d, we, wt).0)
+        };
+        let (mut lo, mut hi) = (
+            turbine.iter().fold(0.0f64, |m, &x| m.max(x)) * 1.0001 + 1e-9,
+            d.engine[d.engine.len() - 1].0,
+        );
+        for _ in 0..100 {
+            let mid = 0.5 * (lo + hi);
+            if balance(mid) > 0.0 {
+                lo = mid
+            } else {
+                hi = mid
+            }
+        }
+        let we = 0.5 * (lo + hi);
+        f * n * mean(&|wt| converter_torques(&d, we, wt).1)
+    };
+    settles("declared engine", powertrain.clone(), &inertial);
+}
+
+/// Up 10, 20 and 30 % at full throttle through `powertrain`: the run's
+/// mean speed against the crossing of `expected(ripple, w)` (the
+/// sprocket's torque at mean sprocket speed `w` with the run's ripple
+/// about it) with the grade's ask, within 3 %. The ask is measured at the
+/// run's speed and 2 % either side (the speed controller alone holding
+/// each), linear between: on 10 % it steps by 5 % between 8.42 and 8.45
+/// m/s (a resonance of the running gear at the shoes' passage), and a run
+/// that settles against the step bears the step's torque, not the ask
+/// below it.
+fn settles(label: &str, powertrain: Powertrain, expected: &dyn Fn(&[f64], f64) -> f64) {
     use trackgen::contact::sprocket::rolling_radius;
-    let powertrain = m113::powertrain();
     let r = rolling_radius(10, m113::SHOE_PITCH);
     for grade in [0.1, 0.2, 0.3] {
         let ramp = Terrain::Ramp {
@@ -341,40 +415,56 @@ fn up_a_grade_through_the_converter_it_settles_on_the_envelope() {
             slope: grade,
         };
         let (speed, _, slip, omegas) = steady(ramp.clone(), 25.0, Some(powertrain.clone()), 20.0);
-        // The controller holds the track's speed: the hull's is `1 − i` of it.
-        let (held, held_power, _, held_omegas) = steady(ramp, speed / (1.0 - slip), None, 20.0);
-        assert!((held - speed).abs() < 0.01 * speed, "{held} vs {speed}");
         let mean = |v: &[f64]| v.iter().map(|w| w.abs()).sum::<f64>() / v.len() as f64;
-        let needed = held_power / mean(&held_omegas);
+        // The controller holds the track's speed: the hull's is `1 − i` of it.
+        let asks: Vec<(f64, f64)> = [0.98, 1.0, 1.02]
+            .iter()
+            .map(|k| {
+                let (held, held_power, _, held_omegas) =
+                    steady(ramp.clone(), k * speed / (1.0 - slip), None, 10.0);
+                assert!(
+                    (held - k * speed).abs() < 0.01 * speed,
+                    "{held} vs {}",
+                    k * speed
+                );
+                (held, held_power / mean(&held_omegas))
+            })
+            .collect();
+        let ask = |v: f64| {
+            let i = if v < asks[1].0 { 1 } else { 2 };
+            let ((v0, a0), (v1, a1)) = (asks[i - 1], asks[i]);
+            a0 + (a1 - a0) * (v - v0) / (v1 - v0)
+        };
         let centre = mean(&omegas);
         let ripple: Vec<f64> = omegas.iter().map(|w| w.abs() - centre).collect();
-        let averaged = |w: f64| {
-            ripple
-                .iter()
-                .map(|d| powertrain.limit((w + d).max(0.0)).0)
-                .sum::<f64>()
-                / ripple.len() as f64
-        };
-        // The averaged envelope falls with speed here: bisect its crossing.
+        let hull = |w: f64| (1.0 - slip) * r * w;
+        // The expected torque falls with speed and the ask rises: bisect
+        // their crossing.
         let (mut low, mut high) = (0.0, 100.0);
         for _ in 0..60 {
             let mid = 0.5 * (low + high);
-            if averaged(mid) > needed {
+            if expected(&ripple, mid) > ask(hull(mid)) {
                 low = mid;
             } else {
                 high = mid;
             }
         }
-        let want = (1.0 - slip) * r * 0.5 * (low + high);
+        let want = hull(0.5 * (low + high));
         println!(
-            "{} % grade through the converter: {speed:.4} m/s against the envelope's {want:.4} m/s \
-             ({:+.2} %; the grade asks {needed:.0} N m, slip {slip:.4})",
+            "{} % grade through the {label}: {speed:.4} m/s against {want:.4} m/s \
+             ({:+.2} %; the grade asks {:.0} / {:.0} / {:.0} N m at {:.3} / {:.3} / {:.3} m/s, slip {slip:.4})",
             grade * 100.0,
-            100.0 * (speed / want - 1.0)
+            100.0 * (speed / want - 1.0),
+            asks[0].1,
+            asks[1].1,
+            asks[2].1,
+            asks[0].0,
+            asks[1].0,
+            asks[2].0,
         );
         assert!(
             (speed - want).abs() < 0.03 * want,
-            "{} % grade: {speed} m/s against {want} m/s",
+            "{label}, {} % grade: {speed} m/s against {want} m/s",
             grade * 100.0
         );
     }

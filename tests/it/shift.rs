@@ -26,6 +26,7 @@
 use crate::support::vehicle::{m113_through, m113a3_driveline};
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Driveline, Engaged, PowertrainError, Shift};
+use trackgen::vehicles::m113;
 
 /// The sprocket speed (rad/s) above which range `r + 1` gives more
 /// full-load torque than range `r`, by bisection between where `r` gives
@@ -283,4 +284,33 @@ fn a_run_shifts_where_the_schedule_says() {
             assert!(down_speeds[r] < up_speeds[r - 1], "range {}", r + 1);
         }
     }
+}
+
+/// The M113A3 declares its ideal shift points (none of the X200-4's are
+/// published): upshifts at the envelope's crossovers, downshifts at
+/// `m113::DOWNSHIFT_FRACTION` of them, `m113::SHIFT_TIME` a shift — the
+/// schedule `Driveline::ideal_schedule` gives its quasi-static form, to
+/// the last printed digit (1e-12).
+#[test]
+fn the_m113a3_declares_its_ideal_schedule() {
+    let d = crate::support::vehicle::m113a3_quasi_static();
+    let ideal = d
+        .ideal_schedule(m113::DOWNSHIFT_FRACTION, m113::SHIFT_TIME)
+        .expect("each range overtakes the one below");
+    let declared = m113a3_driveline()
+        .shift
+        .expect("the M113A3 declares a schedule");
+    for (what, a, b) in [
+        ("upshift", &declared.up, &ideal.up),
+        ("downshift", &declared.down, &ideal.down),
+    ] {
+        for (r, (x, y)) in a.iter().zip(b).enumerate() {
+            assert!(
+                (x - y).abs() <= 1e-12 * y.max(1.0),
+                "{what} of range {}: {x} against {y}",
+                r + 1
+            );
+        }
+    }
+    assert_eq!(declared.time, ideal.time);
 }

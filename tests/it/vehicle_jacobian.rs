@@ -22,10 +22,11 @@
 //! there. At least 97 % of the columns must be compared.
 
 use crate::support;
-use support::vehicle::{driven, driven_with};
+use support::vehicle::{driven, driven_toward, driven_with};
 
 use trackgen::integrate::OdeSystem;
 use trackgen::nalgebra::DVector;
+use trackgen::system::Simulated;
 use trackgen::terrain::{Terrain, soil::SoilPreset};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 use trackgen::vehicles::{m113::M113, marder::Marder};
@@ -189,4 +190,42 @@ fn m113_leaning_on_a_wall_with_its_hull() {
     let (system, t, y, hull) = support::vehicle::m113_leaning_on_a_wall();
     assert!(hull > 1e3, "the hull bears on the wall: {hull} N");
     check_at("M113, hull on a wall", system, t, y);
+}
+
+/// Through its engine, the M113A3's converter, whose speed and the locked
+/// driveline's twist are states: accelerating at full fuel in the first
+/// range (0.8 s toward 6 m/s), at part load holding 2 m/s (3 s), and
+/// locked up in the second range (3.5 s toward 9 m/s); each state's record
+/// says which.
+#[test]
+fn m113_through_its_engine() {
+    // Each: what, the speed aimed at (m/s), when (s), and how the state's
+    // fuel and lock-up say so.
+    type Case = (&'static str, f64, f64, fn(f64, f64) -> bool);
+    let cases: [Case; 3] = [
+        ("full fuel", 6.0, 0.8, |fuel, _| fuel == 1.0),
+        ("part load", 2.0, 3.0, |fuel, _| fuel > 0.0 && fuel < 1.0),
+        ("locked up", 9.0, 3.5, |_, locked| locked == 1.0),
+    ];
+    for (label, speed, duration, holds) in cases {
+        let (mut system, t, y) = driven_toward::<M113>(
+            Terrain::Flat { height: 0.0 },
+            move |t| speed * t.min(1.0),
+            |config| config.powertrain = M113::powertrain(),
+            duration,
+            1e-4,
+        );
+        let columns = system.columns();
+        let mut row = Vec::new();
+        system.observe(t, y.as_slice(), &mut row).expect("observes");
+        let at = |name: &str| row[columns.iter().position(|c| c == name).unwrap()];
+        assert!(
+            holds(at("engine_load"), at("locked")),
+            "{label}: fuel {}, locked {}",
+            at("engine_load"),
+            at("locked")
+        );
+        assert!(system.layout().engine.is_some());
+        check_at(&format!("M113 through its engine, {label}"), system, t, y);
+    }
 }

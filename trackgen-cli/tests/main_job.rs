@@ -295,11 +295,16 @@ fn m113_takes_a_dip_and_a_step_in_speed() {
     );
 }
 
-/// `--engine`: the same step, now through the 6V53's map. At rest the
-/// engine gives less than the controller asks (its lowest gear's torque at
-/// the sprocket, `trackgen::vehicles::m113::powertrain().limit(0)`), so the
-/// first row holds the engine's torque at full load and the run says the
-/// engine set the speed.
+/// `--engine`: the same step, now through the M113A3's engine and
+/// converter, the engine's speed a state. The run starts with the engine
+/// idling and the turbine at rest: the governor opens the fuel fully at
+/// once, and the sprocket gets the converter's stall torque at idle,
+/// `f n TR(0) (ω_idle / K(0))²` from the declared tables (the first range's
+/// reduction `n`, the stages' efficiencies and the side's share `f`). Then
+/// the engine spins up, and at every row the sprocket gets what the
+/// converter gives at the recorded engine speed and the turbine's, `f n
+/// TR(SR) (ω_e / K(SR))²` with `SR = −n ω / ω_e` (the tables read here),
+/// falling to none over the coupling band below `SR = 1`.
 #[test]
 fn m113_with_its_engine_starts_on_the_engines_torque() {
     let m113 = main_job();
@@ -315,7 +320,7 @@ fn m113_with_its_engine_starts_on_the_engines_torque() {
             "--ramp",
             "0",
             "--duration",
-            "0.2",
+            "1.2",
             "--out",
             dir.to_str().unwrap(),
         ],
@@ -327,16 +332,66 @@ fn m113_with_its_engine_starts_on_the_engines_torque() {
         stdout.contains("engine: the engine at full load set the speed"),
         "{stdout}"
     );
-    let csv = Csv::read(&dir.join("m113.csv"));
-    let (torque, load) = (csv.column("sprocket_torque"), csv.column("engine_load"));
-    let (want, _) = trackgen::vehicles::m113::powertrain().limit(0.0);
+    let csv = Csv::read(&dir.join("all.csv"));
+    let (torque, load, engine, omega, gear) = (
+        csv.column("sprocket_torque"),
+        csv.column("engine_load"),
+        csv.column("engine_speed"),
+        csv.column("sprocket_speed"),
+        csv.column("gear"),
+    );
+    let powertrain = trackgen::vehicles::m113::powertrain();
+    let trackgen::vehicle::Powertrain::Converter(d) = &powertrain else {
+        panic!("the M113A3 has a converter");
+    };
+    let idle = d.engine[0].0;
+    let f = d.gearbox_efficiency * d.final_drive_efficiency * d.share;
+    let n = d.ranges[0] * d.final_drive;
+    let table = |points: &[(f64, f64)], x: f64| {
+        let i = points
+            .iter()
+            .position(|p| p.0 > x)
+            .unwrap_or(points.len() - 1)
+            .max(1);
+        let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
+        y0 + (y1 - y0) * (x.clamp(x0, x1) - x0) / (x1 - x0)
+    };
+    // The turbine at `−n ω` (forward the sprocket turns negative); turned
+    // backwards (the hull rolling back as it settles) the converter is at
+    // stall.
+    let gives = |we: f64, w: f64| {
+        let sr = (-n * w / we).max(0.0);
+        let k = table(&d.capacity, sr);
+        // No slip, no torque: the coupling band below SR = 1.
+        let taper = ((1.0 - sr) / trackgen::vehicle::COUPLING_BAND).clamp(0.0, 1.0);
+        f * n * table(&d.torque_ratio, sr) * (we / k) * (we / k) * taper
+    };
+    assert_eq!(engine[0], idle, "the engine idles at t = 0");
     // Forward drive turns the sprocket clockwise: a negative torque.
     assert!(
-        (torque[0] + want).abs() <= 1e-9 * want,
-        "torque at t = 0: {} N m, the engine's −{want} N m",
+        (torque[0] + gives(idle, 0.0)).abs() <= 1e-9 * gives(idle, 0.0),
+        "torque at t = 0: {} N m, the converter's stall at idle",
         torque[0]
     );
-    assert_eq!(load[0], 1.0, "engine load at t = 0");
+    for i in 0..torque.len() {
+        assert_eq!(
+            (load[i], gear[i]),
+            (1.0, 1.0),
+            "full fuel in the first range, row {i}"
+        );
+        let want = gives(engine[i], omega[i]);
+        assert!(
+            (torque[i] + want).abs() <= 1e-9 * want,
+            "row {i}: {} N m, the converter's −{want} at {} rad/s",
+            torque[i],
+            engine[i]
+        );
+    }
+    assert!(
+        engine.windows(2).all(|w| w[1] > w[0]),
+        "the engine spins up throughout"
+    );
+    assert!(engine[engine.len() - 1] > 4.0 * idle);
 }
 
 /// A negative speed drives in reverse: the chassis ends moving backwards

@@ -138,6 +138,27 @@ pub struct Powertrain {
     pub shift: Option<(Vec<Num>, Vec<Num>, Num)>,
     /// The reverse range's reduction, if declared.
     pub reverse: Option<Num>,
+    /// The engine's inertia, drag, governor and lock-up clutch, if
+    /// declared: its speed a state of the run.
+    pub dynamics: Option<EngineDynamics>,
+}
+
+/// A declared engine whose speed is a state: the runtime's
+/// `EngineDynamics`, its optional figures `None` for the runtime's
+/// defaults.
+pub struct EngineDynamics {
+    /// kg m².
+    pub inertia: Num,
+    /// The torque at no fuel, N m, against engine speed, rad/s.
+    pub drag: Vec<(Num, Num)>,
+    /// s.
+    pub governor_time: Option<Num>,
+    /// N m.
+    pub lockup_capacity: Option<Num>,
+    /// N m/rad.
+    pub lockup_stiffness: Option<Num>,
+    /// N m s/rad.
+    pub lockup_damping: Option<Num>,
 }
 
 /// A shoe's contact features, link frame, m.

@@ -155,6 +155,9 @@ fn vehicle_with_a_powertrain() {
                 upshift: [250.0, 0.0],
                 downshift: [0.0, 100.0],
                 shift_time: 0.4,
+                engine_inertia: 0.8,
+                engine_drag: [(0.0, 0.0), (300.0, -40.0)],
+                governor_time: 0.05,
             },
         }
     })));

@@ -116,7 +116,7 @@ pub mod __private {
     };
     pub use crate::trig::{sin_cos, sin_cos_each};
     pub use crate::vehicle::{
-        ContactFit, DeclaredContact, DeclaredPair, Drive, Driveline, Geometry, Powertrain, Shift,
-        Vehicle, VehicleConfig, VehicleSystem,
+        ContactFit, DeclaredContact, DeclaredPair, Drive, Driveline, EngineDynamics, Geometry,
+        Powertrain, Shift, Vehicle, VehicleConfig, VehicleSystem,
     };
 }

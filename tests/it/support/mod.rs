@@ -154,3 +154,18 @@ pub fn table_at(points: &[(f64, f64)], x: f64) -> f64 {
     let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
     y0 + (y1 - y0) * (x - x0) / (x1 - x0)
 }
+
+/// A converter's pump and turbine torques (N m) with the engine at `we`
+/// and the turbine at `wt` (rad/s, `wt ≤ we`), read from its declared
+/// tables: `(ω_e / K(SR))²` and `TR(SR)` times it, falling linearly to
+/// none over the coupling band below `SR = 1`
+/// ([`COUPLING_BAND`](trackgen::vehicle::COUPLING_BAND)), the stall's at
+/// a turbine turned backwards.
+pub fn converter_torques(d: &trackgen::vehicle::Driveline, we: f64, wt: f64) -> (f64, f64) {
+    let sr = (wt / we).max(0.0);
+    assert!(sr <= 1.0, "written for SR ≤ 1");
+    let k = table_at(&d.capacity, sr);
+    let taper = ((1.0 - sr) / trackgen::vehicle::COUPLING_BAND).min(1.0);
+    let pump = (we / k) * (we / k) * taper;
+    (pump, table_at(&d.torque_ratio, sr) * pump)
+}

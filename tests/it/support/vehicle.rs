@@ -118,7 +118,18 @@ pub fn driven_with<V: Vehicle>(
     duration: f64,
     tolerance: f64,
 ) -> (V::System, f64, DVector<f64>) {
-    let mut config = V::declared_config(terrain, V::speed_drive(|t| 2.0 * t.min(1.0)));
+    driven_toward::<V>(terrain, |t| 2.0 * t.min(1.0), change, duration, tolerance)
+}
+
+/// [`driven_with`], its speed drive aiming at `target(t)` (m/s).
+pub fn driven_toward<V: Vehicle>(
+    terrain: Terrain,
+    target: impl Fn(f64) -> f64 + Send + 'static,
+    change: impl FnOnce(&mut VehicleConfig),
+    duration: f64,
+    tolerance: f64,
+) -> (V::System, f64, DVector<f64>) {
+    let mut config = V::declared_config(terrain, V::speed_drive(target));
     change(&mut config);
     let mut system = build::<V>(config).expect("builds");
     let mut y = system.initial_state();
@@ -193,6 +204,18 @@ pub fn m113a3_driveline() -> Driveline {
     match m113::powertrain() {
         Powertrain::Converter(driveline) => *driveline,
         other => panic!("the M113A3 has a torque converter, not {other:?}"),
+    }
+}
+
+/// The M113A3's driveline as a quasi-static converter: no engine
+/// inertia (the engine where the converter's steady match puts it) and
+/// ideal shifting, what the M113 declared before its engine's speed became
+/// a state — for the checks of that model.
+pub fn m113a3_quasi_static() -> Driveline {
+    Driveline {
+        dynamics: None,
+        shift: None,
+        ..m113a3_driveline()
     }
 }
 

@@ -119,6 +119,50 @@ fn powertrain(p: &Powertrain) -> TokenStream {
         Some(ratio) => quote!(::std::option::Option::Some(#ratio)),
         None => quote!(::std::option::Option::None),
     };
+    let dynamics = match &p.dynamics {
+        Some(d) => {
+            let inertia = &d.inertia;
+            let drag = table(&d.drag);
+            let or = |value: &Option<crate::num::Num>, default: TokenStream| match value {
+                Some(v) => quote!(#v),
+                None => default,
+            };
+            let governor_time = or(&d.governor_time, quote!(#rt::EngineDynamics::GOVERNOR_TIME));
+            let peak = p.engine.iter().map(|(_, t)| t);
+            let lockup_capacity = or(
+                &d.lockup_capacity,
+                quote!(#rt::EngineDynamics::LOCKUP_MARGIN * [#(#peak),*].into_iter().fold(0.0, f64::max)),
+            );
+            let lockup_stiffness = or(
+                &d.lockup_stiffness,
+                quote!(#rt::EngineDynamics::lockup_stiffness_for(__engine_inertia)),
+            );
+            let lockup_damping = or(
+                &d.lockup_damping,
+                quote!(#rt::EngineDynamics::lockup_damping_for(
+                    __engine_inertia,
+                    __lockup_stiffness
+                )),
+            );
+            quote! {
+                ::std::option::Option::Some({
+                    // The defaults of the driveline's compliance follow the
+                    // declared inertia (named apart from the user's names).
+                    let __engine_inertia: f64 = #inertia;
+                    let __lockup_stiffness: f64 = #lockup_stiffness;
+                    #rt::EngineDynamics {
+                        inertia: __engine_inertia,
+                        drag: #drag,
+                        governor_time: #governor_time,
+                        lockup_capacity: #lockup_capacity,
+                        lockup_stiffness: __lockup_stiffness,
+                        lockup_damping: #lockup_damping,
+                    }
+                })
+            }
+        }
+        None => quote!(::std::option::Option::None),
+    };
     quote! {
         #rt::Powertrain::Converter(::std::boxed::Box::new(#rt::Driveline {
             engine: #engine,
@@ -133,6 +177,7 @@ fn powertrain(p: &Powertrain) -> TokenStream {
             share: #share,
             reverse: #reverse,
             shift: #shift,
+            dynamics: #dynamics,
         }))
     }
 }

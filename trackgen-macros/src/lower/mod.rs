@@ -13,6 +13,7 @@ use proc_macro2::Span;
 use quote::ToTokens;
 use syn::Ident;
 
+mod engine;
 mod keys;
 mod powertrain;
 mod running;

@@ -14,7 +14,7 @@ use crate::ir::{ConstCheck, Powertrain};
 use crate::num::Num;
 
 /// The keys of a `powertrain { … }` section.
-const KEYS: [&str; 14] = [
+const KEYS: [&str; 20] = [
     "reverse",
     "upshift",
     "downshift",
@@ -29,6 +29,12 @@ const KEYS: [&str; 14] = [
     "gearbox_efficiency",
     "final_drive_efficiency",
     "share",
+    "engine_inertia",
+    "engine_drag",
+    "governor_time",
+    "lockup_capacity",
+    "lockup_stiffness",
+    "lockup_damping",
 ];
 
 /// The side's share of the driveline's output when none is declared: a
@@ -37,7 +43,7 @@ const DEFAULT_SHARE: f64 = 0.5;
 
 /// Which table, for its rules.
 #[derive(Clone, Copy, PartialEq)]
-enum Table {
+pub(super) enum Table {
     /// Full-load torque against engine speed: speeds from one above 0.
     Engine,
     /// The converter's capacity factor: from speed ratio 0, each `K > 0`.
@@ -45,6 +51,9 @@ enum Table {
     /// The converter's torque ratio: from speed ratio 0, each `TR ≥ 0`,
     /// `SR · TR ≤ 1`.
     TorqueRatio,
+    /// The engine's torque at no fuel against its speed: speeds from one
+    /// ≥ 0, each torque ≤ 0.
+    Drag,
 }
 
 impl Lowering<'_> {
@@ -79,6 +88,7 @@ impl Lowering<'_> {
             Some(_) => self.positive(&fields, "reverse", true).map(Some),
             None => Some(None),
         };
+        let dynamics = self.engine_dynamics(&fields);
         Some(Powertrain {
             engine: engine?,
             capacity: capacity?,
@@ -92,6 +102,7 @@ impl Lowering<'_> {
             share: share?,
             shift: shift?,
             reverse: reverse?,
+            dynamics: dynamics?,
         })
     }
 
@@ -237,7 +248,12 @@ impl Lowering<'_> {
 
     /// A table `[(x, y), …]` of two or more points, its abscissae
     /// increasing, each point by `table`'s rules where the macro knows it.
-    fn table(&mut self, fields: &Fields, key: &str, table: Table) -> Option<Vec<(Num, Num)>> {
+    pub(super) fn table(
+        &mut self,
+        fields: &Fields,
+        key: &str,
+        table: Table,
+    ) -> Option<Vec<(Num, Num)>> {
         let Some(expr) = fields.map.get(key) else {
             self.missing(fields, key);
             return None;
@@ -262,7 +278,11 @@ impl Lowering<'_> {
             };
             let (x, y) = (point.x.known(), point.y.known());
             if let Some(x) = x {
-                let problem = if i == 0 && table != Table::Engine && x != 0.0 {
+                let problem = if i == 0 && table == Table::Drag && x < 0.0 {
+                    Some(format!(
+                        "`{key}` must start at an engine speed of 0 rad/s or more, not {x}"
+                    ))
+                } else if i == 0 && !matches!(table, Table::Engine | Table::Drag) && x != 0.0 {
                     Some(format!(
                         "`{key}` must start at speed ratio 0 (stall), not {x}"
                     ))
@@ -293,6 +313,9 @@ impl Lowering<'_> {
                     )),
                     Table::TorqueRatio if y < 0.0 => Some(format!(
                         "`{key}`: a torque ratio must be 0 or more, found {y}"
+                    )),
+                    Table::Drag if y > 0.0 => Some(format!(
+                        "`{key}`: the engine's torque at no fuel is its drag, 0 or less, found {y}"
                     )),
                     Table::TorqueRatio if x.is_some_and(|x| x * y > 1.0) => Some(format!(
                         "`{key}`: the converter's efficiency SR·TR is {:.3} at point {}: more than 1",

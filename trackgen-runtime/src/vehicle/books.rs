@@ -33,10 +33,17 @@ pub(super) struct EnergyBooks {
     pub torque: f64,
     /// The share of the powertrain's cap the drive uses
     /// ([`TorqueCap::load`](super::drive::TorqueCap::load)): 1 at full
-    /// load, 0 braking or without a powertrain.
+    /// load, 0 braking or without a powertrain; through an engine whose
+    /// speed is a state, the governor's fuel.
     pub engine_load: f64,
     /// The rate of the drive controller's integral, rad/s.
     pub integral_rate: f64,
+    /// The engine's acceleration (rad/s²) and the locked driveline's twist
+    /// rate (rad/s), where they are states (0 otherwise).
+    pub engine_rate: [f64; 2],
+    /// The elastic energy of the locked driveline's twist, this side's
+    /// share, J (an engine whose speed is a state; 0 otherwise).
+    pub twist_energy: f64,
     /// The engine's side of the drive ([`Powertrain::engine_side`](super::Powertrain::engine_side)):
     /// its `engine_power` is the engine work's rate. Without a powertrain
     /// the drive is its own engine (its power is the sprocket's); braking,

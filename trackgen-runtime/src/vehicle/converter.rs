@@ -20,7 +20,9 @@
 //! turns with the turbine and gives its full-load torque there.
 
 use super::PowertrainError;
+use super::engine::EngineDynamics;
 use super::shift::{Engaged, Shift};
+use super::tables::{engine_torque, lerp, solve_piece, table};
 
 /// An engine, a torque converter with a lock-up clutch, a range gearbox and
 /// a final drive, as one side's sprocket sees them at full load
@@ -72,6 +74,11 @@ pub struct Driveline {
     /// in the range that gives the most torque (the tractive-effort
     /// envelope a mobility model uses).
     pub shift: Option<Shift>,
+    /// The engine's inertia, drag, governor and lock-up clutch, which make
+    /// its speed a state of the run ([`EngineDynamics`]); `None`: the
+    /// engine runs where the converter's steady match puts it
+    /// ([`part_load`](Self::part_load)), with no inertia.
+    pub dynamics: Option<EngineDynamics>,
 }
 
 /// Where the engine and converter run at full load for one range at one
@@ -162,6 +169,9 @@ impl Driveline {
         }
         if let Some(shift) = &self.shift {
             shift.check(&self.ranges)?;
+        }
+        if let Some(dynamics) = &self.dynamics {
+            dynamics.check()?;
         }
         for (what, value) in [
             ("gearbox_efficiency", self.gearbox_efficiency),
@@ -587,106 +597,10 @@ impl Driveline {
     }
 }
 
-/// The root of `g` in `[a, b]` where `g(a) > 0 ≥ g(b)` (given with their
-/// values), `g` piecewise smooth in between: from the secant's crossing,
-/// Newton's steps kept inside the shrinking bracket, bisection where a
-/// step would leave it. It stops after a Newton step shorter than 1e-10
-/// of `ω_e`: quadratic convergence leaves an error of the order of that
-/// step squared, at the last bits.
-fn solve_piece(
-    g: &impl Fn(f64) -> (f64, f64),
-    (mut a, ga): (f64, f64),
-    (mut b, gb): (f64, f64),
-) -> f64 {
-    let mut x = a + (b - a) * ga / (ga - gb);
-    if !(x > a && x < b) {
-        x = 0.5 * (a + b);
-    }
-    for _ in 0..100 {
-        let (value, slope) = g(x);
-        if value > 0.0 {
-            a = x;
-        } else {
-            b = x;
-        }
-        let newton = x - value / slope;
-        if newton > a && newton < b {
-            if (newton - x).abs() <= 1e-10 * x.abs() {
-                return newton;
-            }
-            x = newton;
-        } else {
-            x = 0.5 * (a + b);
-        }
-        if b - a <= f64::EPSILON * b {
-            return x;
-        }
-    }
-    x
-}
-
-/// The largest value of a table (as [`lerp`] reads it) at `x` or beyond.
+/// The largest value of a table (as [`lerp`](super::tables::lerp) reads it) at `x` or beyond.
 fn most_from(points: &[(f64, f64)], x: f64) -> f64 {
     points
         .iter()
         .filter(|p| p.0 > x)
         .fold(lerp(points, x).0, |m, p| m.max(p.1))
-}
-
-/// A table's value at `x`, linear between points and held beyond the ends,
-/// and its slope (0 where held).
-fn lerp(points: &[(f64, f64)], x: f64) -> (f64, f64) {
-    let (first, last) = (points[0], points[points.len() - 1]);
-    if x <= first.0 {
-        return (first.1, 0.0);
-    }
-    if x >= last.0 {
-        return (last.1, 0.0);
-    }
-    let i = points
-        .partition_point(|p| p.0 <= x)
-        .clamp(1, points.len() - 1);
-    let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
-    let slope = (y1 - y0) / (x1 - x0);
-    (y0 + slope * (x - x0), slope)
-}
-
-/// The engine's full-load torque at `w` and its slope: the map, linear
-/// between its points, none below its first speed or beyond its last, and
-/// none where the map falls below 0 (a governor's cut-off). The one
-/// reading of an engine map, [`Powertrain::Engine`](super::Powertrain::Engine)'s
-/// too.
-pub(super) fn engine_torque(map: &[(f64, f64)], w: f64) -> (f64, f64) {
-    if w < map[0].0 || w > map[map.len() - 1].0 {
-        return (0.0, 0.0);
-    }
-    let (torque, slope) = lerp(map, w);
-    if torque > 0.0 {
-        (torque, slope)
-    } else {
-        (0.0, 0.0)
-    }
-}
-
-/// A table of two or more finite points of increasing abscissa from one
-/// ≥ 0, each value accepted by `valid`: the one rule of every powertrain
-/// table (an engine map, a converter's curves).
-pub(super) fn table(
-    points: &[(f64, f64)],
-    what: &'static str,
-    valid: impl Fn(f64) -> bool,
-) -> Result<(), PowertrainError> {
-    if points.len() < 2 {
-        return Err(PowertrainError::Table {
-            what,
-            point: points.len(),
-        });
-    }
-    for (i, &(x, y)) in points.iter().enumerate() {
-        let increasing = i == 0 || x > points[i - 1].0;
-        if !(x.is_finite() && y.is_finite() && x >= 0.0 && increasing && valid(y)) {
-            return Err(PowertrainError::Table { what, point: i });
-        }
-    }
-    Ok(())
 }

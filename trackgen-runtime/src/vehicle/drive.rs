@@ -168,6 +168,22 @@ impl Drive {
         state: f64,
         cap: TorqueCap,
     ) -> Result<(f64, f64), SimulationError> {
+        let (torque, rate, _, _) = self.checked_law(t, omega, radius, state, cap)?;
+        Ok((torque, rate))
+    }
+
+    /// [`checked_torque`](Self::checked_torque)'s torque and integral
+    /// rate with their [`slopes`](Self::slopes), and the way the driver
+    /// asks the sprocket to turn as a sign (0: to stand), from one reading
+    /// of the driver's demand.
+    pub(super) fn checked_law(
+        &self,
+        t: f64,
+        omega: f64,
+        radius: f64,
+        state: f64,
+        cap: TorqueCap,
+    ) -> Result<(f64, f64, DriveSlopes, f64), SimulationError> {
         let demand = self.demand(t);
         if !demand.is_finite() {
             let what = match self {
@@ -176,8 +192,8 @@ impl Drive {
             };
             return Err(SimulationError::NonFinite { t, what });
         }
-        let (torque, rate, _) = self.law(demand, omega, radius, state, cap);
-        Ok((torque, rate))
+        let (torque, rate, slopes) = self.law(demand, omega, radius, state, cap);
+        Ok((torque, rate, slopes, self.direction(demand, radius)))
     }
 
     /// Why the settings of the drive make no controller: gains that are NaN
@@ -283,8 +299,8 @@ impl Drive {
             Drive::Torque(_) => {
                 let (torque, capped) = cap.apply(demand, omega, direction);
                 let slopes = DriveSlopes {
-                    torque: [capped.unwrap_or(0.0), 0.0],
-                    rate: [0.0, 0.0],
+                    torque: [capped.unwrap_or(0.0), 0.0, 0.0, 0.0],
+                    ..DriveSlopes::default()
                 };
                 (torque, 0.0, slopes)
             }
@@ -301,11 +317,16 @@ impl Drive {
                 let held = torque != wanted && wanted.signum() == error.signum();
                 let slopes = DriveSlopes {
                     torque: match capped {
-                        Some(slope) => [slope, 0.0],
-                        None if own_limited => [0.0, 0.0],
-                        None => [-proportional, *integral],
+                        Some(slope) => [slope, 0.0, 0.0, 0.0],
+                        None if own_limited => [0.0; 4],
+                        None => [-proportional, *integral, 0.0, 0.0],
                     },
-                    rate: if held { [0.0, 0.0] } else { [-1.0, 0.0] },
+                    rate: if held {
+                        [0.0; 4]
+                    } else {
+                        [-1.0, 0.0, 0.0, 0.0]
+                    },
+                    ..DriveSlopes::default()
                 };
                 (torque, if held { 0.0 } else { error }, slopes)
             }
@@ -346,12 +367,22 @@ impl std::fmt::Debug for Drive {
     }
 }
 
-/// [`Drive::slopes`]: the drive's torque and its controller's integral
-/// rate to first order.
+/// [`Drive::slopes`]: the drive's torque, its controller's integral rate
+/// and, through an engine whose speed is a state
+/// ([`EngineDynamics`](super::EngineDynamics)), the engine's acceleration
+/// and the locked driveline's twist rate, to first order over the drive's
+/// four states: the sprocket's speed `ω`, the controller's integral `s`,
+/// the engine's speed `ω_e` and the driveline's twist `z` (the last two's
+/// columns and rows zero without such an engine).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct DriveSlopes {
-    /// `(∂τ/∂ω, ∂τ/∂s)`: N m s/rad, N m/rad.
-    pub torque: [f64; 2],
-    /// `(∂ṡ/∂ω, ∂ṡ/∂s)`: 1, 1/s.
-    pub rate: [f64; 2],
+    /// `(∂τ/∂ω, ∂τ/∂s, ∂τ/∂ω_e, ∂τ/∂z)`: N m s/rad, N m/rad, N m s/rad,
+    /// N m/rad.
+    pub torque: [f64; 4],
+    /// `∂ṡ` over the same: 1, 1/s, 1, 1/s.
+    pub rate: [f64; 4],
+    /// `∂ω̇_e` over the same: 1/s, 1/s², 1/s, 1/s².
+    pub engine: [f64; 4],
+    /// `∂ż` over the same: 1, 1/s, 1, 1/s.
+    pub twist: [f64; 4],
 }

@@ -5,8 +5,9 @@
 use nalgebra::SVector;
 
 use super::books::EnergyBooks;
+use super::engine_drive::{AtSprocket, engine_drive};
 use super::workspace::Workspace;
-use super::{Engaged, EngineSide, Geometry, VehicleConfig, arms};
+use super::{Engaged, EngineSide, Geometry, Powertrain, VehicleConfig, arms};
 use crate::contact::outline::{self, Outline, TERRAIN_CORNER};
 use crate::contact::soft_ground::SoftGround;
 use crate::contact::{ContactJacobian, GroundFriction, ground, sprocket, wheel};
@@ -116,6 +117,9 @@ pub(super) struct Sprocket {
     /// A scheduled gearbox's range, kept by the run as it shifts
     /// ([`Shift::next`](super::Shift::next)); `None`: shifted ideally.
     pub engaged: Option<Engaged>,
+    /// Whether the lock-up clutch of an engine whose speed is a state is
+    /// engaged, kept by the run ([`Driveline::lockup_next`](super::Driveline::lockup_next)).
+    pub locked: bool,
 }
 
 impl Sprocket {
@@ -132,6 +136,20 @@ impl Sprocket {
             self.stall
         };
         (stall, (self.engaged, reverse))
+    }
+
+    /// What [`engine_drive`] reads of the sprocket at `t` turning at
+    /// `omega` (rad/s).
+    #[inline]
+    pub(super) fn at(&self, config: &VehicleConfig, t: f64, omega: f64) -> AtSprocket {
+        let (stall, gearbox) = self.gearbox(config, t);
+        AtSprocket {
+            omega,
+            rolling_radius: self.rolling_radius,
+            stall,
+            gearbox,
+            locked: self.locked,
+        }
     }
 
     /// The sprocket's speed relative to the chassis, rad/s.
@@ -174,6 +192,9 @@ pub(super) struct ChassisState<'a, const DC: usize> {
     pub sprocket: Option<Sprocket>,
     /// The drive controller's integral, rad.
     pub integral: f64,
+    /// The engine's speed (rad/s) and the locked driveline's twist (rad),
+    /// where they are states (else not read).
+    pub engine: (f64, f64),
 }
 
 /// Stage 3, the force elements at time `t`, into `work`'s loads and
@@ -198,6 +219,7 @@ pub(super) fn respond<const DC: usize>(
         qd: qdc,
         sprocket,
         integral,
+        engine,
     } = chassis;
     let Workspace {
         parts,
@@ -300,26 +322,52 @@ pub(super) fn respond<const DC: usize>(
     books.dissipation += config.drawbar_pull * qdc[0];
     books.dissipation += arm_books.dissipation;
     if let Some(sprocket) = sprocket {
-        drive(&sprocket, config, t, qdc, integral, chassis_loads, books)?;
+        drive(
+            &sprocket,
+            config,
+            t,
+            qdc,
+            (integral, engine),
+            chassis_loads,
+            books,
+        )?;
     }
     Ok(())
 }
 
 /// The drive's torque on the sprocket (and its reaction on the frame) at
 /// time `t`: the speed controller's, capped by the powertrain in its gear
-/// where there is one; the engine's side and the controller's integral
-/// rate into `books`. Part of [`respond`].
+/// where there is one (through an engine whose speed is a state,
+/// [`engine_drive`]); the engine's side, the controller integral's rate
+/// and the engine's acceleration into `books`. Part of [`respond`].
 #[inline(always)]
 fn drive<const DC: usize>(
     sprocket: &Sprocket,
     config: &VehicleConfig,
     t: f64,
     qdc: &SVector<f64, DC>,
-    integral: f64,
+    (integral, engine): (f64, (f64, f64)),
     chassis_loads: &mut [BodyLoad],
     books: &mut EnergyBooks,
 ) -> Result<(), SimulationError> {
     let omega = sprocket.omega(qdc);
+    if let Some(Powertrain::Converter(driveline)) = &config.powertrain
+        && driveline.dynamics.is_some()
+    {
+        let at = sprocket.at(config, t, omega);
+        let drive = engine_drive(driveline, config, t, at, integral, engine)?;
+        books.engine_load = drive.fuel;
+        books.engine = drive.side;
+        books.engine_rate = [drive.engine_rate, drive.twist_rate];
+        books.twist_energy = drive.twist_energy;
+        chassis_loads[sprocket.body].moment += drive.torque;
+        chassis_loads[0].moment -= drive.torque;
+        books.torque = drive.torque;
+        books.integral_rate = drive.integral_rate;
+        return Ok(());
+    }
+    books.engine_rate = [0.0; 2];
+    books.twist_energy = 0.0;
     let (stall, gearbox) = sprocket.gearbox(config, t);
     let (cap, own) = config.torque_cap_in_gear(omega, stall, gearbox);
     let (torque, rate) =

@@ -448,10 +448,20 @@ impl Implicit {
             add_relative(&mut schur, body, weight);
         }
         if let Some((body, slopes)) = self.drive {
-            let [torque_by_speed, torque_by_integral] = slopes.torque;
-            let [rate_by_speed, rate_by_integral] = slopes.rate;
-            let weight = -a * torque_by_speed
-                - a * torque_by_integral * a * rate_by_speed / (1.0 - a * rate_by_integral);
+            let [torque_by_speed, torque_by_integral, ..] = slopes.torque;
+            let [rate_by_speed, rate_by_integral, ..] = slopes.rate;
+            let weight = match self.starts.engine {
+                None => {
+                    -a * torque_by_speed
+                        - a * torque_by_integral * a * rate_by_speed / (1.0 - a * rate_by_integral)
+                }
+                // The drive's own states (s, ω_e, z) eliminated together:
+                // `k_l = P (r_l + a b δω)`, `P = (I − a A)⁻¹`.
+                Some(_) => {
+                    let (p, b, c) = drive_block(a, &slopes);
+                    -a * torque_by_speed - a * a * c.dot(&(p * b))
+                }
+            };
             add_relative(&mut schur, body, weight);
         }
         // The track's answer to every chassis coordinate, through the rims
@@ -747,9 +757,17 @@ impl Implicit {
             g[2] -= phi;
         }
         if let Some((body, slopes)) = self.drive {
-            let [_, torque_by_integral] = slopes.torque;
-            let [_, rate_by_integral] = slopes.rate;
-            let push = a * torque_by_integral * r[integral] / (1.0 - a * rate_by_integral);
+            let push = match self.starts.engine {
+                None => {
+                    let [_, torque_by_integral, ..] = slopes.torque;
+                    let [_, rate_by_integral, ..] = slopes.rate;
+                    a * torque_by_integral * r[integral] / (1.0 - a * rate_by_integral)
+                }
+                Some(engine) => {
+                    let (p, _, c) = drive_block(a, &slopes);
+                    a * c.dot(&(p * Vector3::new(r[integral], r[engine], r[engine + 1])))
+                }
+            };
             g[2 + body] += push;
             g[2] -= push;
         }
@@ -779,6 +797,7 @@ impl Implicit {
             track,
             chassis,
             integral,
+            engine,
             tangential,
         } = self.starts;
         let nt = self.independent.len();
@@ -802,9 +821,22 @@ impl Implicit {
             };
         }
         if let Some((body, slopes)) = self.drive {
-            let [rate_by_speed, rate_by_integral] = slopes.rate;
             let speed = x_c[2 + body] - x_c[2];
-            r[integral] = (r[integral] + a * rate_by_speed * speed) / (1.0 - a * rate_by_integral);
+            match engine {
+                None => {
+                    let [rate_by_speed, rate_by_integral, ..] = slopes.rate;
+                    r[integral] =
+                        (r[integral] + a * rate_by_speed * speed) / (1.0 - a * rate_by_integral);
+                }
+                Some(engine) => {
+                    let (p, b, _) = drive_block(a, &slopes);
+                    let local = Vector3::new(r[integral], r[engine], r[engine + 1]);
+                    let k = p * (local + b * (a * speed));
+                    r[integral] = k.x;
+                    r[engine] = k.y;
+                    r[engine + 1] = k.z;
+                }
+            }
         }
         for (slot, &c) in self.independent.iter().enumerate() {
             let v = if c < 2 { x[c] } else { x[3 * (c - 2) + 2] };
@@ -816,6 +848,24 @@ impl Implicit {
             r[chassis + j] += a * v;
         }
     }
+}
+
+/// The drive's own states `l = (s, ω_e, z)` in `(I − a W) k = r`: their
+/// rows `k_l − a (A k_l + b δω) = r_l` and the torque's `c · k_l`, with
+/// `A` their slopes on each other, `b` on the sprocket's speed and `c` the
+/// torque's on them; returns `(P = (I − a A)⁻¹, b, c)`.
+#[inline(always)]
+fn drive_block(a: f64, slopes: &DriveSlopes) -> (Matrix3<f64>, Vector3<f64>, Vector3<f64>) {
+    let rows = [slopes.rate, slopes.engine, slopes.twist];
+    let shifted = Matrix3::from_fn(|i, j| f64::from(u8::from(i == j)) - a * rows[i][j + 1]);
+    let p = shifted
+        .try_inverse()
+        .unwrap_or_else(|| Matrix3::from_element(f64::NAN));
+    (
+        p,
+        Vector3::new(rows[0][0], rows[1][0], rows[2][0]),
+        Vector3::new(slopes.torque[1], slopes.torque[2], slopes.torque[3]),
+    )
 }
 
 /// Adds `weight (e_b − e_0)(e_b − e_0)ᵀ` to a chassis matrix: a law on the

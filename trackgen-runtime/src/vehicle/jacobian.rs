@@ -270,6 +270,8 @@ impl Tangent {
                 direction.chassis = Some((column - chassis_v.start, true));
             } else if column == o.integral {
                 direction.integral = true;
+            } else if let Some(e) = o.engine.filter(|e| (*e..e + 2).contains(&column)) {
+                direction.engine = Some(column - e);
             } else if column >= o.tangential {
                 let slot = column - o.tangential;
                 if touching.get(slot).is_some_and(|t| t.is_none()) {
@@ -428,15 +430,28 @@ impl Tangent {
             self.body_loads[b].moment += torque;
             self.body_loads[0].moment -= torque;
         }
-        // The drive on the sprocket's speed relative to the frame, and its
-        // integral.
+        // The drive on the sprocket's speed relative to the frame, its
+        // integral and the engine's speed (where a state).
         if let Some((s, slopes)) = at.drive {
             let speed = self.chassis_qd[2 + s] - self.chassis_qd[2];
             let integral = if direction.integral { 1.0 } else { 0.0 };
-            let torque = slopes.torque[0] * speed + slopes.torque[1] * integral;
+            let engine = |k: usize| {
+                if direction.engine == Some(k) {
+                    1.0
+                } else {
+                    0.0
+                }
+            };
+            let along = [speed, integral, engine(0), engine(1)];
+            let dot = |row: [f64; 4]| row.iter().zip(along).map(|(r, a)| r * a).sum::<f64>();
+            let torque = dot(slopes.torque);
             self.body_loads[s].moment += torque;
             self.body_loads[0].moment -= torque;
-            out[o.integral] = slopes.rate[0] * speed + slopes.rate[1] * integral;
+            out[o.integral] = dot(slopes.rate);
+            if let Some(e) = o.engine {
+                out[e] = dot(slopes.engine);
+                out[e + 1] = dot(slopes.twist);
+            }
         }
         if direction.track.is_some_and(|(_, rate)| rate) {
             // ∂ż/∂y: the rates' own columns.
@@ -664,6 +679,8 @@ struct Direction {
     chassis: Option<(usize, bool)>,
     /// The drive's integral.
     integral: bool,
+    /// The engine's speed (0) or the locked driveline's twist (1).
+    engine: Option<usize>,
     /// A ground point's deflection.
     point: Option<usize>,
 }

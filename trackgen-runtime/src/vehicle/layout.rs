@@ -6,7 +6,8 @@ use std::ops::Range;
 /// The places in a vehicle's state `y` ([`VehicleSystem`](super::VehicleSystem)'s
 /// layout): the track's integrated coordinates and their rates, the
 /// chassis' coordinates and rates, the drive's integral, the books' three
-/// quadratures and the ground points' tangential states.
+/// quadratures, the engine's speed (where it is a state) and the ground
+/// points' tangential states.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StateLayout {
     /// The track's integrated coordinates, indices into `y`; their rates
@@ -28,6 +29,10 @@ pub struct StateLayout {
     /// The books' quadratures: the motor's work, the dissipated work and
     /// the engine's work (this side's share), J. They feed nothing back.
     pub books: [usize; 3],
+    /// The engine's speed, rad/s, where the powertrain makes it a state
+    /// ([`EngineDynamics`](super::EngineDynamics)); the locked driveline's
+    /// twist, rad at the turbine, follows it.
+    pub engine: Option<usize>,
     /// The ground points' tangential states (stiction deflections or soil
     /// shear displacements), link by link; empty with regularised friction.
     pub tangential: Range<usize>,
@@ -46,6 +51,8 @@ pub(crate) struct Starts {
     pub chassis: usize,
     /// The drive's integral.
     pub integral: usize,
+    /// The engine's speed, if a state (the driveline's twist follows).
+    pub engine: Option<usize>,
     /// The first tangential state.
     pub tangential: usize,
 }
@@ -66,17 +73,20 @@ impl StateLayout {
     /// The one layout of a vehicle's state: the track's integrated
     /// coordinates `track_coordinates` (`q_i` indices) and their rates,
     /// the chassis' `chassis_dof` coordinates and rates, the drive's
-    /// integral, the books' three quadratures, then `tangential` tangential
-    /// states.
+    /// integral, the books' three quadratures, the engine's speed and the
+    /// locked driveline's twist if they are states (`engine`), then
+    /// `tangential` tangential states.
     pub(crate) fn new(
         track_coordinates: Vec<usize>,
         chassis_dof: usize,
         tangential: usize,
         sprocket: Option<usize>,
+        engine: bool,
     ) -> StateLayout {
         let nt = track_coordinates.len();
         let chassis = 2 * nt;
         let integral = chassis + 2 * chassis_dof;
+        let first_tangential = integral + 4 + 2 * usize::from(engine);
         StateLayout {
             track: 0..nt,
             track_coordinates,
@@ -85,7 +95,8 @@ impl StateLayout {
             chassis_rates: chassis + chassis_dof..integral,
             integral,
             books: [integral + 1, integral + 2, integral + 3],
-            tangential: integral + 4..integral + 4 + tangential,
+            engine: engine.then_some(integral + 4),
+            tangential: first_tangential..first_tangential + tangential,
             sprocket,
         }
     }
@@ -107,6 +118,7 @@ impl StateLayout {
             track: self.track.start,
             chassis: self.chassis.start,
             integral: self.integral,
+            engine: self.engine,
             tangential: self.tangential.start,
         }
     }
@@ -153,6 +165,9 @@ impl StateLayout {
             i if i == self.integral => "drive integral".to_string(),
             i if i == self.books[0] => "motor work".to_string(),
             i if i == self.books[1] => "dissipated work".to_string(),
+            i if i == self.books[2] => "engine work".to_string(),
+            i if Some(i) == self.engine => "engine speed".to_string(),
+            i if self.engine.is_some_and(|e| i == e + 1) => "driveline twist".to_string(),
             i => {
                 let k = i - self.tangential.start;
                 let points = points.max(1);

@@ -19,6 +19,9 @@ mod config;
 mod converter;
 mod declared;
 mod drive;
+mod engine;
+mod engine_drive;
+mod engine_state;
 mod error;
 mod fitted;
 mod forces;
@@ -32,6 +35,7 @@ mod powertrain_error;
 mod record;
 mod shift;
 mod system;
+mod tables;
 mod workspace;
 
 pub use brake::{Brake, BrakeError};
@@ -39,6 +43,10 @@ pub use config::VehicleConfig;
 pub use converter::{Driveline, OperatingPoint};
 pub use declared::{Vehicle, VehicleDynamics, build};
 pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap, speed_ramp};
+pub use engine::EngineDynamics;
+pub use engine_state::{
+    COUPLING_BAND, EngineState, IDEAL_DOWNSHIFT, IDEAL_SHIFT_TIME, LOCKUP_RELEASE,
+};
 pub use error::{BuildError, ConfigError};
 pub use fitted::{
     BEARING_BAND, ContactFit, ContactLawSet, DeclaredContact, DeclaredPair, GROUND_DAMPING_RATIO,

@@ -2,8 +2,9 @@
 //! for, as a function of the sprocket's speed.
 
 use super::PowertrainError;
-use super::converter::{Driveline, OperatingPoint, engine_torque, table};
+use super::converter::{Driveline, OperatingPoint};
 use super::shift::Engaged;
+use super::tables::{engine_torque, table};
 
 /// The engine and the driveline behind a sprocket, as the largest torque
 /// they give it at each sprocket speed ([`limit`](Self::limit)). A drive

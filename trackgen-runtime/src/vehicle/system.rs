@@ -108,6 +108,14 @@ where
     ) -> Result<Self, ConfigError> {
         let description = track.description();
         check::<T, DT, C, DC>(&geometry, &config, &description)?;
+        if let Some(Powertrain::Converter(driveline)) = config.powertrain.as_mut()
+            && driveline.dynamics.is_some()
+            && driveline.shift.is_none()
+        {
+            // An engine whose speed is a state shifts by a schedule.
+            driveline.shift =
+                driveline.ideal_schedule(super::IDEAL_DOWNSHIFT, super::IDEAL_SHIFT_TIME);
+        }
         if let Some((body, angle)) = start.tensioner {
             for arm in config.arms.iter_mut().filter(|a| a.body == body) {
                 arm.spring.preload += arm.spring.stiffness * angle;
@@ -141,6 +149,7 @@ where
                 stall,
                 stall_reverse,
                 engaged: config.first_engaged(),
+                locked: false,
             });
         let chassis_description = chassis.description();
         let fit = ContactFit::of(&description, &chassis_description, C::PARTS, &geometry);
@@ -165,16 +174,24 @@ where
         let track = TrackSystem::new(track, start.track, SVector::zeros(), config.closure)?;
         let chassis = TreeSystem::chassis(chassis, start.chassis, SVector::zeros());
         let bodies = Pair::new(track, "track", chassis, "chassis");
+        let idle = engine_idle(&config);
         let layout = StateLayout::new(
             track_coordinates(DT, bodies.first().dependent_pair()),
             DC,
             tangential_states,
             sprocket.map(|s| s.body),
+            idle.is_some(),
         );
         debug_assert_eq!(layout.integral, bodies.dimension());
         let start = bodies.initial_state();
         let mut y0 = DVector::zeros(layout.dimension());
         y0.as_mut_slice()[layout.bodies()].copy_from_slice(start.as_slice());
+        if let (Some(i), Some(idle)) = (layout.engine, idle) {
+            // The engine starts idling, the vehicle at rest, the driveline
+            // untwisted.
+            y0[i] = idle;
+            y0[i + 1] = 0.0;
+        }
         Ok(VehicleSystem {
             bodies,
             config,
@@ -238,6 +255,38 @@ where
         }
     }
 
+    /// Engages or releases an engine's lock-up clutch at the end of a
+    /// step ([`Driveline::lockup_next`](super::Driveline::lockup_next), an
+    /// engine whose speed is a state). Whether it did (the integrator then
+    /// restarts: the law changed).
+    fn lock_up(&mut self, t: f64, y: &[f64]) -> bool {
+        let (Some(sprocket), Some(Powertrain::Converter(driveline))) =
+            (self.sprocket, self.config.powertrain.as_ref())
+        else {
+            return false;
+        };
+        let Some(engine) = self.layout.engine else {
+            return false;
+        };
+        let omega = sprocket.omega_of(&y[self.layout.chassis_rates.clone()]);
+        let (_, gearbox) = sprocket.gearbox(&self.config, t);
+        let range = match (gearbox, driveline.reverse_range()) {
+            ((_, true), Some(reverse)) => reverse,
+            ((Some(engaged), _), _) => engaged.range,
+            _ => return false,
+        };
+        let shifting = gearbox.0.is_some_and(|e| e.from.is_some());
+        let wt = driveline.reduction(range) * omega.abs();
+        let next = driveline.lockup_next(range, sprocket.locked, y[engine], wt, shifting);
+        if next == sprocket.locked {
+            return false;
+        }
+        if let Some(s) = self.sprocket.as_mut() {
+            s.locked = next;
+        }
+        true
+    }
+
     /// The track subsystem.
     pub fn track(&self) -> &TrackSystem<T, DT> {
         self.bodies.first()
@@ -258,6 +307,12 @@ where
             [y[l.integral], y[l.books[0]], y[l.books[1]], y[l.books[2]]],
             &y[l.tangential.clone()],
         )
+    }
+
+    /// The engine's speed (rad/s) and the locked driveline's twist (rad)
+    /// in `y`, where they are states (0 else: not read).
+    fn engine_state(&self, y: &[f64]) -> (f64, f64) {
+        self.layout.engine.map_or((0.0, 0.0), |i| (y[i], y[i + 1]))
     }
 
     /// The loads at a state, stage by stage: the track's coordinates
@@ -287,6 +342,7 @@ where
         );
         forces::detect::<C, DC>(&mut self.work, &self.config, &self.geometry, &self.outlines);
         let points = self.geometry.shoe.ground_points.len();
+        let engine = self.engine_state(y);
         forces::respond(
             &mut self.work,
             t,
@@ -302,6 +358,7 @@ where
                 qd: &qdc,
                 sprocket: self.sprocket,
                 integral,
+                engine,
             },
         )?;
         let (track, chassis) = self.bodies.parts_mut();
@@ -368,23 +425,41 @@ where
         &self,
         t: f64,
         qdc: &SVector<f64, DC>,
-        integral: f64,
-    ) -> (Option<(usize, super::DriveSlopes)>, Option<f64>) {
-        let drive = self.sprocket.map(|s| {
-            let omega = s.omega(qdc);
-            let (stall, gearbox) = s.gearbox(&self.config, t);
-            let cap = self.config.torque_cap(omega, stall, gearbox);
-            let slopes = self
-                .config
-                .drive
-                .slopes(t, omega, s.rolling_radius, integral, cap);
-            (s.body, slopes)
-        });
+        (integral, engine): (f64, (f64, f64)),
+    ) -> Result<DriveAndRelaxation, SimulationError> {
+        let drive = match self.sprocket {
+            None => None,
+            Some(s) => {
+                let omega = s.omega(qdc);
+                let slopes = match &self.config.powertrain {
+                    Some(Powertrain::Converter(driveline)) if driveline.dynamics.is_some() => {
+                        let at = s.at(&self.config, t, omega);
+                        super::engine_drive::engine_drive(
+                            driveline,
+                            &self.config,
+                            t,
+                            at,
+                            integral,
+                            engine,
+                        )?
+                        .slopes
+                    }
+                    _ => {
+                        let (stall, gearbox) = s.gearbox(&self.config, t);
+                        let cap = self.config.torque_cap(omega, stall, gearbox);
+                        self.config
+                            .drive
+                            .slopes(t, omega, s.rolling_radius, integral, cap)
+                    }
+                };
+                Some((s.body, slopes))
+            }
+        };
         let relaxation = match (&self.soil, self.config.ground.friction) {
             (None, GroundFriction::Stiction(stiction)) => Some(stiction.relax_slopes().rate[0]),
             _ => None,
         };
-        (drive, relaxation)
+        Ok((drive, relaxation))
     }
 
     /// What the exact Jacobian and the own `W` both start from at `(t,
@@ -425,7 +500,7 @@ where
                 .iter()
                 .map(|&t| crate::planar::Rotation::from_sin_cos(t)),
         );
-        let (drive, relaxation) = self.slopes(t, &qdc, integral);
+        let (drive, relaxation) = self.slopes(t, &qdc, (integral, self.engine_state(y)))?;
         Ok(Linearised {
             chassis: (qc, qdc),
             pair,
@@ -626,6 +701,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> O
         dy[l.books[0]] = books.torque * self.sprocket.map_or(0.0, |s| s.omega(&qdc));
         dy[l.books[1]] = books.dissipation + self.track().closure_energy(qt, qdt).1;
         dy[l.books[2]] = books.engine.engine_power;
+        if let Some(i) = l.engine {
+            dy[i..i + 2].copy_from_slice(&books.engine_rate);
+        }
         dy[l.tangential.clone()].copy_from_slice(&self.work.tangential_rate);
         Ok(())
     }
@@ -717,5 +795,20 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> I
             })?;
         implicit.solve(b);
         Ok(())
+    }
+}
+
+/// The drive's sprocket body and slopes, and a lifted ground point's
+/// relaxation rate ([`VehicleSystem::slopes`]).
+type DriveAndRelaxation = (Option<(usize, super::DriveSlopes)>, Option<f64>);
+
+/// The idle speed an engine whose speed is a state starts at, rad/s (its
+/// map's first speed); `None` where the powertrain makes it no state.
+fn engine_idle(config: &VehicleConfig) -> Option<f64> {
+    match &config.powertrain {
+        Some(Powertrain::Converter(driveline)) if driveline.dynamics.is_some() => {
+            Some(driveline.engine[0].0)
+        }
+        _ => None,
     }
 }

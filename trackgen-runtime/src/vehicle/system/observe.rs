@@ -158,6 +158,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         restart |= self.press_soil(t, y)?;
         restart |= self.apply_brake(t, y);
         restart |= self.shift_gears(t, y);
+        restart |= self.lock_up(t, y);
         Ok(restart)
     }
 }
