@@ -203,3 +203,44 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
         fraction: DRIVELINE_EFFICIENCY * 0.5,
     }
 }
+
+/// The real Marder's published mobility figures that the pitch-plane
+/// events answer, each with its source: the Bundeswehr's for the Marder
+/// 1A3 and its successors, as the German press quotes them (no field
+/// manual or manufacturer's sheet with them was found to cite directly).
+/// The declaration's masses are Chrono's (29.3 t with both sides'
+/// running gear, a Marder 1 or 1A1 of 28–30 t); the 1A3 weighs 33.5 t in
+/// combat order.
+pub const PUBLISHED: [trackgen::mobility::Published; 4] = {
+    use trackgen::mobility::quantity;
+    [
+        trackgen::mobility::Published {
+            quantity: quantity::TOP_SPEED,
+            value: 65.0 / 3.6,
+            unit: "m/s",
+            source: "the Bundeswehr's figure for the Marder 1A3, about 65 km/h on roads, as \
+                 hna.de and gentside.de quote it",
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::STEEPEST_GRADE,
+            value: 0.60,
+            unit: "rise over run",
+            source: "the Bundeswehr's figures for the Schützenpanzer Marder, as Merkur.de \
+                 quotes them (April 2022): slopes of up to 60 %",
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::HIGHEST_STEP,
+            value: 1.0,
+            unit: "m",
+            source: "the Bundeswehr's figures, as Merkur.de quotes them (April 2022): \
+                 obstacles 1 m high",
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::WIDEST_GAP,
+            value: 2.5,
+            unit: "m",
+            source: "the Bundeswehr's figures, as Merkur.de quotes them (April 2022): \
+                 trenches 2.50 m wide",
+        },
+    ]
+};

@@ -14,6 +14,10 @@ use trackgen_app::{App, Entry};
 fn main() -> ExitCode {
     App::new()
         .vehicle(Entry::of::<M113>().published(&m113::PUBLISHED))
-        .vehicle(Entry::of::<Marder>().powertrain(marder::powertrain()))
+        .vehicle(
+            Entry::of::<Marder>()
+                .powertrain(marder::powertrain())
+                .published(&marder::PUBLISHED),
+        )
         .main()
 }
