@@ -5,10 +5,8 @@
 //! clutch, and the spin-up from idle against the stall, whose time is a
 //! quadrature of the engine's equation.
 
-use crate::support::vehicle::{m113_through, m113a3_driveline};
+use crate::support::vehicle::{m113_through, m113a3_driveline, step_course};
 use crate::support::{converter_torques, table_at};
-use trackgen::terrain::Terrain;
-use trackgen::terrain::profile::Course;
 use trackgen::vehicle::{
     COUPLING_BAND, Driveline, EngineDynamics, LOCKUP_RELEASE, PowertrainError,
 };
@@ -318,17 +316,6 @@ fn bad_engine_dynamics_are_refused() {
     ));
 }
 
-/// A step 0.3 m high on flat ground, 28 m from the start.
-fn step_course() -> Terrain {
-    let course = Course::starting_at(-20.0, 0.0)
-        .and_then(|c| c.flat(28.0))
-        .and_then(|c| c.step(0.3))
-        .and_then(|c| c.flat(150.0))
-        .and_then(Course::profile)
-        .expect("a step");
-    Terrain::profile(course)
-}
-
 /// Full throttle from rest after 0.5 s.
 fn full_throttle(t: f64) -> f64 {
     if t < 0.5 { 0.0 } else { 15.0 }
@@ -364,7 +351,7 @@ fn with_no_inertia_the_engine_runs_where_the_steady_match_puts_it() {
         ..declared
     };
     let target = |t: f64| if t < 0.5 { 0.0 } else { 3.0 };
-    let run = |d: &Driveline| m113_through(d, step_course(), target, 12.0, 0.01);
+    let run = |d: &Driveline| m113_through(d, step_course(0.3), target, 12.0, 0.01);
     let (a, b) = (run(&quasi_static), run(&light));
     let last = |r: &trackgen::simulate::Results, c: &str| *r.column(c).unwrap().last().unwrap();
     let first = |r: &trackgen::simulate::Results, c: &str| r.column(c).unwrap()[0];
@@ -409,7 +396,7 @@ fn with_no_inertia_the_engine_runs_where_the_steady_match_puts_it() {
 fn the_engine_s_books_close_with_its_rotating_energy_and_the_converter_s_power() {
     let d = m113a3_driveline();
     let dynamics = d.dynamics.clone().unwrap();
-    let results = m113_through(&d, step_course(), full_throttle, 12.0, 0.001);
+    let results = m113_through(&d, step_course(0.3), full_throttle, 12.0, 0.001);
     let column = |name: &str| results.column(name).expect(name);
     let t = results.times().to_vec();
     let (we, sr, locked, gear) = (

@@ -29,9 +29,8 @@
 //!   the 12 s, within 1e-3 of it at Bogacki-Shampine 1e-4.
 
 use crate::support::table_at;
-use crate::support::vehicle::{m113_through, m113a3_quasi_static};
+use crate::support::vehicle::{m113_through, m113a3_quasi_static, step_course};
 use trackgen::terrain::Terrain;
-use trackgen::terrain::profile::Course;
 use trackgen::vehicle::{Driveline, Powertrain};
 
 #[test]
@@ -193,14 +192,8 @@ fn independent_engine_speed(d: &Driveline, range: usize, speed: f64, torque: f64
 #[test]
 fn a_run_records_the_converter_and_books_the_engine_s_work() {
     let driveline = m113a3_quasi_static();
-    let course = Course::starting_at(-20.0, 0.0)
-        .and_then(|c| c.flat(28.0))
-        .and_then(|c| c.step(0.3))
-        .and_then(|c| c.flat(150.0))
-        .and_then(Course::profile)
-        .expect("a step");
     let target = |t: f64| if t < 0.5 { 0.0 } else { 15.0 };
-    let results = m113_through(&driveline, Terrain::profile(course), target, 12.0, 0.002);
+    let results = m113_through(&driveline, step_course(0.3), target, 12.0, 0.002);
     let column = |name: &str| results.column(name).expect(name);
     let t = results.times().to_vec();
     let (torque, omega) = (column("sprocket_torque"), column("sprocket_speed"));

@@ -207,6 +207,19 @@ pub fn m113a3_driveline() -> Driveline {
     }
 }
 
+/// A step of `height` m on flat ground 28 m from the start (the M113
+/// starting 20 m before the origin), 150 m of flat beyond: the course the
+/// engine's books are kept over.
+pub fn step_course(height: f64) -> Terrain {
+    let course = trackgen::terrain::profile::Course::starting_at(-20.0, 0.0)
+        .and_then(|c| c.flat(28.0))
+        .and_then(|c| c.step(height))
+        .and_then(|c| c.flat(150.0))
+        .and_then(trackgen::terrain::profile::Course::profile)
+        .expect("a step");
+    Terrain::profile(course)
+}
+
 /// The M113A3's driveline as a quasi-static converter: no engine
 /// inertia (the engine where the converter's steady match puts it) and
 /// ideal shifting, what the M113 declared before its engine's speed became
