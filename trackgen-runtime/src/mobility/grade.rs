@@ -29,8 +29,9 @@ fn course(footprint: &Footprint, at: f64, slope: f64, up: f64) -> Result<Terrain
 pub struct Climb {
     /// Whether the track's rear got [`CLIMB`] m (horizontally) up it.
     pub climbed: bool,
-    /// The hull's mean speed over the climb's last 10 m, m/s (0 stalled,
-    /// NaN for a climb shorter than 10 m).
+    /// The hull's mean speed over the climb's last 10 m, m/s (0 stalled;
+    /// NaN for a climb shorter than 10 m, or one slower than the run waits
+    /// for).
     pub speed: f64,
     /// Whether it stopped.
     pub stalled: bool,
@@ -39,11 +40,13 @@ pub struct Climb {
 /// `V` asked for `speed` (m/s) at a grade of `slope` (rise over run),
 /// the grade starting 1 m ahead of the track's front: whether its rear
 /// gets `climb` m (horizontally) up it, and its speed over the last 10 m.
+/// The run waits for a climb as slow as `slowest` (m/s) on average; a
+/// stall ends it sooner.
 pub fn climb<V: Vehicle>(
     settings: &EventSettings,
     footprint: &Footprint,
     slope: f64,
-    speed: f64,
+    (speed, slowest): (f64, f64),
     climb: f64,
 ) -> Result<Climb, EventError> {
     settings.check(EVENT)?;
@@ -59,9 +62,7 @@ pub fn climb<V: Vehicle>(
     let terrain = course(footprint, at, slope, climb)?;
     let goal = at + climb - footprint.rear;
     let ramp_time = speed / settings.acceleration;
-    // At a tenth of the speed asked the climb still finishes; a stall
-    // ends the run sooner.
-    let duration = ramp_time + 10.0 * goal / speed + 5.0;
+    let duration = ramp_time + goal / slowest + 5.0;
     let target = ramp(speed, settings.acceleration);
     drive_to::<V>(settings, terrain, target, goal, duration, slope)
 }
@@ -108,7 +109,9 @@ pub fn steepest<V: Vehicle>(
     footprint: &Footprint,
 ) -> Result<Search, EventError> {
     bisect(0.05, 1.2, settings.grade_tolerance, |slope| {
-        let c = climb::<V>(settings, footprint, slope, settings.crawl, CLIMB)?;
+        // At a tenth of the crawl the climb still finishes.
+        let crawl = (settings.crawl, settings.crawl / 10.0);
+        let c = climb::<V>(settings, footprint, slope, crawl, CLIMB)?;
         Ok(Trial {
             parameter: slope,
             figure: f64::from(u8::from(c.climbed)),
@@ -158,5 +161,14 @@ pub fn speed_on<V: Vehicle>(
         acceleration: 1e3,
         ..settings.clone()
     };
-    climb::<V>(&at_once, footprint, slope, top, footprint.length() + 100.0)
+    // Asked for the top speed, the climb still finishes at a quarter of
+    // the crawl (a grade near the steepest the vehicle holds).
+    let speeds = (top, settings.crawl / 4.0);
+    climb::<V>(
+        &at_once,
+        footprint,
+        slope,
+        speeds,
+        footprint.length() + 100.0,
+    )
 }

@@ -30,4 +30,4 @@ pub mod soil;
 
 pub use error::EventError;
 pub use published::{AGREEMENT, Comparison, Published};
-pub use runs::{EventSettings, Footprint, STALL_DISTANCE, STALL_TIME};
+pub use runs::{EventSettings, Footprint, STALL_DISTANCE, STALL_SPIN_UP, STALL_TIME};

@@ -376,6 +376,8 @@ pub(super) struct Probe {
     /// The hull's x that ends the run, m.
     pub goal: f64,
     columns: Option<[usize; 2]>,
+    /// The engine's speed column, where the record has one.
+    engine: Option<usize>,
     /// The hull's x at the last row, m.
     pub x: f64,
     /// The furthest the hull's x reached, m.
@@ -386,8 +388,8 @@ pub(super) struct Probe {
     pub stalled: bool,
     /// The time of the last row, s.
     pub t: f64,
-    /// `(t, x)` of the last stall check.
-    check: (f64, f64),
+    /// `(t, x, ω_e)` of the last stall check.
+    check: (f64, f64, f64),
     /// From this hull position on, m, `mark` keeps the first row's
     /// `(t, x)`.
     pub mark_at: f64,
@@ -396,11 +398,19 @@ pub(super) struct Probe {
 }
 
 /// A hull moving less than this, m, in [`STALL_TIME`] has stalled: 3 cm/s
-/// on average, a thirtieth of the crawl. Watched from the start: from
-/// rest at the events' 1 m/s² a hull covers 1.1 m in the first window.
+/// on average, a thirtieth of the crawl — unless its engine's speed rose
+/// by more than [`STALL_SPIN_UP`] meanwhile (an engine whose speed is a
+/// state, spinning up from idle against an obstacle's face, holds the hull
+/// until it gives the converter's stall torque: the hull waits, it has
+/// not stalled). Watched from the start: from rest at the events' 1 m/s²
+/// a hull covers 1.1 m in the first window.
 pub const STALL_DISTANCE: f64 = 0.05;
 /// The time over which [`STALL_DISTANCE`] is checked, s.
 pub const STALL_TIME: f64 = 1.5;
+/// The rise of the engine's speed over [`STALL_TIME`], as a fraction of
+/// its speed at the window's start, past which a held hull has not
+/// stalled: 0.02.
+pub const STALL_SPIN_UP: f64 = 0.02;
 
 impl Probe {
     /// Watches for the hull to reach `goal` (m) or stall.
@@ -409,12 +419,13 @@ impl Probe {
             ride: None,
             goal,
             columns: None,
+            engine: None,
             x: f64::NAN,
             reached: f64::NEG_INFINITY,
             max_pitch: 0.0,
             stalled: false,
             t: f64::NAN,
-            check: (f64::NAN, f64::NAN),
+            check: (f64::NAN, f64::NAN, f64::NAN),
             mark_at: f64::INFINITY,
             mark: None,
         }
@@ -443,6 +454,7 @@ impl Sink for Probe {
                 .ok_or_else(|| SinkError::Columns(format!("mobility: no column `{name}`")))
         };
         self.columns = Some([find("x")?, find("pitch")?]);
+        self.engine = columns.iter().position(|c| c == "engine_speed");
         if let Some(ride) = &mut self.ride {
             ride.begin(columns)?;
         }
@@ -468,15 +480,17 @@ impl Sink for Probe {
         if x >= self.goal && ride_done {
             return Err(SinkError::Done);
         }
+        let engine = self.engine.map_or(0.0, |e| values[e]);
         // The first row (NaN before it) starts the watch.
         if self.check.0.is_nan() {
-            self.check = (t, x);
+            self.check = (t, x, engine);
         } else if t - self.check.0 >= STALL_TIME {
-            if x - self.check.1 < STALL_DISTANCE {
+            let spinning_up = engine > self.check.2 * (1.0 + STALL_SPIN_UP);
+            if x - self.check.1 < STALL_DISTANCE && !spinning_up {
                 self.stalled = true;
                 return Err(SinkError::Done);
             }
-            self.check = (t, x);
+            self.check = (t, x, engine);
         }
         Ok(())
     }
@@ -485,10 +499,12 @@ impl Sink for Probe {
         Ok(())
     }
 
-    /// The hull's `x` and `pitch`, and what its ride reads.
+    /// The hull's `x` and `pitch`, the engine's speed, and what its ride
+    /// reads.
     fn reads(&self) -> Option<Vec<usize>> {
         let [x, pitch] = self.columns?;
         let mut read = vec![x, pitch];
+        read.extend(self.engine);
         if let Some(ride) = &self.ride {
             read.extend(ride.reads()?);
         }

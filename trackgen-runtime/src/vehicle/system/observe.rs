@@ -109,9 +109,10 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         Ok(())
     }
 
-    /// Lean when the sinks read only the hull's position, pitch and speed
-    /// and the seat's motion (`x`, `y`, `pitch`, `speed`, `seat_x`, `seat_y`,
-    /// `seat_ax`, `seat_az`): the forces and the
+    /// Lean when the sinks read only the hull's position, pitch and speed,
+    /// the seat's motion and the engine's speed (`x`, `y`, `pitch`,
+    /// `speed`, `seat_x`, `seat_y`, `seat_ax`, `seat_az`, `engine_speed`):
+    /// the forces and the
     /// chassis' accelerations alone, as [`observe`](Self::observe)
     /// computes them (the same bits), and no track accelerations, link
     /// kinematics, tensions or energies; the rest of the row NaN.
@@ -141,6 +142,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             seat_y: seat.position.y,
             seat_ax: seat.acceleration.x,
             seat_az: seat.acceleration.y,
+            engine_speed: self.work.books.engine.engine_speed,
             ..VehicleRecord::unobserved()
         }
         .extend_row(row);
@@ -164,9 +166,18 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
 }
 
 /// The columns of a [`VehicleRecord`] a lean observation
-/// ([`Simulated::observe_some`]) gives: the hull's and the seat's.
-const LEAN_COLUMNS: [&str; 8] = [
-    "x", "y", "pitch", "speed", "seat_x", "seat_y", "seat_ax", "seat_az",
+/// ([`Simulated::observe_some`]) gives: the hull's, the seat's and the
+/// engine's speed (the forces' evaluation gives it).
+const LEAN_COLUMNS: [&str; 9] = [
+    "x",
+    "y",
+    "pitch",
+    "speed",
+    "seat_x",
+    "seat_y",
+    "seat_ax",
+    "seat_az",
+    "engine_speed",
 ];
 
 impl<T, const DT: usize, C, const DC: usize> VehicleSystem<T, DT, C, DC>
