@@ -28,16 +28,24 @@
 //!
 //! The arm centroids are midway between pivot and wheel (as the source
 //! gives, (+0.200, +0.0325) m from the wheel). Contact laws are the M113's
-//! (no Marder-specific figures exist); the drive's torque limit is the
-//! simple engine's in its one gear, `2400 / 0.1708 / 2 ≈ 7026` N m per
-//! sprocket.
+//! (no Marder-specific figures exist); the drive's torque limit, 40 kN m,
+//! is above what the declared powertrain gives at stall (38.4 kN m at the
+//! sprocket: [`powertrain`]), as the M113's is above its own.
+//!
+//! **Which Marder.** The powertrain is the Marder 1A3's as estimated
+//! ([`powertrain`]: the MTU MB 833 Ea-500 through a converter gearbox, the
+//! Renk HSWL 194's kind; where a figure was not found it is Chrono's or
+//! assumed, each said so); the published figures it is held to are the
+//! 1A3's ([`PUBLISHED`]). The running gear and masses are Chrono's, which
+//! names no variant: 29.3 t with both sides' running gear, a Marder 1 or
+//! 1A1 (28–30 t); the 1A3 weighs 33.5 t in combat order.
 //!
 //! Everything that makes it run is declared with it; as a
 //! [`Vehicle`](crate::vehicle::Vehicle), `Marder::system(terrain, drive)` assembles
 //! it on a terrain (`Marder::config` gives the run-time settings to change
 //! first, for `Marder::system_with`), and `Marder::speed_drive` is a speed
 //! controller tuned for it: proportional gain 4000 N m s/rad and integral
-//! gain 8000 N m/rad on the sprocket speed, torque limited to 7026 N m.
+//! gain 8000 N m/rad on the sprocket speed, torque limited to 40 kN m.
 
 /// Shoe pitch (pin to pin), m.
 pub const SHOE_PITCH: f64 = 0.17;
@@ -169,25 +177,84 @@ crate::model! {
         // the sprocket's own 1.28 kg m² first and sets the explicit
         // integrator's step (4000 / 1.283 ≈ 3100 /s, as stiff as the
         // idler's rim friction).
-        drive { proportional: 4000.0, integral: 8000.0, max_torque: 7026.0 },
+        drive { proportional: 4000.0, integral: 8000.0, max_torque: 4e4 },
+        // The Marder 1A3's, as estimated: see `powertrain()` and the
+        // guide's table for each figure's source.
+        powertrain {
+            engine: [
+                (702.26 * RPM, 700.0 * SCALE_MB833),
+                (1099.0 * RPM, 2044.0 * SCALE_MB833),
+                (1158.0 * RPM, 2149.0 * SCALE_MB833),
+                (1207.0 * RPM, 2250.0 * SCALE_MB833),
+                (1233.0 * RPM, 2350.0 * SCALE_MB833),
+                (1263.0 * RPM, 2450.0 * SCALE_MB833),
+                (1300.0 * RPM, 2545.0 * SCALE_MB833),
+                (1352.0 * RPM, 2628.0 * SCALE_MB833),
+                (1403.0 * RPM, 2683.0 * SCALE_MB833),
+                (1499.0 * RPM, 2702.0 * SCALE_MB833),
+                (1628.0 * RPM, 2683.0 * SCALE_MB833),
+                (1757.0 * RPM, 2650.0 * SCALE_MB833),
+                (1901.0 * RPM, 2569.0 * SCALE_MB833),
+                (2004.0 * RPM, 2472.0 * SCALE_MB833),
+                (2099.0 * RPM, 2386.0 * SCALE_MB833),
+                (2195.0 * RPM, 2298.0 * SCALE_MB833),
+                (2323.0 * RPM, 2154.0 * SCALE_MB833),
+                (2450.0 * RPM, 0.0),
+            ],
+            capacity: [
+                (0.0, 3.023 * CAPACITY_SCALE),
+                (0.105301, 3.01349 * CAPACITY_SCALE),
+                (0.20916, 3.023 * CAPACITY_SCALE),
+                (0.320936, 3.06102 * CAPACITY_SCALE),
+                (0.435681, 3.10856 * CAPACITY_SCALE),
+                (0.556364, 3.1751 * CAPACITY_SCALE),
+                (0.647369, 3.21312 * CAPACITY_SCALE),
+                (0.724529, 3.27016 * CAPACITY_SCALE),
+                (0.786849, 3.30819 * CAPACITY_SCALE),
+                (0.843236, 3.35572 * CAPACITY_SCALE),
+                (0.891714, 3.43177 * CAPACITY_SCALE),
+                (0.912552, 3.86906 * CAPACITY_SCALE),
+                (0.928444, 4.30635 * CAPACITY_SCALE),
+                (0.93938, 4.67709 * CAPACITY_SCALE),
+                (1.0, 5.61822 * CAPACITY_SCALE),
+            ],
+            torque_ratio: [(0.0, 2.5), (0.85, 1.0), (1.0, 1.0)],
+            ranges: [RANGES[0], RANGES[1], RANGES[2], RANGES[3]],
+            reverse: REVERSE,
+            lockup: [2, 3, 4],
+            lockup_speed_ratio: 0.9,
+            final_drive: FINAL_DRIVE,
+            gearbox_efficiency: super::m113::GEARBOX_EFFICIENCY,
+            final_drive_efficiency: super::m113::FINAL_DRIVE_EFFICIENCY,
+            engine_inertia: ENGINE_INERTIA,
+            engine_drag: [
+                (0.0, 0.0),
+                (50.0 * RPM, -30.0 * DRAG_SCALE),
+                (1000.0 * RPM, -50.0 * DRAG_SCALE),
+                (2000.0 * RPM, -70.0 * DRAG_SCALE),
+                (3000.0 * RPM, -90.0 * DRAG_SCALE),
+            ],
+        },
     }
 }
 
-/// The driveline's efficiency assumed for the powertrain, as the M113's
+/// The driveline's efficiency assumed for Chrono's simple map
+/// ([`chrono_simple_map`]), as the M113's
 /// ([`m113::DRIVELINE_EFFICIENCY`](super::m113::DRIVELINE_EFFICIENCY)):
 /// the figures give none.
 pub const DRIVELINE_EFFICIENCY: f64 = super::m113::DRIVELINE_EFFICIENCY;
 
-/// The Marder's engine and driveline as one side's sprocket sees them
-/// (Chrono's `Marder_EngineSimpleMap.cpp` and
-/// `Marder_AutomaticTransmissionSimpleMap.cpp`): the MTU MB 833's
+/// Project Chrono's Marder engine and gearbox (a secondary source), as one
+/// side's sprocket sees them: `Marder_EngineSimpleMap.cpp` and
+/// `Marder_AutomaticTransmissionSimpleMap.cpp`: the MTU MB 833's
 /// full-load torque map (700 N m at 702 rpm, 2702 at 1499, 2154 at 2323,
 /// cut off to −1000 N m at 2450 rpm), the six forward gears 0.1708 to
 /// 1.5361 (no final drive: the simple driveline splits the driveshaft's
 /// torque evenly), shifted ideally, and half the engine's power, after
-/// [`DRIVELINE_EFFICIENCY`], for this side.
-pub fn powertrain() -> trackgen::vehicle::Powertrain {
-    const RPM: f64 = std::f64::consts::PI / 30.0; // rad/s
+/// [`DRIVELINE_EFFICIENCY`], for this side. It has no torque converter:
+/// it reaches the sprocket with 6.7 kN m at a crawl. Kept to compare
+/// against; the vehicle's own is [`powertrain`].
+pub fn chrono_simple_map() -> trackgen::vehicle::Powertrain {
     let map = [
         (702.0, 700.0),
         (1099.0, 2044.0),
@@ -202,6 +269,86 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
         ratios: vec![0.1708, 0.2791, 0.4218, 0.6223, 1.0173, 1.5361],
         fraction: DRIVELINE_EFFICIENCY * 0.5,
     }
+}
+
+/// rad/s per rpm.
+const RPM: f64 = std::f64::consts::PI / 30.0;
+
+/// The Marder's engine's power, W: the MTU MB 833 Ea-500's 441 kW (600 PS),
+/// the figure published for the Marder 1 and its successors (as
+/// de.pluspedia.org's article and the German press give it; no
+/// manufacturer's sheet was found).
+pub const ENGINE_RATED_POWER: f64 = 441e3;
+/// Where Chrono's MB 833 map gives its most power, rad/s: 2195 rpm (its
+/// 2298 N m there, 528 kW: Chrono's map is a fifth over the published
+/// power). The declared map is Chrono's × [`SCALE_MB833`], its most power
+/// the published 441 kW here.
+pub const ENGINE_RATED_SPEED: f64 = 2195.0 * RPM;
+/// Chrono's MB 833 map scaled to the published power: 441 kW over its
+/// 2298 N m at 2195 rpm, 0.835 (the map's shape is Chrono's, estimated:
+/// no published MB 833 curve was found).
+pub const SCALE_MB833: f64 = ENGINE_RATED_POWER / (2298.0 * ENGINE_RATED_SPEED);
+/// The Marder 1A3's top speed on roads, m/s: 65 km/h ([`PUBLISHED`]).
+pub const TOP_SPEED: f64 = 65.0 / 3.6;
+/// The sprocket's pitch radius, m: twelve teeth on the 0.17 m shoe pitch,
+/// `p / (2 sin(π/12))`.
+pub const SPROCKET_PITCH_RADIUS: f64 = 0.328_414_780_938_283_25;
+/// The gearbox's four forward ranges, reductions: Chrono's Marder shafts
+/// powertrain's (`Marder_AutomaticTransmissionShafts.cpp`, a secondary
+/// source: its output-over-input ratios 0.27, 0.45, 0.63 and 1.0). No
+/// figure of the Renk HSWL 194's ranges was found.
+pub const RANGES: [f64; 4] = [1.0 / 0.27, 1.0 / 0.45, 1.0 / 0.63, 1.0];
+/// The reverse range's reduction: Chrono's (−0.25, the same file).
+pub const REVERSE: f64 = 1.0 / 0.25;
+/// The final drive's reduction: derived, not published — the reduction
+/// that turns the sprocket at [`TOP_SPEED`] with the engine at
+/// [`ENGINE_RATED_SPEED`] in the fourth range, locked: `ω_e r / v` = 4.181.
+pub const FINAL_DRIVE: f64 = ENGINE_RATED_SPEED * SPROCKET_PITCH_RADIUS / (RANGES[3] * TOP_SPEED);
+/// The converter's capacity factors over Chrono's, `1 / √`[`SCALE_MB833`]
+/// = 1.0944: the engine's torque scaled by `s` meets a pump of capacity
+/// `K / √s` at the same engine speeds (`T_p = (ω / K)²`), so the scaled
+/// engine and converter match where Chrono's pair does (its stall at some
+/// 1 400 rpm, near the map's peak torque). Unscaled, the pump would absorb
+/// the scaled engine's whole torque at idle and hold it there at stall.
+pub const CAPACITY_SCALE: f64 = 1.094_428_234_737_245_8;
+
+/// The engine's torque at no fuel over the M113A3's (Chrono's M113 losses
+/// map, [`m113`](super::m113)'s `engine_drag`): the two engines' largest
+/// full-load torques' ratio, 2256 / 797 N m, an estimate (friction grows
+/// with an engine's size). Chrono's own Marder losses map is its M113's
+/// times ten, a quarter of the engine's peak torque at 2000 rpm and, at
+/// idle, three quarters of what the engine gives there at full fuel.
+pub const DRAG_SCALE: f64 = 2.83;
+
+/// The engine's rotating inertia with the converter's pump, kg m²:
+/// Chrono's Marder shafts powertrain (a secondary source): its engine's
+/// crankshaft, 2.1 kg m² (`Marder_EngineShafts`), and its transmission's
+/// input shaft, the pump, 0.5 kg m².
+pub const ENGINE_INERTIA: f64 = 2.1 + 0.5;
+
+/// The Marder's powertrain as one side's sprocket sees it, at full load:
+/// the declared `powertrain`, the Marder 1A3's as estimated (the MTU MB 833
+/// Ea-500 through a hydrodynamic-mechanical gearbox with a torque
+/// converter and a lock-up clutch, as the Renk HSWL 194 is; no figure of
+/// its converter, ranges or final drive was found), each figure stated at
+/// its declaration and in the guide's table ([`Marder::powertrain`](crate::vehicle::Vehicle::powertrain)):
+/// * the engine: Chrono's MB 833 map × [`SCALE_MB833`] to the published
+///   441 kW, cut off to 0 at 2450 rpm; its inertia [`ENGINE_INERTIA`] and
+///   its torque at no fuel the M113A3's × [`DRAG_SCALE`];
+/// * the converter: Chrono's Marder shafts converter (its file names it an
+///   Allison TC-521 "calculated from SAE TC example curve"): stall torque
+///   ratio 2.5, falling linearly to 1.0 at the coupling, `SR` 0.85, and
+///   its capacity factor map × [`CAPACITY_SCALE`];
+/// * lock-up in ranges 2 to 4 at a speed ratio of 0.9 (assumed, as the
+///   M113A3's X200-4);
+/// * the four ranges and reverse [`RANGES`], [`REVERSE`]; the final drive
+///   [`FINAL_DRIVE`], derived from the published top speed; the
+///   efficiencies the M113A3's (assumed); shifted by the ideal schedule
+///   (an engine whose speed is a state shifts by one; none is published).
+pub fn powertrain() -> trackgen::vehicle::Powertrain {
+    use trackgen::vehicle::Vehicle;
+    Marder::powertrain()
+        .unwrap_or_else(|| unreachable!("the Marder's declaration has a powertrain"))
 }
 
 /// The real Marder's published mobility figures that the pitch-plane

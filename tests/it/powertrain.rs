@@ -105,7 +105,7 @@ fn chrono_s_m113_envelope_is_its_engine_through_its_gears() {
 /// 700 N m.
 #[test]
 fn below_its_peak_torque_speed_the_clutch_slips_at_the_peak() {
-    let powertrain = trackgen::vehicles::marder::powertrain();
+    let powertrain = trackgen::vehicles::marder::chrono_simple_map();
     let fraction = trackgen::vehicles::marder::DRIVELINE_EFFICIENCY * 0.5;
     let want = fraction * 2702.0 / 0.1708;
     let rpm = std::f64::consts::PI / 30.0;
@@ -127,7 +127,7 @@ fn every_envelope_s_slope_is_its_difference() {
     let envelopes = [
         m113::powertrain(),
         m113::chrono_simple_map(),
-        trackgen::vehicles::marder::powertrain(),
+        trackgen::vehicles::marder::chrono_simple_map(),
         Powertrain::Power {
             power: 5e4,
             max_torque: 8e3,

@@ -151,3 +151,71 @@ fn marder_drives_to_speed_with_closed_books() {
     let closure = max_of(results.column("track.closure_error").unwrap());
     assert!(closure < 1e-10, "closure error {closure:e} m");
 }
+
+/// The Marder's declared powertrain, the Marder 1A3's as estimated, holds
+/// the figures it is derived from: its engine map's most power (over its
+/// points and the vertices of its pieces' `T ω`) is the published 441 kW
+/// (1e-12); the final drive turns the sprocket at the published 65 km/h
+/// with the engine at that power's speed in the fourth range (1e-12); the
+/// scaled converter stalls at the engine speed where Chrono's unscaled
+/// pair does, both found here by bisection (1e-9); and at idle the pump
+/// absorbs less than the engine gives against a held turbine (it spins
+/// up: the pair does not bog at idle).
+#[test]
+fn the_marder_s_powertrain_holds_what_it_is_derived_from() {
+    use trackgen::vehicle::Powertrain;
+    use trackgen::vehicles::marder;
+    let Powertrain::Converter(d) = marder::powertrain() else {
+        panic!("the Marder declares a converter");
+    };
+    let most = d
+        .engine
+        .windows(2)
+        .map(|w| {
+            let ((w0, t0), (w1, t1)) = (w[0], w[1]);
+            let slope = (t1 - t0) / (w1 - w0);
+            let vertex = (slope * w0 - t0) / (2.0 * slope);
+            let inside = if slope < 0.0 && vertex > w0 && vertex < w1 {
+                vertex * (t0 + slope * (vertex - w0))
+            } else {
+                0.0
+            };
+            (w0 * t0).max(w1 * t1).max(inside)
+        })
+        .fold(0.0, f64::max);
+    assert!(
+        (most - marder::ENGINE_RATED_POWER).abs() <= 1e-12 * most,
+        "{most} W"
+    );
+    let pitch_radius = marder::SHOE_PITCH / (2.0 * (std::f64::consts::PI / 12.0).sin());
+    assert!((marder::SPROCKET_PITCH_RADIUS - pitch_radius).abs() <= 1e-15);
+    let sprocket = marder::ENGINE_RATED_SPEED / (d.ranges[3] * d.final_drive);
+    let v = sprocket * marder::SPROCKET_PITCH_RADIUS;
+    assert!((v - marder::TOP_SPEED).abs() <= 1e-12 * v, "{v} m/s");
+    // The stall: T_e(ω) = (ω / K(0))², the scaled pair and Chrono's.
+    let stall = |engine: &dyn Fn(f64) -> f64, k0: f64| {
+        let (mut lo, mut hi) = (d.engine[1].0, d.engine[d.engine.len() - 2].0);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if engine(mid) > (mid / k0).powi(2) {
+                lo = mid
+            } else {
+                hi = mid
+            }
+        }
+        0.5 * (lo + hi)
+    };
+    let scaled = |w: f64| crate::support::table_at(&d.engine, w);
+    let chrono = |w: f64| scaled(w) / marder::SCALE_MB833;
+    let k0 = d.capacity[0].1;
+    let (a, b) = (
+        stall(&scaled, k0),
+        stall(&chrono, k0 / marder::CAPACITY_SCALE),
+    );
+    assert!((a - b).abs() <= 1e-9 * b, "{a} against {b} rad/s");
+    let idle = d.engine[0];
+    assert!(
+        idle.1 > (idle.0 / k0).powi(2),
+        "at idle the engine gives more than the pump absorbs"
+    );
+}

@@ -23,7 +23,7 @@
 //! fn main() -> std::process::ExitCode {
 //!     App::new()
 //!         .vehicle(Entry::of::<M113>().published(&m113::PUBLISHED))
-//!         .vehicle(Entry::of::<Marder>().powertrain(marder::powertrain()))
+//!         .vehicle(Entry::of::<Marder>().published(&marder::PUBLISHED))
 //!         .main()
 //! }
 //! ```

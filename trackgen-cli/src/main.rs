@@ -14,10 +14,6 @@ use trackgen_app::{App, Entry};
 fn main() -> ExitCode {
     App::new()
         .vehicle(Entry::of::<M113>().published(&m113::PUBLISHED))
-        .vehicle(
-            Entry::of::<Marder>()
-                .powertrain(marder::powertrain())
-                .published(&marder::PUBLISHED),
-        )
+        .vehicle(Entry::of::<Marder>().published(&marder::PUBLISHED))
         .main()
 }
