@@ -308,7 +308,7 @@ pub const FINAL_DRIVE: f64 = ENGINE_RATED_SPEED * SPROCKET_PITCH_RADIUS / (RANGE
 /// = 1.0944: the engine's torque scaled by `s` meets a pump of capacity
 /// `K / √s` at the same engine speeds (`T_p = (ω / K)²`), so the scaled
 /// engine and converter match where Chrono's pair does (its stall at some
-/// 1 400 rpm, near the map's peak torque). Unscaled, the pump would absorb
+/// 1 500 rpm, at the map's peak torque). Unscaled, the pump would absorb
 /// the scaled engine's whole torque at idle and hold it there at stall.
 pub const CAPACITY_SCALE: f64 = 1.094_428_234_737_245_8;
 
