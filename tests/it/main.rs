@@ -24,6 +24,7 @@ mod equilibrium;
 mod examples;
 mod finite_differences;
 mod fitted_contact;
+mod function_length;
 mod generated_vs_reference;
 mod grade_hold;
 mod half_round_lift;

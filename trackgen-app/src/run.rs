@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::multibody::PartKind;
-use trackgen::scenario::Start;
+use trackgen::scenario::{Scenario, Start};
 use trackgen::scene::{self, Scene};
 use trackgen::simulate::{Background, Output, RideSink, StreamFailure, simulate_into};
 use trackgen::system::Simulated;
@@ -84,6 +84,24 @@ fn about<V: Vehicle>() -> String {
     format!("{} (one side): {}", V::NAME, words.join(", "))
 }
 
+/// Says what the run will do: the soil, the speed profile, the course
+/// and the duration.
+fn announce(scenario: &Scenario) {
+    let ramp = if scenario.ramp > 0.0 {
+        format!("in {:.1} s", scenario.ramp)
+    } else {
+        "at once".to_string()
+    };
+    say!(
+        "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {}; {:.1} s in all",
+        scenario.soil,
+        scenario.settle,
+        scenario.speed,
+        scenario.course.describe(),
+        scenario.duration
+    );
+}
+
 /// Assembles the vehicle `V` for the scenario the options name (through
 /// `entry`'s powertrain with `--engine`), runs it, streaming its outputs,
 /// and reports.
@@ -145,19 +163,7 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
             system.set_start(rest.state.as_slice())?;
         }
     }
-    let ramp = if scenario.ramp > 0.0 {
-        format!("in {:.1} s", scenario.ramp)
-    } else {
-        "at once".to_string()
-    };
-    say!(
-        "on {}: settle {:.1} s, then to {:.1} m/s {ramp}; {}; {:.1} s in all",
-        scenario.soil,
-        scenario.settle,
-        scenario.speed,
-        course.describe(),
-        scenario.duration
-    );
+    announce(&scenario);
     let bar = ProgressBar::new((scenario.duration * 1000.0) as u64);
     bar.set_style(ProgressStyle::with_template(
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",

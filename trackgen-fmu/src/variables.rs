@@ -175,8 +175,118 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
         Role::Time,
     );
     use Causality::Parameter as P;
+    for (name, kind, unit, description, start, setting) in scenario_settings() {
+        push(
+            name.into(),
+            kind,
+            P,
+            unit,
+            description.into(),
+            start,
+            Role::Setting(setting),
+        );
+    }
+    let config = system.config();
+    let arms = arm_names::<V>();
+    for (i, (part, body)) in arms.iter().enumerate() {
+        let spring = config
+            .arms
+            .iter()
+            .find(|a| a.body == *body)
+            .map(|a| a.spring)
+            .ok_or_else(|| FmuError::Build(format!("no spring for {part}'s arm")))?;
+        push(
+            format!("{part}.arm_stiffness"),
+            Kind::Float64,
+            P,
+            "N.m/rad",
+            format!(
+                "{part}'s arm: the torsion spring's rate, > 0 (declared {})",
+                spring.stiffness
+            ),
+            Start::Float64(spring.stiffness),
+            Role::ArmStiffness(i),
+        );
+        push(
+            format!("{part}.arm_damping"),
+            Kind::Float64,
+            P,
+            "N.m.s/rad",
+            format!(
+                "{part}'s arm: the damper's rate, >= 0 (declared {})",
+                spring.damping
+            ),
+            Start::Float64(spring.damping),
+            Role::ArmDamping(i),
+        );
+    }
+    let inputs = [
+        (
+            "target_speed",
+            "m/s",
+            "drive = speed: the forward speed the controller holds",
+            Input::TargetSpeed,
+        ),
+        (
+            "drive_torque",
+            "N.m",
+            "drive = torque: the torque on the sprocket",
+            Input::DriveTorque,
+        ),
+        (
+            "drawbar_pull",
+            "N",
+            "a horizontal force pulling the chassis back at its centroid (negative pushes)",
+            Input::DrawbarPull,
+        ),
+    ];
+    for (name, unit, description, input) in inputs {
+        push(
+            name.into(),
+            Kind::Float64,
+            Causality::Input,
+            unit,
+            description.into(),
+            Start::Float64(0.0),
+            Role::Input(input),
+        );
+    }
+    for (i, column) in system.columns().into_iter().enumerate() {
+        let (unit, description) = describe_column(&column);
+        push(
+            column,
+            Kind::Float64,
+            Causality::Output,
+            unit,
+            description,
+            Start::Computed,
+            Role::Column(i),
+        );
+    }
+    push(
+        "books_residual".into(),
+        Kind::Float64,
+        Causality::Output,
+        "1",
+        "the energy books since the start: (motor work - change of energy - dissipated) / the largest of the three".into(),
+        Start::Computed,
+        Role::BooksResidual,
+    );
+    Ok(table)
+}
+
+/// The scenario's settings as the FMU's parameters: name, kind, unit,
+/// description and start value (the scenario's defaults).
+fn scenario_settings() -> [(
+    &'static str,
+    Kind,
+    &'static str,
+    &'static str,
+    Start,
+    Setting,
+); 16] {
     use Setting as S;
-    let settings: [(&str, Kind, &'static str, &str, Start, Setting); 16] = [
+    [
         (
             "course",
             Kind::String,
@@ -305,105 +415,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Start::Int32(0),
             S::Engine,
         ),
-    ];
-    for (name, kind, unit, description, start, setting) in settings {
-        push(
-            name.into(),
-            kind,
-            P,
-            unit,
-            description.into(),
-            start,
-            Role::Setting(setting),
-        );
-    }
-    let config = system.config();
-    let arms = arm_names::<V>();
-    for (i, (part, body)) in arms.iter().enumerate() {
-        let spring = config
-            .arms
-            .iter()
-            .find(|a| a.body == *body)
-            .map(|a| a.spring)
-            .ok_or_else(|| FmuError::Build(format!("no spring for {part}'s arm")))?;
-        push(
-            format!("{part}.arm_stiffness"),
-            Kind::Float64,
-            P,
-            "N.m/rad",
-            format!(
-                "{part}'s arm: the torsion spring's rate, > 0 (declared {})",
-                spring.stiffness
-            ),
-            Start::Float64(spring.stiffness),
-            Role::ArmStiffness(i),
-        );
-        push(
-            format!("{part}.arm_damping"),
-            Kind::Float64,
-            P,
-            "N.m.s/rad",
-            format!(
-                "{part}'s arm: the damper's rate, >= 0 (declared {})",
-                spring.damping
-            ),
-            Start::Float64(spring.damping),
-            Role::ArmDamping(i),
-        );
-    }
-    let inputs = [
-        (
-            "target_speed",
-            "m/s",
-            "drive = speed: the forward speed the controller holds",
-            Input::TargetSpeed,
-        ),
-        (
-            "drive_torque",
-            "N.m",
-            "drive = torque: the torque on the sprocket",
-            Input::DriveTorque,
-        ),
-        (
-            "drawbar_pull",
-            "N",
-            "a horizontal force pulling the chassis back at its centroid (negative pushes)",
-            Input::DrawbarPull,
-        ),
-    ];
-    for (name, unit, description, input) in inputs {
-        push(
-            name.into(),
-            Kind::Float64,
-            Causality::Input,
-            unit,
-            description.into(),
-            Start::Float64(0.0),
-            Role::Input(input),
-        );
-    }
-    for (i, column) in system.columns().into_iter().enumerate() {
-        let (unit, description) = describe_column(&column);
-        push(
-            column,
-            Kind::Float64,
-            Causality::Output,
-            unit,
-            description,
-            Start::Computed,
-            Role::Column(i),
-        );
-    }
-    push(
-        "books_residual".into(),
-        Kind::Float64,
-        Causality::Output,
-        "1",
-        "the energy books since the start: (motor work - change of energy - dissipated) / the largest of the three".into(),
-        Start::Computed,
-        Role::BooksResidual,
-    );
-    Ok(table)
+    ]
 }
 
 /// The arms of the declared parts, in declaration order: the part's name

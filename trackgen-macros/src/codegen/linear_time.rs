@@ -196,6 +196,13 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
             }
         }
     };
+    let link_pass = link_pass(
+        &link_terms,
+        &elimination,
+        [&ij_first, &im_first_cut, &ij_last, &im_last],
+    );
+    let elimination_sweeps = elimination_sweeps(&row_j);
+    let forces_and_accelerations = forces_and_accelerations(&singular, &v2, &ij_i, &im_first);
     // A loop of fewer than 3 links cannot close.
     let constrained = if n >= 3 {
         quote! {
@@ -242,166 +249,9 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 const M: usize = #m;
                 #tables
                 use #elimination::{Sweep, back};
-                // Per link, independent of the others (vectorised): levers,
-                // blocks and right-side terms.
-                let mut force_first = [0.0f64; 2];
-                let loaded = !loads.is_empty();
-                for i in 0..N {
-                    let (s, c) = trig[i];
-                    let w = qd[2 + i];
-                    let (load_x, load_y, moment) = if loaded {
-                        let l = &loads[i];
-                        (l.force.x, l.force.y, l.moment)
-                    } else {
-                        (0.0, 0.0, 0.0)
-                    };
-                    #link_terms
-                    links[i] = #elimination::LinkTerms {
-                        p1: [p1x, p1y],
-                        p2: [p2x, p2y],
-                        moment,
-                        a2: link_a2,
-                        a1: link_a1,
-                        coupling: link_l,
-                        e2: link_e2,
-                        e1: link_e1,
-                    };
-                    if i == 0 {
-                        force_first = [fx, fy];
-                    }
-                }
-                if !CLOSED {
-                    // Across the cut: `cut` on link n at ū2ⁿ, reversed on
-                    // link 1 at ū1¹; their right-side terms change by
-                    // −(p ΔT/J + ΔF/m).
-                    let on_last = links[N - 1].p2[0] * cut.x + links[N - 1].p2[1] * cut.y;
-                    let on_first = -(links[0].p1[0] * cut.x + links[0].p1[1] * cut.y);
-                    {
-                        let link = &mut links[N - 1];
-                        let (dj, dm) = (#ij_last * on_last, #im_last);
-                        for (side, p) in [(&mut link.e2, link.p2), (&mut link.e1, link.p1)] {
-                            side[0] -= p[0] * dj + cut.x * dm;
-                            side[1] -= p[1] * dj + cut.y * dm;
-                        }
-                        link.moment += on_last;
-                    }
-                    {
-                        let link = &mut links[0];
-                        let (dj, dm) = (#ij_first * on_first, #im_first_cut);
-                        for (side, p) in [(&mut link.e2, link.p2), (&mut link.e1, link.p1)] {
-                            side[0] -= p[0] * dj - cut.x * dm;
-                            side[1] -= p[1] * dj - cut.y * dm;
-                        }
-                        link.moment += on_first;
-                    }
-                    force_first = [force_first[0] - cut.x, force_first[1] - cut.y];
-                }
-                // Twisted elimination ("burn at both ends"): joints 0 … h−1
-                // eliminated downward and M−1 … h+1 upward, interleaved (two
-                // independent chains for the processor to overlap), meeting
-                // at joint h (the joints' terms: `JointTerms`).
-                let h = M / 2;
-                // Joints below h (the upward sweep): M − 1 − h ≤ h of them.
-                let below = M.saturating_sub(1 + h);
-                let mut down = Sweep::default();
-                let mut up = Sweep::default();
-                for t in 0..h {
-                    {
-                        let j = t;
-                        #row_j
-                        if j > 0 {
-                            down.eliminate_into::<CLOSED>(true, links[j].coupling, &mut joints[j].fac, &mut d, &mut r, &mut z);
-                        }
-                        down.keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
-                    }
-                    if t < below {
-                        let j = M - 1 - t;
-                        #row_j
-                        if j + 1 < M {
-                            up.eliminate_into::<CLOSED>(false, links[j + 1].coupling, &mut joints[j + 1].fac, &mut d, &mut r, &mut z);
-                        }
-                        up.keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
-                    }
-                }
-                if M > 0 {
-                    // The meeting joint takes both sweeps.
-                    let j = h;
-                    #row_j
-                    if j > 0 {
-                        down.eliminate_into::<CLOSED>(true, links[j].coupling, &mut joints[j].fac, &mut d, &mut r, &mut z);
-                    }
-                    if j + 1 < M {
-                        up.eliminate_into::<CLOSED>(false, links[j + 1].coupling, &mut joints[j + 1].fac, &mut d, &mut r, &mut z);
-                    }
-                    Sweep::default().keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
-                }
-                // Outward from the meeting joint, both ways at once:
-                // xⱼ = yⱼ − fac[l]ᵀ x_(neighbour nearer h).
-                for t in 1..=h {
-                    let j = h - t;
-                    back::<CLOSED, M>(joints, j, j + 1);
-                    if t <= below {
-                        let j = h + t;
-                        back::<CLOSED, M>(joints, j, j - 1);
-                    }
-                }
-                // The closing joint's force: the Schur complement of the
-                // bordered system, (C − Bᵀ Z) y = s − Bᵀ x.
-                let closing = if CLOSED {
-                    let (a, b) = (links[N - 1].a2, links[0].a1);
-                    let (mut d00, mut d01, mut d11) = (a[0] + b[0], a[1] + b[1], a[2] + b[2]);
-                    let mut d10 = d01;
-                    let mut r = [
-                        links[N - 1].e2[0] - links[0].e1[0] - stabilisation.x,
-                        links[N - 1].e2[1] - links[0].e1[1] - stabilisation.y,
-                    ];
-                    // b₀ = L₁ at joint 0, b_m = L_nᵀ at joint n − 1, as
-                    // 2 × 2 row-major (b[2r + c]).
-                    let last = links[N - 1].coupling;
-                    for (b, at) in [(links[0].coupling, 0usize), ([last[0], last[2], last[1], last[3]], M.saturating_sub(1))] {
-                        let (z, x) = (joints[at].yz, joints[at].yr);
-                        d00 -= b[0] * z[0] + b[2] * z[2];
-                        d01 -= b[0] * z[1] + b[2] * z[3];
-                        d10 -= b[1] * z[0] + b[3] * z[2];
-                        d11 -= b[1] * z[1] + b[3] * z[3];
-                        r[0] -= b[0] * x[0] + b[2] * x[1];
-                        r[1] -= b[1] * x[0] + b[3] * x[1];
-                    }
-                    let det = d00 * d11 - d01 * d10;
-                    if !(det != 0.0 && det.is_finite()) {
-                        return ::core::result::Result::Err(#singular { joint: N - 1 });
-                    }
-                    <#v2>::new((d11 * r[0] - d01 * r[1]) / det, (d00 * r[1] - d10 * r[0]) / det)
-                } else {
-                    cut
-                };
-                // Each joint's force λⱼ = xⱼ − Zⱼ y, then the accelerations
-                // aᵢ = Wᵢ (Fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁).
-                for j in 0..M {
-                    let (x, z) = (joints[j].yr, joints[j].yz);
-                    joint_forces[j] = if CLOSED {
-                        <#v2>::new(
-                            x[0] - z[0] * closing.x - z[1] * closing.y,
-                            x[1] - z[2] * closing.x - z[3] * closing.y,
-                        )
-                    } else {
-                        <#v2>::new(x[0], x[1])
-                    };
-                }
-                joint_forces[N - 1] = closing;
-                // With the joint cut, its force acts through the loads.
-                let acting = |j: usize| if CLOSED || j < M { joint_forces[j] } else { <#v2>::zeros() };
-                for i in 0..N {
-                    let ahead = acting(i);
-                    let behind = acting((i + N - 1) % N);
-                    qdd[2 + i] = #ij_i
-                        * (links[i].moment + links[i].p2[0] * ahead.x + links[i].p2[1] * ahead.y
-                            - links[i].p1[0] * behind.x - links[i].p1[1] * behind.y);
-                }
-                let (ahead, behind) = (acting(0), acting(N - 1));
-                qdd[0] = #im_first * (force_first[0] + ahead.x - behind.x);
-                qdd[1] = #im_first * (force_first[1] + ahead.y - behind.y);
-                ::core::result::Result::Ok(())
+                #link_pass
+                #elimination_sweeps
+                #forces_and_accelerations
             }
             let trig: &[(f64, f64); #n] = trig.try_into().expect("one (sin θ, cos θ) per link");
             let joint_forces: &mut [#v2; #n] =
@@ -417,5 +267,200 @@ pub fn linear_time_dynamics(track: &Track) -> TokenStream {
                 }
             })
         }
+    }
+}
+
+/// The generated `solve`'s first pass: per link, independent of the
+/// others, its levers, blocks and right-side terms (`LinkTerms`), and for
+/// a cut loop the cut force's share of the two links beside the cut.
+/// `inverse` holds `1/J` and `1/m` of the first and the last link.
+fn link_pass(
+    link_terms: &TokenStream,
+    elimination: &TokenStream,
+    inverse: [&TokenStream; 4],
+) -> TokenStream {
+    let [ij_first, im_first_cut, ij_last, im_last] = inverse;
+    quote! {
+        // Per link, independent of the others (vectorised): levers,
+        // blocks and right-side terms.
+        let mut force_first = [0.0f64; 2];
+        let loaded = !loads.is_empty();
+        for i in 0..N {
+            let (s, c) = trig[i];
+            let w = qd[2 + i];
+            let (load_x, load_y, moment) = if loaded {
+                let l = &loads[i];
+                (l.force.x, l.force.y, l.moment)
+            } else {
+                (0.0, 0.0, 0.0)
+            };
+            #link_terms
+            links[i] = #elimination::LinkTerms {
+                p1: [p1x, p1y],
+                p2: [p2x, p2y],
+                moment,
+                a2: link_a2,
+                a1: link_a1,
+                coupling: link_l,
+                e2: link_e2,
+                e1: link_e1,
+            };
+            if i == 0 {
+                force_first = [fx, fy];
+            }
+        }
+        if !CLOSED {
+            // Across the cut: `cut` on link n at ū2ⁿ, reversed on
+            // link 1 at ū1¹; their right-side terms change by
+            // −(p ΔT/J + ΔF/m).
+            let on_last = links[N - 1].p2[0] * cut.x + links[N - 1].p2[1] * cut.y;
+            let on_first = -(links[0].p1[0] * cut.x + links[0].p1[1] * cut.y);
+            {
+                let link = &mut links[N - 1];
+                let (dj, dm) = (#ij_last * on_last, #im_last);
+                for (side, p) in [(&mut link.e2, link.p2), (&mut link.e1, link.p1)] {
+                    side[0] -= p[0] * dj + cut.x * dm;
+                    side[1] -= p[1] * dj + cut.y * dm;
+                }
+                link.moment += on_last;
+            }
+            {
+                let link = &mut links[0];
+                let (dj, dm) = (#ij_first * on_first, #im_first_cut);
+                for (side, p) in [(&mut link.e2, link.p2), (&mut link.e1, link.p1)] {
+                    side[0] -= p[0] * dj - cut.x * dm;
+                    side[1] -= p[1] * dj - cut.y * dm;
+                }
+                link.moment += on_first;
+            }
+            force_first = [force_first[0] - cut.x, force_first[1] - cut.y];
+        }
+    }
+}
+
+/// The generated `solve`'s elimination of the joints' block-tridiagonal
+/// system from both ends toward the middle joint, and the substitution
+/// back outward; `row_j` builds joint `j`'s row.
+fn elimination_sweeps(row_j: &TokenStream) -> TokenStream {
+    quote! {
+        // Twisted elimination ("burn at both ends"): joints 0 … h−1
+        // eliminated downward and M−1 … h+1 upward, interleaved (two
+        // independent chains for the processor to overlap), meeting
+        // at joint h (the joints' terms: `JointTerms`).
+        let h = M / 2;
+        // Joints below h (the upward sweep): M − 1 − h ≤ h of them.
+        let below = M.saturating_sub(1 + h);
+        let mut down = Sweep::default();
+        let mut up = Sweep::default();
+        for t in 0..h {
+            {
+                let j = t;
+                #row_j
+                if j > 0 {
+                    down.eliminate_into::<CLOSED>(true, links[j].coupling, &mut joints[j].fac, &mut d, &mut r, &mut z);
+                }
+                down.keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
+            }
+            if t < below {
+                let j = M - 1 - t;
+                #row_j
+                if j + 1 < M {
+                    up.eliminate_into::<CLOSED>(false, links[j + 1].coupling, &mut joints[j + 1].fac, &mut d, &mut r, &mut z);
+                }
+                up.keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
+            }
+        }
+        if M > 0 {
+            // The meeting joint takes both sweeps.
+            let j = h;
+            #row_j
+            if j > 0 {
+                down.eliminate_into::<CLOSED>(true, links[j].coupling, &mut joints[j].fac, &mut d, &mut r, &mut z);
+            }
+            if j + 1 < M {
+                up.eliminate_into::<CLOSED>(false, links[j + 1].coupling, &mut joints[j + 1].fac, &mut d, &mut r, &mut z);
+            }
+            Sweep::default().keep::<CLOSED>(j, d, r, z, &mut joints[j])?;
+        }
+        // Outward from the meeting joint, both ways at once:
+        // xⱼ = yⱼ − fac[l]ᵀ x_(neighbour nearer h).
+        for t in 1..=h {
+            let j = h - t;
+            back::<CLOSED, M>(joints, j, j + 1);
+            if t <= below {
+                let j = h + t;
+                back::<CLOSED, M>(joints, j, j - 1);
+            }
+        }
+    }
+}
+
+/// The generated `solve`'s last steps: the closing joint's force (the
+/// bordered system's Schur complement, or the cut force), every joint's
+/// force, and the links' accelerations from them.
+fn forces_and_accelerations(
+    singular: &TokenStream,
+    v2: &TokenStream,
+    ij_i: &TokenStream,
+    im_first: &TokenStream,
+) -> TokenStream {
+    quote! {
+        // The closing joint's force: the Schur complement of the
+        // bordered system, (C − Bᵀ Z) y = s − Bᵀ x.
+        let closing = if CLOSED {
+            let (a, b) = (links[N - 1].a2, links[0].a1);
+            let (mut d00, mut d01, mut d11) = (a[0] + b[0], a[1] + b[1], a[2] + b[2]);
+            let mut d10 = d01;
+            let mut r = [
+                links[N - 1].e2[0] - links[0].e1[0] - stabilisation.x,
+                links[N - 1].e2[1] - links[0].e1[1] - stabilisation.y,
+            ];
+            // b₀ = L₁ at joint 0, b_m = L_nᵀ at joint n − 1, as
+            // 2 × 2 row-major (b[2r + c]).
+            let last = links[N - 1].coupling;
+            for (b, at) in [(links[0].coupling, 0usize), ([last[0], last[2], last[1], last[3]], M.saturating_sub(1))] {
+                let (z, x) = (joints[at].yz, joints[at].yr);
+                d00 -= b[0] * z[0] + b[2] * z[2];
+                d01 -= b[0] * z[1] + b[2] * z[3];
+                d10 -= b[1] * z[0] + b[3] * z[2];
+                d11 -= b[1] * z[1] + b[3] * z[3];
+                r[0] -= b[0] * x[0] + b[2] * x[1];
+                r[1] -= b[1] * x[0] + b[3] * x[1];
+            }
+            let det = d00 * d11 - d01 * d10;
+            if !(det != 0.0 && det.is_finite()) {
+                return ::core::result::Result::Err(#singular { joint: N - 1 });
+            }
+            <#v2>::new((d11 * r[0] - d01 * r[1]) / det, (d00 * r[1] - d10 * r[0]) / det)
+        } else {
+            cut
+        };
+        // Each joint's force λⱼ = xⱼ − Zⱼ y, then the accelerations
+        // aᵢ = Wᵢ (Fᵢ + D⁺ᵢᵀ λᵢ − D⁻ᵢᵀ λᵢ₋₁).
+        for j in 0..M {
+            let (x, z) = (joints[j].yr, joints[j].yz);
+            joint_forces[j] = if CLOSED {
+                <#v2>::new(
+                    x[0] - z[0] * closing.x - z[1] * closing.y,
+                    x[1] - z[2] * closing.x - z[3] * closing.y,
+                )
+            } else {
+                <#v2>::new(x[0], x[1])
+            };
+        }
+        joint_forces[N - 1] = closing;
+        // With the joint cut, its force acts through the loads.
+        let acting = |j: usize| if CLOSED || j < M { joint_forces[j] } else { <#v2>::zeros() };
+        for i in 0..N {
+            let ahead = acting(i);
+            let behind = acting((i + N - 1) % N);
+            qdd[2 + i] = #ij_i
+                * (links[i].moment + links[i].p2[0] * ahead.x + links[i].p2[1] * ahead.y
+                    - links[i].p1[0] * behind.x - links[i].p1[1] * behind.y);
+        }
+        let (ahead, behind) = (acting(0), acting(N - 1));
+        qdd[0] = #im_first * (force_first[0] + ahead.x - behind.x);
+        qdd[1] = #im_first * (force_first[1] + ahead.y - behind.y);
+        ::core::result::Result::Ok(())
     }
 }
