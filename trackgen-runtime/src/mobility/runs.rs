@@ -511,3 +511,49 @@ impl Sink for Probe {
         Some(read)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Feeds a probe a held hull (x = 0) every 0.1 s with the engine's
+    /// speed `engine(t)` (no column for `None`): the time it called the
+    /// hull stalled, if it did within 6 s.
+    fn stalled_at(engine: Option<fn(f64) -> f64>) -> Option<f64> {
+        let mut probe = Probe::new(10.0);
+        let mut columns = vec!["x".to_string(), "pitch".to_string()];
+        if engine.is_some() {
+            columns.push("engine_speed".to_string());
+        }
+        probe.begin(&columns).expect("the columns");
+        for k in 0..=60 {
+            let t = f64::from(k) * 0.1;
+            let mut row = vec![0.0, 0.0];
+            row.extend(engine.map(|e| e(t)));
+            match probe.row(t, &row) {
+                Ok(()) => {}
+                Err(SinkError::Done) => return probe.stalled.then_some(t),
+                Err(e) => panic!("{e}"),
+            }
+        }
+        None
+    }
+
+    #[test]
+    fn a_held_hull_stalls_unless_its_engine_spins_up() {
+        // Rows every 0.1 s: a window closes at the first row 1.5 s (up to
+        // rounding, 1.6 s) after it opened.
+        let first = stalled_at(None).expect("stalls without an engine column");
+        assert!((1.5..=1.6 + 1e-9).contains(&first), "{first}");
+        let steady = stalled_at(Some(|_| 200.0)).expect("stalls at a steady engine");
+        assert_eq!(steady, first);
+        // 3 % a window (over the 2 %) for the first two windows, then
+        // steady: stalled one window after the spin-up ends.
+        let spin = stalled_at(Some(|t: f64| 100.0 * 1.03f64.powf(t.min(3.2) / 1.5)))
+            .expect("stalls once the engine stops spinning up");
+        assert!(spin > 2.0 * first, "{spin} against {first}");
+        // 1 % a window (under the 2 %): stalled as if steady.
+        let slow = stalled_at(Some(|t: f64| 100.0 * 1.01f64.powf(t / 1.5)));
+        assert_eq!(slow, Some(first));
+    }
+}
