@@ -122,6 +122,10 @@ pub const RUNTIME: Graph = &[
         ],
     ),
     (
+        "scenario",
+        &["terrain", "integrate", "system", "vehicle", "simulate"],
+    ),
+    (
         "mobility",
         &[
             "terrain",
@@ -131,9 +135,9 @@ pub const RUNTIME: Graph = &[
             "vehicle",
             "simulate",
             "scene",
+            "scenario",
         ],
     ),
-    ("scenario", &["terrain", "integrate", "vehicle"]),
     // `__private`: the paths generated code names (lib.rs).
     (
         "__private",
@@ -195,7 +199,7 @@ pub const APP: Graph = &[
     ("report", &["console", "cli"]),
     ("modes", &["console", "cli", "offered"]),
     ("fmu", &["cli", "offered"]),
-    ("mobility", &["offered"]),
+    ("mobility", &["cli", "offered"]),
     (
         "run",
         &["console", "cli", "offered", "outputs", "report", "modes"],

@@ -28,9 +28,9 @@
 
 use std::sync::Arc;
 
-use trackgen::integrate::Integrator;
 use trackgen::mobility::search::{Limit, Trial, bisect, interpolate};
 use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride, soil};
+use trackgen::scenario::Method;
 use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicles::m113::{self, M113};
 
@@ -115,7 +115,7 @@ fn the_search_brackets_a_known_crossing_in_bisection_s_runs() {
 #[test]
 fn a_diverging_run_is_a_failure_not_a_limit() {
     let mut settings = EventSettings::new(m113::powertrain());
-    settings.integrator = Integrator::Rk4 { step: 0.05 };
+    settings.scenario.method = Method::Rk4 { step: 0.05 };
     let footprint = Footprint::of::<M113>("step").unwrap();
     let result = obstacle::step::<M113>(&settings, &footprint);
     match result {

@@ -175,7 +175,7 @@ impl RunArgs {
 
 /// A parser of the names in `table` (listed by `--help`), each parsed by
 /// the runtime's `FromStr` of its type.
-fn named<T>(table: &[(&'static str, T)]) -> impl TypedValueParser<Value = T>
+pub(crate) fn named<T>(table: &[(&'static str, T)]) -> impl TypedValueParser<Value = T>
 where
     T: std::str::FromStr<Err = String> + Clone + Send + Sync + 'static,
 {
@@ -242,7 +242,7 @@ fn non_negative_seconds(s: &str) -> Result<f64, String> {
     within(s, 0.0, 1e6, "a time is from 0 to 1e6 s")
 }
 
-fn tolerance(s: &str) -> Result<f64, String> {
+pub(crate) fn tolerance(s: &str) -> Result<f64, String> {
     within(s, 1e-12, 0.1, "a tolerance is from 1e-12 to 0.1")
 }
 

@@ -19,7 +19,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::multibody::PartKind;
 use trackgen::scenario::{Scenario, Start};
 use trackgen::scene::{self, Scene};
-use trackgen::simulate::{Background, Output, RideSink, StreamFailure, simulate_into};
+use trackgen::simulate::{Background, RideSink, StreamFailure};
 use trackgen::system::Simulated;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
@@ -175,15 +175,9 @@ fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Erro
     let outcome = std::thread::scope(|scope| {
         let recorders = &mut outputs.recorders;
         let mut sink = Background::spawn(scope, move || recorders.sink());
-        simulate_into(
-            &mut system,
-            scenario.integrator(),
-            0.0,
-            scenario.duration,
-            Output::Every(scenario.output_every),
-            &mut sink,
-            &mut |t| bar.set_position((t * 1000.0) as u64),
-        )
+        scenario.simulate_into(&mut system, &mut sink, &mut |t| {
+            bar.set_position((t * 1000.0) as u64)
+        })
     });
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();

@@ -114,6 +114,32 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
     for file in ["step.csv", "step-limit.svg", "report.html"] {
         assert!(obstacles.join(file).exists(), "{file}");
     }
+    // Every run's integrator is the option's: Bogacki-Shampine at a
+    // tenth of its default tolerance finds the same step to the quick
+    // search's 0.1 m (its runs differ: the trials' figures are not the
+    // default's bit for bit).
+    let step = |extra: &[&str]| {
+        let mut args = vec!["--quick", "--events", "step", "--json"];
+        args.extend_from_slice(extra);
+        let out = mobility(&args, &dir);
+        assert_success("mobility --events step --json", &out);
+        let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+        let line = stdout.lines().find(|l| l.starts_with('{')).unwrap();
+        let result: serde_json::Value = serde_json::from_str(line).unwrap();
+        (result["value"].as_f64().unwrap(), result["relation"].clone())
+    };
+    let (default, relation) = step(&[]);
+    assert_eq!(relation, "=");
+    let (tight, relation) = step(&["--integrator", "bs23", "--tolerance", "1e-4"]);
+    assert_eq!(relation, "=");
+    assert!(
+        (tight - default).abs() <= 0.1,
+        "step {default} m by default, {tight} m at 1e-4"
+    );
+    let refused = mobility(&["--integrator", "rk45"], &dir);
+    assert_eq!(refused.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&refused.stderr);
+    assert!(stderr.contains("rk45"), "{stderr}");
     let refused = mobility(&["--events", "ride,mud"], &dir);
     assert!(!refused.status.success());
     let stderr = String::from_utf8_lossy(&refused.stderr);

@@ -18,6 +18,8 @@ use std::path::PathBuf;
 use std::str::FromStr;
 
 use crate::integrate::Integrator;
+use crate::simulate::{Output, RunReport, Sink, StreamFailure, simulate_into};
+use crate::system::Simulated;
 use crate::terrain::Terrain;
 use crate::terrain::course::{self, CourseError, CourseSpec};
 use crate::terrain::soil::SoilPreset;
@@ -121,6 +123,7 @@ impl Scenario {
                 atol: implicit,
                 max_step,
             },
+            Method::Rk4 { step } => Integrator::Rk4 { step },
         }
     }
 
@@ -133,6 +136,30 @@ impl Scenario {
             Method::Auto if implicit > 0 => self.implicit_tolerance(),
             _ => self.explicit_tolerance(),
         }
+    }
+
+    /// Simulates `system` through this scenario's time: from 0 to
+    /// [`duration`](Self::duration) with its [`integrator`](Self::integrator),
+    /// rows every [`output_every`](Self::output_every) into `sink`,
+    /// `progress` told the time as the run goes. A failed run returns
+    /// its error with the report of what was computed up to then
+    /// ([`simulate_into`]).
+    #[allow(clippy::result_large_err)]
+    pub fn simulate_into(
+        &self,
+        system: &mut dyn Simulated,
+        sink: &mut dyn Sink,
+        progress: &mut dyn FnMut(f64),
+    ) -> Result<RunReport, StreamFailure> {
+        simulate_into(
+            system,
+            self.integrator(),
+            0.0,
+            self.duration,
+            Output::Every(self.output_every),
+            sink,
+            progress,
+        )
     }
 
     /// The course's ground: [`CourseSpec::terrain`].
@@ -230,7 +257,7 @@ impl fmt::Display for Soil {
 }
 
 /// The integrators a scenario names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Method {
     /// Bogacki-Shampine while accuracy sets its step, ROS34PW2 while the
     /// stiffest mode would ([`Integrator::Auto`]).
@@ -241,6 +268,15 @@ pub enum Method {
     Dopri5,
     /// ROS34PW2, linearly implicit (Rosenbrock-W 3(2)).
     Ros34pw2,
+    /// The classical fourth-order Runge–Kutta method at a fixed step, s,
+    /// without error control (the tolerance is not used): to compare with
+    /// a fixed-step tool, or to see what an explicit method does at a
+    /// step too long for the contact's stiffness. Named `rk4:STEP`; not
+    /// among the main job's choices.
+    Rk4 {
+        /// The step, s.
+        step: f64,
+    },
 }
 
 impl Method {
@@ -256,8 +292,20 @@ impl Method {
 impl FromStr for Method {
     type Err = String;
 
-    /// `auto`, `bs23`, `dopri5` or `ros34pw2`.
+    /// `auto`, `bs23`, `dopri5`, `ros34pw2`, or `rk4:STEP` (s, finite and
+    /// more than 0).
     fn from_str(s: &str) -> Result<Self, String> {
+        if let Some(step) = s.strip_prefix("rk4:") {
+            return step
+                .trim()
+                .parse::<f64>()
+                .ok()
+                .filter(|h| h.is_finite() && *h > 0.0)
+                .map(|step| Method::Rk4 { step })
+                .ok_or_else(|| {
+                    format!("`{step}` in `{s}` is no step (s, finite and more than 0)")
+                });
+        }
         named(&Method::NAMED, s, "integrator")
     }
 }
@@ -388,6 +436,14 @@ mod tests {
         );
         assert!("mud".parse::<Soil>().unwrap_err().contains("`mud`"));
         assert_eq!("ros34pw2".parse::<Method>(), Ok(Method::Ros34pw2));
+        assert_eq!(
+            "rk4:0.001".parse::<Method>(),
+            Ok(Method::Rk4 { step: 0.001 })
+        );
+        for bad in ["rk4:0", "rk4:-1", "rk4:inf", "rk4:fast"] {
+            let e = bad.parse::<Method>().unwrap_err();
+            assert!(e.contains(&format!("`{}`", &bad[4..])), "{bad}: {e}");
+        }
         let e = "rk45".parse::<Method>().unwrap_err();
         assert!(e.contains("`rk45`") && e.contains("bs23"), "{e}");
         assert_eq!("equilibrium".parse::<Start>(), Ok(Start::Equilibrium));

@@ -57,8 +57,10 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressStyle};
 use rayon::prelude::*;
 use trackgen::mobility::{EventSettings, Footprint, Published};
+use trackgen::scenario::Method;
 use trackgen::vehicle::Vehicle;
 
+use crate::cli::{named, tolerance};
 use crate::offered::Offered;
 use files::write_all;
 use tasks::{EVENTS, Row, event_name, tasks};
@@ -85,6 +87,16 @@ pub struct MobilityArgs {
     /// One parameter per event at loose tolerances: a smoke test.
     #[arg(long)]
     pub quick: bool,
+    /// Every run's integrator, as `run --integrator` takes it: `auto`
+    /// (the default), `bs23`, `dopri5` or `ros34pw2`. With `--tolerance`,
+    /// how far an answer moves with the integration is measured.
+    #[arg(long, default_value = "auto", value_name = "METHOD", value_parser = named(&Method::NAMED))]
+    pub integrator: Method,
+    /// Every run's integrator tolerance, relative and absolute, from
+    /// 1e-12 to 0.1, as `run --tolerance` takes it (default: each
+    /// method's own).
+    #[arg(long, value_name = "TOL", value_parser = tolerance)]
+    pub tolerance: Option<f64>,
     /// Run only slice K of N (1 ≤ K ≤ N): the tasks whose index i has
     /// i mod N = K − 1; writes `slice-K-of-N.jsonl` in `--out`.
     #[arg(long, value_name = "K/N", value_parser = parse_slice, requires = "out")]
@@ -129,6 +141,8 @@ fn run<V: Vehicle>(
     published: &[Published],
 ) -> ExitCode {
     let mut settings = EventSettings::new(powertrain);
+    settings.scenario.method = args.integrator;
+    settings.scenario.tolerance = args.tolerance;
     if args.quick {
         settings.speed_tolerance = 1.0;
         settings.length_tolerance = 0.1;

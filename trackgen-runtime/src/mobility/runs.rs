@@ -5,12 +5,11 @@ use nalgebra::Vector2;
 
 use super::EventError;
 use super::search::{Search, Trial, interpolate, scan_then_bisect};
-use crate::integrate::Integrator;
-use crate::simulate::{
-    Output, RideFigures, RideSink, RunError, RunReport, Sink, SinkError, simulate_into,
-};
+use crate::scenario::Scenario;
+use crate::simulate::{RideFigures, RideSink, RunError, RunReport, Sink, SinkError};
 use crate::system::Simulated;
 use crate::terrain::Terrain;
+use crate::terrain::course::CourseSpec;
 use crate::terrain::profile::{Course, Obstacle, Profile, ProfileError};
 use crate::vehicle::{Powertrain, Vehicle, VehicleConfig, VehicleDynamics, build};
 
@@ -25,8 +24,11 @@ pub struct EventSettings {
     /// controller's torque, so the vehicle's power sets the speeds it
     /// reaches.
     pub powertrain: Powertrain,
-    /// The integrator of every run.
-    pub integrator: Integrator,
+    /// The run every trial is made from: its integrator (method and
+    /// tolerance) is every trial's; each event lays its own course and
+    /// sets its own drive, duration and rows, and drives through
+    /// [`powertrain`](Self::powertrain) where it asks for the engine.
+    pub scenario: Scenario,
     /// The speed of a crawl, m/s: steps, gaps, ditches, barriers and
     /// grades are driven at it (the controller asks for it, the engine
     /// gives what it can).
@@ -70,7 +72,10 @@ impl EventSettings {
     pub fn new(powertrain: Powertrain) -> EventSettings {
         EventSettings {
             powertrain,
-            integrator: Integrator::DEFAULT,
+            scenario: Scenario {
+                engine: true,
+                ..Scenario::default()
+            },
             crawl: 1.0,
             acceleration: 1.0,
             ride_distance: 100.0,
@@ -111,6 +116,17 @@ impl EventSettings {
         self.powertrain
             .check()
             .map_err(|source| EventError::Powertrain { event, source })
+    }
+
+    /// A trial's run: the settings' [`scenario`](Self::scenario) on the
+    /// course `terrain`, for `duration` s with rows every `interval` s.
+    pub fn trial(&self, terrain: Terrain, duration: f64, interval: f64) -> Scenario {
+        Scenario {
+            course: CourseSpec::Laid(terrain),
+            duration,
+            output_every: interval,
+            ..self.scenario.clone()
+        }
     }
 
     /// The fastest the powertrain drives the sprocket, converted to the
@@ -189,33 +205,24 @@ pub(super) fn drive<V: Vehicle>(
     sink: &mut dyn Sink,
     what: (&'static str, f64, &'static str),
 ) -> Result<RunReport, EventError> {
-    let mut config = V::declared_config(terrain, V::speed_drive(target));
-    config.powertrain = Some(settings.powertrain.clone());
-    run_config::<V>(settings, config, duration, interval, sink, what)
+    let scenario = settings.trial(terrain.clone(), duration, interval);
+    let powertrain = Some(settings.powertrain.clone()).filter(|_| scenario.engine);
+    let config = scenario.config_with::<V>(terrain, V::speed_drive(target), powertrain);
+    run_config::<V>(&scenario, config, sink, what)
 }
 
-/// A run of `V` built from `config` with the settings' integrator, for
-/// `duration` s, rows every `interval` s into `sink`; a failure names
-/// `(event, parameter, unit)`.
+/// A run of `V` built from `config` through `scenario`'s time, integrator
+/// and rows into `sink`; a failure names `(event, parameter, unit)`.
 pub(super) fn run_config<V: Vehicle>(
-    settings: &EventSettings,
+    scenario: &Scenario,
     config: VehicleConfig,
-    duration: f64,
-    interval: f64,
     sink: &mut dyn Sink,
     (event, parameter, unit): (&'static str, f64, &'static str),
 ) -> Result<RunReport, EventError> {
     let mut system = build::<V>(config).map_err(|source| EventError::Build { event, source })?;
-    simulate_into(
-        &mut system,
-        settings.integrator,
-        0.0,
-        duration,
-        Output::Every(interval),
-        sink,
-        &mut |_| {},
-    )
-    .map_err(|failure| run_error(event, parameter, unit, failure.error))
+    scenario
+        .simulate_into(&mut system, sink, &mut |_| {})
+        .map_err(|failure| run_error(event, parameter, unit, failure.error))
 }
 
 /// The ride of a run over a stretch of ground.

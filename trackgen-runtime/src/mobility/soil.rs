@@ -13,6 +13,7 @@
 
 use super::runs::run_config;
 use super::{EventError, EventSettings};
+use crate::scenario::{Scenario, Soil};
 use crate::simulate::{Sink, SinkError};
 use crate::terrain::Terrain;
 use crate::terrain::soil::SoilPreset;
@@ -70,14 +71,17 @@ pub fn drawbar_at<V: Vehicle>(
             value: pull,
         });
     }
-    let mut config = V::declared_config(
-        Terrain::Flat { height: 0.0 },
-        V::speed_drive(|t| TRACK_SPEED * t.clamp(0.0, 1.0)),
-    );
-    config.soil = Some(soil.soil());
+    let terrain = Terrain::Flat { height: 0.0 };
+    let scenario = Scenario {
+        soil: Soil::Soft(soil),
+        engine: false,
+        ..settings.trial(terrain.clone(), HOLD, 0.01)
+    };
+    let drive = V::speed_drive(|t| TRACK_SPEED * t.clamp(0.0, 1.0));
+    let mut config = scenario.config_with::<V>(terrain, drive, None);
     config.drawbar_pull = pull;
     let mut means = Means::new(HOLD - STEADY);
-    run_config::<V>(settings, config, HOLD, 0.01, &mut means, (EVENT, pull, "N"))?;
+    run_config::<V>(&scenario, config, &mut means, (EVENT, pull, "N"))?;
     let [speed, track_speed, power, weight] = means.means();
     Ok(DrawbarPoint {
         pull,

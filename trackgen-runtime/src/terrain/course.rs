@@ -82,6 +82,9 @@ pub enum CourseSpec {
         /// Where it starts, m.
         at: f64,
     },
+    /// A ground laid out in code (a profile of obstacles and grades, say,
+    /// as the mobility events lay theirs): taken as it is.
+    Laid(Terrain),
 }
 
 impl CourseSpec {
@@ -120,6 +123,7 @@ impl CourseSpec {
                     .flat(OBSTACLE_RUN_OUT)?;
                 Terrain::profile(course.profile()?)
             }
+            CourseSpec::Laid(terrain) => terrain.clone(),
         })
     }
 
@@ -154,6 +158,7 @@ impl CourseSpec {
             CourseSpec::Obstacle { obstacle, at } => {
                 format!("{} at x = {at:.1} m", describe_obstacle(obstacle))
             }
+            CourseSpec::Laid(_) => "a ground laid out in code".to_string(),
         }
     }
 
@@ -166,6 +171,7 @@ impl CourseSpec {
             CourseSpec::File(_) => "over a surveyed profile".to_string(),
             CourseSpec::Rough { .. } => "over rough ground".to_string(),
             CourseSpec::Obstacle { obstacle, .. } => format!("at {}", describe_obstacle(obstacle)),
+            CourseSpec::Laid(_) => "over its own ground".to_string(),
         }
     }
 
@@ -175,7 +181,10 @@ impl CourseSpec {
     pub fn focus(&self) -> f64 {
         match self {
             CourseSpec::Bump { at, .. } | CourseSpec::Obstacle { at, .. } => at - 1.0,
-            CourseSpec::Flat | CourseSpec::File(_) | CourseSpec::Rough { .. } => 0.0,
+            CourseSpec::Flat
+            | CourseSpec::File(_)
+            | CourseSpec::Rough { .. }
+            | CourseSpec::Laid(_) => 0.0,
         }
     }
 }
