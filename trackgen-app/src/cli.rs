@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use clap::builder::{PossibleValuesParser, TypedValueParser};
-use trackgen::scenario::{Method, Scenario, Soil, Start};
+use trackgen::scenario::{Method, Range, Scenario, Soil, Start};
 use trackgen::terrain::course::{self, CourseSpec, Roughness};
 use trackgen::terrain::profile::Obstacle;
 
@@ -188,15 +188,17 @@ fn soil(s: &str) -> Result<Soil, String> {
     s.parse()
 }
 
-/// A finite number in `[lo, hi]`, or why not (`what` names the range).
-fn within(s: &str, lo: f64, hi: f64, what: &str) -> Result<f64, String> {
+/// A finite number in `range` (the scenario's: [`Scenario::check`] holds
+/// a run built in code to the same), or why not, `noun` naming it.
+fn within(s: &str, range: Range, noun: &str) -> Result<f64, String> {
+    let what = format!("{noun} is {}", range.what);
     let v: f64 = s
         .trim()
         .parse()
         .map_err(|_| format!("`{s}` is not a number; {what}"))?;
     if !v.is_finite() {
         Err(format!("{v} is not a finite number; {what}"))
-    } else if (lo..=hi).contains(&v) {
+    } else if range.contains(v) {
         Ok(v)
     } else {
         Err(format!("{v} is out of range; {what}"))
@@ -204,46 +206,35 @@ fn within(s: &str, lo: f64, hi: f64, what: &str) -> Result<f64, String> {
 }
 
 fn speed(s: &str) -> Result<f64, String> {
-    within(s, -20.0, 20.0, "a speed is from -20 to 20 m/s")
+    within(s, Scenario::SPEED_RANGE, "a speed")
 }
 
 fn bump_height(s: &str) -> Result<f64, String> {
-    within(
-        s,
-        -0.5,
-        0.5,
-        "a bump height is from -0.5 to 0.5 m (negative: a dip)",
-    )
+    within(s, Scenario::BUMP_HEIGHT_RANGE, "a bump height")
 }
 
 fn position(s: &str) -> Result<f64, String> {
-    within(s, -1e4, 1e4, "a position is from -10000 to 10000 m")
+    within(s, Scenario::POSITION_RANGE, "a position")
 }
 
 fn duration(s: &str) -> Result<f64, String> {
-    let what = "a duration is more than 0 s and at most 1e6 s";
-    let v = within(s, 0.0, 1e6, what)?;
-    if v > 0.0 {
-        Ok(v)
-    } else {
-        Err(format!("0 s is no run; {what}"))
-    }
+    within(s, Scenario::DURATION_RANGE, "a duration")
 }
 
 fn course_length(s: &str) -> Result<f64, String> {
-    within(s, 10.0, 1e5, "a course length is from 10 to 100000 m")
+    within(s, Scenario::COURSE_LENGTH_RANGE, "a course length")
 }
 
 fn output_interval(s: &str) -> Result<f64, String> {
-    within(s, 1e-4, 1.0, "an output interval is from 1e-4 to 1 s")
+    within(s, Scenario::OUTPUT_EVERY_RANGE, "an output interval")
 }
 
 fn non_negative_seconds(s: &str) -> Result<f64, String> {
-    within(s, 0.0, 1e6, "a time is from 0 to 1e6 s")
+    within(s, Scenario::TIME_RANGE, "a time")
 }
 
 pub(crate) fn tolerance(s: &str) -> Result<f64, String> {
-    within(s, 1e-12, 0.1, "a tolerance is from 1e-12 to 0.1")
+    within(s, Scenario::TOLERANCE_RANGE, "a tolerance")
 }
 
 pub(crate) fn folder(s: &str) -> Result<PathBuf, String> {

@@ -107,6 +107,7 @@ fn announce(scenario: &Scenario) {
 /// and reports.
 fn drive<V: Vehicle>(entry: &Offered, args: &RunArgs) -> Result<(), Box<dyn Error>> {
     let scenario = args.scenario();
+    scenario.check()?;
     let engine = if scenario.engine {
         Some(entry.engine()?)
     } else {

@@ -126,7 +126,10 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
         let stdout = String::from_utf8_lossy(&out.stdout).to_string();
         let line = stdout.lines().find(|l| l.starts_with('{')).unwrap();
         let result: serde_json::Value = serde_json::from_str(line).unwrap();
-        (result["value"].as_f64().unwrap(), result["relation"].clone())
+        (
+            result["value"].as_f64().unwrap(),
+            result["relation"].clone(),
+        )
     };
     let (default, relation) = step(&[]);
     assert_eq!(relation, "=");

@@ -16,7 +16,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
-use trackgen::scenario::{Method, Scenario, Soil};
+use trackgen::scenario::{Method, Range, Scenario, Soil};
 use trackgen::simulate::{DISSIPATED, ENERGY, EnergyBalance, MOTOR_WORK, March};
 use trackgen::system::Simulated;
 use trackgen::terrain::course::{self, CourseSpec};
@@ -105,8 +105,6 @@ pub struct Instance<V: Vehicle> {
     engine: Option<Powertrain>,
 }
 
-/// A course longer than this is refused, m.
-const MAX_COURSE_LENGTH: f64 = 1e5;
 /// Without a stop time the run ends this long after its start, s.
 const OPEN_END: f64 = 1e6;
 
@@ -187,9 +185,9 @@ impl<V: Vehicle> Instance<V> {
             return Err(self.refuse("stopTime", stop, "a finite time after the start"));
         }
         if let Some(tol) = tolerance
-            && !(tol > 0.0 && tol <= 0.1)
+            && !Scenario::TOLERANCE_RANGE.contains(tol)
         {
-            return Err(self.refuse("tolerance", tol, "more than 0 and at most 0.1"));
+            return Err(self.refuse("tolerance", tol, Scenario::TOLERANCE_RANGE.what));
         }
         self.start_time = start;
         self.stop_time = stop;
@@ -497,7 +495,7 @@ impl<V: Vehicle> Instance<V> {
     /// communication points. With every parameter at its start value,
     /// [`Scenario::default`] (a test holds them to it).
     pub fn scenario(&self) -> Result<Scenario, FmuError> {
-        Ok(Scenario {
+        let scenario = Scenario {
             course: self.course()?,
             soil: self.soil()?,
             speed: self.number(Setting::Speed),
@@ -507,7 +505,15 @@ impl<V: Vehicle> Instance<V> {
             method: Method::Auto,
             tolerance: self.tolerance(),
             ..Scenario::default()
-        })
+        };
+        // Each parameter was checked when set; the whole is held to the
+        // scenario's own ranges as well.
+        scenario.check().map_err(|e| FmuError::Parameter {
+            name: e.setting.to_string(),
+            value: e.value.to_string(),
+            why: e.range.to_string(),
+        })?;
+        Ok(scenario)
     }
 
     /// The soil the `soil` parameter names.
@@ -546,7 +552,7 @@ impl<V: Vehicle> Instance<V> {
                 } else {
                     let duration = self.stop_time.map_or(60.0, |s| s - self.start_time);
                     course::rough_length(self.number(Setting::Speed), duration)
-                        .min(MAX_COURSE_LENGTH)
+                        .min(Scenario::COURSE_LENGTH_RANGE.hi)
                 };
                 CourseSpec::Rough {
                     roughness,
@@ -707,31 +713,35 @@ fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
             })
         }
     };
+    // The scenario's own ranges ([`Scenario::check`]), as the main job's
+    // options are held to them.
+    let scenario = |range: Range, zero: Option<&str>| {
+        if zero.is_some() && value == 0.0 || range.contains(value) {
+            Ok(())
+        } else {
+            Err(FmuError::Parameter {
+                name: v.name.clone(),
+                value: value.to_string(),
+                why: match zero {
+                    Some(means) => format!("0 ({means}) or {}", range.what),
+                    None => range.what.to_string(),
+                },
+            })
+        }
+    };
     match v.role {
-        Role::Setting(Setting::BumpHeight) => range(-0.5, 0.5, "from -0.5 to 0.5 m"),
+        Role::Setting(Setting::BumpHeight) => scenario(Scenario::BUMP_HEIGHT_RANGE, None),
         Role::Setting(Setting::BumpAt | Setting::ObstacleAt) => {
-            range(-1e4, 1e4, "from -10000 to 10000 m")
+            scenario(Scenario::POSITION_RANGE, None)
         }
         Role::Setting(Setting::CourseLength) => {
-            if value == 0.0 {
-                Ok(())
-            } else {
-                range(
-                    10.0,
-                    MAX_COURSE_LENGTH,
-                    "0 (what the run covers) or from 10 to 100000 m",
-                )
-            }
+            scenario(Scenario::COURSE_LENGTH_RANGE, Some("what the run covers"))
         }
         Role::Setting(Setting::Tolerance) => {
-            if value == 0.0 {
-                Ok(())
-            } else {
-                range(1e-12, 0.1, "0 (the defaults) or from 1e-12 to 0.1")
-            }
+            scenario(Scenario::TOLERANCE_RANGE, Some("the defaults"))
         }
-        Role::Setting(Setting::Speed) => range(-20.0, 20.0, "from -20 to 20 m/s"),
-        Role::Setting(Setting::Settle | Setting::Ramp) => range(0.0, 1e6, "from 0 to 1e6 s"),
+        Role::Setting(Setting::Speed) => scenario(Scenario::SPEED_RANGE, None),
+        Role::Setting(Setting::Settle | Setting::Ramp) => scenario(Scenario::TIME_RANGE, None),
         Role::ArmStiffness(_) => {
             if value > 0.0 && value.is_finite() {
                 Ok(())

@@ -73,6 +73,56 @@ impl Scenario {
     /// The main job's simulated time, s.
     pub const DURATION: f64 = 8.0;
 
+    /// The target speed's range, m/s (negative: reverse).
+    pub const SPEED_RANGE: Range = Range::closed(-20.0, 20.0, "from -20 to 20 m/s");
+    /// A bump's height's range, m (negative: a dip).
+    pub const BUMP_HEIGHT_RANGE: Range =
+        Range::closed(-0.5, 0.5, "from -0.5 to 0.5 m (negative: a dip)");
+    /// The range of where a bump or an obstacle is, m.
+    pub const POSITION_RANGE: Range = Range::closed(-1e4, 1e4, "from -10000 to 10000 m");
+    /// A random course's rough length's range, m.
+    pub const COURSE_LENGTH_RANGE: Range = Range::closed(10.0, 1e5, "from 10 to 100000 m");
+    /// The settling time's and the ramp's range, s.
+    pub const TIME_RANGE: Range = Range::closed(0.0, 1e6, "from 0 to 1e6 s");
+    /// The simulated time's range, s.
+    pub const DURATION_RANGE: Range =
+        Range::open_below(0.0, 1e6, "more than 0 s and at most 1e6 s");
+    /// The output interval's range, s.
+    pub const OUTPUT_EVERY_RANGE: Range = Range::closed(1e-4, 1.0, "from 1e-4 to 1 s");
+    /// A given tolerance's range.
+    pub const TOLERANCE_RANGE: Range = Range::closed(1e-12, 0.1, "from 1e-12 to 0.1");
+
+    /// Every figure of the scenario in its range (the ranges above, which
+    /// the main job's options and the FMU's parameters are held to as
+    /// well): the first that is not, named.
+    pub fn check(&self) -> Result<(), ScenarioError> {
+        Self::SPEED_RANGE.check("speed", self.speed)?;
+        Self::TIME_RANGE.check("settle", self.settle)?;
+        Self::TIME_RANGE.check("ramp", self.ramp)?;
+        Self::OUTPUT_EVERY_RANGE.check("output_every", self.output_every)?;
+        Self::DURATION_RANGE.check("duration", self.duration)?;
+        if let Some(tolerance) = self.tolerance {
+            Self::TOLERANCE_RANGE.check("tolerance", tolerance)?;
+        }
+        if let Method::Rk4 { step } = self.method {
+            Range::open_below(0.0, f64::MAX, "more than 0 s, finite").check("rk4 step", step)?;
+        }
+        match self.course {
+            CourseSpec::Bump { at, height } => {
+                Self::POSITION_RANGE.check("bump at", at)?;
+                Self::BUMP_HEIGHT_RANGE.check("bump height", height)?;
+            }
+            CourseSpec::Obstacle { at, .. } => {
+                Self::POSITION_RANGE.check("obstacle at", at)?;
+            }
+            CourseSpec::Rough { length, .. } => {
+                Self::COURSE_LENGTH_RANGE.check("course length", length)?;
+            }
+            CourseSpec::Flat | CourseSpec::File(_) | CourseSpec::Laid(_) => {}
+        }
+        Ok(())
+    }
+
     /// The target speed (m/s) against time (s): 0 while settling, then a
     /// linear ramp to [`speed`](Self::speed) over [`ramp`](Self::ramp)
     /// seconds (a step at the end of settling if 0).
@@ -221,6 +271,77 @@ impl Default for Scenario {
             start: Start::Assembled,
         }
     }
+}
+
+/// A figure's allowed values: finite, from `lo` (or above it) to `hi`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    /// The least value.
+    pub lo: f64,
+    /// Whether `lo` itself is refused.
+    pub lo_excluded: bool,
+    /// The greatest value.
+    pub hi: f64,
+    /// The range in words, for an error: `from -20 to 20 m/s`.
+    pub what: &'static str,
+}
+
+impl Range {
+    /// From `lo` to `hi`, both allowed.
+    pub const fn closed(lo: f64, hi: f64, what: &'static str) -> Range {
+        Range {
+            lo,
+            lo_excluded: false,
+            hi,
+            what,
+        }
+    }
+
+    /// Above `lo`, to `hi`.
+    pub const fn open_below(lo: f64, hi: f64, what: &'static str) -> Range {
+        Range {
+            lo,
+            lo_excluded: true,
+            hi,
+            what,
+        }
+    }
+
+    /// Whether `value` is in it (a NaN or an infinity never is).
+    pub fn contains(&self, value: f64) -> bool {
+        value.is_finite()
+            && value <= self.hi
+            && if self.lo_excluded {
+                value > self.lo
+            } else {
+                value >= self.lo
+            }
+    }
+
+    /// `value` if it is in the range, else the error naming `setting`.
+    pub fn check(&self, setting: &'static str, value: f64) -> Result<f64, ScenarioError> {
+        if self.contains(value) {
+            Ok(value)
+        } else {
+            Err(ScenarioError {
+                setting,
+                value,
+                range: self.what,
+            })
+        }
+    }
+}
+
+/// A scenario's figure out of its range.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+#[error("the scenario's {setting} is {value}, out of range: {range}")]
+pub struct ScenarioError {
+    /// Which figure.
+    pub setting: &'static str,
+    /// Its value.
+    pub value: f64,
+    /// Its range in words.
+    pub range: &'static str,
 }
 
 /// What the ground is made of.
@@ -487,6 +608,53 @@ mod tests {
         ] {
             let e = bad.parse::<CourseSpec>().unwrap_err();
             assert!(e.contains(token), "{bad}: {e}");
+        }
+    }
+
+    /// The default is in range; each figure out of its range (beyond an
+    /// end, NaN, infinite, the duration 0) is refused naming it, and the
+    /// ends themselves are allowed.
+    #[test]
+    fn a_scenario_out_of_range_is_refused_naming_the_figure() {
+        assert_eq!(Scenario::default().check(), Ok(()));
+        let with = |change: fn(&mut Scenario)| {
+            let mut s = Scenario::default();
+            change(&mut s);
+            s.check()
+        };
+        assert_eq!(with(|s| s.speed = -20.0), Ok(()));
+        assert_eq!(with(|s| s.tolerance = Some(1e-12)), Ok(()));
+        assert_eq!(with(|s| s.duration = 1e6), Ok(()));
+        type Change = fn(&mut Scenario);
+        let refused: [(Change, &str); 10] = [
+            (|s| s.speed = 20.5, "speed"),
+            (|s| s.speed = f64::NAN, "speed"),
+            (|s| s.settle = -1.0, "settle"),
+            (|s| s.ramp = f64::INFINITY, "ramp"),
+            (|s| s.output_every = 2.0, "output_every"),
+            (|s| s.duration = 0.0, "duration"),
+            (|s| s.tolerance = Some(0.5), "tolerance"),
+            (|s| s.method = Method::Rk4 { step: 0.0 }, "rk4 step"),
+            (
+                |s| {
+                    s.course = CourseSpec::Bump {
+                        at: 0.0,
+                        height: 0.6,
+                    }
+                },
+                "bump height",
+            ),
+            (
+                |s| {
+                    s.course = "half-round:0.2@20000".parse().unwrap();
+                },
+                "obstacle at",
+            ),
+        ];
+        for (change, setting) in refused {
+            let e = with(change).unwrap_err();
+            assert_eq!(e.setting, setting, "{e}");
+            assert!(e.to_string().contains(setting), "{e}");
         }
     }
 
