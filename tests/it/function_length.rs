@@ -1,8 +1,9 @@
 //! No function in the crates' sources (tests aside) is over
-//! [`LONGEST`] lines: a longer one has more than one job. Code inside
-//! `quote!` is the generated code's, not a function of ours, and `syn`
-//! reads it as a macro's tokens, so it is not counted. Modules under
-//! `#[cfg(test)]` and `#[test]` functions are tests.
+//! [`LONGEST`] lines, and no file over [`LONGEST_FILE`]: a longer one has
+//! more than one job. Code inside `quote!` is the generated code's, not a
+//! function of ours, and `syn` reads it as a macro's tokens, so it is not
+//! counted. Modules under `#[cfg(test)]` and `#[test]` functions are
+//! tests, and so are the files such modules declare.
 
 use std::path::{Path, PathBuf};
 
@@ -11,6 +12,9 @@ use syn::visit::Visit;
 /// The most lines a function may span, its signature and doc comments
 /// included.
 const LONGEST: usize = 150;
+
+/// The most lines a source file may have (its tests' files aside).
+const LONGEST_FILE: usize = 800;
 
 /// Every crate's root file, relative to the workspace.
 const ROOTS: [&str; 9] = [
@@ -88,14 +92,28 @@ impl<'ast> Visit<'ast> for Walk {
     }
 }
 
-/// The long functions of the crate whose root is `root`, and how many
-/// files were read.
-fn long_functions(root: &Path) -> (Vec<String>, usize) {
+/// What a crate's walk found: its long functions, its long files, and
+/// how many files it read.
+#[derive(Default)]
+struct Survey {
+    long: Vec<String>,
+    long_files: Vec<String>,
+    files: usize,
+}
+
+/// The walk of the crate whose root is `root`.
+fn survey(root: &Path) -> Survey {
     let mut pending = vec![(root.to_path_buf(), true)];
-    let (mut long, mut files) = (Vec::new(), 0);
+    let mut found = Survey::default();
     while let Some((file, owns_folder)) = pending.pop() {
         let text =
             std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+        let lines = text.lines().count();
+        if lines > LONGEST_FILE {
+            found
+                .long_files
+                .push(format!("{}: {lines} lines", file.display()));
+        }
         let ast = syn::parse_file(&text).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
         let mut walk = Walk {
             file: file.clone(),
@@ -103,8 +121,8 @@ fn long_functions(root: &Path) -> (Vec<String>, usize) {
             children: Vec::new(),
         };
         walk.visit_file(&ast);
-        files += 1;
-        long.append(&mut walk.long);
+        found.files += 1;
+        found.long.append(&mut walk.long);
         // `lib.rs`, `main.rs` and `mod.rs` own their folder; `a.rs` owns
         // `a/`.
         let folder = if owns_folder {
@@ -121,28 +139,42 @@ fn long_functions(root: &Path) -> (Vec<String>, usize) {
             }
         }
     }
-    (long, files)
+    found
+}
+
+/// Every crate's walk, the paths relative to the workspace.
+fn survey_all() -> Survey {
+    let base = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let relative = |l: String| l.replacen(&format!("{}/", base.display()), "", 1);
+    let mut all = Survey::default();
+    for root in ROOTS {
+        let found = survey(&base.join(root));
+        all.long.extend(found.long.into_iter().map(relative));
+        all.long_files
+            .extend(found.long_files.into_iter().map(relative));
+        all.files += found.files;
+    }
+    // The walk follows every module: the runtime alone has some 90 files.
+    assert!(all.files >= 150, "only {} files read", all.files);
+    all
 }
 
 #[test]
 fn no_function_of_ours_is_over_150_lines() {
-    let base = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut long = Vec::new();
-    let mut files = 0;
-    for root in ROOTS {
-        let (found, read) = long_functions(&base.join(root));
-        long.extend(
-            found
-                .into_iter()
-                .map(|l| l.replacen(&format!("{}/", base.display()), "", 1)),
-        );
-        files += read;
-    }
-    // The walk follows every module: the runtime alone has some 90 files.
-    assert!(files >= 150, "only {files} files read");
+    let long = survey_all().long;
     assert!(
         long.is_empty(),
         "over {LONGEST} lines:\n{}",
+        long.join("\n")
+    );
+}
+
+#[test]
+fn no_file_of_ours_is_over_800_lines() {
+    let long = survey_all().long_files;
+    assert!(
+        long.is_empty(),
+        "over {LONGEST_FILE} lines:\n{}",
         long.join("\n")
     );
 }
