@@ -231,6 +231,11 @@ fn bad_input_is_refused_before_any_run() {
     nan_crawl.crawl = f64::NAN;
     let (what, _) = setting(obstacle::step::<M113>(&nan_crawl, &footprint));
     assert_eq!(what, "the crawl speed (m/s)");
+    // The scenario every trial is made of is held to its ranges.
+    let mut loose = settings.clone();
+    loose.scenario.tolerance = Some(0.5);
+    let (what, value) = setting(obstacle::step::<M113>(&loose, &footprint));
+    assert_eq!((what, value), ("tolerance", 0.5));
     // A powertrain that gives no drive names its figure.
     let mut no_power = settings.clone();
     no_power.powertrain = trackgen::vehicle::Powertrain::Power {

@@ -90,7 +90,8 @@ impl EventSettings {
         }
     }
 
-    /// The settings checked: each figure finite and in its range.
+    /// The settings checked: each figure finite and in its range, the
+    /// scenario's among them ([`Scenario::check`]).
     pub(super) fn check(&self, event: &'static str) -> Result<(), EventError> {
         let positive: [(&'static str, f64); 9] = [
             ("the crawl speed (m/s)", self.crawl),
@@ -113,6 +114,12 @@ impl EventSettings {
                 });
             }
         }
+        self.scenario.check().map_err(|e| EventError::Setting {
+            event,
+            what: e.setting,
+            range: e.range,
+            value: e.value,
+        })?;
         self.powertrain
             .check()
             .map_err(|source| EventError::Powertrain { event, source })
