@@ -702,20 +702,10 @@ fn advance<V: Vehicle>(
 
 /// A number's range, by its variable.
 fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
-    let range = |lo: f64, hi: f64, what: &str| {
-        if value.is_finite() && (lo..=hi).contains(&value) {
-            Ok(())
-        } else {
-            Err(FmuError::Parameter {
-                name: v.name.clone(),
-                value: value.to_string(),
-                why: what.to_string(),
-            })
-        }
-    };
-    // The scenario's own ranges ([`Scenario::check`]), as the main job's
-    // options are held to them.
-    let scenario = |range: Range, zero: Option<&str>| {
+    // The scenario's figures by the scenario's own ranges
+    // ([`Scenario::check`]), as the main job's options are held to them;
+    // `zero` is what 0 means where it is allowed besides.
+    let within = |range: Range, zero: Option<&str>| {
         if zero.is_some() && value == 0.0 || range.contains(value) {
             Ok(())
         } else {
@@ -729,29 +719,29 @@ fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
             })
         }
     };
+    let finite = Range::closed(f64::MIN, f64::MAX, "a finite number");
     match v.role {
-        Role::Setting(Setting::BumpHeight) => scenario(Scenario::BUMP_HEIGHT_RANGE, None),
+        Role::Setting(Setting::BumpHeight) => within(Scenario::BUMP_HEIGHT_RANGE, None),
         Role::Setting(Setting::BumpAt | Setting::ObstacleAt) => {
-            scenario(Scenario::POSITION_RANGE, None)
+            within(Scenario::POSITION_RANGE, None)
         }
         Role::Setting(Setting::CourseLength) => {
-            scenario(Scenario::COURSE_LENGTH_RANGE, Some("what the run covers"))
+            within(Scenario::COURSE_LENGTH_RANGE, Some("what the run covers"))
         }
         Role::Setting(Setting::Tolerance) => {
-            scenario(Scenario::TOLERANCE_RANGE, Some("the defaults"))
+            within(Scenario::TOLERANCE_RANGE, Some("the defaults"))
         }
-        Role::Setting(Setting::Speed) => scenario(Scenario::SPEED_RANGE, None),
-        Role::Setting(Setting::Settle | Setting::Ramp) => scenario(Scenario::TIME_RANGE, None),
-        Role::ArmStiffness(_) => {
-            if value > 0.0 && value.is_finite() {
-                Ok(())
-            } else {
-                range(f64::NAN, f64::NAN, "more than 0 N m/rad, finite")
-            }
-        }
-        Role::ArmDamping(_) => range(0.0, f64::MAX, "0 or more N m s/rad, finite"),
-        Role::Input(_) => range(f64::MIN, f64::MAX, "a finite number"),
-        _ => range(f64::MIN, f64::MAX, "a finite number"),
+        Role::Setting(Setting::Speed) => within(Scenario::SPEED_RANGE, None),
+        Role::Setting(Setting::Settle | Setting::Ramp) => within(Scenario::TIME_RANGE, None),
+        Role::ArmStiffness(_) => within(
+            Range::open_below(0.0, f64::MAX, "more than 0 N m/rad, finite"),
+            None,
+        ),
+        Role::ArmDamping(_) => within(
+            Range::closed(0.0, f64::MAX, "0 or more N m s/rad, finite"),
+            None,
+        ),
+        _ => within(finite, None),
     }
 }
 

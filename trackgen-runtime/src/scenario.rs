@@ -91,6 +91,8 @@ impl Scenario {
     pub const OUTPUT_EVERY_RANGE: Range = Range::closed(1e-4, 1.0, "from 1e-4 to 1 s");
     /// A given tolerance's range.
     pub const TOLERANCE_RANGE: Range = Range::closed(1e-12, 0.1, "from 1e-12 to 0.1");
+    /// [`Method::Rk4`]'s step's range, s.
+    pub const RK4_STEP_RANGE: Range = Range::open_below(0.0, f64::MAX, "more than 0 s, finite");
 
     /// Every figure of the scenario in its range (the ranges above, which
     /// the main job's options and the FMU's parameters are held to as
@@ -105,7 +107,7 @@ impl Scenario {
             Self::TOLERANCE_RANGE.check("tolerance", tolerance)?;
         }
         if let Method::Rk4 { step } = self.method {
-            Range::open_below(0.0, f64::MAX, "more than 0 s, finite").check("rk4 step", step)?;
+            Self::RK4_STEP_RANGE.check("rk4 step", step)?;
         }
         match self.course {
             CourseSpec::Bump { at, height } => {
@@ -413,18 +415,21 @@ impl Method {
 impl FromStr for Method {
     type Err = String;
 
-    /// `auto`, `bs23`, `dopri5`, `ros34pw2`, or `rk4:STEP` (s, finite and
-    /// more than 0).
+    /// `auto`, `bs23`, `dopri5`, `ros34pw2`, or `rk4:STEP` (s, in
+    /// [`Scenario::RK4_STEP_RANGE`]).
     fn from_str(s: &str) -> Result<Self, String> {
         if let Some(step) = s.strip_prefix("rk4:") {
             return step
                 .trim()
                 .parse::<f64>()
                 .ok()
-                .filter(|h| h.is_finite() && *h > 0.0)
+                .filter(|h| Scenario::RK4_STEP_RANGE.contains(*h))
                 .map(|step| Method::Rk4 { step })
                 .ok_or_else(|| {
-                    format!("`{step}` in `{s}` is no step (s, finite and more than 0)")
+                    format!(
+                        "`{step}` in `{s}` is no step (s, {})",
+                        Scenario::RK4_STEP_RANGE.what
+                    )
                 });
         }
         named(&Method::NAMED, s, "integrator")
