@@ -5,9 +5,13 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-# The binary and the FMU's library, optimised.
-cargo build --release --quiet
-target=${CARGO_TARGET_DIR:-target}/release
+# The binary and the FMU's library, optimised. MULE_BUILT, if set, is the
+# folder where they were already built (CI builds them beside trackgen's
+# own, to share the dependencies' compiled code).
+if [ -z "${MULE_BUILT:-}" ]; then
+  cargo build --release --quiet
+fi
+target=${MULE_BUILT:-${CARGO_TARGET_DIR:-target}/release}
 mule=$target/mule
 
 # The main job over our own course, recording every 2 ms for the ride.
