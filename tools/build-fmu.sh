@@ -7,9 +7,9 @@
 # own). The guide's chapter "The vehicle as an FMU" says what they hold
 # and how to drive them.
 # TRACKGEN_FMU_PROFILE=dev builds with the test profile instead of release,
-# and with the tests' features (`--all-targets`: their dev-dependencies
-# take part in the feature resolution), so that after `cargo test` nothing
-# but the vehicle's library is compiled (CI's use).
+# and with the features `cargo test --workspace` resolves (every member's
+# dev-dependencies take part), so that after it only the vehicles'
+# libraries and the benches' dependencies are compiled (CI's use).
 set -euo pipefail
 if [ $# -ne 2 ] || { [ "$1" != m113 ] && [ "$1" != marder ]; }; then
     echo "usage: tools/build-fmu.sh m113|marder OUTDIR" >&2
@@ -19,8 +19,10 @@ vehicle=$1
 out=$2
 cd "$(dirname "$0")/.."
 profile=${TRACKGEN_FMU_PROFILE:-release}
-targets=()
-[ "$profile" = dev ] && targets=(--all-targets)
-cargo build --profile "$profile" --quiet "${targets[@]}" -p "trackgen-fmu-$vehicle" -p trackgen-cli
+if [ "$profile" = dev ]; then
+  cargo build --profile dev --quiet --workspace --lib --bins --tests --examples
+else
+  cargo build --profile "$profile" --quiet -p "trackgen-fmu-$vehicle" -p trackgen-cli
+fi
 dir=${CARGO_TARGET_DIR:-target}/$([ "$profile" = dev ] && echo debug || echo "$profile")
 "$dir/trackgen" fmu --vehicle "$vehicle" --library "$dir/libtrackgen_fmu_$vehicle.so" --out "$out"

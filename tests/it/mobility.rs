@@ -7,6 +7,14 @@
 //!   criterion passing everywhere is `Beyond` the range, failing
 //!   everywhere `Before` it; an error in a trial is the search's error,
 //!   never a limit.
+//! * A search confirmed at a tighter tolerance (`confirm`) against a
+//!   criterion whose crossing that tolerance moves: the bracket's ends
+//!   run again; where the crossing moved out of the bracket (either way,
+//!   out of the range, into it from beyond or before it, and for a
+//!   search run downwards) the bracket found holds the moved crossing and
+//!   is no wider than the tolerance, the first answer kept; where it did
+//!   not, the limit stands after two runs; a confirming trial's error is
+//!   the search's.
 //! * ITP interpolation (the ride's speed search) on figures with a known
 //!   crossing: the bracket holds it and is no wider than the tolerance;
 //!   on a smooth figure (a power law, as the absorbed power's rise with
@@ -23,12 +31,13 @@
 //!   gives the same figures bit for bit.
 //! * The soil event carries the weight and slips more under more load.
 //! * Bad input: a negative or NaN roughness, a negative height, a NaN
-//!   crawl speed, a speed above the settings' limit: each a
+//!   crawl speed, a speed above the settings' limit, a confirming
+//!   tolerance's factor not below 1: each a
 //!   `EventError::Setting` naming what is wrong, before any run.
 
 use std::sync::Arc;
 
-use trackgen::mobility::search::{Limit, Trial, bisect, interpolate};
+use trackgen::mobility::search::{Limit, Trial, bisect, confirm, interpolate};
 use trackgen::mobility::{EventError, EventSettings, Footprint, obstacle, ride, soil};
 use trackgen::scenario::Method;
 use trackgen::terrain::soil::SoilPreset;
@@ -108,6 +117,102 @@ fn the_search_brackets_a_known_crossing_in_bisection_s_runs() {
     });
     assert!(
         matches!(failed, Err(EventError::Setting { value, .. }) if value == 0.5),
+        "{failed:?}"
+    );
+}
+
+#[test]
+fn a_confirmed_search_finds_the_crossing_the_tighter_tolerance_moves() {
+    // (start, end, the first crossing, the confirming one); trials pass
+    // below the crossing (above it for the downward search).
+    for (start, end, first, moved) in [
+        (0.0, 1.0, 0.6, 0.5),
+        (0.0, 1.0, 0.6, 0.05),
+        (0.0, 1.0, 0.6, 0.7),
+        (0.0, 1.0, 0.6, 0.999),
+        // From beyond the range and from before it.
+        (0.0, 1.0, 2.0, 0.9),
+        (0.0, 1.0, -1.0, 0.3),
+        (10.0, 0.0, 3.3, 2.0),
+        (10.0, 0.0, 3.3, 6.0),
+    ] {
+        let tolerance = 0.01;
+        let at = move |crossing: f64| {
+            move |p: f64| {
+                let passed = if start < end {
+                    p < crossing
+                } else {
+                    p > crossing
+                };
+                Ok(Trial {
+                    parameter: p,
+                    figure: p,
+                    passed,
+                })
+            }
+        };
+        let search = bisect(start, end, tolerance, at(first)).unwrap();
+        let (coarse, runs) = (search.limit, search.runs());
+        let confirmed = confirm(search, (start, end), tolerance, 1e-4, at(moved)).unwrap();
+        let Limit::Found { passed, failed, .. } = confirmed.limit else {
+            panic!("{start}..{end}, {first} → {moved}: {:?}", confirmed.limit)
+        };
+        assert!((failed - passed).abs() <= tolerance, "{passed}..{failed}");
+        assert!(
+            (passed.min(failed)..=passed.max(failed)).contains(&moved),
+            "{moved} outside {passed}..{failed}"
+        );
+        let c = confirmed.confirmation.unwrap();
+        assert_eq!(
+            (c.tolerance, c.first_trial, c.moved_from),
+            (1e-4, runs, Some(coarse))
+        );
+        // Each confirming trial at the moved crossing's verdict.
+        for t in &confirmed.trials[runs..] {
+            assert_eq!(t.passed, at(moved)(t.parameter).unwrap().passed);
+        }
+        // At most the two ends, the doubling steps out of the bracket
+        // and bisection of the last of them.
+        let halvings = ((end - start).abs() / tolerance).log2().ceil() as usize;
+        assert!(
+            confirmed.runs() - runs <= 2 + 2 * halvings,
+            "{} runs",
+            confirmed.runs()
+        );
+    }
+    // A crossing the tighter tolerance leaves in the bracket: the limit
+    // stands after the bracket's two ends.
+    let search = bisect(0.0, 1.0, 0.01, criterion(0.6)).unwrap();
+    let (limit, runs) = (search.limit, search.runs());
+    let held = confirm(search, (0.0, 1.0), 0.01, 1e-4, criterion(0.6 + 1e-6)).unwrap();
+    assert_eq!((held.limit, held.runs()), (limit, runs + 2));
+    assert_eq!(held.confirmation.unwrap().moved_from, None);
+    // Beyond, or before, the range at both tolerances: one run more.
+    for crossing in [2.0, -1.0] {
+        let search = bisect(0.0, 1.0, 0.01, criterion(crossing)).unwrap();
+        let (limit, runs) = (search.limit, search.runs());
+        let held = confirm(search, (0.0, 1.0), 0.01, 1e-4, criterion(crossing)).unwrap();
+        assert_eq!((held.limit, held.runs()), (limit, runs + 1));
+    }
+    // Moved out of the range altogether.
+    let search = bisect(0.0, 1.0, 0.01, criterion(0.6)).unwrap();
+    let gone = confirm(search, (0.0, 1.0), 0.01, 1e-4, criterion(-1.0)).unwrap();
+    assert_eq!(gone.limit, Limit::Before { start: 0.0 });
+    let search = bisect(0.0, 1.0, 0.01, criterion(0.6)).unwrap();
+    let gone = confirm(search, (0.0, 1.0), 0.01, 1e-4, criterion(2.0)).unwrap();
+    assert_eq!(gone.limit, Limit::Beyond { end: 1.0 });
+    // A confirming trial's error is the search's.
+    let search = bisect(0.0, 1.0, 0.01, criterion(0.6)).unwrap();
+    let failed = confirm(search, (0.0, 1.0), 0.01, 1e-4, |p| {
+        Err(EventError::Setting {
+            event: "test",
+            what: "a confirming trial",
+            range: "anything",
+            value: p,
+        })
+    });
+    assert!(
+        matches!(failed, Err(EventError::Setting { .. })),
         "{failed:?}"
     );
 }
@@ -236,6 +341,13 @@ fn bad_input_is_refused_before_any_run() {
     loose.scenario.tolerance = Some(0.5);
     let (what, value) = setting(obstacle::step::<M113>(&loose, &footprint));
     assert_eq!((what, value), ("tolerance", 0.5));
+    // A confirming tolerance no tighter than the scenario's.
+    for factor in [1.5, 0.0, f64::NAN] {
+        let mut looser = settings.clone();
+        looser.confirm_factor = Some(factor);
+        let (what, _) = setting(obstacle::step::<M113>(&looser, &footprint));
+        assert_eq!(what, "the confirming tolerance's factor");
+    }
     // A powertrain that gives no drive names its figure.
     let mut no_power = settings.clone();
     no_power.powertrain = trackgen::vehicle::Powertrain::Power {

@@ -68,21 +68,28 @@ pub(super) fn write_all(
         "parameter",
         "figure",
         "passed",
+        "confirming",
     ])?;
     for r in rows {
         let (p, pv) = r
             .parameter
             .map_or(("", String::new()), |(a, b, _)| (a, b.to_string()));
-        for (k, t) in r.search.iter().flat_map(|s| s.trials.iter()).enumerate() {
-            w.write_record([
-                r.event,
-                p,
-                &pv,
-                &k.to_string(),
-                &t.parameter.to_string(),
-                &t.figure.to_string(),
-                &t.passed.to_string(),
-            ])?;
+        for s in r.search.iter() {
+            // The confirming trials (at the tighter tolerance) are the
+            // last ones.
+            let first = s.confirmation.map_or(s.trials.len(), |c| c.first_trial);
+            for (k, t) in s.trials.iter().enumerate() {
+                w.write_record([
+                    r.event,
+                    p,
+                    &pv,
+                    &k.to_string(),
+                    &t.parameter.to_string(),
+                    &t.figure.to_string(),
+                    &t.passed.to_string(),
+                    &(k >= first).to_string(),
+                ])?;
+            }
         }
     }
     w.flush()?;

@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! <app> mobility [--vehicle NAME] [--out FOLDER]
-//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil] [--json] [--quick]
+//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil] [--json] [--quick] [--no-confirm]
 //!     [--slice K/N | --merge FILE…]
 //! ```
 //!
@@ -22,7 +22,7 @@
 //! the answer; with `--json`, one JSON object per result per line
 //! (`event`, `parameter`, `quantity`, `value`, `relation` (`=`, `>` beyond
 //! the range, `<` before it, `stalled`, `failed`), `unit`, `runs`,
-//! `failure`; SI units: roughness and heights in m, speeds in m/s, grades
+//! `confirmed_at`, `moved_from`, `failure`; SI units: roughness and heights in m, speeds in m/s, grades
 //! as rise over run). `--quick`: one parameter per event at loose search
 //! tolerances, a smoke test.
 //!
@@ -84,9 +84,16 @@ pub struct MobilityArgs {
     /// One JSON object per result per line on stdout.
     #[arg(long)]
     pub json: bool,
-    /// One parameter per event at loose tolerances: a smoke test.
+    /// One parameter per event at loose tolerances, unconfirmed: a smoke
+    /// test.
     #[arg(long)]
     pub quick: bool,
+    /// Answers at the integrator's tolerance alone: no search's final
+    /// bracket run again at a tenth of it (the default confirms each
+    /// answer so, and searches on at that tolerance where a verdict
+    /// changes).
+    #[arg(long)]
+    pub no_confirm: bool,
     /// Every run's integrator, as `run --integrator` takes it: `auto`
     /// (the default), `bs23`, `dopri5` or `ros34pw2`. With `--tolerance`,
     /// how far an answer moves with the integration is measured.
@@ -143,6 +150,9 @@ fn run<V: Vehicle>(
     let mut settings = EventSettings::new(powertrain);
     settings.scenario.method = args.integrator;
     settings.scenario.tolerance = args.tolerance;
+    if args.no_confirm || args.quick {
+        settings.confirm_factor = None;
+    }
     if args.quick {
         settings.speed_tolerance = 1.0;
         settings.length_tolerance = 0.1;

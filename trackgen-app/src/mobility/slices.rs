@@ -6,7 +6,7 @@ use std::fs;
 use std::path::{Path, PathBuf};
 
 use serde_json::{Value, json};
-use trackgen::mobility::search::{Limit, Search, Trial};
+use trackgen::mobility::search::{Confirmation, Limit, Search, Trial};
 
 use super::tasks::Row;
 
@@ -14,23 +14,56 @@ fn number(v: f64) -> Value {
     serde_json::Number::from_f64(v).map_or(Value::Null, Value::Number)
 }
 
+fn limit_json(limit: Limit) -> Value {
+    match limit {
+        Limit::Found {
+            value,
+            passed,
+            failed,
+        } => json!({"found": [number(value), number(passed), number(failed)]}),
+        Limit::Beyond { end } => json!({"beyond": number(end)}),
+        Limit::Before { start } => json!({"before": number(start)}),
+    }
+}
+
+fn limit_of(limit: &Value) -> Result<Limit, String> {
+    if let Some(f) = limit.get("found") {
+        Ok(Limit::Found {
+            value: float(&f[0]),
+            passed: float(&f[1]),
+            failed: float(&f[2]),
+        })
+    } else if let Some(end) = limit.get("beyond") {
+        Ok(Limit::Beyond { end: float(end) })
+    } else if let Some(start) = limit.get("before") {
+        Ok(Limit::Before {
+            start: float(start),
+        })
+    } else {
+        Err("a search without its limit".into())
+    }
+}
+
 fn row_json(r: &Row) -> Value {
     let search = r.search.as_ref().map(|s| {
-        let limit = match s.limit {
-            Limit::Found {
-                value,
-                passed,
-                failed,
-            } => json!({"found": [number(value), number(passed), number(failed)]}),
-            Limit::Beyond { end } => json!({"beyond": number(end)}),
-            Limit::Before { start } => json!({"before": number(start)}),
-        };
         let trials: Vec<Value> = s
             .trials
             .iter()
             .map(|t| json!([number(t.parameter), number(t.figure), t.passed]))
             .collect();
-        json!({"limit": limit, "trials": trials, "picture": r.picture})
+        let confirmation = s.confirmation.map(|c| {
+            json!({
+                "tolerance": number(c.tolerance),
+                "first_trial": c.first_trial,
+                "moved_from": c.moved_from.map(limit_json),
+            })
+        });
+        json!({
+            "limit": limit_json(s.limit),
+            "trials": trials,
+            "confirmation": confirmation,
+            "picture": r.picture,
+        })
     });
     json!({
         "event": r.event,
@@ -79,21 +112,20 @@ fn row_of(v: &Value) -> Result<Row, String> {
     let search = match &v["search"] {
         Value::Null => None,
         s => {
-            let limit = &s["limit"];
-            let limit = if let Some(f) = limit.get("found") {
-                Limit::Found {
-                    value: float(&f[0]),
-                    passed: float(&f[1]),
-                    failed: float(&f[2]),
-                }
-            } else if let Some(end) = limit.get("beyond") {
-                Limit::Beyond { end: float(end) }
-            } else if let Some(start) = limit.get("before") {
-                Limit::Before {
-                    start: float(start),
-                }
-            } else {
-                return Err("a search without its limit".into());
+            let limit = limit_of(&s["limit"])?;
+            let confirmation = match &s["confirmation"] {
+                Value::Null => None,
+                c => Some(Confirmation {
+                    tolerance: float(&c["tolerance"]),
+                    first_trial: c["first_trial"]
+                        .as_u64()
+                        .ok_or("a confirmation without its first trial")?
+                        as usize,
+                    moved_from: match &c["moved_from"] {
+                        Value::Null => None,
+                        m => Some(limit_of(m)?),
+                    },
+                }),
             };
             let trials = s["trials"]
                 .as_array()
@@ -110,6 +142,7 @@ fn row_of(v: &Value) -> Result<Row, String> {
                 limit,
                 trials,
                 picture: None,
+                confirmation,
             })
         }
     };

@@ -30,20 +30,39 @@ pub(super) fn print_summary(name: &str, rows: &[Row], wall: f64) {
         rows.len()
     );
     println!(
-        "{:<11} {:<28} {:<26} {:>12}  {:<14} {:>5} {:>8}",
+        "{:<11} {:<28} {:<26} {:>12}  {:<14} {:>5} {:>8}  confirmed",
         "event", "parameter", "quantity", "value", "unit", "runs", "wall s"
     );
     for r in rows {
         println!(
-            "{:<11} {:<28} {:<26} {:>12}  {:<14} {:>5} {:>8.1}",
+            "{:<11} {:<28} {:<26} {:>12}  {:<14} {:>5} {:>8.1}  {}",
             r.event,
             parameter_text(r),
             r.quantity,
             value_text(r),
             r.unit,
             r.runs,
-            r.wall
+            r.wall,
+            confirmation_text(r)
         );
+    }
+}
+
+/// How the row's answer stood at the confirming tolerance: `held at
+/// 1e-4`, `moved from 1.067 at 1e-3`... or empty where it was not
+/// confirmed (a curve's later points, a quantity that is no search's).
+pub(super) fn confirmation_text(r: &Row) -> String {
+    match r.search.as_ref().and_then(|s| s.confirmation) {
+        Some(c) => match c.moved_from {
+            None => format!("held at {:.0e}", c.tolerance),
+            Some(from) => format!(
+                "at {:.0e} (from {} {:.3})",
+                c.tolerance,
+                from.relation(),
+                from.value()
+            ),
+        },
+        None => String::new(),
     }
 }
 
@@ -135,6 +154,12 @@ pub(super) fn json(row: &Row) -> String {
         "relation": row.relation,
         "unit": row.unit,
         "runs": row.runs,
+        "confirmed_at": row.search.as_ref().and_then(|s| s.confirmation).map(|c| c.tolerance),
+        "moved_from": row
+            .search
+            .as_ref()
+            .and_then(|s| s.confirmation?.moved_from)
+            .map(|l| l.value()),
         "failure": row.failure,
     })
     .to_string()

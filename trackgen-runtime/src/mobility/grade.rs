@@ -2,7 +2,7 @@
 //! steepest grade climbed from
 //! a crawl, and the speed held up a grade at full power.
 
-use super::runs::{Footprint, Probe, drive, obstacle_course, ramp};
+use super::runs::{Footprint, Probe, confirmed, drive, obstacle_course, ramp};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::terrain::Terrain;
@@ -108,7 +108,7 @@ pub fn steepest<V: Vehicle>(
     settings: &EventSettings,
     footprint: &Footprint,
 ) -> Result<Search, EventError> {
-    bisect(0.05, 1.2, settings.grade_tolerance, |slope| {
+    let trial = |settings: &EventSettings, slope| {
         // At a tenth of the crawl the climb still finishes.
         let crawl = (settings.crawl, settings.crawl / 10.0);
         let c = climb::<V>(settings, footprint, slope, crawl, CLIMB)?;
@@ -117,7 +117,10 @@ pub fn steepest<V: Vehicle>(
             figure: f64::from(u8::from(c.climbed)),
             passed: c.climbed,
         })
-    })
+    };
+    let (range, tolerance) = ((0.05, 1.2), settings.grade_tolerance);
+    let search = bisect(range.0, range.1, tolerance, |p| trial(settings, p))?;
+    confirmed(settings, search, range, tolerance, trial)
 }
 
 /// How far the top-speed run goes, m: the speed's last rise is slow (the

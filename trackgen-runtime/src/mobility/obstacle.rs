@@ -5,7 +5,8 @@
 //! from a crawl at full power.
 
 use super::runs::{
-    Footprint, Probe, SpeedTrial, drive, measure_ride, obstacle_course, ramp, search_speed,
+    Footprint, Probe, SpeedTrial, confirmed, drive, measure_ride, obstacle_course, ramp,
+    search_speed,
 };
 use super::search::{Limit, Search, Trial, bisect};
 use super::{EventError, EventSettings};
@@ -88,7 +89,7 @@ pub fn half_round_speed<V: Vehicle>(
         footprint,
         (HALF_ROUND, Some(settings.speed_scan)),
         settings.peak_limit,
-        |speed| {
+        |settings, speed| {
             let point = half_round_at::<V>(settings, footprint, height, speed)?;
             Ok(SpeedTrial {
                 figure: point.peak_g,
@@ -234,9 +235,11 @@ pub fn largest_crossed<V: Vehicle>(
     shape: impl Fn(f64) -> Obstacle,
 ) -> Result<Search, EventError> {
     check_length(event, "the search's start (m)", start, end)?;
-    // Bisection's last passing trial is its bracket's passing end.
+    // The bracket's passing end is the last passing trial of bisection
+    // (and of its confirmation, which ends in bisection or in the
+    // bracket's passing end run again).
     let mut last_crossed: Option<(f64, Steepest, Terrain)> = None;
-    let mut search = bisect(start, end, settings.length_tolerance, |p| {
+    let mut trial = |settings: &EventSettings, p| {
         let (crossing, steepest, terrain) = attempt::<V>(settings, footprint, event, &shape(p), p)?;
         if crossing.crossed {
             last_crossed = Some((p, steepest, terrain));
@@ -246,7 +249,10 @@ pub fn largest_crossed<V: Vehicle>(
             figure: crossing.margin,
             passed: crossing.crossed,
         })
-    })?;
+    };
+    let tolerance = settings.length_tolerance;
+    let search = bisect(start, end, tolerance, |p| trial(settings, p))?;
+    let mut search = confirmed(settings, search, (start, end), tolerance, &mut trial)?;
     if let (Limit::Found { passed, .. }, Some((p, steepest, terrain))) =
         (search.limit, last_crossed)
         && p == passed

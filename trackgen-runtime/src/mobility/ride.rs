@@ -119,7 +119,7 @@ pub fn limiting_speed<V: Vehicle>(
         footprint,
         (EVENT, None),
         settings.absorbed_power_limit,
-        |speed| {
+        |settings, speed| {
             let point = ride_at::<V>(settings, footprint, roughness, speed)?;
             Ok(SpeedTrial {
                 figure: point.figures.absorbed_power,

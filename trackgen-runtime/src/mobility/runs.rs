@@ -4,8 +4,8 @@
 use nalgebra::Vector2;
 
 use super::EventError;
-use super::search::{Search, Trial, interpolate, scan_then_bisect};
-use crate::scenario::Scenario;
+use super::search::{Search, Trial, confirm, interpolate, scan_then_bisect};
+use crate::scenario::{Method, Scenario};
 use crate::simulate::{RideFigures, RideSink, RunError, RunReport, Sink, SinkError};
 use crate::system::Simulated;
 use crate::terrain::Terrain;
@@ -60,6 +60,11 @@ pub struct EventSettings {
     pub length_tolerance: f64,
     /// Grade searches stop at this, rise over run.
     pub grade_tolerance: f64,
+    /// Each search's final bracket is run again at the scenario's
+    /// integrator tolerance times this ([`confirm`](super::search::confirm)),
+    /// and the search goes on at that tolerance where a verdict changes;
+    /// `None`: answers at the scenario's tolerance alone.
+    pub confirm_factor: Option<f64>,
 }
 
 impl EventSettings {
@@ -68,7 +73,8 @@ impl EventSettings {
     /// implicit), a crawl of 1 m/s reached at 1 m/s², the ride measured
     /// over 100 m with rows every 2 ms against 6 W, the half-round against
     /// 2.5 g, speeds up to 20 m/s searched to 0.1 m/s, lengths to 0.01 m,
-    /// grades to 0.01.
+    /// grades to 0.01, each search's bracket confirmed at a tenth of the
+    /// integrator's tolerance.
     pub fn new(powertrain: Powertrain) -> EventSettings {
         EventSettings {
             powertrain,
@@ -87,7 +93,28 @@ impl EventSettings {
             speed_scan: 2.0,
             length_tolerance: 0.01,
             grade_tolerance: 0.01,
+            confirm_factor: Some(0.1),
         }
+    }
+
+    /// The settings a search's answer is confirmed with, and their
+    /// integrator tolerance: these, the scenario's tolerance times
+    /// [`confirm_factor`](Self::confirm_factor) (of the implicit method's
+    /// for ROS34PW2, of the explicit one's otherwise; `auto` takes it for
+    /// both). `None` where no confirmation is asked, or the method has no
+    /// tolerance (RK4's fixed step).
+    pub fn confirming(&self) -> Option<(EventSettings, f64)> {
+        let factor = self.confirm_factor?;
+        let scenario = &self.scenario;
+        let tolerance = factor
+            * match scenario.method {
+                Method::Rk4 { .. } => return None,
+                Method::Ros34pw2 => scenario.implicit_tolerance(),
+                Method::Auto | Method::Bs23 | Method::Dopri5 => scenario.explicit_tolerance(),
+            };
+        let mut tight = self.clone();
+        tight.scenario.tolerance = Some(tolerance);
+        Some((tight, tolerance))
     }
 
     /// The settings checked: each figure finite and in its range, the
@@ -114,12 +141,28 @@ impl EventSettings {
                 });
             }
         }
-        self.scenario.check().map_err(|e| EventError::Setting {
-            event,
-            what: e.setting,
-            range: e.range,
-            value: e.value,
-        })?;
+        if let Some(factor) = self.confirm_factor
+            && !(factor > 0.0 && factor < 1.0)
+        {
+            return Err(EventError::Setting {
+                event,
+                what: "the confirming tolerance's factor",
+                range: "more than 0 and less than 1",
+                value: factor,
+            });
+        }
+        let scenario = |s: &Scenario| {
+            s.check().map_err(|e| EventError::Setting {
+                event,
+                what: e.setting,
+                range: e.range,
+                value: e.value,
+            })
+        };
+        scenario(&self.scenario)?;
+        if let Some((tight, _)) = self.confirming() {
+            scenario(&tight.scenario)?;
+        }
         self.powertrain
             .check()
             .map_err(|source| EventError::Powertrain { event, source })
@@ -311,12 +354,12 @@ pub(super) fn search_speed(
     footprint: &Footprint,
     (event, scan): (&'static str, Option<f64>),
     limit: f64,
-    mut run: impl FnMut(f64) -> Result<SpeedTrial, EventError>,
+    mut run: impl FnMut(&EventSettings, f64) -> Result<SpeedTrial, EventError>,
 ) -> Result<Search, EventError> {
     let top = settings.top_speed(footprint.sprocket_radius);
     let start = 1.0_f64.min(top);
-    let trial = |speed| {
-        let trial = run(speed)?;
+    let mut trial = |settings: &EventSettings, speed| {
+        let trial = run(settings, speed)?;
         if trial.stalled {
             return Err(EventError::Stalled {
                 event,
@@ -331,9 +374,30 @@ pub(super) fn search_speed(
             passed: trial.figure < limit,
         })
     };
-    match scan {
-        Some(step) => scan_then_bisect(start, top, step, settings.speed_tolerance, trial),
-        None => interpolate(start, top, settings.speed_tolerance, limit, trial),
+    let tolerance = settings.speed_tolerance;
+    let search = match scan {
+        Some(step) => scan_then_bisect(start, top, step, tolerance, |p| trial(settings, p)),
+        None => interpolate(start, top, tolerance, limit, |p| trial(settings, p)),
+    }?;
+    confirmed(settings, search, (start, top), tolerance, trial)
+}
+
+/// `search`, run from `start` towards `end` to `tolerance`, confirmed by
+/// `trial` at the settings' confirming tolerance
+/// ([`EventSettings::confirming`], [`confirm`]); as it is where the
+/// settings ask for none.
+pub(super) fn confirmed(
+    settings: &EventSettings,
+    search: Search,
+    (start, end): (f64, f64),
+    tolerance: f64,
+    mut trial: impl FnMut(&EventSettings, f64) -> Result<Trial, EventError>,
+) -> Result<Search, EventError> {
+    match settings.confirming() {
+        Some((tight, integrator)) => confirm(search, (start, end), tolerance, integrator, |p| {
+            trial(&tight, p)
+        }),
+        None => Ok(search),
     }
 }
 

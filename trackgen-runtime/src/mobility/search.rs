@@ -78,6 +78,24 @@ pub struct Search {
     /// obstacle's largest crossed, at its steepest moment (the geometry
     /// to draw, `trackgen-draw`'s `vehicle::picture`).
     pub picture: Option<crate::scene::Picture>,
+    /// The limit's bracket run again at a tighter integrator tolerance
+    /// ([`confirm`]), or `None` where it was not.
+    pub confirmation: Option<Confirmation>,
+}
+
+/// A search's final bracket run again at a tighter integrator tolerance:
+/// whether its verdicts held, and where the search went on if not.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Confirmation {
+    /// The integrator tolerance of the confirming trials.
+    pub tolerance: f64,
+    /// The index in [`Search::trials`] of the first confirming trial:
+    /// those before it ran at the settings' own tolerance.
+    pub first_trial: usize,
+    /// The limit found at the settings' own tolerance, where a verdict
+    /// changed at the tighter one and the search went on from it; `None`:
+    /// the verdicts held, and the limit stands.
+    pub moved_from: Option<Limit>,
 }
 
 impl Search {
@@ -284,8 +302,117 @@ impl<F: FnMut(f64) -> Result<Trial, EventError>> Runs<F> {
             limit,
             trials: self.trials,
             picture: None,
+            confirmation: None,
         }
     }
+
+    /// From `from`, trials towards `toward` at `step`, twice that, four
+    /// times… (the last at `toward` itself) until one's verdict is
+    /// `wanted`: that parameter and the one tried before it (`from` at
+    /// first), or `None` if `toward` is reached without it.
+    fn seek(
+        &mut self,
+        from: f64,
+        toward: f64,
+        step: f64,
+        wanted: bool,
+    ) -> Result<Option<(f64, f64)>, EventError> {
+        let direction = (toward - from).signum();
+        let (mut before, mut step) = (from, step.abs());
+        while before != toward {
+            let next = before + direction * step;
+            let next = if (toward - next) * direction <= 0.0 {
+                toward
+            } else {
+                next
+            };
+            if self.passes(next)? == wanted {
+                return Ok(Some((next, before)));
+            }
+            before = next;
+            step *= 2.0;
+        }
+        Ok(None)
+    }
+}
+
+/// `search` (run from `start` towards `end` by [`bisect`],
+/// [`interpolate`] or [`scan_then_bisect`]) confirmed by `trial`, the
+/// same trial at a tighter integrator tolerance `integrator_tolerance`:
+/// the bracket's two ends are run again (the range's end alone, for a
+/// limit beyond or before it). Where both verdicts hold the limit stands.
+/// Where one changes, the limit lies outside the bracket on that side:
+/// the search goes on at the tighter tolerance, stepping away from the
+/// bracket by its width, doubling, until a verdict changes back, then
+/// bisecting to `tolerance`, as the first search did, and the first
+/// answer is kept as [`Confirmation::moved_from`]. A search's answer that
+/// the integrator's error decides is found so at the tolerance that
+/// settles it, at the cost of the two runs that show whether it does.
+/// A failed run is the search's error.
+pub fn confirm(
+    search: Search,
+    (start, end): (f64, f64),
+    tolerance: f64,
+    integrator_tolerance: f64,
+    trial: impl FnMut(f64) -> Result<Trial, EventError>,
+) -> Result<Search, EventError> {
+    let first_trial = search.trials.len();
+    let mut runs = Runs {
+        trial,
+        trials: search.trials,
+    };
+    let tolerance = tolerance.abs();
+    let first = search.limit;
+    let limit = match first {
+        Limit::Found { passed, failed, .. } => {
+            let width = (failed - passed).abs().max(tolerance);
+            if !runs.passes(passed)? {
+                // The limit is nearer the start than thought.
+                match runs.seek(passed, start, width, true)? {
+                    Some((passing, failing)) => runs.narrow(passing, failing, tolerance)?,
+                    None => Limit::Before { start },
+                }
+            } else if runs.passes(failed)? {
+                // It is further towards the end.
+                match runs.seek(failed, end, width, false)? {
+                    Some((failing, passing)) => runs.narrow(passing, failing, tolerance)?,
+                    None => Limit::Beyond { end },
+                }
+            } else {
+                first
+            }
+        }
+        Limit::Beyond { end } => {
+            if runs.passes(end)? {
+                first
+            } else {
+                match runs.seek(end, start, tolerance, true)? {
+                    Some((passing, failing)) => runs.narrow(passing, failing, tolerance)?,
+                    None => Limit::Before { start },
+                }
+            }
+        }
+        Limit::Before { start } => {
+            if !runs.passes(start)? {
+                first
+            } else {
+                match runs.seek(start, end, tolerance, false)? {
+                    Some((failing, passing)) => runs.narrow(passing, failing, tolerance)?,
+                    None => Limit::Beyond { end },
+                }
+            }
+        }
+    };
+    Ok(Search {
+        confirmation: Some(Confirmation {
+            tolerance: integrator_tolerance,
+            first_trial,
+            moved_from: (limit != first).then_some(first),
+        }),
+        limit,
+        trials: runs.trials,
+        picture: search.picture,
+    })
 }
 
 /// The *first* parameter from `start` towards `end` where `trial` stops
