@@ -53,6 +53,23 @@ fn criterion(crossing: f64) -> impl FnMut(f64) -> Result<Trial, EventError> {
     }
 }
 
+/// A criterion crossed at `crossing` by a search from `start` towards
+/// `end`: trials pass on the start's side of it.
+fn crossed_at(start: f64, end: f64, crossing: f64) -> impl Fn(f64) -> Result<Trial, EventError> {
+    move |p| {
+        let passed = if start < end {
+            p < crossing
+        } else {
+            p > crossing
+        };
+        Ok(Trial {
+            parameter: p,
+            figure: p,
+            passed,
+        })
+    }
+}
+
 #[test]
 fn the_search_brackets_a_known_crossing_in_bisection_s_runs() {
     for (start, end, tolerance, crossing) in [
@@ -62,19 +79,7 @@ fn the_search_brackets_a_known_crossing_in_bisection_s_runs() {
         // A criterion that fails below its limit: searched downwards.
         (10.0, 0.0, 0.01, 3.3),
     ] {
-        let crossing_test = move |p: f64| {
-            let passed = if start < end {
-                p < crossing
-            } else {
-                p > crossing
-            };
-            Ok(Trial {
-                parameter: p,
-                figure: p,
-                passed,
-            })
-        };
-        let search = bisect(start, end, tolerance, crossing_test).unwrap();
+        let search = bisect(start, end, tolerance, crossed_at(start, end, crossing)).unwrap();
         let Limit::Found {
             value,
             passed,
@@ -137,20 +142,7 @@ fn a_confirmed_search_finds_the_crossing_the_tighter_tolerance_moves() {
         (10.0, 0.0, 3.3, 6.0),
     ] {
         let tolerance = 0.01;
-        let at = move |crossing: f64| {
-            move |p: f64| {
-                let passed = if start < end {
-                    p < crossing
-                } else {
-                    p > crossing
-                };
-                Ok(Trial {
-                    parameter: p,
-                    figure: p,
-                    passed,
-                })
-            }
-        };
+        let at = |crossing| crossed_at(start, end, crossing);
         let search = bisect(start, end, tolerance, at(first)).unwrap();
         let (coarse, runs) = (search.limit, search.runs());
         let confirmed = confirm(search, (start, end), tolerance, 1e-4, at(moved)).unwrap();
