@@ -216,3 +216,76 @@ pub fn merge(files: &[PathBuf], tasks: usize) -> Result<(Vec<Row>, f64), String>
         wall,
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A confirmed search's row travels through a slice's line unchanged:
+    /// its limit, trials and confirmation (the first answer kept where it
+    /// moved), the floats exactly.
+    #[test]
+    fn a_confirmed_search_round_trips_through_a_slice() {
+        let trial = |parameter, passed| Trial {
+            parameter,
+            figure: parameter - 0.1,
+            passed,
+        };
+        for moved_from in [None, Some(Limit::Beyond { end: 1.5 })] {
+            let search = Search {
+                limit: Limit::Found {
+                    value: 0.987_304_687_5,
+                    passed: 0.984_375,
+                    failed: 0.990_234_375,
+                },
+                trials: vec![trial(0.05, true), trial(1.5, false), trial(0.1 + 0.2, true)],
+                picture: None,
+                confirmation: Some(Confirmation {
+                    tolerance: 1e-4,
+                    first_trial: 2,
+                    moved_from,
+                }),
+            };
+            let row = Row {
+                event: "step",
+                parameter: None,
+                quantity: "highest step",
+                value: search.limit.value(),
+                relation: "=",
+                unit: "m",
+                runs: search.runs(),
+                wall: 1.25,
+                search: Some(search.clone()),
+                picture: None,
+                failure: None,
+            };
+            let back = row_of(&row_json(&row)).unwrap();
+            assert_eq!(back.search, Some(search));
+        }
+        // A confirmation without its first trial is refused, not guessed.
+        let mut line = row_json(&Row {
+            event: "step",
+            parameter: None,
+            quantity: "highest step",
+            value: 1.0,
+            relation: "=",
+            unit: "m",
+            runs: 0,
+            wall: 0.0,
+            search: Some(Search {
+                limit: Limit::Beyond { end: 1.5 },
+                trials: vec![],
+                picture: None,
+                confirmation: Some(Confirmation {
+                    tolerance: 1e-4,
+                    first_trial: 0,
+                    moved_from: None,
+                }),
+            }),
+            picture: None,
+            failure: None,
+        });
+        line["search"]["confirmation"]["first_trial"] = Value::Null;
+        assert!(row_of(&line).is_err());
+    }
+}

@@ -49,8 +49,9 @@ pub(super) fn print_summary(name: &str, rows: &[Row], wall: f64) {
 }
 
 /// How the row's answer stood at the confirming tolerance: `held at
-/// 1e-4`, `moved from 1.067 at 1e-3`... or empty where it was not
-/// confirmed (a curve's later points, a quantity that is no search's).
+/// 1e-4`, or `at 1e-4 (from = 14.969)` where it moved (the first answer
+/// with its relation), or empty where it was not confirmed (a curve's
+/// later points, a quantity that is no search's).
 pub(super) fn confirmation_text(r: &Row) -> String {
     match r.search.as_ref().and_then(|s| s.confirmation) {
         Some(c) => match c.moved_from {

@@ -334,6 +334,28 @@ impl<F: FnMut(f64) -> Result<Trial, EventError>> Runs<F> {
         }
         Ok(None)
     }
+
+    /// The limit beyond `from`, whose verdict changed: towards `start`
+    /// (`back`: `from` failed) or towards `end` (it passed), stepping out
+    /// from `step` ([`seek`](Self::seek)) to the first changed-back
+    /// verdict, then bisecting to `tolerance`; the range's end where none
+    /// changes back.
+    fn search_on(
+        &mut self,
+        from: f64,
+        (start, end): (f64, f64),
+        back: bool,
+        step: f64,
+        tolerance: f64,
+    ) -> Result<Limit, EventError> {
+        let toward = if back { start } else { end };
+        Ok(match self.seek(from, toward, step, back)? {
+            Some((passing, failing)) if back => self.narrow(passing, failing, tolerance)?,
+            Some((failing, passing)) => self.narrow(passing, failing, tolerance)?,
+            None if back => Limit::Before { start },
+            None => Limit::Beyond { end },
+        })
+    }
 }
 
 /// `search` (run from `start` towards `end` by [`bisect`],
@@ -363,45 +385,27 @@ pub fn confirm(
     };
     let tolerance = tolerance.abs();
     let first = search.limit;
+    // Where a verdict changed, the limit lies beyond the bracket on that
+    // side: the search goes on from it, that way.
     let limit = match first {
         Limit::Found { passed, failed, .. } => {
             let width = (failed - passed).abs().max(tolerance);
             if !runs.passes(passed)? {
-                // The limit is nearer the start than thought.
-                match runs.seek(passed, start, width, true)? {
-                    Some((passing, failing)) => runs.narrow(passing, failing, tolerance)?,
-                    None => Limit::Before { start },
-                }
+                runs.search_on(passed, (start, end), true, width, tolerance)?
             } else if runs.passes(failed)? {
-                // It is further towards the end.
-                match runs.seek(failed, end, width, false)? {
-                    Some((failing, passing)) => runs.narrow(passing, failing, tolerance)?,
-                    None => Limit::Beyond { end },
-                }
+                runs.search_on(failed, (start, end), false, width, tolerance)?
             } else {
                 first
             }
         }
-        Limit::Beyond { end } => {
-            if runs.passes(end)? {
-                first
-            } else {
-                match runs.seek(end, start, tolerance, true)? {
-                    Some((passing, failing)) => runs.narrow(passing, failing, tolerance)?,
-                    None => Limit::Before { start },
-                }
-            }
-        }
-        Limit::Before { start } => {
-            if !runs.passes(start)? {
-                first
-            } else {
-                match runs.seek(start, end, tolerance, false)? {
-                    Some((failing, passing)) => runs.narrow(passing, failing, tolerance)?,
-                    None => Limit::Beyond { end },
-                }
-            }
-        }
+        Limit::Beyond { end } => match runs.passes(end)? {
+            true => first,
+            false => runs.search_on(end, (start, end), true, tolerance, tolerance)?,
+        },
+        Limit::Before { start } => match runs.passes(start)? {
+            false => first,
+            true => runs.search_on(start, (start, end), false, tolerance, tolerance)?,
+        },
     };
     Ok(Search {
         confirmation: Some(Confirmation {
