@@ -243,19 +243,22 @@ pub fn m113_through(
     every: f64,
 ) -> Results {
     let powertrain = Powertrain::Converter(Box::new(driveline.clone()));
-    m113_run(Some(powertrain), terrain, target, duration, every)
+    m113_run(Some(powertrain), terrain, target, duration, every, 0.0)
 }
 
-/// [`m113_through`] under any `powertrain` (`None`: the speed drive alone).
+/// [`m113_through`] under any `powertrain` (`None`: the speed drive alone),
+/// a drawbar pull of `drawbar_pull` N on the hull throughout.
 pub fn m113_run(
     powertrain: Option<Powertrain>,
     terrain: Terrain,
     target: impl Fn(f64) -> f64 + Send + 'static,
     duration: f64,
     every: f64,
+    drawbar_pull: f64,
 ) -> Results {
     let mut config = M113::declared_config(terrain, M113::speed_drive(target));
     config.powertrain = powertrain;
+    config.drawbar_pull = drawbar_pull;
     let mut system = build::<M113>(config).expect("the M113 builds");
     simulate(
         &mut system,
