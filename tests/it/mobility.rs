@@ -587,3 +587,49 @@ fn the_m113a3_tops_out_near_its_published_speed() {
     );
     assert!((ratio - 1.0).abs() < 0.10, "{} m/s", run.speed);
 }
+
+/// The speed held up a grade at full power is the speed along the slope:
+/// the event's answer on 20 % against the hull's path speed `√(Δx² + Δy²)
+/// / Δt` over the last 3 s of the same climb run apart (the declared
+/// engine at full load on a ramp, Bogacki-Shampine 1e-4), within 1 %. The
+/// two runs start differently and integrate at different tolerances
+/// (0.4 % apart on their horizontal speeds); a speed along x would be
+/// `cos θ` of it, 1.9 % under.
+#[test]
+fn the_speed_up_a_grade_is_along_the_slope() {
+    use trackgen::mobility::grade;
+    use trackgen::terrain::Terrain;
+    let grade_slope = 0.2;
+    let settings = EventSettings::new(m113::powertrain());
+    let footprint = Footprint::of::<M113>("grade").unwrap();
+    let climb = grade::speed_on::<M113>(&settings, &footprint, grade_slope).unwrap();
+    let ramp = Terrain::Ramp {
+        height: 0.0,
+        start: 2.6,
+        slope: grade_slope,
+    };
+    let duration = 20.0;
+    let results = crate::support::vehicle::m113_run(
+        Some(m113::powertrain()),
+        ramp,
+        |t| 25.0 * t.min(1.0),
+        duration,
+        0.01,
+        0.0,
+    );
+    let times = results.times();
+    let (x, y) = (results.column("x").unwrap(), results.column("y").unwrap());
+    let from = times.partition_point(|&t| t < duration - 3.0);
+    let last = times.len() - 1;
+    let path = ((x[last] - x[from]).powi(2) + (y[last] - y[from]).powi(2)).sqrt();
+    let along = path / (times[last] - times[from]);
+    eprintln!(
+        "20 % at full power: the event {} m/s, the run {along} m/s along the slope",
+        climb.speed
+    );
+    assert!(
+        (climb.speed / along - 1.0).abs() < 0.01,
+        "the event's {} m/s against {along} m/s along the slope",
+        climb.speed
+    );
+}

@@ -29,9 +29,10 @@ fn course(footprint: &Footprint, at: f64, slope: f64, up: f64) -> Result<Terrain
 pub struct Climb {
     /// Whether the track's rear got [`CLIMB`] m (horizontally) up it.
     pub climbed: bool,
-    /// The hull's mean speed over the climb's last 10 m, m/s (0 stalled;
-    /// NaN for a climb shorter than 10 m, or one slower than the run waits
-    /// for).
+    /// The hull's mean speed along the slope over the climb's last 10 m
+    /// (horizontally), m/s: its speed along x times `√(1 + slope²)` (0
+    /// stalled; NaN for a climb shorter than 10 m, or one slower than the
+    /// run waits for).
     pub speed: f64,
     /// Whether it stopped.
     pub stalled: bool,
@@ -69,8 +70,8 @@ pub fn climb<V: Vehicle>(
 
 /// `V` driven on `terrain` asking for `target` (m/s against s) until its
 /// hull's x reaches `goal` (m), it stalls or `duration` (s) passes:
-/// whether it got there, and its mean speed over the last 10 m (0 if it
-/// stalled). A failure names the grade `slope`.
+/// whether it got there, and its mean speed along the grade `slope` over
+/// the last 10 m (0 if it stalled). A failure names the grade.
 fn drive_to<V: Vehicle>(
     settings: &EventSettings,
     terrain: Terrain,
@@ -95,7 +96,9 @@ fn drive_to<V: Vehicle>(
         speed: if probe.stalled {
             0.0
         } else {
-            probe.speed_since_mark()
+            // The last 10 m are on the grade: the path is `√(1 + g²)` of
+            // its run.
+            probe.speed_since_mark() * (1.0 + slope * slope).sqrt()
         },
         stalled: probe.stalled,
     })
@@ -151,7 +154,7 @@ pub fn top_speed<V: Vehicle>(
 /// The speed held up a grade of `slope` at full power: `V` asked at once
 /// for the powertrain's top speed (the engine, at full load, sets the
 /// torque) up a grade long enough for 100 m of climb beyond its track's
-/// length, its mean speed over the last 10 m. At the speeds a grade
+/// length, its mean speed along the slope over the last 10 m. At the speeds a grade
 /// leaves (a few m/s), 100 m is several times the distance the speed
 /// takes to settle (`m v² / P`, some 10 m). A vehicle that stalls holds 0.
 pub fn speed_on<V: Vehicle>(
