@@ -28,7 +28,7 @@
 //!   raises the running gear's share of the power (a tenth of it) by as
 //!   much: under 0.5 % of the speed. Measured: −0.46, +0.12 and +0.50 %
 //!   on 20, 30 and 10 %; the pulled runs match the grade's speed along it
-//!   to 1e-4 and slip 0.1–0.2 % (the grade runs' `1 − v_x / v_track`,
+//!   to 1e-4 and slip under 0.25 % (the grade runs' `1 − v_x / v_track`,
 //!   0.4, 2.0 and 4.4 %, is almost all the hull's horizontal projection
 //!   `1 − cos θ`). An unloaded flat run's resistance `f` is not that
 //!   route: it follows the shoe passage's place on the spans' modes
