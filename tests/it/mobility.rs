@@ -593,7 +593,7 @@ fn the_m113a3_tops_out_near_its_published_speed() {
 /// / Δt` over the last 3 s of the same climb run apart (the declared
 /// engine at full load on a ramp, Bogacki-Shampine 1e-4), within 1 %. The
 /// two runs start differently and integrate at different tolerances
-/// (0.4 % apart on their horizontal speeds); a speed along x would be
+/// (measured 0.25 % apart: 5.883 against 5.868 m/s); a speed along x would be
 /// `cos θ` of it, 1.9 % under.
 #[test]
 fn the_speed_up_a_grade_is_along_the_slope() {
