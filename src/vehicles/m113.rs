@@ -6,11 +6,14 @@
 //! Chrono's open M113 model (a secondary source: `M113_TrackShoeSinglePin`,
 //! `M113_SprocketSinglePin`, `M113_RoadWheel`, `M113_Suspension`,
 //! `M113_IdlerWheel`, `M113_Idler`, `M113_Chassis` and
-//! `M113_TrackAssemblySinglePin`), which names no variant. Its masses add
-//! up to 11.35 t (the hull's 7 819 kg and both sides' running gear); the
-//! M113A3's combat weight is 12.34 t (27 200 lb, the manufacturer's
-//! figures as power-projection.com gives them): the masses are not yet the
-//! A3's, 8 % light.
+//! `M113_TrackAssemblySinglePin`), which names no variant. Chrono's masses
+//! add up to 11.35 t (its hull's 7 819 kg and both sides' running gear);
+//! the declaration weighs what the M113A3 weighs in combat order,
+//! [`COMBAT_WEIGHT`] (27 200 lb), with the running gear as Chrono's and
+//! the hull taking the rest ([`CHASSIS_MASS`]: 987 kg more than Chrono's,
+//! at its centroid and with its radius of gyration, an assumption: the
+//! A3's additions, spall liners and external fuel tanks among them, are
+//! not placed from a drawing).
 //!
 //! The planar model carries one track and the matching half of the chassis:
 //! half its mass and half its pitch inertia. Positions are given in
@@ -35,10 +38,37 @@ pub const SHOE_PITCH: f64 = 0.154;
 pub const SHOE_MASS: f64 = 18.02;
 /// Shoe pitch inertia about its centroid, kg m².
 pub const SHOE_INERTIA: f64 = 0.04;
-/// Whole-vehicle chassis mass, kg (the planar model uses half).
-pub const CHASSIS_MASS: f64 = 7819.24;
-/// Whole-vehicle chassis pitch inertia, kg m² (the planar model uses half).
-pub const CHASSIS_INERTIA: f64 = 27287.61;
+/// The M113A3's combat weight, kg: 27 200 lb (power-projection.com,
+/// M113A3, the manufacturer's figures), which the declaration's masses add
+/// up to.
+pub const COMBAT_WEIGHT: f64 = 27_200.0 * 0.453_592_37;
+/// Sprocket mass, kg (Chrono's `M113_SprocketSinglePin`).
+pub const SPROCKET_MASS: f64 = 27.68;
+/// Road-wheel mass, kg (Chrono's `M113_RoadWheel`).
+pub const WHEEL_MASS: f64 = 35.56;
+/// Idler-wheel mass, kg (Chrono's `M113_IdlerWheel`).
+pub const IDLER_MASS: f64 = 25.76;
+/// The idler's tensioner arm's mass, kg: an assumption of this model
+/// ([`TENSIONER_ARM`]).
+pub const TENSIONER_ARM_MASS: f64 = 5.0;
+/// Both sides' running gear as declared, kg: per side 64 shoes, the
+/// sprocket, five road wheels on their arms, the idler and its tensioner
+/// arm (3 531.64 kg).
+pub const RUNNING_GEAR_MASS: f64 = 2.0
+    * (64.0 * SHOE_MASS
+        + SPROCKET_MASS
+        + 5.0 * (WHEEL_MASS + ARM_MASS)
+        + IDLER_MASS
+        + TENSIONER_ARM_MASS);
+/// Chrono's hull (`M113_Chassis`): 7 819.24 kg, pitch inertia
+/// 27 287.61 kg m².
+pub const CHRONO_CHASSIS: (f64, f64) = (7819.24, 27287.61);
+/// Whole-vehicle chassis mass, kg (the planar model uses half): the
+/// combat weight less the running gear, 8 806.07 kg.
+pub const CHASSIS_MASS: f64 = COMBAT_WEIGHT - RUNNING_GEAR_MASS;
+/// Whole-vehicle chassis pitch inertia, kg m² (the planar model uses half):
+/// Chrono's, scaled with the mass (its radius of gyration kept).
+pub const CHASSIS_INERTIA: f64 = CHRONO_CHASSIS.1 * CHASSIS_MASS / CHRONO_CHASSIS.0;
 /// Sprocket gear inertia plus its axle's, kg m²: the axle spins with it.
 pub const SPROCKET_INERTIA: f64 = 0.883 + 0.4;
 /// Road-wheel trailing arm mass, kg.
@@ -89,16 +119,16 @@ crate::model! {
         hull: [(0.45, 0.35), (-0.05, -0.15), (-4.41, -0.15), (-4.41, 1.27), (-0.55, 1.27)],
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.006, 0.406) },
         // Tip circle 0.2605 m, gap arcs of 0.089 m centred 0.3 m out.
-        sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.245,
+        sprocket sprocket { at: (0.0, 0.0), mass: SPROCKET_MASS, inertia: SPROCKET_INERTIA, radius: 0.245,
             teeth: 10, tip_radius: 0.2605, gap_radius: 0.089, gap_centre: 0.3 },
         road_wheel rw[5] {
             at: [(-0.740, -0.215), (-1.407, -0.215), (-2.074, -0.215), (-2.740, -0.215), (-3.407, -0.215)],
-            mass: 35.56, inertia: 2.16, radius: 0.305,
+            mass: WHEEL_MASS, inertia: 2.16, radius: 0.305,
             arm { pivot_offset: (0.288, 0.134), mass: ARM_MASS, inertia: ARM_INERTIA,
                   stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING, preload: TORSION_PRELOAD },
         },
-        idler idler { at: (-3.95, -0.12), mass: 25.76, inertia: 1.12, radius: 0.255,
-            arm { pivot: (-3.95, -0.12 + TENSIONER_ARM), mass: 5.0, inertia: 0.05,
+        idler idler { at: (-3.95, -0.12), mass: IDLER_MASS, inertia: 1.12, radius: 0.255,
+            arm { pivot: (-3.95, -0.12 + TENSIONER_ARM), mass: TENSIONER_ARM_MASS, inertia: 0.05,
                   stiffness: 1.0e6 * TENSIONER_ARM * TENSIONER_ARM,
                   damping: 1.4e4 * TENSIONER_ARM * TENSIONER_ARM,
                   preload: -2.0e4 * TENSIONER_ARM } },

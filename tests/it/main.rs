@@ -10,6 +10,7 @@ mod auto_integrator;
 mod brake;
 mod chassis_finite_differences;
 mod closed_chain_simulation;
+mod combat_weight;
 mod constant_expressions;
 mod contact_geometry;
 mod contact_jacobians;

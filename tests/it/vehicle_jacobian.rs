@@ -18,8 +18,12 @@
 //! between the two steps, their error estimate. A column whose forward
 //! and backward one-sided differences disagree by more than 1e-3 of its
 //! scale crosses a kink within the step (a contact starting, a friction
-//! law changing branch) and is skipped: the derivative is one-sided
-//! there. At least 97 % of the columns must be compared.
+//! law changing branch): the derivative is one-sided there, and the exact
+//! column, which takes one branch, is held to the one-sided differences
+//! (steps `h` and `2h`) of the side it agrees with best, among the sides
+//! whose two steps agree within 1e-3 of the scale. A column with no such
+//! side straddles kinks on both sides and is skipped. At least 97 % of
+//! the columns must be compared.
 
 use crate::support;
 use support::vehicle::{driven, driven_toward, driven_with};
@@ -63,6 +67,7 @@ fn check_at(label: &str, mut system: impl VehicleDynamics, t: f64, y: DVector<f6
         out
     };
     let (mut compared, mut skipped, mut worst) = (0, 0, (0.0f64, 0, 0));
+    let mut one_sided = 0;
     let mut worst_difference = 0.0;
     for j in 0..n {
         if layout.books.contains(&j) {
@@ -82,27 +87,62 @@ fn check_at(label: &str, mut system: impl VehicleDynamics, t: f64, y: DVector<f6
             let (forward, backward) = ((plus[r] - slope[r]) / h, (slope[r] - minus[r]) / h);
             (forward - backward).abs() > 1e-3 * scale
         });
-        if kinked {
+        // Each row's difference and its error estimate: central where the
+        // column is smooth; at a kink the one-sided pair of a side, the
+        // exact Jacobian taking the branch of one side.
+        type Difference<'a> = Box<dyn Fn(usize) -> (f64, f64) + 'a>;
+        let sides: Vec<Difference> = if kinked {
+            one_sided += 1;
+            vec![
+                Box::new(|r| {
+                    let (d, d2) = ((plus[r] - slope[r]) / h, (plus2[r] - slope[r]) / (2.0 * h));
+                    (d, d - d2)
+                }),
+                Box::new(|r| {
+                    let (d, d2) = (
+                        (slope[r] - minus[r]) / h,
+                        (slope[r] - minus2[r]) / (2.0 * h),
+                    );
+                    (d, d - d2)
+                }),
+            ]
+        } else {
+            vec![Box::new(|r| (central(r), central(r) - central2(r)))]
+        };
+        // The side the exact column agrees with best, among those whose
+        // two steps agree (a side that straddles the kink between its
+        // steps has no estimate worth the name).
+        let judged = sides
+            .iter()
+            .filter(|side| rows.iter().all(|&r| side(r).1.abs() <= 1e-3 * scale))
+            .map(|side| {
+                rows.iter()
+                    .map(|&r| {
+                        let (difference, estimate) = side(r);
+                        let allowed = 1e-6 * scale + 2.0 * estimate.abs();
+                        let gap = (exact[j * n + r] - difference).abs();
+                        (gap / allowed, r, gap / scale)
+                    })
+                    .fold((0.0f64, 0, 0.0), |m, e| if e.0 > m.0 { e } else { m })
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        let Some((excess, r, gap)) = judged else {
             skipped += 1;
             continue;
-        }
+        };
         compared += 1;
-        for &r in &rows {
-            let allowed = 1e-6 * scale + 2.0 * (central(r) - central2(r)).abs();
-            let excess = (exact[j * n + r] - central(r)).abs() / allowed;
-            if excess > worst.0 {
-                worst = (excess, r, j);
-                worst_difference = (exact[j * n + r] - central(r)).abs() / scale;
-            }
+        if excess > worst.0 {
+            worst = (excess, r, j);
+            worst_difference = gap;
         }
     }
     println!(
-        "{label}: {compared} columns compared, {skipped} at kinks; the entry nearest its bound (∂f{}/∂y{}) at {:.2} of it, {worst_difference:.2e} of its column's scale",
+        "{label}: {compared} columns compared ({one_sided} of them one-sided, at a kink), {skipped} skipped; the entry nearest its bound (∂f{}/∂y{}) at {:.2} of it, {worst_difference:.2e} of its column's scale",
         worst.1, worst.2, worst.0
     );
     assert!(
         compared as f64 >= 0.97 * (compared + skipped) as f64,
-        "{label}: too many columns at kinks ({skipped} of {})",
+        "{label}: too many columns skipped ({skipped} of {})",
         compared + skipped
     );
     assert!(
@@ -194,9 +234,13 @@ fn m113_leaning_on_a_wall_with_its_hull() {
 
 /// Through its engine, the M113A3's converter, whose speed and the locked
 /// driveline's twist are states: accelerating at full fuel in the first
-/// range (0.8 s toward 6 m/s), at part load holding 2 m/s (3 s), and
+/// range (0.8 s toward 6 m/s), at part load holding 2 m/s (2.95 s), and
 /// locked up in the second range (3.5 s toward 9 m/s); each state's record
-/// says which.
+/// says which. The part-load state is taken at 2.95 s: at 3 s exactly a
+/// shoe's contact lies within the differences' step of its onset, and
+/// eleven of the track's link-angle columns (those whose turning moves
+/// that shoe) straddle a kink on both sides; at 2.95 and 3.05 s no column
+/// crosses one.
 #[test]
 fn m113_through_its_engine() {
     // Each: what, the speed aimed at (m/s), when (s), and how the state's
@@ -204,7 +248,7 @@ fn m113_through_its_engine() {
     type Case = (&'static str, f64, f64, fn(f64, f64) -> bool);
     let cases: [Case; 3] = [
         ("full fuel", 6.0, 0.8, |fuel, _| fuel == 1.0),
-        ("part load", 2.0, 3.0, |fuel, _| fuel > 0.0 && fuel < 1.0),
+        ("part load", 2.0, 2.95, |fuel, _| fuel > 0.0 && fuel < 1.0),
         ("locked up", 9.0, 3.5, |_, locked| locked == 1.0),
     ];
     for (label, speed, duration, holds) in cases {

@@ -205,11 +205,24 @@ fn main_job_settings_over_the_bump() {
         Output::Every(0.01),
     )
     .expect("the run completes");
-    // Over the bump: the chassis rises by most of the bump's height, and
-    // its rear (2.2 m behind the centroid) is past it at the end.
+    // Over the bump the chassis rises from where it had settled (its mean
+    // height over 0.4–1.4 s, before the front reaches the bump) by the
+    // share of the bump its wheels carry it over: quasi-statically one
+    // to two of its five wheels stand on the 1 m bump at a time, 0.02 to
+    // 0.04 m; with the ride's overshoot, between 0.015 and 0.06 m
+    // (measured 0.025 m). Its rear (2.2 m behind the centroid) is past
+    // the bump at the end.
     let heights = results.column("y").unwrap();
-    let rise = max_of(heights.iter().copied()) - heights[0];
-    assert!((0.05..0.12).contains(&rise), "chassis rose {rise} m");
+    let settled: Vec<f64> = results
+        .times()
+        .iter()
+        .zip(heights.iter())
+        .filter(|(t, _)| (0.4..=1.4).contains(*t))
+        .map(|(_, y)| *y)
+        .collect();
+    let settled = settled.iter().sum::<f64>() / settled.len() as f64;
+    let rise = max_of(heights.iter().copied()) - settled;
+    assert!((0.015..0.06).contains(&rise), "chassis rose {rise} m");
     let x = *results.column("x").unwrap().last().unwrap();
     assert!(x - 2.2 > 4.5, "the vehicle ended at x = {x} m");
 
