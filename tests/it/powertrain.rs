@@ -432,11 +432,13 @@ fn up_a_grade_through_the_declared_engine_it_settles_where_its_converter_says() 
 /// m/s (a resonance of the running gear at the shoes' passage), and a run
 /// that settles against the step bears the step's torque, not the ask
 /// below it.
-fn settles(
-    label: &str,
-    powertrain: Powertrain,
-    expected: &dyn Fn(&[f64], f64, Option<usize>) -> f64,
-) {
+/// The sprocket torque a run settling at the sprocket's mean speed `w`
+/// (rad/s) should get, N m, from the run's speed ripple about its mean
+/// (rad/s) and the range its gearbox held (0-based; `None` if it shifted
+/// or has no ranges).
+type Expected<'a> = dyn Fn(&[f64], f64, Option<usize>) -> f64 + 'a;
+
+fn settles(label: &str, powertrain: Powertrain, expected: &Expected) {
     use trackgen::contact::sprocket::rolling_radius;
     let r = rolling_radius(10, m113::SHOE_PITCH);
     for grade in [0.1, 0.2, 0.3] {
