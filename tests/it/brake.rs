@@ -8,9 +8,8 @@
 //! M113A3's weight; stiffness and damping from `Brake::parking`). From
 //! the moment it stops (the first sample after the brake from which the
 //! hull stays slower than 1 mm/s for a second) it is watched 10 s
-//! (Bogacki-Shampine 1e-4); the
-//! run lasts 40 s after the brake, so that the watch fits after the
-//! slowest stop. The stop itself rings: the hull surges on the shoes'
+//! (Bogacki-Shampine 1e-4); the run lasts 40 s after the brake, so that
+//! the watch fits after the slowest stop. The stop itself rings: the hull surges on the shoes'
 //! stiction at about 0.9 Hz, lightly damped (±10 mm at first on 10 %; at
 //! the M113A3's combat weight its speed stays under 1 mm/s from 17.7,
 //! 15.9 and 22.1 s after the brake on 10, 30 and 60 %), as it does when

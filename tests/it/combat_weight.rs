@@ -8,23 +8,15 @@
 //! past `track_speed.rs`'s bound; see the guide, "Against the real
 //! vehicle".)
 
-use trackgen::multibody::TreeDescription;
-use trackgen::vehicle::{Vehicle, VehicleDynamics};
-use trackgen::vehicles::{m113, m113::M113};
-
-/// The whole vehicle's mass, kg: twice the planar side's (its track's
-/// links and its chassis' bodies, as compiled).
-fn whole_mass<V: Vehicle>() -> f64 {
-    let sum = |d: TreeDescription| d.bodies.iter().map(|b| b.mass).sum::<f64>();
-    2.0 * (sum(<V::System as VehicleDynamics>::track_description())
-        + sum(<V::System as VehicleDynamics>::chassis_description()))
-}
+use crate::support::vehicle::m113_mass;
+use trackgen::vehicles::m113;
 
 /// Relative 1e-12: the same masses summed in another order, some 170
 /// terms of about 1e1 to 1e4 kg (each sum's rounding ~1e-16 a term).
 #[test]
 fn the_m113_weighs_the_m113a3s_combat_weight() {
-    let mass = whole_mass::<M113>();
+    // Both sides: twice the planar side's compiled bodies.
+    let mass = 2.0 * m113_mass();
     assert!(
         (mass / m113::COMBAT_WEIGHT - 1.0).abs() < 1e-12,
         "{mass} kg against {} kg",

@@ -30,9 +30,10 @@
 //!   carries `cos θ` of it. Measured at the M113A3's weight, the grade
 //!   costs more than the pulled flat, never less: −0.10, +0.31 and
 //!   −1.70 % on 20, 30 and 10 %; on 10 % at 13 to 17 kW −0.8, −1.7, −1.7,
-//!   −0.2 and −1.2 %, and at 15 kW a run of 24 s instead of 16 −0.6 %
-//!   (the grade's speed swings slowly by 0.6 %): the 2 % bound is that
-//!   spread, the premise's, not the power's account. The pulled runs match
+//!   −0.2 and −1.2 %. Runs of 24 s instead of 16 do not narrow it (on 10 %
+//!   at 13 to 17 kW −0.85, −1.64, −0.59, −0.24 and −1.53 %; 20 and 30 %
+//!   within 0.65 %): the 2 % bound is that spread, the premise's, not the
+//!   power's account. The pulled runs match
 //!   the grade's speed along it to 1e-3 and slip under 0.25 % (the grade
 //!   runs' `1 − v_x / v_track`, 0.4, 2.0 and 4.4 %, is almost all the
 //!   hull's horizontal projection `1 − cos θ`). An unloaded flat run's

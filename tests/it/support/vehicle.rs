@@ -22,18 +22,22 @@ pub fn m113_with(terrain: Terrain, drive: Drive, closure: ClosureMethod) -> M113
     build::<M113>(config).expect("the M113 builds")
 }
 
-/// The M113's weight, N, from the masses declared in
-/// `src/vehicles/m113.rs` (64 shoes, the half hull, sprocket, five road
-/// wheels and arms, idler and tensioner arm).
-pub fn m113_weight() -> f64 {
-    let mass: f64 = M113Track
+/// The planar M113's mass, kg, from the masses declared in
+/// `src/vehicles/m113.rs` as compiled (one side: 64 shoes, the half hull,
+/// sprocket, five road wheels and arms, idler and tensioner arm).
+pub fn m113_mass() -> f64 {
+    M113Track
         .description()
         .bodies
         .iter()
         .chain(M113Chassis.description().bodies.iter())
         .map(|b| b.mass)
-        .sum();
-    mass * 9.81
+        .sum()
+}
+
+/// The planar M113's weight, N: [`m113_mass`] under 9.81 m/s².
+pub fn m113_weight() -> f64 {
+    m113_mass() * 9.81
 }
 
 /// The M113 sprocket's pitch radius, m, from the shoe pitch and the tooth

@@ -59,10 +59,11 @@ pub const RIM_MU: f64 = 0.4;
 ///   explicit integrator's step; its friction only spins the wheels up and
 ///   rubs the flanks.
 ///
-/// For the M113 at Chrono's masses (55.7 kN, 21 shoes on 3.28 m of ground, 18 kg shoes) the
-/// rules give a ground stiffness of 1.3e6 N/m per point (`χ` 2.1 s/m), rims
-/// 1.1e7 N/m (`χ` 0.53 s/m, `v_s` 0.50 m/s): close to the figures its
-/// declaration gives by hand (2e6, 2, 1e7, 0.5, 0.5).
+/// For the M113 at Chrono's masses (55.7 kN, 21 shoes on 3.28 m of
+/// ground, 18 kg shoes) the rules give a ground stiffness of 1.3e6 N/m per
+/// point (`χ` 2.1 s/m), rims 1.1e7 N/m (`χ` 0.53 s/m, `v_s` 0.50 m/s):
+/// close to the figures its declaration gives by hand (2e6, 2, 1e7, 0.5,
+/// 0.5).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactFit {
     /// The vehicle's weight, N.
