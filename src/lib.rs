@@ -55,7 +55,9 @@
 //! * [`vehicle`]: [`Vehicle`](vehicle::Vehicle), its configuration and the
 //!   one recipe that builds it;
 //! * [`simulate`], [`analysis`]: runs, results and sinks; equilibrium,
-//!   modes, sensitivities.
+//!   modes, sensitivities;
+//! * [`steering`]: the steady skid-steered turn on firm ground (the
+//!   general theory of Wong & Chiang).
 //!
 //! With the `oracle` feature, `reference` (the textbook route) too.
 
@@ -71,7 +73,7 @@ pub use trackgen_macros::model;
 
 pub use trackgen_runtime::{
     analysis, assembly, closure, contact, dynamics, integrate, laws, mobility, multibody, planar,
-    ride, scenario, scene, simulate, system, terrain, trig, vehicle,
+    ride, scenario, scene, simulate, steering, system, terrain, trig, vehicle,
 };
 
 #[cfg(feature = "oracle")]

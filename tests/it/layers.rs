@@ -48,6 +48,7 @@ pub const RUNTIME: Graph = &[
     ("planar", &[]),
     ("simd", &[]),
     ("ride", &[]),
+    ("steering", &["ride"]),
     ("trig", &["simd"]),
     // physics: the laws, the bodies, contact
     ("laws", &["planar"]),
@@ -200,13 +201,14 @@ pub const APP: Graph = &[
     ("modes", &["console", "cli", "offered"]),
     ("fmu", &["cli", "offered"]),
     ("mobility", &["cli", "offered"]),
+    ("steer", &["console", "cli", "offered", "modes"]),
     (
         "run",
         &["console", "cli", "offered", "outputs", "report", "modes"],
     ),
     (
         "app",
-        &["cli", "offered", "run", "mobility", "modes", "fmu"],
+        &["cli", "offered", "run", "mobility", "modes", "steer", "fmu"],
     ),
     ("lib", &["app"]),
 ];

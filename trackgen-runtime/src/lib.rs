@@ -11,7 +11,9 @@
 //!    once ([`trig`]), and `simd`, the one switch to AVX2 builds of the hot
 //!    loops; [`ride`], the ride-quality filters over a sampled acceleration
 //!    (absorbed power, ISO 2631-1 weightings, peak after a low-pass), which
-//!    need nothing else;
+//!    need nothing else; [`steering`], the steady skid-steered turn on
+//!    firm ground (the general theory of Wong & Chiang, the simplified
+//!    theory's criterion), which needs only the standard gravity;
 //! 2. [`laws`]: every force law with its energy terms (contact's normal
 //!    laws and friction, stiction, the torsion spring, the penalty joint);
 //! 3. [`multibody`]: the traits generated code implements, the run-time
@@ -69,6 +71,7 @@
 pub mod planar;
 pub mod ride;
 mod simd;
+pub mod steering;
 pub mod trig;
 // 2-4. physics
 pub mod contact;
