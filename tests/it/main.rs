@@ -53,6 +53,7 @@ mod shifted_chain;
 mod soft_ground;
 mod soil_laws;
 mod stands_alone;
+mod steering;
 mod stiction;
 mod terrain;
 mod track_speed;

@@ -62,6 +62,23 @@ pub fn drawbar_at<V: Vehicle>(
     soil: SoilPreset,
     pull: f64,
 ) -> Result<DrawbarPoint, EventError> {
+    hold::<V>(settings, Soil::Soft(soil), pull)
+}
+
+/// `V` on rigid ground holding [`TRACK_SPEED`] with no drawbar load: its
+/// running gear's own motion resistance
+/// ([`DrawbarPoint::resistance_coefficient`]), what a steady turn's
+/// tracks roll against ([`steering`](crate::steering)).
+pub fn motion_resistance<V: Vehicle>(settings: &EventSettings) -> Result<DrawbarPoint, EventError> {
+    hold::<V>(settings, Soil::Rigid, 0.0)
+}
+
+/// `V` on `soil` holding [`TRACK_SPEED`] against `pull` (N).
+fn hold<V: Vehicle>(
+    settings: &EventSettings,
+    soil: Soil,
+    pull: f64,
+) -> Result<DrawbarPoint, EventError> {
     settings.check(EVENT)?;
     if !(pull.is_finite() && pull >= 0.0) {
         return Err(EventError::Setting {
@@ -73,7 +90,7 @@ pub fn drawbar_at<V: Vehicle>(
     }
     let terrain = Terrain::Flat { height: 0.0 };
     let scenario = Scenario {
-        soil: Soil::Soft(soil),
+        soil,
         engine: false,
         ..settings.trial(terrain.clone(), HOLD, 0.01)
     };

@@ -163,6 +163,17 @@ pub trait VehicleDynamics: Simulated + Send + Sized + sealed::Build {
     /// states' unit (beyond it the point slides). Empty without stiction.
     fn stiction_limits(&mut self, t: f64, y: &[f64]) -> Result<Vec<Option<f64>>, SimulationError>;
 
+    /// The ground's normal load on the track at `y`: every point where a
+    /// shoe touches the ground (its ground points and the terrain's
+    /// corners in its outline), as (the point, global frame, m; the normal
+    /// force, N), link by link. The loads a steering estimate spreads
+    /// under the run ([`steering`](crate::steering)).
+    fn ground_loads(
+        &mut self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<Vec<(Vector2<f64>, f64)>, SimulationError>;
+
     /// Starts the vehicle from `y` (an [equilibrium](crate::analysis::equilibrium),
     /// say) instead of the assembled state: [`SimulationError::StateLength`]
     /// for a state of the wrong length, [`SimulationError::NonFinite`] for

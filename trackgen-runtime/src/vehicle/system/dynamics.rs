@@ -98,6 +98,34 @@ where
             .collect())
     }
 
+    fn ground_loads(
+        &mut self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<Vec<(Vector2<f64>, f64)>, SimulationError> {
+        self.evaluate(t, y)?;
+        let points = self.geometry.shoe.ground_points.len();
+        let corners = self.config.corner_laws();
+        let work = &self.work;
+        Ok(work
+            .contacts
+            .iter()
+            .filter(|c| c.other.is_none())
+            .map(|c| {
+                let normal = match c.ground_point_slot(points) {
+                    Some(slot) => work
+                        .ground_normal
+                        .get(slot)
+                        .copied()
+                        .flatten()
+                        .unwrap_or(0.0),
+                    None => corners.respond(c).normal,
+                };
+                (c.point, normal)
+            })
+            .collect())
+    }
+
     fn set_start(&mut self, y: &[f64]) -> Result<(), SimulationError> {
         if y.len() != self.y0.len() {
             return Err(SimulationError::StateLength {
