@@ -89,6 +89,17 @@ pub const TORSION_PRELOAD: f64 = 1.0e4;
 /// not see): the M113's 15-inch (0.381 m) single-pin track; Chrono's model
 /// gives none (the 15 in: AFV Database, M113, track T130E1).
 pub const TRACK_WIDTH: f64 = 0.381;
+/// The gauge (tread), m: the tracks' centre lines 85.0 in apart (AFV
+/// Database, M113, "Tread 85.0 in, 216 cm"; the same hull and running
+/// gear through the M113A3). What `steer` turns two of this planar
+/// track at.
+pub const GAUGE: f64 = 85.0 * 0.0254;
+/// The M113A3's X200-4 transmission's minimum steer ratios in ranges 1
+/// to 4 (it pivots in neutral): US Army Ordnance subcourse OD1714, lesson
+/// 1 ("an infinitely variable, hydrostatically controlled differential
+/// with a minimum steer ratio ... First 2.31:1 ... Fourth 1.22:1"), read
+/// as the outer sprocket's speed over the inner's at full steer.
+pub const STEER_RATIOS: [f64; 4] = [2.31, 1.58, 1.32, 1.22];
 /// The driver's seat, m, in the track-assembly frame: Chrono's
 /// `M113_Chassis` puts the driver at (0, 0.5, 1.2) m in the chassis
 /// reference frame, whose x-z positions this frame shares: over the

@@ -82,6 +82,11 @@ pub const SHOCK_LEVER: f64 = 0.401_532_2;
 /// Track width, m, for soft soil: the shoe's ground pad, 0.40 m
 /// (Chrono's `Marder_TrackShoeSinglePin`; 0.48 m over the side pads).
 pub const TRACK_WIDTH: f64 = 0.40;
+/// The gauge, m: Project Chrono's Marder model places its track
+/// assemblies 1.36 m either side of the chassis' centre line
+/// (`Marder_Vehicle.cpp`, a secondary source: no published figure was
+/// found). What `steer` turns two of this planar track at.
+pub const GAUGE: f64 = 2.0 * 1.36;
 /// Length of the idler's tensioner arm, m (see the module docs).
 pub const TENSIONER_ARM: f64 = 0.2;
 /// Tensioner spring (N/m), damper (N s/m) and preload (N) of Chrono's

@@ -15,10 +15,12 @@ use crate::fmu::FmuArgs;
 use crate::mobility::MobilityArgs;
 use crate::modes::ModesArgs;
 use crate::offered::Offered;
+use crate::steer::SteerArgs;
 
 /// Drive a declared planar tracked vehicle over a course (`run`, the
 /// default), find its mobility limits (`mobility`), its modes at rest
-/// (`modes`), or pack it as an FMU (`fmu`).
+/// (`modes`), estimate its steady turns (`steer`), or pack it as an FMU
+/// (`fmu`).
 #[derive(Parser, Debug)]
 #[command(
     version,
@@ -45,13 +47,16 @@ pub(crate) enum Command {
     Mobility(MobilityArgs),
     /// The vehicle at rest on flat ground and its modes there.
     Modes(ModesArgs),
+    /// Its steady turns on firm ground, estimated from its loads at rest
+    /// by the general theory of skid steering.
+    Steer(SteerArgs),
     /// Packs the vehicle's built FMU library (`export_fmu!`) into FMI 3.0
     /// and 2.0 archives.
     Fmu(FmuArgs),
 }
 
 /// The subcommands' names, each of which takes `--vehicle`.
-const SUBCOMMANDS: [&str; 4] = ["run", "mobility", "modes", "fmu"];
+const SUBCOMMANDS: [&str; 5] = ["run", "mobility", "modes", "steer", "fmu"];
 
 /// A vehicle the application offers: its type, the name `--vehicle` and
 /// the output folders know it by, and what its declaration does not say.
@@ -71,6 +76,8 @@ impl Entry {
                 name: V::NAME.to_lowercase(),
                 powertrain: V::powertrain(),
                 published: Vec::new(),
+                gauge: None,
+                steer_ratios: Vec::new(),
             },
             dispatch: dispatch::<V>,
         }
@@ -89,6 +96,21 @@ impl Entry {
         self
     }
 
+    /// The real vehicle's gauge, m (its tracks' centre lines apart), which
+    /// `steer` turns two of its planar tracks at.
+    pub fn gauge(mut self, gauge: f64) -> Self {
+        self.offered.gauge = Some(gauge);
+        self
+    }
+
+    /// The real vehicle's steer ratios (the outer sprocket's speed over
+    /// the inner's at full steer, one per range), which `steer` turns at
+    /// unless `--ratio` gives others.
+    pub fn steer_ratios(mut self, ratios: &[f64]) -> Self {
+        self.offered.steer_ratios = ratios.to_vec();
+        self
+    }
+
     /// The real vehicle's published figures, which the mobility report
     /// prints beside its answers.
     pub fn published(mut self, figures: &[Published]) -> Self {
@@ -103,6 +125,7 @@ fn dispatch<V: Vehicle>(entry: &Offered, command: Command) -> ExitCode {
         Command::Run(args) => crate::run::main::<V>(entry, &args),
         Command::Mobility(args) => crate::mobility::main::<V>(entry, &args),
         Command::Modes(args) => crate::modes::main::<V>(entry, &args),
+        Command::Steer(args) => crate::steer::main::<V>(entry, &args),
         Command::Fmu(args) => crate::fmu::main::<V>(entry, &args),
     }
 }
@@ -183,6 +206,7 @@ impl App {
             Command::Run(a) => a.vehicle.clone(),
             Command::Mobility(a) => a.vehicle.clone(),
             Command::Modes(a) => a.vehicle.clone(),
+            Command::Steer(a) => a.vehicle.clone(),
             Command::Fmu(a) => a.vehicle.clone(),
         };
         // The parser took only offered names; without a name, the first.
@@ -248,7 +272,7 @@ mod tests {
             .map(|c| c.get_name())
             .filter(|n| *n != "help")
             .collect();
-        assert_eq!(subcommands, ["run", "mobility", "modes", "fmu"]);
+        assert_eq!(subcommands, ["run", "mobility", "modes", "steer", "fmu"]);
         for sub in subcommands {
             let table = guide_table(sub);
             let options: Vec<_> = command

@@ -190,7 +190,7 @@ fn soil(s: &str) -> Result<Soil, String> {
 
 /// A finite number in `range` (the scenario's: [`Scenario::check`] holds
 /// a run built in code to the same), or why not, `noun` naming it.
-fn within(s: &str, range: Range, noun: &str) -> Result<f64, String> {
+pub(crate) fn within(s: &str, range: Range, noun: &str) -> Result<f64, String> {
     let what = format!("{noun} is {}", range.what);
     let v: f64 = s
         .trim()

@@ -1,6 +1,7 @@
 //! The trackgen application for any declared vehicle: the main job
-//! (`run`), the mobility events (`mobility`), the modes at rest (`modes`)
-//! and the FMU's packing (`fmu`), as one command line.
+//! (`run`), the mobility events (`mobility`), the modes at rest (`modes`),
+//! the steady turns estimated from the loads at rest (`steer`) and the
+//! FMU's packing (`fmu`), as one command line.
 //!
 //! A user's own binary gets every subcommand, option, output and report
 //! the built-in vehicles have:
@@ -42,5 +43,6 @@ mod offered;
 mod outputs;
 mod report;
 mod run;
+mod steer;
 
 pub use app::{App, Entry, main};

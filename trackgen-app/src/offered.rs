@@ -1,5 +1,6 @@
 //! What the subcommands know of the vehicle they run besides its type:
-//! its name, its powertrain, the real vehicle's published figures.
+//! its name, its powertrain, the real vehicle's published figures and
+//! gauge.
 
 use trackgen::mobility::Published;
 use trackgen::vehicle::Powertrain;
@@ -13,6 +14,13 @@ pub struct Offered {
     pub powertrain: Option<Powertrain>,
     /// The real vehicle's published figures.
     pub published: Vec<Published>,
+    /// The real vehicle's gauge (its tracks' centre lines apart), m, if
+    /// published: what `steer` turns two of the planar tracks at.
+    pub gauge: Option<f64>,
+    /// Its transmission's steer ratios (outer sprocket's speed over the
+    /// inner's at full steer), one per range, if published: the turns
+    /// `steer` makes besides its radii.
+    pub steer_ratios: Vec<f64>,
 }
 
 impl Offered {

@@ -3,7 +3,7 @@
 //! (the default) and the Marder (`--vehicle marder`).
 //!
 //! `cargo run --release -p trackgen-cli -- --help`; the subcommands `run`
-//! (the default), `mobility`, `modes` and `fmu`.
+//! (the default), `mobility`, `modes`, `steer` and `fmu`.
 
 use std::process::ExitCode;
 
@@ -13,7 +13,16 @@ use trackgen_app::{App, Entry};
 
 fn main() -> ExitCode {
     App::new()
-        .vehicle(Entry::of::<M113>().published(&m113::PUBLISHED))
-        .vehicle(Entry::of::<Marder>().published(&marder::PUBLISHED))
+        .vehicle(
+            Entry::of::<M113>()
+                .published(&m113::PUBLISHED)
+                .gauge(m113::GAUGE)
+                .steer_ratios(&m113::STEER_RATIOS),
+        )
+        .vehicle(
+            Entry::of::<Marder>()
+                .published(&marder::PUBLISHED)
+                .gauge(marder::GAUGE),
+        )
         .main()
 }
