@@ -47,7 +47,7 @@
 //!   loads, [`DynamicsError`](multibody::DynamicsError);
 //! * [`contact`]: terrain, contact detection and response, soft soil;
 //! * [`dynamics`], [`closure`]: forward dynamics at a state, closing the
-//!   loop in time;
+//!   loop in time; [`spatial`]: a planar chain floating in space;
 //! * [`integrate`]: the integrators,
 //!   [`SimulationError`](integrate::SimulationError);
 //! * [`system`], [`assembly`]: subsystems a simulation runs, placing a
@@ -73,7 +73,7 @@ pub use trackgen_macros::model;
 
 pub use trackgen_runtime::{
     analysis, assembly, closure, contact, dynamics, integrate, laws, mobility, multibody, planar,
-    ride, scenario, scene, simulate, steering, system, terrain, trig, vehicle,
+    ride, scenario, scene, simulate, spatial, steering, system, terrain, trig, vehicle,
 };
 
 #[cfg(feature = "oracle")]

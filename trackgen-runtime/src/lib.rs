@@ -29,7 +29,9 @@
 //!    O(n) route, the dense cross-check, their derivatives, the shifted
 //!    chain), [`closure`] (closing the loop in time: partitioning with
 //!    switching, multipliers, penalty; [`RecoveryError`](closure::RecoveryError)),
-//!    `reference` (feature `oracle`: the textbook route);
+//!    `reference` (feature `oracle`: the textbook route); [`spatial`]
+//!    (a planar chain floating in space, over its generated code: the
+//!    track of a spatial vehicle);
 //! 6. time: [`integrate`] (RK4, Dormand-Prince 5(4), Bogacki-Shampine
 //!    3(2), ROS2, ROS34PW2, the automatic choice;
 //!    [`SimulationError`](integrate::SimulationError), which wraps the
@@ -83,6 +85,7 @@ pub mod closure;
 pub mod dynamics;
 #[cfg(feature = "oracle")]
 pub mod reference;
+pub mod spatial;
 // 6. time
 pub mod integrate;
 // 7. subsystems
