@@ -52,7 +52,7 @@ mod shift;
 mod shifted_chain;
 mod soft_ground;
 mod soil_laws;
-mod spatial_chain;
+mod spatial_tree;
 mod stands_alone;
 mod steering;
 mod stiction;

@@ -1,11 +1,16 @@
-//! A planar chain floating in space: the track of a spatial vehicle (the
-//! guide's "Steering"), after Choi, Lee & Shabana,
-//! "Spatial dynamics of multibody tracked vehicles" (*Vehicle System
-//! Dynamics* 29, 1998), who keep each track a closed chain of pinned
-//! links whose pins are parallel, so that the chain stays in one plane
-//! while that plane moves in space.
+//! A planar tree floating in space: a track of a spatial vehicle, or its
+//! hull with the running gear of both sides (the guide's "The
+//! formulation", §6), after Choi, Lee & Shabana, "Spatial dynamics of
+//! multibody tracked vehicles" (*Vehicle System Dynamics* 29, 1998), who
+//! keep each track a closed chain of pinned links whose pins are
+//! parallel, so that the chain stays in one plane while that plane moves
+//! in space. The hull's running gear turns about axes parallel too (the
+//! arms' pivots, the wheels' axles), each side in its own plane half a
+//! gauge from the hull's: a body may sit at a constant offset along the
+//! plane's normal.
 //!
-//! **Coordinates.** The chain's plane is a frame `P` whose axes are `ξ`
+//! **Coordinates** (written for a chain; a tree's root plays link 1's
+//! part). The chain's plane is a frame `P` whose axes are `ξ`
 //! (forward, kept horizontal), `η` (the pins' axis, normal to the plane)
 //! and `ζ`; its orientation is `A = R_z(ψ) R_x(φ)`, a yaw `ψ` and a roll
 //! `φ` (a pitch of the plane is a rotation in it, which the links' angles
@@ -27,7 +32,11 @@
 //! across the plane and its angular velocity about `ξ` and `ζ` only on
 //! the second, and its spin about `η` only on the first: the kinetic
 //! energy is the planar chain's plus `½ Σ mᵏ (v_η + ω_ζ ξᵏ − ω_ξ ζᵏ)²`
-//! plus the links' rotation about the plane's axes.
+//! plus the links' rotation about the plane's axes. A body offset by `e`
+//! along `η` moves in the plane at `e (−ω_ζ, ω_ξ)` more, which couples
+//! the two sets: the out-of-plane equations then take the Schur
+//! complement `M_w − Cᵀ M_i⁻¹ C`, `M_i⁻¹ C` by the planar route under
+//! two more sets of loads (still O(n)).
 //!
 //! **Equations of motion** (Newton–Euler per link in `P`'s components,
 //! `a = V̇ + ω × V`, `τ = Ḣ + ω × H`, projected on the quasi-velocities):
@@ -40,15 +49,15 @@
 //! link is symmetric about the chain's plane (no products of inertia with
 //! `η`).
 //!
-//! `tests/it/spatial_chain.rs` holds the accelerations to a dense route
+//! `tests/it/spatial_tree.rs` holds the accelerations to a dense route
 //! written independently: each link's pose from the coordinates with
 //! plain rotation matrices, its Jacobians and bias accelerations by
 //! Taylor arithmetic, `Jᵀ M J` and Newton–Euler's right-hand side summed
 //! and solved in the coordinates' own rates.
 
-mod chain;
+mod tree;
 
-pub use chain::{ChainPose, ChainRates, SpatialChain, SpatialLoad};
+pub use tree::{FloatingTree, PlanePose, PlaneRates, SpatialLoad};
 
 use nalgebra::Matrix3;
 
@@ -89,22 +98,38 @@ pub fn plane_rotation(yaw: f64, roll: f64) -> Matrix3<f64> {
 /// Why a spatial chain cannot be made.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SpatialError {
-    /// One out-of-plane inertia per link is needed.
-    #[error("the chain has {links} links but {given} out-of-plane inertias were given")]
+    /// One out-of-plane inertia per body is needed.
+    #[error("the tree has {bodies} bodies but {given} out-of-plane inertias were given")]
     Inertias {
-        /// The chain's links.
-        links: usize,
+        /// The tree's bodies.
+        bodies: usize,
         /// The inertias given.
         given: usize,
     },
-    /// An inertia is not a positive definite pair with the link's mass
-    /// distribution (`xx > 0`, `zz > 0`, `xx zz > xz²`), or not finite.
-    #[error("link {link}'s out-of-plane inertia is not positive definite: {inertia:?}")]
+    /// An inertia is not positive definite (`xx > 0`, `zz > 0`,
+    /// `xx zz > xz²`), or not finite.
+    #[error("body {body}'s out-of-plane inertia is not positive definite: {inertia:?}")]
     Inertia {
-        /// The link, 1-based.
-        link: usize,
+        /// The body, 0-based.
+        body: usize,
         /// What was given.
         inertia: OutOfPlaneInertia,
+    },
+    /// One offset per body is needed.
+    #[error("the tree has {bodies} bodies but {given} offsets were given")]
+    Offsets {
+        /// The tree's bodies.
+        bodies: usize,
+        /// The offsets given.
+        given: usize,
+    },
+    /// An offset is not finite.
+    #[error("body {body}'s offset across the plane is not finite: {offset}")]
+    Offset {
+        /// The body, 0-based.
+        body: usize,
+        /// What was given, m.
+        offset: f64,
     },
     /// The planar model's gravity must point down its `y` axis, which
     /// becomes the world's vertical.

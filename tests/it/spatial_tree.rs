@@ -1,5 +1,6 @@
-//! The floating chain (`trackgen::spatial`) against a dense route written
-//! apart from it: each link's pose from the coordinates
+//! The floating tree (`trackgen::spatial`: a track's chain, a hull with
+//! its running gear off its plane) against a dense route written apart
+//! from it: each body's pose from the coordinates
 //! `q = [r¹ (3), ψ, φ, θ¹ … θⁿ]` by plain rotation matrices and the
 //! planar description's joint points (not the generated code), its
 //! Jacobians and bias accelerations by second-order Taylor arithmetic
@@ -11,7 +12,8 @@
 
 use trackgen::multibody::{RecursiveModel, TreeDescription};
 use trackgen::nalgebra::{DMatrix, DVector, Matrix3, SVector, Vector3};
-use trackgen::spatial::{ChainPose, ChainRates, OutOfPlaneInertia, SpatialChain, SpatialLoad};
+use trackgen::spatial::{FloatingTree, OutOfPlaneInertia, PlanePose, PlaneRates, SpatialLoad};
+use trackgen::vehicles::m113::M113Chassis;
 
 trackgen::model! {
     /// 3 heterogeneous links, open (`support/chains.rs`'s `Hetero3Open`).
@@ -169,7 +171,7 @@ fn pitch(theta: Jet) -> Mat {
 
 /// Every link's centroid and orientation in the world along the path
 /// `q + q̇ t`, from the description's joint points.
-fn poses(description: &TreeDescription, q: &[Jet]) -> Vec<(Vec3, Mat)> {
+fn poses(description: &TreeDescription, offsets: &[f64], q: &[Jet]) -> Vec<(Vec3, Mat)> {
     let a = plane(q[3], q[4]);
     let bodies = &description.bodies;
     let mut places: Vec<[Jet; 2]> = Vec::with_capacity(bodies.len());
@@ -193,7 +195,7 @@ fn poses(description: &TreeDescription, q: &[Jet]) -> Vec<(Vec3, Mat)> {
         .iter()
         .enumerate()
         .map(|(b, p)| {
-            let local = mat_vec(&a, &[p[0], Jet::constant(0.0), p[1]]);
+            let local = mat_vec(&a, &[p[0], Jet::constant(offsets[b]), p[1]]);
             let at = [q[0] + local[0], q[1] + local[1], q[2] + local[2]];
             (at, mat_mul(&a, &pitch(q[5 + b])))
         })
@@ -222,6 +224,7 @@ fn skew(w: &Vector3<f64>) -> Matrix3<f64> {
 /// The dense route: `q̈` and the kinetic energy `½ q̇ᵀ M q̇`.
 fn dense(
     description: &TreeDescription,
+    offsets: &[f64],
     across: &[OutOfPlaneInertia],
     q: &DVector<f64>,
     qd: &DVector<f64>,
@@ -239,7 +242,10 @@ fn dense(
     let mut jw = vec![DMatrix::<f64>::zeros(3, dof); n];
     for j in 0..dof {
         let unit = DVector::from_fn(dof, |i, _| if i == j { 1.0 } else { 0.0 });
-        for (b, (at, rot)) in poses(description, &jets(q, &unit)).iter().enumerate() {
+        for (b, (at, rot)) in poses(description, offsets, &jets(q, &unit))
+            .iter()
+            .enumerate()
+        {
             let (r, rd) = (part(rot, |x| x.v), part(rot, |x| x.d));
             jr[b].set_column(j, &Vector3::new(at[0].d, at[1].d, at[2].d));
             jw[b].set_column(j, &vee(&(rd * r.transpose())));
@@ -247,7 +253,7 @@ fn dense(
     }
     let mut mass = DMatrix::<f64>::zeros(dof, dof);
     let mut rhs = DVector::<f64>::zeros(dof);
-    for (b, (at, rot)) in poses(description, &jets(q, qd)).iter().enumerate() {
+    for (b, (at, rot)) in poses(description, offsets, &jets(q, qd)).iter().enumerate() {
         let m = description.bodies[b].mass;
         let (r, rd, rdd) = (
             part(rot, |x| x.v),
@@ -293,8 +299,8 @@ fn state<const DOF: usize>(
     links: usize,
     seed: u64,
 ) -> (
-    ChainPose<DOF>,
-    ChainRates<DOF>,
+    PlanePose<DOF>,
+    PlaneRates<DOF>,
     Vec<SpatialLoad>,
     Vec<OutOfPlaneInertia>,
 ) {
@@ -313,13 +319,13 @@ fn state<const DOF: usize>(
     }
     rates[0] = 3.0 * next();
     rates[1] = next();
-    let pose = ChainPose {
+    let pose = PlanePose {
         origin: Vector3::new(40.0 * next(), 5.0 * next(), next()),
         yaw: 3.0 * next(),
         roll: 0.6 * next(),
         planar,
     };
-    let rates = ChainRates {
+    let rates = PlaneRates {
         planar: rates,
         across: Vector3::new(next(), 0.5 * next(), 0.8 * next()),
     };
@@ -341,10 +347,17 @@ fn state<const DOF: usize>(
 
 /// The route's `q̈`, the dense route's, and both kinetic energies, at one
 /// state of `model`.
-fn both<M: RecursiveModel<DOF>, const DOF: usize>(model: &M, seed: u64) -> (f64, f64, f64) {
+fn both<M: RecursiveModel<DOF>, const DOF: usize>(
+    model: &M,
+    offsets: &[f64],
+    seed: u64,
+) -> (f64, f64, f64) {
     let links = DOF - 2;
     let (pose, rates, loads, across) = state::<DOF>(links, seed);
-    let chain = SpatialChain::new(model, across.clone()).unwrap();
+    let chain = FloatingTree::new(model, across.clone())
+        .unwrap()
+        .with_offsets(offsets.to_vec())
+        .unwrap();
     let (u_in, w) = chain.accelerations(&pose, &rates, &loads).unwrap();
     // Coordinates and their rates.
     let mut q = DVector::zeros(links + 5);
@@ -375,7 +388,7 @@ fn both<M: RecursiveModel<DOF>, const DOF: usize>(model: &M, seed: u64) -> (f64,
         links + 5,
         moving.iter().zip(&pushed).map(|(m, p)| m.d + p.v),
     );
-    let (oracle, energy) = dense(&model.description(), &across, &q, &qd, &loads);
+    let (oracle, energy) = dense(&model.description(), offsets, &across, &q, &qd, &loads);
     let error = (&route - &oracle).norm() / oracle.norm();
     let energy_route = chain.kinetic_energy(&pose, &rates);
     (error, (energy_route - energy).abs() / energy, oracle.norm())
@@ -383,19 +396,19 @@ fn both<M: RecursiveModel<DOF>, const DOF: usize>(model: &M, seed: u64) -> (f64,
 
 #[test]
 fn the_floating_chain_equals_the_dense_spatial_route() {
-    // Norm-wise relative, over five states each of 3, 10 and 128 links:
-    // the accelerations to 1e-10 (the dense LU's rounding grows with the
-    // mass matrix's condition number, ~n² for a chain: measured 1e-15 at
-    // 3 and 10 links, 0.8–1.5e-12 at 128), the kinetic energy to 1e-12
-    // (measured 3e-15). Leaving out one inertial term the plane's motion
-    // adds (the cross term of the links' true and relative rates, or the
-    // links' inertia turning at their true rate) is off by 2e-3 and
-    // 3e-4 at 3 links.
+    // Norm-wise relative, over five states each of 3, 10 and 128 links
+    // in one plane: the accelerations to 1e-10 (the dense LU's rounding
+    // grows with the mass matrix's condition number, ~n² for a chain:
+    // measured 1e-15 at 3 and 10 links, 0.8–1.5e-12 at 128), the kinetic
+    // energy to 1e-12 (measured 3e-15). Leaving out one inertial term the
+    // plane's motion adds (the cross term of the links' true and relative
+    // rates, or the links' inertia turning at their true rate) is off by
+    // 2e-3 and 3e-4 at 3 links.
     for seed in 1..=5 {
         for (links, (error, energy, size)) in [
-            (3, both(&Open3, seed)),
-            (10, both(&Open10, seed)),
-            (128, both(&Open128, seed)),
+            (3, both(&Open3, &[0.0; 3], seed)),
+            (10, both(&Open10, &[0.0; 10], seed)),
+            (128, both(&Open128, &[0.0; 128], seed)),
         ] {
             assert!(size > 1.0, "a state that moves: |q̈| {size}");
             assert!(
@@ -411,12 +424,44 @@ fn the_floating_chain_equals_the_dense_spatial_route() {
 }
 
 #[test]
-fn a_chain_without_its_inertias_or_with_bad_ones_is_refused() {
+fn a_hull_with_its_running_gear_off_its_plane_equals_the_dense_route() {
+    // The M113's chassis (hull, sprocket, arms, wheels, tensioner, idler)
+    // with every part half a gauge to the left of the hull's plane, and a
+    // 10-link chain with every link at its own offset: the offsets couple
+    // the in-plane and out-of-plane rates (the Schur complement through
+    // the planar route). The same bounds as in one plane (measured
+    // 2–5e-15 and up to 1.3e-14); without the planar centripetal terms in
+    // the offset bodies' share of the out-of-plane equations the
+    // accelerations were off by 5e-2 to 2e-1.
+    let parts = M113Chassis.description().bodies.len();
+    let mut left = vec![1.08; parts];
+    left[0] = 0.0;
+    let scattered: Vec<f64> = (0..10).map(|k| 0.3 * (k as f64 - 4.5)).collect();
+    for seed in 1..=5 {
+        for (what, (error, energy, size)) in [
+            ("the M113's chassis", both(&M113Chassis, &left, seed)),
+            ("a chain off its plane", both(&Open10, &scattered, seed)),
+        ] {
+            assert!(size > 1.0, "{what}: |q̈| {size}");
+            assert!(error < 1e-10, "{what}, seed {seed}: q̈ off by {error:e}");
+            assert!(
+                energy < 1e-12,
+                "{what}, seed {seed}: energy off by {energy:e}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_tree_without_its_inertias_or_offsets_or_with_bad_ones_is_refused() {
     use trackgen::spatial::SpatialError;
     let plate = OutOfPlaneInertia::plate(18.0, 0.154, 0.38, 0.06);
     assert!(matches!(
-        SpatialChain::new(&Open3, vec![plate; 2]),
-        Err(SpatialError::Inertias { links: 3, given: 2 })
+        FloatingTree::new(&Open3, vec![plate; 2]),
+        Err(SpatialError::Inertias {
+            bodies: 3,
+            given: 2
+        })
     ));
     let flat = OutOfPlaneInertia {
         xx: 0.1,
@@ -424,13 +469,25 @@ fn a_chain_without_its_inertias_or_with_bad_ones_is_refused() {
         xz: 0.2,
     };
     assert!(matches!(
-        SpatialChain::new(&Open3, vec![plate, flat, plate]),
-        Err(SpatialError::Inertia { link: 2, .. })
+        FloatingTree::new(&Open3, vec![plate, flat, plate]),
+        Err(SpatialError::Inertia { body: 1, .. })
     ));
     let nan = OutOfPlaneInertia {
         xx: f64::NAN,
         ..plate
     };
-    assert!(SpatialChain::new(&Open3, vec![nan, plate, plate]).is_err());
-    assert!(SpatialChain::new(&Open3, vec![plate; 3]).is_ok());
+    assert!(FloatingTree::new(&Open3, vec![nan, plate, plate]).is_err());
+    let tree = FloatingTree::new(&Open3, vec![plate; 3]).unwrap();
+    assert!(matches!(
+        tree.with_offsets(vec![0.0, f64::INFINITY, 0.0]),
+        Err(SpatialError::Offset { body: 1, .. })
+    ));
+    let tree = FloatingTree::new(&Open3, vec![plate; 3]).unwrap();
+    assert!(matches!(
+        tree.with_offsets(vec![0.0; 4]),
+        Err(SpatialError::Offsets {
+            bodies: 3,
+            given: 4
+        })
+    ));
 }

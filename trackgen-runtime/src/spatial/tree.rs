@@ -1,0 +1,402 @@
+//! The floating tree's kinematics, kinetic energy and forward dynamics
+//! over a planar model's generated code.
+
+use nalgebra::{Matrix2, Matrix3, SVector, Vector2, Vector3};
+
+use super::{OutOfPlaneInertia, SpatialError, plane_rotation};
+use crate::multibody::{BodyLoad, DynamicsError, RecursiveModel};
+
+/// Where the tree is: its root's centroid in the world, the plane's yaw
+/// and roll, and the bodies' angles in the plane.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlanePose<const DOF: usize> {
+    /// The root's centroid (a track's link 1, a hull), world frame, m.
+    pub origin: Vector3<f64>,
+    /// The plane's yaw `ψ`, rad.
+    pub yaw: f64,
+    /// The plane's roll `φ`, rad (|φ| < 90°).
+    pub roll: f64,
+    /// The planar model's `q_i` with its root at the plane's origin:
+    /// `[0, 0, θ¹ … θⁿ]` (the first two are not read).
+    pub planar: SVector<f64, DOF>,
+}
+
+/// How the tree moves: the quasi-velocities of the module's docs.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneRates<const DOF: usize> {
+    /// In the plane: `[v_ξ, v_ζ, θ̇¹ − ω_η … θ̇ⁿ − ω_η]` (m/s, rad/s), the
+    /// planar model's `q̇_i`.
+    pub planar: SVector<f64, DOF>,
+    /// Out of it: `(v_η, ω_ξ, ω_ζ)` (m/s, rad/s).
+    pub across: Vector3<f64>,
+}
+
+/// A load on a body at its centroid, world frame: force (N) and moment
+/// (N m).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SpatialLoad {
+    /// Force, N.
+    pub force: Vector3<f64>,
+    /// Moment about the centroid, N m.
+    pub moment: Vector3<f64>,
+}
+
+/// A planar tree (any [`RecursiveModel`]: its generated code) floating in
+/// space: every body turns about the plane's normal `η`, at its own
+/// constant distance along it from the root (a track's links all at 0; a
+/// hull's running gear at plus or minus half the gauge), with its
+/// inertia about the plane's other two axes.
+pub struct FloatingTree<'m, M, const DOF: usize> {
+    model: &'m M,
+    masses: Vec<f64>,
+    inertias: Vec<f64>,
+    across: Vec<OutOfPlaneInertia>,
+    offsets: Vec<f64>,
+    gravity: f64,
+}
+
+/// What every body's motion gives at a state, in `P`'s components.
+struct BodyMotion {
+    /// Centroid relative to the root in the plane, `(ξ, ζ)`, m.
+    place: Vec<Vector2<f64>>,
+    /// Its part from the bodies' rates alone (`v = 0`), m/s.
+    relative: Vec<Vector2<f64>>,
+    /// The full velocity, `(V_ξ, V_η, V_ζ)`, m/s.
+    velocity: Vec<Vector3<f64>>,
+    /// The planar quadratic velocity terms `γ` (eq. (14)) at `q̇_i`,
+    /// m/s² (read only where a body is off the plane).
+    gamma: Vec<Vector2<f64>>,
+    /// `(sin θ, cos θ)` of every body.
+    trig: Vec<(f64, f64)>,
+}
+
+/// `D w`: the in-plane velocity a unit offset along `η` adds, `(−ω_ζ, ω_ξ)`.
+fn offset_velocity(across: &Vector3<f64>) -> Vector2<f64> {
+    Vector2::new(-across.z, across.y)
+}
+
+/// `Dᵀ f`: an in-plane force at a unit offset, on the out-of-plane
+/// quasi-velocities `(v_η, ω_ξ, ω_ζ)`.
+fn offset_force(f: Vector2<f64>) -> Vector3<f64> {
+    Vector3::new(0.0, f.y, -f.x)
+}
+
+impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
+    /// `model` in space, every body in the root's plane, with `across[k]`
+    /// the out-of-plane inertia of body `k`.
+    pub fn new(model: &'m M, across: Vec<OutOfPlaneInertia>) -> Result<Self, SpatialError> {
+        let description = model.description();
+        let bodies = description.bodies.len();
+        if across.len() != bodies {
+            return Err(SpatialError::Inertias {
+                bodies,
+                given: across.len(),
+            });
+        }
+        for (k, i) in across.iter().enumerate() {
+            let finite = [i.xx, i.zz, i.xz].iter().all(|v| v.is_finite());
+            if !(finite && i.xx > 0.0 && i.zz > 0.0 && i.xx * i.zz > i.xz * i.xz) {
+                return Err(SpatialError::Inertia {
+                    body: k,
+                    inertia: *i,
+                });
+            }
+        }
+        let g = description.gravity;
+        if g.x != 0.0 || g.y > 0.0 || !g.y.is_finite() {
+            return Err(SpatialError::Gravity { x: g.x, y: g.y });
+        }
+        Ok(FloatingTree {
+            model,
+            masses: description.bodies.iter().map(|b| b.mass).collect(),
+            inertias: description.bodies.iter().map(|b| b.inertia).collect(),
+            across,
+            offsets: vec![0.0; bodies],
+            gravity: -g.y,
+        })
+    }
+
+    /// The same tree with body `k` at `offsets[k]` (m) along `η` from the
+    /// root's plane (the root's own is its centroid's: 0).
+    pub fn with_offsets(self, offsets: Vec<f64>) -> Result<Self, SpatialError> {
+        if offsets.len() != self.masses.len() {
+            return Err(SpatialError::Offsets {
+                bodies: self.masses.len(),
+                given: offsets.len(),
+            });
+        }
+        if let Some(k) = offsets.iter().position(|e| !e.is_finite()) {
+            return Err(SpatialError::Offset {
+                body: k,
+                offset: offsets[k],
+            });
+        }
+        Ok(FloatingTree { offsets, ..self })
+    }
+
+    /// Every body's centroid in the world, m.
+    pub fn positions(&self, pose: &PlanePose<DOF>) -> Vec<Vector3<f64>> {
+        let a = plane_rotation(pose.yaw, pose.roll);
+        self.places(pose)
+            .iter()
+            .zip(&self.offsets)
+            .map(|(p, e)| pose.origin + a * Vector3::new(p.x, *e, p.y))
+            .collect()
+    }
+
+    /// The rates of the coordinates: the root's centroid's velocity in
+    /// the world (m/s), `ψ̇`, `φ̇` and the bodies' `θ̇` (rad/s; the vector's
+    /// first two entries zero).
+    pub fn coordinate_rates(
+        &self,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+    ) -> (Vector3<f64>, f64, f64, SVector<f64, DOF>) {
+        let a = plane_rotation(pose.yaw, pose.roll);
+        let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
+        let velocity = a * Vector3::new(rates.planar[0], v_eta, rates.planar[1]);
+        let turning = w_zeta * pose.roll.tan();
+        let mut angles = rates.planar;
+        angles[0] = 0.0;
+        angles[1] = 0.0;
+        for k in 2..DOF {
+            angles[k] += turning;
+        }
+        (velocity, w_zeta / pose.roll.cos(), w_xi, angles)
+    }
+
+    /// The kinetic energy, J.
+    pub fn kinetic_energy(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> f64 {
+        let motion = self.motion(pose, rates);
+        let w = Vector2::new(rates.across.y, rates.across.z);
+        (0..self.masses.len())
+            .map(|k| {
+                let inertia = self.in_plane_inertia(k, motion.trig[k]);
+                let spin = rates.planar[k + 2];
+                0.5 * self.masses[k] * motion.velocity[k].norm_squared()
+                    + 0.5 * self.inertias[k] * spin * spin
+                    + 0.5 * w.dot(&(inertia * w))
+            })
+            .sum()
+    }
+
+    /// The mass matrix of the out-of-plane quasi-velocities
+    /// `(v_η, ω_ξ, ω_ζ)`, 3 × 3 (its coupling with the in-plane ones
+    /// aside, which the offsets make).
+    pub fn across_mass(&self, pose: &PlanePose<DOF>) -> Matrix3<f64> {
+        let places = self.places(pose);
+        let mut mass = Matrix3::zeros();
+        for (k, p) in places.iter().enumerate() {
+            let (m, e) = (self.masses[k], self.offsets[k]);
+            let c = Vector3::new(1.0, -p.y, p.x);
+            mass += m * c * c.transpose();
+            let inertia = self.in_plane_inertia(k, sin_cos(&pose.planar, k));
+            let mut turning = mass.fixed_view_mut::<2, 2>(1, 1);
+            turning += inertia + Matrix2::identity() * (m * e * e);
+        }
+        mass
+    }
+
+    /// Forward dynamics of the open tree (a track's closing joint cut, as
+    /// the planar model's [`tree_dynamics`](RecursiveModel::tree_dynamics)
+    /// treats it) under gravity and `loads` (one per body, or none): the
+    /// rates of the quasi-velocities, in the plane (the planar `q̈_i`) and
+    /// across it.
+    pub fn accelerations(
+        &self,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+        loads: &[SpatialLoad],
+    ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError> {
+        let n = self.masses.len();
+        if !(loads.is_empty() || loads.len() == n) {
+            return Err(DynamicsError::WrongLength {
+                what: "spatial loads",
+                expected: n,
+                got: loads.len(),
+            });
+        }
+        let a = plane_rotation(pose.yaw, pose.roll);
+        let (sr, cr) = pose.roll.sin_cos();
+        let motion = self.motion(pose, rates);
+        let [w_xi, w_zeta] = [rates.across.y, rates.across.z];
+        let w_eta = w_zeta * pose.roll.tan();
+        let omega = Vector3::new(w_xi, w_eta, w_zeta);
+        // The plane's gravity: (0, −g sin φ, −g cos φ); the planar code
+        // applies (0, −g) in the plane already.
+        let (g_across, g_in) = (-self.gravity * sr, -self.gravity * cr);
+        let mut planar_loads = vec![BodyLoad::ZERO; n];
+        let mut rhs = Vector3::zeros();
+        for (k, planar_load) in planar_loads.iter_mut().enumerate() {
+            let (m, e) = (self.masses[k], self.offsets[k]);
+            let load = loads.get(k).copied().unwrap_or_default();
+            let (force, moment) = (a.transpose() * load.force, a.transpose() * load.moment);
+            let place = motion.place[k];
+            let omega_v = omega.cross(&motion.velocity[k]);
+            // The bodies' true angular rates turn the relative place:
+            // d/dt (ξ, ζ) = relative velocity + ω_η perp(place).
+            let moving = motion.relative[k] + w_eta * perp(place);
+            // In the plane: the cross term of the bodies' true and
+            // relative rates, ω_η perp(ρ̇ relative), and ω × V.
+            let bias_in = w_eta * perp(motion.relative[k]) + Vector2::new(omega_v.x, omega_v.z);
+            let bias_across = w_zeta * moving.x - w_xi * moving.y + omega_v.y;
+            // Rotation: H = (I₂ (ω_ξ, ω_ζ), −J (θ̇ − ω_η)).
+            let trig = motion.trig[k];
+            let inertia = self.in_plane_inertia(k, trig);
+            let spin = rates.planar[k + 2];
+            let turning = self.in_plane_inertia_rate(k, trig, spin + w_eta);
+            let h2 = inertia * Vector2::new(w_xi, w_zeta);
+            let h = Vector3::new(h2.x, -self.inertias[k] * spin, h2.y);
+            let omega_h = omega.cross(&h);
+            let bias_turn =
+                turning * Vector2::new(w_xi, w_zeta) + Vector2::new(omega_h.x, omega_h.z);
+            let in_plane = Vector2::new(force.x, force.z) - m * bias_in;
+            *planar_load = BodyLoad {
+                force: in_plane + m * Vector2::new(0.0, g_in + self.gravity),
+                moment: -moment.y + omega_h.y,
+            };
+            let c = Vector3::new(1.0, -place.y, place.x);
+            rhs += c * (force.y + m * g_across - m * bias_across);
+            rhs += Vector3::new(0.0, moment.x - bias_turn.x, moment.z - bias_turn.y);
+            // An offset body's in-plane forces act on the plane's turning,
+            // less its in-plane inertia besides `H q̈_i` and `e D ẇ` (which
+            // the coupling and the mass matrix carry): the planar chain's
+            // own centripetal terms γ.
+            rhs += e * offset_force(in_plane + m * Vector2::new(0.0, g_in) - m * motion.gamma[k]);
+        }
+        let mut planar = SVector::<f64, DOF>::zeros();
+        self.model
+            .tree_dynamics(&motion.trig, &rates.planar, &planar_loads, &mut planar)?;
+        let mut mass = self.across_mass(pose);
+        if self.offsets.iter().all(|&e| e == 0.0) {
+            let across = mass
+                .cholesky()
+                .ok_or(DynamicsError::MassMatrixNotPositiveDefinite)?
+                .solve(&rhs);
+            return Ok((planar, across));
+        }
+        // The offsets couple the two sets through C (DOF × 3), the
+        // in-plane load `−m e D ẇ` on each body. With the in-plane rates
+        // a + A ẇ (A's columns by the planar route under C's columns:
+        // v_η's is zero), the out-of-plane equations become
+        // (M_w − Cᵀ M_i⁻¹ C) ẇ = f_w − Cᵀ a.
+        rhs -= self.coupling_transpose(&pose.planar, &planar);
+        let mut columns = [SVector::<f64, DOF>::zeros(); 3];
+        for (j, column) in columns.iter_mut().enumerate().skip(1) {
+            let d = offset_velocity(&Vector3::ith(j, 1.0));
+            let shifted: Vec<BodyLoad> = planar_loads
+                .iter()
+                .enumerate()
+                .map(|(k, l)| BodyLoad {
+                    force: l.force - self.masses[k] * self.offsets[k] * d,
+                    moment: l.moment,
+                })
+                .collect();
+            let mut moved = SVector::<f64, DOF>::zeros();
+            self.model
+                .tree_dynamics(&motion.trig, &rates.planar, &shifted, &mut moved)?;
+            *column = moved - planar;
+            let coupled = mass.column(j) + self.coupling_transpose(&pose.planar, column);
+            mass.set_column(j, &coupled);
+        }
+        let across = mass
+            .lu()
+            .solve(&rhs)
+            .ok_or(DynamicsError::MassMatrixNotPositiveDefinite)?;
+        let planar = planar + columns[1] * across[1] + columns[2] * across[2];
+        Ok((planar, across))
+    }
+
+    /// `Cᵀ x`: the in-plane accelerations `H x` of the offset bodies
+    /// weighed by `m e` onto the out-of-plane quasi-velocities.
+    fn coupling_transpose(&self, q: &SVector<f64, DOF>, x: &SVector<f64, DOF>) -> Vector3<f64> {
+        let mut moved = vec![Vector2::zeros(); self.masses.len()];
+        self.model.body_velocities(&at_origin(q), x, &mut moved);
+        moved
+            .iter()
+            .enumerate()
+            .map(|(k, a)| self.masses[k] * self.offsets[k] * offset_force(*a))
+            .sum()
+    }
+
+    /// Every body's centroid relative to the root in the plane, `(ξ, ζ)`,
+    /// m.
+    fn places(&self, pose: &PlanePose<DOF>) -> Vec<Vector2<f64>> {
+        let mut out = vec![Vector2::zeros(); self.masses.len()];
+        self.model
+            .body_positions(&at_origin(&pose.planar), &mut out);
+        out
+    }
+
+    fn motion(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> BodyMotion {
+        let n = self.masses.len();
+        let q = at_origin(&pose.planar);
+        let mut place = vec![Vector2::zeros(); n];
+        self.model.body_positions(&q, &mut place);
+        let mut planar = vec![Vector2::zeros(); n];
+        self.model.body_velocities(&q, &rates.planar, &mut planar);
+        let mut spins = rates.planar;
+        spins[0] = 0.0;
+        spins[1] = 0.0;
+        let mut relative = vec![Vector2::zeros(); n];
+        self.model.body_velocities(&q, &spins, &mut relative);
+        let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
+        let turning = offset_velocity(&rates.across);
+        let velocity = (0..n)
+            .map(|k| {
+                let (p, e) = (place[k], self.offsets[k]);
+                let v = planar[k] + e * turning;
+                Vector3::new(v.x, v_eta + w_zeta * p.x - w_xi * p.y, v.y)
+            })
+            .collect();
+        let trig = (0..n).map(|k| sin_cos(&pose.planar, k)).collect();
+        let mut gamma = vec![Vector2::zeros(); n];
+        if self.offsets.iter().any(|&e| e != 0.0) {
+            self.model.velocity_terms(&q, &rates.planar, &mut gamma);
+        }
+        BodyMotion {
+            place,
+            relative,
+            velocity,
+            gamma,
+            trig,
+        }
+    }
+
+    /// Body `k`'s inertia about the plane's `ξ` and `ζ` axes, its own
+    /// turned by its angle: `A(θ) I_b A(θ)ᵀ`.
+    fn in_plane_inertia(&self, k: usize, (s, c): (f64, f64)) -> Matrix2<f64> {
+        let i = self.across[k];
+        let body = Matrix2::new(i.xx, i.xz, i.xz, i.zz);
+        let turn = Matrix2::new(c, -s, s, c);
+        turn * body * turn.transpose()
+    }
+
+    /// Its rate when the body turns at `rate` (rad/s) in the plane.
+    fn in_plane_inertia_rate(&self, k: usize, (s, c): (f64, f64), rate: f64) -> Matrix2<f64> {
+        let i = self.across[k];
+        let body = Matrix2::new(i.xx, i.xz, i.xz, i.zz);
+        let turn = Matrix2::new(c, -s, s, c);
+        let slope = Matrix2::new(-s, -c, c, -s);
+        let half = slope * body * turn.transpose();
+        rate * (half + half.transpose())
+    }
+}
+
+/// `q_i` with the root at the plane's origin.
+fn at_origin<const DOF: usize>(q: &SVector<f64, DOF>) -> SVector<f64, DOF> {
+    let mut q = *q;
+    q[0] = 0.0;
+    q[1] = 0.0;
+    q
+}
+
+fn sin_cos<const DOF: usize>(q: &SVector<f64, DOF>, k: usize) -> (f64, f64) {
+    q[k + 2].sin_cos()
+}
+
+/// A plane vector turned a quarter counter-clockwise (from `ξ` toward
+/// `ζ`).
+fn perp(v: Vector2<f64>) -> Vector2<f64> {
+    Vector2::new(-v.y, v.x)
+}
