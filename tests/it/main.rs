@@ -56,6 +56,7 @@ mod spatial_tree;
 mod stands_alone;
 mod steering;
 mod stiction;
+mod stiction_plane;
 mod terrain;
 mod track_speed;
 mod tree_dynamics;

@@ -7,7 +7,8 @@
 //! * [`contact`]: normal laws (Hunt-Crossley, Kelvin-Voigt) and
 //!   regularised Coulomb friction;
 //! * [`stiction`]: friction with stiction, an elastic tangential contact
-//!   with a Coulomb limit, its deflection a state.
+//!   with a Coulomb limit, its deflection a state; [`stiction_plane`] the
+//!   same law in the ground's plane (two components, isotropic).
 //! * [`torsion`]: the torsion spring-damper of a sprung arm.
 //!
 //! The laws know nothing of bodies or geometry: they take a deflection
@@ -17,11 +18,13 @@
 pub mod contact;
 pub mod penalty;
 pub mod stiction;
+pub mod stiction_plane;
 pub mod torsion;
 
 pub use contact::{Friction, NormalLaw};
 pub use penalty::PenaltyJoint;
 pub use stiction::{Stiction, TangentialResponse, TangentialSlopes};
+pub use stiction_plane::{PlaneTangentialResponse, PlaneTangentialSlopes};
 pub use torsion::TorsionSpring;
 
 /// What a law gives at a state: its force (a scalar along the law's own
