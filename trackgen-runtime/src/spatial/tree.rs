@@ -144,6 +144,53 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             .collect()
     }
 
+    /// Every body's orientation in the world: the plane's turned by the
+    /// body's angle in it (its `x` to `(cos θ, 0, sin θ)` in the plane).
+    pub fn orientations(&self, pose: &PlanePose<DOF>) -> Vec<Matrix3<f64>> {
+        let a = plane_rotation(pose.yaw, pose.roll);
+        (0..self.masses.len())
+            .map(|k| {
+                let (s, c) = sin_cos(&pose.planar, k);
+                a * Matrix3::new(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c)
+            })
+            .collect()
+    }
+
+    /// Every body's inertia about its centroid in its own frame, kg m²:
+    /// the declared out-of-plane pair and product, and the planar model's
+    /// about the pin axis.
+    pub fn body_inertias(&self) -> Vec<Matrix3<f64>> {
+        self.across
+            .iter()
+            .zip(&self.inertias)
+            .map(|(i, j)| Matrix3::new(i.xx, 0.0, i.xz, 0.0, *j, 0.0, i.xz, 0.0, i.zz))
+            .collect()
+    }
+
+    /// Every body's centroid velocity in the world, m/s.
+    pub fn velocities(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> Vec<Vector3<f64>> {
+        let a = plane_rotation(pose.yaw, pose.roll);
+        self.motion(pose, rates)
+            .velocity
+            .iter()
+            .map(|v| a * v)
+            .collect()
+    }
+
+    /// Every body's angular velocity in the world, rad/s: the plane's
+    /// about `ξ` and `ζ`, and about `η` the plane's less the body's turning
+    /// in it (`−(θ̇ − ω_η)`).
+    pub fn angular_velocities(
+        &self,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+    ) -> Vec<Vector3<f64>> {
+        let a = plane_rotation(pose.yaw, pose.roll);
+        (0..self.masses.len())
+            .map(|k| a * Vector3::new(rates.across.y, -rates.planar[k + 2], rates.across.z))
+            .collect()
+    }
+
     /// The rates of the coordinates: the root's centroid's velocity in
     /// the world (m/s), `ψ̇`, `φ̇` and the bodies' `θ̇` (rad/s; the vector's
     /// first two entries zero).
