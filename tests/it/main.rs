@@ -29,6 +29,7 @@ mod function_length;
 mod generated_vs_reference;
 mod grade_hold;
 mod half_round_lift;
+mod height_field;
 mod hull;
 mod integrators;
 mod large_tracks;

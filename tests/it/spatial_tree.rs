@@ -16,30 +16,22 @@ use trackgen::spatial::{FloatingTree, OutOfPlaneInertia, PlanePose, PlaneRates, 
 use trackgen::vehicles::m113::M113Chassis;
 
 trackgen::model! {
-    /// 3 heterogeneous links, open (`support/chains.rs`'s `Hetero3Open`).
+    /// 3 links, open, each its own.
     pub track Open3 {
         links: 3,
-        link { mass: 28.465, inertia: 0.1038, u1: (-0.0826, 0.0065), u2: (0.0669, -0.0298) },
-        link[2] { mass: 9.5171, inertia: 0.1936, u1: (-0.0915, 0.0057), u2: (0.0697, -0.0094) },
-        link[3] { mass: 27.5173, inertia: 0.1375, u1: (-0.0541, -0.0019), u2: (0.0664, -0.0245) },
+        link { mass: 24.0, inertia: 0.12, u1: (-0.08, 0.01), u2: (0.07, -0.02) },
+        link[2] { mass: 11.5, inertia: 0.21, u1: (-0.06, 0.03) },
+        link[3] { mass: 30.2, inertia: 0.09, u2: (0.11, 0.04) },
         closure: open,
     }
-    /// 10 links, open (`support/chains.rs`'s `PinocchioOpen10`).
+    /// 10 links, open, not all alike.
     pub track Open10 {
         links: 10,
-        link { mass: 9.69, inertia: 0.2666, u1: (-0.0804, -0.0963), u2: (0.1011, 0.1483) },
-        link[2] { mass: 8.365, inertia: 0.383, u1: (-0.0153, -0.0629), u2: (0.0681, 0.0626) },
-        link[3] { mass: 7.73, inertia: 0.2475, u1: (-0.0791, -0.0593), u2: (0.0658, 0.1477) },
-        link[4] { mass: 17.903, inertia: 0.4819, u1: (-0.0837, -0.0928), u2: (0.1182, 0.1098) },
-        link[5] { mass: 17.863, inertia: 0.1893, u1: (-0.0978, -0.0991), u2: (0.0842, 0.0651) },
-        link[6] { mass: 6.553, inertia: 0.1003, u1: (-0.0382, -0.067), u2: (0.052, 0.1302) },
-        link[7] { mass: 9.336, inertia: 0.164, u1: (-0.0743, -0.0541), u2: (0.0967, 0.1489) },
-        link[8] { mass: 14.924, inertia: 0.0751, u1: (-0.037, -0.0758), u2: (0.0515, 0.1354) },
-        link[9] { mass: 15.519, inertia: 0.465, u1: (-0.0872, -0.0329), u2: (0.0664, 0.1487) },
-        link[10] { mass: 11.58, inertia: 0.342, u1: (-0.072, -0.0153), u2: (0.0651, 0.0727) },
+        link { mass: 9.7, inertia: 0.27, u1: (-0.08, -0.09), u2: (0.10, 0.14) },
+        link[2..=10 by 2] { mass: 16.1, inertia: 0.41 },
+        link[3..=9 by 3] { u1: (-0.04, -0.06), u2: (0.07, 0.12) },
         closure: open,
     }
-
     /// 128 links, open, not all alike: the largest chain the spatial
     /// check asks for.
     pub track Open128 {
