@@ -1,5 +1,6 @@
 """Checks what try.sh wrote for the Mule: every mobility event answered
-(a value, or a stall or failure with its reason); the FMU valid by fmpy's
+(a value, or a stall or failure with its reason); every steady turn's
+sprockets paying for its friction and rolling losses; the FMU valid by fmpy's
 checks, and its first 3 s simulated (settling, then the speed ramp),
 with and without the engine: every output finite, the hull driven
 forward.
@@ -30,6 +31,16 @@ for event in EVENTS:
 for name in ["report.html", "trials.csv", "summary.svg"] + [f"{e}.csv" for e in EVENTS]:
     assert (out / "mobility" / name).stat().st_size > 0, name
 print(f"mobility: {len(rows)} answers over {len(EVENTS)} events")
+
+lines = (out / "steer" / "steer.csv").read_text().splitlines()
+header = lines[0].split(",")
+turns = [dict(zip(header, line.split(","))) for line in lines[1:]]
+assert len(turns) == 5, f"steer: {len(turns)} turns"
+for t in turns:
+    paid = float(t["outer_power"]) + float(t["inner_power"])
+    lost = float(t["friction_dissipation"]) + float(t["rolling_loss"])
+    assert abs(paid - lost) <= 1e-9 * lost, (paid, lost)
+print(f"steer: {len(turns)} turns, the tightest on {float(turns[1]['radius']):.2f} m")
 
 for fmu in [out / "fmu" / "Mule.fmu", out / "fmu" / "Mule-fmi2.fmu"]:
     problems = validate_fmu(str(fmu))

@@ -24,6 +24,9 @@ $mule mobility --quick --json --out out/mobility > out/mobility.jsonl
 # Where it rests and how it rings.
 $mule modes --out out/modes
 
+# How it turns: two of its tracks 1.6 m apart, loaded as it rests.
+$mule steer --gauge 1.6 --out out/steer
+
 # The FMU: FMI 3.0 and 2.0 archives of the library cargo built.
 $mule fmu --library "$target/libmule.so" --out out/fmu
 
