@@ -53,6 +53,7 @@ mod shift;
 mod shifted_chain;
 mod soft_ground;
 mod soil_laws;
+mod space_contact;
 mod spatial_tree;
 mod stands_alone;
 mod steering;

@@ -14,7 +14,8 @@
 //! The pairs: the shoes' ground points against a terrain, the shoes' inner
 //! faces against wheel rims (road wheels, idler, rollers), the shoes' pins
 //! against the sprocket's teeth; and the terramechanics laws of soft soil
-//! ([`soil`](crate::terrain::soil)). Forces come from positions and velocities only, as
+//! ([`soil`](crate::terrain::soil)). In space, a shoe's point against a
+//! height field ([`space`]). Forces come from positions and velocities only, as
 //! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
 //! decoupled everywhere else (formulation §3).
 
@@ -24,6 +25,7 @@ pub mod outline;
 mod respond;
 pub mod shoe;
 pub mod soft_ground;
+pub mod space;
 pub mod sprocket;
 pub(crate) mod tangent;
 pub mod wheel;
