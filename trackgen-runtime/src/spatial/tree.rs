@@ -4,7 +4,7 @@
 use nalgebra::{Matrix2, Matrix3, SVector, Vector2, Vector3};
 
 use super::{OutOfPlaneInertia, SpatialError, plane_rotation};
-use crate::multibody::{BodyLoad, DynamicsError, RecursiveModel};
+use crate::multibody::{BodyLoad, ClosingJoint, DynamicsError, RecursiveModel, TrackModel};
 
 /// Where the tree is: its root's centroid in the world, the plane's yaw
 /// and roll, and the bodies' angles in the plane.
@@ -255,6 +255,27 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         rates: &PlaneRates<DOF>,
         loads: &[SpatialLoad],
     ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError> {
+        let model = self.model;
+        self.dynamics_with(pose, rates, loads, |trig, planar_loads, qdd| {
+            model.tree_dynamics(trig, &rates.planar, planar_loads, qdd)
+        })
+    }
+
+    /// The forward dynamics with `solve` the planar route: from every
+    /// body's `(sin θ, cos θ)` and the planar loads (the plane's inertial
+    /// terms included) to `q̈_i`. Both ways it is affine in the loads,
+    /// which the offsets' coupling relies on.
+    fn dynamics_with(
+        &self,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+        loads: &[SpatialLoad],
+        mut solve: impl FnMut(
+            &[(f64, f64)],
+            &[BodyLoad],
+            &mut SVector<f64, DOF>,
+        ) -> Result<(), DynamicsError>,
+    ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError> {
         let n = self.masses.len();
         if !(loads.is_empty() || loads.len() == n) {
             return Err(DynamicsError::WrongLength {
@@ -312,8 +333,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             rhs += e * offset_force(in_plane + m * Vector2::new(0.0, g_in) - m * motion.gamma[k]);
         }
         let mut planar = SVector::<f64, DOF>::zeros();
-        self.model
-            .tree_dynamics(&motion.trig, &rates.planar, &planar_loads, &mut planar)?;
+        solve(&motion.trig, &planar_loads, &mut planar)?;
         let mut mass = self.across_mass(pose);
         if self.offsets.iter().all(|&e| e == 0.0) {
             let across = mass
@@ -340,8 +360,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
                 })
                 .collect();
             let mut moved = SVector::<f64, DOF>::zeros();
-            self.model
-                .tree_dynamics(&motion.trig, &rates.planar, &shifted, &mut moved)?;
+            solve(&motion.trig, &shifted, &mut moved)?;
             *column = moved - planar;
             let coupled = mass.column(j) + self.coupling_transpose(&pose.planar, column);
             mass.set_column(j, &coupled);
@@ -352,6 +371,31 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             .ok_or(DynamicsError::MassMatrixNotPositiveDefinite)?;
         let planar = planar + columns[1] * across[1] + columns[2] * across[2];
         Ok((planar, across))
+    }
+
+    /// [`accelerations`](Self::accelerations) of a track with its loop
+    /// joint `closing` as the planar linear-time route takes it
+    /// ([`TrackModel::linear_time_dynamics`]): closed (the plain
+    /// constraint, or stabilised), or cut with a force across it. The
+    /// plane's turning about its normal moves every angle alike, which
+    /// leaves a closed loop closed: on the loop's manifold (`C = 0`,
+    /// `C_θ θ̇ = 0`) the planar constraint holds in the relative rates
+    /// unchanged, so the planar route closes the floating loop as it is.
+    pub fn closed_accelerations(
+        &self,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+        loads: &[SpatialLoad],
+        closing: ClosingJoint,
+    ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError>
+    where
+        M: TrackModel<DOF>,
+    {
+        let model = self.model;
+        let mut forces = vec![Vector2::zeros(); self.masses.len()];
+        self.dynamics_with(pose, rates, loads, |trig, planar_loads, qdd| {
+            model.linear_time_dynamics(trig, &rates.planar, planar_loads, closing, qdd, &mut forces)
+        })
     }
 
     /// `Cᵀ x`: the in-plane accelerations `H x` of the offset bodies
