@@ -339,21 +339,14 @@ fn state<const DOF: usize>(
     (pose, rates, loads, across)
 }
 
-/// The route's `q̈`, the dense route's, and both kinetic energies, at one
-/// state of `model`.
-fn both<M: RecursiveModel<DOF>, const DOF: usize>(
-    model: &M,
-    offsets: &[f64],
-    seed: u64,
-) -> (f64, f64, f64) {
+/// The coordinates `q`, their rates `q̇` and the route's `q̈ = K u̇ +
+/// (∂K/∂q q̇) u` from a pose, its quasi-velocities and their rates.
+fn in_coordinates<const DOF: usize>(
+    pose: &PlanePose<DOF>,
+    rates: &PlaneRates<DOF>,
+    (u_in, w): (&SVector<f64, DOF>, &Vector3<f64>),
+) -> (DVector<f64>, DVector<f64>, DVector<f64>) {
     let links = DOF - 2;
-    let (pose, rates, loads, across) = state::<DOF>(links, seed);
-    let chain = FloatingTree::new(model, across.clone())
-        .unwrap()
-        .with_offsets(offsets.to_vec())
-        .unwrap();
-    let (u_in, w) = chain.accelerations(&pose, &rates, &loads).unwrap();
-    // Coordinates and their rates.
     let mut q = DVector::zeros(links + 5);
     q.rows_mut(0, 3).copy_from(&pose.origin);
     q[3] = pose.yaw;
@@ -368,6 +361,30 @@ fn both<M: RecursiveModel<DOF>, const DOF: usize>(
             .iter()
             .map(|j| j.v),
     );
+    let moving = coordinate_rates(&jets(&q, &qd), rates.planar.as_slice(), &rates.across);
+    let pushed = coordinate_rates(&still, u_in.as_slice(), w);
+    let route = DVector::from_iterator(
+        links + 5,
+        moving.iter().zip(&pushed).map(|(m, p)| m.d + p.v),
+    );
+    (q, qd, route)
+}
+
+/// The route's `q̈`, the dense route's, and both kinetic energies, at one
+/// state of `model`.
+fn both<M: RecursiveModel<DOF>, const DOF: usize>(
+    model: &M,
+    offsets: &[f64],
+    seed: u64,
+) -> (f64, f64, f64) {
+    let links = DOF - 2;
+    let (pose, rates, loads, across) = state::<DOF>(links, seed);
+    let chain = FloatingTree::new(model, across.clone())
+        .unwrap()
+        .with_offsets(offsets.to_vec())
+        .unwrap();
+    let (u_in, w) = chain.accelerations(&pose, &rates, &loads).unwrap();
+    let (q, qd, route) = in_coordinates(&pose, &rates, (&u_in, &w));
     // The route's own map agrees with the written-out one.
     let (velocity, yaw_rate, roll_rate, angles) = chain.coordinate_rates(&pose, &rates);
     assert!((velocity - qd.rows(0, 3)).amax() < 1e-12 * (1.0 + velocity.amax()));
@@ -375,13 +392,6 @@ fn both<M: RecursiveModel<DOF>, const DOF: usize>(
     for k in 0..links {
         assert!((angles[k + 2] - qd[5 + k]).abs() < 1e-12);
     }
-    // q̈ = K u̇ + (∂K/∂q q̇) u.
-    let moving = coordinate_rates(&jets(&q, &qd), rates.planar.as_slice(), &rates.across);
-    let pushed = coordinate_rates(&still, u_in.as_slice(), &w);
-    let route = DVector::from_iterator(
-        links + 5,
-        moving.iter().zip(&pushed).map(|(m, p)| m.d + p.v),
-    );
     let (oracle, energy, _, _) = dense(&model.description(), offsets, &across, &q, &qd, &loads);
     let error = (&route - &oracle).norm() / oracle.norm();
     let energy_route = chain.kinetic_energy(&pose, &rates);
@@ -417,6 +427,16 @@ fn the_floating_chain_equals_the_dense_spatial_route() {
     }
 }
 
+/// The offsets of the M113's chassis with every part half a gauge to the
+/// left of the hull's plane, and of a 10-link chain scattered across its
+/// plane.
+fn off_the_plane() -> (Vec<f64>, Vec<f64>) {
+    let parts = M113Chassis.description().bodies.len();
+    let mut left = vec![1.08; parts];
+    left[0] = 0.0;
+    (left, (0..10).map(|k| 0.3 * (k as f64 - 4.5)).collect())
+}
+
 #[test]
 fn a_hull_with_its_running_gear_off_its_plane_equals_the_dense_route() {
     // The M113's chassis (hull, sprocket, arms, wheels, tensioner, idler)
@@ -427,10 +447,7 @@ fn a_hull_with_its_running_gear_off_its_plane_equals_the_dense_route() {
     // 2–5e-15 and up to 1.3e-14); without the planar centripetal terms in
     // the offset bodies' share of the out-of-plane equations the
     // accelerations were off by 5e-2 to 2e-1.
-    let parts = M113Chassis.description().bodies.len();
-    let mut left = vec![1.08; parts];
-    left[0] = 0.0;
-    let scattered: Vec<f64> = (0..10).map(|k| 0.3 * (k as f64 - 4.5)).collect();
+    let (left, scattered) = off_the_plane();
     for seed in 1..=5 {
         for (what, (error, energy, size)) in [
             ("the M113's chassis", both(&M113Chassis, &left, seed)),
@@ -582,10 +599,7 @@ fn a_floating_tree_under_gravity_keeps_its_energy_and_momenta() {
     // RK4's error at this step and the rounding). Leaving the planar
     // centripetal terms out of the offset parts' share breaks the energy
     // by 9e-6 and the angular momentum by 6e-3.
-    let parts = M113Chassis.description().bodies.len();
-    let mut left = vec![1.08; parts];
-    left[0] = 0.0;
-    let scattered: Vec<f64> = (0..10).map(|k| 0.3 * (k as f64 - 4.5)).collect();
+    let (left, scattered) = off_the_plane();
     fn run<M: RecursiveModel<DOF>, const DOF: usize>(model: &M, offsets: &[f64]) -> [f64; 3] {
         let (mut pose, mut rates, _, across) = state::<DOF>(DOF - 2, 7);
         let tree = FloatingTree::new(model, across)
@@ -838,23 +852,7 @@ fn a_closed_loop_floating_in_space_equals_the_dense_constrained_route() {
         let (u_in, w) = tree
             .closed_accelerations(&pose, &rates, &loads, ClosingJoint::CLOSED)
             .unwrap();
-        let mut q = DVector::zeros(17);
-        q.rows_mut(0, 3).copy_from(&pose.origin);
-        q[3] = pose.yaw;
-        q[4] = pose.roll;
-        for k in 0..12 {
-            q[5 + k] = pose.planar[k + 2];
-        }
-        let still: Vec<Jet> = q.iter().map(|&v| Jet::constant(v)).collect();
-        let qd = DVector::from_iterator(
-            17,
-            coordinate_rates(&still, rates.planar.as_slice(), &rates.across)
-                .iter()
-                .map(|j| j.v),
-        );
-        let moving = coordinate_rates(&jets(&q, &qd), rates.planar.as_slice(), &rates.across);
-        let pushed = coordinate_rates(&still, u_in.as_slice(), &w);
-        let route = DVector::from_iterator(17, moving.iter().zip(&pushed).map(|(m, p)| m.d + p.v));
+        let (q, qd, route) = in_coordinates(&pose, &rates, (&u_in, &w));
         // The dense constrained route.
         let (_, _, mass, rhs) = dense(&description, &[0.0; 12], &across, &q, &qd, &loads);
         let gap = |q: &[Jet]| {
