@@ -231,13 +231,21 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     /// `(v_η, ω_ξ, ω_ζ)`, 3 × 3 (its coupling with the in-plane ones
     /// aside, which the offsets make).
     pub fn across_mass(&self, pose: &PlanePose<DOF>) -> Matrix3<f64> {
-        let places = self.places(pose);
+        let trig: Vec<(f64, f64)> = (0..self.masses.len())
+            .map(|k| sin_cos(&pose.planar, k))
+            .collect();
+        self.across_mass_at(&self.places(pose), &trig)
+    }
+
+    /// [`across_mass`](Self::across_mass) from the bodies' places in the
+    /// plane and their `(sin θ, cos θ)`.
+    fn across_mass_at(&self, places: &[Vector2<f64>], trig: &[(f64, f64)]) -> Matrix3<f64> {
         let mut mass = Matrix3::zeros();
         for (k, p) in places.iter().enumerate() {
             let (m, e) = (self.masses[k], self.offsets[k]);
             let c = Vector3::new(1.0, -p.y, p.x);
             mass += m * c * c.transpose();
-            let inertia = self.in_plane_inertia(k, sin_cos(&pose.planar, k));
+            let inertia = self.in_plane_inertia(k, trig[k]);
             let mut turning = mass.fixed_view_mut::<2, 2>(1, 1);
             turning += inertia + Matrix2::identity() * (m * e * e);
         }
@@ -334,7 +342,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         }
         let mut planar = SVector::<f64, DOF>::zeros();
         solve(&motion.trig, &planar_loads, &mut planar)?;
-        let mut mass = self.across_mass(pose);
+        let mut mass = self.across_mass_at(&motion.place, &motion.trig);
         if self.offsets.iter().all(|&e| e == 0.0) {
             let across = mass
                 .cholesky()
@@ -422,15 +430,14 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     fn motion(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> BodyMotion {
         let n = self.masses.len();
         let q = at_origin(&pose.planar);
-        let mut place = vec![Vector2::zeros(); n];
-        self.model.body_positions(&q, &mut place);
-        let mut planar = vec![Vector2::zeros(); n];
-        self.model.body_velocities(&q, &rates.planar, &mut planar);
-        let mut spins = rates.planar;
-        spins[0] = 0.0;
-        spins[1] = 0.0;
-        let mut relative = vec![Vector2::zeros(); n];
-        self.model.body_velocities(&q, &spins, &mut relative);
+        let trig: Vec<(f64, f64)> = (0..n).map(|k| sin_cos(&pose.planar, k)).collect();
+        let (mut place, mut planar) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
+        self.model
+            .body_states_with_trig(&trig, &q, &rates.planar, &mut place, &mut planar);
+        // The velocities are linear in q̇_i and the root's (v_ξ, v_ζ) moves
+        // every body alike: the bodies' rates alone give the rest.
+        let root = Vector2::new(rates.planar[0], rates.planar[1]);
+        let relative = planar.iter().map(|v| v - root).collect();
         let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
         let turning = offset_velocity(&rates.across);
         let velocity = (0..n)
@@ -440,7 +447,6 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
                 Vector3::new(v.x, v_eta + w_zeta * p.x - w_xi * p.y, v.y)
             })
             .collect();
-        let trig = (0..n).map(|k| sin_cos(&pose.planar, k)).collect();
         let mut gamma = vec![Vector2::zeros(); n];
         if self.offsets.iter().any(|&e| e != 0.0) {
             self.model.velocity_terms(&q, &rates.planar, &mut gamma);
