@@ -186,7 +186,7 @@ fn estimate<V: Vehicle>(
         "  asked        radius m   yaw rad/s   ratio (kinematic)   slip out/in     torque out/in kN m   power out/in kW   M_r / Steeds"
     );
     for (asked, turn) in &turns {
-        let [outer, inner] = outer_inner(turn);
+        let [outer, inner] = turn.outer_inner();
         say!(
             "  {:10}   {:8.3}   {:9.4}   {:7.3} ({:>7})   {:6.3} {:7.3}   {:8.2} {:8.2}   {:7.1} {:7.1}   {:.3}",
             asked.label(),
@@ -207,7 +207,7 @@ fn estimate<V: Vehicle>(
         let stall = powertrain.limit(0.0).0;
         let most = turns
             .iter()
-            .map(|(_, t)| outer_inner(t)[0].thrust * sprocket)
+            .map(|(_, t)| t.outer_inner()[0].thrust * sprocket)
             .fold(0.0, f64::max);
         say!(
             "the powertrain gives a sprocket at most {:.2} kN m at a crawl: the outer sprocket's largest above is {:.0} % of it",
@@ -218,16 +218,6 @@ fn estimate<V: Vehicle>(
     std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
     write_csv(&dir.join("steer.csv"), &turns, gauge, sprocket, steeds)?;
     Ok("steer.csv")
-}
-
-/// The outer side and the inner.
-fn outer_inner(turn: &SteadyTurn) -> [trackgen::steering::SideInTurn; 2] {
-    let [left, right] = turn.sides;
-    if turn.yaw_rate > 0.0 {
-        [right, left]
-    } else {
-        [left, right]
-    }
 }
 
 /// The speed ratio with no slip, `(R + B/2)/(R − B/2)` at the turn's
@@ -270,7 +260,7 @@ fn write_csv(
         "steeds_moment",
     ])?;
     for (asked, turn) in turns {
-        let [outer, inner] = outer_inner(turn);
+        let [outer, inner] = turn.outer_inner();
         let (radius, ratio) = match asked {
             Asked::Radius(r) => (*r, f64::NAN),
             Asked::Ratio(k) => (f64::NAN, *k),

@@ -68,13 +68,18 @@ impl SteadyTurn {
     /// The sprocket speed ratio, the outer belt's speed over the inner's
     /// (negative in a pivot turn, infinite where the inner belt stands).
     pub fn speed_ratio(&self) -> f64 {
-        let [left, right] = self.sides;
-        let (outer, inner) = if self.yaw_rate > 0.0 {
-            (right, left)
-        } else {
-            (left, right)
-        };
+        let [outer, inner] = self.outer_inner();
         outer.belt_speed / inner.belt_speed
+    }
+
+    /// The outer side and the inner (the right and the left turning left).
+    pub fn outer_inner(&self) -> [SideInTurn; 2] {
+        let [left, right] = self.sides;
+        if self.yaw_rate > 0.0 {
+            [right, left]
+        } else {
+            [left, right]
+        }
     }
 }
 
@@ -259,30 +264,51 @@ impl SkidSteer {
             let (y, d) = (track.lateral, offsets[j]);
             let resistance = self.resistance(track, speed - yaw_rate * y);
             b.residual += Vector3::new(resistance, 0.0, -y * resistance);
-            for s in track.stretches.iter().filter(|s| s.load > 0.0) {
-                let k = self.friction * s.load / (s.to - s.from) * spin;
-                let (a, e) = (s.from - centre, s.to - centre);
-                let unit = unit_shear(a, e, d);
-                let (along, across) = (k * unit.along, k * unit.across);
-                b.residual +=
-                    Vector3::new(along, across, k * unit.moment + centre * across - y * along);
-                // x_c moves both ends: minus the integrands' difference.
-                let (lo, hi) = (unit_density(a, d), unit_density(e, d));
-                let (along_c, across_c) = (-k * (hi[0] - lo[0]), -k * (hi[1] - lo[1]));
-                b.by_centre += Vector3::new(
-                    along_c,
-                    across_c,
-                    -k * (hi[2] - lo[2]) + across + centre * across_c - y * along_c,
-                );
-                let (along_d, across_d) = (k * unit.along_d, k * unit.across_d);
-                b.by_offset[j] += Vector3::new(
-                    along_d,
-                    across_d,
-                    k * unit.moment_d + centre * across_d - y * along_d,
-                );
-            }
+            let shear = self.shear(track, centre, d, spin);
+            let [along, across, turning] = shear.forces;
+            b.residual += Vector3::new(along, across, turning + centre * across - y * along);
+            let [along_c, across_c, turning_c] = shear.by_centre;
+            b.by_centre += Vector3::new(
+                along_c,
+                across_c,
+                turning_c + across + centre * across_c - y * along_c,
+            );
+            let [along_d, across_d, turning_d] = shear.by_offset;
+            b.by_offset[j] += Vector3::new(
+                along_d,
+                across_d,
+                turning_d + centre * across_d - y * along_d,
+            );
         }
         b
+    }
+
+    /// The ground's shear on `track`'s run at a trial, summed over its
+    /// stretches: the forces along and across it (N) and the moment of the
+    /// force across about the centres' cross line (N m), each for a turn
+    /// of sign `spin`, with their derivatives in the centres' place `x_c`
+    /// and in the offset `d`; and the dissipation per unit yaw rate (J).
+    fn shear(&self, track: &TrackLoad, centre: f64, d: f64, spin: f64) -> TrackShear {
+        let mut sum = TrackShear::default();
+        for s in track.stretches.iter().filter(|s| s.load > 0.0) {
+            let q = self.friction * s.load / (s.to - s.from);
+            let k = q * spin;
+            let (a, e) = (s.from - centre, s.to - centre);
+            let unit = unit_shear(a, e, d);
+            // x_c moves both ends: minus the integrands' difference.
+            let (lo, hi) = (unit_density(a, d), unit_density(e, d));
+            for i in 0..3 {
+                sum.by_centre[i] -= k * (hi[i] - lo[i]);
+            }
+            let forces = [unit.along, unit.across, unit.moment];
+            let by_offset = [unit.along_d, unit.across_d, unit.moment_d];
+            for i in 0..3 {
+                sum.forces[i] += k * forces[i];
+                sum.by_offset[i] += k * by_offset[i];
+            }
+            sum.dissipation += q * unit.dissipation;
+        }
+        sum
     }
 
     /// The rolling resistance on `track`, N along the hull, when its
@@ -309,15 +335,10 @@ impl SkidSteer {
         let (mut resisting_moment, mut dissipation, mut rolling_loss) = (0.0, 0.0, 0.0);
         for (j, track) in self.tracks.iter().enumerate() {
             let (y, d) = (track.lateral, offsets[j]);
-            let (mut thrust, mut lateral) = (0.0, 0.0);
-            for s in track.stretches.iter().filter(|s| s.load > 0.0) {
-                let q = self.friction * s.load / (s.to - s.from);
-                let unit = unit_shear(s.from - centre, s.to - centre, d);
-                thrust += q * spin * unit.along;
-                lateral += q * spin * unit.across;
-                resisting_moment -= q * spin * (unit.moment + centre * unit.across);
-                dissipation += q * yaw_rate.abs() * unit.dissipation;
-            }
+            let shear = self.shear(track, centre, d, spin);
+            let [thrust, lateral, turning] = shear.forces;
+            resisting_moment -= turning + centre * lateral;
+            dissipation += yaw_rate.abs() * shear.dissipation;
             let ground = speed - yaw_rate * y;
             let resistance = self.resistance(track, ground);
             rolling_loss -= resistance * ground;
@@ -359,6 +380,15 @@ const SIDE_AT_REST: SideInTurn = SideInTurn {
     offset: 0.0,
     slip: f64::NAN,
 };
+
+/// [`SkidSteer::shear`]: along, across, the moment of the force across.
+#[derive(Default)]
+struct TrackShear {
+    forces: [f64; 3],
+    by_centre: [f64; 3],
+    by_offset: [f64; 3],
+    dissipation: f64,
+}
 
 /// The balance of forces at a trial and its partial derivatives.
 struct Balance {
