@@ -3,7 +3,8 @@
 //! the band between; a grid is bilinear (it reproduces a plane and any
 //! `a + b x + c y + d x y` to rounding) with its slopes the central
 //! differences of its heights, flat beyond its edges; a tilt adds a
-//! plane; a hole, a bad grid, divide, band or tilt is refused, naming it.
+//! plane; a hole, a bad grid, profile, divide, band or tilt is refused,
+//! naming it.
 
 use trackgen::nalgebra::Vector2;
 use trackgen::terrain::Terrain;
@@ -172,6 +173,31 @@ fn holes_and_bad_figures_are_refused_naming_them() {
     assert!(matches!(
         sides(f64::NAN, 0.0).check(),
         Err(FieldError::Sides { .. })
+    ));
+    let bad = Terrain::Sine {
+        amplitude: 0.1,
+        wavelength: f64::NAN,
+    };
+    assert!(matches!(
+        HeightField {
+            base: FieldShape::Profile(bad.clone()),
+            tilt: Vector2::zeros(),
+        }
+        .check(),
+        Err(FieldError::Profile(_))
+    ));
+    assert!(matches!(
+        HeightField {
+            base: FieldShape::Sides {
+                left: Terrain::Flat { height: 0.0 },
+                right: bad,
+                divide: 0.0,
+                band: 0.1,
+            },
+            tilt: Vector2::zeros(),
+        }
+        .check(),
+        Err(FieldError::Profile(_))
     ));
     let tilted = HeightField::level().tilted(Vector2::new(f64::INFINITY, 0.0));
     assert!(matches!(tilted.check(), Err(FieldError::Tilt { .. })));

@@ -6,7 +6,7 @@
 
 use nalgebra::Vector2;
 
-use super::surface::Terrain;
+use super::surface::{Terrain, TerrainError};
 
 /// A height field: a base shape and a plane added to it.
 #[derive(Debug, Clone, PartialEq)]
@@ -105,6 +105,9 @@ pub enum FieldError {
         /// What was given.
         value: f64,
     },
+    /// A profile of the field is refused by its own check.
+    #[error("a profile of the field: {0}")]
+    Profile(#[from] TerrainError),
     /// The tilt is not finite.
     #[error("the tilt must be finite, got ({x}, {y})")]
     Tilt {
@@ -234,6 +237,14 @@ impl HeightField {
                 x: self.tilt.x,
                 y: self.tilt.y,
             });
+        }
+        match &self.base {
+            FieldShape::Profile(terrain) => terrain.check()?,
+            FieldShape::Sides { left, right, .. } => {
+                left.check()?;
+                right.check()?;
+            }
+            FieldShape::Level | FieldShape::Grid(_) => {}
         }
         if let FieldShape::Sides { divide, band, .. } = self.base {
             if !divide.is_finite() {
