@@ -99,11 +99,22 @@ fn it_is_isotropic_bounded_and_its_books_close() {
 
 #[test]
 fn its_slopes_are_its_central_differences() {
-    // Away from the stick-slip boundary (where the slopes jump): relative
-    // steps 1e-6, agreement 1e-6 of each slope's scale (the differences'
-    // truncation error is of the step squared times the third derivative,
-    // ~1e-10 here; rounding ~1e-10).
+    // Away from the stick-slip boundary (where the slopes jump), steps of
+    // 1e-9 m, 1e-7 m/s and 1e-4 N; agreement to 1e-6 of each slope's scale
+    // (k, c, k/c, 1, μ, μ/c): the differences' truncation error (the step
+    // squared times the third derivative) and their rounding (ε over the
+    // step) are both some 1e-10 of it.
     let law = law();
+    // The central differences of the force and of ż along one argument
+    // moved by ±`step` (`at(±1)` evaluating the law there).
+    let central = |at: &dyn Fn(f64) -> (Vector2<f64>, Vector2<f64>), step: f64| {
+        let ((f1, r1), (f0, r0)) = (at(1.0), at(-1.0));
+        ((f1 - f0) / (2.0 * step), (r1 - r0) / (2.0 * step))
+    };
+    let respond = |z, v, n| {
+        let r = law.respond_in_plane(z, v, n);
+        (r.force, r.rate)
+    };
     for (z, v, normal) in states() {
         let trial = (law.stiffness * z + law.damping * v).norm();
         if (trial - law.mu * normal).abs() < 1e-3 * law.mu * normal {
@@ -111,34 +122,20 @@ fn its_slopes_are_its_central_differences() {
         }
         let s = law.slopes_in_plane(z, v, normal);
         for axis in 0..2 {
-            let dz = 1e-9 * Vector2::ith(axis, 1.0);
-            let dv = 1e-7 * Vector2::ith(axis, 1.0);
-            let by_z = (law.respond_in_plane(z + dz, v, normal).force
-                - law.respond_in_plane(z - dz, v, normal).force)
-                / 2e-9;
-            let by_v = (law.respond_in_plane(z, v + dv, normal).force
-                - law.respond_in_plane(z, v - dv, normal).force)
-                / 2e-7;
-            let rate_z = (law.respond_in_plane(z + dz, v, normal).rate
-                - law.respond_in_plane(z - dz, v, normal).rate)
-                / 2e-9;
-            let rate_v = (law.respond_in_plane(z, v + dv, normal).rate
-                - law.respond_in_plane(z, v - dv, normal).rate)
-                / 2e-7;
-            assert!((s.force.0.column(axis) - by_z).amax() <= 1e-6 * law.stiffness);
-            assert!((s.force.1.column(axis) - by_v).amax() <= 1e-6 * law.damping);
+            let (dz, dv) = (
+                1e-9 * Vector2::ith(axis, 1.0),
+                1e-7 * Vector2::ith(axis, 1.0),
+            );
+            let (force_z, rate_z) = central(&|sign| respond(z + sign * dz, v, normal), 1e-9);
+            let (force_v, rate_v) = central(&|sign| respond(z, v + sign * dv, normal), 1e-7);
+            assert!((s.force.0.column(axis) - force_z).amax() <= 1e-6 * law.stiffness);
+            assert!((s.force.1.column(axis) - force_v).amax() <= 1e-6 * law.damping);
             assert!((s.rate.0.column(axis) - rate_z).amax() <= 1e-6 * law.stiffness / law.damping);
             assert!((s.rate.1.column(axis) - rate_v).amax() <= 1e-6);
         }
-        let dn = 1e-4;
-        let by_n = (law.respond_in_plane(z, v, normal + dn).force
-            - law.respond_in_plane(z, v, normal - dn).force)
-            / (2.0 * dn);
-        let rate_n = (law.respond_in_plane(z, v, normal + dn).rate
-            - law.respond_in_plane(z, v, normal - dn).rate)
-            / (2.0 * dn);
-        assert!((s.force.2 - by_n).amax() <= 1e-6);
-        assert!((s.rate.2 - rate_n).amax() <= 1e-6 / law.damping);
+        let (force_n, rate_n) = central(&|sign| respond(z, v, normal + sign * 1e-4), 1e-4);
+        assert!((s.force.2 - force_n).amax() <= 1e-6 * law.mu);
+        assert!((s.rate.2 - rate_n).amax() <= 1e-6 * law.mu / law.damping);
     }
 }
 
