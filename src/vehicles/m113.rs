@@ -16,8 +16,16 @@
 //! not placed from a drawing).
 //!
 //! The planar model carries one track and the matching half of the chassis:
-//! half its mass and half its pitch inertia. Positions are given in
-//! Chrono's track-assembly frame (x forward, y up, origin at the sprocket
+//! half its mass and half its pitch inertia. Its `tracks` block declares
+//! the other side for the spatial vehicle ([`M113Hull`], [`M113LeftTrack`],
+//! `<M113 as SpatialVehicle>::layout()`): the gauge ([`GAUGE`]), the whole
+//! hull with its roll and yaw inertias scaled from Chrono's as its pitch
+//! inertia is ([`CHASSIS_ROLL_INERTIA`], [`CHASSIS_YAW_INERTIA`]), the
+//! guide's play ([`GUIDE_PLAY`]), the shoe's and road wheels' inertias
+//! about their own axes from Chrono, and the left side as built: 63
+//! shoes, its road wheels 0.084–0.085 m forward of the right's.
+//!
+//! Positions are given in Chrono's track-assembly frame (x forward, y up, origin at the sprocket
 //! centre) and the chassis centroid is declared in the same frame.
 //!
 //! The arms' centroids are taken midway between pivot and wheel (the source
@@ -94,6 +102,20 @@ pub const TRACK_WIDTH: f64 = 0.381;
 /// gear through the M113A3). What `steer` turns two of this planar
 /// track at.
 pub const GAUGE: f64 = 85.0 * 0.0254;
+/// Chrono's hull's roll and yaw inertias, kg m², about its forward and
+/// vertical axes (`M113_Chassis`: 13 983.08 and 28 805.57; a secondary
+/// source), for its 7 819.24 kg ([`CHRONO_CHASSIS`]).
+pub const CHRONO_CHASSIS_ROLL_YAW: (f64, f64) = (13_983.08, 28_805.57);
+/// The whole hull's roll inertia, kg m²: Chrono's scaled with the mass, as
+/// [`CHASSIS_INERTIA`] is.
+pub const CHASSIS_ROLL_INERTIA: f64 = CHRONO_CHASSIS_ROLL_YAW.0 * CHASSIS_MASS / CHRONO_CHASSIS.0;
+/// The whole hull's yaw inertia, kg m²: Chrono's scaled with the mass.
+pub const CHASSIS_YAW_INERTIA: f64 = CHRONO_CHASSIS_ROLL_YAW.1 * CHASSIS_MASS / CHRONO_CHASSIS.0;
+/// The centre guide's lateral play against the road wheels, m, each way:
+/// half of Chrono's gap between a dual road wheel's halves (0.051 m,
+/// `M113_RoadWheel`) less its shoe's guide, 0.0114 m wide
+/// (`M113_TrackShoeSinglePin`); a secondary source, no drawing found.
+pub const GUIDE_PLAY: f64 = (0.051 - 0.0114) / 2.0;
 /// The M113A3's X200-4 transmission's minimum steer ratios in ranges 1
 /// to 4 (it pivots in neutral): US Army Ordnance subcourse OD1714, lesson
 /// 1 ("an infinitely variable, hydrostatically controlled differential
@@ -174,6 +196,29 @@ crate::model! {
         // Half the vehicle's mass reflected through the 0.25 m sprocket
         // is ~250 kg m²: a closed loop of about 12 rad/s, well damped.
         drive { proportional: 3000.0, integral: 6000.0, max_torque: 2e4 },
+        // Both sides in space: the right is this declaration, the left
+        // its mirror with one shoe fewer and its road wheels staggered.
+        tracks {
+            gauge: GAUGE,
+            guide_play: GUIDE_PLAY,
+            hull { mass: CHASSIS_MASS, inertia: (CHASSIS_ROLL_INERTIA, CHASSIS_INERTIA, CHASSIS_YAW_INERTIA) },
+            // The shoe and the road wheels about their forward and normal
+            // axes: Chrono's `M113_TrackShoeSinglePin` (0.22, 0.25 kg m²)
+            // and `M113_RoadWheel` (1.14 kg m² both); secondary. The
+            // other bodies take the default rule.
+            across { link: (0.22, 0.25), rw: (1.14, 1.14) },
+            left {
+                // 63 shoes against the right's 64 (AFV Database, M113,
+                // track T130E1: "Left side: 63 Right side: 64"; Chrono's
+                // the same).
+                links: 63,
+                // The road wheels 0.084–0.085 m forward of the right's, the
+                // torsion bars crossing the hull side by side (Chrono's
+                // `M113_TrackAssemblySinglePin`, `m_susp_locs_L`;
+                // secondary).
+                rw { at: [(-0.655, -0.215), (-1.322, -0.215), (-1.989, -0.215), (-2.656, -0.215), (-3.322, -0.215)] },
+            },
+        },
         // The M113A3's: the 6V53T's full-load torque (N m) against engine
         // speed (rad/s) through the X200-4's converter, ranges and lock-up
         // and the final drive; each figure's source is at `powertrain()`.

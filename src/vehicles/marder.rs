@@ -1,5 +1,9 @@
 //! The second vehicle: a planar Marder, **one side** (the left track set,
-//! 77 shoes).
+//! 77 shoes). Its `tracks` block declares the right side for the spatial
+//! vehicle ([`MarderHull`], [`MarderRightTrack`]): 78 shoes, its road
+//! wheels and rollers 0.1 m forward, as Chrono's; the whole hull with
+//! Chrono's roll and yaw inertias ([`CHASSIS_ROLL_INERTIA`],
+//! [`CHASSIS_YAW_INERTIA`]).
 //!
 //! Figures from Project Chrono's open Marder model (a secondary source:
 //! its `Marder_*` files under `src/chrono_models/vehicle/marder/`),
@@ -58,6 +62,17 @@ pub const CHASSIS_MASS: f64 = 25_000.0;
 /// Whole-vehicle hull pitch inertia (Chrono `Iyy`), kg m² (the planar
 /// model uses half).
 pub const CHASSIS_INERTIA: f64 = 98_182.71;
+/// Whole-vehicle hull roll inertia (Chrono `Ixx`, about its forward
+/// axis), kg m²: the spatial vehicle's.
+pub const CHASSIS_ROLL_INERTIA: f64 = 13_653.39;
+/// Whole-vehicle hull yaw inertia (Chrono `Izz`, about its vertical
+/// axis), kg m².
+pub const CHASSIS_YAW_INERTIA: f64 = 101_954.43;
+/// The centre guide's lateral play against the road wheels, m, each way:
+/// half of Chrono's gap between a road wheel's halves (0.051 m,
+/// `Marder_RoadWheel`) less its shoe's guide, 0.0114 m wide
+/// (`Marder_TrackShoeSinglePin`); a secondary source, no drawing found.
+pub const GUIDE_PLAY: f64 = (0.051 - 0.0114) / 2.0;
 /// Sprocket gear inertia plus its axle's, kg m²: the axle spins with it.
 pub const SPROCKET_INERTIA: f64 = 0.883 + 0.4;
 /// Road-wheel arm mass, kg.
@@ -170,6 +185,27 @@ crate::model! {
             pins: [(0.0535, 0.0), (-0.061, 0.0)],
             pin_radius: 0.015,
             width: TRACK_WIDTH,
+        },
+        // Both sides in space: this declaration is the left side; the
+        // right is its mirror with one shoe more and its road wheels and
+        // rollers 0.1 m forward (Chrono's `Marder_TrackAssemblySinglePin`:
+        // 78 shoes against 77, `m_right_x_offset`; secondary).
+        tracks {
+            side: left,
+            gauge: GAUGE,
+            guide_play: GUIDE_PLAY,
+            hull { mass: CHASSIS_MASS, inertia: (CHASSIS_ROLL_INERTIA, CHASSIS_INERTIA, CHASSIS_YAW_INERTIA) },
+            // The shoe and the road wheels about their forward and normal
+            // axes: Chrono's `Marder_TrackShoeSinglePin` (0.22, 0.25 kg m²)
+            // and `Marder_RoadWheel` (1.14 kg m² both). The other bodies
+            // take the default rule.
+            across { link: (0.22, 0.25), shocked: (1.14, 1.14), plain: (1.14, 1.14) },
+            right {
+                links: 78,
+                shocked { at: [(-0.7458, -0.3759), (-1.5258, -0.3759), (-3.8658, -0.3759), (-4.6458, -0.3759)] },
+                plain { at: [(-2.3058, -0.3759), (-3.0858, -0.3759)] },
+                roller { at: [(-1.1358, 0.1761), (-2.6958, 0.1761), (-4.2106, 0.1761)] },
+            },
         },
         // The M113's laws (Hunt-Crossley, exponent 1): no Marder figures.
         contact {

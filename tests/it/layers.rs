@@ -151,6 +151,7 @@ pub const RUNTIME: Graph = &[
             "terrain",
             "contact",
             "dynamics",
+            "spatial",
             "vehicle",
         ],
     ),

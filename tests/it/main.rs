@@ -55,6 +55,7 @@ mod soft_ground;
 mod soil_laws;
 mod space_contact;
 mod spatial_tree;
+mod spatial_vehicle;
 mod stands_alone;
 mod steering;
 mod stiction;

@@ -69,6 +69,7 @@ pub struct Link {
     pub u2: Vec2,
 }
 
+#[derive(Clone)]
 pub enum Closure {
     Open,
     Partitioned,
@@ -94,6 +95,52 @@ pub struct Vehicle {
     /// What makes the vehicle run; `None` without a `shoe` section (the
     /// dynamics only).
     pub running: Option<Running>,
+    /// The spatial vehicle's two sides, if a `tracks` block is declared.
+    pub tracks: Option<Tracks>,
+}
+
+/// A `tracks` block: the two sides of a spatial vehicle. One side is the
+/// planar declaration (the right unless `side: left`); the other its
+/// mirror, with the block's overrides (its link count, its parts'
+/// places).
+pub struct Tracks {
+    /// Centre plane to centre plane, m.
+    pub gauge: Num,
+    /// The shoe's width, m (the `shoe` section's).
+    pub shoe_width: Num,
+    /// The centre guide's lateral play each way, m.
+    pub guide_play: Num,
+    /// The hull's tree: the frame (the whole hull), then the right side's
+    /// parts and arms, then the left's, as [`Vehicle::chassis`] is built.
+    pub hull: Vec<TreeBody>,
+    /// The hull's parts, named `right_…` and `left_…`.
+    pub parts: Vec<Part>,
+    /// The body index of each of `parts` and of its arm, in `hull`.
+    pub part_bodies: Vec<(usize, Option<usize>)>,
+    /// Whether each of `parts` is on the left.
+    pub left: Vec<bool>,
+    /// Each hull body's offset along the lateral axis (left positive), m.
+    pub offsets: Vec<Num>,
+    /// Each hull body's inertia across the plane.
+    pub hull_across: Vec<Across>,
+    /// Each right-track link's.
+    pub right_links: Vec<Across>,
+    /// Each left-track link's.
+    pub left_links: Vec<Across>,
+    /// Whether the declaration describes the left side.
+    pub declared_left: bool,
+    /// The mirrored side's track, when its link count differs from the
+    /// declared one's.
+    pub mirror_track: Option<Track>,
+}
+
+/// A body's inertia about the plane's in-plane axes, kg m²: along `x`,
+/// along the plane's normal-in-plane `z`, and the product.
+#[derive(Clone)]
+pub struct Across {
+    pub xx: Num,
+    pub zz: Num,
+    pub xz: Num,
 }
 
 /// The declared contact and drive of a vehicle: what `Name::config`
@@ -228,6 +275,7 @@ impl PartKind {
 }
 
 /// A body pinned to the chassis at its own centre.
+#[derive(Clone)]
 pub struct Part {
     pub name: Ident,
     pub kind: PartKind,

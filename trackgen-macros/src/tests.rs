@@ -205,3 +205,71 @@ fn each_user_expression_is_emitted_once() {
         "each of the two joint expressions once"
     );
 }
+
+/// A `tracks` block: the hull with both sides' parts (the left's road
+/// wheels moved, their arms with them), a left track one link shorter
+/// (its link override still in range), the links' declared inertia across
+/// the plane and the parts' by the default rule, and the layout.
+#[test]
+fn vehicle_with_two_tracks() {
+    insta::assert_snapshot!(pretty(expand(quote! {
+        pub vehicle Twin {
+            chassis { mass: 1000.0, inertia: 500.0, centroid: (-1.0, 0.3) },
+            sprocket drive { at: (0.0, 0.0), mass: 20.0, inertia: 0.5, radius: 0.2, teeth: 9 },
+            road_wheel rw[2] { at: [(-0.5, -0.2), (-1.0, -0.2)], mass: 30.0, inertia: 1.5, radius: 0.25,
+                arm { pivot_offset: (0.25, 0.1), mass: 40.0, inertia: 0.5,
+                      stiffness: 2e4, damping: 400.0 } },
+            idler rear { at: (-1.6, 0.0), mass: 20.0, inertia: 1.0, radius: 0.2 },
+            track {
+                links: 4,
+                link { mass: 10.0, inertia: 0.02, u1: (-0.06, 0.0), u2: (0.06, 0.0) },
+                link[2] { mass: 11.0 },
+            },
+            shoe { ground_points: [(-0.05, -0.025), (0.05, -0.025)], inner_offset: 0.025,
+                   pins: [(0.055, 0.0)], pin_radius: 0.012, width: 0.3 },
+            tracks {
+                gauge: GAUGE,
+                guide_play: 0.01,
+                hull { mass: 2000.0, inertia: (600.0, 1000.0, 1200.0) },
+                across { rw_arm: (0.3, 0.4, 0.1) },
+                left { links: 3, rw { at: [(-0.45, -0.2), (-0.95, -0.2)] } },
+            },
+        }
+    })));
+}
+
+/// After an error in a `tracks` block, the stubs still hold `NameHull`
+/// with its parts' constants, `NameLeftTrack` and the `SpatialVehicle`
+/// impl: code naming them reports only the real error.
+#[test]
+fn tracks_errors_expand_to_stubs() {
+    let out = expand(quote! {
+        pub vehicle Twin {
+            chassis { mass: 1000.0, inertia: 500.0 },
+            road_wheel rw1 { at: (-1.0, -0.2), mass: 35.56, inertia: 2.16, radius: 0.305 },
+            track {
+                links: 4,
+                link { mass: 18.02, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) },
+            },
+            shoe { ground_points: [(-0.05, -0.025)], inner_offset: 0.025,
+                   pins: [(0.0, 0.0)], pin_radius: 0.012, width: 0.4 },
+            tracks {
+                gauge: 0.3,
+                hull { mass: 2000.0, inertia: (600.0, 1000.0, 1200.0) },
+                left { links: 3 },
+            },
+        }
+    })
+    .to_string();
+    assert!(out.contains("compile_error"), "{out}");
+    assert!(out.contains("must exceed the track's width"), "{out}");
+    for stub in [
+        "struct TwinHull",
+        "struct TwinLeftTrack",
+        "SpatialVehicle for Twin",
+        "RIGHT_RW1",
+        "LEFT_RW1",
+    ] {
+        assert!(out.contains(stub), "no `{stub}` among the stubs: {out}");
+    }
+}

@@ -120,6 +120,7 @@ pub mod __private {
         ArmSpring, BodyDescription, BodyLoad, ChassisModel, ChassisPart, ClosingJoint, Closure,
         DynamicsError, LoopJoint, PartKind, RecursiveModel, TrackModel, TreeDescription,
     };
+    pub use crate::spatial::{OutOfPlaneInertia, Side, SpatialLayout, SpatialVehicle};
     pub use crate::trig::{sin_cos, sin_cos_each};
     pub use crate::vehicle::{
         ContactFit, DeclaredContact, DeclaredPair, Drive, Driveline, EngineDynamics, Geometry,

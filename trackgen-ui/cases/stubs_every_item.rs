@@ -5,6 +5,7 @@ use trackgen::terrain::Terrain;
 use trackgen::system::Simulated;
 use trackgen::multibody::{RecursiveModel, TrackModel};
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
+use trackgen::spatial::SpatialVehicle;
 
 trackgen::model! {
     pub vehicle Tank {
@@ -15,7 +16,12 @@ trackgen::model! {
         idler rear { at: (-3.0, 0.0), mass: 20.0, inertia: 1.0, radius: 0.25 },
         track { links: 40, link { mass: 18.0, inertia: 0.04, u1: (-0.077, 0.0), u2: (0.077, 0.0) } },
         shoe { ground_points: [(-0.06, -0.03), (0.06, -0.03)], inner_offset: 0.03,
-               pins: [(0.0535, 0.0), (-0.061, 0.0)], pin_radius: 0.015 },
+               pins: [(0.0535, 0.0), (-0.061, 0.0)], pin_radius: 0.015, width: 0.38 },
+        tracks {
+            gauge: 2.2,
+            hull { mass: 2000.0, inertia: (600.0, 1000.0, 1200.0) },
+            left { links: 39 },
+        },
     }
 
     pub track Chain {
@@ -35,5 +41,9 @@ fn main() {
     let _ = (Tank::geometry(), <Tank as Vehicle>::System::track_dof());
     let q = trackgen::nalgebra::SVector::<f64, 42>::zeros();
     let _ = TankTrack.closure(&q);
+    let _ = (Tank::HULL, TankHull::FRAME, TankHull::RIGHT_RW1, TankHull::LEFT_RW2_ARM, TankLeftTrack);
+    let _ = (<Tank as SpatialVehicle>::HULL_DOF, <Tank as SpatialVehicle>::LEFT_TRACK_DOF, Tank::layout());
+    let _ = <TankHull as RecursiveModel<{ <Tank as SpatialVehicle>::HULL_DOF }>>::description(&TankHull);
+    let _ = TankLeftTrack.closure(&trackgen::nalgebra::SVector::<f64, 41>::zeros());
     let _ = Chain.kinetic_energy(&trackgen::nalgebra::SVector::<f64, 6>::zeros(), &q.fixed_rows::<6>(0).into());
 }

@@ -6,6 +6,7 @@
 
 mod articulated;
 mod chassis;
+mod chassis_type;
 mod lin;
 mod linear_time;
 mod per_link;
@@ -14,6 +15,7 @@ mod recursive;
 mod running;
 mod runtime_path;
 mod scopes;
+mod spatial;
 mod stub;
 mod track;
 mod tree;

@@ -6,8 +6,9 @@
 //! A track becomes its unit struct with `LINKS` and the model traits for
 //! any coordinate count; a vehicle also `NameTrack`, `NameChassis` (with
 //! the body-index constants of the parts that parsed), `TRACK_DOF`,
-//! `CHASSIS_DOF`, `TRACK`, `CHASSIS`, `NameSystem` and, if it has a shoe,
-//! its `Vehicle` impl.
+//! `CHASSIS_DOF`, `TRACK`, `CHASSIS`, `NameSystem`, if it has a shoe its
+//! `Vehicle` impl, and with a `tracks` block `NameHull`, `HULL`, the
+//! mirrored side's track it declares and its `SpatialVehicle` impl.
 
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
@@ -80,6 +81,9 @@ fn stub(item: &Item) -> TokenStream {
             if vehicle.running.is_some() {
                 out.extend(vehicle_impl(name, (&track, &chassis), dofs));
             }
+            if let Some(tracks) = &vehicle.tracks {
+                out.extend(spatial(vis, name, &track, tracks));
+            }
             out
         }
     }
@@ -146,6 +150,81 @@ fn models(name: &Ident, chassis: bool) -> TokenStream {
         }
         #last
     }
+}
+
+/// A `tracks` block's items: `NameHull` with the constants of its parts,
+/// the mirrored side's track where declared, and the `SpatialVehicle`
+/// impl.
+fn spatial(
+    vis: &Visibility,
+    name: &Ident,
+    declared: &Ident,
+    tracks: &crate::ir::Tracks,
+) -> TokenStream {
+    let rt = runtime();
+    let hull = format_ident!("{}Hull", name);
+    let mut out = unit(vis, &hull);
+    let mut seen = std::collections::BTreeSet::new();
+    let parts = tracks
+        .parts
+        .iter()
+        .zip(&tracks.part_bodies)
+        .filter(|(p, _)| seen.insert(p.name.to_string()))
+        .map(|(p, &(body, arm))| {
+            let konst = format_ident!("{}", p.name.to_string().to_uppercase());
+            let arm = arm.map(|arm| {
+                let konst = format_ident!("{}_ARM", p.name.to_string().to_uppercase());
+                quote!(pub const #konst: usize = #arm;)
+            });
+            quote!(pub const #konst: usize = #body; #arm)
+        });
+    let mirror = match &tracks.mirror_track {
+        Some(_) => {
+            let side = if tracks.declared_left {
+                "Right"
+            } else {
+                "Left"
+            };
+            let mirror = format_ident!("{}{}Track", name, side);
+            out.extend(unit(vis, &mirror));
+            out.extend(models(&mirror, false));
+            mirror
+        }
+        None => declared.clone(),
+    };
+    let (right, left) = match tracks.declared_left {
+        true => (&mirror, declared),
+        false => (declared, &mirror),
+    };
+    let (dh, dr, dl) = (
+        tracks.hull.len() + 2,
+        tracks.right_links.len() + 2,
+        tracks.left_links.len() + 2,
+    );
+    out.extend(quote! {
+        #[allow(dead_code)]
+        impl #name {
+            pub const HULL: #hull = #hull;
+        }
+        #[allow(dead_code)]
+        impl #hull {
+            pub const FRAME: usize = 0;
+            #(#parts)*
+        }
+        impl #rt::SpatialVehicle for #name {
+            const HULL_DOF: usize = #dh;
+            const RIGHT_TRACK_DOF: usize = #dr;
+            const LEFT_TRACK_DOF: usize = #dl;
+            type Hull = #hull;
+            type RightTrack = #right;
+            type LeftTrack = #left;
+            fn layout() -> #rt::SpatialLayout {
+                ::core::unreachable!("the declaration did not compile")
+            }
+        }
+    });
+    out.extend(models(&hull, true));
+    out
 }
 
 /// The `Vehicle` impl of a vehicle with a shoe.

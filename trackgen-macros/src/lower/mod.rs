@@ -19,6 +19,7 @@ mod powertrain;
 mod running;
 mod sections;
 mod track;
+mod tracks;
 mod tree;
 mod vehicle;
 

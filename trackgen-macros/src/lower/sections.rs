@@ -17,6 +17,7 @@ pub(super) struct VehicleSections<'a> {
     pub(super) contact: Option<&'a crate::parse::Block>,
     pub(super) drive: Option<&'a crate::parse::Block>,
     pub(super) powertrain: Option<&'a crate::parse::Block>,
+    pub(super) tracks: Option<(&'a Ident, &'a crate::parse::Block)>,
 }
 
 /// The declared sprocket profile: tip radius, gap arc radius, gap arc

@@ -39,6 +39,7 @@ impl Lowering<'_> {
             "idler",
             "road_wheel",
             "roller",
+            "tracks",
         ];
         let sections = self.sections("vehicle", block, &kinds);
         let mut unique = VehicleSections::default();
@@ -46,6 +47,7 @@ impl Lowering<'_> {
         let mut part_names: BTreeMap<String, Ident> = BTreeMap::new();
         let mut sprocket: Option<&Ident> = None;
         let mut profile = Profile::default();
+        let mut repeated: BTreeMap<String, Vec<usize>> = BTreeMap::new();
         let vehicle_name = name;
         for entry in sections {
             let Entry::Section {
@@ -106,6 +108,10 @@ impl Lowering<'_> {
             }
             let base = repeat.map(|_| name);
             let (declared, declared_profile) = self.part(kind_ir, &names, base, body);
+            if base.is_some() {
+                let first = parts.len();
+                repeated.insert(name.to_string(), (first..first + declared.len()).collect());
+            }
             parts.extend(declared);
             if let Some(p) = declared_profile {
                 profile = p;
@@ -113,20 +119,7 @@ impl Lowering<'_> {
         }
         let chassis = unique.chassis.map(|b| self.chassis(b));
         let track = unique.track.map(|b| self.track(b, false));
-        if chassis.is_none() {
-            self.errors.at(
-                vehicle_name.span(),
-                format!(
-                    "vehicle `{vehicle_name}` has no `chassis {{ mass: …, inertia: … }}` section"
-                ),
-            );
-        }
-        if track.is_none() {
-            self.errors.at(
-                vehicle_name.span(),
-                format!("vehicle `{vehicle_name}` has no `track {{ … }}` section"),
-            );
-        }
+        self.required_sections(vehicle_name, chassis.is_some(), track.is_some());
         let (chassis_mass, chassis_inertia, centroid) =
             chassis.unwrap_or((Num::ZERO, Num::ZERO, Vec2::zero()));
         // The seat on the frame, from its centroid (the default: the
@@ -147,6 +140,17 @@ impl Lowering<'_> {
         });
         track.gravity = gravity.clone();
         let running = self.running(&unique, sprocket.is_some(), profile, &track);
+        let tracks = unique.tracks.map(|(keyword, body)| {
+            let sides = super::tracks::Sides {
+                parts: &parts,
+                repeated: &repeated,
+                centroid: &centroid,
+                track: &track,
+                track_block: unique.track,
+                shoe_width: running.as_ref().and_then(|r| r.shoe.width.clone()),
+            };
+            self.tracks(keyword, body, &sides)
+        });
         let (chassis, part_bodies) = super::tree::chassis(&chassis_mass, &chassis_inertia, &parts);
         Vehicle {
             gravity,
@@ -157,6 +161,24 @@ impl Lowering<'_> {
             chassis,
             part_bodies,
             running,
+            tracks,
+        }
+    }
+
+    /// A vehicle without its `chassis` or `track` section: an error at its
+    /// name for each.
+    fn required_sections(&mut self, vehicle: &Ident, chassis: bool, track: bool) {
+        if !chassis {
+            self.errors.at(
+                vehicle.span(),
+                format!("vehicle `{vehicle}` has no `chassis {{ mass: …, inertia: … }}` section"),
+            );
+        }
+        if !track {
+            self.errors.at(
+                vehicle.span(),
+                format!("vehicle `{vehicle}` has no `track {{ … }}` section"),
+            );
         }
     }
 
@@ -176,6 +198,15 @@ impl Lowering<'_> {
             "contact" => &mut unique.contact,
             "drive" => &mut unique.drive,
             "powertrain" => &mut unique.powertrain,
+            "tracks" => {
+                if unique.tracks.is_some() {
+                    self.errors
+                        .at(kind.span(), "duplicate `tracks` section".to_string());
+                } else {
+                    unique.tracks = Some((kind, body));
+                }
+                return;
+            }
             _ => {
                 if unique.shoe.is_some() {
                     self.errors

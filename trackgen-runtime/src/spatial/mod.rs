@@ -55,8 +55,10 @@
 //! Taylor arithmetic, `Jᵀ M J` and Newton–Euler's right-hand side summed
 //! and solved in the coordinates' own rates.
 
+mod layout;
 mod tree;
 
+pub use layout::{Side, SpatialLayout, SpatialVehicle};
 pub use tree::{FloatingTree, PlanePose, PlaneRates, SpatialLoad};
 
 use nalgebra::Matrix3;
@@ -75,6 +77,23 @@ pub struct OutOfPlaneInertia {
 }
 
 impl OutOfPlaneInertia {
+    /// A body of `mass` (kg) whose planar section has `inertia` (kg m²)
+    /// about the pin axis, spread evenly across `width` (m) of the plane's
+    /// normal: `I/2 + m w²/12` about both in-plane axes, no product.
+    /// Exact for any body of revolution about that axis (a solid or hollow
+    /// wheel: `m r²/4 + m w²/12` for a solid one), a thin lamina's
+    /// perpendicular-axis rule `I/2` at zero width, and the declaration's
+    /// default for bodies whose figures are not declared (for a link or an
+    /// arm, a stated approximation).
+    pub fn extruded(mass: f64, inertia: f64, width: f64) -> OutOfPlaneInertia {
+        let across = inertia / 2.0 + mass * width * width / 12.0;
+        OutOfPlaneInertia {
+            xx: across,
+            zz: across,
+            xz: 0.0,
+        }
+    }
+
     /// A uniform plate of `mass` (kg), `length` along the link, `width`
     /// across the plane and `thickness` in it (m): `m (w² + t²)/12` about
     /// `x`, `m (l² + w²)/12` about `z`, no product.
