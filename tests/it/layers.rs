@@ -78,7 +78,10 @@ pub const RUNTIME: Graph = &[
             "integrate",
         ],
     ),
-    ("assembly", &["planar", "multibody", "contact", "terrain"]),
+    (
+        "assembly",
+        &["planar", "multibody", "contact", "terrain", "spatial"],
+    ),
     // the vehicle
     (
         "vehicle",

@@ -54,6 +54,7 @@ mod shifted_chain;
 mod soft_ground;
 mod soil_laws;
 mod space_contact;
+mod spatial_assembly;
 mod spatial_tree;
 mod spatial_vehicle;
 mod stands_alone;

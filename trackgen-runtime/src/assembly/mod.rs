@@ -19,6 +19,7 @@
 mod belt;
 mod error;
 mod path;
+mod sides;
 mod vehicle;
 
 use nalgebra::{SVector, Vector2};
@@ -28,6 +29,7 @@ pub(crate) use belt::longest_upper_span;
 pub use error::{AssemblyError, LinkCounts, START_PENETRATION, SlackLimit, Touching};
 pub use path::PitchCircle;
 use path::{Path, Place};
+pub use sides::{AssembledSides, SideError, assemble_sides};
 pub use vehicle::{Assembled, assemble};
 
 /// The most the upper run may sag: a quarter of a span's length, below

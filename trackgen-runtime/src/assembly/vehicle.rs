@@ -10,7 +10,7 @@ use super::{
 };
 use crate::contact::sprocket::{self, ToothProfile};
 use crate::contact::{BodyState, Contact, ShoeGeometry, ground, wheel};
-use crate::multibody::{ChassisModel, PartKind, TrackModel};
+use crate::multibody::{ChassisModel, ChassisPart, PartKind, TrackModel};
 use crate::terrain::Terrain;
 
 /// Initial coordinates of a vehicle.
@@ -47,10 +47,11 @@ fn tensioned(wheels: &[PitchCircle]) -> f64 {
 /// scanned for the bracket nearest the declared position.
 const TRAVEL_SAMPLES: usize = 48;
 
-/// The wheels' pitch circles in wrap order (counter-clockwise), each with
-/// its index in `C::PARTS`.
+/// The pitch circles of the wheels `parts` (of the chassis' `PARTS`) in
+/// wrap order (counter-clockwise), each with its index in `parts`.
 fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
     chassis: &C,
+    parts: &[ChassisPart],
     qc: &SVector<f64, DC>,
     pitch: f64,
     shoe: &ShoeGeometry,
@@ -58,7 +59,7 @@ fn pitch_circles<C: ChassisModel<DC>, const DC: usize>(
 ) -> Vec<(usize, PitchCircle)> {
     let mut centres = vec![Vector2::zeros(); C::BODIES];
     chassis.body_positions(qc, &mut centres);
-    let mut circles: Vec<(usize, PitchCircle)> = C::PARTS
+    let mut circles: Vec<(usize, PitchCircle)> = parts
         .iter()
         .enumerate()
         .map(|(i, part)| {
@@ -99,72 +100,133 @@ pub fn assemble<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const D
     clearance: f64,
 ) -> Result<Assembled<DT, DC>, AssemblyError> {
     terrain.check()?;
-    let pitch = track.description().pitch()?;
     let mut qc = SVector::<f64, DC>::zeros();
     qc[0] = x;
-    let sprocket_index = |circles: &[(usize, PitchCircle)]| {
-        circles
-            .iter()
-            .position(|(i, _)| C::PARTS[*i].kind == PartKind::Sprocket)
-    };
-    let tensioner = C::PARTS
-        .iter()
-        .find(|p| p.kind == PartKind::Idler)
-        .and_then(|p| p.arm);
-    let mut sag = None;
-    let mut set = None;
-    if let Some(arm) = tensioner {
-        let (phi, kappa) = set_tensioner(
-            track,
-            |phi| {
-                let mut q = qc;
-                q[2 + arm.body] = phi;
-                pitch_circles(chassis, &q, pitch, shoe, profile)
-                    .iter()
-                    .map(|c| c.1)
-                    .collect()
-            },
-            arm.travel,
-        )?;
-        qc[2 + arm.body] = phi;
-        sag = Some(kappa);
-        set = Some((arm.body, phi));
-    }
-    let mut circles = pitch_circles(chassis, &qc, pitch, shoe, profile);
-    // Down onto the ground: the lowest wheel's shoes touch it.
-    let depth = -shoe.ground_points.iter().map(|p| p.y).fold(0.0, f64::min);
-    let drop = circles
-        .iter()
-        .map(|(_, c)| c.centre.y - c.radius - depth - terrain.height(c.centre.x) - clearance)
-        .fold(f64::INFINITY, f64::min);
-    qc[1] -= drop;
-    for (_, c) in &mut circles {
-        c.centre.y -= drop;
-    }
-    let wheels: Vec<PitchCircle> = circles.iter().map(|c| c.1).collect();
-    let sprocket = sprocket_index(&circles);
-    let wrapped = match sag {
-        Some(kappa) => wrap_at(track, &wheels, kappa)?,
-        None => wrap(track, &wheels)?,
-    };
-    let (qt, joints) = (wrapped.q, wrapped.joints);
-    if let Some(s) = sprocket {
-        let part = &C::PARTS[circles[s].0];
-        let (centre, radius) = (wheels[s].centre, wheels[s].radius);
-        let off = |p: &Vector2<f64>| ((p - centre).norm() - radius).abs();
-        let nearest = joints
-            .iter()
-            .min_by(|a, b| off(a).total_cmp(&off(b)))
-            .expect("joints");
-        let psi = (nearest - centre).y.atan2((nearest - centre).x);
-        qc[2 + part.body] = psi - 0.5 * profile.pitch_angle();
-    }
-    check_start::<T, DT, C, DC>(track, chassis, (&qt, &qc), shoe, profile, terrain)?;
+    let mut side = Gear::tensioned(track, chassis, C::PARTS, &mut qc, shoe, profile)?;
+    let drop = side.drop(shoe, terrain, clearance);
+    side.lower(&mut qc, drop);
+    let qt = side.wrap(track, &mut qc, profile)?;
+    check_start(track, chassis, C::PARTS, (&qt, &qc), shoe, profile, terrain)?;
     Ok(Assembled {
         track: qt,
         chassis: qc,
-        tensioner: set,
+        tensioner: side.tensioner,
     })
+}
+
+/// One side's running gear being assembled: its parts, their pitch
+/// circles in wrap order with the tensioner set, and how the upper run is
+/// to sag.
+pub(super) struct Gear<'p> {
+    parts: &'p [ChassisPart],
+    /// Each circle with its index in `parts`.
+    circles: Vec<(usize, PitchCircle)>,
+    /// The upper run's sag curvature where a tensioner took up the slack
+    /// (1/m); `None`: the track sags as it will.
+    sag: Option<f64>,
+    /// The tensioner as set: its arm's body and angle, rad.
+    pub(super) tensioner: Option<(usize, f64)>,
+}
+
+impl<'p> Gear<'p> {
+    /// The side of `parts` at the chassis' coordinates `qc`, its
+    /// tensioner (the first idler on an arm among `parts`) swung so that
+    /// `track` fits with the upper run nearly tight; `qc` takes the arm's
+    /// angle.
+    pub(super) fn tensioned<
+        T: TrackModel<DT>,
+        const DT: usize,
+        C: ChassisModel<DC>,
+        const DC: usize,
+    >(
+        track: &T,
+        chassis: &C,
+        parts: &'p [ChassisPart],
+        qc: &mut SVector<f64, DC>,
+        shoe: &ShoeGeometry,
+        profile: &ToothProfile,
+    ) -> Result<Gear<'p>, AssemblyError> {
+        let pitch = track.description().pitch()?;
+        let tensioner = parts
+            .iter()
+            .find(|p| p.kind == PartKind::Idler)
+            .and_then(|p| p.arm);
+        let mut sag = None;
+        let mut set = None;
+        if let Some(arm) = tensioner {
+            let (phi, kappa) = set_tensioner(
+                track,
+                |phi| {
+                    let mut q = *qc;
+                    q[2 + arm.body] = phi;
+                    pitch_circles(chassis, parts, &q, pitch, shoe, profile)
+                        .iter()
+                        .map(|c| c.1)
+                        .collect()
+                },
+                arm.travel,
+            )?;
+            qc[2 + arm.body] = phi;
+            sag = Some(kappa);
+            set = Some((arm.body, phi));
+        }
+        Ok(Gear {
+            parts,
+            circles: pitch_circles(chassis, parts, qc, pitch, shoe, profile),
+            sag,
+            tensioner: set,
+        })
+    }
+
+    /// How far (m) the chassis must come down for this side's lowest
+    /// wheel's shoes to rest `clearance` above the terrain.
+    pub(super) fn drop(&self, shoe: &ShoeGeometry, terrain: &Terrain, clearance: f64) -> f64 {
+        let depth = -shoe.ground_points.iter().map(|p| p.y).fold(0.0, f64::min);
+        self.circles
+            .iter()
+            .map(|(_, c)| c.centre.y - c.radius - depth - terrain.height(c.centre.x) - clearance)
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The chassis (`qc`) and this side's circles brought down by `drop`.
+    pub(super) fn lower<const DC: usize>(&mut self, qc: &mut SVector<f64, DC>, drop: f64) {
+        qc[1] -= drop;
+        for (_, c) in &mut self.circles {
+            c.centre.y -= drop;
+        }
+    }
+
+    /// The track wrapped round this side's circles, and the sprocket (if
+    /// the side has one) turned in `qc` so that a gap holds a joint.
+    pub(super) fn wrap<T: TrackModel<DT>, const DT: usize, const DC: usize>(
+        &self,
+        track: &T,
+        qc: &mut SVector<f64, DC>,
+        profile: &ToothProfile,
+    ) -> Result<SVector<f64, DT>, AssemblyError> {
+        let wheels: Vec<PitchCircle> = self.circles.iter().map(|c| c.1).collect();
+        let wrapped = match self.sag {
+            Some(kappa) => wrap_at(track, &wheels, kappa)?,
+            None => wrap(track, &wheels)?,
+        };
+        let (qt, joints) = (wrapped.q, wrapped.joints);
+        let sprocket = self
+            .circles
+            .iter()
+            .position(|(i, _)| self.parts[*i].kind == PartKind::Sprocket);
+        if let Some(s) = sprocket {
+            let part = &self.parts[self.circles[s].0];
+            let (centre, radius) = (wheels[s].centre, wheels[s].radius);
+            let off = |p: &Vector2<f64>| ((p - centre).norm() - radius).abs();
+            let nearest = joints
+                .iter()
+                .min_by(|a, b| off(a).total_cmp(&off(b)))
+                .expect("joints");
+            let psi = (nearest - centre).y.atan2((nearest - centre).x);
+            qc[2 + part.body] = psi - 0.5 * profile.pitch_angle();
+        }
+        Ok(qt)
+    }
 }
 
 /// The tensioner's angle (rad, from the declared position, within
@@ -245,9 +307,15 @@ fn set_tensioner<T: TrackModel<DT>, const DT: usize>(
 /// The deepest contact of the assembled start, by contact
 /// [detection](crate::contact) (geometry only, no law), checked against
 /// [`START_PENETRATION`].
-fn check_start<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize>(
+pub(super) fn check_start<
+    T: TrackModel<DT>,
+    const DT: usize,
+    C: ChassisModel<DC>,
+    const DC: usize,
+>(
     track: &T,
     chassis: &C,
+    parts: &[ChassisPart],
     (qt, qc): (&SVector<f64, DT>, &SVector<f64, DC>),
     shoe: &ShoeGeometry,
     profile: &ToothProfile,
@@ -269,7 +337,7 @@ fn check_start<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC
     let mut contacts: Vec<Contact> = Vec::new();
     ground::detect(terrain, &links, shoe, &mut contacts);
     let mut touching = vec![Touching::Ground; contacts.len()];
-    for part in C::PARTS {
+    for part in parts {
         let body = &bodies[part.body];
         if part.kind == PartKind::Sprocket {
             sprocket::detect((body, part.body), profile, &links, shoe, &mut contacts);
