@@ -46,6 +46,7 @@ mod private_paths;
 mod pure_evaluation;
 mod readme_figures;
 mod ride_chain;
+mod rim_contact;
 mod rosenbrock_w;
 mod run_settings_properties;
 mod seat;
