@@ -7,6 +7,7 @@ mod support;
 
 mod assembly;
 mod auto_integrator;
+mod axial_contact;
 mod brake;
 mod chassis_finite_differences;
 mod closed_chain_simulation;
@@ -46,7 +47,6 @@ mod private_paths;
 mod pure_evaluation;
 mod readme_figures;
 mod ride_chain;
-mod rim_contact;
 mod rosenbrock_w;
 mod run_settings_properties;
 mod seat;

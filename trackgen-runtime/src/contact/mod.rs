@@ -15,16 +15,17 @@
 //! faces against wheel rims (road wheels, idler, rollers), the shoes' pins
 //! against the sprocket's teeth; and the terramechanics laws of soft soil
 //! ([`soil`](crate::terrain::soil)). In space, a shoe's point against a
-//! height field ([`space`]), and a wheel's rim on a shoe's face across
-//! their two planes, with the track's centre guide ([`rim`]). Forces come from positions and velocities only, as
+//! height field ([`space`]); a wheel's rim on a shoe's face and a shoe's
+//! pin on the sprocket's teeth across their two planes, with the track's
+//! centre guide ([`axial`]). Forces come from positions and velocities only, as
 //! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
 //! decoupled everywhere else (formulation §3).
 
+pub mod axial;
 mod detect;
 pub mod ground;
 pub mod outline;
 mod respond;
-pub mod rim;
 pub mod shoe;
 pub mod soft_ground;
 pub mod space;

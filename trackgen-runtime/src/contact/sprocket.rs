@@ -237,37 +237,75 @@ pub fn detect(
             if (pin - sprocket.position).norm_squared() > pin_reach * pin_reach {
                 continue;
             }
-            // Inside the addendum circle, outside the gap's arc: in a
-            // tooth. The pin leaves it the shorter way, back into the gap
-            // or out across the tip circle.
-            let gap = gaps.nearest(sprocket, pin);
-            let (out_of_gap, radial) = (pin - gap, pin - sprocket.position);
-            let (distance, from_centre) = (out_of_gap.norm(), radial.norm());
-            let into_flank = distance + shoe.pin_radius - profile.arc_radius;
-            let into_tip = profile.addendum + shoe.pin_radius - from_centre;
-            if into_flank <= 0.0 || into_tip <= 0.0 || distance == 0.0 || from_centre == 0.0 {
-                continue;
+            if let Some(tooth) = in_tooth(profile, &gaps, sprocket, pin, shoe.pin_radius) {
+                out.push(super::between(
+                    (i, link),
+                    (body, sprocket),
+                    (k, tooth.point, tooth.normal, tooth.depth),
+                ));
             }
-            let (depth, normal, point) = if into_flank <= into_tip {
-                (
-                    into_flank,
-                    -out_of_gap / distance,
-                    gap + out_of_gap / distance * profile.arc_radius,
-                )
-            } else {
-                (
-                    into_tip,
-                    radial / from_centre,
-                    sprocket.position + radial / from_centre * profile.addendum,
-                )
-            };
-            out.push(super::between(
-                (i, link),
-                (body, sprocket),
-                (k, point, normal, depth),
-            ));
         }
     });
+}
+
+/// A pin in a tooth: how deep, the unit normal pushing the pin out, and
+/// the point on the profile, m.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PinInTooth {
+    /// Penetration (> 0), m.
+    pub depth: f64,
+    /// The direction the tooth pushes the pin, unit.
+    pub normal: Vector2<f64>,
+    /// The point on the profile, m.
+    pub point: Vector2<f64>,
+}
+
+impl ToothProfile {
+    /// Where a pin of `pin_radius` (m) centred at `pin` (m, the
+    /// sprocket's plane) reaches into a tooth of this profile on
+    /// `sprocket`, by [`detect`]'s rule; `None` where it touches none.
+    pub fn pin_in_tooth(
+        &self,
+        sprocket: &BodyState,
+        pin: Vector2<f64>,
+        pin_radius: f64,
+    ) -> Option<PinInTooth> {
+        in_tooth(self, &Gaps::of(self), sprocket, pin, pin_radius)
+    }
+}
+
+/// Inside the addendum circle, outside the gap's arc: in a tooth. The pin
+/// leaves it the shorter way, back into the gap or out across the tip
+/// circle.
+#[inline]
+fn in_tooth(
+    profile: &ToothProfile,
+    gaps: &Gaps,
+    sprocket: &BodyState,
+    pin: Vector2<f64>,
+    pin_radius: f64,
+) -> Option<PinInTooth> {
+    let gap = gaps.nearest(sprocket, pin);
+    let (out_of_gap, radial) = (pin - gap, pin - sprocket.position);
+    let (distance, from_centre) = (out_of_gap.norm(), radial.norm());
+    let into_flank = distance + pin_radius - profile.arc_radius;
+    let into_tip = profile.addendum + pin_radius - from_centre;
+    if into_flank <= 0.0 || into_tip <= 0.0 || distance == 0.0 || from_centre == 0.0 {
+        return None;
+    }
+    Some(if into_flank <= into_tip {
+        PinInTooth {
+            depth: into_flank,
+            normal: -out_of_gap / distance,
+            point: gap + out_of_gap / distance * profile.arc_radius,
+        }
+    } else {
+        PinInTooth {
+            depth: into_tip,
+            normal: radial / from_centre,
+            point: sprocket.position + radial / from_centre * profile.addendum,
+        }
+    })
 }
 
 /// The derivatives of a tooth contact's geometry ([`detect`]'s) with the

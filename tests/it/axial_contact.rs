@@ -1,4 +1,5 @@
-//! A wheel's rim on a shoe's face in space (`contact::rim`): with the
+//! A wheel's rim on a shoe's face and a pin on the sprocket's teeth in
+//! space (`contact::axial`). The rim: with the
 //! wheel's and the link's planes one, it is the planar rim contact
 //! (`contact::wheel` and `ContactLaws::respond`), whatever the plane's
 //! place and heading; the rim is a cylinder (sliding along the axle within
@@ -8,14 +9,21 @@
 //! and turning; the power the two bodies give the contact is the rate of
 //! its stored energy and its dissipation (the books close), rim and guide
 //! together; and the guide (a point of the link) pushes the link back
-//! beyond its play only.
+//! beyond its play only. The teeth: in one plane the planar teeth
+//! (`contact::sprocket`) at the M113's sprocket turned against its
+//! assembled track; with the sprocket's axle tilted, turning and off the
+//! track's plane, the rate against central differences and the books
+//! closed.
 
-use trackgen::contact::rim::{GuideLaw, RimContact, SpaceFace, SpaceWheel};
-use trackgen::contact::{BodyState, ContactLaws, wheel};
+use trackgen::assembly::assemble;
+use trackgen::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
+use trackgen::contact::{BodyState, ContactLaws, sprocket, wheel};
 use trackgen::laws::{Friction, NormalLaw};
+use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{Rotation3, Vector2, Vector3};
+use trackgen::terrain::Terrain;
 use trackgen::vehicle::Vehicle;
-use trackgen::vehicles::m113::M113;
+use trackgen::vehicles::m113::{M113, M113Chassis, M113Track};
 
 fn laws() -> ContactLaws {
     ContactLaws {
@@ -96,21 +104,25 @@ fn planar_cases() -> Vec<(BodyState, BodyState)> {
         .collect()
 }
 
-fn embed(
-    plane: &Plane,
-    link: &BodyState,
-    wheel: &BodyState,
-    lateral: f64,
-) -> (SpaceFace, SpaceWheel) {
+/// A planar link's running face, guide and motion in `plane`.
+fn face_of(plane: &Plane, link: &BodyState) -> SpaceFace {
     let shoe = M113::geometry().shoe;
-    let face = SpaceFace {
+    SpaceFace {
         ends: shoe.inner_face.map(|p| plane.point(link.point(p))),
         inward: plane.vector(link.arm(Vector2::new(0.0, 1.0))),
         guide: plane.point(link.point(Vector2::new(0.045, shoe.inner_offset()))),
         centroid: plane.point(link.position),
         velocity: plane.vector(link.velocity),
         angular_velocity: plane.spin(link.omega),
-    };
+    }
+}
+
+fn embed(
+    plane: &Plane,
+    link: &BodyState,
+    wheel: &BodyState,
+    lateral: f64,
+) -> (SpaceFace, SpaceWheel) {
     let wheel = SpaceWheel {
         centre: plane.point(wheel.position) + plane.eta * lateral,
         axle: plane.eta,
@@ -118,7 +130,7 @@ fn embed(
         velocity: plane.vector(wheel.velocity),
         angular_velocity: plane.spin(wheel.omega),
     };
-    (face, wheel)
+    (face_of(plane, link), wheel)
 }
 
 #[test]
@@ -135,22 +147,22 @@ fn in_one_plane_it_is_the_planar_rim() {
         for lateral in [0.0, 0.015, -0.0199] {
             let (face, wheel) = embed(&plane, &link, &wheel_state, lateral);
             let rim = RimContact::detect(&wheel, &face).expect("the rim touches in space");
-            let force = laws().respond_rim(&rim, &GUIDE);
+            let (force, guide) = (laws().respond_axial(&rim.contact), GUIDE.respond(&rim));
             let scale = expected.force.norm();
             assert!(
-                (rim.depth - planar.depth).abs() < 1e-15,
+                (rim.contact.depth - planar.depth).abs() < 1e-15,
                 "{} against {}",
-                rim.depth,
+                rim.contact.depth,
                 planar.depth
             );
-            assert!((rim.point - plane.point(planar.point)).norm() < 1e-14);
+            assert!((rim.contact.point - plane.point(planar.point)).norm() < 1e-14);
             assert!(
                 (force.force - plane.vector(expected.force)).norm() < 1e-12 * scale,
                 "{:?} against {:?}",
                 force.force,
                 plane.vector(expected.force)
             );
-            assert_eq!(force.guide, 0.0);
+            assert_eq!(guide.force, 0.0);
             assert!((force.dissipation - expected.dissipation).abs() < 1e-12 * scale);
             assert!((force.potential - expected.potential).abs() < 1e-12 * expected.potential);
         }
@@ -169,10 +181,10 @@ fn turned(omega: Vector3<f64>, t: f64, x: Vector3<f64>) -> Vector3<f64> {
     Rotation3::new(omega * t) * x
 }
 
-/// The bodies moved rigidly for `t` s from `(face, wheel)`.
-fn moved(face: &SpaceFace, wheel: &SpaceWheel, t: f64) -> (SpaceFace, SpaceWheel) {
+/// The link moved rigidly for `t` s.
+fn moved_face(face: &SpaceFace, t: f64) -> SpaceFace {
     let centroid = face.centroid + face.velocity * t;
-    let face = SpaceFace {
+    SpaceFace {
         ends: face
             .ends
             .map(|e| centroid + turned(face.angular_velocity, t, e - face.centroid)),
@@ -180,13 +192,17 @@ fn moved(face: &SpaceFace, wheel: &SpaceWheel, t: f64) -> (SpaceFace, SpaceWheel
         guide: centroid + turned(face.angular_velocity, t, face.guide - face.centroid),
         centroid,
         ..*face
-    };
+    }
+}
+
+/// The bodies moved rigidly for `t` s from `(face, wheel)`.
+fn moved(face: &SpaceFace, wheel: &SpaceWheel, t: f64) -> (SpaceFace, SpaceWheel) {
     let wheel = SpaceWheel {
         centre: wheel.centre + wheel.velocity * t,
         axle: turned(wheel.angular_velocity, t, wheel.axle),
         ..*wheel
     };
-    (face, wheel)
+    (moved_face(face, t), wheel)
 }
 
 /// Space cases: the planar ones with the wheel's axle tilted a few
@@ -218,7 +234,10 @@ fn the_penetration_rate_is_the_closing_velocity() {
         let rim = RimContact::detect(&wheel, &face).expect("the rim touches");
         let depth = |t: f64| {
             let (f, w) = moved(&face, &wheel, t);
-            RimContact::detect(&w, &f).expect("still touching").depth
+            RimContact::detect(&w, &f)
+                .expect("still touching")
+                .contact
+                .depth
         };
         let numeric = (depth(h) - depth(-h)) / (2.0 * h);
         let offset = |t: f64| {
@@ -232,9 +251,9 @@ fn the_penetration_rate_is_the_closing_velocity() {
             rim.offset_rate
         );
         assert!(
-            (numeric - rim.rate()).abs() < 1e-8,
+            (numeric - rim.contact.rate()).abs() < 1e-8,
             "δ̇ {} against the central difference {numeric}",
-            rim.rate()
+            rim.contact.rate()
         );
     }
 }
@@ -254,19 +273,20 @@ fn the_contacts_books_close() {
         let mut engaged = 0;
         for (face, wheel) in space_cases(tilt) {
             let rim = RimContact::detect(&wheel, &face).expect("the rim touches");
-            let force = laws().respond_rim(&rim, &guide);
-            engaged += usize::from(force.guide != 0.0);
+            let (force, bearing) = (laws().respond_axial(&rim.contact), guide.respond(&rim));
+            engaged += usize::from(bearing.force != 0.0);
             let stored = |t: f64| {
                 let (f, w) = moved(&face, &wheel, t);
                 let rim = RimContact::detect(&w, &f).expect("still touching");
-                laws().respond_rim(&rim, &guide).potential
+                laws().respond_axial(&rim.contact).potential + guide.respond(&rim).potential
             };
             let rate = (stored(h) - stored(-h)) / (2.0 * h);
-            let given = -force.force.dot(&rim.velocity) - force.guide * rim.offset_rate;
+            let given = -force.force.dot(&rim.contact.velocity) - bearing.force * rim.offset_rate;
             assert!(
-                (given - rate - force.dissipation).abs() < 1e-6 * given.abs().max(1.0),
+                (given - rate - force.dissipation - bearing.dissipation).abs()
+                    < 1e-6 * given.abs().max(1.0),
                 "{given} W given, {rate} W stored, {} W dissipated",
-                force.dissipation
+                force.dissipation + bearing.dissipation
             );
         }
         assert!(engaged > 5, "the guide bears in {engaged} cases");
@@ -288,12 +308,12 @@ fn the_guide_bears_beyond_its_play_only() {
     ] {
         let (face, wheel) = embed(&plane, &at_rest(link), &at_rest(wheel), lateral);
         let rim = RimContact::detect(&wheel, &face).expect("touching");
-        let force = laws().respond_rim(&rim, &GUIDE);
+        let (force, guide) = (laws().respond_axial(&rim.contact), GUIDE.respond(&rim));
         // The wheel sits at −e from the guide: the link is pushed toward it.
         assert!(
-            (force.guide - expected).abs() < 1e-6,
+            (guide.force - expected).abs() < 1e-6,
             "{} against {expected}",
-            force.guide
+            guide.force
         );
         assert!(
             force.force.dot(&plane.eta).abs() < 1e-9,
@@ -325,4 +345,171 @@ fn the_guide_bears_beyond_its_play_only() {
         .check()
         .is_err()
     );
+}
+
+/// The M113's sprocket turned a little against its assembled track, the
+/// bodies moving: the planar states of the sprocket and the links.
+fn tooth_cases() -> Vec<(BodyState, Vec<BodyState>)> {
+    let geometry = M113::geometry();
+    let start = assemble(
+        &M113Track,
+        &M113Chassis,
+        &geometry.shoe,
+        &geometry.sprocket,
+        &Terrain::Flat { height: 0.0 },
+        0.0,
+        1e-3,
+    )
+    .expect("the M113 assembles");
+    let mut rt = vec![Vector2::zeros(); M113Track::BODIES];
+    M113Track.body_positions(&start.track, &mut rt);
+    let mut rc = vec![Vector2::zeros(); M113Chassis::BODIES];
+    M113Chassis.body_positions(&start.chassis, &mut rc);
+    let s = M113Chassis::SPROCKET;
+    [0.12, -0.1, 0.15, -0.13]
+        .iter()
+        .enumerate()
+        .map(|(k, turn)| {
+            let t = k as f64;
+            let sprocket = BodyState::new(
+                rc[s],
+                start.chassis[2 + s] + turn,
+                Vector2::new(1.2 * t.cos(), -0.3),
+                8.0 * (0.6 * t).sin(),
+            );
+            let links = (0..M113Track::BODIES)
+                .map(|i| {
+                    let u = i as f64 + t;
+                    BodyState::new(
+                        rt[i],
+                        start.track[2 + i],
+                        Vector2::new(1.5 * (0.3 * u).cos(), 0.4 * (0.7 * u).sin()),
+                        3.0 * (0.5 * u).cos(),
+                    )
+                })
+                .collect();
+            (sprocket, links)
+        })
+        .collect()
+}
+
+fn space_sprocket(plane: &Plane, sprocket: &BodyState) -> SpaceSprocket {
+    SpaceSprocket {
+        centre: plane.point(sprocket.position),
+        axes: [plane.xi, plane.zeta],
+        angle: sprocket.angle,
+        velocity: plane.vector(sprocket.velocity),
+        angular_velocity: plane.spin(sprocket.omega),
+    }
+}
+
+#[test]
+fn in_one_plane_the_teeth_are_the_planar_teeth() {
+    let geometry = M113::geometry();
+    let plane = Plane::new(Vector3::new(-4.0, 1.5, 0.2), -1.1);
+    let mut found = 0;
+    for (sprocket, links) in tooth_cases() {
+        let mut contacts = Vec::new();
+        sprocket::detect(
+            (&sprocket, 1),
+            &geometry.sprocket,
+            &links,
+            &geometry.shoe,
+            &mut contacts,
+        );
+        let space = space_sprocket(&plane, &sprocket);
+        for planar in &contacts {
+            let link = &links[planar.link];
+            let pin = plane.point(link.point(geometry.shoe.pins[planar.feature]));
+            let contact = space
+                .pin_contact(
+                    &geometry.sprocket,
+                    &face_of(&plane, link),
+                    pin,
+                    geometry.shoe.pin_radius,
+                )
+                .expect("the pin is in a tooth in space");
+            let expected = laws().respond(planar);
+            let force = laws().respond_axial(&contact);
+            assert!((contact.depth - planar.depth).abs() < 1e-15);
+            assert!((contact.point - plane.point(planar.point)).norm() < 1e-14);
+            assert!(
+                (force.force - plane.vector(expected.force)).norm() < 1e-12 * expected.force.norm(),
+                "{:?} against {:?}",
+                force.force,
+                plane.vector(expected.force)
+            );
+            assert!(
+                (force.dissipation - expected.dissipation).abs() < 1e-9 * expected.force.norm()
+            );
+            found += 1;
+        }
+    }
+    assert!(found >= 8, "{found} pins in teeth");
+}
+
+/// The pins' penetration rate against central differences, and the books
+/// of the teeth's force, with the sprocket's axle tilted, turning about
+/// every axis, and off the track's plane along it.
+#[test]
+fn the_teeths_rate_and_books() {
+    let geometry = M113::geometry();
+    let (profile, radius) = (geometry.sprocket, geometry.shoe.pin_radius);
+    let plane = Plane::new(Vector3::new(2.0, 0.5, -0.3), 0.7);
+    let h = 1e-6;
+    let mut checked = 0;
+    for (k, (sprocket, links)) in tooth_cases().into_iter().enumerate() {
+        let t = k as f64;
+        let mut contacts = Vec::new();
+        sprocket::detect(
+            (&sprocket, 1),
+            &profile,
+            &links,
+            &geometry.shoe,
+            &mut contacts,
+        );
+        let mut space = space_sprocket(&plane, &sprocket);
+        let tip = Rotation3::new(Vector3::new(0.03 * t.cos(), 0.02, 0.04 * t.sin()));
+        space.axes = space.axes.map(|a| tip * a);
+        space.centre += space.axle() * 0.02 * (t - 1.5);
+        space.angular_velocity += Vector3::new(0.3 * t.sin(), -0.4, 0.2);
+        for planar in &contacts {
+            let local = geometry.shoe.pins[planar.feature];
+            let mut face = face_of(&plane, &links[planar.link]);
+            face.angular_velocity += Vector3::new(0.25, 0.1 * t, -0.3);
+            let pin = plane.point(links[planar.link].point(local));
+            let at = |time: f64| {
+                let moved = moved_face(&face, time);
+                let sprocket = SpaceSprocket {
+                    centre: space.centre + space.velocity * time,
+                    axes: space.axes.map(|a| turned(space.angular_velocity, time, a)),
+                    ..space
+                };
+                let pin = moved.centroid + turned(face.angular_velocity, time, pin - face.centroid);
+                sprocket.pin_contact(&profile, &moved, pin, radius)
+            };
+            let Some(contact) = at(0.0) else { continue };
+            let (Some(ahead), Some(behind)) = (at(h), at(-h)) else {
+                continue;
+            };
+            let numeric = (ahead.depth - behind.depth) / (2.0 * h);
+            assert!(
+                (numeric - contact.rate()).abs() < 1e-8,
+                "δ̇ {} against {numeric}",
+                contact.rate()
+            );
+            let force = laws().respond_axial(&contact);
+            let stored = (laws().respond_axial(&ahead).potential
+                - laws().respond_axial(&behind).potential)
+                / (2.0 * h);
+            let given = -force.force.dot(&contact.velocity);
+            assert!(
+                (given - stored - force.dissipation).abs() < 1e-6 * given.abs().max(1.0),
+                "{given} W given, {stored} W stored, {} W dissipated",
+                force.dissipation
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 8, "{checked} pins checked");
 }

@@ -1,0 +1,334 @@
+//! Profiles extruded along an axle against a shoe in space: a wheel's rim
+//! on a shoe's running face, and the sprocket's teeth on a shoe's pins. A
+//! road wheel, idler, roller or sprocket of the hull's side turns in its
+//! own plane; a link of the track moves in the track's plane; the two
+//! planes are parallel at rest and apart when the track slides or twists
+//! against the running gear (the guide's "The formulation", §6). Both
+//! contacts are [`AxialContact`]s: normal to the axle, their penetration's
+//! rate the closing velocity along the normal, friction along the
+//! profile's tangent, as in the plane ([`ContactLaws::respond_axial`]).
+//!
+//! **Geometry.** The rim is the cylinder of radius `r` about the wheel's
+//! axle (the line through its centre `c` along its plane's normal `a`).
+//! The face point taken is the one of the face `[p₀, p₁]` nearest that
+//! line, `p = p₀ + s (p₁ − p₀)`, `s` clipped to the face; its distance
+//! from the axle `d = |P (p − c)|` (`P = I − a aᵀ`) gives the penetration
+//! `δ = r − d` and the unit normal `n = P (p − c)/d`, the direction the
+//! rim pushes the link. Because `s` minimises the distance itself, the
+//! penetration's rate is `δ̇ = −n · v` exactly, with `v` the velocity of
+//! the link's material point at `p` less the wheel's there (the axle's
+//! turning included): the normal law's power is exactly `−F δ̇`, as in
+//! the plane. Friction acts along `t = n × a`, the rim's tangent, which in
+//! the plane (`a` the plane's normal, pointing left) is `n` turned a
+//! quarter counter-clockwise: with the planes one, the contact is the
+//! planar one ([`wheel`](super::wheel)) to the last bit of its geometry.
+//!
+//! **The teeth.** The sprocket's profile ([`ToothProfile`]) is extruded
+//! along its axle: a pin's centre `p` (on the pin's axis, in the track's
+//! plane) is taken along the axle into the sprocket's plane, where the
+//! planar rule finds the tooth it is in
+//! ([`ToothProfile::pin_in_tooth`]); the depth, the normal and the point
+//! on the profile come back into space at the pin's place along the axle.
+//! The depth being the planar one of the sprocket's body-fixed coordinates
+//! of `p`, its rate is again `−n · v` exactly.
+//!
+//! **The guide.** The shoe's centre guide, a point `g` fixed on the link,
+//! runs between the wheel's two halves with `play` each way: where the
+//! rim touches, its offset across the wheel's plane `e = (g − c) · a`
+//! beyond the play is resisted by a spring-damper along `a`
+//! ([`GuideLaw`]) acting at `g`, pushing the link back toward the wheel's
+//! plane. `g` being a material point, `ė = v_g · a` exactly (`v_g` its
+//! velocity less the wheel's material point's there), and the guide's
+//! power is its law's.
+
+use nalgebra::Vector3;
+
+use super::sprocket::ToothProfile;
+use super::{BodyState, ContactLaws};
+use crate::laws::ParameterError;
+
+/// A wheel in space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpaceWheel {
+    /// Its centre, world frame, m.
+    pub centre: Vector3<f64>,
+    /// Its axle: the unit normal of its plane (the hull's lateral axis,
+    /// pointing left).
+    pub axle: Vector3<f64>,
+    /// Its rim's radius, m.
+    pub radius: f64,
+    /// Its centre's velocity, m/s.
+    pub velocity: Vector3<f64>,
+    /// Its angular velocity, world frame, rad/s.
+    pub angular_velocity: Vector3<f64>,
+}
+
+/// A link's running face in space: the segment wheels run on, on the
+/// link's inner side, and the link's motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpaceFace {
+    /// The face's ends, world frame, m.
+    pub ends: [Vector3<f64>; 2],
+    /// The link's inward unit normal in its plane (the side the wheels
+    /// are on).
+    pub inward: Vector3<f64>,
+    /// The link's centre guide, world frame, m: the point that runs
+    /// between a wheel's halves.
+    pub guide: Vector3<f64>,
+    /// The link's centroid, m.
+    pub centroid: Vector3<f64>,
+    /// Its velocity, m/s.
+    pub velocity: Vector3<f64>,
+    /// Its angular velocity, world frame, rad/s.
+    pub angular_velocity: Vector3<f64>,
+}
+
+/// A contact of a link's feature with a profile extruded along an axle
+/// (a wheel's rim, the sprocket's teeth): the normal is normal to the
+/// axle, and the penetration's rate is the closing velocity along it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxialContact {
+    /// The contact point, world frame, m.
+    pub point: Vector3<f64>,
+    /// The unit normal, normal to the axle: the direction the profile
+    /// pushes the link.
+    pub normal: Vector3<f64>,
+    /// The profile's axle, unit.
+    pub axle: Vector3<f64>,
+    /// Penetration (> 0), m.
+    pub depth: f64,
+    /// The link's material point's velocity at the point less the
+    /// profile's body's, m/s.
+    pub velocity: Vector3<f64>,
+}
+
+impl AxialContact {
+    /// The closing rate `δ̇ = −v · n`, m/s.
+    pub fn rate(&self) -> f64 {
+        -self.velocity.dot(&self.normal)
+    }
+
+    /// The profile's unit tangent `t = n × a`, along which friction acts
+    /// (in the plane: `n` turned a quarter counter-clockwise).
+    pub fn tangent(&self) -> Vector3<f64> {
+        self.normal.cross(&self.axle)
+    }
+}
+
+/// A rim on a face: the contact, and where the shoe's guide is against
+/// the wheel's plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RimContact {
+    /// The rim's contact with the face.
+    pub contact: AxialContact,
+    /// The link's guide, m.
+    pub guide: Vector3<f64>,
+    /// The guide's offset across the wheel's plane, `(g − c) · a`, m.
+    pub offset: f64,
+    /// The guide's rate across the wheel's plane, `ė = v_g · a`, m/s.
+    pub offset_rate: f64,
+}
+
+impl RimContact {
+    /// The rim of `wheel` on `face`: `None` where the rim is on the face's
+    /// outer side or does not reach it.
+    pub fn detect(wheel: &SpaceWheel, face: &SpaceFace) -> Option<RimContact> {
+        let a = wheel.axle;
+        let across = |v: Vector3<f64>| v - a * a.dot(&v);
+        let [p0, p1] = face.ends;
+        if (wheel.centre - p0).dot(&face.inward) <= 0.0 {
+            return None;
+        }
+        let along = p1 - p0;
+        let (u, w) = (across(along), across(p0 - wheel.centre));
+        let s = match u.norm_squared() {
+            0.0 => 0.0,
+            uu => (-w.dot(&u) / uu).clamp(0.0, 1.0),
+        };
+        let point = p0 + along * s;
+        let radial = across(point - wheel.centre);
+        let distance = radial.norm();
+        let depth = wheel.radius - distance;
+        if depth <= 0.0 || distance == 0.0 {
+            return None;
+        }
+        let relative = |x: Vector3<f64>| {
+            relative_velocity(
+                face,
+                (wheel.centre, wheel.velocity, wheel.angular_velocity),
+                x,
+            )
+        };
+        Some(RimContact {
+            contact: AxialContact {
+                point,
+                normal: radial / distance,
+                axle: a,
+                depth,
+                velocity: relative(point),
+            },
+            guide: face.guide,
+            offset: (face.guide - wheel.centre).dot(&a),
+            offset_rate: relative(face.guide).dot(&a),
+        })
+    }
+}
+
+/// A sprocket in space.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpaceSprocket {
+    /// Its centre, world frame, m.
+    pub centre: Vector3<f64>,
+    /// Its plane's forward and up axes, unit, world frame (its axle, the
+    /// plane's normal, is up × forward: left).
+    pub axes: [Vector3<f64>; 2],
+    /// Its angle in its plane from the forward axis, counter-clockwise
+    /// (about the axle's reverse), rad.
+    pub angle: f64,
+    /// Its centre's velocity, m/s.
+    pub velocity: Vector3<f64>,
+    /// Its angular velocity, world frame, rad/s.
+    pub angular_velocity: Vector3<f64>,
+}
+
+impl SpaceSprocket {
+    /// The axle: the plane's normal, `ζ × ξ`.
+    pub fn axle(&self) -> Vector3<f64> {
+        self.axes[1].cross(&self.axes[0])
+    }
+
+    /// The contact of the pin of `pin_radius` (m) whose centre is `pin`
+    /// (world, m) on link `face` with this sprocket's `profile`: `None`
+    /// where it is in no tooth.
+    pub fn pin_contact(
+        &self,
+        profile: &ToothProfile,
+        face: &SpaceFace,
+        pin: Vector3<f64>,
+        pin_radius: f64,
+    ) -> Option<AxialContact> {
+        let [xi, zeta] = self.axes;
+        let offset = pin - self.centre;
+        let local = nalgebra::Vector2::new(offset.dot(&xi), offset.dot(&zeta));
+        let sprocket = BodyState::at_rest(nalgebra::Vector2::zeros(), self.angle);
+        let tooth = profile.pin_in_tooth(&sprocket, local, pin_radius)?;
+        let axle = self.axle();
+        let lift = |v: nalgebra::Vector2<f64>| xi * v.x + zeta * v.y;
+        let point = self.centre + lift(tooth.point) + axle * offset.dot(&axle);
+        Some(AxialContact {
+            point,
+            normal: lift(tooth.normal),
+            axle,
+            depth: tooth.depth,
+            velocity: relative_velocity(
+                face,
+                (self.centre, self.velocity, self.angular_velocity),
+                point,
+            ),
+        })
+    }
+}
+
+/// The link's material point at `x` moving against the other body's
+/// (its centroid, velocity and angular velocity) there, m/s.
+pub(crate) fn relative_velocity(
+    face: &SpaceFace,
+    (centre, velocity, angular_velocity): (Vector3<f64>, Vector3<f64>, Vector3<f64>),
+    x: Vector3<f64>,
+) -> Vector3<f64> {
+    face.velocity + face.angular_velocity.cross(&(x - face.centroid))
+        - velocity
+        - angular_velocity.cross(&(x - centre))
+}
+
+/// The centre guide against the wheel's halves: a spring-damper across
+/// the wheel's plane beyond a dead band.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GuideLaw {
+    /// The play each way before the guide bears, m (≥ 0).
+    pub play: f64,
+    /// N/m (> 0).
+    pub stiffness: f64,
+    /// N s/m (≥ 0).
+    pub damping: f64,
+}
+
+impl GuideLaw {
+    /// Each parameter in its range: a finite play of zero or more, a
+    /// positive stiffness, a damping of zero or more.
+    pub fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("play", self.play, 0.0, false)?;
+        ParameterError::check("stiffness", self.stiffness, 0.0, true)?;
+        ParameterError::check("damping", self.damping, 0.0, false)
+    }
+}
+
+/// What an [`AxialContact`] gives under a pair's laws.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AxialForce {
+    /// The force on the link at the point, world frame, N (the other body
+    /// takes its reverse there).
+    pub force: Vector3<f64>,
+    /// The normal force (≥ 0), N.
+    pub normal: f64,
+    /// Elastic energy stored, J.
+    pub potential: f64,
+    /// Power dissipated, W.
+    pub dissipation: f64,
+}
+
+/// What the guide gives at a [`RimContact`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GuideForce {
+    /// The force on the link along the axle, at the guide, N (the wheel
+    /// takes its reverse there).
+    pub force: f64,
+    /// Elastic energy stored, J.
+    pub potential: f64,
+    /// Power dissipated, W.
+    pub dissipation: f64,
+}
+
+impl ContactLaws {
+    /// The force of an axial contact: the normal law at `δ` and `δ̇`
+    /// along `n`, friction under it along `t` against the slip `v · t`,
+    /// as [`respond`](Self::respond) in the plane.
+    pub fn respond_axial(&self, contact: &AxialContact) -> AxialForce {
+        let normal = self.normal.respond(contact.depth, contact.rate());
+        let tangent = contact.tangent();
+        let friction = self
+            .friction
+            .respond(normal.force, contact.velocity.dot(&tangent));
+        AxialForce {
+            force: contact.normal * normal.force + tangent * friction.force,
+            normal: normal.force,
+            potential: normal.potential,
+            dissipation: normal.dissipation + friction.dissipation,
+        }
+    }
+}
+
+impl GuideLaw {
+    /// The guide's force at `rim`: beyond the play, `k x + c ẋ` (never
+    /// pulling) along the axle, pushing the link back toward the wheel's
+    /// plane, with `x = |e| − play`.
+    pub fn respond(&self, rim: &RimContact) -> GuideForce {
+        let side = rim.offset.signum();
+        let excess = rim.offset.abs() - self.play;
+        if excess <= 0.0 {
+            return GuideForce {
+                force: 0.0,
+                potential: 0.0,
+                dissipation: 0.0,
+            };
+        }
+        let rate = side * rim.offset_rate;
+        let elastic = self.stiffness * excess;
+        let pushed = (elastic + self.damping * rate).max(0.0);
+        GuideForce {
+            force: -side * pushed,
+            potential: 0.5 * elastic * excess,
+            dissipation: (pushed - elastic) * rate,
+        }
+    }
+}
