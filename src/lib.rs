@@ -51,7 +51,8 @@
 //! * [`integrate`]: the integrators,
 //!   [`SimulationError`](integrate::SimulationError);
 //! * [`system`], [`assembly`]: subsystems a simulation runs, placing a
-//!   vehicle at t = 0;
+//!   vehicle at t = 0; [`spatial_vehicle`]: the spatial vehicle's force
+//!   elements and forward dynamics;
 //! * [`vehicle`]: [`Vehicle`](vehicle::Vehicle), its configuration and the
 //!   one recipe that builds it;
 //! * [`simulate`], [`analysis`]: runs, results and sinks; equilibrium,
@@ -73,7 +74,8 @@ pub use trackgen_macros::model;
 
 pub use trackgen_runtime::{
     analysis, assembly, closure, contact, dynamics, integrate, laws, mobility, multibody, planar,
-    ride, scenario, scene, simulate, spatial, steering, system, terrain, trig, vehicle,
+    ride, scenario, scene, simulate, spatial, spatial_vehicle, steering, system, terrain, trig,
+    vehicle,
 };
 
 #[cfg(feature = "oracle")]

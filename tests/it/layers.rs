@@ -82,6 +82,10 @@ pub const RUNTIME: Graph = &[
         "assembly",
         &["planar", "multibody", "contact", "terrain", "spatial"],
     ),
+    (
+        "spatial_vehicle",
+        &["laws", "multibody", "contact", "terrain", "spatial"],
+    ),
     // the vehicle
     (
         "vehicle",

@@ -38,7 +38,9 @@
 //!    lower layers' errors with the time they happened at);
 //! 7. subsystems: [`system`] (a track, a body tree or two side by side as
 //!    systems a simulation runs), [`assembly`] (wrapping a track round its
-//!    wheels, placing a vehicle at t = 0);
+//!    wheels, placing a vehicle at t = 0, or both sides of a spatial one),
+//!    [`spatial_vehicle`] (the spatial vehicle's hull and two tracks as
+//!    floating trees: its force elements and forward dynamics);
 //! 8. [`vehicle`]: a declared vehicle as a type and the one recipe that
 //!    builds it; its evaluation in stages over a long-lived workspace
 //!    (kinematics → detection → force elements with their energy books →
@@ -86,6 +88,7 @@ pub mod dynamics;
 #[cfg(feature = "oracle")]
 pub mod reference;
 pub mod spatial;
+pub mod spatial_vehicle;
 // 6. time
 pub mod integrate;
 // 7. subsystems

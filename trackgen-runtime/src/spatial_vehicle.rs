@@ -1,0 +1,401 @@
+//! The spatial vehicle's force elements and forward dynamics: the hull
+//! (its frame with both sides' running gear, one planar tree floating in
+//! space) and each side's track (a closed chain floating in its own
+//! plane), three kinematically decoupled subsystems coupled by contact
+//! alone, after Choi, Lee & Shabana, "Spatial dynamics of multibody
+//! tracked vehicles" (*Vehicle System Dynamics* 29, 1998).
+//!
+//! The force elements, each from the bodies' world poses and motion:
+//! - **the ground** (`contact::space`): every planar ground point of
+//!   every shoe becomes two points across the shoe's width, at
+//!   `±w/(2√3)` from its middle (two-point Gauss–Legendre across a
+//!   uniform strip: the pair carries the strip's force and its moment of
+//!   area, `w²/12` of the force's stiffness), each with half the normal
+//!   law's stiffness (and a Kelvin–Voigt law's damping): on level ground
+//!   with the track upright, the planar contact;
+//! - **the rims and the guides** (`contact::axial`): each road wheel,
+//!   idler and roller on its own side's track, the shoe's guide at the
+//!   middle of its running face;
+//! - **the teeth** (`contact::axial`): each sprocket on its own side's
+//!   pins;
+//! - **the arms' torsion springs**, as in the plane (`φ` the arm's angle
+//!   from its design position relative to the frame; the planar torque
+//!   `τ` is a moment `−τ η` in space, the plane's counter-clockwise being
+//!   about its normal's reverse).
+//!
+//! Friction on the ground is regularised here (stiction's deflections are
+//! states the spatial vehicle does not carry yet); there is no drive.
+
+use nalgebra::{Matrix3, SVector, Vector2, Vector3};
+
+use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
+use crate::contact::space::SpaceContact;
+use crate::contact::sprocket::ToothProfile;
+use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
+use crate::laws::NormalLaw;
+use crate::multibody::{
+    ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
+};
+use crate::spatial::{
+    FloatingTree, PlanePose, PlaneRates, Side, SpatialLayout, SpatialLoad, plane_rotation,
+};
+use crate::terrain::field::HeightField;
+
+/// The laws of the spatial vehicle's contacts.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpatialLaws {
+    /// Each planar ground point's law (its friction regularised), as the
+    /// planar vehicle's: split across the width here.
+    pub ground: GroundLaws,
+    /// The rims on the shoes.
+    pub wheels: ContactLaws,
+    /// The teeth on the pins.
+    pub sprocket: ContactLaws,
+    /// The centre guides against the wheels.
+    pub guide: GuideLaw,
+}
+
+/// One tree's pose and motion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TreeState<const D: usize> {
+    /// Where it is.
+    pub pose: PlanePose<D>,
+    /// How it moves.
+    pub rates: PlaneRates<D>,
+}
+
+/// What the force elements give at a state: every body's load and the
+/// books.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SpatialLoads {
+    /// Each hull body's load.
+    pub hull: Vec<SpatialLoad>,
+    /// Each right-track link's.
+    pub right: Vec<SpatialLoad>,
+    /// Each left-track link's.
+    pub left: Vec<SpatialLoad>,
+    /// Elastic energy stored in the contacts and springs, J.
+    pub potential: f64,
+    /// Power they dissipate, W.
+    pub dissipation: f64,
+}
+
+/// Every body's world motion: centroid, orientation, velocity, angular
+/// velocity.
+struct Bodies {
+    at: Vec<Vector3<f64>>,
+    turned: Vec<Matrix3<f64>>,
+    velocity: Vec<Vector3<f64>>,
+    spin: Vec<Vector3<f64>>,
+}
+
+impl Bodies {
+    fn of<M, const D: usize>(tree: &FloatingTree<'_, M, D>, state: &TreeState<D>) -> Bodies
+    where
+        M: crate::multibody::RecursiveModel<D>,
+    {
+        Bodies {
+            at: tree.positions(&state.pose),
+            turned: tree.orientations(&state.pose),
+            velocity: tree.velocities(&state.pose, &state.rates),
+            spin: tree.angular_velocities(&state.pose, &state.rates),
+        }
+    }
+
+    /// The world point of body `k`'s local planar point `p`.
+    fn point(&self, k: usize, p: Vector2<f64>) -> Vector3<f64> {
+        self.at[k] + self.turned[k] * Vector3::new(p.x, 0.0, p.y)
+    }
+
+    /// The velocity of body `k`'s material point at `x`.
+    fn velocity_at(&self, k: usize, x: Vector3<f64>) -> Vector3<f64> {
+        self.velocity[k] + self.spin[k].cross(&(x - self.at[k]))
+    }
+
+    /// Adds `force` at `x` to body `k`'s load.
+    fn push(&self, loads: &mut [SpatialLoad], k: usize, force: Vector3<f64>, x: Vector3<f64>) {
+        loads[k].force += force;
+        loads[k].moment += (x - self.at[k]).cross(&force);
+    }
+}
+
+/// The normal law with `fraction` of its stiffness (and of a
+/// Kelvin–Voigt law's damping): a share of a point's contact.
+fn share(law: NormalLaw, fraction: f64) -> NormalLaw {
+    match law {
+        NormalLaw::KelvinVoigt { stiffness, damping } => NormalLaw::KelvinVoigt {
+            stiffness: stiffness * fraction,
+            damping: damping * fraction,
+        },
+        NormalLaw::HuntCrossley {
+            stiffness,
+            exponent,
+            chi,
+        } => NormalLaw::HuntCrossley {
+            stiffness: stiffness * fraction,
+            exponent,
+            chi,
+        },
+    }
+}
+
+/// The spatial vehicle: its three trees, its layout, the shoe and the
+/// sprocket's profile, the contacts' laws and the ground.
+pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
+    /// The hull with both sides' running gear.
+    pub hull: FloatingTree<'m, H, DH>,
+    /// The right track.
+    pub right: FloatingTree<'m, R, DR>,
+    /// The left track.
+    pub left: FloatingTree<'m, L, DL>,
+    parts: &'static [ChassisPart],
+    sides: Vec<Side>,
+    shoe: ShoeGeometry,
+    profile: ToothProfile,
+    laws: SpatialLaws,
+    field: HeightField,
+}
+
+impl<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize>
+    SpatialDynamics<'m, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    /// The vehicle of these compiled trees laid out as `layout` says,
+    /// with the shoe, the profile, the laws and the ground.
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        hull: &'m H,
+        (right, left): (&'m R, &'m L),
+        layout: &SpatialLayout,
+        shoe: ShoeGeometry,
+        profile: ToothProfile,
+        laws: SpatialLaws,
+        field: HeightField,
+    ) -> Result<Self, crate::spatial::SpatialError> {
+        Ok(SpatialDynamics {
+            hull: FloatingTree::new(hull, layout.hull_across.clone())?
+                .with_offsets(layout.hull_offsets.clone())?,
+            right: FloatingTree::new(right, layout.right_links.clone())?,
+            left: FloatingTree::new(left, layout.left_links.clone())?,
+            parts: H::PARTS,
+            sides: layout.part_sides.clone(),
+            shoe,
+            profile,
+            laws,
+            field,
+        })
+    }
+
+    /// Every force element's loads at a state.
+    pub fn loads(
+        &self,
+        hull: &TreeState<DH>,
+        right: &TreeState<DR>,
+        left: &TreeState<DL>,
+    ) -> SpatialLoads {
+        let frame = Bodies::of(&self.hull, hull);
+        let tracks = [Bodies::of(&self.right, right), Bodies::of(&self.left, left)];
+        let mut out = SpatialLoads {
+            hull: vec![SpatialLoad::default(); frame.at.len()],
+            right: vec![SpatialLoad::default(); tracks[0].at.len()],
+            left: vec![SpatialLoad::default(); tracks[1].at.len()],
+            potential: 0.0,
+            dissipation: 0.0,
+        };
+        let plane = plane_rotation(hull.pose.yaw, hull.pose.roll);
+        for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
+            let links = &tracks[s];
+            let mut link_loads = std::mem::take(match side {
+                Side::Right => &mut out.right,
+                Side::Left => &mut out.left,
+            });
+            self.ground(
+                links,
+                &mut link_loads,
+                &mut out.potential,
+                &mut out.dissipation,
+            );
+            for (part, _) in self
+                .parts
+                .iter()
+                .zip(&self.sides)
+                .filter(|(_, p)| **p == side)
+            {
+                let books = self.running_gear(
+                    part,
+                    (&frame, hull, &plane),
+                    links,
+                    (&mut out.hull, &mut link_loads),
+                );
+                out.potential += books.0;
+                out.dissipation += books.1;
+            }
+            match side {
+                Side::Right => out.right = link_loads,
+                Side::Left => out.left = link_loads,
+            }
+        }
+        let books = self.arms(hull, &plane, &mut out.hull);
+        out.potential += books.0;
+        out.dissipation += books.1;
+        out
+    }
+
+    /// The shoes on the ground: each planar ground point as two across
+    /// the width, each with half its law.
+    fn ground(
+        &self,
+        links: &Bodies,
+        loads: &mut [SpatialLoad],
+        potential: &mut f64,
+        dissipation: &mut f64,
+    ) {
+        let half = GroundLaws {
+            normal: share(self.laws.ground.normal, 0.5),
+            ..self.laws.ground
+        };
+        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        for k in 0..links.at.len() {
+            for p in &self.shoe.ground_points {
+                for lateral in [-across, across] {
+                    let x = links.at[k] + links.turned[k] * Vector3::new(p.x, lateral, p.y);
+                    let Some(contact) = SpaceContact::at(&self.field, x, links.velocity_at(k, x))
+                    else {
+                        continue;
+                    };
+                    let force = half.respond_in_space(&contact, Vector2::zeros());
+                    links.push(loads, k, force.force, x);
+                    *potential += force.potential;
+                    *dissipation += force.dissipation;
+                }
+            }
+        }
+    }
+
+    /// One part of the hull on its side's track: a rim with the guide, or
+    /// the teeth; the loads on both; what they store and dissipate.
+    fn running_gear(
+        &self,
+        part: &ChassisPart,
+        (frame, hull, plane): (&Bodies, &TreeState<DH>, &Matrix3<f64>),
+        links: &Bodies,
+        (hull_loads, link_loads): (&mut [SpatialLoad], &mut [SpatialLoad]),
+    ) -> (f64, f64) {
+        let b = part.body;
+        let (centre, velocity, spin) = (frame.at[b], frame.velocity[b], frame.spin[b]);
+        let reach = part.radius.max(self.profile.addendum) + self.shoe.extent();
+        let (mut potential, mut dissipation) = (0.0, 0.0);
+        for k in 0..links.at.len() {
+            if (links.at[k] - centre).norm_squared() > reach * reach {
+                continue;
+            }
+            let face = SpaceFace {
+                ends: self.shoe.inner_face.map(|p| links.point(k, p)),
+                inward: links.turned[k].column(2).into(),
+                guide: links.point(k, (self.shoe.inner_face[0] + self.shoe.inner_face[1]) / 2.0),
+                centroid: links.at[k],
+                velocity: links.velocity[k],
+                angular_velocity: links.spin[k],
+            };
+            if part.kind == PartKind::Sprocket {
+                let sprocket = SpaceSprocket {
+                    centre,
+                    axes: [plane.column(0).into(), plane.column(2).into()],
+                    angle: hull.pose.planar[2 + b],
+                    velocity,
+                    angular_velocity: spin,
+                };
+                for pin in &self.shoe.pins {
+                    let x = links.point(k, *pin);
+                    let Some(contact) =
+                        sprocket.pin_contact(&self.profile, &face, x, self.shoe.pin_radius)
+                    else {
+                        continue;
+                    };
+                    let force = self.laws.sprocket.respond_axial(&contact);
+                    links.push(link_loads, k, force.force, contact.point);
+                    frame.push(hull_loads, b, -force.force, contact.point);
+                    potential += force.potential;
+                    dissipation += force.dissipation;
+                }
+            } else {
+                let wheel = SpaceWheel {
+                    centre,
+                    axle: frame.turned[b].column(1).into(),
+                    radius: part.radius,
+                    velocity,
+                    angular_velocity: spin,
+                };
+                let Some(rim) = RimContact::detect(&wheel, &face) else {
+                    continue;
+                };
+                let force = self.laws.wheels.respond_axial(&rim.contact);
+                let guide = self.laws.guide.respond(&rim);
+                let along = rim.contact.axle * guide.force;
+                links.push(link_loads, k, force.force, rim.contact.point);
+                frame.push(hull_loads, b, -force.force, rim.contact.point);
+                links.push(link_loads, k, along, rim.guide);
+                frame.push(hull_loads, b, -along, rim.guide);
+                potential += force.potential + guide.potential;
+                dissipation += force.dissipation + guide.dissipation;
+            }
+        }
+        (potential, dissipation)
+    }
+
+    /// The arms' torsion springs: the planar torque `τ` on the arm as the
+    /// moment `−τ η`, its reverse on the frame.
+    fn arms(
+        &self,
+        hull: &TreeState<DH>,
+        plane: &Matrix3<f64>,
+        loads: &mut [SpatialLoad],
+    ) -> (f64, f64) {
+        let eta: Vector3<f64> = plane.column(1).into();
+        let (q, qd) = (&hull.pose.planar, &hull.rates.planar);
+        let (mut potential, mut dissipation) = (0.0, 0.0);
+        for arm in self.parts.iter().filter_map(|p| p.arm) {
+            let (phi, rate) = (q[2 + arm.body] - q[2], qd[2 + arm.body] - qd[2]);
+            let response = arm.spring.respond(phi, rate);
+            loads[arm.body].moment -= eta * response.force;
+            loads[0].moment += eta * response.force;
+            potential += response.potential;
+            dissipation += response.dissipation;
+        }
+        (potential, dissipation)
+    }
+
+    /// The three trees' accelerations under the force elements and
+    /// gravity, the tracks' loops closed: for each, the rates of its
+    /// quasi-velocities in its plane (the planar `q̈_i`) and across it.
+    #[allow(clippy::type_complexity)]
+    pub fn accelerations(
+        &self,
+        hull: &TreeState<DH>,
+        right: &TreeState<DR>,
+        left: &TreeState<DL>,
+    ) -> Result<
+        (
+            (SVector<f64, DH>, Vector3<f64>),
+            (SVector<f64, DR>, Vector3<f64>),
+            (SVector<f64, DL>, Vector3<f64>),
+        ),
+        DynamicsError,
+    > {
+        let loads = self.loads(hull, right, left);
+        let closed = ClosingJoint::Constrained {
+            stabilisation: Vector2::zeros(),
+        };
+        Ok((
+            self.hull
+                .accelerations(&hull.pose, &hull.rates, &loads.hull)?,
+            self.right
+                .closed_accelerations(&right.pose, &right.rates, &loads.right, closed)?,
+            self.left
+                .closed_accelerations(&left.pose, &left.rates, &loads.left, closed)?,
+        ))
+    }
+}
