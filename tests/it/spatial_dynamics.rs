@@ -14,15 +14,22 @@
 //! spatial route takes the bodies' world poses from the floating trees
 //! and its contacts from `contact::space` and `contact::axial`, the
 //! ground split across the shoe's width.
+//!
+//! Away from symmetry: an uneven state (the hull rolled, yawed and
+//! sliding against its tracks, the tracks apart) accelerates alike turned
+//! and moved elsewhere, its mirror image accelerates as its mirror, and
+//! the force elements' books close at it.
 
-use trackgen::assembly::assemble_sides;
+use trackgen::assembly::{AssembledSides, assemble_sides};
 use trackgen::contact::axial::GuideLaw;
 use trackgen::contact::{BodyState, Contact, ground, sprocket, wheel};
 use trackgen::multibody::{
     BodyLoad, ChassisModel, ClosingJoint, PartKind, RecursiveModel, TrackModel,
 };
 use trackgen::nalgebra::{SVector, Vector2, Vector3};
-use trackgen::spatial::{PlanePose, PlaneRates, SpatialVehicle};
+use trackgen::spatial::{
+    FloatingTree, PlanePose, PlaneRates, SpatialError, SpatialLoad, SpatialVehicle,
+};
 use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, TreeState};
 use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
@@ -188,19 +195,8 @@ fn upright<const D: usize>(
 
 #[test]
 fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
-    let geometry = Twin::geometry();
     let layout = Twin::layout();
-    let start = assemble_sides(
-        &TwinHull,
-        (&TwinTrack, &TwinTrack),
-        &layout.part_sides,
-        &geometry.shoe,
-        &geometry.sprocket,
-        &Terrain::Flat { height: 0.0 },
-        0.0,
-        1e-3,
-    )
-    .expect("both sides assemble");
+    let start = assembled();
     assert_eq!(start.right, start.left, "a mirror assembles alike");
     // The track 2 mm into the ground, the hull 1 mm into the tracks and
     // pitched, the
@@ -229,30 +225,7 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
         counts.iter().all(|&n| n >= 2),
         "ground, rim and tooth contacts: {counts:?}"
     );
-    let config = Twin::declared_config(
-        Terrain::Flat { height: 0.0 },
-        Drive::Torque(Box::new(|_| 0.0)),
-    );
-    let laws = SpatialLaws {
-        ground: config.ground,
-        wheels: config.wheels,
-        sprocket: config.sprocket,
-        guide: GuideLaw {
-            play: layout.guide_play,
-            stiffness: 1e7,
-            damping: 1e3,
-        },
-    };
-    let dynamics = SpatialDynamics::new(
-        &TwinHull,
-        (&TwinTrack, &TwinTrack),
-        &layout,
-        geometry.shoe.clone(),
-        geometry.sprocket,
-        laws,
-        HeightField::level(),
-    )
-    .expect("the spatial vehicle");
+    let dynamics = spatial();
     let half = layout.gauge / 2.0;
     let hull = upright(Vector3::new(qh[0], 0.0, qh[1]), &qh, &qdh);
     let right = upright(Vector3::new(qt[0], -half, qt[1]), &qt, &qdt);
@@ -295,4 +268,315 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     );
     assert!((right_across.y + left_across.y).abs() < 1e-9);
     assert!((right_across.z + left_across.z).abs() < 1e-9);
+}
+
+/// The `Twin` assembled on level ground.
+fn assembled() -> AssembledSides<DH, DT, DT> {
+    let geometry = Twin::geometry();
+    assemble_sides(
+        &TwinHull,
+        (&TwinTrack, &TwinTrack),
+        &Twin::layout().part_sides,
+        &geometry.shoe,
+        &geometry.sprocket,
+        &Terrain::Flat { height: 0.0 },
+        0.0,
+        1e-3,
+    )
+    .expect("both sides assemble")
+}
+
+/// The three trees' states.
+type States = (TreeState<DH>, TreeState<DT>, TreeState<DT>);
+
+/// The three trees' accelerations, in and across their planes.
+type Rates = (
+    (SVector<f64, DH>, Vector3<f64>),
+    (SVector<f64, DT>, Vector3<f64>),
+    (SVector<f64, DT>, Vector3<f64>),
+);
+
+static HULL: TwinHull = TwinHull;
+static TRACK: TwinTrack = TwinTrack;
+
+/// The `Twin`'s declared laws, and a guide.
+fn laws() -> SpatialLaws {
+    let config = Twin::declared_config(
+        Terrain::Flat { height: 0.0 },
+        Drive::Torque(Box::new(|_| 0.0)),
+    );
+    SpatialLaws {
+        ground: config.ground,
+        wheels: config.wheels,
+        sprocket: config.sprocket,
+        guide: GuideLaw {
+            play: Twin::layout().guide_play,
+            stiffness: 1e7,
+            damping: 1e3,
+        },
+    }
+}
+
+/// The spatial `Twin` on level ground with its declared laws.
+fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT> {
+    let geometry = Twin::geometry();
+    SpatialDynamics::new(
+        &HULL,
+        (&TRACK, &TRACK),
+        &Twin::layout(),
+        geometry.shoe.clone(),
+        geometry.sprocket,
+        laws(),
+        HeightField::level(),
+    )
+    .expect("the spatial vehicle")
+}
+
+/// An uneven state: the assembled `Twin` pressed into the ground, its
+/// hull rolled, yawed against its tracks and sliding and turning across
+/// its plane, the two tracks apart in place and motion, every body moving.
+fn uneven() -> States {
+    let layout = Twin::layout();
+    let start = assembled();
+    let half = layout.gauge / 2.0;
+    let (mut qh, qt) = (start.hull, start.right);
+    qh[1] -= 0.004;
+    qh[2] += 0.003;
+    qh[2 + TwinHull::RIGHT_DRIVE] += 0.15;
+    qh[2 + TwinHull::LEFT_DRIVE] -= 0.12;
+    let qdh = SVector::<f64, DH>::from_fn(|i, _| 0.3 * (1.3 * i as f64).sin() + 0.5);
+    let mut hull = upright(Vector3::new(qh[0], 0.004, qh[1]), &qh, &qdh);
+    (hull.pose.yaw, hull.pose.roll) = (0.006, -0.008);
+    hull.rates.across = Vector3::new(0.05, 0.1, -0.2);
+    let track = |lateral: f64, lift: f64, phase: f64| {
+        let mut q = qt;
+        q[1] -= lift;
+        let qd = SVector::<f64, DT>::from_fn(|i, _| 0.2 * (0.7 * i as f64 + phase).cos());
+        let mut state = upright(Vector3::new(q[0], lateral, q[1]), &q, &qd);
+        (state.pose.yaw, state.pose.roll) = (-0.004 * phase, 0.003);
+        state.rates.across = Vector3::new(-0.02 * phase, 0.04, 0.1 * phase);
+        state
+    };
+    (
+        hull,
+        track(-half - 0.003, 0.003, 1.0),
+        track(half + 0.012, 0.002, -0.5),
+    )
+}
+
+/// The accelerations at `states` (which must touch: the contacts store
+/// energy and dissipate).
+fn accelerate(states: &States) -> Rates {
+    let dynamics = spatial();
+    let loads = dynamics.loads(&states.0, &states.1, &states.2);
+    assert!(loads.potential > 0.0 && loads.dissipation > 0.0);
+    dynamics
+        .accelerations(&states.0, &states.1, &states.2)
+        .expect("the spatial dynamics")
+}
+
+/// `a` and `b` equal to `1e-9` of their size (or of 1).
+fn same(a: &[f64], b: &[f64], what: &str) {
+    let scale = b.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!(
+            (x - y).abs() <= 1e-9 * scale,
+            "{what}[{i}]: {x} against {y}"
+        );
+    }
+}
+
+/// The same vehicle turned 1.1 rad about the vertical and moved
+/// elsewhere on level ground accelerates alike: every acceleration is in
+/// its tree's plane's frame.
+#[test]
+fn a_vehicle_moved_rigidly_accelerates_alike() {
+    let states = uneven();
+    let turn = 1.1;
+    let (s, c) = f64::sin_cos(turn);
+    let shift = Vector3::new(40.0, -7.0, 0.0);
+    let moved = |origin: Vector3<f64>| {
+        Vector3::new(
+            c * origin.x - s * origin.y,
+            s * origin.x + c * origin.y,
+            origin.z,
+        ) + shift
+    };
+    let mut turned = states.clone();
+    turned.0.pose.origin = moved(turned.0.pose.origin);
+    turned.0.pose.yaw += turn;
+    turned.1.pose.origin = moved(turned.1.pose.origin);
+    turned.1.pose.yaw += turn;
+    turned.2.pose.origin = moved(turned.2.pose.origin);
+    turned.2.pose.yaw += turn;
+    let (a, b) = (accelerate(&states), accelerate(&turned));
+    same(b.0.0.as_slice(), a.0.0.as_slice(), "hull in its plane");
+    same(b.0.1.as_slice(), a.0.1.as_slice(), "hull across");
+    same(
+        b.1.0.as_slice(),
+        a.1.0.as_slice(),
+        "right track in its plane",
+    );
+    same(b.1.1.as_slice(), a.1.1.as_slice(), "right track across");
+    same(
+        b.2.0.as_slice(),
+        a.2.0.as_slice(),
+        "left track in its plane",
+    );
+    same(b.2.1.as_slice(), a.2.1.as_slice(), "left track across");
+}
+
+/// The vehicle's mirror image across its centre plane (the world's `y`
+/// reversed) is the vehicle with its sides exchanged: the mirrored state
+/// (each tree's origin's `y`, yaw and roll reversed, its rates across
+/// its plane reversed, the hull's right and left bodies and the two
+/// tracks exchanged) accelerates as the mirror of the state's
+/// accelerations, to 1e-9.
+#[test]
+fn the_mirror_image_accelerates_as_the_mirror() {
+    let states = uneven();
+    let side = TwinChassis::BODIES - 1;
+    let mirror_tree = |mut state: TreeState<DT>| {
+        state.pose.origin.y = -state.pose.origin.y;
+        (state.pose.yaw, state.pose.roll) = (-state.pose.yaw, -state.pose.roll);
+        state.rates.across = -state.rates.across;
+        state
+    };
+    let swap = |v: &SVector<f64, DH>| {
+        SVector::<f64, DH>::from_fn(|i, _| match i {
+            _ if i < 3 => v[i],
+            _ if i < 3 + side => v[i + side],
+            _ => v[i - side],
+        })
+    };
+    let mut hull = states.0.clone();
+    hull.pose.origin.y = -hull.pose.origin.y;
+    (hull.pose.yaw, hull.pose.roll) = (-hull.pose.yaw, -hull.pose.roll);
+    hull.pose.planar = swap(&hull.pose.planar);
+    hull.rates.planar = swap(&hull.rates.planar);
+    hull.rates.across = -hull.rates.across;
+    let mirrored = (
+        hull,
+        mirror_tree(states.2.clone()),
+        mirror_tree(states.1.clone()),
+    );
+    let (a, b) = (accelerate(&states), accelerate(&mirrored));
+    same(
+        b.0.0.as_slice(),
+        swap(&a.0.0).as_slice(),
+        "hull in its plane",
+    );
+    same((-b.0.1).as_slice(), a.0.1.as_slice(), "hull across");
+    same(
+        b.1.0.as_slice(),
+        a.2.0.as_slice(),
+        "right track as the left",
+    );
+    same(
+        (-b.1.1).as_slice(),
+        a.2.1.as_slice(),
+        "right track across as the left",
+    );
+    same(
+        b.2.0.as_slice(),
+        a.1.0.as_slice(),
+        "left track as the right",
+    );
+    same(
+        (-b.2.1).as_slice(),
+        a.1.1.as_slice(),
+        "left track across as the right",
+    );
+}
+
+/// The force elements' books at an uneven state: the power the loads do
+/// on the bodies (`Σ F · v + M · ω`, every body of the three trees, from
+/// the trees' world velocities) is what the elements' stored energy loses
+/// (its rate by central differences along the motion, each tree's
+/// coordinates advanced at their rates) less what they dissipate, to
+/// 1e-6: every force acts at the material point whose motion its law
+/// reads, every moment arm from its body's centroid.
+#[test]
+fn the_force_elements_books_close() {
+    let states = uneven();
+    let dynamics = spatial();
+    let loads = dynamics.loads(&states.0, &states.1, &states.2);
+    let given = power(&dynamics.hull, &states.0, &loads.hull)
+        + power(&dynamics.right, &states.1, &loads.right)
+        + power(&dynamics.left, &states.2, &loads.left);
+    let h = 1e-7;
+    let stored_at = |by: f64| {
+        let hull = advanced(&dynamics.hull, &states.0, by);
+        let right = advanced(&dynamics.right, &states.1, by);
+        let left = advanced(&dynamics.left, &states.2, by);
+        dynamics.loads(&hull, &right, &left).potential
+    };
+    let stored = (stored_at(h) - stored_at(-h)) / (2.0 * h);
+    assert!(
+        (given + stored + loads.dissipation).abs() < 1e-6 * loads.dissipation,
+        "{given} W given, {stored} W stored, {} W dissipated",
+        loads.dissipation
+    );
+}
+
+/// The power `loads` do on a tree's bodies at `state`, W.
+fn power<M: RecursiveModel<D>, const D: usize>(
+    tree: &FloatingTree<'_, M, D>,
+    state: &TreeState<D>,
+    loads: &[SpatialLoad],
+) -> f64 {
+    let v = tree.velocities(&state.pose, &state.rates);
+    let w = tree.angular_velocities(&state.pose, &state.rates);
+    loads
+        .iter()
+        .zip(v.iter().zip(&w))
+        .map(|(l, (v, w))| l.force.dot(v) + l.moment.dot(w))
+        .sum()
+}
+
+/// A tree's state with its coordinates advanced `by` seconds at their
+/// rates (its rates kept).
+fn advanced<M: RecursiveModel<D>, const D: usize>(
+    tree: &FloatingTree<'_, M, D>,
+    state: &TreeState<D>,
+    by: f64,
+) -> TreeState<D> {
+    let (velocity, yaw, roll, angles) = tree.coordinate_rates(&state.pose, &state.rates);
+    let mut s = state.clone();
+    s.pose.origin += velocity * by;
+    s.pose.yaw += yaw * by;
+    s.pose.roll += roll * by;
+    for k in 2..D {
+        s.pose.planar[k] += angles[k] * by;
+    }
+    s
+}
+
+/// A layout that does not fit the trees is refused: a side missing, an
+/// inertia missing.
+#[test]
+fn a_layout_that_does_not_fit_is_refused() {
+    let geometry = Twin::geometry();
+    let build = |layout: &trackgen::spatial::SpatialLayout| {
+        SpatialDynamics::new(
+            &HULL,
+            (&TRACK, &TRACK),
+            layout,
+            geometry.shoe.clone(),
+            geometry.sprocket,
+            laws(),
+            HeightField::level(),
+        )
+        .err()
+    };
+    let mut layout = Twin::layout();
+    layout.part_sides.pop();
+    assert!(matches!(build(&layout), Some(SpatialError::Sides { .. })));
+    let mut layout = Twin::layout();
+    layout.left_links.pop();
+    assert!(matches!(
+        build(&layout),
+        Some(SpatialError::Inertias { .. })
+    ));
+    assert!(build(&Twin::layout()).is_none());
 }

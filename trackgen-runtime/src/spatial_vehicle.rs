@@ -37,7 +37,8 @@ use crate::multibody::{
     ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
 };
 use crate::spatial::{
-    FloatingTree, PlanePose, PlaneRates, Side, SpatialLayout, SpatialLoad, plane_rotation,
+    FloatingTree, PlanePose, PlaneRates, Side, SpatialError, SpatialLayout, SpatialLoad,
+    plane_rotation,
 };
 use crate::terrain::field::HeightField;
 
@@ -164,7 +165,9 @@ where
     L: TrackModel<DL>,
 {
     /// The vehicle of these compiled trees laid out as `layout` says,
-    /// with the shoe, the profile, the laws and the ground.
+    /// with the shoe, the profile, the laws and the ground. A layout that
+    /// does not fit the trees (an inertia or offset per body, a side per
+    /// part) is an error.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         hull: &'m H,
@@ -174,7 +177,13 @@ where
         profile: ToothProfile,
         laws: SpatialLaws,
         field: HeightField,
-    ) -> Result<Self, crate::spatial::SpatialError> {
+    ) -> Result<Self, SpatialError> {
+        if layout.part_sides.len() != H::PARTS.len() {
+            return Err(SpatialError::Sides {
+                parts: H::PARTS.len(),
+                given: layout.part_sides.len(),
+            });
+        }
         Ok(SpatialDynamics {
             hull: FloatingTree::new(hull, layout.hull_across.clone())?
                 .with_offsets(layout.hull_offsets.clone())?,
@@ -286,7 +295,10 @@ where
     ) -> (f64, f64) {
         let b = part.body;
         let (centre, velocity, spin) = (frame.at[b], frame.velocity[b], frame.spin[b]);
-        let reach = part.radius.max(self.profile.addendum) + self.shoe.extent();
+        let reach = match part.kind {
+            PartKind::Sprocket => self.profile.addendum,
+            _ => part.radius,
+        } + self.shoe.extent();
         let (mut potential, mut dissipation) = (0.0, 0.0);
         for k in 0..links.at.len() {
             if (links.at[k] - centre).norm_squared() > reach * reach {

@@ -15,7 +15,7 @@ use quote::{format_ident, quote};
 use syn::{Ident, Visibility};
 
 use super::runtime_path::runtime;
-use crate::ir::{Item, ItemKind};
+use crate::ir::{Item, ItemKind, Part};
 
 pub fn stubs(items: &[Item]) -> TokenStream {
     items.iter().map(stub).collect()
@@ -44,21 +44,7 @@ fn stub(item: &Item) -> TokenStream {
             let mut out = unit(vis, name);
             out.extend(unit(vis, &track));
             out.extend(unit(vis, &chassis));
-            // A part named twice is one of the errors: its constant once.
-            let mut seen = std::collections::BTreeSet::new();
-            let parts = vehicle
-                .parts
-                .iter()
-                .zip(&vehicle.part_bodies)
-                .filter(|(p, _)| seen.insert(p.name.to_string()))
-                .map(|(p, &(body, arm))| {
-                    let konst = format_ident!("{}", p.name.to_string().to_uppercase());
-                    let arm = arm.map(|arm| {
-                        let konst = format_ident!("{}_ARM", p.name.to_string().to_uppercase());
-                        quote!(pub const #konst: usize = #arm;)
-                    });
-                    quote!(pub const #konst: usize = #body; #arm)
-                });
+            let parts = part_constants(&vehicle.parts, &vehicle.part_bodies);
             out.extend(quote! {
                 #[allow(dead_code)]
                 impl #name {
@@ -87,6 +73,25 @@ fn stub(item: &Item) -> TokenStream {
             out
         }
     }
+}
+
+/// The body-index constants of `parts` (and of their arms), each once: a
+/// part named twice is one of the errors.
+fn part_constants(parts: &[Part], bodies: &[(usize, Option<usize>)]) -> Vec<TokenStream> {
+    let mut seen = std::collections::BTreeSet::new();
+    parts
+        .iter()
+        .zip(bodies)
+        .filter(|(p, _)| seen.insert(p.name.to_string()))
+        .map(|(p, &(body, arm))| {
+            let konst = format_ident!("{}", p.name.to_string().to_uppercase());
+            let arm = arm.map(|arm| {
+                let konst = format_ident!("{}_ARM", p.name.to_string().to_uppercase());
+                quote!(pub const #konst: usize = #arm;)
+            });
+            quote!(pub const #konst: usize = #body; #arm)
+        })
+        .collect()
 }
 
 fn unit(vis: &Visibility, name: &Ident) -> TokenStream {
@@ -164,20 +169,7 @@ fn spatial(
     let rt = runtime();
     let hull = format_ident!("{}Hull", name);
     let mut out = unit(vis, &hull);
-    let mut seen = std::collections::BTreeSet::new();
-    let parts = tracks
-        .parts
-        .iter()
-        .zip(&tracks.part_bodies)
-        .filter(|(p, _)| seen.insert(p.name.to_string()))
-        .map(|(p, &(body, arm))| {
-            let konst = format_ident!("{}", p.name.to_string().to_uppercase());
-            let arm = arm.map(|arm| {
-                let konst = format_ident!("{}_ARM", p.name.to_string().to_uppercase());
-                quote!(pub const #konst: usize = #arm;)
-            });
-            quote!(pub const #konst: usize = #body; #arm)
-        });
+    let parts = part_constants(&tracks.parts, &tracks.part_bodies);
     let mirror = match &tracks.mirror_track {
         Some(_) => {
             let side = if tracks.declared_left {

@@ -453,26 +453,12 @@ impl Lowering<'_> {
             };
             let place = self.fields("a mirrored part", body, &["at"]);
             self.sections("a mirrored part", body, &[]);
-            let points = if indices.len() > 1 || sides.repeated.contains_key(&part) {
-                self.points(&place, "at", true).and_then(|at| {
-                    if at.len() == indices.len() {
-                        Some(at)
-                    } else {
-                        self.errors.spanned(
-                            place.map["at"],
-                            format!(
-                                "`{part}` is {} parts: `at` needs {} positions, found {}",
-                                indices.len(),
-                                indices.len(),
-                                at.len()
-                            ),
-                        );
-                        None
-                    }
-                })
-            } else {
-                self.point(&place, "at", true).map(|p| vec![p])
-            };
+            let n = indices.len();
+            let what = sides
+                .repeated
+                .contains_key(&part)
+                .then(|| format!("`{part}` is {n} parts"));
+            let points = self.places(&place, what.as_deref().map(|w| (n, w)));
             for (&i, at) in indices.iter().zip(points.into_iter().flatten()) {
                 if !moved.insert(i) {
                     self.errors.at(

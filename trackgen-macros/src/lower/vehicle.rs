@@ -332,28 +332,9 @@ impl Lowering<'_> {
                 arm = Some(self.arm(body, repeated.is_some()));
             }
         }
-        let at = if let Some(base) = repeated {
-            self.points(&fields, "at", true).and_then(|at| {
-                if at.len() == names.len() {
-                    Some(at)
-                } else {
-                    self.errors.spanned(
-                        fields.map["at"],
-                        format!(
-                            "`{}[{}]` declares {} parts: `at` needs {} positions, found {}",
-                            base,
-                            names.len(),
-                            names.len(),
-                            names.len(),
-                            at.len()
-                        ),
-                    );
-                    None
-                }
-            })
-        } else {
-            self.point(&fields, "at", true).map(|p| vec![p])
-        };
+        let n = names.len();
+        let list = repeated.map(|base| format!("`{base}[{n}]` declares {n} parts"));
+        let at = self.places(&fields, list.as_deref().map(|w| (n, w)));
         let mass = self.positive(&fields, "mass", true);
         let inertia = self.positive(&fields, "inertia", true);
         let radius = self.positive(&fields, "radius", true);
@@ -618,6 +599,27 @@ impl Lowering<'_> {
     }
 
     /// A non-empty list of points `[(x, y), …]`, m.
+    /// `at`: one point, or for `n` parts (`what` says which, in the
+    /// error) a list of `n` points.
+    pub(super) fn places(
+        &mut self,
+        fields: &Fields,
+        repeated: Option<(usize, &str)>,
+    ) -> Option<Vec<Vec2>> {
+        let Some((n, what)) = repeated else {
+            return self.point(fields, "at", true).map(|p| vec![p]);
+        };
+        let at = self.points(fields, "at", true)?;
+        if at.len() == n {
+            return Some(at);
+        }
+        self.errors.spanned(
+            fields.map["at"],
+            format!("{what}: `at` needs {n} positions, found {}", at.len()),
+        );
+        None
+    }
+
     pub(super) fn points(
         &mut self,
         fields: &Fields,

@@ -150,6 +150,14 @@ pub enum SpatialError {
         /// What was given, m.
         offset: f64,
     },
+    /// One side per part of the hull is needed.
+    #[error("the hull has {parts} parts but {given} sides were given")]
+    Sides {
+        /// The hull's parts.
+        parts: usize,
+        /// The sides given.
+        given: usize,
+    },
     /// The planar model's gravity must point down its `y` axis, which
     /// becomes the world's vertical.
     #[error("the planar gravity must be (0, −g), got ({x}, {y}) m/s²")]
