@@ -84,7 +84,15 @@ pub const RUNTIME: Graph = &[
     ),
     (
         "spatial_vehicle",
-        &["laws", "multibody", "contact", "terrain", "spatial"],
+        &[
+            "laws",
+            "multibody",
+            "contact",
+            "terrain",
+            "spatial",
+            "closure",
+            "integrate",
+        ],
     ),
     // the vehicle
     (

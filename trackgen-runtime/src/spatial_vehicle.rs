@@ -25,6 +25,11 @@
 //!
 //! Friction on the ground is regularised here (stiction's deflections are
 //! states the spatial vehicle does not carry yet); there is no drive.
+//! [`SpatialSystem`] integrates it in time.
+
+mod system;
+
+pub use system::{SpatialEnergy, SpatialSystem};
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
@@ -381,33 +386,47 @@ where
     }
 
     /// The three trees' accelerations under the force elements and
-    /// gravity, the tracks' loops closed: for each, the rates of its
-    /// quasi-velocities in its plane (the planar `q̈_i`) and across it.
-    #[allow(clippy::type_complexity)]
+    /// gravity, the tracks' loops closed by the plain constraint: for
+    /// each, the rates of its quasi-velocities in its plane (the planar
+    /// `q̈_i`) and across it.
     pub fn accelerations(
         &self,
         hull: &TreeState<DH>,
         right: &TreeState<DR>,
         left: &TreeState<DL>,
-    ) -> Result<
-        (
-            (SVector<f64, DH>, Vector3<f64>),
-            (SVector<f64, DR>, Vector3<f64>),
-            (SVector<f64, DL>, Vector3<f64>),
-        ),
-        DynamicsError,
-    > {
-        let loads = self.loads(hull, right, left);
+    ) -> Result<Accelerations<DH, DR, DL>, DynamicsError> {
         let closed = ClosingJoint::Constrained {
             stabilisation: Vector2::zeros(),
         };
+        let loads = self.loads(hull, right, left);
+        self.accelerations_under(hull, right, left, &loads, [closed; 2])
+    }
+
+    /// [`accelerations`](Self::accelerations) under `loads`, each track's
+    /// loop as `closing` says (right, left).
+    pub fn accelerations_under(
+        &self,
+        hull: &TreeState<DH>,
+        right: &TreeState<DR>,
+        left: &TreeState<DL>,
+        loads: &SpatialLoads,
+        closing: [ClosingJoint; 2],
+    ) -> Result<Accelerations<DH, DR, DL>, DynamicsError> {
         Ok((
             self.hull
                 .accelerations(&hull.pose, &hull.rates, &loads.hull)?,
             self.right
-                .closed_accelerations(&right.pose, &right.rates, &loads.right, closed)?,
+                .closed_accelerations(&right.pose, &right.rates, &loads.right, closing[0])?,
             self.left
-                .closed_accelerations(&left.pose, &left.rates, &loads.left, closed)?,
+                .closed_accelerations(&left.pose, &left.rates, &loads.left, closing[1])?,
         ))
     }
 }
+
+/// The hull's, the right track's and the left track's accelerations, each
+/// in its plane (the planar `q̈_i`) and across it.
+pub type Accelerations<const DH: usize, const DR: usize, const DL: usize> = (
+    (SVector<f64, DH>, Vector3<f64>),
+    (SVector<f64, DR>, Vector3<f64>),
+    (SVector<f64, DL>, Vector3<f64>),
+);

@@ -134,6 +134,21 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         Ok(FloatingTree { offsets, ..self })
     }
 
+    /// The planar model it floats.
+    pub fn model(&self) -> &'m M {
+        self.model
+    }
+
+    /// Every body's mass, kg.
+    pub fn masses(&self) -> &[f64] {
+        &self.masses
+    }
+
+    /// Gravity's size, m/s², down the world's `z`.
+    pub fn gravity(&self) -> f64 {
+        self.gravity
+    }
+
     /// Every body's centroid in the world, m.
     pub fn positions(&self, pose: &PlanePose<DOF>) -> Vec<Vector3<f64>> {
         let a = plane_rotation(pose.yaw, pose.roll);

@@ -1,0 +1,210 @@
+//! The spatial vehicle as a system in time: its three trees' coordinates
+//! and quasi-velocities in one state, with the energy its force elements
+//! dissipate integrated beside them (the books).
+//!
+//! A tree of `D` planar coordinates holds `2 D + 6` values: its root's
+//! centroid in the world (3), its plane's yaw and roll, its bodies'
+//! angles (`D − 2`), then its quasi-velocities in the plane (`D`) and
+//! across it (3). The state is the hull's, the right track's, the left
+//! track's, and the energy dissipated so far (J). Each track's loop is
+//! held by Baumgarte's stabilisation of its planar closure
+//! ([`MultiplierOptions`]'s rate), which the plane's motion leaves
+//! unchanged.
+
+use nalgebra::{DVector, SVector, Vector3};
+
+use super::{SpatialDynamics, TreeState};
+use crate::closure::MultiplierOptions;
+use crate::integrate::{OdeSystem, SimulationError};
+use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
+use crate::spatial::{FloatingTree, PlanePose, PlaneRates};
+
+/// The spatial vehicle in time.
+pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
+    /// Its dynamics at a state.
+    pub dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>,
+    closure: MultiplierOptions,
+}
+
+/// Where the spatial vehicle's energy is, J.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpatialEnergy {
+    /// The bodies' kinetic energy.
+    pub kinetic: f64,
+    /// Gravity's potential, from the world's `z = 0`.
+    pub gravity: f64,
+    /// What the force elements store.
+    pub stored: f64,
+    /// What they have dissipated since the start.
+    pub dissipated: f64,
+}
+
+impl SpatialEnergy {
+    /// The sum: constant but for the work of what is not a force element
+    /// (nothing, so far).
+    pub fn total(&self) -> f64 {
+        self.kinetic + self.gravity + self.stored + self.dissipated
+    }
+}
+
+/// A tree's `2 D + 6` values as its state.
+fn tree_state<const D: usize>(y: &[f64]) -> TreeState<D> {
+    let mut planar = SVector::<f64, D>::zeros();
+    planar.as_mut_slice()[2..].copy_from_slice(&y[5..D + 3]);
+    TreeState {
+        pose: PlanePose {
+            origin: Vector3::new(y[0], y[1], y[2]),
+            yaw: y[3],
+            roll: y[4],
+            planar,
+        },
+        rates: PlaneRates {
+            planar: SVector::from_column_slice(&y[D + 3..2 * D + 3]),
+            across: Vector3::new(y[2 * D + 3], y[2 * D + 4], y[2 * D + 5]),
+        },
+    }
+}
+
+/// A tree's state into its `2 D + 6` values.
+fn put_tree<const D: usize>(state: &TreeState<D>, y: &mut [f64]) {
+    y[..3].copy_from_slice(state.pose.origin.as_slice());
+    (y[3], y[4]) = (state.pose.yaw, state.pose.roll);
+    y[5..D + 3].copy_from_slice(&state.pose.planar.as_slice()[2..]);
+    y[D + 3..2 * D + 3].copy_from_slice(state.rates.planar.as_slice());
+    y[2 * D + 3..2 * D + 6].copy_from_slice(state.rates.across.as_slice());
+}
+
+/// A tree's coordinates' rates and its accelerations into `dy`.
+fn put_rates<M: RecursiveModel<D>, const D: usize>(
+    tree: &FloatingTree<'_, M, D>,
+    state: &TreeState<D>,
+    (planar, across): &(SVector<f64, D>, Vector3<f64>),
+    dy: &mut [f64],
+) {
+    let (velocity, yaw, roll, angles) = tree.coordinate_rates(&state.pose, &state.rates);
+    dy[..3].copy_from_slice(velocity.as_slice());
+    (dy[3], dy[4]) = (yaw, roll);
+    dy[5..D + 3].copy_from_slice(&angles.as_slice()[2..]);
+    dy[D + 3..2 * D + 3].copy_from_slice(planar.as_slice());
+    dy[2 * D + 3..2 * D + 6].copy_from_slice(across.as_slice());
+}
+
+/// A track's loop held by Baumgarte's stabilisation of its planar closure
+/// (which the plane's turning about its normal leaves unchanged).
+fn closing<T: TrackModel<D>, const D: usize>(
+    track: &T,
+    state: &TreeState<D>,
+    options: &MultiplierOptions,
+) -> ClosingJoint {
+    let q = &state.pose.planar;
+    let c = track.closure(q);
+    let rate = track.closure_jacobian(q) * state.rates.planar;
+    ClosingJoint::Constrained {
+        stabilisation: options.stabilisation(c, rate),
+    }
+}
+
+impl<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize>
+    SpatialSystem<'m, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    /// The system of `dynamics`, its tracks' loops held at
+    /// [`MultiplierOptions`]'s default rate.
+    pub fn new(dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>) -> Self {
+        SpatialSystem {
+            dynamics,
+            closure: MultiplierOptions::default(),
+        }
+    }
+
+    /// The state of the three trees, nothing dissipated yet.
+    pub fn state(
+        &self,
+        hull: &TreeState<DH>,
+        right: &TreeState<DR>,
+        left: &TreeState<DL>,
+    ) -> DVector<f64> {
+        let mut y = DVector::zeros(self.dimension());
+        let (h, r) = (2 * DH + 6, 2 * DR + 6);
+        put_tree(hull, &mut y.as_mut_slice()[..h]);
+        put_tree(right, &mut y.as_mut_slice()[h..h + r]);
+        put_tree(left, &mut y.as_mut_slice()[h + r..h + r + 2 * DL + 6]);
+        y
+    }
+
+    /// The three trees' states in `y`, and the energy dissipated so far.
+    pub fn states(&self, y: &[f64]) -> (TreeState<DH>, TreeState<DR>, TreeState<DL>, f64) {
+        let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
+        (
+            tree_state(&y[..h]),
+            tree_state(&y[h..h + r]),
+            tree_state(&y[h + r..h + r + l]),
+            y[h + r + l],
+        )
+    }
+
+    /// Where the energy is at `y`.
+    pub fn energy(&self, y: &[f64]) -> SpatialEnergy {
+        let (hull, right, left, dissipated) = self.states(y);
+        let d = &self.dynamics;
+        let g = d.hull.gravity();
+        let height = |at: Vec<Vector3<f64>>, masses: &[f64]| {
+            at.iter().zip(masses).map(|(p, m)| m * g * p.z).sum::<f64>()
+        };
+        SpatialEnergy {
+            kinetic: d.hull.kinetic_energy(&hull.pose, &hull.rates)
+                + d.right.kinetic_energy(&right.pose, &right.rates)
+                + d.left.kinetic_energy(&left.pose, &left.rates),
+            gravity: height(d.hull.positions(&hull.pose), d.hull.masses())
+                + height(d.right.positions(&right.pose), d.right.masses())
+                + height(d.left.positions(&left.pose), d.left.masses()),
+            stored: d.loads(&hull, &right, &left).potential,
+            dissipated,
+        }
+    }
+}
+
+impl<H, const DH: usize, R, const DR: usize, L, const DL: usize> OdeSystem
+    for SpatialSystem<'_, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    fn dimension(&self) -> usize {
+        (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6) + 1
+    }
+
+    fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
+        if y.len() != self.dimension() || dy.len() != self.dimension() {
+            return Err(SimulationError::StateLength {
+                t,
+                got: y.len(),
+                expected: self.dimension(),
+            });
+        }
+        let (hull, right, left, _) = self.states(y);
+        let d = &self.dynamics;
+        let loads = d.loads(&hull, &right, &left);
+        let closing = [
+            closing(d.right.model(), &right, &self.closure),
+            closing(d.left.model(), &left, &self.closure),
+        ];
+        let (a_hull, a_right, a_left) = d
+            .accelerations_under(&hull, &right, &left, &loads, closing)
+            .map_err(|source| SimulationError::Dynamics { t, source })?;
+        let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
+        put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
+        put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
+        put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
+        dy[h + r + l] = loads.dissipation;
+        Ok(())
+    }
+
+    fn is_quadrature(&self, i: usize) -> bool {
+        i + 1 == self.dimension()
+    }
+}
