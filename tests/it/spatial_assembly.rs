@@ -8,6 +8,7 @@
 //! side's, naming the link counts that would; and the start in space, the
 //! hull and tracks as floating trees, touching as each side in its plane.
 
+use crate::support::twin::{Twin, TwinHull, TwinTrack};
 use trackgen::assembly::{AssemblyError, assemble, assemble_sides};
 use trackgen::contact::axial::{RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
 use trackgen::contact::{BodyState, ShoeGeometry, sprocket, wheel};
@@ -139,38 +140,20 @@ fn the_marders_sides_assemble() {
 }
 
 trackgen::model! {
-    /// A light carrier whose left track is ten links short.
-    pub vehicle Short {
-        chassis { mass: 2400.0, inertia: 3800.0, centroid: (-1.3, 0.35) },
-        sprocket drive { at: (0.0, 0.0), mass: 15.0, inertia: 0.3, radius: 0.17, teeth: 9 },
-        road_wheel rw[4] {
-            at: [(-0.45, -0.30), (-1.0, -0.30), (-1.55, -0.30), (-2.1, -0.30)],
-            mass: 25.0, inertia: 0.5, radius: 0.2,
-            arm { pivot_offset: (0.22, 0.10), mass: 20.0, inertia: 0.2,
-                  stiffness: 1.5e4, damping: 300.0, preload: 1.2e3 },
-        },
-        idler rear { at: (-2.6, -0.08), mass: 20.0, inertia: 0.4, radius: 0.18,
-            arm { pivot: (-2.6, 0.12), mass: 3.0, inertia: 0.02,
-                  stiffness: 2e4, damping: 600.0, preload: -2e3,
-                  travel: (-0.6, 0.6) } },
-        track { links: 55, link { mass: 6.0, inertia: 0.01, u1: (-0.06, 0.0), u2: (0.06, 0.0) } },
-        shoe { ground_points: [(-0.045, -0.02), (0.045, -0.02)], inner_offset: 0.02,
-               pins: [(0.045, 0.0), (-0.045, 0.0)], pin_radius: 0.012, width: 0.3 },
-        tracks {
-            gauge: 1.8,
-            hull { mass: 4800.0, inertia: (2000.0, 7600.0, 8400.0) },
-            left { links: 45 },
-        },
+    /// The `Twin`'s track, ten links short.
+    pub track Short45 {
+        links: 45,
+        link { mass: 6.0, inertia: 0.01, u1: (-0.06, 0.0), u2: (0.06, 0.0) },
     }
 }
 
 #[test]
 fn a_side_that_cannot_fit_is_refused_as_that_sides() {
-    let geometry = Short::geometry();
+    let geometry = Twin::geometry();
     let error = assemble_sides(
-        &ShortHull,
-        (&ShortTrack, &ShortLeftTrack),
-        &Short::layout().part_sides,
+        &TwinHull,
+        (&TwinTrack, &Short45),
+        &Twin::layout().part_sides,
         &geometry.shoe,
         &geometry.sprocket,
         &FLAT,

@@ -36,32 +36,7 @@ use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, Vehicle};
 
-trackgen::model! {
-    /// A light carrier, its left side its right's mirror.
-    pub vehicle Twin {
-        chassis { mass: 1200.0, inertia: 1900.0, centroid: (-1.3, 0.35) },
-        sprocket drive { at: (0.0, 0.0), mass: 15.0, inertia: 0.3, radius: 0.17, teeth: 9 },
-        road_wheel rw[4] {
-            at: [(-0.45, -0.30), (-1.0, -0.30), (-1.55, -0.30), (-2.1, -0.30)],
-            mass: 25.0, inertia: 0.5, radius: 0.2,
-            arm { pivot_offset: (0.22, 0.10), mass: 20.0, inertia: 0.2,
-                  stiffness: 1.5e4, damping: 300.0, preload: 1.2e3 },
-        },
-        idler rear { at: (-2.6, -0.08), mass: 20.0, inertia: 0.4, radius: 0.18,
-            arm { pivot: (-2.6, 0.12), mass: 3.0, inertia: 0.02,
-                  stiffness: 2e4, damping: 600.0, preload: -2e3,
-                  travel: (-0.6, 0.6) } },
-        track { links: 55, link { mass: 6.0, inertia: 0.01, u1: (-0.06, 0.0), u2: (0.06, 0.0) } },
-        shoe { ground_points: [(-0.045, -0.02), (0.045, -0.02)], inner_offset: 0.02,
-               pins: [(0.045, 0.0), (-0.045, 0.0)], pin_radius: 0.012, width: 0.3 },
-        contact { ground { stiffness: 1.5e6, chi: 2.0, mu: 0.7, slip: 0.1 } },
-        tracks {
-            gauge: 1.8,
-            guide_play: 0.01,
-            hull { mass: 2400.0, inertia: (1500.0, 3800.0, 4200.0) },
-        },
-    }
-}
+use crate::support::twin::{Twin, TwinChassis, TwinHull, TwinTrack};
 
 const DH: usize = <Twin as SpatialVehicle>::HULL_DOF;
 const DT: usize = Twin::TRACK_DOF;

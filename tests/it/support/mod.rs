@@ -4,6 +4,7 @@
 pub mod contact;
 pub mod pinocchio;
 pub mod programs;
+pub mod twin;
 pub mod vehicle;
 
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector};
