@@ -309,3 +309,32 @@ fn the_floating_hull_has_the_inertia_its_bodies_add_up_to() {
         );
     }
 }
+
+/// `FloatingTree::world` gives every body's place, orientation, velocity
+/// and angular velocity as the four separate calls do, bit for bit, for
+/// the M113's hull (its parts off the plane) turned, rolled and moving.
+#[test]
+fn the_world_motion_is_the_four_at_once() {
+    let layout = M113::layout();
+    let tree = FloatingTree::new(&M113Hull, layout.hull_across.clone())
+        .and_then(|t| t.with_offsets(layout.hull_offsets.clone()))
+        .expect("the hull floats");
+    let pose = PlanePose::<DH> {
+        origin: Vector3::new(1.0, -2.0, 0.5),
+        yaw: 0.7,
+        roll: -0.2,
+        planar: SVector::from_fn(|i, _| 0.1 * (i as f64).sin()),
+    };
+    let rates = PlaneRates {
+        planar: SVector::from_fn(|i, _| 0.3 * (1.7 * i as f64).cos()),
+        across: Vector3::new(0.2, -0.1, 0.4),
+    };
+    let world = tree.world(&pose, &rates);
+    assert_eq!(world.positions, tree.positions(&pose));
+    assert_eq!(world.orientations, tree.orientations(&pose));
+    assert_eq!(world.velocities, tree.velocities(&pose, &rates));
+    assert_eq!(
+        world.angular_velocities,
+        tree.angular_velocities(&pose, &rates)
+    );
+}

@@ -100,11 +100,12 @@ impl Bodies {
     where
         M: crate::multibody::RecursiveModel<D>,
     {
+        let world = tree.world(&state.pose, &state.rates);
         Bodies {
-            at: tree.positions(&state.pose),
-            turned: tree.orientations(&state.pose),
-            velocity: tree.velocities(&state.pose, &state.rates),
-            spin: tree.angular_velocities(&state.pose, &state.rates),
+            at: world.positions,
+            turned: world.orientations,
+            velocity: world.velocities,
+            spin: world.angular_velocities,
         }
     }
 

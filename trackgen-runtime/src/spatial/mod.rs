@@ -59,7 +59,7 @@ mod layout;
 mod tree;
 
 pub use layout::{Side, SpatialLayout, SpatialVehicle};
-pub use tree::{FloatingTree, PlanePose, PlaneRates, SpatialLoad};
+pub use tree::{FloatingTree, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
 
 use nalgebra::Matrix3;
 

@@ -31,6 +31,20 @@ pub struct PlaneRates<const DOF: usize> {
     pub across: Vector3<f64>,
 }
 
+/// Every body of a tree in the world ([`FloatingTree::world`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WorldMotion {
+    /// Centroids, m.
+    pub positions: Vec<Vector3<f64>>,
+    /// Orientations: each body's `x`, the plane's normal and its `y` as
+    /// columns.
+    pub orientations: Vec<Matrix3<f64>>,
+    /// Centroid velocities, m/s.
+    pub velocities: Vec<Vector3<f64>>,
+    /// Angular velocities, rad/s.
+    pub angular_velocities: Vec<Vector3<f64>>,
+}
+
 /// A load on a body at its centroid, world frame: force (N) and moment
 /// (N m).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -169,6 +183,51 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
                 a * Matrix3::new(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c)
             })
             .collect()
+    }
+
+    /// Every body's place, orientation, velocity and angular velocity in
+    /// the world at once ([`positions`](Self::positions),
+    /// [`orientations`](Self::orientations),
+    /// [`velocities`](Self::velocities) and
+    /// [`angular_velocities`](Self::angular_velocities) from one pass over
+    /// the planar model).
+    pub fn world(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> WorldMotion {
+        let n = self.masses.len();
+        let a = plane_rotation(pose.yaw, pose.roll);
+        let trig: Vec<(f64, f64)> = (0..n).map(|k| sin_cos(&pose.planar, k)).collect();
+        let (mut place, mut planar) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
+        self.model.body_states_with_trig(
+            &trig,
+            &at_origin(&pose.planar),
+            &rates.planar,
+            &mut place,
+            &mut planar,
+        );
+        let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
+        let turning = offset_velocity(&rates.across);
+        let mut world = WorldMotion {
+            positions: Vec::with_capacity(n),
+            orientations: Vec::with_capacity(n),
+            velocities: Vec::with_capacity(n),
+            angular_velocities: Vec::with_capacity(n),
+        };
+        for k in 0..n {
+            let (p, e, (s, c)) = (place[k], self.offsets[k], trig[k]);
+            let v = planar[k] + e * turning;
+            world
+                .positions
+                .push(pose.origin + a * Vector3::new(p.x, e, p.y));
+            world
+                .orientations
+                .push(a * Matrix3::new(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c));
+            world
+                .velocities
+                .push(a * Vector3::new(v.x, v_eta + w_zeta * p.x - w_xi * p.y, v.y));
+            world
+                .angular_velocities
+                .push(a * Vector3::new(w_xi, -rates.planar[k + 2], w_zeta));
+        }
+        world
     }
 
     /// Every body's inertia about its centroid in its own frame, kg m²:
