@@ -40,6 +40,7 @@ const GUIDE: GuideLaw = GuideLaw {
     play: 0.02,
     stiffness: 1e7,
     damping: 2e3,
+    height: 0.05,
 };
 
 /// A vertical plane through `origin` heading `yaw`: its forward axis,
@@ -345,6 +346,89 @@ fn the_guide_bears_beyond_its_play_only() {
         .check()
         .is_err()
     );
+    assert!(
+        GuideLaw {
+            height: 0.0,
+            ..GUIDE
+        }
+        .check()
+        .is_err()
+    );
+}
+
+/// Short of the rim, within the horn's height, the guide alone bears:
+/// its books close there as at the rim (its power — the push along the
+/// axle at the guide and the radial push at the face's nearest point —
+/// is the rate of its stored energy less its dissipation, to 1e-6), it
+/// bears in proportion to the horn's overlap, and its stored energy goes
+/// to nothing as the face leaves the horn's reach (continuous: no energy
+/// lost when a link leaves a wheel with its guide pressed).
+#[test]
+fn the_guide_bears_short_of_the_rim_by_the_horns_overlap() {
+    let h = 1e-6;
+    let guide = GuideLaw {
+        play: 0.005,
+        ..GUIDE
+    };
+    let mut engaged = 0;
+    for (face, wheel) in space_cases(true) {
+        let rim = RimContact::detect(&wheel, &face).expect("the rim touches");
+        // The face moved out along the rim's normal to `gap` short of it.
+        let short = |gap: f64| {
+            let by = rim.contact.normal * (rim.contact.depth + gap);
+            SpaceFace {
+                ends: face.ends.map(|e| e + by),
+                guide: face.guide + by,
+                centroid: face.centroid + by,
+                ..face
+            }
+        };
+        let face = short(0.3 * guide.height);
+        let near = RimContact::near(&wheel, &face, guide.height).expect("within the horn");
+        assert!(
+            (near.contact.depth + 0.3 * guide.height).abs() < 1e-12,
+            "{}",
+            near.contact.depth
+        );
+        assert!(RimContact::detect(&wheel, &face).is_none());
+        let bearing = guide.respond(&near);
+        if bearing.force == 0.0 {
+            continue;
+        }
+        engaged += 1;
+        let full = guide.respond(&RimContact {
+            contact: trackgen::contact::axial::AxialContact {
+                depth: 0.0,
+                ..near.contact
+            },
+            ..near
+        });
+        assert!(
+            (bearing.potential - 0.7 * full.potential).abs() < 1e-9 * full.potential,
+            "the overlap 0.7 scales the stored energy"
+        );
+        let stored = |t: f64| {
+            let (f, w) = moved(&face, &wheel, t);
+            guide
+                .respond(&RimContact::near(&w, &f, guide.height).expect("still within"))
+                .potential
+        };
+        let rate = (stored(h) - stored(-h)) / (2.0 * h);
+        let given = -bearing.radial * near.contact.normal.dot(&near.contact.velocity)
+            - bearing.force * near.offset_rate;
+        assert!(
+            (given - rate - bearing.dissipation).abs() < 1e-6 * given.abs().max(1.0),
+            "{given} W given, {rate} W stored, {} W dissipated",
+            bearing.dissipation
+        );
+        let leaving = RimContact::near(&wheel, &short(guide.height * (1.0 - 1e-9)), guide.height)
+            .expect("at the horn's tip");
+        assert!(guide.respond(&leaving).potential < 1e-8 * full.potential);
+        assert!(
+            RimContact::near(&wheel, &short(guide.height * (1.0 + 1e-9)), guide.height).is_none()
+        );
+    }
+    assert!(engaged > 3, "the guide bears in {engaged} cases");
 }
 
 /// The M113's sprocket turned a little against its assembled track, the

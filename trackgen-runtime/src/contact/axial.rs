@@ -32,14 +32,23 @@
 //! The depth being the planar one of the sprocket's body-fixed coordinates
 //! of `p`, its rate is again `−n · v` exactly.
 //!
-//! **The guide.** The shoe's centre guide, a point `g` fixed on the link,
-//! runs between the wheel's two halves with `play` each way: where the
-//! rim touches, its offset across the wheel's plane `e = (g − c) · a`
-//! beyond the play is resisted by a spring-damper along `a`
-//! ([`GuideLaw`]) acting at `g`, pushing the link back toward the wheel's
-//! plane. `g` being a material point, `ė = v_g · a` exactly (`v_g` its
-//! velocity less the wheel's material point's there), and the guide's
-//! power is its law's.
+//! **The guide.** The shoe's centre guide, a horn standing `h` inward
+//! from the running face and carried by the link at a point `g`, runs
+//! between the wheel's two halves with `play` each way: its offset
+//! across the wheel's plane `e = (g − c) · a` beyond the play, `x = |e| −
+//! play`, is resisted by a spring-damper along `a` ([`GuideLaw`]) acting
+//! at `g`, pushing the link back toward the wheel's plane. The horn bears
+//! on the wheel over the part of its height the rim overlaps: with the
+//! face at `δ` into the rim (`δ < 0`: short of it), the overlap
+//! `ρ = clamp((δ + h)/h, 0, 1)` scales the law, so the guide engages
+//! continuously as a link comes onto a wheel and lets go as it leaves
+//! (a guide that acted only while the rim touched would drop its stored
+//! energy whenever a link left the rim with its guide pressed). Its
+//! potential `½ k x² ρ(δ)` then also pushes the link out along the rim's
+//! normal, `½ k x² ρ'(δ)`, at the face's point nearest the axle. `g`
+//! being a material point, `ė = v_g · a` exactly (`v_g` its velocity less
+//! the wheel's material point's there), `δ̇ = −n · v` as for the rim, and
+//! the guide's power is its law's.
 
 use nalgebra::Vector3;
 
@@ -133,6 +142,14 @@ impl RimContact {
     /// The rim of `wheel` on `face`: `None` where the rim is on the face's
     /// outer side or does not reach it.
     pub fn detect(wheel: &SpaceWheel, face: &SpaceFace) -> Option<RimContact> {
+        Self::near(wheel, face, 0.0)
+    }
+
+    /// The rim of `wheel` and `face` within `reach` (m, ≥ 0) of touching:
+    /// the contact's depth more than `−reach` (negative: a gap), where a
+    /// guide horn of that height overlaps the wheel. `None` where the rim
+    /// is on the face's outer side or further away.
+    pub fn near(wheel: &SpaceWheel, face: &SpaceFace, reach: f64) -> Option<RimContact> {
         let a = wheel.axle;
         let across = |v: Vector3<f64>| v - a * a.dot(&v);
         let [p0, p1] = face.ends;
@@ -149,7 +166,7 @@ impl RimContact {
         let radial = across(point - wheel.centre);
         let distance = radial.norm();
         let depth = wheel.radius - distance;
-        if depth <= 0.0 || distance == 0.0 {
+        if depth <= -reach || distance == 0.0 {
             return None;
         }
         let relative = |x: Vector3<f64>| {
@@ -251,15 +268,33 @@ pub struct GuideLaw {
     pub stiffness: f64,
     /// N s/m (≥ 0).
     pub damping: f64,
+    /// The horn's height inward from the running face, m (> 0): the
+    /// guide bears in full once the rim touches the face, not at all with
+    /// the face this far short of it, in proportion between.
+    pub height: f64,
 }
 
 impl GuideLaw {
     /// Each parameter in its range: a finite play of zero or more, a
-    /// positive stiffness, a damping of zero or more.
+    /// positive stiffness, a damping of zero or more, a positive height.
     pub fn check(&self) -> Result<(), ParameterError> {
         ParameterError::check("play", self.play, 0.0, false)?;
         ParameterError::check("stiffness", self.stiffness, 0.0, true)?;
-        ParameterError::check("damping", self.damping, 0.0, false)
+        ParameterError::check("damping", self.damping, 0.0, false)?;
+        ParameterError::check("height", self.height, 0.0, true)
+    }
+
+    /// The horn's overlap with the rim at the face's depth `depth` into
+    /// it (m), `ρ ∈ [0, 1]`, and its slope `dρ/dδ` (1/m).
+    fn overlap(&self, depth: f64) -> (f64, f64) {
+        let rho = (depth + self.height) / self.height;
+        if rho <= 0.0 {
+            (0.0, 0.0)
+        } else if rho >= 1.0 {
+            (1.0, 0.0)
+        } else {
+            (rho, 1.0 / self.height)
+        }
     }
 }
 
@@ -283,6 +318,10 @@ pub struct GuideForce {
     /// The force on the link along the axle, at the guide, N (the wheel
     /// takes its reverse there).
     pub force: f64,
+    /// The force on the link along the rim's normal at the contact's
+    /// point, N (≥ 0: the horn's overlap changing with the depth; the
+    /// wheel takes its reverse there).
+    pub radial: f64,
     /// Elastic energy stored, J.
     pub potential: f64,
     /// Power dissipated, W.
@@ -309,26 +348,30 @@ impl ContactLaws {
 }
 
 impl GuideLaw {
-    /// The guide's force at `rim`: beyond the play, `k x + c ẋ` (never
-    /// pulling) along the axle, pushing the link back toward the wheel's
-    /// plane, with `x = |e| − play`.
+    /// The guide's force at `rim`: beyond the play, `ρ (k x + c ẋ)`
+    /// (never pulling) along the axle, pushing the link back toward the
+    /// wheel's plane, with `x = |e| − play` and `ρ` the horn's overlap
+    /// with the rim; and `½ k x² ρ'` along the rim's normal.
     pub fn respond(&self, rim: &RimContact) -> GuideForce {
         let side = rim.offset.signum();
         let excess = rim.offset.abs() - self.play;
-        if excess <= 0.0 {
+        let (rho, slope) = self.overlap(rim.contact.depth);
+        if excess <= 0.0 || rho == 0.0 {
             return GuideForce {
                 force: 0.0,
+                radial: 0.0,
                 potential: 0.0,
                 dissipation: 0.0,
             };
         }
         let rate = side * rim.offset_rate;
         let elastic = self.stiffness * excess;
-        let pushed = (elastic + self.damping * rate).max(0.0);
+        let pushed = rho * (elastic + self.damping * rate).max(0.0);
         GuideForce {
             force: -side * pushed,
-            potential: 0.5 * elastic * excess,
-            dissipation: (pushed - elastic) * rate,
+            radial: 0.5 * elastic * excess * slope,
+            potential: 0.5 * elastic * excess * rho,
+            dissipation: (pushed - rho * elastic) * rate,
         }
     }
 }
