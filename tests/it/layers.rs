@@ -82,18 +82,6 @@ pub const RUNTIME: Graph = &[
         "assembly",
         &["planar", "multibody", "contact", "terrain", "spatial"],
     ),
-    (
-        "spatial_vehicle",
-        &[
-            "laws",
-            "multibody",
-            "contact",
-            "terrain",
-            "spatial",
-            "closure",
-            "integrate",
-        ],
-    ),
     // the vehicle
     (
         "vehicle",
@@ -110,6 +98,19 @@ pub const RUNTIME: Graph = &[
             "integrate",
             "system",
             "assembly",
+        ],
+    ),
+    (
+        "spatial_vehicle",
+        &[
+            "laws",
+            "multibody",
+            "contact",
+            "terrain",
+            "spatial",
+            "closure",
+            "integrate",
+            "vehicle",
         ],
     ),
     // drivers

@@ -20,26 +20,22 @@
 //! and moved elsewhere, its mirror image accelerates as its mirror, and
 //! the force elements' books close at it.
 
-use trackgen::assembly::{AssembledSides, assemble_sides};
-use trackgen::contact::axial::GuideLaw;
 use trackgen::contact::{BodyState, Contact, ground, sprocket, wheel};
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::multibody::{
     BodyLoad, ChassisModel, ClosingJoint, PartKind, RecursiveModel, TrackModel,
 };
 use trackgen::nalgebra::{SVector, Vector2, Vector3};
-use trackgen::spatial::{
-    FloatingTree, PlanePose, PlaneRates, SpatialError, SpatialLoad, SpatialVehicle,
-};
-use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, SpatialSystem, TreeState};
+use trackgen::spatial::{FloatingTree, SpatialError, SpatialLoad, SpatialVehicle};
+use trackgen::spatial_vehicle::{SpatialDynamics, SpatialSystem, TreeState};
 use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, Vehicle};
 
-use crate::support::twin::{Twin, TwinChassis, TwinHull, TwinTrack};
-
-const DH: usize = <Twin as SpatialVehicle>::HULL_DOF;
-const DT: usize = Twin::TRACK_DOF;
+use crate::support::twin::{
+    DH, DT, HULL, States, TRACK, Twin, TwinChassis, TwinHull, TwinTrack, assembled, laws, spatial,
+    upright,
+};
 const DC: usize = Twin::CHASSIS_DOF;
 
 /// The planar states of `bodies` of a tree at `(q, q̇)`.
@@ -146,29 +142,6 @@ fn planar_accelerations(
     (qddt, qddc, counts)
 }
 
-/// A tree upright at yaw 0, its root at `origin`, with planar `(q, q̇)`
-/// and nothing across its plane.
-fn upright<const D: usize>(
-    origin: Vector3<f64>,
-    q: &SVector<f64, D>,
-    qd: &SVector<f64, D>,
-) -> TreeState<D> {
-    let mut planar = *q;
-    (planar[0], planar[1]) = (0.0, 0.0);
-    TreeState {
-        pose: PlanePose {
-            origin,
-            yaw: 0.0,
-            roll: 0.0,
-            planar,
-        },
-        rates: PlaneRates {
-            planar: *qd,
-            across: Vector3::zeros(),
-        },
-    }
-}
-
 #[test]
 fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     let layout = Twin::layout();
@@ -246,67 +219,12 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     assert!((right_across.z + left_across.z).abs() < 1e-9);
 }
 
-/// The `Twin` assembled on level ground.
-fn assembled() -> AssembledSides<DH, DT, DT> {
-    let geometry = Twin::geometry();
-    assemble_sides(
-        &TwinHull,
-        (&TwinTrack, &TwinTrack),
-        &Twin::layout().part_sides,
-        &geometry.shoe,
-        &geometry.sprocket,
-        &Terrain::Flat { height: 0.0 },
-        0.0,
-        1e-3,
-    )
-    .expect("both sides assemble")
-}
-
-/// The three trees' states.
-type States = (TreeState<DH>, TreeState<DT>, TreeState<DT>);
-
 /// The three trees' accelerations, in and across their planes.
 type Rates = (
     (SVector<f64, DH>, Vector3<f64>),
     (SVector<f64, DT>, Vector3<f64>),
     (SVector<f64, DT>, Vector3<f64>),
 );
-
-static HULL: TwinHull = TwinHull;
-static TRACK: TwinTrack = TwinTrack;
-
-/// The `Twin`'s declared laws, and a guide.
-fn laws() -> SpatialLaws {
-    let config = Twin::declared_config(
-        Terrain::Flat { height: 0.0 },
-        Drive::Torque(Box::new(|_| 0.0)),
-    );
-    SpatialLaws {
-        ground: config.ground,
-        wheels: config.wheels,
-        sprocket: config.sprocket,
-        guide: GuideLaw {
-            play: Twin::layout().guide_play,
-            stiffness: 1e7,
-            damping: 1e3,
-        },
-    }
-}
-
-/// The spatial `Twin` on level ground with its declared laws.
-fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT> {
-    let geometry = Twin::geometry();
-    SpatialDynamics::new(
-        &HULL,
-        (&TRACK, &TRACK),
-        &Twin::layout(),
-        geometry.shoe.clone(),
-        geometry.sprocket,
-        laws(),
-        HeightField::level(),
-    )
-    .expect("the spatial vehicle")
-}
 
 /// An uneven state: the assembled `Twin` pressed into the ground, its
 /// hull rolled, yawed against its tracks and sliding and turning across

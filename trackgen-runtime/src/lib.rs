@@ -38,14 +38,15 @@
 //!    lower layers' errors with the time they happened at);
 //! 7. subsystems: [`system`] (a track, a body tree or two side by side as
 //!    systems a simulation runs), [`assembly`] (wrapping a track round its
-//!    wheels, placing a vehicle at t = 0, or both sides of a spatial one),
-//!    [`spatial_vehicle`] (the spatial vehicle's hull and two tracks as
-//!    floating trees: its force elements and forward dynamics);
+//!    wheels, placing a vehicle at t = 0, or both sides of a spatial one);
 //! 8. [`vehicle`]: a declared vehicle as a type and the one recipe that
 //!    builds it; its evaluation in stages over a long-lived workspace
 //!    (kinematics → detection → force elements with their energy books →
 //!    dynamics), the state's one layout, and the one linearisation that
 //!    feeds both the exact Jacobian and ROS34PW2's `W`;
+//!    [`spatial_vehicle`] (the spatial vehicle's hull and two tracks as
+//!    floating trees: its force elements, each side's drive, its forward
+//!    dynamics and its system in time);
 //! 9. drivers: [`simulate`] (runs, results, sinks: CSV, Arrow IPC, running
 //!    summaries; a failed run keeps what it computed), [`analysis`]
 //!    (the state Jacobian, equilibrium, modes, sensitivities) and

@@ -24,18 +24,21 @@
 //!   about its normal's reverse).
 //!
 //! Friction on the ground is regularised here (stiction's deflections are
-//! states the spatial vehicle does not carry yet); there is no drive.
-//! [`SpatialSystem`] integrates it in time.
+//! states the spatial vehicle does not carry yet). Each side's sprocket
+//! has its own drive ([`SideDrives`]). [`SpatialSystem`] integrates the
+//! vehicle in time.
 
+mod drive;
 mod system;
 
+pub use drive::{DriveState, SideDrives};
 pub use system::{SpatialEnergy, SpatialSystem};
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
 use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
 use crate::contact::space::SpaceContact;
-use crate::contact::sprocket::ToothProfile;
+use crate::contact::sprocket::{ToothProfile, rolling_radius};
 use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
 use crate::laws::NormalLaw;
 use crate::multibody::{
@@ -146,6 +149,15 @@ fn share(law: NormalLaw, fraction: f64) -> NormalLaw {
     }
 }
 
+/// A side's driven sprocket: its body in the hull and its rolling radius,
+/// m (the track's mean speed per unit of its speed,
+/// [`rolling_radius`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct DrivenSprocket {
+    body: usize,
+    rolling_radius: f64,
+}
+
 /// The spatial vehicle: its three trees, its layout, the shoe and the
 /// sprocket's profile, the contacts' laws and the ground.
 pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
@@ -157,6 +169,8 @@ pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const 
     pub left: FloatingTree<'m, L, DL>,
     parts: &'static [ChassisPart],
     sides: Vec<Side>,
+    /// Each side's sprocket (right, left), where it has one.
+    sprockets: [Option<DrivenSprocket>; 2],
     shoe: ShoeGeometry,
     profile: ToothProfile,
     laws: SpatialLaws,
@@ -173,7 +187,8 @@ where
     /// The vehicle of these compiled trees laid out as `layout` says,
     /// with the shoe, the profile, the laws and the ground. A layout that
     /// does not fit the trees (an inertia or offset per body, a side per
-    /// part) is an error.
+    /// part) is an error, and so is a track whose links differ in length
+    /// (a sprocket's rolling radius needs one pitch).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         hull: &'m H,
@@ -190,6 +205,25 @@ where
                 given: layout.part_sides.len(),
             });
         }
+        let pitches = [
+            (Side::Right, right.description().pitch()),
+            (Side::Left, left.description().pitch()),
+        ];
+        let mut sprockets = [None; 2];
+        for (s, (side, pitch)) in pitches.into_iter().enumerate() {
+            let Some((part, _)) = H::PARTS
+                .iter()
+                .zip(&layout.part_sides)
+                .find(|(p, at)| p.kind == PartKind::Sprocket && **at == side)
+            else {
+                continue;
+            };
+            let pitch = pitch.map_err(|source| SpatialError::Pitch { side, source })?;
+            sprockets[s] = Some(DrivenSprocket {
+                body: part.body,
+                rolling_radius: rolling_radius(profile.teeth, pitch),
+            });
+        }
         Ok(SpatialDynamics {
             hull: FloatingTree::new(hull, layout.hull_across.clone())?
                 .with_offsets(layout.hull_offsets.clone())?,
@@ -197,6 +231,7 @@ where
             left: FloatingTree::new(left, layout.left_links.clone())?,
             parts: H::PARTS,
             sides: layout.part_sides.clone(),
+            sprockets,
             shoe,
             profile,
             laws,
@@ -303,7 +338,7 @@ where
         let (centre, velocity, spin) = (frame.at[b], frame.velocity[b], frame.spin[b]);
         let reach = match part.kind {
             PartKind::Sprocket => self.profile.addendum,
-            _ => part.radius,
+            _ => part.radius + self.laws.guide.height,
         } + self.shoe.extent();
         let (mut potential, mut dissipation) = (0.0, 0.0);
         for k in 0..links.at.len() {
@@ -347,18 +382,24 @@ where
                     velocity,
                     angular_velocity: spin,
                 };
-                let Some(rim) = RimContact::detect(&wheel, &face) else {
+                let Some(rim) = RimContact::near(&wheel, &face, self.laws.guide.height) else {
                     continue;
                 };
-                let force = self.laws.wheels.respond_axial(&rim.contact);
                 let guide = self.laws.guide.respond(&rim);
                 let along = rim.contact.axle * guide.force;
-                links.push(link_loads, k, force.force, rim.contact.point);
-                frame.push(hull_loads, b, -force.force, rim.contact.point);
                 links.push(link_loads, k, along, rim.guide);
                 frame.push(hull_loads, b, -along, rim.guide);
-                potential += force.potential + guide.potential;
-                dissipation += force.dissipation + guide.dissipation;
+                let mut radial = rim.contact.normal * guide.radial;
+                potential += guide.potential;
+                dissipation += guide.dissipation;
+                if rim.contact.depth > 0.0 {
+                    let force = self.laws.wheels.respond_axial(&rim.contact);
+                    radial += force.force;
+                    potential += force.potential;
+                    dissipation += force.dissipation;
+                }
+                links.push(link_loads, k, radial, rim.contact.point);
+                frame.push(hull_loads, b, -radial, rim.contact.point);
             }
         }
         (potential, dissipation)

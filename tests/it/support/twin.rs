@@ -29,3 +29,98 @@ trackgen::model! {
         },
     }
 }
+
+use trackgen::assembly::{AssembledSides, assemble_sides};
+use trackgen::contact::axial::GuideLaw;
+use trackgen::nalgebra::{SVector, Vector3};
+use trackgen::spatial::{PlanePose, PlaneRates, SpatialVehicle};
+use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, TreeState};
+use trackgen::terrain::Terrain;
+use trackgen::terrain::field::HeightField;
+use trackgen::vehicle::{Drive, Vehicle};
+
+/// The hull's planar coordinates.
+pub const DH: usize = <Twin as SpatialVehicle>::HULL_DOF;
+/// A track's.
+pub const DT: usize = Twin::TRACK_DOF;
+
+/// The three trees' states.
+pub type States = (TreeState<DH>, TreeState<DT>, TreeState<DT>);
+
+/// The hull's model, for the trees' borrows.
+pub static HULL: TwinHull = TwinHull;
+/// A track's.
+pub static TRACK: TwinTrack = TwinTrack;
+
+/// A tree upright at yaw 0, its root at `origin`, with planar `(q, q̇)`
+/// and nothing across its plane.
+pub fn upright<const D: usize>(
+    origin: Vector3<f64>,
+    q: &SVector<f64, D>,
+    qd: &SVector<f64, D>,
+) -> TreeState<D> {
+    let mut planar = *q;
+    (planar[0], planar[1]) = (0.0, 0.0);
+    TreeState {
+        pose: PlanePose {
+            origin,
+            yaw: 0.0,
+            roll: 0.0,
+            planar,
+        },
+        rates: PlaneRates {
+            planar: *qd,
+            across: Vector3::zeros(),
+        },
+    }
+}
+
+/// The `Twin` assembled on level ground.
+pub fn assembled() -> AssembledSides<DH, DT, DT> {
+    let geometry = Twin::geometry();
+    assemble_sides(
+        &TwinHull,
+        (&TwinTrack, &TwinTrack),
+        &Twin::layout().part_sides,
+        &geometry.shoe,
+        &geometry.sprocket,
+        &Terrain::Flat { height: 0.0 },
+        0.0,
+        1e-3,
+    )
+    .expect("both sides assemble")
+}
+
+/// The `Twin`'s declared laws, and a guide.
+pub fn laws() -> SpatialLaws {
+    let config = Twin::declared_config(
+        Terrain::Flat { height: 0.0 },
+        Drive::Torque(Box::new(|_| 0.0)),
+    );
+    SpatialLaws {
+        ground: config.ground,
+        wheels: config.wheels,
+        sprocket: config.sprocket,
+        guide: GuideLaw {
+            play: Twin::layout().guide_play,
+            stiffness: 1e7,
+            damping: 1e3,
+            height: 0.06,
+        },
+    }
+}
+
+/// The spatial `Twin` on level ground with its declared laws.
+pub fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT> {
+    let geometry = Twin::geometry();
+    SpatialDynamics::new(
+        &HULL,
+        (&TRACK, &TRACK),
+        &Twin::layout(),
+        geometry.shoe.clone(),
+        geometry.sprocket,
+        laws(),
+        HeightField::level(),
+    )
+    .expect("the spatial vehicle")
+}

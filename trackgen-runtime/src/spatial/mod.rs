@@ -158,6 +158,15 @@ pub enum SpatialError {
         /// The sides given.
         given: usize,
     },
+    /// A side's track has links of different lengths: its sprocket has no
+    /// one rolling radius.
+    #[error("the {side:?} track has no single pitch: {source}")]
+    Pitch {
+        /// The side.
+        side: Side,
+        /// Why.
+        source: crate::multibody::PitchError,
+    },
     /// The planar model's gravity must point down its `y` axis, which
     /// becomes the world's vertical.
     #[error("the planar gravity must be (0, −g), got ({x}, {y}) m/s²")]

@@ -1,28 +1,33 @@
 //! The spatial vehicle as a system in time: its three trees' coordinates
 //! and quasi-velocities in one state, with the energy its force elements
-//! dissipate integrated beside them (the books).
+//! dissipate and the work the drives do integrated beside them (the
+//! books).
 //!
 //! A tree of `D` planar coordinates holds `2 D + 6` values: its root's
 //! centroid in the world (3), its plane's yaw and roll, its bodies'
 //! angles (`D − 2`), then its quasi-velocities in the plane (`D`) and
 //! across it (3). The state is the hull's, the right track's, the left
-//! track's, and the energy dissipated so far (J). Each track's loop is
+//! track's, the two drives' controller integrals (rad, right then left),
+//! the energy dissipated so far and the drives' work so far (J). Each
+//! track's loop is
 //! held by Baumgarte's stabilisation of its planar closure
 //! ([`MultiplierOptions`]'s rate), which the plane's motion leaves
 //! unchanged.
 
 use nalgebra::{DVector, SVector, Vector3};
 
-use super::{SpatialDynamics, TreeState};
+use super::{DriveState, SideDrives, SpatialDynamics, TreeState};
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
 use crate::spatial::{FloatingTree, PlanePose, PlaneRates};
+use crate::vehicle::DriveError;
 
 /// The spatial vehicle in time.
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
     /// Its dynamics at a state.
     pub dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>,
+    drives: SideDrives,
     closure: MultiplierOptions,
 }
 
@@ -37,13 +42,15 @@ pub struct SpatialEnergy {
     pub stored: f64,
     /// What they have dissipated since the start.
     pub dissipated: f64,
+    /// The work the drives have done since the start.
+    pub driven: f64,
 }
 
 impl SpatialEnergy {
-    /// The sum: constant but for the work of what is not a force element
-    /// (nothing, so far).
+    /// The books' balance: what is in the bodies, stored and dissipated,
+    /// less the drives' work; constant.
     pub fn total(&self) -> f64 {
-        self.kinetic + self.gravity + self.stored + self.dissipated
+        self.kinetic + self.gravity + self.stored + self.dissipated - self.driven
     }
 }
 
@@ -111,13 +118,42 @@ where
     R: TrackModel<DR>,
     L: TrackModel<DL>,
 {
-    /// The system of `dynamics`, its tracks' loops held at
-    /// [`MultiplierOptions`]'s default rate.
+    /// The system of `dynamics`, its sprockets free, its tracks' loops
+    /// held at [`MultiplierOptions`]'s default rate.
     pub fn new(dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>) -> Self {
         SpatialSystem {
             dynamics,
+            drives: SideDrives::free(),
             closure: MultiplierOptions::default(),
         }
+    }
+
+    /// The system with its sprockets driven by `drives`; settings that
+    /// make no controller are refused ([`SideDrives::check`]).
+    pub fn with_drives(mut self, drives: SideDrives) -> Result<Self, DriveError> {
+        drives.check()?;
+        self.drives = drives;
+        Ok(self)
+    }
+
+    /// Where the books sit in the state: the drives' integrals, then
+    /// the energy dissipated and the drives' work.
+    fn books_at(&self) -> usize {
+        (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6)
+    }
+
+    /// The drives' controller integrals in `y`, rad (right, left).
+    pub fn integrals(&self, y: &[f64]) -> [f64; 2] {
+        let b = self.books_at();
+        [y[b], y[b + 1]]
+    }
+
+    /// What the drives do at time `t` and state `y`.
+    pub fn drive_state(&self, t: f64, y: &[f64]) -> Result<DriveState, SimulationError> {
+        let (hull, right, left, _) = self.states(y);
+        let mut loads = self.dynamics.loads(&hull, &right, &left);
+        self.dynamics
+            .drive(t, &hull, (&self.drives, self.integrals(y)), &mut loads)
     }
 
     /// The state of the three trees, nothing dissipated yet.
@@ -142,7 +178,7 @@ where
             tree_state(&y[..h]),
             tree_state(&y[h..h + r]),
             tree_state(&y[h + r..h + r + l]),
-            y[h + r + l],
+            y[self.books_at() + 2],
         )
     }
 
@@ -163,6 +199,7 @@ where
                 + height(d.left.positions(&left.pose), d.left.masses()),
             stored: d.loads(&hull, &right, &left).potential,
             dissipated,
+            driven: y[self.books_at() + 3],
         }
     }
 }
@@ -175,7 +212,7 @@ where
     L: TrackModel<DL>,
 {
     fn dimension(&self) -> usize {
-        (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6) + 1
+        self.books_at() + 4
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -188,7 +225,8 @@ where
         }
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
-        let loads = d.loads(&hull, &right, &left);
+        let mut loads = d.loads(&hull, &right, &left);
+        let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)), &mut loads)?;
         let closing = [
             closing(d.right.model(), &right, &self.closure),
             closing(d.left.model(), &left, &self.closure),
@@ -200,11 +238,14 @@ where
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
         put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
         put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
-        dy[h + r + l] = loads.dissipation;
+        let b = self.books_at();
+        dy[b..b + 2].copy_from_slice(&drive.integral_rate);
+        dy[b + 2] = loads.dissipation;
+        dy[b + 3] = drive.power();
         Ok(())
     }
 
     fn is_quadrature(&self, i: usize) -> bool {
-        i + 1 == self.dimension()
+        i >= self.books_at() + 2
     }
 }

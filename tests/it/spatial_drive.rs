@@ -1,0 +1,284 @@
+//! The spatial vehicle driven by its two sprockets (`SideDrives`): the
+//! books with the drives' work, the mirror of a turn, a turn moved
+//! rigidly, and a straight run that stays straight.
+//!
+//! Each run starts the `Twin` from its assembled rest on level ground and
+//! integrates it with Dormand–Prince at rtol 1e-7 (`max_step` 1 ms), or,
+//! where two runs are compared to 1e-9, with RK4 at a fixed 0.1 ms: an
+//! adaptive method's accepted steps may differ between the two by a
+//! rejection near its threshold, and the runs then by its tolerance.
+
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::nalgebra::{DVector, SVector, Vector3};
+use trackgen::spatial::SpatialVehicle;
+use trackgen::spatial_vehicle::{SideDrives, SpatialSystem, TreeState};
+use trackgen::vehicle::{Drive, DriveError};
+
+use crate::support::twin::{
+    DH, DT, States, Twin, TwinHull, TwinTrack, assembled, spatial, upright,
+};
+use trackgen::multibody::RecursiveModel;
+
+type System = SpatialSystem<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT>;
+
+/// A speed drive tracking `speed` (m/s of belt, forward) reached by a
+/// ramp over `ramp` s, with gains stiff enough to hold it.
+fn belt(speed: f64, ramp: f64) -> Drive {
+    Drive::Speed {
+        target: Box::new(move |t| speed * (t / ramp).min(1.0)),
+        proportional: 400.0,
+        integral: 4000.0,
+        max_torque: 3000.0,
+    }
+}
+
+/// The `Twin` at rest on level ground, its hull's root at `(x, y)` and
+/// turned `heading` rad about the vertical.
+fn at_rest(heading: f64, (x, y): (f64, f64)) -> States {
+    let start = assembled();
+    let half = Twin::layout().gauge / 2.0;
+    let (qh, qt) = (start.hull, start.right);
+    let (s, c) = heading.sin_cos();
+    let placed =
+        |px: f64, py: f64, z: f64| Vector3::new(c * px - s * py + x, s * px + c * py + y, z);
+    let mut hull = upright(placed(qh[0], 0.0, qh[1]), &qh, &SVector::zeros());
+    hull.pose.yaw = heading;
+    let track = |lateral: f64| {
+        let mut state = upright(placed(qt[0], lateral, qt[1]), &qt, &SVector::zeros());
+        state.pose.yaw = heading;
+        state
+    };
+    (hull, track(-half), track(half))
+}
+
+/// Dormand–Prince at rtol 1e-7.
+const ADAPTIVE: Integrator = Integrator::Dopri5 {
+    rtol: 1e-7,
+    atol: 1e-9,
+    max_step: 1e-3,
+};
+
+/// RK4 at a fixed 0.1 ms.
+const FIXED: Integrator = Integrator::Rk4 { step: 1e-4 };
+
+/// `system` run from `start` for `end` s by `method`: its final state.
+fn run(system: &mut System, start: &States, end: f64, method: Integrator) -> DVector<f64> {
+    let mut y = system.state(&start.0, &start.1, &start.2);
+    let mut stepper = method.stepper(system.dimension());
+    let mut t = 0.0;
+    while t < end {
+        stepper.step(system, &mut t, &mut y, end).expect("the run");
+    }
+    y
+}
+
+/// The `Twin` with its sprockets driven.
+fn driven(drives: SideDrives) -> System {
+    SpatialSystem::new(spatial())
+        .with_drives(drives)
+        .expect("drives that make controllers")
+}
+
+/// `a` and `b` equal to `tol` of the larger's size (or of 1).
+fn same(a: &[f64], b: &[f64], tol: f64, what: &str) {
+    let scale = a.iter().chain(b).fold(1.0_f64, |m, v| m.max(v.abs()));
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!((x - y).abs() <= tol * scale, "{what}[{i}]: {x} against {y}");
+    }
+}
+
+/// Driven into a turn (the right belt asked 1.2 m/s, the left 0.4 m/s,
+/// over 0.2 s), the vehicle's books hold the drives' work: the bodies'
+/// energy, what the force elements store and what they have dissipated
+/// rise by what the drives put in, to 1e-6 of it (at rtol 1e-7 the
+/// integrator's error is about 1e-8 of the energies it moves; a misbooked
+/// drive — its power read at the sprocket's absolute speed rather than
+/// relative to the frame, or its reaction left off the frame — is of the
+/// order of the work itself). It turns left (its yaw grows) and the
+/// right sprocket, faster, takes more torque.
+#[test]
+fn a_turn_keeps_its_books() {
+    let mut system = driven(SideDrives {
+        right: belt(1.2, 0.2),
+        left: belt(0.4, 0.2),
+    });
+    let start = at_rest(0.0, (0.0, 0.0));
+    let y0 = system.state(&start.0, &start.1, &start.2);
+    let before = system.energy(y0.as_slice());
+    let y = run(&mut system, &start, 0.4, ADAPTIVE);
+    let after = system.energy(y.as_slice());
+    assert!(after.driven > 100.0, "{after:?}");
+    assert!(
+        (after.total() - before.total()).abs() < 1e-6 * after.driven,
+        "{} J against {} J, {} J driven, {} J dissipated",
+        after.total(),
+        before.total(),
+        after.driven,
+        after.dissipated
+    );
+    let (hull, ..) = system.states(y.as_slice());
+    assert!(hull.pose.yaw > 1e-4, "yaw {}", hull.pose.yaw);
+    let drive = system.drive_state(0.4, y.as_slice()).expect("the drives");
+    assert!(
+        drive.torque[0] < drive.torque[1] && drive.torque[0] < 0.0,
+        "{drive:?}"
+    );
+}
+
+/// The vehicle's mirror across its centre plane: a state with the world's
+/// `y` reversed, each tree's yaw and roll and its rates across its plane
+/// reversed, the hull's right and left bodies and the two tracks
+/// exchanged.
+fn mirrored(system: &System, y: &[f64]) -> States {
+    let (hull, right, left, _) = system.states(y);
+    let side = (TwinHull::BODIES - 1) / 2;
+    let swap = |v: &SVector<f64, DH>| {
+        SVector::<f64, DH>::from_fn(|i, _| match i {
+            _ if i < 3 => v[i],
+            _ if i < 3 + side => v[i + side],
+            _ => v[i - side],
+        })
+    };
+    let flip = |mut state: TreeState<DT>| {
+        state.pose.origin.y = -state.pose.origin.y;
+        (state.pose.yaw, state.pose.roll) = (-state.pose.yaw, -state.pose.roll);
+        state.rates.across = -state.rates.across;
+        state
+    };
+    let mut h = hull;
+    h.pose.origin.y = -h.pose.origin.y;
+    (h.pose.yaw, h.pose.roll) = (-h.pose.yaw, -h.pose.roll);
+    h.pose.planar = swap(&h.pose.planar);
+    h.rates.planar = swap(&h.rates.planar);
+    h.rates.across = -h.rates.across;
+    (h, flip(left), flip(right))
+}
+
+/// The three trees at `y`.
+fn trees(system: &System, y: &[f64]) -> States {
+    let (hull, right, left, _) = system.states(y);
+    (hull, right, left)
+}
+
+/// Every value of a state's three trees, in one vector.
+fn values(system: &System, states: &States) -> DVector<f64> {
+    let y = system.state(&states.0, &states.1, &states.2);
+    y.rows(0, system.dimension() - 4).into_owned()
+}
+
+/// A left turn (the right belt faster) and the right turn with the belts'
+/// speeds exchanged end mirror images of each other after 0.3 s, to
+/// 1e-9 of the state's size: the model, its contacts and its drives hold
+/// no preferred side.
+#[test]
+fn a_left_turn_mirrors_the_right_turn() {
+    let start = at_rest(0.0, (0.0, 0.0));
+    let mut left_turn = driven(SideDrives {
+        right: belt(1.2, 0.2),
+        left: belt(0.4, 0.2),
+    });
+    let mut right_turn = driven(SideDrives {
+        right: belt(0.4, 0.2),
+        left: belt(1.2, 0.2),
+    });
+    let a = run(&mut left_turn, &start, 0.3, FIXED);
+    let b = run(&mut right_turn, &start, 0.3, FIXED);
+    let (hull, ..) = left_turn.states(a.as_slice());
+    assert!(hull.pose.yaw > 1e-4, "a turn: yaw {}", hull.pose.yaw);
+    let mirror = mirrored(&left_turn, a.as_slice());
+    same(
+        values(&right_turn, &trees(&right_turn, b.as_slice())).as_slice(),
+        values(&left_turn, &mirror).as_slice(),
+        1e-9,
+        "the right turn against the left turn's mirror",
+    );
+}
+
+/// The same turn started 1.1 rad round and 40 m, −7 m away ends where
+/// the first one ends turned and moved alike, to 1e-9: the level ground
+/// and the model have no preferred place or heading.
+#[test]
+fn a_turn_moved_rigidly_is_the_same_turn() {
+    let (heading, shift) = (1.1, (40.0, -7.0));
+    let drives = || SideDrives {
+        right: belt(1.2, 0.2),
+        left: belt(0.4, 0.2),
+    };
+    let (mut here, mut there) = (driven(drives()), driven(drives()));
+    let a = run(&mut here, &at_rest(0.0, (0.0, 0.0)), 0.3, FIXED);
+    let b = run(&mut there, &at_rest(heading, shift), 0.3, FIXED);
+    let (s, c) = heading.sin_cos();
+    let mut moved = trees(&here, a.as_slice());
+    for origin in [
+        &mut moved.0.pose.origin,
+        &mut moved.1.pose.origin,
+        &mut moved.2.pose.origin,
+    ] {
+        *origin = Vector3::new(
+            c * origin.x - s * origin.y + shift.0,
+            s * origin.x + c * origin.y + shift.1,
+            origin.z,
+        );
+    }
+    moved.0.pose.yaw += heading;
+    moved.1.pose.yaw += heading;
+    moved.2.pose.yaw += heading;
+    same(
+        values(&there, &trees(&there, b.as_slice())).as_slice(),
+        values(&here, &moved).as_slice(),
+        1e-9,
+        "the turn moved against the turn",
+    );
+}
+
+/// Both belts asked the same speed, the mirrored vehicle runs straight:
+/// after 0.4 s its hull has not yawed, rolled or moved sideways (below
+/// 1e-9), and it has moved forward.
+#[test]
+fn equal_belts_run_straight() {
+    let mut system = driven(SideDrives {
+        right: belt(0.8, 0.2),
+        left: belt(0.8, 0.2),
+    });
+    let start = at_rest(0.0, (0.0, 0.0));
+    let y = run(&mut system, &start, 0.4, ADAPTIVE);
+    let (hull, ..) = system.states(y.as_slice());
+    assert!(
+        hull.pose.origin.x - start.0.pose.origin.x > 0.05,
+        "{hull:?}"
+    );
+    assert!(
+        hull.pose.origin.y.abs() < 1e-9
+            && hull.pose.yaw.abs() < 1e-9
+            && hull.pose.roll.abs() < 1e-9,
+        "{hull:?}"
+    );
+}
+
+/// A drive whose settings make no controller is refused when the system
+/// is made: a gain that is not finite, a negative torque limit.
+#[test]
+fn a_drive_that_is_no_controller_is_refused() {
+    let bad = Drive::Speed {
+        target: Box::new(|_| 1.0),
+        proportional: f64::NAN,
+        integral: 1.0,
+        max_torque: 1.0,
+    };
+    let refused = SpatialSystem::new(spatial()).with_drives(SideDrives {
+        right: Drive::Free,
+        left: bad,
+    });
+    assert!(matches!(refused, Err(DriveError::Gains { .. })));
+    let negative = Drive::Speed {
+        target: Box::new(|_| 1.0),
+        proportional: 1.0,
+        integral: 1.0,
+        max_torque: -1.0,
+    };
+    let refused = SpatialSystem::new(spatial()).with_drives(SideDrives {
+        right: negative,
+        left: Drive::Free,
+    });
+    assert!(matches!(refused, Err(DriveError::TorqueLimit { .. })));
+}
