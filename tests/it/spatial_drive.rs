@@ -12,10 +12,15 @@ use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, SVector, Vector3};
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{SideDrives, SpatialSystem, TreeState};
-use trackgen::vehicle::{Drive, DriveError};
+use trackgen::vehicle::{Drive, DriveError, Vehicle};
+
+use trackgen::contact::GroundFriction;
+use trackgen::laws::Stiction;
+use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws};
+use trackgen::terrain::field::HeightField;
 
 use crate::support::twin::{
-    DH, DT, States, Twin, TwinHull, TwinTrack, assembled, spatial, upright,
+    DH, DT, HULL, States, TRACK, Twin, TwinHull, TwinTrack, assembled, laws, spatial, upright,
 };
 use trackgen::multibody::RecursiveModel;
 
@@ -281,4 +286,71 @@ fn a_drive_that_is_no_controller_is_refused() {
         left: Drive::Free,
     });
     assert!(matches!(refused, Err(DriveError::TorqueLimit { .. })));
+}
+
+/// The `Twin`'s laws with stiction on the ground (`k_t` 1e5 N/m and
+/// `c_t` 2e3 N s/m per point: about 2 mm of deflection at the Coulomb
+/// limit under the quarter-tonne each point carries).
+fn sticking() -> SpatialLaws {
+    let mut laws = laws();
+    laws.ground.friction = GroundFriction::Stiction(Stiction {
+        mu: 0.7,
+        stiffness: 1e5,
+        damping: 2e3,
+    });
+    laws
+}
+
+/// The `Twin` on `field` under `laws`, its sprockets driven by `drives`.
+fn on(field: HeightField, laws: SpatialLaws, drives: SideDrives) -> System {
+    let geometry = Twin::geometry();
+    let dynamics = SpatialDynamics::new(
+        &HULL,
+        (&TRACK, &TRACK),
+        &Twin::layout(),
+        geometry.shoe.clone(),
+        geometry.sprocket,
+        laws,
+        field,
+    )
+    .expect("the spatial vehicle");
+    SpatialSystem::new(dynamics)
+        .with_drives(drives)
+        .expect("drives that make controllers")
+}
+
+/// With stiction on the ground (two deflections per ground point, in the
+/// ground's plane), a driven turn keeps its books to 1e-6 of the drives'
+/// work as under regularised friction: the deflections' springs store
+/// what they are given, their dampers and sliders dissipate the rest.
+#[test]
+fn a_turn_on_stiction_keeps_its_books() {
+    let mut system = on(
+        HeightField::level(),
+        sticking(),
+        SideDrives {
+            right: belt(1.2, 0.2),
+            left: belt(0.4, 0.2),
+        },
+    );
+    assert_eq!(
+        system.dynamics.ground_states(),
+        [2 * 2 * 2 * 55, 2 * 2 * 2 * 55]
+    );
+    let start = at_rest(0.0, (0.0, 0.0));
+    let y0 = system.state(&start.0, &start.1, &start.2);
+    let before = system.energy(y0.as_slice());
+    let y = run(&mut system, &start, 0.3, ADAPTIVE);
+    let after = system.energy(y.as_slice());
+    assert!(after.driven > 100.0, "{after:?}");
+    assert!(
+        (after.total() - before.total()).abs() < 1e-6 * after.driven,
+        "{} J against {} J, {} J driven, {} J dissipated",
+        after.total(),
+        before.total(),
+        after.driven,
+        after.dissipated
+    );
+    let (hull, ..) = system.states(y.as_slice());
+    assert!(hull.pose.yaw > 1e-4, "yaw {}", hull.pose.yaw);
 }

@@ -23,8 +23,11 @@
 //!   `τ` is a moment `−τ η` in space, the plane's counter-clockwise being
 //!   about its normal's reverse).
 //!
-//! Friction on the ground is regularised here (stiction's deflections are
-//! states the spatial vehicle does not carry yet). Each side's sprocket
+//! Friction on the ground is regularised, or stiction with a deflection
+//! per ground point in the ground's plane (two components, in the
+//! surface's forward and left tangents: friction is isotropic there, and
+//! a shoe sliding sideways in a turn is what resists the turn); a point
+//! off the ground lets its deflection relax. Each side's sprocket
 //! has its own drive ([`SideDrives`]). [`SpatialSystem`] integrates the
 //! vehicle in time.
 
@@ -39,7 +42,7 @@ use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
 use crate::contact::space::SpaceContact;
 use crate::contact::sprocket::{ToothProfile, rolling_radius};
-use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
+use crate::contact::{ContactLaws, GroundFriction, GroundLaws, ShoeGeometry};
 use crate::laws::NormalLaw;
 use crate::multibody::{
     ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
@@ -239,12 +242,46 @@ where
         })
     }
 
-    /// Every force element's loads at a state.
+    /// How many values each track's ground points' stiction deflections
+    /// take (right, left): two per point (each planar ground point of each
+    /// link as two across the width), none under regularised friction.
+    pub fn ground_states(&self) -> [usize; 2] {
+        if !self.laws.ground.friction.has_state() {
+            return [0; 2];
+        }
+        let per_link = 2 * 2 * self.shoe.ground_points.len();
+        [
+            per_link * self.right.masses().len(),
+            per_link * self.left.masses().len(),
+        ]
+    }
+
+    /// Every force element's loads at a state, the ground's stiction
+    /// deflections (if any) relaxed.
     pub fn loads(
         &self,
         hull: &TreeState<DH>,
         right: &TreeState<DR>,
         left: &TreeState<DL>,
+    ) -> SpatialLoads {
+        let [r, l] = self.ground_states();
+        let (mut right_rates, mut left_rates) = (vec![0.0; r], vec![0.0; l]);
+        self.loads_with(
+            (hull, right, left),
+            [&vec![0.0; r], &vec![0.0; l]],
+            [&mut right_rates, &mut left_rates],
+        )
+    }
+
+    /// Every force element's loads at a state with each track's ground
+    /// points' stiction `deflections` (m, [`ground_states`](Self::ground_states)
+    /// values each: point by point, link by link, forward then left),
+    /// their rates into `rates`.
+    pub fn loads_with(
+        &self,
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+        deflections: [&[f64]; 2],
+        rates: [&mut [f64]; 2],
     ) -> SpatialLoads {
         let frame = Bodies::of(&self.hull, hull);
         let tracks = [Bodies::of(&self.right, right), Bodies::of(&self.left, left)];
@@ -256,18 +293,20 @@ where
             dissipation: 0.0,
         };
         let plane = plane_rotation(hull.pose.yaw, hull.pose.roll);
+        let mut rates = rates.into_iter();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
             let links = &tracks[s];
             let mut link_loads = std::mem::take(match side {
                 Side::Right => &mut out.right,
                 Side::Left => &mut out.left,
             });
-            self.ground(
+            let books = self.ground(
                 links,
                 &mut link_loads,
-                &mut out.potential,
-                &mut out.dissipation,
+                (deflections[s], rates.next().unwrap_or_default()),
             );
+            out.potential += books.0;
+            out.dissipation += books.1;
             for (part, _) in self
                 .parts
                 .iter()
@@ -295,34 +334,62 @@ where
     }
 
     /// The shoes on the ground: each planar ground point as two across
-    /// the width, each with half its law.
+    /// the width, each with half its law; with stiction, each point's
+    /// deflection from `deflections` and its rate into `rates` (a point
+    /// off the ground relaxing). What they store and dissipate.
     fn ground(
         &self,
         links: &Bodies,
         loads: &mut [SpatialLoad],
-        potential: &mut f64,
-        dissipation: &mut f64,
-    ) {
+        (deflections, rates): (&[f64], &mut [f64]),
+    ) -> (f64, f64) {
         let half = GroundLaws {
             normal: share(self.laws.ground.normal, 0.5),
             ..self.laws.ground
         };
+        let stiction = match self.laws.ground.friction {
+            GroundFriction::Stiction(law) => Some(law),
+            GroundFriction::Regularised(_) => None,
+        };
         let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let (mut potential, mut dissipation) = (0.0, 0.0);
+        let mut i = 0;
         for k in 0..links.at.len() {
             for p in &self.shoe.ground_points {
                 for lateral in [-across, across] {
-                    let x = links.at[k] + links.turned[k] * Vector3::new(p.x, lateral, p.y);
-                    let Some(contact) = SpaceContact::at(&self.field, x, links.velocity_at(k, x))
-                    else {
-                        continue;
+                    let z = match stiction {
+                        Some(_) => Vector2::new(deflections[i], deflections[i + 1]),
+                        None => Vector2::zeros(),
                     };
-                    let force = half.respond_in_space(&contact, Vector2::zeros());
-                    links.push(loads, k, force.force, x);
-                    *potential += force.potential;
-                    *dissipation += force.dissipation;
+                    let x = links.at[k] + links.turned[k] * Vector3::new(p.x, lateral, p.y);
+                    match SpaceContact::at(&self.field, x, links.velocity_at(k, x)) {
+                        Some(contact) => {
+                            let force = half.respond_in_space(&contact, z);
+                            links.push(loads, k, force.force, x);
+                            potential += force.potential;
+                            dissipation += force.dissipation;
+                            if stiction.is_some() {
+                                rates[i..i + 2].copy_from_slice(force.rate.as_slice());
+                            }
+                        }
+                        None => {
+                            if let Some(law) = stiction {
+                                for c in 0..2 {
+                                    let relaxing = law.relax(z[c]);
+                                    rates[i + c] = relaxing.rate;
+                                    potential += relaxing.potential;
+                                    dissipation += relaxing.dissipation;
+                                }
+                            }
+                        }
+                    }
+                    if stiction.is_some() {
+                        i += 2;
+                    }
                 }
             }
         }
+        (potential, dissipation)
     }
 
     /// One part of the hull on its side's track: a rim with the guide, or

@@ -7,7 +7,9 @@
 //! centroid in the world (3), its plane's yaw and roll, its bodies'
 //! angles (`D − 2`), then its quasi-velocities in the plane (`D`) and
 //! across it (3). The state is the hull's, the right track's, the left
-//! track's, the two drives' controller integrals (rad, right then left),
+//! track's, each track's ground points' stiction deflections (m, none
+//! under regularised friction: [`SpatialDynamics::ground_states`]), the
+//! two drives' controller integrals (rad, right then left),
 //! the energy dissipated so far and the drives' work so far (J). Each
 //! track's loop is
 //! held by Baumgarte's stabilisation of its planar closure
@@ -136,10 +138,35 @@ where
         Ok(self)
     }
 
+    /// Where the trees end in the state and the ground's deflections
+    /// begin.
+    const TREES: usize = (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6);
+
     /// Where the books sit in the state: the drives' integrals, then
     /// the energy dissipated and the drives' work.
     fn books_at(&self) -> usize {
-        (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6)
+        let [r, l] = self.dynamics.ground_states();
+        Self::TREES + r + l
+    }
+
+    /// Each track's ground deflections in `y` (right, left).
+    fn deflections<'y>(&self, y: &'y [f64]) -> [&'y [f64]; 2] {
+        let r = self.dynamics.ground_states()[0];
+        let (right, rest) = y[Self::TREES..self.books_at()].split_at(r);
+        [right, rest]
+    }
+
+    /// Every force element's loads at `y`, the ground's deflections' rates
+    /// into `rates` (as many values as the deflections).
+    fn loads_at(&self, y: &[f64], rates: &mut [f64]) -> super::SpatialLoads {
+        let (hull, right, left, _) = self.states(y);
+        let r = self.dynamics.ground_states()[0];
+        let (right_rates, left_rates) = rates.split_at_mut(r);
+        self.dynamics.loads_with(
+            (&hull, &right, &left),
+            self.deflections(y),
+            [right_rates, left_rates],
+        )
     }
 
     /// The drives' controller integrals in `y`, rad (right, left).
@@ -150,8 +177,9 @@ where
 
     /// What the drives do at time `t` and state `y`.
     pub fn drive_state(&self, t: f64, y: &[f64]) -> Result<DriveState, SimulationError> {
-        let (hull, right, left, _) = self.states(y);
-        let mut loads = self.dynamics.loads(&hull, &right, &left);
+        let (hull, ..) = self.states(y);
+        let mut rates = vec![0.0; self.books_at() - Self::TREES];
+        let mut loads = self.loads_at(y, &mut rates);
         self.dynamics
             .drive(t, &hull, (&self.drives, self.integrals(y)), &mut loads)
     }
@@ -197,7 +225,9 @@ where
             gravity: height(d.hull.positions(&hull.pose), d.hull.masses())
                 + height(d.right.positions(&right.pose), d.right.masses())
                 + height(d.left.positions(&left.pose), d.left.masses()),
-            stored: d.loads(&hull, &right, &left).potential,
+            stored: self
+                .loads_at(y, &mut vec![0.0; self.books_at() - Self::TREES])
+                .potential,
             dissipated,
             driven: y[self.books_at() + 3],
         }
@@ -225,7 +255,8 @@ where
         }
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
-        let mut loads = d.loads(&hull, &right, &left);
+        let b = self.books_at();
+        let mut loads = self.loads_at(y, &mut dy[Self::TREES..b]);
         let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)), &mut loads)?;
         let closing = [
             closing(d.right.model(), &right, &self.closure),
@@ -238,7 +269,6 @@ where
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
         put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
         put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
-        let b = self.books_at();
         dy[b..b + 2].copy_from_slice(&drive.integral_rate);
         dy[b + 2] = loads.dissipation;
         dy[b + 3] = drive.power();
