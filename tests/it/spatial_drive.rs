@@ -92,25 +92,17 @@ fn same(a: &[f64], b: &[f64], tol: f64, what: &str) {
     }
 }
 
-/// Driven into a turn (the right belt asked 1.2 m/s, the left 0.4 m/s,
-/// over 0.2 s), the vehicle's books hold the drives' work: the bodies'
-/// energy, what the force elements store and what they have dissipated
-/// rise by what the drives put in, to 1e-6 of it (at rtol 1e-7 the
-/// integrator's error is about 1e-8 of the energies it moves; a misbooked
-/// drive — its power read at the sprocket's absolute speed rather than
-/// relative to the frame, or its reaction left off the frame — is of the
-/// order of the work itself). It turns left (its yaw grows) and the
-/// right sprocket, faster, takes more torque.
-#[test]
-fn a_turn_keeps_its_books() {
-    let mut system = driven(SideDrives {
-        right: belt(1.2, 0.2),
-        left: belt(0.4, 0.2),
-    });
+/// `system` driven from rest for `end` s into a left turn: its books
+/// hold the drives' work to 1e-6 of it (at rtol 1e-7 the integrator's
+/// error is about 1e-8 of the energies it moves; a misbooked drive — its
+/// power read at the sprocket's absolute speed rather than relative to
+/// the frame, or its reaction left off the frame — is of the order of the
+/// work itself), and it has turned left. Its final state.
+fn turned_with_books(system: &mut System, end: f64) -> DVector<f64> {
     let start = at_rest(0.0, (0.0, 0.0));
     let y0 = system.state(&start.0, &start.1, &start.2);
     let before = system.energy(y0.as_slice());
-    let y = run(&mut system, &start, 0.4, ADAPTIVE);
+    let y = run(system, &start, end, ADAPTIVE);
     let after = system.energy(y.as_slice());
     assert!(after.driven > 100.0, "{after:?}");
     assert!(
@@ -123,6 +115,20 @@ fn a_turn_keeps_its_books() {
     );
     let (hull, ..) = system.states(y.as_slice());
     assert!(hull.pose.yaw > 1e-4, "yaw {}", hull.pose.yaw);
+    y
+}
+
+/// Driven into a turn (the right belt asked 1.2 m/s, the left 0.4 m/s,
+/// over 0.2 s), the vehicle's books hold the drives' work
+/// ([`turned_with_books`]), and the right sprocket, faster, takes more
+/// torque.
+#[test]
+fn a_turn_keeps_its_books() {
+    let mut system = driven(SideDrives {
+        right: belt(1.2, 0.2),
+        left: belt(0.4, 0.2),
+    });
+    let y = turned_with_books(&mut system, 0.4);
     let drive = system.drive_state(0.4, y.as_slice()).expect("the drives");
     assert!(
         drive.torque[0] < drive.torque[1] && drive.torque[0] < 0.0,
@@ -337,20 +343,5 @@ fn a_turn_on_stiction_keeps_its_books() {
         system.dynamics.ground_states(),
         [2 * 2 * 2 * 55, 2 * 2 * 2 * 55]
     );
-    let start = at_rest(0.0, (0.0, 0.0));
-    let y0 = system.state(&start.0, &start.1, &start.2);
-    let before = system.energy(y0.as_slice());
-    let y = run(&mut system, &start, 0.3, ADAPTIVE);
-    let after = system.energy(y.as_slice());
-    assert!(after.driven > 100.0, "{after:?}");
-    assert!(
-        (after.total() - before.total()).abs() < 1e-6 * after.driven,
-        "{} J against {} J, {} J driven, {} J dissipated",
-        after.total(),
-        before.total(),
-        after.driven,
-        after.dissipated
-    );
-    let (hull, ..) = system.states(y.as_slice());
-    assert!(hull.pose.yaw > 1e-4, "yaw {}", hull.pose.yaw);
+    turned_with_books(&mut system, 0.3);
 }

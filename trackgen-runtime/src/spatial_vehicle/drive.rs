@@ -74,21 +74,16 @@ where
     R: TrackModel<DR>,
     L: TrackModel<DL>,
 {
-    /// The drives' torques at time `t` and the hull's state, with each
-    /// controller's `integrals` (rad, right then left), added to the
-    /// sprockets' and the frame's `loads`. A side without a sprocket
-    /// takes no torque; a drive's demand that is not finite stops the
-    /// run ([`Drive::checked_torque`]).
+    /// What the drives do at time `t` and the hull's state, with each
+    /// controller's `integrals` (rad, right then left): a side without a
+    /// sprocket takes no torque; a drive's demand that is not finite
+    /// stops the run ([`Drive::checked_torque`]).
     pub fn drive(
         &self,
         t: f64,
         hull: &TreeState<DH>,
         (drives, integrals): (&SideDrives, [f64; 2]),
-        loads: &mut SpatialLoads,
     ) -> Result<DriveState, SimulationError> {
-        let eta: Vector3<f64> = plane_rotation(hull.pose.yaw, hull.pose.roll)
-            .column(1)
-            .into();
         let qd = &hull.rates.planar;
         let mut state = DriveState::default();
         for (s, drive) in drives.each().into_iter().enumerate() {
@@ -103,12 +98,24 @@ where
                 integrals[s],
                 TorqueCap::NONE,
             )?;
-            loads.hull[sprocket.body].moment -= eta * torque;
-            loads.hull[0].moment += eta * torque;
             state.speed[s] = omega;
             state.torque[s] = torque;
             state.integral_rate[s] = rate;
         }
         Ok(state)
+    }
+
+    /// The drives' torques (`drive`'s) added to the sprockets' and the
+    /// frame's `loads`.
+    pub fn apply_drive(&self, hull: &TreeState<DH>, drive: &DriveState, loads: &mut SpatialLoads) {
+        let eta: Vector3<f64> = plane_rotation(hull.pose.yaw, hull.pose.roll)
+            .column(1)
+            .into();
+        for (s, sprocket) in self.sprockets.iter().enumerate() {
+            if let Some(sprocket) = sprocket {
+                loads.hull[sprocket.body].moment -= eta * drive.torque[s];
+                loads.hull[0].moment += eta * drive.torque[s];
+            }
+        }
     }
 }

@@ -178,10 +178,8 @@ where
     /// What the drives do at time `t` and state `y`.
     pub fn drive_state(&self, t: f64, y: &[f64]) -> Result<DriveState, SimulationError> {
         let (hull, ..) = self.states(y);
-        let mut rates = vec![0.0; self.books_at() - Self::TREES];
-        let mut loads = self.loads_at(y, &mut rates);
         self.dynamics
-            .drive(t, &hull, (&self.drives, self.integrals(y)), &mut loads)
+            .drive(t, &hull, (&self.drives, self.integrals(y)))
     }
 
     /// The state of the three trees, nothing dissipated yet.
@@ -257,7 +255,8 @@ where
         let d = &self.dynamics;
         let b = self.books_at();
         let mut loads = self.loads_at(y, &mut dy[Self::TREES..b]);
-        let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)), &mut loads)?;
+        let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
+        d.apply_drive(&hull, &drive, &mut loads);
         let closing = [
             closing(d.right.model(), &right, &self.closure),
             closing(d.left.model(), &left, &self.closure),
