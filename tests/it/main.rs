@@ -59,6 +59,7 @@ mod spatial_assembly;
 mod spatial_drive;
 mod spatial_dynamics;
 mod spatial_tree;
+mod spatial_turn;
 mod spatial_vehicle;
 mod stands_alone;
 mod steering;

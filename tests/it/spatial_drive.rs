@@ -10,51 +10,15 @@
 
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, SVector, Vector3};
-use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{SideDrives, SpatialSystem, TreeState};
-use trackgen::vehicle::{Drive, DriveError, Vehicle};
+use trackgen::vehicle::{Drive, DriveError};
 
-use trackgen::contact::GroundFriction;
-use trackgen::laws::Stiction;
-use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws};
 use trackgen::terrain::field::HeightField;
 
 use crate::support::twin::{
-    DH, DT, HULL, States, TRACK, Twin, TwinHull, TwinTrack, assembled, laws, spatial, upright,
+    DH, DT, States, System, TwinHull, at_rest, belt, on, run, spatial, sticking,
 };
 use trackgen::multibody::RecursiveModel;
-
-type System = SpatialSystem<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT>;
-
-/// A speed drive tracking `speed` (m/s of belt, forward) reached by a
-/// ramp over `ramp` s, with gains stiff enough to hold it.
-fn belt(speed: f64, ramp: f64) -> Drive {
-    Drive::Speed {
-        target: Box::new(move |t| speed * (t / ramp).min(1.0)),
-        proportional: 400.0,
-        integral: 4000.0,
-        max_torque: 3000.0,
-    }
-}
-
-/// The `Twin` at rest on level ground, its hull's root at `(x, y)` and
-/// turned `heading` rad about the vertical.
-fn at_rest(heading: f64, (x, y): (f64, f64)) -> States {
-    let start = assembled();
-    let half = Twin::layout().gauge / 2.0;
-    let (qh, qt) = (start.hull, start.right);
-    let (s, c) = heading.sin_cos();
-    let placed =
-        |px: f64, py: f64, z: f64| Vector3::new(c * px - s * py + x, s * px + c * py + y, z);
-    let mut hull = upright(placed(qh[0], 0.0, qh[1]), &qh, &SVector::zeros());
-    hull.pose.yaw = heading;
-    let track = |lateral: f64| {
-        let mut state = upright(placed(qt[0], lateral, qt[1]), &qt, &SVector::zeros());
-        state.pose.yaw = heading;
-        state
-    };
-    (hull, track(-half), track(half))
-}
 
 /// Dormand–Prince at rtol 1e-7.
 const ADAPTIVE: Integrator = Integrator::Dopri5 {
@@ -65,17 +29,6 @@ const ADAPTIVE: Integrator = Integrator::Dopri5 {
 
 /// RK4 at a fixed 0.1 ms.
 const FIXED: Integrator = Integrator::Rk4 { step: 1e-4 };
-
-/// `system` run from `start` for `end` s by `method`: its final state.
-fn run(system: &mut System, start: &States, end: f64, method: Integrator) -> DVector<f64> {
-    let mut y = system.state(&start.0, &start.1, &start.2);
-    let mut stepper = method.stepper(system.dimension());
-    let mut t = 0.0;
-    while t < end {
-        stepper.step(system, &mut t, &mut y, end).expect("the run");
-    }
-    y
-}
 
 /// The `Twin` with its sprockets driven.
 fn driven(drives: SideDrives) -> System {
@@ -292,37 +245,6 @@ fn a_drive_that_is_no_controller_is_refused() {
         left: Drive::Free,
     });
     assert!(matches!(refused, Err(DriveError::TorqueLimit { .. })));
-}
-
-/// The `Twin`'s laws with stiction on the ground (`k_t` 1e5 N/m and
-/// `c_t` 2e3 N s/m per point: about 2 mm of deflection at the Coulomb
-/// limit under the quarter-tonne each point carries).
-fn sticking() -> SpatialLaws {
-    let mut laws = laws();
-    laws.ground.friction = GroundFriction::Stiction(Stiction {
-        mu: 0.7,
-        stiffness: 1e5,
-        damping: 2e3,
-    });
-    laws
-}
-
-/// The `Twin` on `field` under `laws`, its sprockets driven by `drives`.
-fn on(field: HeightField, laws: SpatialLaws, drives: SideDrives) -> System {
-    let geometry = Twin::geometry();
-    let dynamics = SpatialDynamics::new(
-        &HULL,
-        (&TRACK, &TRACK),
-        &Twin::layout(),
-        geometry.shoe.clone(),
-        geometry.sprocket,
-        laws,
-        field,
-    )
-    .expect("the spatial vehicle");
-    SpatialSystem::new(dynamics)
-        .with_drives(drives)
-        .expect("drives that make controllers")
 }
 
 /// With stiction on the ground (two deflections per ground point, in the

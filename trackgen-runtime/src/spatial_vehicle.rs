@@ -92,6 +92,30 @@ pub struct SpatialLoads {
     pub dissipation: f64,
 }
 
+/// What the ground gives one of a track's ground points at a state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct GroundForce {
+    /// The track's side.
+    pub side: Side,
+    /// The link the point belongs to (0 the chain's root).
+    pub link: usize,
+    /// The point in the world, m.
+    pub at: Vector3<f64>,
+    /// The ground's force on the link there, N (world axes).
+    pub force: Vector3<f64>,
+}
+
+/// The whole vehicle's mass and the motion of its centre of mass.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MassCentre {
+    /// The mass of the hull and both tracks, kg.
+    pub mass: f64,
+    /// Where the centre of mass is, m.
+    pub position: Vector3<f64>,
+    /// How fast it moves, m/s.
+    pub velocity: Vector3<f64>,
+}
+
 /// Every body's world motion: centroid, orientation, velocity, angular
 /// velocity.
 struct Bodies {
@@ -304,6 +328,7 @@ where
                 links,
                 &mut link_loads,
                 (deflections[s], rates.next().unwrap_or_default()),
+                None,
             );
             out.potential += books.0;
             out.dissipation += books.1;
@@ -333,15 +358,68 @@ where
         out
     }
 
+    /// What the ground gives each ground point on it at a state, the
+    /// tracks' ground deflections `deflections` (m, right then left, as
+    /// [`loads_with`](Self::loads_with) takes them): the right track's
+    /// points, then the left's, link by link.
+    pub fn ground_forces(
+        &self,
+        (right, left): (&TreeState<DR>, &TreeState<DL>),
+        deflections: [&[f64]; 2],
+    ) -> Vec<GroundForce> {
+        let tracks = [Bodies::of(&self.right, right), Bodies::of(&self.left, left)];
+        let mut out = Vec::new();
+        for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
+            let links = &tracks[s];
+            let mut loads = vec![SpatialLoad::default(); links.at.len()];
+            let mut rates = vec![0.0; deflections[s].len()];
+            self.ground(
+                links,
+                &mut loads,
+                (deflections[s], &mut rates),
+                Some((side, &mut out)),
+            );
+        }
+        out
+    }
+
+    /// The centre of mass of the hull and both tracks, and its velocity,
+    /// at a state: the mass-weighted mean of every body's centroid.
+    pub fn mass_centre(
+        &self,
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+    ) -> MassCentre {
+        let mut total = MassCentre {
+            mass: 0.0,
+            position: Vector3::zeros(),
+            velocity: Vector3::zeros(),
+        };
+        let mut add = |bodies: Bodies, masses: &[f64]| {
+            for ((at, velocity), &m) in bodies.at.iter().zip(&bodies.velocity).zip(masses) {
+                total.mass += m;
+                total.position += m * at;
+                total.velocity += m * velocity;
+            }
+        };
+        add(Bodies::of(&self.hull, hull), self.hull.masses());
+        add(Bodies::of(&self.right, right), self.right.masses());
+        add(Bodies::of(&self.left, left), self.left.masses());
+        total.position /= total.mass;
+        total.velocity /= total.mass;
+        total
+    }
+
     /// The shoes on the ground: each planar ground point as two across
     /// the width, each with half its law; with stiction, each point's
     /// deflection from `deflections` and its rate into `rates` (a point
-    /// off the ground relaxing). What they store and dissipate.
+    /// off the ground relaxing). What they store and dissipate; each
+    /// point on the ground into `found`, if given, as of its side.
     fn ground(
         &self,
         links: &Bodies,
         loads: &mut [SpatialLoad],
         (deflections, rates): (&[f64], &mut [f64]),
+        mut found: Option<(Side, &mut Vec<GroundForce>)>,
     ) -> (f64, f64) {
         let half = GroundLaws {
             normal: share(self.laws.ground.normal, 0.5),
@@ -366,6 +444,14 @@ where
                         Some(contact) => {
                             let force = half.respond_in_space(&contact, z);
                             links.push(loads, k, force.force, x);
+                            if let Some((side, found)) = found.as_mut() {
+                                found.push(GroundForce {
+                                    side: *side,
+                                    link: k,
+                                    at: x,
+                                    force: force.force,
+                                });
+                            }
                             potential += force.potential;
                             dissipation += force.dissipation;
                             if stiction.is_some() {

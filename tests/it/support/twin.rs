@@ -31,10 +31,15 @@ trackgen::model! {
 }
 
 use trackgen::assembly::{AssembledSides, assemble_sides};
+use trackgen::contact::GroundFriction;
 use trackgen::contact::axial::GuideLaw;
-use trackgen::nalgebra::{SVector, Vector3};
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::laws::Stiction;
+use trackgen::nalgebra::{DVector, SVector, Vector3};
 use trackgen::spatial::{PlanePose, PlaneRates, SpatialVehicle};
-use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, TreeState};
+use trackgen::spatial_vehicle::{
+    SideDrives, SpatialDynamics, SpatialLaws, SpatialSystem, TreeState,
+};
 use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, Vehicle};
@@ -46,6 +51,9 @@ pub const DT: usize = Twin::TRACK_DOF;
 
 /// The three trees' states.
 pub type States = (TreeState<DH>, TreeState<DT>, TreeState<DT>);
+
+/// The `Twin` in time.
+pub type System = SpatialSystem<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT>;
 
 /// The hull's model, for the trees' borrows.
 pub static HULL: TwinHull = TwinHull;
@@ -123,4 +131,76 @@ pub fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTr
         HeightField::level(),
     )
     .expect("the spatial vehicle")
+}
+
+/// A speed drive tracking `speed` (m/s of belt, forward) reached by a
+/// ramp over `ramp` s, with gains stiff enough to hold it.
+pub fn belt(speed: f64, ramp: f64) -> Drive {
+    Drive::Speed {
+        target: Box::new(move |t| speed * (t / ramp).min(1.0)),
+        proportional: 400.0,
+        integral: 4000.0,
+        max_torque: 3000.0,
+    }
+}
+
+/// The `Twin` at rest on level ground, its hull's root at `(x, y)` and
+/// turned `heading` rad about the vertical.
+pub fn at_rest(heading: f64, (x, y): (f64, f64)) -> States {
+    let start = assembled();
+    let half = Twin::layout().gauge / 2.0;
+    let (qh, qt) = (start.hull, start.right);
+    let (s, c) = heading.sin_cos();
+    let placed =
+        |px: f64, py: f64, z: f64| Vector3::new(c * px - s * py + x, s * px + c * py + y, z);
+    let mut hull = upright(placed(qh[0], 0.0, qh[1]), &qh, &SVector::zeros());
+    hull.pose.yaw = heading;
+    let track = |lateral: f64| {
+        let mut state = upright(placed(qt[0], lateral, qt[1]), &qt, &SVector::zeros());
+        state.pose.yaw = heading;
+        state
+    };
+    (hull, track(-half), track(half))
+}
+
+/// The `Twin`'s laws with stiction on the ground (`k_t` 1e5 N/m and
+/// `c_t` 2e3 N s/m per point: about 2 mm of deflection at the Coulomb
+/// limit under the quarter-tonne each point carries).
+pub fn sticking() -> SpatialLaws {
+    let mut laws = laws();
+    laws.ground.friction = GroundFriction::Stiction(Stiction {
+        mu: 0.7,
+        stiffness: 1e5,
+        damping: 2e3,
+    });
+    laws
+}
+
+/// The `Twin` on `field` under `laws`, its sprockets driven by `drives`.
+pub fn on(field: HeightField, laws: SpatialLaws, drives: SideDrives) -> System {
+    let geometry = Twin::geometry();
+    let dynamics = SpatialDynamics::new(
+        &HULL,
+        (&TRACK, &TRACK),
+        &Twin::layout(),
+        geometry.shoe.clone(),
+        geometry.sprocket,
+        laws,
+        field,
+    )
+    .expect("the spatial vehicle");
+    SpatialSystem::new(dynamics)
+        .with_drives(drives)
+        .expect("drives that make controllers")
+}
+
+/// `system` run from `start` for `end` s by `method`: its final state.
+pub fn run(system: &mut System, start: &States, end: f64, method: Integrator) -> DVector<f64> {
+    let mut y = system.state(&start.0, &start.1, &start.2);
+    let mut stepper = method.stepper(system.dimension());
+    let mut t = 0.0;
+    while t < end {
+        stepper.step(system, &mut t, &mut y, end).expect("the run");
+    }
+    y
 }

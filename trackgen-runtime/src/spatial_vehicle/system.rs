@@ -18,7 +18,7 @@
 
 use nalgebra::{DVector, SVector, Vector3};
 
-use super::{DriveState, SideDrives, SpatialDynamics, TreeState};
+use super::{DriveState, GroundForce, MassCentre, SideDrives, SpatialDynamics, TreeState};
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
@@ -180,6 +180,20 @@ where
         let (hull, ..) = self.states(y);
         self.dynamics
             .drive(t, &hull, (&self.drives, self.integrals(y)))
+    }
+
+    /// What the ground gives each ground point on it at `y`
+    /// ([`SpatialDynamics::ground_forces`]).
+    pub fn ground_forces(&self, y: &[f64]) -> Vec<GroundForce> {
+        let (_, right, left, _) = self.states(y);
+        self.dynamics
+            .ground_forces((&right, &left), self.deflections(y))
+    }
+
+    /// The vehicle's centre of mass and its velocity at `y`.
+    pub fn mass_centre(&self, y: &[f64]) -> MassCentre {
+        let (hull, right, left, _) = self.states(y);
+        self.dynamics.mass_centre((&hull, &right, &left))
     }
 
     /// The state of the three trees, nothing dissipated yet.
