@@ -475,6 +475,48 @@ fn a_layout_that_does_not_fit_is_refused() {
     assert!(build(&Twin::layout()).is_none());
 }
 
+/// A contact law out of its range is refused by its contacts' name: a
+/// guide with no stiffness, a horn of no height, a negative ground
+/// friction; each message names the contacts and the parameter.
+#[test]
+fn a_law_out_of_range_is_refused() {
+    let geometry = Twin::geometry();
+    let build = |laws| {
+        SpatialDynamics::new(
+            &HULL,
+            (&TRACK, &TRACK),
+            &Twin::layout(),
+            geometry.shoe.clone(),
+            geometry.sprocket,
+            laws,
+            HeightField::level(),
+        )
+        .err()
+    };
+    let mut soft = laws();
+    soft.guide.stiffness = 0.0;
+    let mut flat = laws();
+    flat.guide.height = f64::NAN;
+    let mut slippery = laws();
+    slippery.ground.friction = slippery.ground.friction.with_mu(-0.1);
+    for (bad, pair, parameter) in [
+        (soft, "guides", "stiffness"),
+        (flat, "guides", "height"),
+        (slippery, "ground", "mu"),
+    ] {
+        let error = build(bad).expect("refused");
+        assert!(
+            matches!(error, SpatialError::Law { pair: p, .. } if p == pair),
+            "{error:?}"
+        );
+        let message = error.to_string();
+        assert!(
+            message.contains(pair) && message.contains(parameter),
+            "{message}"
+        );
+    }
+}
+
 /// The mirrored `Twin` dropped 5 mm onto level ground from its assembled
 /// start, integrated 0.25 s (Dormand–Prince, rtol 1e-7; `SpatialSystem`
 /// with the tracks' loops held by Baumgarte's stabilisation): its energy —

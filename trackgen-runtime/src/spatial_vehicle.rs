@@ -67,6 +67,20 @@ pub struct SpatialLaws {
     pub guide: GuideLaw,
 }
 
+impl SpatialLaws {
+    /// Every law's parameters in their ranges; the first out of range as
+    /// an error naming its contacts.
+    pub fn check(&self) -> Result<(), SpatialError> {
+        let law = |pair, checked: Result<(), crate::laws::ParameterError>| {
+            checked.map_err(|source| SpatialError::Law { pair, source })
+        };
+        law("ground", self.ground.check())?;
+        law("rims", self.wheels.check())?;
+        law("teeth", self.sprocket.check())?;
+        law("guides", self.guide.check())
+    }
+}
+
 /// One tree's pose and motion.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TreeState<const D: usize> {
@@ -215,7 +229,8 @@ where
     /// with the shoe, the profile, the laws and the ground. A layout that
     /// does not fit the trees (an inertia or offset per body, a side per
     /// part) is an error, and so is a track whose links differ in length
-    /// (a sprocket's rolling radius needs one pitch).
+    /// (a sprocket's rolling radius needs one pitch), and so is a law
+    /// out of its range ([`SpatialLaws::check`]).
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         hull: &'m H,
@@ -226,6 +241,7 @@ where
         laws: SpatialLaws,
         field: HeightField,
     ) -> Result<Self, SpatialError> {
+        laws.check()?;
         if layout.part_sides.len() != H::PARTS.len() {
             return Err(SpatialError::Sides {
                 parts: H::PARTS.len(),

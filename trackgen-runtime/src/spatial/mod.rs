@@ -167,6 +167,14 @@ pub enum SpatialError {
         /// Why.
         source: crate::multibody::PitchError,
     },
+    /// A contact law's parameter is out of its range.
+    #[error("the law of the {pair}: {source}")]
+    Law {
+        /// Which contacts: "ground", "rims", "teeth" or "guides".
+        pair: &'static str,
+        /// Why.
+        source: crate::laws::ParameterError,
+    },
     /// The planar model's gravity must point down its `y` axis, which
     /// becomes the world's vertical.
     #[error("the planar gravity must be (0, −g), got ({x}, {y}) m/s²")]
