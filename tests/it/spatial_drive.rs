@@ -9,16 +9,12 @@
 //! rejection near its threshold, and the runs then by its tolerance.
 
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::nalgebra::{DVector, SVector, Vector3};
-use trackgen::spatial_vehicle::{SideDrives, SpatialSystem, TreeState};
+use trackgen::nalgebra::{DVector, Vector3};
+use trackgen::spatial_vehicle::{SideDrives, SpatialSystem};
+use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, DriveError};
 
-use trackgen::terrain::field::HeightField;
-
-use crate::support::twin::{
-    DH, DT, States, System, TwinHull, at_rest, belt, on, run, spatial, sticking,
-};
-use trackgen::multibody::RecursiveModel;
+use crate::support::twin::{States, System, at_rest, belt, mirror, on, run, spatial, sticking};
 
 /// Dormand–Prince at rtol 1e-7.
 const ADAPTIVE: Integrator = Integrator::Dopri5 {
@@ -94,28 +90,7 @@ fn a_turn_keeps_its_books() {
 /// reversed, the hull's right and left bodies and the two tracks
 /// exchanged.
 fn mirrored(system: &System, y: &[f64]) -> States {
-    let (hull, right, left, _) = system.states(y);
-    let side = (TwinHull::BODIES - 1) / 2;
-    let swap = |v: &SVector<f64, DH>| {
-        SVector::<f64, DH>::from_fn(|i, _| match i {
-            _ if i < 3 => v[i],
-            _ if i < 3 + side => v[i + side],
-            _ => v[i - side],
-        })
-    };
-    let flip = |mut state: TreeState<DT>| {
-        state.pose.origin.y = -state.pose.origin.y;
-        (state.pose.yaw, state.pose.roll) = (-state.pose.yaw, -state.pose.roll);
-        state.rates.across = -state.rates.across;
-        state
-    };
-    let mut h = hull;
-    h.pose.origin.y = -h.pose.origin.y;
-    (h.pose.yaw, h.pose.roll) = (-h.pose.yaw, -h.pose.roll);
-    h.pose.planar = swap(&h.pose.planar);
-    h.rates.planar = swap(&h.rates.planar);
-    h.rates.across = -h.rates.across;
-    (h, flip(left), flip(right))
+    mirror(&trees(system, y))
 }
 
 /// The three trees at `y`.

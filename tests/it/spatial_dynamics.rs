@@ -33,8 +33,8 @@ use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, Vehicle};
 
 use crate::support::twin::{
-    DH, DT, HULL, States, TRACK, Twin, TwinChassis, TwinHull, TwinTrack, assembled, laws, spatial,
-    upright,
+    DH, DT, HULL, States, TRACK, Twin, TwinChassis, TwinHull, TwinTrack, assembled, built, laws,
+    mirror, spatial, swap_sides, upright,
 };
 const DC: usize = Twin::CHASSIS_DOF;
 
@@ -329,35 +329,11 @@ fn a_vehicle_moved_rigidly_accelerates_alike() {
 #[test]
 fn the_mirror_image_accelerates_as_the_mirror() {
     let states = uneven();
-    let side = TwinChassis::BODIES - 1;
-    let mirror_tree = |mut state: TreeState<DT>| {
-        state.pose.origin.y = -state.pose.origin.y;
-        (state.pose.yaw, state.pose.roll) = (-state.pose.yaw, -state.pose.roll);
-        state.rates.across = -state.rates.across;
-        state
-    };
-    let swap = |v: &SVector<f64, DH>| {
-        SVector::<f64, DH>::from_fn(|i, _| match i {
-            _ if i < 3 => v[i],
-            _ if i < 3 + side => v[i + side],
-            _ => v[i - side],
-        })
-    };
-    let mut hull = states.0.clone();
-    hull.pose.origin.y = -hull.pose.origin.y;
-    (hull.pose.yaw, hull.pose.roll) = (-hull.pose.yaw, -hull.pose.roll);
-    hull.pose.planar = swap(&hull.pose.planar);
-    hull.rates.planar = swap(&hull.rates.planar);
-    hull.rates.across = -hull.rates.across;
-    let mirrored = (
-        hull,
-        mirror_tree(states.2.clone()),
-        mirror_tree(states.1.clone()),
-    );
+    let mirrored = mirror(&states);
     let (a, b) = (accelerate(&states), accelerate(&mirrored));
     same(
         b.0.0.as_slice(),
-        swap(&a.0.0).as_slice(),
+        swap_sides(&a.0.0).as_slice(),
         "hull in its plane",
     );
     same((-b.0.1).as_slice(), a.0.1.as_slice(), "hull across");
@@ -480,19 +456,7 @@ fn a_layout_that_does_not_fit_is_refused() {
 /// friction; each message names the contacts and the parameter.
 #[test]
 fn a_law_out_of_range_is_refused() {
-    let geometry = Twin::geometry();
-    let build = |laws| {
-        SpatialDynamics::new(
-            &HULL,
-            (&TRACK, &TRACK),
-            &Twin::layout(),
-            geometry.shoe.clone(),
-            geometry.sprocket,
-            laws,
-            HeightField::level(),
-        )
-        .err()
-    };
+    let build = |laws| built(laws, HeightField::level()).err();
     let mut soft = laws();
     soft.guide.stiffness = 0.0;
     let mut flat = laws();

@@ -36,7 +36,7 @@ use trackgen::contact::axial::GuideLaw;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::laws::Stiction;
 use trackgen::nalgebra::{DVector, SVector, Vector3};
-use trackgen::spatial::{PlanePose, PlaneRates, SpatialVehicle};
+use trackgen::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
 use trackgen::spatial_vehicle::{
     SideDrives, SpatialDynamics, SpatialLaws, SpatialSystem, TreeState,
 };
@@ -118,8 +118,11 @@ pub fn laws() -> SpatialLaws {
     }
 }
 
-/// The spatial `Twin` on level ground with its declared laws.
-pub fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT> {
+/// The spatial `Twin` on `field` under `laws`, or why not.
+pub fn built(
+    laws: SpatialLaws,
+    field: HeightField,
+) -> Result<SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT>, SpatialError> {
     let geometry = Twin::geometry();
     SpatialDynamics::new(
         &HULL,
@@ -127,10 +130,14 @@ pub fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTr
         &Twin::layout(),
         geometry.shoe.clone(),
         geometry.sprocket,
-        laws(),
-        HeightField::level(),
+        laws,
+        field,
     )
-    .expect("the spatial vehicle")
+}
+
+/// The spatial `Twin` on level ground with its declared laws.
+pub fn spatial() -> SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT> {
+    built(laws(), HeightField::level()).expect("the spatial vehicle")
 }
 
 /// A speed drive tracking `speed` (m/s of belt, forward) reached by a
@@ -178,18 +185,7 @@ pub fn sticking() -> SpatialLaws {
 
 /// The `Twin` on `field` under `laws`, its sprockets driven by `drives`.
 pub fn on(field: HeightField, laws: SpatialLaws, drives: SideDrives) -> System {
-    let geometry = Twin::geometry();
-    let dynamics = SpatialDynamics::new(
-        &HULL,
-        (&TRACK, &TRACK),
-        &Twin::layout(),
-        geometry.shoe.clone(),
-        geometry.sprocket,
-        laws,
-        field,
-    )
-    .expect("the spatial vehicle");
-    SpatialSystem::new(dynamics)
+    SpatialSystem::new(built(laws, field).expect("the spatial vehicle"))
         .with_drives(drives)
         .expect("drives that make controllers")
 }
@@ -203,4 +199,37 @@ pub fn run(system: &mut System, start: &States, end: f64, method: Integrator) ->
         stepper.step(system, &mut t, &mut y, end).expect("the run");
     }
     y
+}
+
+/// A hull vector's sides exchanged: the frame's values (the root's two
+/// and the frame's angle) kept, the right side's bodies' and the left's
+/// swapped.
+pub fn swap_sides(v: &SVector<f64, DH>) -> SVector<f64, DH> {
+    let side = (DH - 3) / 2;
+    SVector::<f64, DH>::from_fn(|i, _| match i {
+        _ if i < 3 => v[i],
+        _ if i < 3 + side => v[i + side],
+        _ => v[i - side],
+    })
+}
+
+/// The vehicle's mirror image across its centre plane: each tree's
+/// origin's `y`, yaw and roll reversed, its rates across its plane
+/// reversed, the hull's right and left bodies and the two tracks
+/// exchanged.
+pub fn mirror((hull, right, left): &States) -> States {
+    let flip = |state: &TreeState<DT>| {
+        let mut state = state.clone();
+        state.pose.origin.y = -state.pose.origin.y;
+        (state.pose.yaw, state.pose.roll) = (-state.pose.yaw, -state.pose.roll);
+        state.rates.across = -state.rates.across;
+        state
+    };
+    let mut h = hull.clone();
+    h.pose.origin.y = -h.pose.origin.y;
+    (h.pose.yaw, h.pose.roll) = (-h.pose.yaw, -h.pose.roll);
+    h.pose.planar = swap_sides(&h.pose.planar);
+    h.rates.planar = swap_sides(&h.rates.planar);
+    h.rates.across = -h.rates.across;
+    (h, flip(left), flip(right))
 }
