@@ -152,8 +152,7 @@ fn held(speed: f64) -> Drive {
 
 /// The `Twin` on [`firm`] ground driven from rest at belt speeds `belts`
 /// (m/s, right and left) for `end` s, observed over its last `window` s
-/// (Dormand–Prince at rtol 1e-5: the averages move by less than 1e-3 at
-/// 1e-6).
+/// (Dormand–Prince at rtol 1e-5).
 fn observe(belts: [f64; 2], end: f64, window: f64) -> Observed {
     let mut system: System = on(
         HeightField::level(),
@@ -235,10 +234,10 @@ fn within(what: &str, run: f64, theory: f64, seen: &Observed) {
 /// radius/gauge 6.4), the `Twin` settles within 5 % of the theory's yaw
 /// rate, radius and both sprockets' torques (the tolerance the theory's
 /// check is set at; the largest departure measured is 4.4 %, the inner
-/// torque at radius/gauge 1.3; the runs' 2 s averages move by about 1 %
-/// between windows, and the theory's loads are the run's own). The rolling resistance is the straight run's at 1.2 m/s:
-/// both sprockets' force over the weight (2 %: the rims' and teeth's
-/// losses). Each turn's moment of turning resistance is printed beside
+/// torque at radius/gauge 1.3; the theory's loads are the run's own; a
+/// gentle turn taken 2 s further moved its averages by under 0.5 %).
+/// The rolling resistance is the straight run's at 1.2 m/s: both
+/// sprockets' force over the weight (2 %: the rims' and teeth's losses). Each turn's moment of turning resistance is printed beside
 /// Steeds' `μ W L / 4`.
 #[test]
 fn steady_turns_match_the_skid_steering_theory() {
