@@ -35,7 +35,11 @@ use trackgen::steering::{SkidSteer, SteadyTurn, TrackLoad, steeds_resisting_mome
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::Drive;
 
-use crate::support::twin::{System, at_rest, on, sticking};
+use trackgen::multibody::RecursiveModel;
+use trackgen::spatial::SpatialVehicle;
+use trackgen::vehicle::Vehicle;
+
+use crate::support::twin::{System, TRACK, Twin, at_rest, on, sticking};
 
 /// What a run shows over its last stretch, averaged over time.
 #[derive(Debug)]
@@ -67,15 +71,14 @@ struct Observed {
 /// The bins the loads are averaged in along the hull, m.
 const BIN: f64 = 0.005;
 
-/// The `Twin`'s gauge, m.
-const GAUGE: f64 = 1.8;
-
 /// The ground's friction coefficient.
 const MU: f64 = 0.7;
 
-/// The `Twin`'s sprocket's rolling radius, m (9 teeth, 0.12 m pitch).
+/// The `Twin`'s sprocket's rolling radius, m: its declared teeth and its
+/// track's pitch.
 fn rolling_radius() -> f64 {
-    trackgen::contact::sprocket::rolling_radius(9, 0.12)
+    let pitch = TRACK.description().pitch().expect("one pitch");
+    trackgen::contact::sprocket::rolling_radius(Twin::geometry().sprocket.teeth, pitch)
 }
 
 /// The `Twin`'s laws on firm ground: stiction of 1e6 N/m per point
@@ -282,7 +285,7 @@ fn steady_turns_match_the_skid_steering_theory() {
         within("yaw rate", seen.yaw_rate, turn.yaw_rate, seen);
         // A pivot's radius is the centre of gravity's few centimetres
         // from the turn's centre: compared on the gauge's scale.
-        let scale = turn.radius.max(GAUGE);
+        let scale = turn.radius.max(Twin::layout().gauge);
         assert!(
             (radius - turn.radius).abs() < 0.05 * scale,
             "radius: the run's {radius} m against the theory's {} m ({seen:?})",
