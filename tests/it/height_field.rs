@@ -4,7 +4,8 @@
 //! `a + b x + c y + d x y` to rounding) with its slopes the central
 //! differences of its heights, flat beyond its edges; a tilt adds a
 //! plane; a hole, a bad grid, profile, divide, band or tilt is refused,
-//! naming it.
+//! naming it. The highest point over a box bounds every height in it and
+//! is reached where the field's shape says it is.
 
 use trackgen::nalgebra::Vector2;
 use trackgen::terrain::Terrain;
@@ -123,6 +124,92 @@ fn a_tilt_adds_a_plane() {
         assert!((h1 - h0 - 0.3 * y).abs() < 1e-14);
         assert!((g1 - g0 - Vector2::new(0.0, 0.3)).amax() < 1e-15);
     }
+}
+
+/// Every shape, tilted: a bump on one side, a grid with a peak inside
+/// and heights beyond its edges, a sine, a step profile.
+fn shapes() -> Vec<HeightField> {
+    let bump = Terrain::Bump {
+        centre: 1.0,
+        height: 0.25,
+        width: 0.8,
+    };
+    let (nx, ny) = (9, 6);
+    let heights: Vec<f64> = (0..nx * ny)
+        .map(|k| 0.1 * ((k * 7919) % 13) as f64 - 0.4)
+        .collect();
+    let grid = Grid::new((-1.5, -1.0), (0.5, 0.4), (nx, ny), heights).unwrap();
+    [
+        FieldShape::Level,
+        FieldShape::Profile(Terrain::Sine {
+            amplitude: 0.1,
+            wavelength: 3.0,
+        }),
+        FieldShape::Profile(
+            Terrain::table(vec![(-10.0, 0.0), (0.5, 0.0), (0.5001, 0.3), (30.0, 0.3)]).unwrap(),
+        ),
+        FieldShape::Sides {
+            left: bump,
+            right: Terrain::Flat { height: -0.05 },
+            divide: 0.1,
+            band: 0.4,
+        },
+        FieldShape::Grid(grid),
+    ]
+    .into_iter()
+    .flat_map(|base| {
+        [Vector2::zeros(), Vector2::new(0.2, -0.3)].map(|tilt| HeightField {
+            base: base.clone(),
+            tilt,
+        })
+    })
+    .collect()
+}
+
+#[test]
+fn the_highest_point_over_a_box_bounds_every_height_in_it() {
+    // Boxes over, across and beyond the shapes' features, sampled on a
+    // 41 × 41 lattice: no height above the bound (a rounding's worth
+    // allowed: the bound adds the tilt at a corner, the height at the
+    // point), and on a level field tilted the bound is the corner's
+    // height itself.
+    let boxes = [
+        ((-0.2, 1.7), (-0.6, 0.9)),
+        ((0.9, 1.1), (0.3, 0.5)),
+        ((-4.0, -2.0), (-3.0, -1.5)),
+        ((2.0, 6.0), (0.5, 2.5)),
+        ((-1.6, 3.0), (-1.2, 1.2)),
+    ];
+    for field in shapes() {
+        for ((x0, x1), (y0, y1)) in boxes {
+            let top = field.max_height((x0, x1), (y0, y1));
+            let mut highest = f64::NEG_INFINITY;
+            for i in 0..=40 {
+                for j in 0..=40 {
+                    let x = x0 + (x1 - x0) * i as f64 / 40.0;
+                    let y = y0 + (y1 - y0) * j as f64 / 40.0;
+                    highest = highest.max(field.height(x, y));
+                }
+            }
+            assert!(
+                highest <= top + 1e-14,
+                "{:?} over ({x0}, {x1}) × ({y0}, {y1}): {highest} above the bound {top}",
+                field.base
+            );
+            if field.base == FieldShape::Level {
+                assert!(
+                    (top - highest).abs() < 1e-15,
+                    "a plane's bound is its corner"
+                );
+            }
+        }
+    }
+    let nan = HeightField::level().max_height((f64::NAN, 1.0), (0.0, 1.0));
+    assert_eq!(
+        nan,
+        f64::INFINITY,
+        "a box that is not a number culls nothing"
+    );
 }
 
 #[test]

@@ -32,6 +32,7 @@
 //! vehicle in time.
 
 mod drive;
+mod ground;
 mod system;
 
 pub use drive::{DriveState, SideDrives};
@@ -40,10 +41,8 @@ pub use system::{SpatialEnergy, SpatialSystem};
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
 use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
-use crate::contact::space::SpaceContact;
-use crate::contact::sprocket::{ToothProfile, rolling_radius};
-use crate::contact::{ContactLaws, GroundFriction, GroundLaws, ShoeGeometry};
-use crate::laws::NormalLaw;
+use crate::contact::sprocket::{Gaps, ToothProfile, rolling_radius};
+use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
 use crate::multibody::{
     ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
 };
@@ -154,39 +153,22 @@ impl Bodies {
     }
 
     /// The world point of body `k`'s local planar point `p`.
+    #[inline]
     fn point(&self, k: usize, p: Vector2<f64>) -> Vector3<f64> {
         self.at[k] + self.turned[k] * Vector3::new(p.x, 0.0, p.y)
     }
 
     /// The velocity of body `k`'s material point at `x`.
+    #[inline]
     fn velocity_at(&self, k: usize, x: Vector3<f64>) -> Vector3<f64> {
         self.velocity[k] + self.spin[k].cross(&(x - self.at[k]))
     }
 
     /// Adds `force` at `x` to body `k`'s load.
+    #[inline]
     fn push(&self, loads: &mut [SpatialLoad], k: usize, force: Vector3<f64>, x: Vector3<f64>) {
         loads[k].force += force;
         loads[k].moment += (x - self.at[k]).cross(&force);
-    }
-}
-
-/// The normal law with `fraction` of its stiffness (and of a
-/// Kelvin–Voigt law's damping): a share of a point's contact.
-fn share(law: NormalLaw, fraction: f64) -> NormalLaw {
-    match law {
-        NormalLaw::KelvinVoigt { stiffness, damping } => NormalLaw::KelvinVoigt {
-            stiffness: stiffness * fraction,
-            damping: damping * fraction,
-        },
-        NormalLaw::HuntCrossley {
-            stiffness,
-            exponent,
-            chi,
-        } => NormalLaw::HuntCrossley {
-            stiffness: stiffness * fraction,
-            exponent,
-            chi,
-        },
     }
 }
 
@@ -214,6 +196,8 @@ pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const 
     sprockets: [Option<DrivenSprocket>; 2],
     shoe: ShoeGeometry,
     profile: ToothProfile,
+    /// The profile's gaps, found once.
+    gaps: Gaps,
     laws: SpatialLaws,
     field: HeightField,
 }
@@ -276,6 +260,7 @@ where
             sides: layout.part_sides.clone(),
             sprockets,
             shoe,
+            gaps: Gaps::of(&profile),
             profile,
             laws,
             field,
@@ -425,75 +410,6 @@ where
         total
     }
 
-    /// The shoes on the ground: each planar ground point as two across
-    /// the width, each with half its law; with stiction, each point's
-    /// deflection from `deflections` and its rate into `rates` (a point
-    /// off the ground relaxing). What they store and dissipate; each
-    /// point on the ground into `found`, if given, as of its side.
-    fn ground(
-        &self,
-        links: &Bodies,
-        loads: &mut [SpatialLoad],
-        (deflections, rates): (&[f64], &mut [f64]),
-        mut found: Option<(Side, &mut Vec<GroundForce>)>,
-    ) -> (f64, f64) {
-        let half = GroundLaws {
-            normal: share(self.laws.ground.normal, 0.5),
-            ..self.laws.ground
-        };
-        let stiction = match self.laws.ground.friction {
-            GroundFriction::Stiction(law) => Some(law),
-            GroundFriction::Regularised(_) => None,
-        };
-        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
-        let (mut potential, mut dissipation) = (0.0, 0.0);
-        let mut i = 0;
-        for k in 0..links.at.len() {
-            for p in &self.shoe.ground_points {
-                for lateral in [-across, across] {
-                    let z = match stiction {
-                        Some(_) => Vector2::new(deflections[i], deflections[i + 1]),
-                        None => Vector2::zeros(),
-                    };
-                    let x = links.at[k] + links.turned[k] * Vector3::new(p.x, lateral, p.y);
-                    match SpaceContact::at(&self.field, x, links.velocity_at(k, x)) {
-                        Some(contact) => {
-                            let force = half.respond_in_space(&contact, z);
-                            links.push(loads, k, force.force, x);
-                            if let Some((side, found)) = found.as_mut() {
-                                found.push(GroundForce {
-                                    side: *side,
-                                    link: k,
-                                    at: x,
-                                    force: force.force,
-                                });
-                            }
-                            potential += force.potential;
-                            dissipation += force.dissipation;
-                            if stiction.is_some() {
-                                rates[i..i + 2].copy_from_slice(force.rate.as_slice());
-                            }
-                        }
-                        None => {
-                            if let Some(law) = stiction {
-                                for c in 0..2 {
-                                    let relaxing = law.relax(z[c]);
-                                    rates[i + c] = relaxing.rate;
-                                    potential += relaxing.potential;
-                                    dissipation += relaxing.dissipation;
-                                }
-                            }
-                        }
-                    }
-                    if stiction.is_some() {
-                        i += 2;
-                    }
-                }
-            }
-        }
-        (potential, dissipation)
-    }
-
     /// One part of the hull on its side's track: a rim with the guide, or
     /// the teeth; the loads on both; what they store and dissipate.
     fn running_gear(
@@ -532,9 +448,12 @@ where
                 };
                 for pin in &self.shoe.pins {
                     let x = links.point(k, *pin);
-                    let Some(contact) =
-                        sprocket.pin_contact(&self.profile, &face, x, self.shoe.pin_radius)
-                    else {
+                    let Some(contact) = sprocket.pin_contact_among(
+                        (&self.profile, &self.gaps),
+                        &face,
+                        x,
+                        self.shoe.pin_radius,
+                    ) else {
                         continue;
                     };
                     let force = self.laws.sprocket.respond_axial(&contact);

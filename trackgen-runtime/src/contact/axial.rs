@@ -52,7 +52,7 @@
 
 use nalgebra::Vector3;
 
-use super::sprocket::ToothProfile;
+use super::sprocket::{Gaps, ToothProfile};
 use super::{BodyState, ContactLaws};
 use crate::laws::ParameterError;
 
@@ -224,11 +224,29 @@ impl SpaceSprocket {
         pin: Vector3<f64>,
         pin_radius: f64,
     ) -> Option<AxialContact> {
+        self.pin_contact_among((profile, &Gaps::of(profile)), face, pin, pin_radius)
+    }
+
+    /// [`pin_contact`](Self::pin_contact) with the profile's gaps found
+    /// already ([`Gaps::of`]): a vehicle finds them once, not per pin.
+    pub(crate) fn pin_contact_among(
+        &self,
+        (profile, gaps): (&ToothProfile, &Gaps),
+        face: &SpaceFace,
+        pin: Vector3<f64>,
+        pin_radius: f64,
+    ) -> Option<AxialContact> {
         let [xi, zeta] = self.axes;
         let offset = pin - self.centre;
         let local = nalgebra::Vector2::new(offset.dot(&xi), offset.dot(&zeta));
+        // Beyond the tip circle by the pin's radius the pin is in no
+        // tooth: the tooth test's own `r_add + r_pin − |p| ≤ 0`, the same
+        // floating-point numbers, made before the nearest gap is found.
+        if local.norm() >= profile.addendum + pin_radius {
+            return None;
+        }
         let sprocket = BodyState::at_rest(nalgebra::Vector2::zeros(), self.angle);
-        let tooth = profile.pin_in_tooth(&sprocket, local, pin_radius)?;
+        let tooth = profile.pin_in_tooth_among(gaps, &sprocket, local, pin_radius)?;
         let axle = self.axle();
         let lift = |v: nalgebra::Vector2<f64>| xi * v.x + zeta * v.y;
         let point = self.centre + lift(tooth.point) + axle * offset.dot(&axle);

@@ -108,7 +108,7 @@ impl ToothProfile {
 /// evaluation: the angular pitch `β`, the rotation by it, and the gaps'
 /// directions in the sprocket's frame.
 #[derive(Debug, Clone, Copy)]
-struct Gaps {
+pub(crate) struct Gaps {
     pitch: f64,
     turn: (f64, f64),
     arc_centre_radius: f64,
@@ -129,7 +129,9 @@ struct Gaps {
 const GAP_TABLE: usize = 64;
 
 impl Gaps {
-    fn of(profile: &ToothProfile) -> Gaps {
+    /// The profile's gaps: they turn with the sprocket but do not depend
+    /// on its angle, so a vehicle finds them once.
+    pub(crate) fn of(profile: &ToothProfile) -> Gaps {
         let pitch = profile.pitch_angle();
         // The rough angle is within (−π, π] to 2e-3 rad, so k is within
         // [−teeth/2 − 1, teeth/2]; a margin of one more each way.
@@ -270,7 +272,19 @@ impl ToothProfile {
         pin: Vector2<f64>,
         pin_radius: f64,
     ) -> Option<PinInTooth> {
-        in_tooth(self, &Gaps::of(self), sprocket, pin, pin_radius)
+        self.pin_in_tooth_among(&Gaps::of(self), sprocket, pin, pin_radius)
+    }
+
+    /// [`pin_in_tooth`](Self::pin_in_tooth) with this profile's gaps
+    /// found already ([`Gaps::of`]).
+    pub(crate) fn pin_in_tooth_among(
+        &self,
+        gaps: &Gaps,
+        sprocket: &BodyState,
+        pin: Vector2<f64>,
+        pin_radius: f64,
+    ) -> Option<PinInTooth> {
+        in_tooth(self, gaps, sprocket, pin, pin_radius)
     }
 }
 

@@ -200,6 +200,25 @@ impl Grid {
         );
         (height, gradient)
     }
+
+    /// The highest node over the cells that meet `[x0, x1] × [y0, y1]`
+    /// (the edge's nodes beyond the grid): bilinear heights lie between
+    /// their cell's nodes.
+    fn max_height(&self, (x0, x1): (f64, f64), (y0, y1): (f64, f64)) -> f64 {
+        let nodes = |a: f64, b: f64, p0: f64, d: f64, n: usize| {
+            let last = (n - 1) as f64;
+            let first = ((a - p0) / d).floor().clamp(0.0, last) as usize;
+            let end = ((b - p0) / d).ceil().clamp(0.0, last) as usize;
+            first..=end
+        };
+        let columns = nodes(x0, x1, self.x0, self.dx, self.nx);
+        let mut top = f64::NEG_INFINITY;
+        for j in nodes(y0, y1, self.y0, self.dy, self.ny) {
+            let row = &self.heights[j * self.nx..(j + 1) * self.nx];
+            top = row[columns.clone()].iter().fold(top, |m, &h| m.max(h));
+        }
+        top
+    }
 }
 
 impl HeightField {
@@ -300,5 +319,26 @@ impl HeightField {
             FieldShape::Grid(grid) => grid.height_and_gradient(x, y),
         };
         (h + self.tilt.dot(&Vector2::new(x, y)), g + self.tilt)
+    }
+
+    /// No height in the box `[x0, x1] × [y0, y1]` (m) is above this, m:
+    /// for culling. The base shape's highest point there (its own bound
+    /// for a profile, the higher side's for two, the highest node of the
+    /// cells met for a grid) plus the tilt's at the box's highest corner;
+    /// infinite for a box that is not a number.
+    pub fn max_height(&self, (x0, x1): (f64, f64), (y0, y1): (f64, f64)) -> f64 {
+        if [x0, x1, y0, y1].iter().any(|v| v.is_nan()) {
+            return f64::INFINITY;
+        }
+        let base = match &self.base {
+            FieldShape::Level => 0.0,
+            FieldShape::Profile(terrain) => terrain.max_height(x0, x1),
+            FieldShape::Sides { left, right, .. } => {
+                left.max_height(x0, x1).max(right.max_height(x0, x1))
+            }
+            FieldShape::Grid(grid) => grid.max_height((x0, x1), (y0, y1)),
+        };
+        let corner = |slope: f64, low: f64, high: f64| slope * if slope > 0.0 { high } else { low };
+        base + corner(self.tilt.x, x0, x1) + corner(self.tilt.y, y0, y1)
     }
 }

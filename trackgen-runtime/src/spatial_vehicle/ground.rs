@@ -1,0 +1,180 @@
+//! The shoes on the ground in space: each planar ground point of each
+//! shoe as two points across its width, each with half the point's law.
+//!
+//! A link whose ground points all lie above the highest ground under
+//! the whole track ([`HeightField::max_height`] over the links' box) is
+//! passed over with one comparison, as the planar route culls its links:
+//! none of its points can touch, so the same numbers come out as from
+//! testing each (its stiction deflections relax as a point off the
+//! ground's do).
+
+use nalgebra::{Vector2, Vector3};
+
+use super::{Bodies, GroundForce, SpatialDynamics};
+use crate::contact::space::SpaceContact;
+use crate::contact::{GroundFriction, GroundLaws};
+use crate::laws::{NormalLaw, Stiction};
+use crate::multibody::{ChassisModel, TrackModel};
+use crate::spatial::{Side, SpatialLoad};
+
+/// How far a link must clear the highest ground before it is passed
+/// over, m: more than the rounding of a height or a point's place (a few
+/// ulps of metres) can move either, so a passed-over point is above the
+/// ground by the same test the contact makes.
+const CLEARANCE_MARGIN: f64 = 1e-6;
+
+impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
+    SpatialDynamics<'_, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    /// The shoes on the ground: each planar ground point as two across
+    /// the width, each with half its law; with stiction, each point's
+    /// deflection from `deflections` and its rate into `rates` (a point
+    /// off the ground relaxing). What they store and dissipate; each
+    /// point on the ground into `found`, if given, as of its side.
+    pub(super) fn ground(
+        &self,
+        links: &Bodies,
+        loads: &mut [SpatialLoad],
+        (deflections, rates): (&[f64], &mut [f64]),
+        mut found: Option<(Side, &mut Vec<GroundForce>)>,
+    ) -> (f64, f64) {
+        let half = GroundLaws {
+            normal: share(self.laws.ground.normal, 0.5),
+            ..self.laws.ground
+        };
+        let stiction = match self.laws.ground.friction {
+            GroundFriction::Stiction(law) => Some(law),
+            GroundFriction::Regularised(_) => None,
+        };
+        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let points = self.shoe.ground_points.len();
+        let clear_above = self.clear_above(links, across);
+        let (mut potential, mut dissipation) = (0.0, 0.0);
+        let mut i = 0;
+        for k in 0..links.at.len() {
+            if links.at[k].z > clear_above {
+                if let Some(law) = stiction {
+                    let books = (&mut potential, &mut dissipation);
+                    relax(
+                        &law,
+                        &deflections[i..i + 4 * points],
+                        &mut rates[i..],
+                        books,
+                    );
+                    i += 4 * points;
+                }
+                continue;
+            }
+            for p in &self.shoe.ground_points {
+                for lateral in [-across, across] {
+                    let z = match stiction {
+                        Some(_) => Vector2::new(deflections[i], deflections[i + 1]),
+                        None => Vector2::zeros(),
+                    };
+                    let x = links.at[k] + links.turned[k] * Vector3::new(p.x, lateral, p.y);
+                    match SpaceContact::at(&self.field, x, links.velocity_at(k, x)) {
+                        Some(contact) => {
+                            let force = half.respond_in_space(&contact, z);
+                            links.push(loads, k, force.force, x);
+                            if let Some((side, found)) = found.as_mut() {
+                                found.push(GroundForce {
+                                    side: *side,
+                                    link: k,
+                                    at: x,
+                                    force: force.force,
+                                });
+                            }
+                            potential += force.potential;
+                            dissipation += force.dissipation;
+                            if stiction.is_some() {
+                                rates[i..i + 2].copy_from_slice(force.rate.as_slice());
+                            }
+                        }
+                        None => {
+                            if let Some(law) = stiction {
+                                let books = (&mut potential, &mut dissipation);
+                                relax(&law, &deflections[i..i + 2], &mut rates[i..], books);
+                            }
+                        }
+                    }
+                    if stiction.is_some() {
+                        i += 2;
+                    }
+                }
+            }
+        }
+        (potential, dissipation)
+    }
+
+    /// The height a link's centroid must be above for none of its ground
+    /// points to reach the ground: the highest ground under the box of
+    /// every link's points, plus the farthest point's reach from its
+    /// centroid and the margin. Infinite (nothing passed over) for a
+    /// state that is not a number.
+    fn clear_above(&self, links: &Bodies, across: f64) -> f64 {
+        let reach = self
+            .shoe
+            .ground_points
+            .iter()
+            .map(|p| (p.norm_squared() + across * across).sqrt())
+            .fold(0.0, f64::max);
+        let (mut low, mut high) = (
+            Vector2::repeat(f64::INFINITY),
+            Vector2::repeat(-f64::INFINITY),
+        );
+        for at in &links.at {
+            let xy = at.xy();
+            low = low.inf(&xy);
+            high = high.sup(&xy);
+        }
+        if low.x > high.x {
+            return f64::INFINITY;
+        }
+        let top = self.field.max_height(
+            (low.x - reach, high.x + reach),
+            (low.y - reach, high.y + reach),
+        );
+        top + reach + CLEARANCE_MARGIN
+    }
+}
+
+/// Each of `deflections` relaxing off the ground, its rate into `rates`
+/// (from the start); what each stores and dissipates added to the books
+/// in turn.
+fn relax(
+    law: &Stiction,
+    deflections: &[f64],
+    rates: &mut [f64],
+    (potential, dissipation): (&mut f64, &mut f64),
+) {
+    for (z, rate) in deflections.iter().zip(rates.iter_mut()) {
+        let relaxing = law.relax(*z);
+        *rate = relaxing.rate;
+        *potential += relaxing.potential;
+        *dissipation += relaxing.dissipation;
+    }
+}
+
+/// The normal law with `fraction` of its stiffness (and of a
+/// Kelvin–Voigt law's damping): a share of a point's contact.
+fn share(law: NormalLaw, fraction: f64) -> NormalLaw {
+    match law {
+        NormalLaw::KelvinVoigt { stiffness, damping } => NormalLaw::KelvinVoigt {
+            stiffness: stiffness * fraction,
+            damping: damping * fraction,
+        },
+        NormalLaw::HuntCrossley {
+            stiffness,
+            exponent,
+            chi,
+        } => NormalLaw::HuntCrossley {
+            stiffness: stiffness * fraction,
+            exponent,
+            chi,
+        },
+    }
+}
