@@ -4,6 +4,8 @@
 //! * `H` is the Jacobian of the positions (eq. (6));
 //! * `γ = Ḣ q̇_i` (eq. (14)): the derivative of `H(q) q̇_i` along `q̇_i`;
 //! * `C_q` is the Jacobian of `C`, and `γ_c = −(d/dt C_q) q̇_i` (formulation §2);
+//!   `C` and `C_q q̇_i` from the links' sines and cosines are the generated
+//!   ones (to rounding);
 //! * at rest, `Q_i = −∂V/∂q_i` for the conservative forces (gravity and the
 //!   penalty spring).
 //!
@@ -72,6 +74,27 @@ fn check<M: TrackModel<D>, const D: usize>(m: &M, seed: u64) {
         let cq = m.closure_jacobian(&q);
         let fd_cq: Vec<f64> = (0..D).flat_map(|k| along(c, &q, &unit(k))).collect();
         assert_close("C_q vs ∂C/∂q_i", cq.as_slice(), &fd_cq, REL, 1.0);
+        // The closure and its rate from the links' sines and cosines
+        // (`closure_and_rate`, through `C_q`'s columns) are the generated
+        // `C` and `C_q q̇_i`: the same sums in another order, so to
+        // rounding.
+        let trig: Vec<(f64, f64)> = q.iter().skip(2).map(|a| a.sin_cos()).collect();
+        let (gap, rate) = m.closure_and_rate(&trig, &qd);
+        assert_close(
+            "C from C_q's columns",
+            gap.as_slice(),
+            m.closure(&q).as_slice(),
+            1e-13,
+            1.0,
+        );
+        let cq_qd = cq * qd;
+        assert_close(
+            "C_q q̇ from its columns",
+            rate.as_slice(),
+            cq_qd.as_slice(),
+            1e-13,
+            1.0,
+        );
         let cqv = |q: &SVector<f64, D>| (m.closure_jacobian(q) * qd).as_slice().to_vec();
         let want: Vec<f64> = along(cqv, &q, &qd).iter().map(|v| -v).collect();
         assert_close(

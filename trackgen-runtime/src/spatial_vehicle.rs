@@ -47,8 +47,8 @@ use crate::multibody::{
     ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
 };
 use crate::spatial::{
-    FloatingTree, PlanePose, PlaneRates, Side, SpatialError, SpatialLayout, SpatialLoad,
-    plane_rotation,
+    FloatingTree, PlaneMotion, PlanePose, PlaneRates, Side, SpatialError, SpatialLayout,
+    SpatialLoad, plane_rotation,
 };
 use crate::terrain::field::HeightField;
 
@@ -139,17 +139,29 @@ struct Bodies {
 }
 
 impl Bodies {
-    fn of<M, const D: usize>(tree: &FloatingTree<'_, M, D>, state: &TreeState<D>) -> Bodies
+    fn of<M, const D: usize>(
+        tree: &FloatingTree<'_, M, D>,
+        motion: &PlaneMotion,
+        state: &TreeState<D>,
+    ) -> Bodies
     where
         M: crate::multibody::RecursiveModel<D>,
     {
-        let world = tree.world(&state.pose, &state.rates);
+        let world = tree.world_of(motion, &state.pose, &state.rates);
         Bodies {
             at: world.positions,
             turned: world.orientations,
             velocity: world.velocities,
             spin: world.angular_velocities,
         }
+    }
+
+    /// [`of`](Self::of) with the tree's motion in its plane found here.
+    fn at<M, const D: usize>(tree: &FloatingTree<'_, M, D>, state: &TreeState<D>) -> Bodies
+    where
+        M: crate::multibody::RecursiveModel<D>,
+    {
+        Bodies::of(tree, &tree.plane_motion(&state.pose, &state.rates), state)
     }
 
     /// The world point of body `k`'s local planar point `p`.
@@ -304,12 +316,42 @@ where
     /// their rates into `rates`.
     pub fn loads_with(
         &self,
+        states: (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+        deflections: [&[f64]; 2],
+        rates: [&mut [f64]; 2],
+    ) -> SpatialLoads {
+        self.loads_in(&self.plane_motions(states), states, deflections, rates)
+    }
+
+    /// Each tree's bodies in its plane at a state
+    /// ([`FloatingTree::plane_motion`]): found once per evaluation, read
+    /// by [`loads_in`](Self::loads_in) and
+    /// [`accelerations_in`](Self::accelerations_in).
+    pub fn plane_motions(
+        &self,
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+    ) -> [PlaneMotion; 3] {
+        [
+            self.hull.plane_motion(&hull.pose, &hull.rates),
+            self.right.plane_motion(&right.pose, &right.rates),
+            self.left.plane_motion(&left.pose, &left.rates),
+        ]
+    }
+
+    /// [`loads_with`](Self::loads_with) with the trees' `motions` in
+    /// their planes found already ([`plane_motions`](Self::plane_motions)).
+    pub fn loads_in(
+        &self,
+        motions: &[PlaneMotion; 3],
         (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
         deflections: [&[f64]; 2],
         rates: [&mut [f64]; 2],
     ) -> SpatialLoads {
-        let frame = Bodies::of(&self.hull, hull);
-        let tracks = [Bodies::of(&self.right, right), Bodies::of(&self.left, left)];
+        let frame = Bodies::of(&self.hull, &motions[0], hull);
+        let tracks = [
+            Bodies::of(&self.right, &motions[1], right),
+            Bodies::of(&self.left, &motions[2], left),
+        ];
         let mut out = SpatialLoads {
             hull: vec![SpatialLoad::default(); frame.at.len()],
             right: vec![SpatialLoad::default(); tracks[0].at.len()],
@@ -368,7 +410,7 @@ where
         (right, left): (&TreeState<DR>, &TreeState<DL>),
         deflections: [&[f64]; 2],
     ) -> Vec<GroundForce> {
-        let tracks = [Bodies::of(&self.right, right), Bodies::of(&self.left, left)];
+        let tracks = [Bodies::at(&self.right, right), Bodies::at(&self.left, left)];
         let mut out = Vec::new();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
             let links = &tracks[s];
@@ -402,9 +444,9 @@ where
                 total.velocity += m * velocity;
             }
         };
-        add(Bodies::of(&self.hull, hull), self.hull.masses());
-        add(Bodies::of(&self.right, right), self.right.masses());
-        add(Bodies::of(&self.left, left), self.left.masses());
+        add(Bodies::at(&self.hull, hull), self.hull.masses());
+        add(Bodies::at(&self.right, right), self.right.masses());
+        add(Bodies::at(&self.left, left), self.left.masses());
         total.position /= total.mass;
         total.velocity /= total.mass;
         total
@@ -542,13 +584,38 @@ where
         loads: &SpatialLoads,
         closing: [ClosingJoint; 2],
     ) -> Result<Accelerations<DH, DR, DL>, DynamicsError> {
+        let states = (hull, right, left);
+        self.accelerations_in(&self.plane_motions(states), states, loads, closing)
+    }
+
+    /// [`accelerations_under`](Self::accelerations_under) with the trees'
+    /// `motions` in their planes found already
+    /// ([`plane_motions`](Self::plane_motions)).
+    pub fn accelerations_in(
+        &self,
+        motions: &[PlaneMotion; 3],
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+        loads: &SpatialLoads,
+        closing: [ClosingJoint; 2],
+    ) -> Result<Accelerations<DH, DR, DL>, DynamicsError> {
+        let [m_hull, m_right, m_left] = motions;
         Ok((
             self.hull
-                .accelerations(&hull.pose, &hull.rates, &loads.hull)?,
-            self.right
-                .closed_accelerations(&right.pose, &right.rates, &loads.right, closing[0])?,
-            self.left
-                .closed_accelerations(&left.pose, &left.rates, &loads.left, closing[1])?,
+                .accelerations_in(m_hull, &hull.pose, &hull.rates, &loads.hull)?,
+            self.right.closed_accelerations_in(
+                m_right,
+                &right.pose,
+                &right.rates,
+                &loads.right,
+                closing[0],
+            )?,
+            self.left.closed_accelerations_in(
+                m_left,
+                &left.pose,
+                &left.rates,
+                &loads.left,
+                closing[1],
+            )?,
         ))
     }
 }

@@ -209,6 +209,28 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
     /// (eq. (21)) is measured on.
     fn closure_columns(&self, trig: &[(f64, f64)], out: &mut [Vector2<f64>]);
 
+    /// [`closure`](Self::closure) and its rate `C_q q̇_i` from every
+    /// link's `(sin θ, cos θ)` (`trig`, found already) and `q̇_i`:
+    /// [`closure_columns`](Self::closure_columns)' `A_θʲ d̄ʲ` give both,
+    /// `Aʲ d̄ʲ` being the column turned back a quarter, `(c_y, −c_x)`.
+    ///
+    /// # Panics
+    /// If `trig` is not one per link.
+    fn closure_and_rate(
+        &self,
+        trig: &[(f64, f64)],
+        qd: &SVector<f64, DOF>,
+    ) -> (Vector2<f64>, Vector2<f64>) {
+        let mut columns = vec![Vector2::zeros(); trig.len()];
+        self.closure_columns(trig, &mut columns);
+        let (mut gap, mut rate) = (Vector2::zeros(), Vector2::zeros());
+        for (j, column) in columns.iter().enumerate() {
+            gap += Vector2::new(column.y, -column.x);
+            rate += column * qd[j + 2];
+        }
+        (gap, rate)
+    }
+
     /// Forward dynamics in O(n) by formulation §5, generated for this track: the
     /// links' absolute accelerations and the joint forces `λ` as unknowns,
     /// the joint forces from a block-tridiagonal system (cyclic for a

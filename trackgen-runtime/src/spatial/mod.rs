@@ -59,7 +59,7 @@ mod layout;
 mod tree;
 
 pub use layout::{Side, SpatialLayout, SpatialVehicle};
-pub use tree::{FloatingTree, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
+pub use tree::{FloatingTree, PlaneMotion, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
 
 use nalgebra::Matrix3;
 

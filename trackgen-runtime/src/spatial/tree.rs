@@ -45,6 +45,29 @@ pub struct WorldMotion {
     pub angular_velocities: Vec<Vector3<f64>>,
 }
 
+/// A tree's bodies in their plane at a state, found once per evaluation
+/// ([`FloatingTree::plane_motion`]) and read by both the force elements
+/// ([`FloatingTree::world_of`]) and the forward dynamics
+/// ([`FloatingTree::accelerations_in`]): every angle's sine and cosine,
+/// and every centroid's place and velocity relative to the root in the
+/// plane.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneMotion {
+    /// `(sin θ, cos θ)` of every body.
+    trig: Vec<(f64, f64)>,
+    /// Centroid relative to the root, `(ξ, ζ)`, m.
+    place: Vec<Vector2<f64>>,
+    /// Centroid velocity in the plane, `(V_ξ, V_ζ)`, m/s.
+    planar: Vec<Vector2<f64>>,
+}
+
+impl PlaneMotion {
+    /// `(sin θ, cos θ)` of every body's angle in the plane.
+    pub fn trig(&self) -> &[(f64, f64)] {
+        &self.trig
+    }
+}
+
 /// A load on a body at its centroid, world frame: force (N) and moment
 /// (N m).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -70,9 +93,9 @@ pub struct FloatingTree<'m, M, const DOF: usize> {
 }
 
 /// What every body's motion gives at a state, in `P`'s components.
-struct BodyMotion {
+struct BodyMotion<'p> {
     /// Centroid relative to the root in the plane, `(ξ, ζ)`, m.
-    place: Vec<Vector2<f64>>,
+    place: &'p [Vector2<f64>],
     /// Its part from the bodies' rates alone (`v = 0`), m/s.
     relative: Vec<Vector2<f64>>,
     /// The full velocity, `(V_ξ, V_η, V_ζ)`, m/s.
@@ -81,7 +104,7 @@ struct BodyMotion {
     /// m/s² (read only where a body is off the plane).
     gamma: Vec<Vector2<f64>>,
     /// `(sin θ, cos θ)` of every body.
-    trig: Vec<(f64, f64)>,
+    trig: &'p [(f64, f64)],
 }
 
 /// `D w`: the in-plane velocity a unit offset along `η` adds, `(−ω_ζ, ω_ξ)`.
@@ -192,9 +215,16 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     /// [`angular_velocities`](Self::angular_velocities) from one pass over
     /// the planar model).
     pub fn world(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> WorldMotion {
+        self.world_of(&self.plane_motion(pose, rates), pose, rates)
+    }
+
+    /// The bodies in their plane at `pose` and `rates`: one pass over the
+    /// planar model, every angle's sine and cosine in one vectorised pass
+    /// ([`trig::sin_cos_each`](crate::trig::sin_cos_each)).
+    pub fn plane_motion(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> PlaneMotion {
         let n = self.masses.len();
-        let a = plane_rotation(pose.yaw, pose.roll);
-        let trig: Vec<(f64, f64)> = (0..n).map(|k| sin_cos(&pose.planar, k)).collect();
+        let mut trig = vec![(0.0, 0.0); n];
+        crate::trig::sin_cos_each(&pose.planar.as_slice()[2..2 + n], &mut trig);
         let (mut place, mut planar) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
         self.model.body_states_with_trig(
             &trig,
@@ -203,6 +233,24 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             &mut place,
             &mut planar,
         );
+        PlaneMotion {
+            trig,
+            place,
+            planar,
+        }
+    }
+
+    /// [`world`](Self::world) from the bodies' `motion` in their plane at
+    /// `pose` and `rates` ([`plane_motion`](Self::plane_motion)'s).
+    pub fn world_of(
+        &self,
+        motion: &PlaneMotion,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+    ) -> WorldMotion {
+        let n = self.masses.len();
+        let a = plane_rotation(pose.yaw, pose.roll);
+        let (trig, place, planar) = (&motion.trig, &motion.place, &motion.planar);
         let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
         let turning = offset_velocity(&rates.across);
         let mut world = WorldMotion {
@@ -244,7 +292,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     /// Every body's centroid velocity in the world, m/s.
     pub fn velocities(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> Vec<Vector3<f64>> {
         let a = plane_rotation(pose.yaw, pose.roll);
-        self.motion(pose, rates)
+        self.motion(&self.plane_motion(pose, rates), pose, rates)
             .velocity
             .iter()
             .map(|v| a * v)
@@ -288,7 +336,8 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
 
     /// The kinetic energy, J.
     pub fn kinetic_energy(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> f64 {
-        let motion = self.motion(pose, rates);
+        let plane = self.plane_motion(pose, rates);
+        let motion = self.motion(&plane, pose, rates);
         let w = Vector2::new(rates.across.y, rates.across.z);
         (0..self.masses.len())
             .map(|k| {
@@ -337,8 +386,21 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         rates: &PlaneRates<DOF>,
         loads: &[SpatialLoad],
     ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError> {
+        self.accelerations_in(&self.plane_motion(pose, rates), pose, rates, loads)
+    }
+
+    /// [`accelerations`](Self::accelerations) with the bodies' `motion`
+    /// in their plane at `pose` and `rates` found already
+    /// ([`plane_motion`](Self::plane_motion)).
+    pub fn accelerations_in(
+        &self,
+        motion: &PlaneMotion,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+        loads: &[SpatialLoad],
+    ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError> {
         let model = self.model;
-        self.dynamics_with(pose, rates, loads, |trig, planar_loads, qdd| {
+        self.dynamics_with((motion, pose, rates), loads, |trig, planar_loads, qdd| {
             model.tree_dynamics(trig, &rates.planar, planar_loads, qdd)
         })
     }
@@ -349,8 +411,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     /// which the offsets' coupling relies on.
     fn dynamics_with(
         &self,
-        pose: &PlanePose<DOF>,
-        rates: &PlaneRates<DOF>,
+        (plane, pose, rates): (&PlaneMotion, &PlanePose<DOF>, &PlaneRates<DOF>),
         loads: &[SpatialLoad],
         mut solve: impl FnMut(
             &[(f64, f64)],
@@ -368,7 +429,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         }
         let a = plane_rotation(pose.yaw, pose.roll);
         let (sr, cr) = pose.roll.sin_cos();
-        let motion = self.motion(pose, rates);
+        let motion = self.motion(plane, pose, rates);
         let [w_xi, w_zeta] = [rates.across.y, rates.across.z];
         let w_eta = w_zeta * pose.roll.tan();
         let omega = Vector3::new(w_xi, w_eta, w_zeta);
@@ -473,9 +534,27 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     where
         M: TrackModel<DOF>,
     {
+        let motion = self.plane_motion(pose, rates);
+        self.closed_accelerations_in(&motion, pose, rates, loads, closing)
+    }
+
+    /// [`closed_accelerations`](Self::closed_accelerations) with the
+    /// bodies' `motion` in their plane found already
+    /// ([`plane_motion`](Self::plane_motion)).
+    pub fn closed_accelerations_in(
+        &self,
+        motion: &PlaneMotion,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+        loads: &[SpatialLoad],
+        closing: ClosingJoint,
+    ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError>
+    where
+        M: TrackModel<DOF>,
+    {
         let model = self.model;
         let mut forces = vec![Vector2::zeros(); self.masses.len()];
-        self.dynamics_with(pose, rates, loads, |trig, planar_loads, qdd| {
+        self.dynamics_with((motion, pose, rates), loads, |trig, planar_loads, qdd| {
             model.linear_time_dynamics(trig, &rates.planar, planar_loads, closing, qdd, &mut forces)
         })
     }
@@ -501,13 +580,17 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         out
     }
 
-    fn motion(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> BodyMotion {
+    /// What the bodies' motion in their plane (`plane`, at `pose` and
+    /// `rates`) gives.
+    fn motion<'p>(
+        &self,
+        plane: &'p PlaneMotion,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+    ) -> BodyMotion<'p> {
         let n = self.masses.len();
         let q = at_origin(&pose.planar);
-        let trig: Vec<(f64, f64)> = (0..n).map(|k| sin_cos(&pose.planar, k)).collect();
-        let (mut place, mut planar) = (vec![Vector2::zeros(); n], vec![Vector2::zeros(); n]);
-        self.model
-            .body_states_with_trig(&trig, &q, &rates.planar, &mut place, &mut planar);
+        let (trig, place, planar) = (&plane.trig, &plane.place, &plane.planar);
         // The velocities are linear in q̇_i and the root's (v_ξ, v_ζ) moves
         // every body alike: the bodies' rates alone give the rest.
         let root = Vector2::new(rates.planar[0], rates.planar[1]);
@@ -562,8 +645,10 @@ fn at_origin<const DOF: usize>(q: &SVector<f64, DOF>) -> SVector<f64, DOF> {
     q
 }
 
+/// Body `k`'s `(sin θ, cos θ)`: the project's sine and cosine, the same
+/// bits as [`FloatingTree::plane_motion`]'s.
 fn sin_cos<const DOF: usize>(q: &SVector<f64, DOF>, k: usize) -> (f64, f64) {
-    q[k + 2].sin_cos()
+    crate::trig::sin_cos(q[k + 2])
 }
 
 /// A plane vector turned a quarter counter-clockwise (from `ξ` toward

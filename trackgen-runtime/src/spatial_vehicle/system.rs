@@ -22,7 +22,7 @@ use super::{DriveState, GroundForce, MassCentre, SideDrives, SpatialDynamics, Tr
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
-use crate::spatial::{FloatingTree, PlanePose, PlaneRates};
+use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates};
 use crate::vehicle::DriveError;
 
 /// The spatial vehicle in time.
@@ -102,12 +102,11 @@ fn put_rates<M: RecursiveModel<D>, const D: usize>(
 /// (which the plane's turning about its normal leaves unchanged).
 fn closing<T: TrackModel<D>, const D: usize>(
     track: &T,
-    state: &TreeState<D>,
+    (motion, state): (&PlaneMotion, &TreeState<D>),
     options: &MultiplierOptions,
 ) -> ClosingJoint {
-    let q = &state.pose.planar;
-    let c = track.closure(q);
-    let rate = track.closure_jacobian(q) * state.rates.planar;
+    // From the links' sines and cosines found once for the evaluation.
+    let (c, rate) = track.closure_and_rate(motion.trig(), &state.rates.planar);
     ClosingJoint::Constrained {
         stabilisation: options.stabilisation(c, rate),
     }
@@ -160,9 +159,23 @@ where
     /// into `rates` (as many values as the deflections).
     fn loads_at(&self, y: &[f64], rates: &mut [f64]) -> super::SpatialLoads {
         let (hull, right, left, _) = self.states(y);
+        let states = (&hull, &right, &left);
+        self.loads_in(&self.dynamics.plane_motions(states), y, rates)
+    }
+
+    /// [`loads_at`](Self::loads_at) with the trees' motions in their
+    /// planes at `y` found already.
+    fn loads_in(
+        &self,
+        motions: &[PlaneMotion; 3],
+        y: &[f64],
+        rates: &mut [f64],
+    ) -> super::SpatialLoads {
+        let (hull, right, left, _) = self.states(y);
         let r = self.dynamics.ground_states()[0];
         let (right_rates, left_rates) = rates.split_at_mut(r);
-        self.dynamics.loads_with(
+        self.dynamics.loads_in(
+            motions,
             (&hull, &right, &left),
             self.deflections(y),
             [right_rates, left_rates],
@@ -268,15 +281,16 @@ where
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
         let b = self.books_at();
-        let mut loads = self.loads_at(y, &mut dy[Self::TREES..b]);
+        let motions = d.plane_motions((&hull, &right, &left));
+        let mut loads = self.loads_in(&motions, y, &mut dy[Self::TREES..b]);
         let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
         d.apply_drive(&hull, &drive, &mut loads);
         let closing = [
-            closing(d.right.model(), &right, &self.closure),
-            closing(d.left.model(), &left, &self.closure),
+            closing(d.right.model(), (&motions[1], &right), &self.closure),
+            closing(d.left.model(), (&motions[2], &left), &self.closure),
         ];
         let (a_hull, a_right, a_left) = d
-            .accelerations_under(&hull, &right, &left, &loads, closing)
+            .accelerations_in(&motions, (&hull, &right, &left), &loads, closing)
             .map_err(|source| SimulationError::Dynamics { t, source })?;
         let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
