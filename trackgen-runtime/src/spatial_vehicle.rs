@@ -156,6 +156,34 @@ impl Bodies {
         }
     }
 
+    /// The bodies whose centroids are within `reach2` (m², squared) of
+    /// `centre`, or at a distance that is not a number (so a NaN state
+    /// shows as a NaN force), in order. The distances are compared 64
+    /// bodies at a time into a bit mask without branches: a wheel is near
+    /// a handful of a track's links, and a branch per link mispredicts at
+    /// the edges of every run of them.
+    fn near(&self, centre: Vector3<f64>, reach2: f64) -> impl Iterator<Item = usize> + '_ {
+        self.at
+            .chunks(64)
+            .enumerate()
+            .flat_map(move |(chunk, block)| {
+                let mut near = 0u64;
+                for (k, at) in block.iter().enumerate() {
+                    // `!(d² > r²)`: true for NaN.
+                    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+                    let close = !((at - centre).norm_squared() > reach2);
+                    near |= u64::from(close) << k;
+                }
+                std::iter::from_fn(move || {
+                    (near != 0).then(|| {
+                        let k = near.trailing_zeros() as usize;
+                        near &= near - 1;
+                        chunk * 64 + k
+                    })
+                })
+            })
+    }
+
     /// [`of`](Self::of) with the tree's motion in its plane found here.
     fn at<M, const D: usize>(tree: &FloatingTree<'_, M, D>, state: &TreeState<D>) -> Bodies
     where
@@ -468,10 +496,7 @@ where
             _ => part.radius + self.laws.guide.height,
         } + self.shoe.extent();
         let (mut potential, mut dissipation) = (0.0, 0.0);
-        for k in 0..links.at.len() {
-            if (links.at[k] - centre).norm_squared() > reach * reach {
-                continue;
-            }
+        for k in links.near(centre, reach * reach) {
             let face = SpaceFace {
                 ends: self.shoe.inner_face.map(|p| links.point(k, p)),
                 inward: links.turned[k].column(2).into(),

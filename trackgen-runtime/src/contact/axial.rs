@@ -149,6 +149,7 @@ impl RimContact {
     /// the contact's depth more than `−reach` (negative: a gap), where a
     /// guide horn of that height overlaps the wheel. `None` where the rim
     /// is on the face's outer side or further away.
+    #[inline]
     pub fn near(wheel: &SpaceWheel, face: &SpaceFace, reach: f64) -> Option<RimContact> {
         let a = wheel.axle;
         let across = |v: Vector3<f64>| v - a * a.dot(&v);
@@ -266,6 +267,7 @@ impl SpaceSprocket {
 
 /// The link's material point at `x` moving against the other body's
 /// (its centroid, velocity and angular velocity) there, m/s.
+#[inline]
 pub(crate) fn relative_velocity(
     face: &SpaceFace,
     (centre, velocity, angular_velocity): (Vector3<f64>, Vector3<f64>, Vector3<f64>),
