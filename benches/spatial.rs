@@ -8,7 +8,8 @@
 //! planar solves for the coupling).
 //!
 //! And the M113's right-hand side, planar (one side) against spatial
-//! (both sides and the hull).
+//! (both sides and the hull), and the same two settling from their
+//! assembled start for 0.5 s under the main job's integrator.
 //!
 //! `cargo bench -p trackgen-benches --bench spatial`; the numbers are in
 //! docs/performance.md.
@@ -153,6 +154,7 @@ fn m113_derivative(c: &mut Criterion) {
         &upright(&sides.left, half),
     );
     let mut dys = vec![0.0; y.len()];
+    m113_settle(c, (&mut planar, &y0), (&mut spatial, &y));
     let mut group = c.benchmark_group("m113_derivative");
     group.bench_function("planar_one_side", |b| {
         b.iter(|| {
@@ -167,6 +169,59 @@ fn m113_derivative(c: &mut Criterion) {
                 .derivative(0.0, black_box(y.as_slice()), &mut dys)
                 .unwrap()
         })
+    });
+    group.finish();
+}
+
+/// A whole run, side by side: the M113 from its assembled start (the
+/// shoes 1 mm above the ground) settling for 0.5 s under the main job's
+/// Bogacki-Shampine at its default tolerance, planar (one side) against
+/// spatial (both sides and the hull). Each run's steps and evaluations
+/// are printed once: the ratio of the runs' times is the ratio of the
+/// evaluations' times times the ratio of their counts.
+fn m113_settle(
+    c: &mut Criterion,
+    planar: (
+        &mut impl trackgen::integrate::OdeSystem,
+        &trackgen::nalgebra::DVector<f64>,
+    ),
+    spatial: (
+        &mut impl trackgen::integrate::OdeSystem,
+        &trackgen::nalgebra::DVector<f64>,
+    ),
+) {
+    use trackgen::integrate::{Integrator, OdeSystem};
+    const END: f64 = 0.5;
+    fn settle(system: &mut impl OdeSystem, y0: &trackgen::nalgebra::DVector<f64>) -> String {
+        let tolerance = Integrator::DEFAULT_EXPLICIT_TOLERANCE;
+        let method = Integrator::Bs23 {
+            rtol: tolerance,
+            atol: tolerance,
+            max_step: Integrator::DEFAULT_MAX_STEP,
+        };
+        let mut stepper = method.stepper(system.dimension());
+        let (mut t, mut y) = (0.0, y0.clone());
+        while t < END {
+            stepper.step(system, &mut t, &mut y, END).unwrap();
+        }
+        let stats = stepper.stats();
+        format!(
+            "{} steps ({} rejected), {} evaluations",
+            stats.accepted, stats.rejected, stats.evaluations
+        )
+    }
+    let (planar, y_planar) = planar;
+    let (spatial, y_spatial) = spatial;
+    println!("m113_settle/planar_one_side: {}", settle(planar, y_planar));
+    println!(
+        "m113_settle/spatial_both_sides: {}",
+        settle(spatial, y_spatial)
+    );
+    let mut group = c.benchmark_group("m113_settle");
+    group.sample_size(10);
+    group.bench_function("planar_one_side", |b| b.iter(|| settle(planar, y_planar)));
+    group.bench_function("spatial_both_sides", |b| {
+        b.iter(|| settle(spatial, y_spatial))
     });
     group.finish();
 }
