@@ -58,6 +58,7 @@ mod space_contact;
 mod spatial_assembly;
 mod spatial_drive;
 mod spatial_dynamics;
+mod spatial_slope;
 mod spatial_tree;
 mod spatial_turn;
 mod spatial_vehicle;

@@ -81,8 +81,11 @@ impl Brake {
     /// The brake as the drive law it is: a PI on the sprocket's speed with
     /// target 0, its proportional gain the damping, its integral gain the
     /// stiffness, its limit the brake's (the integral, started at 0 when
-    /// the brake is applied, is `−φ`).
-    pub(super) fn as_drive(&self) -> Drive {
+    /// the brake is applied, is `−φ`). Applied from the start of a run,
+    /// as a spatial vehicle's side takes it
+    /// ([`SideDrives`](crate::spatial_vehicle::SideDrives)); `from` is the
+    /// planar vehicle's schedule, not read here.
+    pub fn as_drive(&self) -> Drive {
         Drive::Speed {
             target: Box::new(|_| 0.0),
             proportional: self.damping,
