@@ -1,6 +1,6 @@
 //! Parked across a side slope on its brakes: the `Twin` (3.5 t, gauge
 //! 1.8 m) set down across a 30 % side slope (the M113's published side
-//! slope), both sprockets braked, on firm ground with stiction. Once it
+//! slope), both sprockets braked, on firm ground with stiction (`support::twin::firm`, the steady turns'). Once it
 //! has settled onto the slope ([`SETTLE`]), its hull moves less than 1 mm
 //! over the next 10 s: stiction holds without creep
 //! (`μ = 0.7` against the slope's `tan φ = 0.3`), and a brake holds by an
@@ -8,17 +8,15 @@
 //! regularised friction instead the same vehicle slides down the slope at
 //! 45 mm/s.
 
-use trackgen::contact::GroundFriction;
 use trackgen::contact::sprocket::rolling_radius;
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::laws::Stiction;
 use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{Matrix3, Vector2, Vector3};
-use trackgen::spatial_vehicle::{SideDrives, SpatialLaws, TreeState};
+use trackgen::spatial_vehicle::{SideDrives, TreeState};
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Brake, Vehicle};
 
-use crate::support::twin::{States, System, TRACK, Twin, at_rest, on, sticking};
+use crate::support::twin::{States, System, TRACK, Twin, at_rest, firm, on};
 
 /// The slope, rise over run across the vehicle.
 const SIDE_SLOPE: f64 = 0.3;
@@ -30,19 +28,6 @@ const SIDE_SLOPE: f64 = 0.3;
 /// that time, most of it in the first 3 s (12 mm forward by then, then
 /// back); the bound is on what follows.
 const SETTLE: f64 = 5.0;
-
-/// Firm ground: stiction of 1e6 N/m per point (the steady turns'), the
-/// guide's play 1 mm.
-fn firm() -> SpatialLaws {
-    let mut laws = sticking();
-    laws.ground.friction = GroundFriction::Stiction(Stiction {
-        mu: 0.7,
-        stiffness: 1e6,
-        damping: 2e3,
-    });
-    laws.guide.play = 1e-3;
-    laws
-}
 
 /// A tree's state turned `roll` rad about the world's `x` axis (its yaw
 /// 0): its plane rolled, its root's place turned with it.

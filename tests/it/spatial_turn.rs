@@ -25,12 +25,10 @@
 
 use std::collections::BTreeMap;
 
-use trackgen::contact::GroundFriction;
 use trackgen::integrate::{Integrator, OdeSystem};
-use trackgen::laws::Stiction;
 use trackgen::nalgebra::{Vector2, Vector3};
 use trackgen::spatial::Side;
-use trackgen::spatial_vehicle::{SideDrives, SpatialLaws};
+use trackgen::spatial_vehicle::SideDrives;
 use trackgen::steering::{SkidSteer, SteadyTurn, TrackLoad, steeds_resisting_moment};
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::Drive;
@@ -39,7 +37,7 @@ use trackgen::multibody::RecursiveModel;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::vehicle::Vehicle;
 
-use crate::support::twin::{System, TRACK, Twin, at_rest, on, sticking};
+use crate::support::twin::{MU, System, TRACK, Twin, at_rest, firm, on};
 
 /// What a run shows over its last stretch, averaged over time.
 #[derive(Debug)]
@@ -71,28 +69,11 @@ struct Observed {
 /// The bins the loads are averaged in along the hull, m.
 const BIN: f64 = 0.005;
 
-/// The ground's friction coefficient.
-const MU: f64 = 0.7;
-
 /// The `Twin`'s sprocket's rolling radius, m: its declared teeth and its
 /// track's pitch.
 fn rolling_radius() -> f64 {
     let pitch = TRACK.description().pitch().expect("one pitch");
     trackgen::contact::sprocket::rolling_radius(Twin::geometry().sprocket.teeth, pitch)
-}
-
-/// The `Twin`'s laws on firm ground: stiction of 1e6 N/m per point
-/// (0.14 mm of slide to the limit under the 200 N a point carries; the
-/// damping as `sticking`'s), the guides' play 1 mm.
-fn firm() -> SpatialLaws {
-    let mut laws = sticking();
-    laws.ground.friction = GroundFriction::Stiction(Stiction {
-        mu: MU,
-        stiffness: 1e6,
-        damping: 2e3,
-    });
-    laws.guide.play = 1e-3;
-    laws
 }
 
 /// Sums over time (each value at an accepted step's end times the

@@ -170,16 +170,33 @@ pub fn at_rest(heading: f64, (x, y): (f64, f64)) -> States {
     (hull, track(-half), track(half))
 }
 
+/// The shoes' friction coefficient on the ground under stiction.
+pub const MU: f64 = 0.7;
+
 /// The `Twin`'s laws with stiction on the ground (`k_t` 1e5 N/m and
 /// `c_t` 2e3 N s/m per point: about 2 mm of deflection at the Coulomb
 /// limit under the quarter-tonne each point carries).
 pub fn sticking() -> SpatialLaws {
     let mut laws = laws();
     laws.ground.friction = GroundFriction::Stiction(Stiction {
-        mu: 0.7,
+        mu: MU,
         stiffness: 1e5,
         damping: 2e3,
     });
+    laws
+}
+
+/// The `Twin`'s laws on firm ground: stiction of 1e6 N/m per point
+/// (0.14 mm of slide to the limit under the 200 N a point carries; the
+/// damping as [`sticking`]'s), the guides' play 1 mm.
+pub fn firm() -> SpatialLaws {
+    let mut laws = sticking();
+    laws.ground.friction = GroundFriction::Stiction(Stiction {
+        mu: MU,
+        stiffness: 1e6,
+        damping: 2e3,
+    });
+    laws.guide.play = 1e-3;
     laws
 }
 

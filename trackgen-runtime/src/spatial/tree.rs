@@ -476,8 +476,8 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             rhs += e * offset_force(in_plane + m * Vector2::new(0.0, g_in) - m * motion.gamma[k]);
         }
         let mut planar = SVector::<f64, DOF>::zeros();
-        solve(&motion.trig, &planar_loads, &mut planar)?;
-        let mut mass = self.across_mass_at(&motion.place, &motion.trig);
+        solve(motion.trig, &planar_loads, &mut planar)?;
+        let mut mass = self.across_mass_at(motion.place, motion.trig);
         if self.offsets.iter().all(|&e| e == 0.0) {
             let across = mass
                 .cholesky()
@@ -503,7 +503,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
                 })
                 .collect();
             let mut moved = SVector::<f64, DOF>::zeros();
-            solve(&motion.trig, &shifted, &mut moved)?;
+            solve(motion.trig, &shifted, &mut moved)?;
             *column = moved - planar;
             let coupled = mass.column(j) + self.coupling_transpose(&pose.planar, column);
             mass.set_column(j, &coupled);

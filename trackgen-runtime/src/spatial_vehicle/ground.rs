@@ -145,6 +145,7 @@ where
 /// Each of `deflections` relaxing off the ground, its rate into `rates`
 /// (from the start); what each stores and dissipates added to the books
 /// in turn.
+#[inline]
 fn relax(
     law: &Stiction,
     deflections: &[f64],

@@ -160,23 +160,23 @@ where
     fn loads_at(&self, y: &[f64], rates: &mut [f64]) -> super::SpatialLoads {
         let (hull, right, left, _) = self.states(y);
         let states = (&hull, &right, &left);
-        self.loads_in(&self.dynamics.plane_motions(states), y, rates)
+        self.loads_in(&self.dynamics.plane_motions(states), states, y, rates)
     }
 
-    /// [`loads_at`](Self::loads_at) with the trees' motions in their
-    /// planes at `y` found already.
+    /// [`loads_at`](Self::loads_at) with the trees' states in `y` and
+    /// their motions in their planes found already.
     fn loads_in(
         &self,
         motions: &[PlaneMotion; 3],
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
         y: &[f64],
         rates: &mut [f64],
     ) -> super::SpatialLoads {
-        let (hull, right, left, _) = self.states(y);
         let r = self.dynamics.ground_states()[0];
         let (right_rates, left_rates) = rates.split_at_mut(r);
         self.dynamics.loads_in(
             motions,
-            (&hull, &right, &left),
+            (hull, right, left),
             self.deflections(y),
             [right_rates, left_rates],
         )
@@ -282,7 +282,8 @@ where
         let d = &self.dynamics;
         let b = self.books_at();
         let motions = d.plane_motions((&hull, &right, &left));
-        let mut loads = self.loads_in(&motions, y, &mut dy[Self::TREES..b]);
+        let states = (&hull, &right, &left);
+        let mut loads = self.loads_in(&motions, states, y, &mut dy[Self::TREES..b]);
         let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
         d.apply_drive(&hull, &drive, &mut loads);
         let closing = [
