@@ -56,6 +56,7 @@ mod soft_ground;
 mod soil_laws;
 mod space_contact;
 mod spatial_assembly;
+mod spatial_books;
 mod spatial_drive;
 mod spatial_dynamics;
 mod spatial_slope;

@@ -11,12 +11,12 @@
 use trackgen::contact::sprocket::rolling_radius;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::multibody::RecursiveModel;
-use trackgen::nalgebra::{Matrix3, Vector2, Vector3};
-use trackgen::spatial_vehicle::{SideDrives, TreeState};
+use trackgen::nalgebra::{Vector2, Vector3};
+use trackgen::spatial_vehicle::SideDrives;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Brake, Vehicle};
 
-use crate::support::twin::{States, System, TRACK, Twin, at_rest, firm, on};
+use crate::support::twin::{System, TRACK, Twin, across_slope, firm, on};
 
 /// The slope, rise over run across the vehicle.
 const SIDE_SLOPE: f64 = 0.3;
@@ -29,25 +29,6 @@ const SIDE_SLOPE: f64 = 0.3;
 /// back); the bound is on what follows.
 const SETTLE: f64 = 5.0;
 
-/// A tree's state turned `roll` rad about the world's `x` axis (its yaw
-/// 0): its plane rolled, its root's place turned with it.
-fn rolled<const D: usize>(mut state: TreeState<D>, roll: f64) -> TreeState<D> {
-    let (s, c) = roll.sin_cos();
-    let turn = Matrix3::new(1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c);
-    state.pose.origin = turn * state.pose.origin;
-    state.pose.roll += roll;
-    state
-}
-
-/// The `Twin` at rest on level ground turned onto the slope: level ground
-/// through the origin turned by `atan 0.3` about `x` is the slope
-/// `z = 0.3 y`, so the start sits on it as it sat on the level.
-fn on_the_slope() -> States {
-    let roll = SIDE_SLOPE.atan();
-    let (hull, right, left) = at_rest(0.0, (0.0, 0.0));
-    (rolled(hull, roll), rolled(right, roll), rolled(left, roll))
-}
-
 /// The hull's root's place at `y`, m.
 fn hull_at(system: &System, y: &[f64]) -> Vector3<f64> {
     system.states(y).0.pose.origin
@@ -59,7 +40,7 @@ fn parked_across_a_30_percent_side_slope_the_hull_holds_within_a_millimetre() {
     // sprocket sets the brake's damping (`Brake::parking`: ratio 0.5);
     // its limit is the torque of half that share's weight at the
     // sprocket (the pull of a 30° slope).
-    let start = on_the_slope();
+    let start = across_slope(SIDE_SLOPE);
     let field = HeightField::level().tilted(Vector2::new(0.0, SIDE_SLOPE));
     let free = on(field, firm(), SideDrives::free());
     let mass = free

@@ -35,7 +35,7 @@ use trackgen::contact::GroundFriction;
 use trackgen::contact::axial::GuideLaw;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::laws::Stiction;
-use trackgen::nalgebra::{DVector, SVector, Vector3};
+use trackgen::nalgebra::{DVector, Matrix3, SVector, Vector3};
 use trackgen::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
 use trackgen::spatial_vehicle::{
     SideDrives, SpatialDynamics, SpatialLaws, SpatialSystem, TreeState,
@@ -172,6 +172,27 @@ pub fn at_rest(heading: f64, (x, y): (f64, f64)) -> States {
 
 /// The shoes' friction coefficient on the ground under stiction.
 pub const MU: f64 = 0.7;
+
+/// A tree's state turned `roll` rad about the world's `x` axis (its yaw
+/// 0): its plane rolled, its root's place turned with it.
+fn rolled<const D: usize>(mut state: TreeState<D>, roll: f64) -> TreeState<D> {
+    let (s, c) = roll.sin_cos();
+    let turn = Matrix3::new(1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c);
+    state.pose.origin = turn * state.pose.origin;
+    state.pose.roll += roll;
+    state
+}
+
+/// The `Twin` at rest heading along `x` across a side slope of `slope`
+/// (rise over run along `y`, the field `z = slope · y`): level ground
+/// through the origin turned by `atan slope` about `x` is that slope, so
+/// [`at_rest`]'s start turned with it sits on the slope as it sat on the
+/// level.
+pub fn across_slope(slope: f64) -> States {
+    let roll = slope.atan();
+    let (hull, right, left) = at_rest(0.0, (0.0, 0.0));
+    (rolled(hull, roll), rolled(right, roll), rolled(left, roll))
+}
 
 /// The `Twin`'s laws with stiction on the ground (`k_t` 1e5 N/m and
 /// `c_t` 2e3 N s/m per point: about 2 mm of deflection at the Coulomb
