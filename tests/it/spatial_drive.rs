@@ -11,7 +11,8 @@
 
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, Vector3};
-use trackgen::spatial_vehicle::{SideDrives, SpatialSystem};
+use trackgen::spatial::Side;
+use trackgen::spatial_vehicle::{SideDrives, SideOutputs, SpatialOutputs, SpatialSystem};
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, DriveError};
 
@@ -131,6 +132,109 @@ fn a_left_turn_mirrors_the_right_turn() {
         values(&left_turn, &mirror).as_slice(),
         1e-9,
         "the right turn against the left turn's mirror",
+    );
+    // What the turns show is mirrored too: the yaw rate and everything
+    // sideways reversed, the sides exchanged, the rest the same.
+    let (l, r) = (
+        left_turn.outputs(0.3, a.as_slice()).expect("the outputs"),
+        right_turn.outputs(0.3, b.as_slice()).expect("the outputs"),
+    );
+    let shown = |o: &SpatialOutputs, mirror: bool| {
+        let m = if mirror { -1.0 } else { 1.0 };
+        let (near, far) = if mirror { (1, 0) } else { (0, 1) };
+        let side = |s: &SideOutputs| {
+            [
+                s.sprocket_speed,
+                s.sprocket_torque,
+                s.sprocket_power,
+                s.belt_speed,
+                s.ground_speed,
+                s.slip,
+                s.ground_force.x,
+                m * s.ground_force.y,
+                s.ground_force.z,
+                m * s.ground_yaw_moment,
+            ]
+        };
+        let mut v = vec![
+            m * o.yaw_rate,
+            m * o.lateral_acceleration,
+            o.acceleration.x,
+            o.acceleration.z,
+            o.turn_radius,
+        ];
+        v.extend(side(&o.sides[near]));
+        v.extend(side(&o.sides[far]));
+        v
+    };
+    same(
+        &shown(&r, false),
+        &shown(&l, true),
+        1e-9,
+        "the turns' outputs",
+    );
+    assert!(l.yaw_rate > 0.0 && l.lateral_acceleration > 0.0, "{l:?}");
+    assert!(
+        l.sides[0].slip > l.sides[1].slip,
+        "the outer track slips more (still speeding up, both drive): {l:?}"
+    );
+}
+
+/// What a turn shows (`SpatialSystem::outputs`) against independent
+/// routes: the centre of mass's acceleration against the rate of its
+/// velocity (`SpatialSystem::mass_centre`) over two RK4 steps of 10 µs
+/// from the state (the one-sided second-order difference, its error
+/// `h² |a''|/3` with the steps' own: 2e-6 m/s² apart, measured; bound
+/// 1e-5 g);
+/// each side's ground force and yaw moment against the sums over its
+/// points (`SpatialSystem::ground_forces`); the belt's speed against the
+/// sprocket's; the power against torque times speed.
+#[test]
+fn a_turns_outputs_are_what_newton_and_the_state_say() {
+    let mut system = driven(SideDrives {
+        right: belt(1.2, 0.2),
+        left: belt(0.4, 0.2),
+    });
+    let start = at_rest(0.0, (0.0, 0.0));
+    let y0 = run(&mut system, &start, 0.3, FIXED);
+    let shown = system.outputs(0.3, y0.as_slice()).expect("the outputs");
+    let h = 1e-5;
+    let mut stepper = Integrator::Rk4 { step: h }.stepper(system.dimension());
+    let (mut t, mut y) = (0.3, y0.clone());
+    let mut velocities = vec![system.mass_centre(y.as_slice()).velocity];
+    for k in 1..=2 {
+        let end = 0.3 + k as f64 * h;
+        stepper
+            .step(&mut system, &mut t, &mut y, end)
+            .expect("the step");
+        velocities.push(system.mass_centre(y.as_slice()).velocity);
+    }
+    let rate = (-3.0 * velocities[0] + 4.0 * velocities[1] - velocities[2]) / (2.0 * h);
+    let g = 9.81;
+    assert!(
+        (shown.acceleration - rate).amax() < 1e-5 * g,
+        "{} against {}",
+        shown.acceleration,
+        rate
+    );
+    let centre = system.mass_centre(y0.as_slice()).position;
+    let points = system.ground_forces(y0.as_slice());
+    for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
+        let mine = points.iter().filter(|p| p.side == side);
+        let force: Vector3<f64> = mine.clone().map(|p| p.force).sum();
+        let moment: f64 = mine.map(|p| (p.at - centre).cross(&p.force).z).sum();
+        let out = &shown.sides[s];
+        assert!((out.ground_force - force).amax() < 1e-9 * force.norm());
+        assert!((out.ground_yaw_moment - moment).abs() < 1e-9 * force.norm());
+        assert_eq!(out.sprocket_power, out.sprocket_torque * out.sprocket_speed);
+    }
+    let radius = shown.centre.velocity.xy().norm() / shown.yaw_rate;
+    assert!((shown.turn_radius - radius).abs() < 1e-12 * radius);
+    println!(
+        "acceleration {} against the velocity's rate {} (apart {:.1e} m/s²)",
+        shown.acceleration,
+        rate,
+        (shown.acceleration - rate).amax()
     );
 }
 

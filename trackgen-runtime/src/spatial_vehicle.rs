@@ -33,9 +33,11 @@
 
 mod drive;
 mod ground;
+mod outputs;
 mod system;
 
 pub use drive::{DriveState, SideDrives};
+pub use outputs::{SideOutputs, SpatialOutputs};
 pub use system::{SpatialEnergy, SpatialSystem};
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};

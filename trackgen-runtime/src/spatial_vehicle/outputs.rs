@@ -1,0 +1,162 @@
+//! What a spatial run shows at a state, as a vehicle engineer reads a
+//! turn: the hull's heading and yaw rate, the centre of mass's motion and
+//! acceleration (lateral in the hull's heading), the radius of its path,
+//! and per side the sprocket's speed, torque and power, the belt's speed,
+//! the track's slip, and the ground's force and yaw moment on the track.
+
+use nalgebra::Vector3;
+
+use super::{MassCentre, SpatialSystem};
+use crate::integrate::SimulationError;
+use crate::multibody::{ChassisModel, TrackModel};
+use crate::spatial::Side;
+
+/// One side's drive and ground at a state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SideOutputs {
+    /// The sprocket's speed relative to the frame, rad/s (planar sense:
+    /// driving forward turns it negative).
+    pub sprocket_speed: f64,
+    /// The drive's torque on it, N m (planar sense).
+    pub sprocket_torque: f64,
+    /// The drive's power, W: torque times speed.
+    pub sprocket_power: f64,
+    /// The belt's speed, m/s: how fast the ground run moves rearward
+    /// along the hull, the sprocket's speed times its rolling radius
+    /// (forward driving positive).
+    pub belt_speed: f64,
+    /// The speed of the track's centre line over the ground along the
+    /// hull's heading, m/s: the centre of mass's, less the yaw rate times
+    /// the track's lateral place from it (the links' centroid, to the
+    /// left positive).
+    pub ground_speed: f64,
+    /// The slip `1 − v/u` (`v` the ground speed, `u` the belt's):
+    /// positive driving, negative skidding, NaN where the belt stands.
+    pub slip: f64,
+    /// The ground's force on the track, N (world axes).
+    pub ground_force: Vector3<f64>,
+    /// The ground's moment on the track about the vertical through the
+    /// centre of mass, N m (counter-clockwise seen from above).
+    pub ground_yaw_moment: f64,
+}
+
+/// What the vehicle shows at a state ([`SpatialSystem::outputs`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpatialOutputs {
+    /// The hull's heading (its plane's yaw), rad.
+    pub heading: f64,
+    /// The hull's rate of turning about the vertical, rad/s (to the left
+    /// positive).
+    pub yaw_rate: f64,
+    /// The centre of mass: where, how fast.
+    pub centre: MassCentre,
+    /// The centre of mass's acceleration, m/s² (world axes): the ground's
+    /// force over the mass, plus gravity (the only other external force).
+    pub acceleration: Vector3<f64>,
+    /// Its component to the hull's left in the horizontal plane, m/s².
+    pub lateral_acceleration: f64,
+    /// The radius of the centre of mass's path, m: its horizontal speed
+    /// over the yaw rate's size (infinite driving straight).
+    pub turn_radius: f64,
+    /// The right side's, then the left's.
+    pub sides: [SideOutputs; 2],
+}
+
+impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
+    SpatialSystem<'_, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    /// What the vehicle shows at time `t` and state `y`; a drive whose
+    /// demand is not finite is the run's error, as in the run
+    /// ([`drive_state`](Self::drive_state)).
+    pub fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {
+        let (hull, right, left, _) = self.states(y);
+        let d = &self.dynamics;
+        let drive = self.drive_state(t, y)?;
+        let centre = self.mass_centre(y);
+        let heading = hull.pose.yaw;
+        let yaw_rate = d.hull.world(&hull.pose, &hull.rates).angular_velocities[0].z;
+        let (forward, leftward) = (
+            Vector3::new(heading.cos(), heading.sin(), 0.0),
+            Vector3::new(-heading.sin(), heading.cos(), 0.0),
+        );
+        let mut force = [Vector3::zeros(); 2];
+        let mut moment = [0.0; 2];
+        for point in self.ground_forces(y) {
+            let s = side_index(point.side);
+            let arm = point.at - centre.position;
+            force[s] += point.force;
+            moment[s] += arm.x * point.force.y - arm.y * point.force.x;
+        }
+        let lateral = [
+            lateral_place(
+                d.right.positions(&right.pose),
+                d.right.masses(),
+                &centre,
+                &leftward,
+            ),
+            lateral_place(
+                d.left.positions(&left.pose),
+                d.left.masses(),
+                &centre,
+                &leftward,
+            ),
+        ];
+        let along = centre.velocity.dot(&forward);
+        let sides = [0, 1].map(|s| {
+            let (speed, torque) = (drive.speed[s], drive.torque[s]);
+            let belt_speed = d.sprockets[s].map_or(0.0, |p| -speed * p.rolling_radius);
+            let ground_speed = along - yaw_rate * lateral[s];
+            SideOutputs {
+                sprocket_speed: speed,
+                sprocket_torque: torque,
+                sprocket_power: torque * speed,
+                belt_speed,
+                ground_speed,
+                slip: if belt_speed == 0.0 {
+                    f64::NAN
+                } else {
+                    1.0 - ground_speed / belt_speed
+                },
+                ground_force: force[s],
+                ground_yaw_moment: moment[s],
+            }
+        });
+        let gravity = Vector3::new(0.0, 0.0, -d.hull.gravity());
+        let acceleration = (force[0] + force[1]) / centre.mass + gravity;
+        let horizontal = centre.velocity.xy().norm();
+        Ok(SpatialOutputs {
+            heading,
+            yaw_rate,
+            centre,
+            acceleration,
+            lateral_acceleration: acceleration.dot(&leftward),
+            turn_radius: horizontal / yaw_rate.abs(),
+            sides,
+        })
+    }
+}
+
+/// `Side::Right` 0, `Side::Left` 1: the order of every per-side pair.
+fn side_index(side: Side) -> usize {
+    match side {
+        Side::Right => 0,
+        Side::Left => 1,
+    }
+}
+
+/// A track's mass-weighted centroid's place to the hull's left of the
+/// centre of mass, m.
+fn lateral_place(
+    at: Vec<Vector3<f64>>,
+    masses: &[f64],
+    centre: &MassCentre,
+    leftward: &Vector3<f64>,
+) -> f64 {
+    let mass: f64 = masses.iter().sum();
+    let weighted: Vector3<f64> = at.iter().zip(masses).map(|(p, m)| *m * p).sum();
+    (weighted / mass - centre.position).dot(leftward)
+}
