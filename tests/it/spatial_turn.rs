@@ -27,7 +27,6 @@ use std::collections::BTreeMap;
 
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{Vector2, Vector3};
-use trackgen::spatial::Side;
 use trackgen::spatial_vehicle::SideDrives;
 use trackgen::steering::{SkidSteer, SteadyTurn, TrackLoad, steeds_resisting_moment};
 use trackgen::terrain::field::HeightField;
@@ -106,10 +105,7 @@ impl Sums {
             self.belt[s] -= dt * drive.speed[s] * rolling_radius();
         }
         for point in system.ground_forces(y) {
-            let s = match point.side {
-                Side::Right => 0,
-                Side::Left => 1,
-            };
+            let s = point.side.index();
             let d = point.at - centre.position;
             let n = dt * point.force.z;
             *self.bins[s]

@@ -221,8 +221,10 @@ pub trait TrackModel<const DOF: usize>: RecursiveModel<DOF> {
         trig: &[(f64, f64)],
         qd: &SVector<f64, DOF>,
     ) -> (Vector2<f64>, Vector2<f64>) {
-        let mut columns = vec![Vector2::zeros(); trig.len()];
-        self.closure_columns(trig, &mut columns);
+        // On the stack: this runs once per track and evaluation.
+        let mut columns = [Vector2::zeros(); DOF];
+        let columns = &mut columns[..trig.len()];
+        self.closure_columns(trig, columns);
         let (mut gap, mut rate) = (Vector2::zeros(), Vector2::zeros());
         for (j, column) in columns.iter().enumerate() {
             gap += Vector2::new(column.y, -column.x);

@@ -24,6 +24,14 @@ impl Side {
             Side::Right => -1.0,
         }
     }
+
+    /// Its place in every per-side pair: right 0, left 1.
+    pub fn index(self) -> usize {
+        match self {
+            Side::Right => 0,
+            Side::Left => 1,
+        }
+    }
 }
 
 /// The spatial vehicle's layout across its width, as declared: what the

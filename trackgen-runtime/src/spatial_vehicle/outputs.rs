@@ -9,7 +9,6 @@ use nalgebra::Vector3;
 use super::{MassCentre, SpatialSystem};
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
-use crate::spatial::Side;
 
 /// One side's drive and ground at a state.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -75,8 +74,8 @@ where
     pub fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
-        let drive = self.drive_state(t, y)?;
-        let centre = self.mass_centre(y);
+        let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
+        let centre = d.mass_centre((&hull, &right, &left));
         let heading = hull.pose.yaw;
         let yaw_rate = d.hull.world(&hull.pose, &hull.rates).angular_velocities[0].z;
         let (forward, leftward) = (
@@ -85,8 +84,8 @@ where
         );
         let mut force = [Vector3::zeros(); 2];
         let mut moment = [0.0; 2];
-        for point in self.ground_forces(y) {
-            let s = side_index(point.side);
+        for point in d.ground_forces((&right, &left), self.deflections(y)) {
+            let s = point.side.index();
             let arm = point.at - centre.position;
             force[s] += point.force;
             moment[s] += arm.x * point.force.y - arm.y * point.force.x;
@@ -137,14 +136,6 @@ where
             turn_radius: horizontal / yaw_rate.abs(),
             sides,
         })
-    }
-}
-
-/// `Side::Right` 0, `Side::Left` 1: the order of every per-side pair.
-fn side_index(side: Side) -> usize {
-    match side {
-        Side::Right => 0,
-        Side::Left => 1,
     }
 }
 

@@ -29,7 +29,7 @@ use crate::vehicle::DriveError;
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
     /// Its dynamics at a state.
     pub dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>,
-    drives: SideDrives,
+    pub(super) drives: SideDrives,
     closure: MultiplierOptions,
 }
 
@@ -149,7 +149,7 @@ where
     }
 
     /// Each track's ground deflections in `y` (right, left).
-    fn deflections<'y>(&self, y: &'y [f64]) -> [&'y [f64]; 2] {
+    pub(super) fn deflections<'y>(&self, y: &'y [f64]) -> [&'y [f64]; 2] {
         let r = self.dynamics.ground_states()[0];
         let (right, rest) = y[Self::TREES..self.books_at()].split_at(r);
         [right, rest]
@@ -281,8 +281,8 @@ where
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
         let b = self.books_at();
-        let motions = d.plane_motions((&hull, &right, &left));
         let states = (&hull, &right, &left);
+        let motions = d.plane_motions(states);
         let mut loads = self.loads_in(&motions, states, y, &mut dy[Self::TREES..b]);
         let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
         d.apply_drive(&hull, &drive, &mut loads);
@@ -291,7 +291,7 @@ where
             closing(d.left.model(), (&motions[2], &left), &self.closure),
         ];
         let (a_hull, a_right, a_left) = d
-            .accelerations_in(&motions, (&hull, &right, &left), &loads, closing)
+            .accelerations_in(&motions, states, &loads, closing)
             .map_err(|source| SimulationError::Dynamics { t, source })?;
         let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
