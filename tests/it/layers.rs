@@ -103,6 +103,7 @@ pub const RUNTIME: Graph = &[
     (
         "spatial_vehicle",
         &[
+            "assembly",
             "laws",
             "multibody",
             "contact",
@@ -168,6 +169,7 @@ pub const RUNTIME: Graph = &[
             "contact",
             "dynamics",
             "spatial",
+            "spatial_vehicle",
             "vehicle",
         ],
     ),
@@ -220,13 +222,16 @@ pub const APP: Graph = &[
     ("fmu", &["cli", "offered"]),
     ("mobility", &["cli", "offered"]),
     ("steer", &["console", "cli", "offered", "modes"]),
+    ("spatial", &["console", "cli", "offered"]),
     (
         "run",
         &["console", "cli", "offered", "outputs", "report", "modes"],
     ),
     (
         "app",
-        &["cli", "offered", "run", "mobility", "modes", "steer", "fmu"],
+        &[
+            "cli", "offered", "run", "mobility", "modes", "steer", "spatial", "fmu",
+        ],
     ),
     ("lib", &["app"]),
 ];

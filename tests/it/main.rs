@@ -60,6 +60,7 @@ mod spatial_books;
 mod spatial_drive;
 mod spatial_dynamics;
 mod spatial_slope;
+mod spatial_steering;
 mod spatial_tree;
 mod spatial_turn;
 mod spatial_vehicle;

@@ -8,6 +8,7 @@ use std::process::ExitCode;
 use clap::builder::PossibleValuesParser;
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use trackgen::mobility::Published;
+use trackgen::spatial_vehicle::SpatialVehicleSystem;
 use trackgen::vehicle::{Powertrain, Vehicle};
 
 use crate::cli::RunArgs;
@@ -15,12 +16,13 @@ use crate::fmu::FmuArgs;
 use crate::mobility::MobilityArgs;
 use crate::modes::ModesArgs;
 use crate::offered::Offered;
+use crate::spatial::SpatialArgs;
 use crate::steer::SteerArgs;
 
-/// Drive a declared planar tracked vehicle over a course (`run`, the
-/// default), find its mobility limits (`mobility`), its modes at rest
-/// (`modes`), estimate its steady turns (`steer`), or pack it as an FMU
-/// (`fmu`).
+/// Drive a declared tracked vehicle over a course (`run`, the default;
+/// `spatial` in 3-D), find its mobility limits (`mobility`), its modes at
+/// rest (`modes`), estimate its steady turns (`steer`), or pack it as an
+/// FMU (`fmu`).
 #[derive(Parser, Debug)]
 #[command(
     version,
@@ -50,19 +52,24 @@ pub(crate) enum Command {
     /// Its steady turns on firm ground, estimated from its loads at rest
     /// by the general theory of skid steering.
     Steer(SteerArgs),
+    /// The main job in 3-D: both tracks and the hull, settled, driven over
+    /// the course, then turned (a vehicle declared with a `tracks` block).
+    Spatial(SpatialArgs),
     /// Packs the vehicle's built FMU library (`export_fmu!`) into FMI 3.0
     /// and 2.0 archives.
     Fmu(FmuArgs),
 }
 
 /// The subcommands' names, each of which takes `--vehicle`.
-const SUBCOMMANDS: [&str; 5] = ["run", "mobility", "modes", "steer", "fmu"];
+const SUBCOMMANDS: [&str; 6] = ["run", "mobility", "modes", "steer", "spatial", "fmu"];
 
 /// A vehicle the application offers: its type, the name `--vehicle` and
 /// the output folders know it by, and what its declaration does not say.
 pub struct Entry {
     offered: Offered,
     dispatch: fn(&Offered, Command) -> ExitCode,
+    /// `spatial` for a vehicle declared with both tracks.
+    spatial: Option<fn(&Offered, &SpatialArgs) -> ExitCode>,
 }
 
 impl Entry {
@@ -80,6 +87,16 @@ impl Entry {
                 steer_ratios: Vec::new(),
             },
             dispatch: dispatch::<V>,
+            spatial: None,
+        }
+    }
+
+    /// [`of`](Self::of) a vehicle declared with a `tracks` block: its
+    /// `spatial` subcommand drives both tracks and the hull in 3-D.
+    pub fn of_spatial<V: SpatialVehicleSystem>() -> Self {
+        Entry {
+            spatial: Some(crate::spatial::main::<V>),
+            ..Entry::of::<V>()
         }
     }
 
@@ -126,6 +143,14 @@ fn dispatch<V: Vehicle>(entry: &Offered, command: Command) -> ExitCode {
         Command::Mobility(args) => crate::mobility::main::<V>(entry, &args),
         Command::Modes(args) => crate::modes::main::<V>(entry, &args),
         Command::Steer(args) => crate::steer::main::<V>(entry, &args),
+        Command::Spatial(_) => {
+            eprintln!(
+                "error: the vehicle `{}` is offered in the plane only: declare it with a \
+                 `tracks` block and offer it with `Entry::of_spatial`",
+                entry.name()
+            );
+            ExitCode::FAILURE
+        }
         Command::Fmu(args) => crate::fmu::main::<V>(entry, &args),
     }
 }
@@ -207,13 +232,17 @@ impl App {
             Command::Mobility(a) => a.vehicle.clone(),
             Command::Modes(a) => a.vehicle.clone(),
             Command::Steer(a) => a.vehicle.clone(),
+            Command::Spatial(a) => a.vehicle.clone(),
             Command::Fmu(a) => a.vehicle.clone(),
         };
         // The parser took only offered names; without a name, the first.
         let entry = name
             .and_then(|n| self.vehicles.iter().find(|e| e.offered.name == n))
             .unwrap_or(&self.vehicles[0]);
-        (entry.dispatch)(&entry.offered, command)
+        match (&command, entry.spatial) {
+            (Command::Spatial(args), Some(spatial)) => spatial(&entry.offered, args),
+            _ => (entry.dispatch)(&entry.offered, command),
+        }
     }
 }
 
@@ -272,7 +301,10 @@ mod tests {
             .map(|c| c.get_name())
             .filter(|n| *n != "help")
             .collect();
-        assert_eq!(subcommands, ["run", "mobility", "modes", "steer", "fmu"]);
+        assert_eq!(
+            subcommands,
+            ["run", "mobility", "modes", "steer", "spatial", "fmu"]
+        );
         for sub in subcommands {
             let table = guide_table(sub);
             let options: Vec<_> = command

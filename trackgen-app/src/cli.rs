@@ -24,49 +24,15 @@ pub struct RunArgs {
     /// Target forward speed, m/s, from -20 to 20 (negative: in reverse).
     #[arg(long, default_value_t = Scenario::SPEED, value_name = "M/S", value_parser = speed)]
     pub speed: f64,
-    /// Bump height, m, from -0.5 to 0.5 (negative: a dip). The bump is a
-    /// cosine 1 m wide.
-    #[arg(long, default_value_t = Scenario::BUMP_HEIGHT, value_name = "M", value_parser = bump_height)]
-    pub bump_height: f64,
+    /// The course: a bump (the default), a terrain file, a random
+    /// course or an obstacle.
+    #[command(flatten)]
+    pub course: CourseArgs,
     /// The soil: `rigid`, or a soil of Wong's table (Bekker–Wong soft
     /// soil over the same profile, leaving a rut): dry-sand, sandy-loam,
     /// clay, heavy-clay, lete-sand, snow.
     #[arg(long, alias = "terrain", default_value = "rigid", value_name = "SOIL", value_parser = soil)]
     pub soil: Soil,
-    /// Where the bump's centre is, m, from -10000 to 10000 (the chassis
-    /// centroid starts at 0 and the vehicle spans about -2.4 to 2.4).
-    #[arg(long, default_value_t = Scenario::BUMP_AT, value_name = "M", value_parser = position)]
-    pub bump_at: f64,
-    /// Drive over a terrain profile read from a CSV file instead of the
-    /// bump: a header `x,z`, then one point per line (m), x never
-    /// decreasing (two points at one x are a vertical face); `#` starts a
-    /// comment line. An error names the line.
-    #[arg(long, alias = "terrain-file", value_name = "FILE.csv", conflicts_with_all = ["roughness", "obstacle"])]
-    pub course_file: Option<PathBuf>,
-    /// Drive over a random course instead of the bump: an ISO 8608 class
-    /// (A to H), or a detrended RMS elevation with its unit (1in, 25mm,
-    /// 0.03m; up to 0.5 m). Sampled every 5 cm, flat up to x = 5 m, the
-    /// roughness fading in over the next 5 m.
-    #[arg(long, value_name = "CLASS|RMS", value_parser = course::roughness, conflicts_with = "obstacle")]
-    pub roughness: Option<Roughness>,
-    /// The random course's seed: the same seed, the same course, bit for
-    /// bit.
-    #[arg(long, default_value_t = 1, value_name = "N")]
-    pub seed: u64,
-    /// The random course's length, m, from 10 to 100000 (default: what the
-    /// run can cover, 1.2 × |speed| × duration + 20 m).
-    #[arg(long, value_name = "M", value_parser = course_length)]
-    pub course_length: Option<f64>,
-    /// Drive at an obstacle instead of the bump, on flat ground before and
-    /// after: half-round:R, step:H (negative: down), gap:WIDTH:DEPTH,
-    /// ditch:DEPTH:BOTTOM:ANGLE, barrier:HEIGHT:TOP:ANGLE,
-    /// grade:SLOPE:LENGTH (m; angles in degrees from the horizontal, up to
-    /// 90; a slope as rise over run). Placed at `--obstacle-at`.
-    #[arg(long, value_name = "SPEC", value_parser = course::obstacle)]
-    pub obstacle: Option<Obstacle>,
-    /// Where the obstacle starts, m, from -10000 to 10000.
-    #[arg(long, default_value_t = Scenario::OBSTACLE_AT, value_name = "M", value_parser = position)]
-    pub obstacle_at: f64,
     /// The output interval, s, from 1e-4 to 1 (ride figures want 1–2 ms:
     /// they are printed when it is at most 2 ms).
     #[arg(long, default_value_t = Scenario::OUTPUT_EVERY, value_name = "SECONDS", value_parser = output_interval)]
@@ -118,33 +84,62 @@ pub struct RunArgs {
     pub out: Option<PathBuf>,
 }
 
-impl RunArgs {
-    /// The run these options name.
-    pub fn scenario(&self) -> Scenario {
-        Scenario {
-            course: self.course(),
-            soil: self.soil,
-            speed: self.speed,
-            settle: self.settle,
-            ramp: self.ramp,
-            engine: self.engine,
-            method: self.integrator,
-            tolerance: self.tolerance,
-            output_every: self.output_every,
-            duration: self.duration,
-            start: self.start,
-        }
-    }
+/// The course a run drives: the bump (the default), a terrain file, a
+/// random course or an obstacle (the main job's, in the plane or in 3-D,
+/// where every profile lies across the vehicle's whole width).
+#[derive(clap::Args, Debug, Clone)]
+pub struct CourseArgs {
+    /// Bump height, m, from -0.5 to 0.5 (negative: a dip). The bump is a
+    /// cosine 1 m wide.
+    #[arg(long, default_value_t = Scenario::BUMP_HEIGHT, value_name = "M", value_parser = bump_height)]
+    pub bump_height: f64,
+    /// Where the bump's centre is, m, from -10000 to 10000 (the chassis
+    /// centroid starts at 0 and the vehicle spans about -2.4 to 2.4).
+    #[arg(long, default_value_t = Scenario::BUMP_AT, value_name = "M", value_parser = position)]
+    pub bump_at: f64,
+    /// Drive over a terrain profile read from a CSV file instead of the
+    /// bump: a header `x,z`, then one point per line (m), x never
+    /// decreasing (two points at one x are a vertical face); `#` starts a
+    /// comment line. An error names the line.
+    #[arg(long, alias = "terrain-file", value_name = "FILE.csv", conflicts_with_all = ["roughness", "obstacle"])]
+    pub course_file: Option<PathBuf>,
+    /// Drive over a random course instead of the bump: an ISO 8608 class
+    /// (A to H), or a detrended RMS elevation with its unit (1in, 25mm,
+    /// 0.03m; up to 0.5 m). Sampled every 5 cm, flat up to x = 5 m, the
+    /// roughness fading in over the next 5 m.
+    #[arg(long, value_name = "CLASS|RMS", value_parser = course::roughness, conflicts_with = "obstacle")]
+    pub roughness: Option<Roughness>,
+    /// The random course's seed: the same seed, the same course, bit for
+    /// bit.
+    #[arg(long, default_value_t = 1, value_name = "N")]
+    pub seed: u64,
+    /// The random course's length, m, from 10 to 100000 (default: what the
+    /// run can cover, 1.2 × |speed| × duration + 20 m).
+    #[arg(long, value_name = "M", value_parser = course_length)]
+    pub course_length: Option<f64>,
+    /// Drive at an obstacle instead of the bump, on flat ground before and
+    /// after: half-round:R, step:H (negative: down), gap:WIDTH:DEPTH,
+    /// ditch:DEPTH:BOTTOM:ANGLE, barrier:HEIGHT:TOP:ANGLE,
+    /// grade:SLOPE:LENGTH (m; angles in degrees from the horizontal, up to
+    /// 90; a slope as rise over run). Placed at `--obstacle-at`.
+    #[arg(long, value_name = "SPEC", value_parser = course::obstacle)]
+    pub obstacle: Option<Obstacle>,
+    /// Where the obstacle starts, m, from -10000 to 10000.
+    #[arg(long, default_value_t = Scenario::OBSTACLE_AT, value_name = "M", value_parser = position)]
+    pub obstacle_at: f64,
+}
 
+impl CourseArgs {
     /// The course: a terrain file, a random course or an obstacle if one
-    /// is given, else the bump.
-    fn course(&self) -> CourseSpec {
+    /// is given, else the bump; a random course as long as a run at
+    /// `speed` m/s for `duration` s can cover unless its length is given.
+    pub fn spec(&self, speed: f64, duration: f64) -> CourseSpec {
         if let Some(path) = &self.course_file {
             CourseSpec::File(path.clone())
         } else if let Some(roughness) = self.roughness {
             let length = self
                 .course_length
-                .unwrap_or_else(|| course::rough_length(self.speed, self.duration))
+                .unwrap_or_else(|| course::rough_length(speed, duration))
                 .clamp(10.0, 1e5);
             CourseSpec::Rough {
                 roughness,
@@ -161,6 +156,25 @@ impl RunArgs {
                 at: self.bump_at,
                 height: self.bump_height,
             }
+        }
+    }
+}
+
+impl RunArgs {
+    /// The run these options name.
+    pub fn scenario(&self) -> Scenario {
+        Scenario {
+            course: self.course.spec(self.speed, self.duration),
+            soil: self.soil,
+            speed: self.speed,
+            settle: self.settle,
+            ramp: self.ramp,
+            engine: self.engine,
+            method: self.integrator,
+            tolerance: self.tolerance,
+            output_every: self.output_every,
+            duration: self.duration,
+            start: self.start,
         }
     }
 

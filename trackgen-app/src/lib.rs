@@ -43,6 +43,7 @@ mod offered;
 mod outputs;
 mod report;
 mod run;
+mod spatial;
 mod steer;
 
 pub use app::{App, Entry, main};

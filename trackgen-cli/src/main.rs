@@ -14,13 +14,13 @@ use trackgen_app::{App, Entry};
 fn main() -> ExitCode {
     App::new()
         .vehicle(
-            Entry::of::<M113>()
+            Entry::of_spatial::<M113>()
                 .published(&m113::PUBLISHED)
                 .gauge(m113::GAUGE)
                 .steer_ratios(&m113::STEER_RATIOS),
         )
         .vehicle(
-            Entry::of::<Marder>()
+            Entry::of_spatial::<Marder>()
                 .published(&marder::PUBLISHED)
                 .gauge(marder::GAUGE),
         )

@@ -124,7 +124,13 @@ pub mod __private {
         ArmSpring, BodyDescription, BodyLoad, ChassisModel, ChassisPart, ClosingJoint, Closure,
         DynamicsError, LoopJoint, PartKind, RecursiveModel, TrackModel, TreeDescription,
     };
-    pub use crate::spatial::{OutOfPlaneInertia, Side, SpatialLayout, SpatialVehicle};
+    pub use crate::spatial::{
+        OutOfPlaneInertia, Side, SpatialError, SpatialLayout, SpatialVehicle,
+    };
+    pub use crate::spatial_vehicle::{
+        SpatialDynamics, SpatialLaws, SpatialSystem, SpatialVehicleSystem,
+    };
+    pub use crate::terrain::field::HeightField;
     pub use crate::trig::{sin_cos, sin_cos_each};
     pub use crate::vehicle::{
         ContactFit, DeclaredContact, DeclaredPair, Drive, Driveline, EngineDynamics, Geometry,

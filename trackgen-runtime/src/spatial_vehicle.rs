@@ -31,13 +31,17 @@
 //! has its own drive ([`SideDrives`]). [`SpatialSystem`] integrates the
 //! vehicle in time.
 
+mod declared;
 mod drive;
 mod ground;
 mod outputs;
+mod steering;
 mod system;
 
+pub use declared::{SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, SideDrives};
 pub use outputs::{SideOutputs, SpatialOutputs};
+pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
 pub use system::{SpatialEnergy, SpatialSystem};
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
@@ -242,6 +246,8 @@ pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const 
     gaps: Gaps,
     laws: SpatialLaws,
     field: HeightField,
+    /// The tracks' centre planes apart, m.
+    gauge: f64,
 }
 
 impl<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize>
@@ -306,6 +312,7 @@ where
             profile,
             laws,
             field,
+            gauge: layout.gauge,
         })
     }
 

@@ -90,6 +90,29 @@ pub fn spatial(
                 }
             }
         }
+
+        impl #rt::SpatialVehicleSystem for #name {
+            type Spatial = #rt::SpatialSystem<
+                'static, #hull_name, #hull_dof, #right_name, #right_dof, #left_name, #left_dof,
+            >;
+
+            fn spatial(
+                laws: #rt::SpatialLaws,
+                field: #rt::HeightField,
+            ) -> ::core::result::Result<Self::Spatial, #rt::SpatialError> {
+                let geometry = <Self as #rt::Vehicle>::geometry();
+                #rt::SpatialDynamics::new(
+                    &#hull_name,
+                    (&#right_name, &#left_name),
+                    &<Self as #rt::SpatialVehicle>::layout(),
+                    geometry.shoe,
+                    geometry.sprocket,
+                    laws,
+                    field,
+                )
+                .map(#rt::SpatialSystem::new)
+            }
+        }
     }
 }
 

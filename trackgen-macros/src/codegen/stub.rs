@@ -68,7 +68,13 @@ fn stub(item: &Item) -> TokenStream {
                 out.extend(vehicle_impl(name, (&track, &chassis), dofs));
             }
             if let Some(tracks) = &vehicle.tracks {
-                out.extend(spatial(vis, name, &track, tracks));
+                out.extend(spatial(
+                    vis,
+                    name,
+                    &track,
+                    tracks,
+                    vehicle.running.is_some(),
+                ));
             }
             out
         }
@@ -158,13 +164,15 @@ fn models(name: &Ident, chassis: bool) -> TokenStream {
 }
 
 /// A `tracks` block's items: `NameHull` with the constants of its parts,
-/// the mirrored side's track where declared, and the `SpatialVehicle`
-/// impl.
+/// the mirrored side's track where declared, the `SpatialVehicle` impl,
+/// and the `SpatialVehicleSystem` impl where `vehicle` (the stubs
+/// implement `Vehicle`).
 fn spatial(
     vis: &Visibility,
     name: &Ident,
     declared: &Ident,
     tracks: &crate::ir::Tracks,
+    vehicle: bool,
 ) -> TokenStream {
     let rt = runtime();
     let hull = format_ident!("{}Hull", name);
@@ -215,6 +223,21 @@ fn spatial(
             }
         }
     });
+    // Only where the stubs implement `Vehicle`, which it requires.
+    if vehicle {
+        out.extend(quote! {
+            #[allow(unused_variables)]
+            impl #rt::SpatialVehicleSystem for #name {
+                type Spatial = #rt::SpatialSystem<'static, #hull, #dh, #right, #dr, #left, #dl>;
+                fn spatial(
+                    laws: #rt::SpatialLaws,
+                    field: #rt::HeightField,
+                ) -> ::core::result::Result<Self::Spatial, #rt::SpatialError> {
+                    ::core::unreachable!("the declaration did not compile")
+                }
+            }
+        });
+    }
     out.extend(models(&hull, true));
     out
 }

@@ -12,7 +12,7 @@
 
 use nalgebra::Vector3;
 
-use super::{SpatialDynamics, SpatialLoads, TreeState};
+use super::{HeadingHold, SpatialDynamics, SpatialLoads, TreeState};
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::plane_rotation;
@@ -75,24 +75,38 @@ where
     L: TrackModel<DL>,
 {
     /// What the drives do at time `t` and the hull's state, with each
-    /// controller's `integrals` (rad, right then left): a side without a
-    /// sprocket takes no torque; a drive's demand that is not finite
-    /// stops the run ([`Drive::checked_torque`]).
+    /// controller's `integrals` (rad, right then left) and the driver's
+    /// `steering`, if any (the right belt's target `+Δu/2`, the left's
+    /// `−Δu/2`, [`HeadingHold::difference`]): a side without a sprocket
+    /// takes no torque; a drive's demand or a heading wanted that is not
+    /// finite stops the run ([`Drive::checked_torque`]).
     pub fn drive(
         &self,
         t: f64,
         hull: &TreeState<DH>,
-        (drives, integrals): (&SideDrives, [f64; 2]),
+        (drives, steering, integrals): (&SideDrives, Option<&HeadingHold>, [f64; 2]),
     ) -> Result<DriveState, SimulationError> {
         let qd = &hull.rates.planar;
+        let difference = match steering {
+            None => 0.0,
+            Some(hold) => {
+                hold.difference(t, hull.pose.yaw, self.gauge)
+                    .ok_or(SimulationError::NonFinite {
+                        t,
+                        what: "the steering's heading",
+                    })?
+            }
+        };
         let mut state = DriveState::default();
         for (s, drive) in drives.each().into_iter().enumerate() {
             let Some(sprocket) = self.sprockets[s] else {
                 continue;
             };
             let omega = qd[2 + sprocket.body] - qd[2];
-            let (torque, rate) = drive.checked_torque(
-                t,
+            // Right (index 0) outside in a left turn.
+            let trim = [0.5, -0.5][s] * difference;
+            let (torque, rate) = drive.checked_torque_trimmed(
+                (t, trim),
                 omega,
                 sprocket.rolling_radius,
                 integrals[s],

@@ -1,5 +1,5 @@
 //! What a spatial run shows at a state, as a vehicle engineer reads a
-//! turn: the hull's heading and yaw rate, the centre of mass's motion and
+//! turn: the hull's heading, pitch, roll and yaw rate, the centre of mass's motion and
 //! acceleration (lateral in the hull's heading), the radius of its path,
 //! and per side the sprocket's speed, torque and power, the belt's speed,
 //! the track's slip, and the ground's force and yaw moment on the track.
@@ -44,6 +44,11 @@ pub struct SideOutputs {
 pub struct SpatialOutputs {
     /// The hull's heading (its plane's yaw), rad.
     pub heading: f64,
+    /// The frame's pitch in the hull's plane, rad (nose up positive).
+    pub pitch: f64,
+    /// The hull's plane's roll about its heading, rad (the left side up
+    /// positive, a turn right about the forward axis).
+    pub roll: f64,
     /// The hull's rate of turning about the vertical, rad/s (to the left
     /// positive).
     pub yaw_rate: f64,
@@ -74,7 +79,7 @@ where
     pub fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
-        let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
+        let drive = d.drive(t, &hull, self.driver(y))?;
         let centre = d.mass_centre((&hull, &right, &left));
         let heading = hull.pose.yaw;
         let yaw_rate = d.hull.world(&hull.pose, &hull.rates).angular_velocities[0].z;
@@ -129,6 +134,8 @@ where
         let horizontal = centre.velocity.xy().norm();
         Ok(SpatialOutputs {
             heading,
+            pitch: hull.pose.planar[2],
+            roll: hull.pose.roll,
             yaw_rate,
             centre,
             acceleration,

@@ -18,18 +18,22 @@
 
 use nalgebra::{DVector, SVector, Vector3};
 
-use super::{DriveState, GroundForce, MassCentre, SideDrives, SpatialDynamics, TreeState};
+use super::{
+    DriveState, GroundForce, HeadingHold, MassCentre, SideDrives, SpatialDynamics, SteeringError,
+    TreeState,
+};
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates};
-use crate::vehicle::DriveError;
+use crate::vehicle::{Drive, DriveError};
 
 /// The spatial vehicle in time.
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
     /// Its dynamics at a state.
     pub dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>,
     pub(super) drives: SideDrives,
+    pub(super) steering: Option<HeadingHold>,
     closure: MultiplierOptions,
 }
 
@@ -52,7 +56,12 @@ impl SpatialEnergy {
     /// The books' balance: what is in the bodies, stored and dissipated,
     /// less the drives' work; constant.
     pub fn total(&self) -> f64 {
-        self.kinetic + self.gravity + self.stored + self.dissipated - self.driven
+        self.held() + self.dissipated - self.driven
+    }
+
+    /// What the vehicle holds: kinetic, gravity's and stored, J.
+    pub fn held(&self) -> f64 {
+        self.kinetic + self.gravity + self.stored
     }
 }
 
@@ -125,6 +134,7 @@ where
         SpatialSystem {
             dynamics,
             drives: SideDrives::free(),
+            steering: None,
             closure: MultiplierOptions::default(),
         }
     }
@@ -135,6 +145,32 @@ where
         drives.check()?;
         self.drives = drives;
         Ok(self)
+    }
+
+    /// The system with a driver steering it to `hold`'s heading through
+    /// its two speed drives ([`HeadingHold`]); a setting out of range, or
+    /// a side without a speed drive, is refused.
+    pub fn with_steering(mut self, hold: HeadingHold) -> Result<Self, SteeringError> {
+        self.check_steering(&hold)?;
+        self.steering = Some(hold);
+        Ok(self)
+    }
+
+    /// Why `hold` cannot steer this system: a setting out of range, or a
+    /// side without a speed drive.
+    pub(super) fn check_steering(&self, hold: &HeadingHold) -> Result<(), SteeringError> {
+        hold.check()?;
+        let speed = |d: &Drive| matches!(d, Drive::Speed { .. });
+        if !(speed(&self.drives.right) && speed(&self.drives.left)) {
+            return Err(SteeringError::NotSpeedDrives);
+        }
+        Ok(())
+    }
+
+    /// The drives, the steering and the controllers' integrals at `y`,
+    /// as [`SpatialDynamics::drive`] takes them.
+    pub(super) fn driver(&self, y: &[f64]) -> (&SideDrives, Option<&HeadingHold>, [f64; 2]) {
+        (&self.drives, self.steering.as_ref(), self.integrals(y))
     }
 
     /// Where the trees end in the state and the ground's deflections
@@ -191,8 +227,7 @@ where
     /// What the drives do at time `t` and state `y`.
     pub fn drive_state(&self, t: f64, y: &[f64]) -> Result<DriveState, SimulationError> {
         let (hull, ..) = self.states(y);
-        self.dynamics
-            .drive(t, &hull, (&self.drives, self.integrals(y)))
+        self.dynamics.drive(t, &hull, self.driver(y))
     }
 
     /// What the ground gives each ground point on it at `y`
@@ -284,7 +319,7 @@ where
         let states = (&hull, &right, &left);
         let motions = d.plane_motions(states);
         let mut loads = self.loads_in(&motions, states, y, &mut dy[Self::TREES..b]);
-        let drive = d.drive(t, &hull, (&self.drives, self.integrals(y)))?;
+        let drive = d.drive(t, &hull, self.driver(y))?;
         d.apply_drive(&hull, &drive, &mut loads);
         let closing = [
             closing(d.right.model(), (&motions[1], &right), &self.closure),

@@ -172,6 +172,40 @@ impl Drive {
         Ok((torque, rate))
     }
 
+    /// [`checked_torque`](Self::checked_torque) with a speed drive's
+    /// target moved by `trim` m/s (a driver's steering: each side's belt
+    /// apart from the speed wanted); other drives take no trim.
+    pub fn checked_torque_trimmed(
+        &self,
+        (t, trim): (f64, f64),
+        omega: f64,
+        radius: f64,
+        state: f64,
+        cap: TorqueCap,
+    ) -> Result<(f64, f64), SimulationError> {
+        let demand = self.checked_demand(t)?;
+        let demand = match self {
+            Drive::Speed { .. } => demand + trim,
+            _ => demand,
+        };
+        let (torque, rate, _) = self.law(demand, omega, radius, state, cap);
+        Ok((torque, rate))
+    }
+
+    /// The driver's demand at `t` (a speed drive's target speed, a torque
+    /// drive's scheduled torque), refused if NaN or infinite.
+    fn checked_demand(&self, t: f64) -> Result<f64, SimulationError> {
+        let demand = self.demand(t);
+        if !demand.is_finite() {
+            let what = match self {
+                Drive::Speed { .. } => "the drive's target speed",
+                _ => "the drive's torque schedule",
+            };
+            return Err(SimulationError::NonFinite { t, what });
+        }
+        Ok(demand)
+    }
+
     /// [`checked_torque`](Self::checked_torque)'s torque and integral
     /// rate with their [`slopes`](Self::slopes), and the way the driver
     /// asks the sprocket to turn as a sign (0: to stand), from one reading
@@ -184,14 +218,7 @@ impl Drive {
         state: f64,
         cap: TorqueCap,
     ) -> Result<(f64, f64, DriveSlopes, f64), SimulationError> {
-        let demand = self.demand(t);
-        if !demand.is_finite() {
-            let what = match self {
-                Drive::Speed { .. } => "the drive's target speed",
-                _ => "the drive's torque schedule",
-            };
-            return Err(SimulationError::NonFinite { t, what });
-        }
+        let demand = self.checked_demand(t)?;
         let (torque, rate, slopes) = self.law(demand, omega, radius, state, cap);
         Ok((torque, rate, slopes, self.direction(demand, radius)))
     }

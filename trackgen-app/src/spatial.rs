@@ -1,0 +1,449 @@
+//! The main job in 3-D (`spatial`): the vehicle with both tracks and its
+//! hull floating in space, assembled on its course (the profile laid
+//! across its whole width), settled, driven to a target speed by a speed
+//! controller on each sprocket, over the course's bump, then steered
+//! through a turn by a driver holding a heading.
+//!
+//! Writes `spatial.csv` (one row per output interval: the hull's pose and
+//! motion, the centre of mass's, and per side the sprocket's speed,
+//! torque and power, the belt's and the ground's speeds, slip, and the
+//! ground's force and yaw moment) and `spatial.svg` (the path seen from
+//! above, and the heading against time).
+
+use std::error::Error;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::time::Instant;
+
+use indicatif::{ProgressBar, ProgressStyle};
+use trackgen::integrate::{Integrator, OdeSystem, Stats};
+use trackgen::scenario::Scenario;
+use trackgen::simulate::EnergyBalance;
+use trackgen::spatial_vehicle::{
+    HeadingHold, SideDrives, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem,
+};
+use trackgen::terrain::field::{FieldShape, HeightField};
+use trackgen::vehicle::speed_ramp;
+
+use crate::cli::{CourseArgs, within};
+use crate::console::say;
+use crate::offered::Offered;
+
+/// Drive the vehicle in 3-D: both tracks and the hull, settled, driven
+/// to speed over the course, then turned by a driver holding a heading.
+///
+/// Writes `spatial.csv` and `spatial.svg`.
+#[derive(clap::Args, Debug)]
+#[command(allow_negative_numbers = true)]
+pub struct SpatialArgs {
+    /// The vehicle (the application's first by default).
+    #[arg(long, value_name = "NAME")]
+    pub vehicle: Option<String>,
+    /// Target forward speed, m/s, from -20 to 20 (negative: in reverse).
+    #[arg(long, default_value_t = Scenario::SPEED, value_name = "M/S", value_parser = speed)]
+    pub speed: f64,
+    /// The course, across the vehicle's whole width.
+    #[command(flatten)]
+    pub course: CourseArgs,
+    /// The turn, degrees to the left (negative: to the right), from -360
+    /// to 360; 0 drives straight.
+    #[arg(long, default_value_t = TURN, value_name = "DEG", value_parser = turn)]
+    pub turn: f64,
+    /// When the turn starts, s: 0 to 1e6.
+    #[arg(long, default_value_t = TURN_AT, value_name = "SECONDS", value_parser = seconds)]
+    pub turn_at: f64,
+    /// How long the heading wanted takes to turn, s: 0 to 1e6 (0: a step,
+    /// the driver steering as hard as the belts allow).
+    #[arg(long, default_value_t = TURN_TIME, value_name = "SECONDS", value_parser = seconds)]
+    pub turn_time: f64,
+    /// Settling time before driving, s: 0 to 1e6.
+    #[arg(long, default_value_t = Scenario::SETTLE, value_name = "SECONDS", value_parser = seconds)]
+    pub settle: f64,
+    /// Time to ramp the speed up, s: 0 to 1e6 (0: a step).
+    #[arg(long, default_value_t = Scenario::RAMP, value_name = "SECONDS", value_parser = seconds)]
+    pub ramp: f64,
+    /// Simulated time, s: more than 0, at most 1e6.
+    #[arg(long, default_value_t = DURATION, value_name = "SECONDS", value_parser = duration)]
+    pub duration: f64,
+    /// The output interval, s, from 1e-4 to 1.
+    #[arg(long, default_value_t = Scenario::OUTPUT_EVERY, value_name = "SECONDS", value_parser = output_interval)]
+    pub output_every: f64,
+    /// Bogacki-Shampine's tolerance, relative and absolute, from 1e-12 to
+    /// 0.1 (the books are held to 10 × it).
+    #[arg(long, default_value_t = Integrator::DEFAULT_EXPLICIT_TOLERANCE, value_name = "TOL", value_parser = crate::cli::tolerance)]
+    pub tolerance: f64,
+    /// Output folder (created if missing); default `out/<vehicle>`.
+    #[arg(long, value_name = "DIR", value_parser = crate::cli::folder)]
+    pub out: Option<PathBuf>,
+}
+
+/// The turn's default angle, degrees.
+pub const TURN: f64 = 90.0;
+/// When it starts by default, s: past the default bump at the default
+/// speed.
+pub const TURN_AT: f64 = 8.0;
+/// How long it takes by default, s.
+pub const TURN_TIME: f64 = 4.0;
+/// The default simulated time, s: the turn and 2 s after it.
+pub const DURATION: f64 = 14.0;
+/// The driver's heading gain, 1/s: an error of heading halves in about
+/// 0.5 s.
+const HEADING_GAIN: f64 = 1.5;
+/// The yaw rate the driver's largest belt-speed difference asks for,
+/// rad/s: the difference is the gauge times it.
+const MAX_YAW_RATE: f64 = 1.0;
+
+fn speed(s: &str) -> Result<f64, String> {
+    within(s, Scenario::SPEED_RANGE, "a speed")
+}
+
+fn turn(s: &str) -> Result<f64, String> {
+    within(
+        s,
+        trackgen::scenario::Range::closed(-360.0, 360.0, "from -360 to 360 degrees"),
+        "a turn",
+    )
+}
+
+fn seconds(s: &str) -> Result<f64, String> {
+    within(s, Scenario::TIME_RANGE, "a time")
+}
+
+fn duration(s: &str) -> Result<f64, String> {
+    within(s, Scenario::DURATION_RANGE, "a duration")
+}
+
+fn output_interval(s: &str) -> Result<f64, String> {
+    within(s, Scenario::OUTPUT_EVERY_RANGE, "an output interval")
+}
+
+/// `spatial` for the vehicle `V`: exits 1, saying why, when the run cannot
+/// be made or stops early (the rows up to then kept).
+pub fn main<V: SpatialVehicleSystem>(entry: &Offered, args: &SpatialArgs) -> ExitCode {
+    match drive::<V>(entry, args) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// What the run showed, gathered row by row.
+#[derive(Default)]
+struct Summary {
+    /// The smallest turn radius, m, and the largest lateral acceleration's
+    /// size, m/s², while turning.
+    radius: Option<f64>,
+    lateral: f64,
+    last: Option<(f64, SpatialOutputs)>,
+}
+
+impl Summary {
+    fn add(&mut self, t: f64, out: &SpatialOutputs, turning: bool) {
+        if turning {
+            self.radius = Some(
+                self.radius
+                    .map_or(out.turn_radius, |r| r.min(out.turn_radius)),
+            );
+            self.lateral = self.lateral.max(out.lateral_acceleration.abs());
+        }
+        self.last = Some((t, *out));
+    }
+}
+
+fn drive<V: SpatialVehicleSystem>(
+    entry: &Offered,
+    args: &SpatialArgs,
+) -> Result<(), Box<dyn Error>> {
+    let course = args.course.spec(args.speed, args.duration);
+    let terrain = course.terrain()?;
+    let field = HeightField {
+        base: FieldShape::Profile(terrain.clone()),
+        ..HeightField::level()
+    };
+    field.check()?;
+    let layout = V::layout();
+    let assembling = Instant::now();
+    let mut system = V::spatial(V::declared_laws(), field)?;
+    let mut y = system.assembled(&terrain)?;
+    let assembly = assembling.elapsed().as_secs_f64();
+    let target = || speed_ramp(args.settle, args.ramp, args.speed);
+    system.set_drives(SideDrives {
+        right: V::speed_drive(target()),
+        left: V::speed_drive(target()),
+    })?;
+    let angle = args.turn.to_radians();
+    system.set_steering(HeadingHold::turn(
+        angle,
+        (args.turn_at, args.turn_time),
+        HEADING_GAIN,
+        layout.gauge * MAX_YAW_RATE,
+    ))?;
+    let shoes = (V::RIGHT_TRACK_DOF - 2, V::LEFT_TRACK_DOF - 2);
+    say!(
+        "{} in 3-D: {} + {} shoes (right, left), gauge {:.3} m; assembled in {:.0} ms",
+        V::NAME,
+        shoes.0,
+        shoes.1,
+        layout.gauge,
+        assembly * 1e3
+    );
+    say!(
+        "settle {:.1} s, then to {:.1} m/s in {:.1} s; {}; turning {:.0}° {} from t = {:.1} s over {:.1} s; {:.1} s in all",
+        args.settle,
+        args.speed,
+        args.ramp,
+        course.describe(),
+        args.turn.abs(),
+        if args.turn >= 0.0 { "left" } else { "right" },
+        args.turn_at,
+        args.turn_time,
+        args.duration
+    );
+    let dir = args
+        .out
+        .clone()
+        .unwrap_or_else(|| PathBuf::from("out").join(entry.name()));
+    std::fs::create_dir_all(&dir)?;
+    let mut csv = csv::Writer::from_path(dir.join("spatial.csv"))?;
+    csv.write_record(COLUMNS)?;
+    let method = Integrator::Bs23 {
+        rtol: args.tolerance,
+        atol: args.tolerance,
+        max_step: Integrator::DEFAULT_MAX_STEP,
+    };
+    let mut stepper = method.stepper(system.dimension());
+    let before = system.energy(y.as_slice());
+    let bar = ProgressBar::new((args.duration * 1000.0) as u64);
+    bar.set_style(ProgressStyle::with_template(
+        "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
+    )?);
+    let mut summary = Summary::default();
+    let mut path = Vec::new();
+    let started = Instant::now();
+    let mut t = 0.0;
+    let mut row = 0u64;
+    let outcome = loop {
+        let out = match system.outputs(t, y.as_slice()) {
+            Ok(out) => out,
+            Err(e) => break Err(e),
+        };
+        let turning = t >= args.turn_at && t <= args.turn_at + args.turn_time;
+        summary.add(t, &out, turning && angle != 0.0);
+        path.push((t, out.centre.position.x, out.centre.position.y, out.heading));
+        csv.write_record(record(t, &out).iter().map(|v| v.to_string()))?;
+        row += 1;
+        if t >= args.duration {
+            break Ok(());
+        }
+        let next = (row as f64 * args.output_every).min(args.duration);
+        let mut failed = None;
+        while t < next {
+            if let Err(e) = stepper.step(&mut system, &mut t, &mut y, next) {
+                failed = Some(e);
+                break;
+            }
+        }
+        bar.set_position((t * 1000.0) as u64);
+        if let Some(e) = failed {
+            break Err(e);
+        }
+    };
+    bar.finish_and_clear();
+    let wall = started.elapsed().as_secs_f64();
+    csv.flush()?;
+    let after = system.energy(y.as_slice());
+    let books = EnergyBalance {
+        motor_work: after.driven - before.driven,
+        energy_change: after.held() - before.held(),
+        dissipated: after.dissipated - before.dissipated,
+    };
+    report(&summary, (t, wall), &stepper.stats(), &books, args);
+    let mut written = vec!["spatial.csv"];
+    if path.len() >= 2 {
+        draw(&dir.join("spatial.svg"), &path, V::NAME)?;
+        written.push("spatial.svg");
+    }
+    say!(
+        "wrote {}/{{{}}} ({row} rows)",
+        dir.display(),
+        written.join(", ")
+    );
+    outcome
+        .map_err(|e| format!("the run stopped early: {e} (rows up to t = {t:.4} s written)").into())
+}
+
+/// Prints the run's time, its steps, the turn and the books.
+fn report(
+    summary: &Summary,
+    (t, wall): (f64, f64),
+    stats: &Stats,
+    books: &EnergyBalance,
+    args: &SpatialArgs,
+) {
+    say!(
+        "ran {t:.2} s in {wall:.2} s wall ({:.1}× real time): {} steps ({} rejected), {} evaluations",
+        t / wall,
+        stats.accepted,
+        stats.rejected,
+        stats.evaluations
+    );
+    if let Some((_, last)) = &summary.last {
+        say!(
+            "at the end: heading {:.1}° (asked {:.1}°), speed {:.2} m/s, pitch {:.2}°, roll {:.2}°",
+            last.heading.to_degrees(),
+            args.turn,
+            last.centre.velocity.xy().norm(),
+            last.pitch.to_degrees(),
+            last.roll.to_degrees()
+        );
+    }
+    if let Some(radius) = summary.radius {
+        say!(
+            "in the turn: smallest radius {radius:.2} m, largest lateral acceleration {:.2} m/s² ({:.3} g)",
+            summary.lateral,
+            summary.lateral / 9.80665
+        );
+    }
+    let bound = EnergyBalance::bound_for_tolerance(args.tolerance);
+    say!(
+        "books: the drives' work {:.1} kJ, held {:+.1} kJ, dissipated {:.1} kJ: residual {:.1e} (bound {bound:.0e})",
+        books.motor_work / 1e3,
+        books.energy_change / 1e3,
+        books.dissipated / 1e3,
+        books.residual()
+    );
+}
+
+/// The CSV's columns: SI units, angles in rad, sides `r_` and `l_`.
+const COLUMNS: [&str; 36] = [
+    "t",
+    "x",
+    "y",
+    "z",
+    "heading",
+    "pitch",
+    "roll",
+    "yaw_rate",
+    "vx",
+    "vy",
+    "vz",
+    "ax",
+    "ay",
+    "az",
+    "lateral_acceleration",
+    "turn_radius",
+    "r_sprocket_speed",
+    "r_sprocket_torque",
+    "r_sprocket_power",
+    "r_belt_speed",
+    "r_ground_speed",
+    "r_slip",
+    "r_ground_fx",
+    "r_ground_fy",
+    "r_ground_fz",
+    "r_ground_yaw_moment",
+    "l_sprocket_speed",
+    "l_sprocket_torque",
+    "l_sprocket_power",
+    "l_belt_speed",
+    "l_ground_speed",
+    "l_slip",
+    "l_ground_fx",
+    "l_ground_fy",
+    "l_ground_fz",
+    "l_ground_yaw_moment",
+];
+
+/// One row of [`COLUMNS`].
+fn record(t: f64, out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
+    let c = &out.centre;
+    let mut row = vec![
+        t,
+        c.position.x,
+        c.position.y,
+        c.position.z,
+        out.heading,
+        out.pitch,
+        out.roll,
+        out.yaw_rate,
+        c.velocity.x,
+        c.velocity.y,
+        c.velocity.z,
+        out.acceleration.x,
+        out.acceleration.y,
+        out.acceleration.z,
+        out.lateral_acceleration,
+        out.turn_radius,
+    ];
+    for side in &out.sides {
+        row.extend([
+            side.sprocket_speed,
+            side.sprocket_torque,
+            side.sprocket_power,
+            side.belt_speed,
+            side.ground_speed,
+            side.slip,
+            side.ground_force.x,
+            side.ground_force.y,
+            side.ground_force.z,
+            side.ground_yaw_moment,
+        ]);
+    }
+    row.try_into().expect("one value per column")
+}
+
+/// The path seen from above and the heading against time.
+fn draw(file: &Path, path: &[(f64, f64, f64, f64)], name: &str) -> Result<(), Box<dyn Error>> {
+    use plotters::prelude::*;
+    let root = SVGBackend::new(file, (1000, 480)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (top, heading) = root.split_horizontally(520);
+    let (x0, x1) = bounds(path.iter().map(|p| p.1));
+    let (y0, y1) = bounds(path.iter().map(|p| p.2));
+    // One metre the same length both ways: the wider span sets the scale.
+    let span = (x1 - x0).max(y1 - y0) / 2.0 + 1.0;
+    let (xm, ym) = ((x0 + x1) / 2.0, (y0 + y1) / 2.0);
+    let mut chart = ChartBuilder::on(&top)
+        .caption(
+            format!("{name}: the centre of mass from above"),
+            ("sans-serif", 18),
+        )
+        .margin(10)
+        .x_label_area_size(35)
+        .y_label_area_size(45)
+        .build_cartesian_2d(xm - span..xm + span, ym - span..ym + span)?;
+    chart
+        .configure_mesh()
+        .x_desc("x, m")
+        .y_desc("y, m")
+        .draw()?;
+    chart.draw_series(LineSeries::new(path.iter().map(|p| (p.1, p.2)), &BLUE))?;
+    let (t0, t1) = bounds(path.iter().map(|p| p.0));
+    let (h0, h1) = bounds(path.iter().map(|p| p.3.to_degrees()));
+    let mut chart = ChartBuilder::on(&heading)
+        .caption("heading", ("sans-serif", 18))
+        .margin(10)
+        .x_label_area_size(35)
+        .y_label_area_size(45)
+        .build_cartesian_2d(t0..t1, h0 - 5.0..h1 + 5.0)?;
+    chart
+        .configure_mesh()
+        .x_desc("t, s")
+        .y_desc("heading, °")
+        .draw()?;
+    chart.draw_series(LineSeries::new(
+        path.iter().map(|p| (p.0, p.3.to_degrees())),
+        &RED,
+    ))?;
+    root.present()?;
+    Ok(())
+}
+
+/// The smallest and largest of `values`.
+fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    })
+}

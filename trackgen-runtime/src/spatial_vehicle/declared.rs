@@ -1,0 +1,141 @@
+//! A declared spatial vehicle as one system the applications drive
+//! without naming its trees' sizes: the declaration's `tracks` block
+//! implements [`SpatialVehicleSystem`] (its `Spatial` the concrete
+//! [`SpatialSystem`]), and every [`SpatialSystem`] is a
+//! [`SpatialSimulated`]: assembled on a course, driven and steered, read
+//! out.
+
+use nalgebra::{DVector, SVector, Vector3};
+
+use super::{
+    HeadingHold, SideDrives, SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialSystem,
+    SteeringError, TreeState,
+};
+use crate::assembly::{SideError, assemble_sides};
+use crate::contact::axial::GuideLaw;
+use crate::integrate::{OdeSystem, SimulationError};
+use crate::multibody::{ChassisModel, TrackModel};
+use crate::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
+use crate::terrain::Terrain;
+use crate::terrain::field::HeightField;
+use crate::vehicle::{Drive, DriveError, Vehicle};
+
+/// The gap the assembly leaves between the lower track and the ground, m
+/// (the planar main job's).
+const CLEARANCE: f64 = 1e-3;
+
+/// A spatial vehicle in time, whatever its trees' sizes.
+pub trait SpatialSimulated: OdeSystem + Send {
+    /// The vehicle assembled on `terrain` (extruded across the vehicle),
+    /// heading along `x` with its hull's centroid over `x = 0`, its
+    /// tracks 1 mm above the ground at their lowest, at rest, nothing
+    /// dissipated or driven yet.
+    fn assembled(&self, terrain: &Terrain) -> Result<DVector<f64>, SideError>;
+
+    /// Drives the sprockets by `drives` from now on; settings that make
+    /// no controller are refused.
+    fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError>;
+
+    /// Steers by `hold` from now on (both drives must be speed drives).
+    fn set_steering(&mut self, hold: HeadingHold) -> Result<(), SteeringError>;
+
+    /// What the vehicle shows at `t` and `y` ([`SpatialSystem::outputs`]).
+    fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError>;
+
+    /// Where its energy is at `y` ([`SpatialSystem::energy`]).
+    fn energy(&self, y: &[f64]) -> SpatialEnergy;
+}
+
+/// A tree standing upright at yaw 0 with its planar coordinates `q` (its
+/// root's place in the plane moved into the pose's origin, `lateral` m
+/// along `y`), at rest.
+fn upright<const D: usize>(q: &SVector<f64, D>, lateral: f64) -> TreeState<D> {
+    let mut planar = *q;
+    (planar[0], planar[1]) = (0.0, 0.0);
+    TreeState {
+        pose: PlanePose {
+            origin: Vector3::new(q[0], lateral, q[1]),
+            yaw: 0.0,
+            roll: 0.0,
+            planar,
+        },
+        rates: PlaneRates {
+            planar: SVector::zeros(),
+            across: Vector3::zeros(),
+        },
+    }
+}
+
+impl<H, const DH: usize, R, const DR: usize, L, const DL: usize> SpatialSimulated
+    for SpatialSystem<'static, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH> + Sync,
+    R: TrackModel<DR> + Sync,
+    L: TrackModel<DL> + Sync,
+{
+    fn assembled(&self, terrain: &Terrain) -> Result<DVector<f64>, SideError> {
+        let d = &self.dynamics;
+        let sides = assemble_sides(
+            d.hull.model(),
+            (d.right.model(), d.left.model()),
+            &d.sides,
+            &d.shoe,
+            &d.profile,
+            terrain,
+            0.0,
+            CLEARANCE,
+        )?;
+        let half = d.gauge / 2.0;
+        Ok(self.state(
+            &upright(&sides.hull, 0.0),
+            &upright(&sides.right, -half),
+            &upright(&sides.left, half),
+        ))
+    }
+
+    fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError> {
+        drives.check()?;
+        self.drives = drives;
+        Ok(())
+    }
+
+    fn set_steering(&mut self, hold: HeadingHold) -> Result<(), SteeringError> {
+        self.check_steering(&hold)?;
+        self.steering = Some(hold);
+        Ok(())
+    }
+
+    fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {
+        SpatialSystem::outputs(self, t, y)
+    }
+
+    fn energy(&self, y: &[f64]) -> SpatialEnergy {
+        SpatialSystem::energy(self, y)
+    }
+}
+
+/// A vehicle declared with a `tracks` block as a system in time: the
+/// macro implements it with the concrete [`SpatialSystem`] of the
+/// vehicle's hull and tracks.
+pub trait SpatialVehicleSystem: SpatialVehicle + Vehicle {
+    /// The vehicle's spatial system.
+    type Spatial: SpatialSimulated;
+
+    /// The vehicle under `laws` on `field`, its sprockets free; laws out
+    /// of range are refused ([`SpatialLaws::check`]).
+    fn spatial(laws: SpatialLaws, field: HeightField) -> Result<Self::Spatial, SpatialError>;
+
+    /// The declared laws: the declaration's ground, rims and teeth (its
+    /// `contact` block, or the fitted defaults), the centre guides at the
+    /// declared play with [`GuideLaw::with_play`]'s stiffness, damping
+    /// and height.
+    fn declared_laws() -> SpatialLaws {
+        let config = Self::declared_config(Terrain::Flat { height: 0.0 }, Drive::Free);
+        SpatialLaws {
+            ground: config.ground,
+            wheels: config.wheels,
+            sprocket: config.sprocket,
+            guide: GuideLaw::with_play(Self::layout().guide_play),
+        }
+    }
+}
