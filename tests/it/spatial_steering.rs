@@ -13,23 +13,26 @@ use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::Drive;
 
-use crate::support::twin::{Twin, at_rest, belt, firm, laws, on};
+use crate::support::twin::{Twin, assembled, at_rest, belt, firm, laws, on};
 
 /// The declaration's system on level ground, assembled by
-/// `SpatialSimulated::assembled`, is the tests' system at their start:
-/// the same state and the same right-hand side, bit for bit.
+/// `SpatialSimulated::assembled`, is the tests' system at their start
+/// with its tensioners set as the assembly set them: the same state and
+/// the same right-hand side, bit for bit.
 #[test]
 fn the_declared_route_builds_the_tests_system() {
-    let generic = <Twin as SpatialVehicleSystem>::spatial(laws(), HeightField::level())
+    let mut generic = <Twin as SpatialVehicleSystem>::spatial(laws(), HeightField::level())
         .expect("the spatial vehicle");
     let y = generic
         .assembled(&Terrain::Flat { height: 0.0 })
         .expect("both sides assemble");
     let mut own = on(HeightField::level(), laws(), SideDrives::free());
+    let tensioners = assembled().tensioners;
+    assert!(tensioners.iter().all(Option::is_some), "{tensioners:?}");
+    own.dynamics.set_tensioners(tensioners);
     let start = at_rest(0.0, (0.0, 0.0));
     let y_own = own.state(&start.0, &start.1, &start.2);
     assert_eq!(y, y_own);
-    let mut generic = generic;
     let (mut dy, mut dy_own) = (vec![0.0; y.len()], vec![0.0; y.len()]);
     generic.derivative(0.0, y.as_slice(), &mut dy).expect("f");
     own.derivative(0.0, y.as_slice(), &mut dy_own).expect("f");

@@ -18,7 +18,7 @@ use std::time::Instant;
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::integrate::{Integrator, OdeSystem, Stats};
 use trackgen::scenario::Scenario;
-use trackgen::simulate::EnergyBalance;
+use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
     HeadingHold, SideDrives, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem,
 };
@@ -206,8 +206,10 @@ fn drive<V: SpatialVehicleSystem>(
         .clone()
         .unwrap_or_else(|| PathBuf::from("out").join(entry.name()));
     std::fs::create_dir_all(&dir)?;
-    let mut csv = csv::Writer::from_path(dir.join("spatial.csv"))?;
-    csv.write_record(COLUMNS)?;
+    let mut csv = CsvSink::create(dir.join("spatial.csv"))?;
+    let mut thinned = Thinned::new(PICTURE_ROWS);
+    let mut sink = Tee::new().and(&mut csv).and(&mut thinned);
+    sink.begin(&COLUMNS.map(String::from))?;
     let method = Integrator::Bs23 {
         rtol: args.tolerance,
         atol: args.tolerance,
@@ -220,7 +222,6 @@ fn drive<V: SpatialVehicleSystem>(
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
     )?);
     let mut summary = Summary::default();
-    let mut path = Vec::new();
     let started = Instant::now();
     let mut t = 0.0;
     let mut row = 0u64;
@@ -231,8 +232,7 @@ fn drive<V: SpatialVehicleSystem>(
         };
         let turning = t >= args.turn_at && t <= args.turn_at + args.turn_time;
         summary.add(t, &out, turning && angle != 0.0);
-        path.push((t, out.centre.position.x, out.centre.position.y, out.heading));
-        csv.write_record(record(t, &out).iter().map(|v| v.to_string()))?;
+        sink.row(t, &record(&out))?;
         row += 1;
         if t >= args.duration {
             break Ok(());
@@ -252,7 +252,8 @@ fn drive<V: SpatialVehicleSystem>(
     };
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
-    csv.flush()?;
+    sink.finish()?;
+    drop(sink);
     let after = system.energy(y.as_slice());
     let books = EnergyBalance {
         motor_work: after.driven - before.driven,
@@ -261,7 +262,13 @@ fn drive<V: SpatialVehicleSystem>(
     };
     report(&summary, (t, wall), &stepper.stats(), &books, args);
     let mut written = vec!["spatial.csv"];
-    if path.len() >= 2 {
+    let kept = thinned.results();
+    if kept.len() >= 2 {
+        let column = |name| kept.column(name).unwrap_or_default();
+        let path: Vec<_> = (kept.times().iter().zip(column("x")).zip(column("y")))
+            .zip(column("heading"))
+            .map(|(((t, x), y), heading)| (*t, x, y, heading))
+            .collect();
         draw(&dir.join("spatial.svg"), &path, V::NAME)?;
         written.push("spatial.svg");
     }
@@ -316,9 +323,13 @@ fn report(
     );
 }
 
-/// The CSV's columns: SI units, angles in rad, sides `r_` and `l_`.
-const COLUMNS: [&str; 36] = [
-    "t",
+/// The rows the picture is drawn from, at most: a run of any length
+/// keeps them evenly spaced.
+const PICTURE_ROWS: usize = 2000;
+
+/// The CSV's columns after the time: SI units, angles in rad, sides `r_`
+/// and `l_`.
+const COLUMNS: [&str; 35] = [
     "x",
     "y",
     "z",
@@ -357,10 +368,9 @@ const COLUMNS: [&str; 36] = [
 ];
 
 /// One row of [`COLUMNS`].
-fn record(t: f64, out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
+fn record(out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
     let c = &out.centre;
     let mut row = vec![
-        t,
         c.position.x,
         c.position.y,
         c.position.z,

@@ -248,6 +248,10 @@ pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const 
     field: HeightField,
     /// The tracks' centre planes apart, m.
     gauge: f64,
+    /// Each tensioner's arm as set on the tracks (its body in the hull and
+    /// its angle from the declared position, rad): its spring's rest angle
+    /// moved there ([`set_tensioners`](Self::set_tensioners)).
+    tensioners: [Option<(usize, f64)>; 2],
 }
 
 impl<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize>
@@ -313,7 +317,18 @@ where
             laws,
             field,
             gauge: layout.gauge,
+            tensioners: [None; 2],
         })
+    }
+
+    /// Each side's tensioner as the assembly set it on its track (right,
+    /// left: the arm's body in the hull and its angle from the declared
+    /// position, rad; [`AssembledSides::tensioners`](crate::assembly::AssembledSides)):
+    /// its spring's rest angle is moved there, as the planar vehicle's (a
+    /// track adjuster's job: the tensioner then pushes with its declared
+    /// preload, `τ = preload − k φ` becoming `preload + k φ₀ − k φ`).
+    pub fn set_tensioners(&mut self, tensioners: [Option<(usize, f64)>; 2]) {
+        self.tensioners = tensioners;
     }
 
     /// How many values each track's ground points' stiction deflections
@@ -582,7 +597,13 @@ where
         let (mut potential, mut dissipation) = (0.0, 0.0);
         for arm in self.parts.iter().filter_map(|p| p.arm) {
             let (phi, rate) = (q[2 + arm.body] - q[2], qd[2 + arm.body] - qd[2]);
-            let response = arm.spring.respond(phi, rate);
+            let mut spring = arm.spring;
+            for (body, set) in self.tensioners.iter().flatten() {
+                if *body == arm.body {
+                    spring.preload += spring.stiffness * set;
+                }
+            }
+            let response = spring.respond(phi, rate);
             loads[arm.body].moment -= eta * response.force;
             loads[0].moment += eta * response.force;
             potential += response.potential;

@@ -149,7 +149,7 @@ impl RimContact {
     /// the contact's depth more than `−reach` (negative: a gap), where a
     /// guide horn of that height overlaps the wheel. `None` where the rim
     /// is on the face's outer side or further away.
-    #[inline]
+    #[inline(always)]
     pub fn near(wheel: &SpaceWheel, face: &SpaceFace, reach: f64) -> Option<RimContact> {
         let a = wheel.axle;
         let across = |v: Vector3<f64>| v - a * a.dot(&v);

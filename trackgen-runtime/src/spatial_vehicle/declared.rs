@@ -29,8 +29,9 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// The vehicle assembled on `terrain` (extruded across the vehicle),
     /// heading along `x` with its hull's centroid over `x = 0`, its
     /// tracks 1 mm above the ground at their lowest, at rest, nothing
-    /// dissipated or driven yet.
-    fn assembled(&self, terrain: &Terrain) -> Result<DVector<f64>, SideError>;
+    /// dissipated or driven yet; each tensioner's spring set where the
+    /// assembly put its arm ([`SpatialDynamics::set_tensioners`](super::SpatialDynamics::set_tensioners)).
+    fn assembled(&mut self, terrain: &Terrain) -> Result<DVector<f64>, SideError>;
 
     /// Drives the sprockets by `drives` from now on; settings that make
     /// no controller are refused.
@@ -73,7 +74,7 @@ where
     R: TrackModel<DR> + Sync,
     L: TrackModel<DL> + Sync,
 {
-    fn assembled(&self, terrain: &Terrain) -> Result<DVector<f64>, SideError> {
+    fn assembled(&mut self, terrain: &Terrain) -> Result<DVector<f64>, SideError> {
         let d = &self.dynamics;
         let sides = assemble_sides(
             d.hull.model(),
@@ -86,6 +87,7 @@ where
             CLEARANCE,
         )?;
         let half = d.gauge / 2.0;
+        self.dynamics.set_tensioners(sides.tensioners);
         Ok(self.state(
             &upright(&sides.hull, 0.0),
             &upright(&sides.right, -half),

@@ -140,7 +140,9 @@ mod tests {
     /// and a heading wanted that is not finite is refused.
     #[test]
     fn the_driver_asks_the_kinematic_difference_and_corrects_the_error() {
-        let hold = HeadingHold::turn(1.0, (0.0, 2.0), 2.0, 1.5);
+        // At t = 1 s the rate wanted is π/4 rad/s: B ψ̇_ref = 1.57 m/s,
+        // within the bound of 3 m/s.
+        let hold = HeadingHold::turn(1.0, (0.0, 2.0), 2.0, 3.0);
         hold.check().expect("in range");
         let gauge = 2.0;
         let (wanted, rate) = (hold.heading)(1.0);
@@ -148,8 +150,8 @@ mod tests {
         assert!((on - gauge * rate).abs() < 1e-15);
         let behind = hold.difference(1.0, wanted - 0.1, gauge).expect("finite");
         assert!((behind - on - gauge * 2.0 * 0.1).abs() < 1e-12);
-        assert_eq!(hold.difference(1.0, wanted - 3.0, gauge), Some(1.5));
-        assert_eq!(hold.difference(1.0, wanted + 3.0, gauge), Some(-1.5));
+        assert_eq!(hold.difference(1.0, wanted - 3.0, gauge), Some(3.0));
+        assert_eq!(hold.difference(1.0, wanted + 3.0, gauge), Some(-3.0));
         let lost = HeadingHold {
             heading: Box::new(|_| (f64::NAN, 0.0)),
             gain: 1.0,
