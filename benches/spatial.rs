@@ -78,81 +78,22 @@ fn bench_one<M: RecursiveModel<D>, const D: usize>(c: &mut Criterion, model: M) 
 /// tracks, 64 and 63 links, at its assembled start): the same contacts
 /// per side (rims and teeth; the shoes 1 mm above the ground).
 fn m113_derivative(c: &mut Criterion) {
-    use trackgen::assembly::assemble_sides;
-    use trackgen::contact::axial::GuideLaw;
     use trackgen::integrate::OdeSystem;
-    use trackgen::spatial::SpatialVehicle;
-    use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, SpatialSystem, TreeState};
+    use trackgen::spatial_vehicle::{SpatialSimulated, SpatialVehicleSystem};
     use trackgen::system::Simulated;
     use trackgen::terrain::Terrain;
     use trackgen::terrain::field::HeightField;
     use trackgen::vehicle::Vehicle;
-    use trackgen::vehicles::m113::{M113, M113Hull, M113LeftTrack, M113Track};
+    use trackgen::vehicles::m113::M113;
 
     let flat = Terrain::Flat { height: 0.0 };
     let mut planar = M113::system(flat.clone(), M113::speed_drive(|_| 0.0)).unwrap();
     let y0 = planar.initial_state();
     let mut dy = vec![0.0; y0.len()];
-    let (geometry, layout) = (M113::geometry(), M113::layout());
-    let config = M113::declared_config(flat.clone(), M113::speed_drive(|_| 0.0));
-    let laws = SpatialLaws {
-        ground: config.ground,
-        wheels: config.wheels,
-        sprocket: config.sprocket,
-        guide: GuideLaw {
-            play: layout.guide_play,
-            stiffness: 1e7,
-            damping: 1e3,
-            // Chrono's M113 track shoe's guide box, 0.075 m high (a
-            // secondary source).
-            height: 0.075,
-        },
-    };
-    let sides = assemble_sides(
-        &M113Hull,
-        (&M113Track, &M113LeftTrack),
-        &layout.part_sides,
-        &geometry.shoe,
-        &geometry.sprocket,
-        &flat,
-        0.0,
-        1e-3,
-    )
-    .unwrap();
-    fn upright<const D: usize>(q: &SVector<f64, D>, lateral: f64) -> TreeState<D> {
-        let mut planar = *q;
-        (planar[0], planar[1]) = (0.0, 0.0);
-        TreeState {
-            pose: PlanePose {
-                origin: Vector3::new(q[0], lateral, q[1]),
-                yaw: 0.0,
-                roll: 0.0,
-                planar,
-            },
-            rates: PlaneRates {
-                planar: SVector::zeros(),
-                across: Vector3::zeros(),
-            },
-        }
-    }
-    const DH: usize = <M113 as SpatialVehicle>::HULL_DOF;
-    let half = layout.gauge / 2.0;
-    let dynamics = SpatialDynamics::new(
-        &M113Hull,
-        (&M113Track, &M113LeftTrack),
-        &layout,
-        geometry.shoe.clone(),
-        geometry.sprocket,
-        laws,
-        HeightField::level(),
-    )
-    .unwrap();
-    let mut spatial = SpatialSystem::new(dynamics);
-    let y = spatial.state(
-        &upright::<DH>(&sides.hull, 0.0),
-        &upright(&sides.right, -half),
-        &upright(&sides.left, half),
-    );
+    // The declared laws: the guides' horn Chrono's M113 shoe's guide box,
+    // 0.075 m high (a secondary source).
+    let mut spatial = M113::spatial(M113::declared_laws(), HeightField::level()).unwrap();
+    let y = spatial.assembled(&flat).unwrap();
     let mut dys = vec![0.0; y.len()];
     m113_settle(c, (&mut planar, &y0), (&mut spatial, &y));
     let mut group = c.benchmark_group("m113_derivative");

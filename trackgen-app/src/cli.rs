@@ -219,7 +219,7 @@ pub(crate) fn within(s: &str, range: Range, noun: &str) -> Result<f64, String> {
     }
 }
 
-fn speed(s: &str) -> Result<f64, String> {
+pub(crate) fn speed(s: &str) -> Result<f64, String> {
     within(s, Scenario::SPEED_RANGE, "a speed")
 }
 
@@ -231,7 +231,7 @@ fn position(s: &str) -> Result<f64, String> {
     within(s, Scenario::POSITION_RANGE, "a position")
 }
 
-fn duration(s: &str) -> Result<f64, String> {
+pub(crate) fn duration(s: &str) -> Result<f64, String> {
     within(s, Scenario::DURATION_RANGE, "a duration")
 }
 
@@ -239,11 +239,11 @@ fn course_length(s: &str) -> Result<f64, String> {
     within(s, Scenario::COURSE_LENGTH_RANGE, "a course length")
 }
 
-fn output_interval(s: &str) -> Result<f64, String> {
+pub(crate) fn output_interval(s: &str) -> Result<f64, String> {
     within(s, Scenario::OUTPUT_EVERY_RANGE, "an output interval")
 }
 
-fn non_negative_seconds(s: &str) -> Result<f64, String> {
+pub(crate) fn non_negative_seconds(s: &str) -> Result<f64, String> {
     within(s, Scenario::TIME_RANGE, "a time")
 }
 

@@ -25,7 +25,7 @@ use trackgen::spatial_vehicle::{
 use trackgen::terrain::field::{FieldShape, HeightField};
 use trackgen::vehicle::speed_ramp;
 
-use crate::cli::{CourseArgs, within};
+use crate::cli::{self, CourseArgs, within};
 use crate::console::say;
 use crate::offered::Offered;
 
@@ -40,7 +40,7 @@ pub struct SpatialArgs {
     #[arg(long, value_name = "NAME")]
     pub vehicle: Option<String>,
     /// Target forward speed, m/s, from -20 to 20 (negative: in reverse).
-    #[arg(long, default_value_t = Scenario::SPEED, value_name = "M/S", value_parser = speed)]
+    #[arg(long, default_value_t = Scenario::SPEED, value_name = "M/S", value_parser = cli::speed)]
     pub speed: f64,
     /// The course, across the vehicle's whole width.
     #[command(flatten)]
@@ -50,30 +50,30 @@ pub struct SpatialArgs {
     #[arg(long, default_value_t = TURN, value_name = "DEG", value_parser = turn)]
     pub turn: f64,
     /// When the turn starts, s: 0 to 1e6.
-    #[arg(long, default_value_t = TURN_AT, value_name = "SECONDS", value_parser = seconds)]
+    #[arg(long, default_value_t = TURN_AT, value_name = "SECONDS", value_parser = cli::non_negative_seconds)]
     pub turn_at: f64,
     /// How long the heading wanted takes to turn, s: 0 to 1e6 (0: a step,
     /// the driver steering as hard as the belts allow).
-    #[arg(long, default_value_t = TURN_TIME, value_name = "SECONDS", value_parser = seconds)]
+    #[arg(long, default_value_t = TURN_TIME, value_name = "SECONDS", value_parser = cli::non_negative_seconds)]
     pub turn_time: f64,
     /// Settling time before driving, s: 0 to 1e6.
-    #[arg(long, default_value_t = Scenario::SETTLE, value_name = "SECONDS", value_parser = seconds)]
+    #[arg(long, default_value_t = Scenario::SETTLE, value_name = "SECONDS", value_parser = cli::non_negative_seconds)]
     pub settle: f64,
     /// Time to ramp the speed up, s: 0 to 1e6 (0: a step).
-    #[arg(long, default_value_t = Scenario::RAMP, value_name = "SECONDS", value_parser = seconds)]
+    #[arg(long, default_value_t = Scenario::RAMP, value_name = "SECONDS", value_parser = cli::non_negative_seconds)]
     pub ramp: f64,
     /// Simulated time, s: more than 0, at most 1e6.
-    #[arg(long, default_value_t = DURATION, value_name = "SECONDS", value_parser = duration)]
+    #[arg(long, default_value_t = DURATION, value_name = "SECONDS", value_parser = cli::duration)]
     pub duration: f64,
     /// The output interval, s, from 1e-4 to 1.
-    #[arg(long, default_value_t = Scenario::OUTPUT_EVERY, value_name = "SECONDS", value_parser = output_interval)]
+    #[arg(long, default_value_t = Scenario::OUTPUT_EVERY, value_name = "SECONDS", value_parser = cli::output_interval)]
     pub output_every: f64,
     /// Bogacki-Shampine's tolerance, relative and absolute, from 1e-12 to
     /// 0.1 (the books are held to 10 × it).
-    #[arg(long, default_value_t = Integrator::DEFAULT_EXPLICIT_TOLERANCE, value_name = "TOL", value_parser = crate::cli::tolerance)]
+    #[arg(long, default_value_t = Integrator::DEFAULT_EXPLICIT_TOLERANCE, value_name = "TOL", value_parser = cli::tolerance)]
     pub tolerance: f64,
     /// Output folder (created if missing); default `out/<vehicle>`.
-    #[arg(long, value_name = "DIR", value_parser = crate::cli::folder)]
+    #[arg(long, value_name = "DIR", value_parser = cli::folder)]
     pub out: Option<PathBuf>,
 }
 
@@ -93,28 +93,12 @@ const HEADING_GAIN: f64 = 1.5;
 /// rad/s: the difference is the gauge times it.
 const MAX_YAW_RATE: f64 = 1.0;
 
-fn speed(s: &str) -> Result<f64, String> {
-    within(s, Scenario::SPEED_RANGE, "a speed")
-}
-
 fn turn(s: &str) -> Result<f64, String> {
     within(
         s,
         trackgen::scenario::Range::closed(-360.0, 360.0, "from -360 to 360 degrees"),
         "a turn",
     )
-}
-
-fn seconds(s: &str) -> Result<f64, String> {
-    within(s, Scenario::TIME_RANGE, "a time")
-}
-
-fn duration(s: &str) -> Result<f64, String> {
-    within(s, Scenario::DURATION_RANGE, "a duration")
-}
-
-fn output_interval(s: &str) -> Result<f64, String> {
-    within(s, Scenario::OUTPUT_EVERY_RANGE, "an output interval")
 }
 
 /// `spatial` for the vehicle `V`: exits 1, saying why, when the run cannot
