@@ -120,11 +120,11 @@ struct Summary {
     /// size, m/s², while turning.
     radius: Option<f64>,
     lateral: f64,
-    last: Option<(f64, SpatialOutputs)>,
+    last: Option<SpatialOutputs>,
 }
 
 impl Summary {
-    fn add(&mut self, t: f64, out: &SpatialOutputs, turning: bool) {
+    fn add(&mut self, out: &SpatialOutputs, turning: bool) {
         if turning {
             self.radius = Some(
                 self.radius
@@ -132,7 +132,7 @@ impl Summary {
             );
             self.lateral = self.lateral.max(out.lateral_acceleration.abs());
         }
-        self.last = Some((t, *out));
+        self.last = Some(*out);
     }
 }
 
@@ -215,7 +215,7 @@ fn drive<V: SpatialVehicleSystem>(
             Err(e) => break Err(e),
         };
         let turning = t >= args.turn_at && t <= args.turn_at + args.turn_time;
-        summary.add(t, &out, turning && angle != 0.0);
+        summary.add(&out, turning && angle != 0.0);
         sink.row(t, &record(&out))?;
         row += 1;
         if t >= args.duration {
@@ -280,7 +280,7 @@ fn report(
         stats.rejected,
         stats.evaluations
     );
-    if let Some((_, last)) = &summary.last {
+    if let Some(last) = &summary.last {
         say!(
             "at the end: heading {:.1}° (asked {:.1}°), speed {:.2} m/s, pitch {:.2}°, roll {:.2}°",
             last.heading.to_degrees(),

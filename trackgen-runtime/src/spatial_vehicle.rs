@@ -50,7 +50,7 @@ use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, Spac
 use crate::contact::sprocket::{Gaps, ToothProfile, rolling_radius};
 use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
 use crate::multibody::{
-    ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
+    ArmSpring, ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
 };
 use crate::spatial::{
     FloatingTree, PlaneMotion, PlanePose, PlaneRates, Side, SpatialError, SpatialLayout,
@@ -248,10 +248,10 @@ pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const 
     field: HeightField,
     /// The tracks' centre planes apart, m.
     gauge: f64,
-    /// Each tensioner's arm as set on the tracks (its body in the hull and
-    /// its angle from the declared position, rad): its spring's rest angle
-    /// moved there ([`set_tensioners`](Self::set_tensioners)).
-    tensioners: [Option<(usize, f64)>; 2],
+    /// Every arm's spring, the declared one but for each tensioner's rest
+    /// angle moved to where the assembly set it
+    /// ([`set_tensioners`](Self::set_tensioners)).
+    arms: Vec<ArmSpring>,
 }
 
 impl<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize>
@@ -317,7 +317,7 @@ where
             laws,
             field,
             gauge: layout.gauge,
-            tensioners: [None; 2],
+            arms: H::PARTS.iter().filter_map(|p| p.arm).collect(),
         })
     }
 
@@ -328,7 +328,12 @@ where
     /// track adjuster's job: the tensioner then pushes with its declared
     /// preload, `τ = preload − k φ` becoming `preload + k φ₀ − k φ`).
     pub fn set_tensioners(&mut self, tensioners: [Option<(usize, f64)>; 2]) {
-        self.tensioners = tensioners;
+        self.arms = self.parts.iter().filter_map(|p| p.arm).collect();
+        for (body, set) in tensioners.iter().flatten() {
+            for arm in self.arms.iter_mut().filter(|a| a.body == *body) {
+                arm.spring.preload += arm.spring.stiffness * set;
+            }
+        }
     }
 
     /// How many values each track's ground points' stiction deflections
@@ -595,15 +600,9 @@ where
         let eta: Vector3<f64> = plane.column(1).into();
         let (q, qd) = (&hull.pose.planar, &hull.rates.planar);
         let (mut potential, mut dissipation) = (0.0, 0.0);
-        for arm in self.parts.iter().filter_map(|p| p.arm) {
+        for arm in &self.arms {
             let (phi, rate) = (q[2 + arm.body] - q[2], qd[2 + arm.body] - qd[2]);
-            let mut spring = arm.spring;
-            for (body, set) in self.tensioners.iter().flatten() {
-                if *body == arm.body {
-                    spring.preload += spring.stiffness * set;
-                }
-            }
-            let response = spring.respond(phi, rate);
+            let response = arm.spring.respond(phi, rate);
             loads[arm.body].moment -= eta * response.force;
             loads[0].moment += eta * response.force;
             potential += response.potential;
