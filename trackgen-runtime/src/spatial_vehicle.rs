@@ -31,6 +31,7 @@
 //! has its own drive ([`SideDrives`]). [`SpatialSystem`] integrates the
 //! vehicle in time.
 
+mod bodies;
 mod declared;
 mod drive;
 mod ground;
@@ -38,6 +39,7 @@ mod outputs;
 mod steering;
 mod system;
 
+use bodies::Bodies;
 pub use declared::{SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, SideDrives};
 pub use outputs::{SideOutputs, SpatialOutputs};
@@ -97,7 +99,7 @@ pub struct TreeState<const D: usize> {
 
 /// What the force elements give at a state: every body's load and the
 /// books.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct SpatialLoads {
     /// Each hull body's load.
     pub hull: Vec<SpatialLoad>,
@@ -109,6 +111,15 @@ pub struct SpatialLoads {
     pub potential: f64,
     /// Power they dissipate, W.
     pub dissipation: f64,
+}
+
+/// What a right-hand side's loads reuse from one evaluation to the next:
+/// the trees' bodies in the world (the hull's, the right track's, the
+/// left's) and the loads.
+#[derive(Default)]
+pub(crate) struct LoadScratch {
+    bodies: [Bodies; 3],
+    loads: SpatialLoads,
 }
 
 /// What the ground gives one of a track's ground points at a state.
@@ -133,89 +144,6 @@ pub struct MassCentre {
     pub position: Vector3<f64>,
     /// How fast it moves, m/s.
     pub velocity: Vector3<f64>,
-}
-
-/// Every body's world motion: centroid, orientation, velocity, angular
-/// velocity.
-struct Bodies {
-    at: Vec<Vector3<f64>>,
-    turned: Vec<Matrix3<f64>>,
-    velocity: Vec<Vector3<f64>>,
-    spin: Vec<Vector3<f64>>,
-}
-
-impl Bodies {
-    fn of<M, const D: usize>(
-        tree: &FloatingTree<'_, M, D>,
-        motion: &PlaneMotion,
-        state: &TreeState<D>,
-    ) -> Bodies
-    where
-        M: crate::multibody::RecursiveModel<D>,
-    {
-        let world = tree.world_of(motion, &state.pose, &state.rates);
-        Bodies {
-            at: world.positions,
-            turned: world.orientations,
-            velocity: world.velocities,
-            spin: world.angular_velocities,
-        }
-    }
-
-    /// The bodies whose centroids are within `reach2` (m², squared) of
-    /// `centre`, or at a distance that is not a number (so a NaN state
-    /// shows as a NaN force), in order. The distances are compared 64
-    /// bodies at a time into a bit mask without branches: a wheel is near
-    /// a handful of a track's links, and a branch per link mispredicts at
-    /// the edges of every run of them.
-    fn near(&self, centre: Vector3<f64>, reach2: f64) -> impl Iterator<Item = usize> + '_ {
-        self.at
-            .chunks(64)
-            .enumerate()
-            .flat_map(move |(chunk, block)| {
-                let mut near = 0u64;
-                for (k, at) in block.iter().enumerate() {
-                    // `!(d² > r²)`: true for NaN.
-                    #[allow(clippy::neg_cmp_op_on_partial_ord)]
-                    let close = !((at - centre).norm_squared() > reach2);
-                    near |= u64::from(close) << k;
-                }
-                std::iter::from_fn(move || {
-                    (near != 0).then(|| {
-                        let k = near.trailing_zeros() as usize;
-                        near &= near - 1;
-                        chunk * 64 + k
-                    })
-                })
-            })
-    }
-
-    /// [`of`](Self::of) with the tree's motion in its plane found here.
-    fn at<M, const D: usize>(tree: &FloatingTree<'_, M, D>, state: &TreeState<D>) -> Bodies
-    where
-        M: crate::multibody::RecursiveModel<D>,
-    {
-        Bodies::of(tree, &tree.plane_motion(&state.pose, &state.rates), state)
-    }
-
-    /// The world point of body `k`'s local planar point `p`.
-    #[inline]
-    fn point(&self, k: usize, p: Vector2<f64>) -> Vector3<f64> {
-        self.at[k] + self.turned[k] * Vector3::new(p.x, 0.0, p.y)
-    }
-
-    /// The velocity of body `k`'s material point at `x`.
-    #[inline]
-    fn velocity_at(&self, k: usize, x: Vector3<f64>) -> Vector3<f64> {
-        self.velocity[k] + self.spin[k].cross(&(x - self.at[k]))
-    }
-
-    /// Adds `force` at `x` to body `k`'s load.
-    #[inline]
-    fn push(&self, loads: &mut [SpatialLoad], k: usize, force: Vector3<f64>, x: Vector3<f64>) {
-        loads[k].force += force;
-        loads[k].moment += (x - self.at[k]).cross(&force);
-    }
 }
 
 /// A side's driven sprocket: its body in the hull and its rolling radius,
@@ -400,22 +328,41 @@ where
     pub fn loads_in(
         &self,
         motions: &[PlaneMotion; 3],
-        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+        states: (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
         deflections: [&[f64]; 2],
         rates: [&mut [f64]; 2],
     ) -> SpatialLoads {
-        let frame = Bodies::of(&self.hull, &motions[0], hull);
-        let tracks = [
-            Bodies::of(&self.right, &motions[1], right),
-            Bodies::of(&self.left, &motions[2], left),
-        ];
-        let mut out = SpatialLoads {
-            hull: vec![SpatialLoad::default(); frame.at.len()],
-            right: vec![SpatialLoad::default(); tracks[0].at.len()],
-            left: vec![SpatialLoad::default(); tracks[1].at.len()],
-            potential: 0.0,
-            dissipation: 0.0,
-        };
+        let mut scratch = LoadScratch::default();
+        self.loads_into(motions, states, deflections, rates, &mut scratch);
+        scratch.loads
+    }
+
+    /// [`loads_in`](Self::loads_in) into `scratch.loads`, the bodies'
+    /// world motion in `scratch.bodies`: a right-hand side's loads found
+    /// without allocating.
+    pub(crate) fn loads_into(
+        &self,
+        motions: &[PlaneMotion; 3],
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+        deflections: [&[f64]; 2],
+        rates: [&mut [f64]; 2],
+        scratch: &mut LoadScratch,
+    ) {
+        let [frame, right_links, left_links] = &mut scratch.bodies;
+        frame.fill(&self.hull, &motions[0], hull);
+        right_links.fill(&self.right, &motions[1], right);
+        left_links.fill(&self.left, &motions[2], left);
+        let [frame, tracks @ ..] = &scratch.bodies;
+        let out = &mut scratch.loads;
+        for (loads, bodies) in [
+            (&mut out.hull, frame),
+            (&mut out.right, &tracks[0]),
+            (&mut out.left, &tracks[1]),
+        ] {
+            loads.clear();
+            loads.resize(bodies.len(), SpatialLoad::default());
+        }
+        (out.potential, out.dissipation) = (0.0, 0.0);
         let plane = plane_rotation(hull.pose.yaw, hull.pose.roll);
         let mut rates = rates.into_iter();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
@@ -455,7 +402,6 @@ where
         let books = self.arms(hull, &plane, &mut out.hull);
         out.potential += books.0;
         out.dissipation += books.1;
-        out
     }
 
     /// What the ground gives each ground point on it at a state, the
@@ -471,7 +417,7 @@ where
         let mut out = Vec::new();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
             let links = &tracks[s];
-            let mut loads = vec![SpatialLoad::default(); links.at.len()];
+            let mut loads = vec![SpatialLoad::default(); links.len()];
             let mut rates = vec![0.0; deflections[s].len()];
             self.ground(
                 links,
@@ -495,7 +441,12 @@ where
             velocity: Vector3::zeros(),
         };
         let mut add = |bodies: Bodies, masses: &[f64]| {
-            for ((at, velocity), &m) in bodies.at.iter().zip(&bodies.velocity).zip(masses) {
+            for ((at, velocity), &m) in bodies
+                .centroids()
+                .iter()
+                .zip(bodies.velocities())
+                .zip(masses)
+            {
                 total.mass += m;
                 total.position += m * at;
                 total.velocity += m * velocity;
@@ -519,7 +470,7 @@ where
         (hull_loads, link_loads): (&mut [SpatialLoad], &mut [SpatialLoad]),
     ) -> (f64, f64) {
         let b = part.body;
-        let (centre, velocity, spin) = (frame.at[b], frame.velocity[b], frame.spin[b]);
+        let (centre, velocity, spin) = (frame.centroid(b), frame.velocity(b), frame.spin(b));
         let reach = match part.kind {
             PartKind::Sprocket => self.profile.addendum,
             _ => part.radius + self.laws.guide.height,
@@ -528,11 +479,11 @@ where
         for k in links.near(centre, reach * reach) {
             let face = SpaceFace {
                 ends: self.shoe.inner_face.map(|p| links.point(k, p)),
-                inward: links.turned[k].column(2).into(),
+                inward: links.axis(k, 2),
                 guide: links.point(k, (self.shoe.inner_face[0] + self.shoe.inner_face[1]) / 2.0),
-                centroid: links.at[k],
-                velocity: links.velocity[k],
-                angular_velocity: links.spin[k],
+                centroid: links.centroid(k),
+                velocity: links.velocity(k),
+                angular_velocity: links.spin(k),
             };
             if part.kind == PartKind::Sprocket {
                 let sprocket = SpaceSprocket {
@@ -561,7 +512,7 @@ where
             } else {
                 let wheel = SpaceWheel {
                     centre,
-                    axle: frame.turned[b].column(1).into(),
+                    axle: frame.axis(b, 1),
                     radius: part.radius,
                     velocity,
                     angular_velocity: spin,

@@ -47,6 +47,7 @@ pub struct SpaceForce {
 impl SpaceContact {
     /// The point `point` (world, m) moving at `velocity` (m/s) against
     /// `field`: `None` above it.
+    #[inline]
     pub fn at(
         field: &HeightField,
         point: Vector3<f64>,
@@ -70,8 +71,20 @@ impl SpaceContact {
     /// The surface's unit tangents: forward (in the vertical plane of `x`)
     /// and left, orthogonal, right-handed with the upward normal.
     pub fn tangents(&self) -> (Vector3<f64>, Vector3<f64>) {
-        let normal = self.gradient.normalize();
-        let forward = Vector3::new(1.0, 0.0, -self.gradient.x).normalize();
+        self.tangents_with(self.gradient.norm())
+    }
+
+    /// [`tangents`](Self::tangents) with `|g|` (`norm`) found already.
+    /// Where the field does not slope across `x` (`∂z/∂y = 0`, a profile
+    /// or a level field), the forward tangent `(1, 0, ∂z/∂x)` has the
+    /// same length, summed in the same terms: it is not found again.
+    #[inline]
+    fn tangents_with(&self, norm: f64) -> (Vector3<f64>, Vector3<f64>) {
+        let g = self.gradient;
+        let normal = g / norm;
+        let forward = Vector3::new(1.0, 0.0, -g.x);
+        let along = if g.y == 0.0 { norm } else { forward.norm() };
+        let forward = forward / along;
         (forward, normal.cross(&forward))
     }
 }
@@ -83,8 +96,9 @@ impl GroundLaws {
     pub fn respond_in_space(&self, contact: &SpaceContact, z: Vector2<f64>) -> SpaceForce {
         let rate = contact.rate();
         let normal = self.normal.respond(contact.depth, rate);
-        let pressing = normal.force * contact.gradient.norm();
-        let (forward, left) = contact.tangents();
+        let norm = contact.gradient.norm();
+        let pressing = normal.force * norm;
+        let (forward, left) = contact.tangents_with(norm);
         let slip = Vector2::new(contact.velocity.dot(&forward), contact.velocity.dot(&left));
         let (tangential, deflection_rate, potential, dissipation) = match self.friction {
             GroundFriction::Stiction(stiction) => {

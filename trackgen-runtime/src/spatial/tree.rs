@@ -32,7 +32,7 @@ pub struct PlaneRates<const DOF: usize> {
 }
 
 /// Every body of a tree in the world ([`FloatingTree::world`]).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct WorldMotion {
     /// Centroids, m.
     pub positions: Vec<Vector3<f64>>,
@@ -248,23 +248,44 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         pose: &PlanePose<DOF>,
         rates: &PlaneRates<DOF>,
     ) -> WorldMotion {
+        let mut world = WorldMotion::default();
+        self.world_into(motion, pose, rates, &mut world);
+        world
+    }
+
+    /// [`world_of`](Self::world_of) into `world`, its vectors' storage
+    /// kept (a right-hand side's bodies found without allocating).
+    pub fn world_into(
+        &self,
+        motion: &PlaneMotion,
+        pose: &PlanePose<DOF>,
+        rates: &PlaneRates<DOF>,
+        world: &mut WorldMotion,
+    ) {
         let n = self.masses.len();
         let a = plane_rotation(pose.yaw, pose.roll);
+        // The plane's axes: a body's orientation `A R(θ)` is its `x`
+        // `c ξ + s ζ`, the normal `η` and its `y` `−s ξ + c ζ`, the product
+        // with `R(θ)`'s zeros left out.
+        let [xi, eta, zeta]: [Vector3<f64>; 3] =
+            [a.column(0).into(), a.column(1).into(), a.column(2).into()];
         let (trig, place, planar) = (&motion.trig, &motion.place, &motion.planar);
         let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
         let turning = offset_velocity(&rates.across);
-        let mut world = WorldMotion {
-            positions: Vec::with_capacity(n),
-            orientations: Vec::with_capacity(n),
-            velocities: Vec::with_capacity(n),
-            angular_velocities: Vec::with_capacity(n),
-        };
+        world.positions.clear();
+        world.orientations.clear();
+        world.velocities.clear();
+        world.angular_velocities.clear();
+        world.positions.reserve(n);
+        world.orientations.reserve(n);
+        world.velocities.reserve(n);
+        world.angular_velocities.reserve(n);
         for k in 0..n {
             let (p, e, (s, c)) = (place[k], self.offsets[k], trig[k]);
             let v = planar[k] + e * turning;
             world
                 .positions
-                .push(pose.origin + a * Vector3::new(p.x, e, p.y));
+                .push(pose.origin + (xi * p.x + eta * e + zeta * p.y));
             world
                 .orientations
                 .push(a * Matrix3::new(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c));
@@ -275,7 +296,6 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
                 .angular_velocities
                 .push(a * Vector3::new(w_xi, -rates.planar[k + 2], w_zeta));
         }
-        world
     }
 
     /// Every body's inertia about its centroid in its own frame, kg m²:

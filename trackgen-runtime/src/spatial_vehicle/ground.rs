@@ -8,7 +8,7 @@
 //! testing each (its stiction deflections relax as a point off the
 //! ground's do).
 
-use nalgebra::{Vector2, Vector3};
+use nalgebra::Vector2;
 
 use super::{Bodies, GroundForce, SpatialDynamics};
 use crate::contact::space::SpaceContact;
@@ -55,8 +55,8 @@ where
         let clear_above = self.clear_above(links, across);
         let (mut potential, mut dissipation) = (0.0, 0.0);
         let mut i = 0;
-        for k in 0..links.at.len() {
-            if links.at[k].z > clear_above {
+        for k in 0..links.len() {
+            if links.centroid(k).z > clear_above {
                 if let Some(law) = stiction {
                     let books = (&mut potential, &mut dissipation);
                     relax(
@@ -75,7 +75,7 @@ where
                         Some(_) => Vector2::new(deflections[i], deflections[i + 1]),
                         None => Vector2::zeros(),
                     };
-                    let x = links.at[k] + links.turned[k] * Vector3::new(p.x, lateral, p.y);
+                    let x = links.point_across(k, *p, lateral);
                     match SpaceContact::at(&self.field, x, links.velocity_at(k, x)) {
                         Some(contact) => {
                             let force = half.respond_in_space(&contact, z);
@@ -126,7 +126,7 @@ where
             Vector2::repeat(f64::INFINITY),
             Vector2::repeat(-f64::INFINITY),
         );
-        for at in &links.at {
+        for at in links.centroids() {
             let xy = at.xy();
             low = low.inf(&xy);
             high = high.sup(&xy);
@@ -152,12 +152,15 @@ fn relax(
     rates: &mut [f64],
     (potential, dissipation): (&mut f64, &mut f64),
 ) {
+    // Summed in registers, in the same order as into the books.
+    let (mut stored, mut lost) = (*potential, *dissipation);
     for (z, rate) in deflections.iter().zip(rates.iter_mut()) {
         let relaxing = law.relax(*z);
         *rate = relaxing.rate;
-        *potential += relaxing.potential;
-        *dissipation += relaxing.dissipation;
+        stored += relaxing.potential;
+        lost += relaxing.dissipation;
     }
+    (*potential, *dissipation) = (stored, lost);
 }
 
 /// The normal law with `fraction` of its stiffness (and of a

@@ -19,8 +19,8 @@
 use nalgebra::{DVector, SVector, Vector3};
 
 use super::{
-    DriveState, GroundForce, HeadingHold, MassCentre, SideDrives, SpatialDynamics, SteeringError,
-    TreeState,
+    DriveState, GroundForce, HeadingHold, LoadScratch, MassCentre, SideDrives, SpatialDynamics,
+    SteeringError, TreeState,
 };
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
@@ -35,6 +35,7 @@ pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL
     pub(super) drives: SideDrives,
     pub(super) steering: Option<HeadingHold>,
     closure: MultiplierOptions,
+    scratch: LoadScratch,
 }
 
 /// Where the spatial vehicle's energy is, J.
@@ -136,6 +137,7 @@ where
             drives: SideDrives::free(),
             steering: None,
             closure: MultiplierOptions::default(),
+            scratch: LoadScratch::default(),
         }
     }
 
@@ -314,19 +316,30 @@ where
             });
         }
         let (hull, right, left, _) = self.states(y);
-        let d = &self.dynamics;
         let b = self.books_at();
         let states = (&hull, &right, &left);
-        let motions = d.plane_motions(states);
-        let mut loads = self.loads_in(&motions, states, y, &mut dy[Self::TREES..b]);
-        let drive = d.drive(t, &hull, self.driver(y))?;
-        d.apply_drive(&hull, &drive, &mut loads);
+        let motions = self.dynamics.plane_motions(states);
+        let drive = self.dynamics.drive(t, &hull, self.driver(y))?;
+        let r = self.dynamics.ground_states()[0];
+        let (right_rates, left_rates) = dy[Self::TREES..b].split_at_mut(r);
+        let deflections = self.deflections(y);
+        let d = &self.dynamics;
+        let scratch = &mut self.scratch;
+        d.loads_into(
+            &motions,
+            states,
+            deflections,
+            [right_rates, left_rates],
+            scratch,
+        );
+        let loads = &mut scratch.loads;
+        d.apply_drive(&hull, &drive, loads);
         let closing = [
             closing(d.right.model(), (&motions[1], &right), &self.closure),
             closing(d.left.model(), (&motions[2], &left), &self.closure),
         ];
         let (a_hull, a_right, a_left) = d
-            .accelerations_in(&motions, states, &loads, closing)
+            .accelerations_in(&motions, states, loads, closing)
             .map_err(|source| SimulationError::Dynamics { t, source })?;
         let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
