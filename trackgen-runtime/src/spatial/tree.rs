@@ -92,19 +92,43 @@ pub struct FloatingTree<'m, M, const DOF: usize> {
     gravity: f64,
 }
 
-/// What every body's motion gives at a state, in `P`'s components.
+/// What every body's motion gives at a state, in `P`'s components, read
+/// body by body from the plane's motion.
 struct BodyMotion<'p> {
     /// Centroid relative to the root in the plane, `(ξ, ζ)`, m.
     place: &'p [Vector2<f64>],
-    /// Its part from the bodies' rates alone (`v = 0`), m/s.
-    relative: Vec<Vector2<f64>>,
-    /// The full velocity, `(V_ξ, V_η, V_ζ)`, m/s.
-    velocity: Vec<Vector3<f64>>,
+    /// Centroid velocity in the plane, `(V_ξ, V_ζ)`, m/s.
+    planar: &'p [Vector2<f64>],
+    /// The root's velocity in the plane, `(v_ξ, v_ζ)`, m/s.
+    root: Vector2<f64>,
+    /// The plane's quasi-velocities across it, `(v_η, ω_ξ, ω_ζ)`.
+    across: Vector3<f64>,
+    /// Each body's distance along the plane's normal, m.
+    offsets: &'p [f64],
     /// The planar quadratic velocity terms `γ` (eq. (14)) at `q̇_i`,
-    /// m/s² (read only where a body is off the plane).
+    /// m/s² (found only where a body is off the plane; else empty).
     gamma: Vec<Vector2<f64>>,
     /// `(sin θ, cos θ)` of every body.
     trig: &'p [(f64, f64)],
+}
+
+impl BodyMotion<'_> {
+    /// Body `k`'s velocity's part from the bodies' rates alone (`v = 0`),
+    /// m/s: the velocities are linear in `q̇_i` and the root's `(v_ξ, v_ζ)`
+    /// moves every body alike.
+    #[inline]
+    fn relative(&self, k: usize) -> Vector2<f64> {
+        self.planar[k] - self.root
+    }
+
+    /// Body `k`'s full velocity, `(V_ξ, V_η, V_ζ)`, m/s.
+    #[inline]
+    fn velocity(&self, k: usize) -> Vector3<f64> {
+        let (p, e) = (self.place[k], self.offsets[k]);
+        let [v_eta, w_xi, w_zeta] = [self.across.x, self.across.y, self.across.z];
+        let v = self.planar[k] + e * offset_velocity(&self.across);
+        Vector3::new(v.x, v_eta + w_zeta * p.x - w_xi * p.y, v.y)
+    }
 }
 
 /// `D w`: the in-plane velocity a unit offset along `η` adds, `(−ω_ζ, ω_ξ)`.
@@ -312,10 +336,10 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     /// Every body's centroid velocity in the world, m/s.
     pub fn velocities(&self, pose: &PlanePose<DOF>, rates: &PlaneRates<DOF>) -> Vec<Vector3<f64>> {
         let a = plane_rotation(pose.yaw, pose.roll);
-        self.motion(&self.plane_motion(pose, rates), pose, rates)
-            .velocity
-            .iter()
-            .map(|v| a * v)
+        let plane = self.plane_motion(pose, rates);
+        let motion = self.motion(&plane, pose, rates);
+        (0..self.masses.len())
+            .map(|k| a * motion.velocity(k))
             .collect()
     }
 
@@ -363,7 +387,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             .map(|k| {
                 let inertia = self.in_plane_inertia(k, motion.trig[k]);
                 let spin = rates.planar[k + 2];
-                0.5 * self.masses[k] * motion.velocity[k].norm_squared()
+                0.5 * self.masses[k] * motion.velocity(k).norm_squared()
                     + 0.5 * self.inertias[k] * spin * spin
                     + 0.5 * w.dot(&(inertia * w))
             })
@@ -385,14 +409,26 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     fn across_mass_at(&self, places: &[Vector2<f64>], trig: &[(f64, f64)]) -> Matrix3<f64> {
         let mut mass = Matrix3::zeros();
         for (k, p) in places.iter().enumerate() {
-            let (m, e) = (self.masses[k], self.offsets[k]);
-            let c = Vector3::new(1.0, -p.y, p.x);
-            mass += m * c * c.transpose();
-            let inertia = self.in_plane_inertia(k, trig[k]);
-            let mut turning = mass.fixed_view_mut::<2, 2>(1, 1);
-            turning += inertia + Matrix2::identity() * (m * e * e);
+            self.add_across_mass(&mut mass, k, *p, &self.in_plane_inertia(k, trig[k]));
         }
         mass
+    }
+
+    /// Body `k`'s share of [`across_mass`](Self::across_mass) added to
+    /// `mass`, at `place` in the plane with `inertia` about its axes.
+    #[inline]
+    fn add_across_mass(
+        &self,
+        mass: &mut Matrix3<f64>,
+        k: usize,
+        place: Vector2<f64>,
+        inertia: &Matrix2<f64>,
+    ) {
+        let (m, e) = (self.masses[k], self.offsets[k]);
+        let c = Vector3::new(1.0, -place.y, place.x);
+        *mass += m * c * c.transpose();
+        let mut turning = mass.fixed_view_mut::<2, 2>(1, 1);
+        turning += inertia + Matrix2::identity() * (m * e * e);
     }
 
     /// Forward dynamics of the open tree (a track's closing joint cut, as
@@ -458,24 +494,26 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         let (g_across, g_in) = (-self.gravity * sr, -self.gravity * cr);
         let mut planar_loads = vec![BodyLoad::ZERO; n];
         let mut rhs = Vector3::zeros();
+        let mut mass = Matrix3::zeros();
         for (k, planar_load) in planar_loads.iter_mut().enumerate() {
             let (m, e) = (self.masses[k], self.offsets[k]);
             let load = loads.get(k).copied().unwrap_or_default();
             let (force, moment) = (a.transpose() * load.force, a.transpose() * load.moment);
             let place = motion.place[k];
-            let omega_v = omega.cross(&motion.velocity[k]);
+            let omega_v = omega.cross(&motion.velocity(k));
             // The bodies' true angular rates turn the relative place:
             // d/dt (ξ, ζ) = relative velocity + ω_η perp(place).
-            let moving = motion.relative[k] + w_eta * perp(place);
+            let moving = motion.relative(k) + w_eta * perp(place);
             // In the plane: the cross term of the bodies' true and
             // relative rates, ω_η perp(ρ̇ relative), and ω × V.
-            let bias_in = w_eta * perp(motion.relative[k]) + Vector2::new(omega_v.x, omega_v.z);
+            let bias_in = w_eta * perp(motion.relative(k)) + Vector2::new(omega_v.x, omega_v.z);
             let bias_across = w_zeta * moving.x - w_xi * moving.y + omega_v.y;
             // Rotation: H = (I₂ (ω_ξ, ω_ζ), −J (θ̇ − ω_η)).
             let trig = motion.trig[k];
             let inertia = self.in_plane_inertia(k, trig);
+            self.add_across_mass(&mut mass, k, place, &inertia);
             let spin = rates.planar[k + 2];
-            let turning = self.in_plane_inertia_rate(k, trig, spin + w_eta);
+            let turning = inertia_rate(&inertia, spin + w_eta);
             let h2 = inertia * Vector2::new(w_xi, w_zeta);
             let h = Vector3::new(h2.x, -self.inertias[k] * spin, h2.y);
             let omega_h = omega.cross(&h);
@@ -493,11 +531,13 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             // less its in-plane inertia besides `H q̈_i` and `e D ẇ` (which
             // the coupling and the mass matrix carry): the planar chain's
             // own centripetal terms γ.
-            rhs += e * offset_force(in_plane + m * Vector2::new(0.0, g_in) - m * motion.gamma[k]);
+            if e != 0.0 {
+                rhs +=
+                    e * offset_force(in_plane + m * Vector2::new(0.0, g_in) - m * motion.gamma[k]);
+            }
         }
         let mut planar = SVector::<f64, DOF>::zeros();
         solve(motion.trig, &planar_loads, &mut planar)?;
-        let mut mass = self.across_mass_at(motion.place, motion.trig);
         if self.offsets.iter().all(|&e| e == 0.0) {
             let across = mass
                 .cholesky()
@@ -603,58 +643,53 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
     /// What the bodies' motion in their plane (`plane`, at `pose` and
     /// `rates`) gives.
     fn motion<'p>(
-        &self,
+        &'p self,
         plane: &'p PlaneMotion,
         pose: &PlanePose<DOF>,
         rates: &PlaneRates<DOF>,
     ) -> BodyMotion<'p> {
-        let n = self.masses.len();
-        let q = at_origin(&pose.planar);
-        let (trig, place, planar) = (&plane.trig, &plane.place, &plane.planar);
-        // The velocities are linear in q̇_i and the root's (v_ξ, v_ζ) moves
-        // every body alike: the bodies' rates alone give the rest.
-        let root = Vector2::new(rates.planar[0], rates.planar[1]);
-        let relative = planar.iter().map(|v| v - root).collect();
-        let [v_eta, w_xi, w_zeta] = [rates.across.x, rates.across.y, rates.across.z];
-        let turning = offset_velocity(&rates.across);
-        let velocity = (0..n)
-            .map(|k| {
-                let (p, e) = (place[k], self.offsets[k]);
-                let v = planar[k] + e * turning;
-                Vector3::new(v.x, v_eta + w_zeta * p.x - w_xi * p.y, v.y)
-            })
-            .collect();
-        let mut gamma = vec![Vector2::zeros(); n];
+        let mut gamma = Vec::new();
         if self.offsets.iter().any(|&e| e != 0.0) {
-            self.model.velocity_terms(&q, &rates.planar, &mut gamma);
+            gamma.resize(self.masses.len(), Vector2::zeros());
+            self.model
+                .velocity_terms(&at_origin(&pose.planar), &rates.planar, &mut gamma);
         }
         BodyMotion {
-            place,
-            relative,
-            velocity,
+            place: &plane.place,
+            planar: &plane.planar,
+            root: Vector2::new(rates.planar[0], rates.planar[1]),
+            across: rates.across,
+            offsets: &self.offsets,
             gamma,
-            trig,
+            trig: &plane.trig,
         }
     }
 
     /// Body `k`'s inertia about the plane's `ξ` and `ζ` axes, its own
-    /// turned by its angle: `A(θ) I_b A(θ)ᵀ`.
+    /// turned by its angle: `A(θ) I_b A(θ)ᵀ`, multiplied out.
+    #[inline]
     fn in_plane_inertia(&self, k: usize, (s, c): (f64, f64)) -> Matrix2<f64> {
         let i = self.across[k];
-        let body = Matrix2::new(i.xx, i.xz, i.xz, i.zz);
-        let turn = Matrix2::new(c, -s, s, c);
-        turn * body * turn.transpose()
+        let (cc, ss, cs) = (c * c, s * s, c * s);
+        let xz = cs * (i.xx - i.zz) + (cc - ss) * i.xz;
+        Matrix2::new(
+            cc * i.xx - 2.0 * cs * i.xz + ss * i.zz,
+            xz,
+            xz,
+            ss * i.xx + 2.0 * cs * i.xz + cc * i.zz,
+        )
     }
+}
 
-    /// Its rate when the body turns at `rate` (rad/s) in the plane.
-    fn in_plane_inertia_rate(&self, k: usize, (s, c): (f64, f64), rate: f64) -> Matrix2<f64> {
-        let i = self.across[k];
-        let body = Matrix2::new(i.xx, i.xz, i.xz, i.zz);
-        let turn = Matrix2::new(c, -s, s, c);
-        let slope = Matrix2::new(-s, -c, c, -s);
-        let half = slope * body * turn.transpose();
-        rate * (half + half.transpose())
-    }
+/// The rate of a body's in-plane inertia `I = A(θ) I_b A(θ)ᵀ` when it
+/// turns at `rate` (rad/s) in the plane: `θ̇ dI/dθ`, whose entries are
+/// `I`'s own, `dI₁₁/dθ = −2 I₁₂`, `dI₁₂/dθ = I₁₁ − I₂₂`,
+/// `dI₂₂/dθ = 2 I₁₂`.
+#[inline]
+fn inertia_rate(inertia: &Matrix2<f64>, rate: f64) -> Matrix2<f64> {
+    let (xx, xz, zz) = (inertia[(0, 0)], inertia[(0, 1)], inertia[(1, 1)]);
+    let apart = xx - zz;
+    rate * Matrix2::new(-2.0 * xz, apart, apart, 2.0 * xz)
 }
 
 /// `q_i` with the root at the plane's origin.
