@@ -387,7 +387,7 @@ where
             {
                 let books = self.running_gear(
                     part,
-                    (&frame, hull, &plane),
+                    (frame, hull, &plane),
                     links,
                     (&mut out.hull, &mut link_loads),
                 );
