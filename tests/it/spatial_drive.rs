@@ -150,6 +150,7 @@ fn a_left_turn_mirrors_the_right_turn() {
                 s.belt_speed,
                 s.ground_speed,
                 s.slip,
+                s.track_speed,
                 s.ground_force.x,
                 m * s.ground_force.y,
                 s.ground_force.z,

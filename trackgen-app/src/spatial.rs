@@ -335,7 +335,7 @@ const PICTURE_ROWS: usize = 2000;
 
 /// The CSV's columns after the time: SI units, angles in rad, sides `r_`
 /// and `l_`.
-const COLUMNS: [&str; 35] = [
+const COLUMNS: [&str; 37] = [
     "x",
     "y",
     "z",
@@ -357,6 +357,7 @@ const COLUMNS: [&str; 35] = [
     "r_belt_speed",
     "r_ground_speed",
     "r_slip",
+    "r_track_speed",
     "r_ground_fx",
     "r_ground_fy",
     "r_ground_fz",
@@ -367,6 +368,7 @@ const COLUMNS: [&str; 35] = [
     "l_belt_speed",
     "l_ground_speed",
     "l_slip",
+    "l_track_speed",
     "l_ground_fx",
     "l_ground_fy",
     "l_ground_fz",
@@ -401,6 +403,7 @@ fn record(out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
             side.belt_speed,
             side.ground_speed,
             side.slip,
+            side.track_speed,
             side.ground_force.x,
             side.ground_force.y,
             side.ground_force.z,

@@ -2,7 +2,8 @@
 //! turn: the hull's heading, pitch, roll and yaw rate, the centre of mass's motion and
 //! acceleration (lateral in the hull's heading), the radius of its path,
 //! and per side the sprocket's speed, torque and power, the belt's speed,
-//! the track's slip, and the ground's force and yaw moment on the track.
+//! the track's slip and its own speed round the hull, and the ground's
+//! force and yaw moment on the track.
 
 use nalgebra::Vector3;
 
@@ -31,7 +32,17 @@ pub struct SideOutputs {
     pub ground_speed: f64,
     /// The slip `1 − v/u` (`v` the ground speed, `u` the belt's):
     /// positive driving, negative skidding, NaN where the belt stands.
+    /// It counts the track sliding on the ground and the sprocket jumping
+    /// the track's teeth alike: [`track_speed`](Self::track_speed) tells
+    /// them apart.
     pub slip: f64,
+    /// How fast the track runs rearward under the hull at its patch on
+    /// the ground, m/s: the ground speed less the patch's own speed along
+    /// the hull's heading (its links' velocities weighed by their ground
+    /// load). The belt's speed while the sprocket holds the track's
+    /// teeth, less while it jumps them; the ground speed while the patch
+    /// grips. NaN with nothing on the ground.
+    pub track_speed: f64,
     /// The ground's force on the track, N (world axes).
     pub ground_force: Vector3<f64>,
     /// The ground's moment on the track about the vertical through the
@@ -89,11 +100,19 @@ where
         );
         let mut force = [Vector3::zeros(); 2];
         let mut moment = [0.0; 2];
+        let links = [
+            d.right.velocities(&right.pose, &right.rates),
+            d.left.velocities(&left.pose, &left.rates),
+        ];
+        // The patch's speed along the heading, times the load, and the load.
+        let mut patch = [(0.0, 0.0); 2];
         for point in d.ground_forces((&right, &left), self.deflections(y)) {
             let s = point.side.index();
             let arm = point.at - centre.position;
             force[s] += point.force;
             moment[s] += arm.x * point.force.y - arm.y * point.force.x;
+            patch[s].0 += links[s][point.link].dot(&forward) * point.force.z;
+            patch[s].1 += point.force.z;
         }
         let lateral = [
             lateral_place(
@@ -125,6 +144,7 @@ where
                 } else {
                     1.0 - ground_speed / belt_speed
                 },
+                track_speed: ground_speed - patch[s].0 / patch[s].1,
                 ground_force: force[s],
                 ground_yaw_moment: moment[s],
             }
