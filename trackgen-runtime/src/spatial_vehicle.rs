@@ -349,9 +349,9 @@ where
         scratch: &mut LoadScratch,
     ) {
         let [frame, right_links, left_links] = &mut scratch.bodies;
-        frame.fill(&self.hull, &motions[0], hull);
-        right_links.fill(&self.right, &motions[1], right);
-        left_links.fill(&self.left, &motions[2], left);
+        frame.fill(&self.hull, &motions[0], (&hull.pose, &hull.rates));
+        right_links.fill(&self.right, &motions[1], (&right.pose, &right.rates));
+        left_links.fill(&self.left, &motions[2], (&left.pose, &left.rates));
         let [frame, tracks @ ..] = &scratch.bodies;
         let out = &mut scratch.loads;
         for (loads, bodies) in [
@@ -413,7 +413,10 @@ where
         (right, left): (&TreeState<DR>, &TreeState<DL>),
         deflections: [&[f64]; 2],
     ) -> Vec<GroundForce> {
-        let tracks = [Bodies::at(&self.right, right), Bodies::at(&self.left, left)];
+        let tracks = [
+            Bodies::at(&self.right, (&right.pose, &right.rates)),
+            Bodies::at(&self.left, (&left.pose, &left.rates)),
+        ];
         let mut out = Vec::new();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
             let links = &tracks[s];
@@ -452,9 +455,18 @@ where
                 total.velocity += m * velocity;
             }
         };
-        add(Bodies::at(&self.hull, hull), self.hull.masses());
-        add(Bodies::at(&self.right, right), self.right.masses());
-        add(Bodies::at(&self.left, left), self.left.masses());
+        add(
+            Bodies::at(&self.hull, (&hull.pose, &hull.rates)),
+            self.hull.masses(),
+        );
+        add(
+            Bodies::at(&self.right, (&right.pose, &right.rates)),
+            self.right.masses(),
+        );
+        add(
+            Bodies::at(&self.left, (&left.pose, &left.rates)),
+            self.left.masses(),
+        );
         total.position /= total.mass;
         total.velocity /= total.mass;
         total

@@ -6,9 +6,7 @@
 use nalgebra::{Vector2, Vector3};
 
 use crate::multibody::RecursiveModel;
-use crate::spatial::{FloatingTree, PlaneMotion, SpatialLoad, WorldMotion};
-
-use super::TreeState;
+use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
 
 /// Every body's world motion: centroid, orientation, velocity, angular
 /// velocity ([`WorldMotion`]), and the centroids' coordinates each in a
@@ -22,12 +20,12 @@ pub(super) struct Bodies {
 }
 
 impl Bodies {
-    /// `tree`'s bodies at `state`, their `motion` in their plane found
-    /// already.
+    /// `tree`'s bodies at `state` (its pose and rates), their `motion` in
+    /// their plane found already.
     pub(super) fn of<M: RecursiveModel<D>, const D: usize>(
         tree: &FloatingTree<'_, M, D>,
         motion: &PlaneMotion,
-        state: &TreeState<D>,
+        state: (&PlanePose<D>, &PlaneRates<D>),
     ) -> Bodies {
         let mut bodies = Bodies::default();
         bodies.fill(tree, motion, state);
@@ -39,9 +37,9 @@ impl Bodies {
         &mut self,
         tree: &FloatingTree<'_, M, D>,
         motion: &PlaneMotion,
-        state: &TreeState<D>,
+        (pose, rates): (&PlanePose<D>, &PlaneRates<D>),
     ) {
-        tree.world_into(motion, &state.pose, &state.rates, &mut self.world);
+        tree.world_into(motion, pose, rates, &mut self.world);
         for (i, axis) in self.by_axis.iter_mut().enumerate() {
             axis.clear();
             axis.extend(self.world.positions.iter().map(|p| p[i]));
@@ -51,9 +49,9 @@ impl Bodies {
     /// [`of`](Self::of) with the tree's motion in its plane found here.
     pub(super) fn at<M: RecursiveModel<D>, const D: usize>(
         tree: &FloatingTree<'_, M, D>,
-        state: &TreeState<D>,
+        (pose, rates): (&PlanePose<D>, &PlaneRates<D>),
     ) -> Bodies {
-        Bodies::of(tree, &tree.plane_motion(&state.pose, &state.rates), state)
+        Bodies::of(tree, &tree.plane_motion(pose, rates), (pose, rates))
     }
 
     /// How many bodies.
