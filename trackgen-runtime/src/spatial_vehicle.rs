@@ -417,9 +417,15 @@ where
             Bodies::at(&self.right, (&right.pose, &right.rates)),
             Bodies::at(&self.left, (&left.pose, &left.rates)),
         ];
+        self.ground_forces_of([&tracks[0], &tracks[1]], deflections)
+    }
+
+    /// [`ground_forces`](Self::ground_forces) on the tracks' links in the
+    /// world found already (right, left).
+    fn ground_forces_of(&self, tracks: [&Bodies; 2], deflections: [&[f64]; 2]) -> Vec<GroundForce> {
         let mut out = Vec::new();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
-            let links = &tracks[s];
+            let links = tracks[s];
             let mut loads = vec![SpatialLoad::default(); links.len()];
             let mut rates = vec![0.0; deflections[s].len()];
             self.ground(
@@ -438,12 +444,31 @@ where
         &self,
         (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
     ) -> MassCentre {
+        self.mass_centre_of(&self.bodies_at((hull, right, left)))
+    }
+
+    /// Every body of the hull, the right track and the left in the world
+    /// at a state.
+    fn bodies_at(
+        &self,
+        (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
+    ) -> [Bodies; 3] {
+        [
+            Bodies::at(&self.hull, (&hull.pose, &hull.rates)),
+            Bodies::at(&self.right, (&right.pose, &right.rates)),
+            Bodies::at(&self.left, (&left.pose, &left.rates)),
+        ]
+    }
+
+    /// [`mass_centre`](Self::mass_centre) of the bodies in the world found
+    /// already ([`bodies_at`](Self::bodies_at)).
+    fn mass_centre_of(&self, [hull, right, left]: &[Bodies; 3]) -> MassCentre {
         let mut total = MassCentre {
             mass: 0.0,
             position: Vector3::zeros(),
             velocity: Vector3::zeros(),
         };
-        let mut add = |bodies: Bodies, masses: &[f64]| {
+        let mut add = |bodies: &Bodies, masses: &[f64]| {
             for ((at, velocity), &m) in bodies
                 .centroids()
                 .iter()
@@ -455,18 +480,9 @@ where
                 total.velocity += m * velocity;
             }
         };
-        add(
-            Bodies::at(&self.hull, (&hull.pose, &hull.rates)),
-            self.hull.masses(),
-        );
-        add(
-            Bodies::at(&self.right, (&right.pose, &right.rates)),
-            self.right.masses(),
-        );
-        add(
-            Bodies::at(&self.left, (&left.pose, &left.rates)),
-            self.left.masses(),
-        );
+        add(hull, self.hull.masses());
+        add(right, self.right.masses());
+        add(left, self.left.masses());
         total.position /= total.mass;
         total.velocity /= total.mass;
         total

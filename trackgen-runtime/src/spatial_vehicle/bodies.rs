@@ -1,7 +1,5 @@
 //! Every body of a tree in the world at a state, as the force elements
-//! read it: each centroid, orientation, velocity and angular velocity,
-//! and the centroids again by coordinate for the search of the bodies
-//! near a part.
+//! read it: each centroid, orientation, velocity and angular velocity.
 
 use nalgebra::{Vector2, Vector3};
 
@@ -9,14 +7,11 @@ use crate::multibody::RecursiveModel;
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
 
 /// Every body's world motion: centroid, orientation, velocity, angular
-/// velocity ([`WorldMotion`]), and the centroids' coordinates each in a
-/// vector of its own. Kept between evaluations, refilled in place
-/// ([`fill`](Self::fill)).
+/// velocity ([`WorldMotion`]). Kept between evaluations, refilled in
+/// place ([`fill`](Self::fill)).
 #[derive(Default)]
 pub(super) struct Bodies {
     world: WorldMotion,
-    /// The centroids' `x`, `y` and `z`, m.
-    by_axis: [Vec<f64>; 3],
 }
 
 impl Bodies {
@@ -40,10 +35,6 @@ impl Bodies {
         (pose, rates): (&PlanePose<D>, &PlaneRates<D>),
     ) {
         tree.world_into(motion, pose, rates, &mut self.world);
-        for (i, axis) in self.by_axis.iter_mut().enumerate() {
-            axis.clear();
-            axis.extend(self.world.positions.iter().map(|p| p[i]));
-        }
     }
 
     /// [`of`](Self::of) with the tree's motion in its plane found here.
@@ -129,40 +120,39 @@ impl Bodies {
     /// The bodies whose centroids are within `reach2` (m², squared) of
     /// `centre`, or at a distance that is not a number (so a NaN state
     /// shows as a NaN force), in order. The distances are compared 64
-    /// bodies at a time into a bit mask without branches, a coordinate's
-    /// vector at a time (four bodies per operation where the processor
-    /// has AVX2): a wheel is near a handful of a track's links, and a
-    /// branch per link mispredicts at the edges of every run of them.
+    /// bodies at a time into a bit mask without branches: a wheel is near
+    /// a handful of a track's links, and a branch per link mispredicts at
+    /// the edges of every run of them.
     pub(super) fn near(
         &self,
         centre: Vector3<f64>,
         reach2: f64,
     ) -> impl Iterator<Item = usize> + '_ {
-        let [x, y, z] = &self.by_axis;
-        (0..x.len().div_ceil(64)).flat_map(move |chunk| {
-            let block = chunk * 64..x.len().min(chunk * 64 + 64);
-            let (x, y, z) = (&x[block.clone()], &y[block.clone()], &z[block]);
-            let mut near = near_mask([x, y, z], centre, reach2);
-            std::iter::from_fn(move || {
-                (near != 0).then(|| {
-                    let k = near.trailing_zeros() as usize;
-                    near &= near - 1;
-                    chunk * 64 + k
+        let centroids = &self.world.positions;
+        centroids
+            .chunks(64)
+            .enumerate()
+            .flat_map(move |(chunk, block)| {
+                let mut near = near_mask(block, centre, reach2);
+                std::iter::from_fn(move || {
+                    (near != 0).then(|| {
+                        let k = near.trailing_zeros() as usize;
+                        near &= near - 1;
+                        chunk * 64 + k
+                    })
                 })
             })
-        })
     }
 }
 
-/// Bit `k` set where body `k` of a block (at most 64, by coordinate) is
-/// within `reach2` of `centre`, or at a distance that is not a number:
-/// `!(d² > r²)`, `d²` summed `x`, `y`, `z` in turn as
-/// `Vector3::norm_squared` sums.
+/// Bit `k` set where body `k` of a block (at most 64) is within `reach2`
+/// of `centre`, or at a distance that is not a number: `!(d² > r²)`, `d²`
+/// summed `x`, `y`, `z` in turn as `Vector3::norm_squared` sums.
 #[inline(always)]
-fn near_mask([x, y, z]: [&[f64]; 3], centre: Vector3<f64>, reach2: f64) -> u64 {
+fn near_mask(block: &[Vector3<f64>], centre: Vector3<f64>, reach2: f64) -> u64 {
     let mut near = 0u64;
-    for (k, ((x, y), z)) in x.iter().zip(y).zip(z).enumerate() {
-        let (dx, dy, dz) = (x - centre.x, y - centre.y, z - centre.z);
+    for (k, p) in block.iter().enumerate() {
+        let (dx, dy, dz) = (p.x - centre.x, p.y - centre.y, p.z - centre.z);
         #[allow(clippy::neg_cmp_op_on_partial_ord)]
         let close = !(dx * dx + dy * dy + dz * dz > reach2);
         near |= u64::from(close) << k;

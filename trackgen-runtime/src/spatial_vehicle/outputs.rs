@@ -91,22 +91,22 @@ where
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
         let drive = d.drive(t, &hull, self.driver(y))?;
-        let centre = d.mass_centre((&hull, &right, &left));
+        // Every body in the world once, for the centre of mass, the hull's
+        // yaw rate, the ground's forces and the patches' speeds.
+        let bodies = d.bodies_at((&hull, &right, &left));
+        let centre = d.mass_centre_of(&bodies);
         let heading = hull.pose.yaw;
-        let yaw_rate = d.hull.world(&hull.pose, &hull.rates).angular_velocities[0].z;
+        let yaw_rate = bodies[0].spin(0).z;
         let (forward, leftward) = (
             Vector3::new(heading.cos(), heading.sin(), 0.0),
             Vector3::new(-heading.sin(), heading.cos(), 0.0),
         );
         let mut force = [Vector3::zeros(); 2];
         let mut moment = [0.0; 2];
-        let links = [
-            d.right.velocities(&right.pose, &right.rates),
-            d.left.velocities(&left.pose, &left.rates),
-        ];
+        let links = [bodies[1].velocities(), bodies[2].velocities()];
         // The patch's speed along the heading, times the load, and the load.
         let mut patch = [(0.0, 0.0); 2];
-        for point in d.ground_forces((&right, &left), self.deflections(y)) {
+        for point in d.ground_forces_of([&bodies[1], &bodies[2]], self.deflections(y)) {
             let s = point.side.index();
             let arm = point.at - centre.position;
             force[s] += point.force;
@@ -115,18 +115,8 @@ where
             patch[s].1 += point.force.z;
         }
         let lateral = [
-            lateral_place(
-                d.right.positions(&right.pose),
-                d.right.masses(),
-                &centre,
-                &leftward,
-            ),
-            lateral_place(
-                d.left.positions(&left.pose),
-                d.left.masses(),
-                &centre,
-                &leftward,
-            ),
+            lateral_place(bodies[1].centroids(), d.right.masses(), &centre, &leftward),
+            lateral_place(bodies[2].centroids(), d.left.masses(), &centre, &leftward),
         ];
         let along = centre.velocity.dot(&forward);
         let sides = [0, 1].map(|s| {
@@ -169,7 +159,7 @@ where
 /// A track's mass-weighted centroid's place to the hull's left of the
 /// centre of mass, m.
 fn lateral_place(
-    at: Vec<Vector3<f64>>,
+    at: &[Vector3<f64>],
     masses: &[f64],
     centre: &MassCentre,
     leftward: &Vector3<f64>,
