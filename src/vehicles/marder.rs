@@ -21,14 +21,12 @@
 //!   2, 5 and 6) become rotational damping about the arm pivot, `c r²`
 //!   with `r` = 0.4015 m the shock line's lever arm at the design position
 //!   ([`SHOCK_LEVER`]), added to the torsion bar's 500 N m s/rad;
-//! - the **tensioner** becomes a 0.2 m swing arm above the idler with the
-//!   equivalent torsion spring (`k L²`, `c L²`, `F L`), as for the M113.
-//!   Chrono's damper (1e5 N s/m) and stated preload (24 525 N along the
-//!   hull, "10 % of the weight") are kept; its spring (2e6 N/m) is not:
-//!   a track's tensioner is an adjuster locked at the length that sets
-//!   the track's sag, not a soft spring, and on Chrono's spring the
-//!   sprocket jumps the track's teeth when it pulls hard (the step, the
-//!   turn). See [`TENSIONER`] for the stiffness declared and why;
+//! - the **translational tensioner** (2e6 N/m, 1e5 N s/m, 24 525 N preload
+//!   along the hull) becomes a 0.2 m swing arm above the idler with the
+//!   equivalent torsion spring (`k L²`, `c L²`, `F L`), as for the M113;
+//!   like the M113's, the preload is the stated `F0` only (Chrono's
+//!   design length sits 0.25 m short of the free length, which would add
+//!   0.5 MN; the track settles where its tension balances the spring);
 //! - the **torsion preload** `T0 = −2.7e4` N m about Chrono's +y is
 //!   +2.7e4 N m counter-clockwise here, pressing the wheels down.
 //!
@@ -106,27 +104,9 @@ pub const TRACK_WIDTH: f64 = 0.40;
 pub const GAUGE: f64 = 2.0 * 1.36;
 /// Length of the idler's tensioner arm, m (see the module docs).
 pub const TENSIONER_ARM: f64 = 0.2;
-/// The tensioner along the hull: stiffness (N/m), damping (N s/m) and
-/// preload (N).
-///
-/// - **Stiffness, 2e7 N/m, assumed.** No figure for the Marder's
-///   adjuster was found. A tracked vehicle's tensioner is locked at the
-///   length that gives the track its sag: the M113's is a grease cylinder
-///   of 2.00 in bore (TM 9-2350-261-34, "Repair track tension adjuster"),
-///   adjusted to a sag at the road wheels (PS Magazine 592, March 2002).
-///   Such a column of grease, taken 0.15 m long (assumed) under that
-///   bore's 2.03e-3 m², with a mineral oil's bulk modulus of about
-///   1.5 GPa (grease is mostly oil; air in it makes it softer), is
-///   1.5e9 × 2.03e-3 / 0.15 ≈ 2e7 N/m: an estimate of its order.
-///   The mobility answers do not depend on the exact figure once the
-///   adjuster is this stiff. With the step search at the default
-///   tolerance (2026-12-06), the highest step was 0.506 m at Chrono's
-///   2e6 N/m, 1.044 m at 5e6 and 1.101 m at 1e7, 2e7 and 5e7. On the
-///   softer spring the sprocket jumps the track's teeth.
-/// - **Damping, 1e5 N s/m, and preload, 24 525 N**: Chrono's
-///   `Marder_Idler` (a secondary source; its preload is "10 % of the
-///   weight").
-pub const TENSIONER: (f64, f64, f64) = (2e7, 1e5, 24_525.0);
+/// Tensioner spring (N/m), damper (N s/m) and preload (N) of Chrono's
+/// translational tensioner.
+pub const TENSIONER: (f64, f64, f64) = (2e6, 1e5, 24_525.0);
 
 /// The driver's seat, m, in the track-assembly frame: an assumption, since
 /// Chrono's `Marder_Chassis` gives the driver at its origin (0, 0, 0). The

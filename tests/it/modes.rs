@@ -169,9 +169,7 @@ fn m113_hull_bounce_matches_the_two_degree_of_freedom_closed_form() {
     assert!(bounce.abs() < 0.1);
 }
 
-/// Within 10 % (measured +8.2 % bounce, +1.1 % pitch; +1.3 % and −2.7 %
-/// on Chrono's tensioner spring: the declared locked adjuster makes the
-/// track's loop resist the wheels' rise, which the closed form leaves out).
+/// Within 10 % (measured +1.3 % bounce, −2.7 % pitch).
 #[test]
 fn marder_hull_modes_match_the_two_degree_of_freedom_closed_form() {
     let (bounce, pitch) = against_closed_form::<Marder>(Marder::speed_drive(|_| 0.0));
