@@ -16,18 +16,8 @@ pub(super) struct Bodies {
 
 impl Bodies {
     /// `tree`'s bodies at `state` (its pose and rates), their `motion` in
-    /// their plane found already.
-    pub(super) fn of<M: RecursiveModel<D>, const D: usize>(
-        tree: &FloatingTree<'_, M, D>,
-        motion: &PlaneMotion,
-        state: (&PlanePose<D>, &PlaneRates<D>),
-    ) -> Bodies {
-        let mut bodies = Bodies::default();
-        bodies.fill(tree, motion, state);
-        bodies
-    }
-
-    /// [`of`](Self::of) into these bodies, their vectors' storage kept.
+    /// their plane found already, into these bodies, their vectors'
+    /// storage kept.
     pub(super) fn fill<M: RecursiveModel<D>, const D: usize>(
         &mut self,
         tree: &FloatingTree<'_, M, D>,
@@ -37,12 +27,14 @@ impl Bodies {
         tree.world_into(motion, pose, rates, &mut self.world);
     }
 
-    /// [`of`](Self::of) with the tree's motion in its plane found here.
+    /// `tree`'s bodies at `state`, new ([`FloatingTree::world`]).
     pub(super) fn at<M: RecursiveModel<D>, const D: usize>(
         tree: &FloatingTree<'_, M, D>,
         (pose, rates): (&PlanePose<D>, &PlaneRates<D>),
     ) -> Bodies {
-        Bodies::of(tree, &tree.plane_motion(pose, rates), (pose, rates))
+        Bodies {
+            world: tree.world(pose, rates),
+        }
     }
 
     /// How many bodies.
