@@ -97,6 +97,14 @@ pub struct TreeState<const D: usize> {
     pub rates: PlaneRates<D>,
 }
 
+impl<const D: usize> TreeState<D> {
+    /// The pose and the rates together, as the bodies' routes take them
+    /// (`Bodies` does not see this type).
+    fn parts(&self) -> (&PlanePose<D>, &PlaneRates<D>) {
+        (&self.pose, &self.rates)
+    }
+}
+
 /// What the force elements give at a state: every body's load and the
 /// books.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -349,9 +357,9 @@ where
         scratch: &mut LoadScratch,
     ) {
         let [frame, right_links, left_links] = &mut scratch.bodies;
-        frame.fill(&self.hull, &motions[0], (&hull.pose, &hull.rates));
-        right_links.fill(&self.right, &motions[1], (&right.pose, &right.rates));
-        left_links.fill(&self.left, &motions[2], (&left.pose, &left.rates));
+        frame.fill(&self.hull, &motions[0], hull.parts());
+        right_links.fill(&self.right, &motions[1], right.parts());
+        left_links.fill(&self.left, &motions[2], left.parts());
         let [frame, tracks @ ..] = &scratch.bodies;
         let out = &mut scratch.loads;
         for (loads, bodies) in [
@@ -414,8 +422,8 @@ where
         deflections: [&[f64]; 2],
     ) -> Vec<GroundForce> {
         let tracks = [
-            Bodies::at(&self.right, (&right.pose, &right.rates)),
-            Bodies::at(&self.left, (&left.pose, &left.rates)),
+            Bodies::at(&self.right, right.parts()),
+            Bodies::at(&self.left, left.parts()),
         ];
         self.ground_forces_of([&tracks[0], &tracks[1]], deflections)
     }
@@ -454,9 +462,9 @@ where
         (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
     ) -> [Bodies; 3] {
         [
-            Bodies::at(&self.hull, (&hull.pose, &hull.rates)),
-            Bodies::at(&self.right, (&right.pose, &right.rates)),
-            Bodies::at(&self.left, (&left.pose, &left.rates)),
+            Bodies::at(&self.hull, hull.parts()),
+            Bodies::at(&self.right, right.parts()),
+            Bodies::at(&self.left, left.parts()),
         ]
     }
 
