@@ -47,10 +47,8 @@ pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
         say!(
             "energy balance: motor work {work:.0} J = ΔE {change:.0} J + dissipated {dissipated:.0} J  (residual {residual:.2e} of the largest term)"
         );
-        if let Some(Err(off)) =
-            books.map(|b| b.check(EnergyBalance::bound_for_tolerance(tolerance)))
-        {
-            say!("warning: {off}; try --tolerance {:.0e}", tolerance / 10.0);
+        if let Some(warning) = books.and_then(|b| books_warning(&b, tolerance)) {
+            say!("{warning}");
         }
     }
     finish(summary);
@@ -58,6 +56,18 @@ pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {
 
 /// Below this, J, no term of the energy books is checked.
 const NOTHING_MOVED: f64 = 1.0;
+
+/// The warning line for `books` off by more than
+/// [`EnergyBalance::bound_for_tolerance`] at `tolerance` (a run's answers
+/// are then no better than its books), naming a tolerance ten times
+/// tighter to try; `None` where they close. Every run that prints its
+/// books prints this after them, planar or in space.
+pub fn books_warning(books: &EnergyBalance, tolerance: f64) -> Option<String> {
+    books
+        .check(EnergyBalance::bound_for_tolerance(tolerance))
+        .err()
+        .map(|off| format!("warning: {off}; try --tolerance {:.0e}", tolerance / 10.0))
+}
 
 /// The final speed and penetrations.
 fn finish(summary: &Summary) {
@@ -263,4 +273,33 @@ pub fn seat_spectrum(
     }
     csv.flush()?;
     Ok(Some("seat_spectrum.csv".to_string()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Books that close to their bound give no warning; books past it (and
+    /// books that are NaN) give one naming a tenfold tighter tolerance. At
+    /// 1e-3 the bound is 1e-2 (`RESIDUAL_PER_TOLERANCE` = 10).
+    #[test]
+    fn the_books_warn_past_their_bound_only() {
+        let books = |residual: f64| EnergyBalance {
+            motor_work: 1000.0,
+            energy_change: 400.0,
+            dissipated: 600.0 - 1000.0 * residual,
+        };
+        assert_eq!(books_warning(&books(9e-3), 1e-3), None);
+        assert_eq!(books_warning(&books(-9e-3), 1e-3), None);
+        for residual in [1.1e-2, -1.4e-2] {
+            let warning = books_warning(&books(residual), 1e-3).expect("a warning");
+            assert!(warning.starts_with("warning: "), "{warning}");
+            assert!(warning.ends_with("try --tolerance 1e-4"), "{warning}");
+        }
+        let nan = EnergyBalance {
+            dissipated: f64::NAN,
+            ..books(0.0)
+        };
+        assert!(books_warning(&nan, 1e-3).is_some());
+    }
 }

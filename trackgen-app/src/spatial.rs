@@ -327,6 +327,9 @@ fn report(
         books.dissipated / 1e3,
         books.residual()
     );
+    if let Some(warning) = crate::report::books_warning(books, args.tolerance) {
+        say!("{warning}");
+    }
 }
 
 /// The rows the picture is drawn from, at most: a run of any length
