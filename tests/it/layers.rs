@@ -222,7 +222,7 @@ pub const APP: Graph = &[
     ("fmu", &["cli", "offered"]),
     ("mobility", &["cli", "offered"]),
     ("steer", &["console", "cli", "offered", "modes"]),
-    ("spatial", &["console", "cli", "offered"]),
+    ("spatial", &["console", "cli", "offered", "report"]),
     (
         "run",
         &["console", "cli", "offered", "outputs", "report", "modes"],
