@@ -279,9 +279,10 @@ pub fn seat_spectrum(
 mod tests {
     use super::*;
 
-    /// Books that close to their bound give no warning; books past it (and
-    /// books that are NaN) give one naming a tenfold tighter tolerance. At
-    /// 1e-3 the bound is 1e-2 (`RESIDUAL_PER_TOLERANCE` = 10).
+    /// Books that close within their bound at a tolerance give no
+    /// warning; books past it (and books that are NaN) give one naming a
+    /// tenfold tighter tolerance. The bound is the runtime's own
+    /// (`EnergyBalance::bound_for_tolerance`), 10 % either side of it.
     #[test]
     fn the_books_warn_past_their_bound_only() {
         let books = |residual: f64| EnergyBalance {
@@ -289,9 +290,10 @@ mod tests {
             energy_change: 400.0,
             dissipated: 600.0 - 1000.0 * residual,
         };
-        assert_eq!(books_warning(&books(9e-3), 1e-3), None);
-        assert_eq!(books_warning(&books(-9e-3), 1e-3), None);
-        for residual in [1.1e-2, -1.4e-2] {
+        let bound = EnergyBalance::bound_for_tolerance(1e-3);
+        assert_eq!(books_warning(&books(0.9 * bound), 1e-3), None);
+        assert_eq!(books_warning(&books(-0.9 * bound), 1e-3), None);
+        for residual in [1.1 * bound, -1.1 * bound] {
             let warning = books_warning(&books(residual), 1e-3).expect("a warning");
             assert!(warning.starts_with("warning: "), "{warning}");
             assert!(warning.ends_with("try --tolerance 1e-4"), "{warning}");
