@@ -15,6 +15,19 @@
 //! pitch inertia (49 091.35 kg m²)**. Positions are in the track-assembly
 //! frame, whose origin is the sprocket centre (and the chassis reference).
 //!
+//! One figure is not Chrono's: the sprocket's **tip circle**, 0.34 m
+//! where Chrono's `Marder_SprocketSinglePin` gives 0.3 m. Chrono centres
+//! the gap arcs on the pitch circle itself (0.328 m; its M113's sit 5 cm
+//! outside its pitch circle), so on a link seated on the sprocket the
+//! shoe's sprocket pins (cylinders of 0.015 m, 0.024 and 0.0315 m from
+//! the joint) have their inner edges 0.3067 m from the centre, 7 mm
+//! outside a 0.3 m tip circle: no tooth reaches them, and the track
+//! rides over the teeth (a profile the compiler and the runtime refuse:
+//! [`ProfileProblem::TeethMissPins`](crate::contact::sprocket::ProfileProblem::TeethMissPins)).
+//! No drawing of the Marder's sprocket was
+//! found; 0.34 m is estimated by giving its teeth the M113's height over
+//! the same shoe's pins (3.1–3.3 cm on Chrono's M113 profile).
+//!
 //! Three translations from Chrono's templates to what a planar declaration
 //! has, each documented where it is declared:
 //! - the **shock absorbers** (linear dampers of 17 771.53 N s/m on arms 1,
@@ -135,10 +148,11 @@ crate::model! {
         // the turret and the stowage are left out.
         hull: [(0.55, 0.25), (-0.25, -0.34), (-6.24, -0.34), (-6.24, 1.11), (-1.0, 1.11)],
         chassis { mass: CHASSIS_MASS / 2.0, inertia: CHASSIS_INERTIA / 2.0, centroid: (-2.7958, 0.0) },
-        // Addendum circle 0.3 m, gap arcs of 0.07 m centred on the
-        // 0.328414781 m circle (a 12-gon of 0.17 m sides).
+        // Gap arcs of 0.07 m centred on the 0.328414781 m circle (a 12-gon
+        // of 0.17 m sides), Chrono's; the tip circle estimated (see the
+        // module docs: Chrono's 0.3 m lies under the seated shoe's pins).
         sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.275,
-            teeth: 12, tip_radius: 0.3, gap_radius: 0.07, gap_centre: 0.328414781 },
+            teeth: 12, tip_radius: 0.34, gap_radius: 0.07, gap_centre: 0.328414781 },
         // Wheels 1, 2, 5 and 6 (from the front) carry shock absorbers.
         road_wheel shocked[4] {
             at: [(-0.8458, -0.3759), (-1.6258, -0.3759), (-3.9658, -0.3759), (-4.7458, -0.3759)],

@@ -815,3 +815,42 @@ fn profiles_that_cannot_drive_are_config_errors() {
         "{e}"
     );
 }
+
+/// Teeth that stop short of the pins cannot drive the track: Chrono's
+/// Marder profile (tip circle 0.3 m, its gaps centred on the pitch
+/// circle) under its own shoe is refused, naming how far out the pins'
+/// inner edges lie; the declared Marder's 0.34 m reaches past them. The
+/// closed form: a seated link is a chord of the pitch circle, `R cos(π/N)`
+/// from the centre, and its pin nearer the link's middle, 0.0535 m from
+/// it along the chord, has its inner edge `√((R cos(π/N))² + 0.0535²) −
+/// r_pin` out.
+#[test]
+fn teeth_that_miss_the_pins_are_refused() {
+    use trackgen::contact::sprocket::ProfileProblem;
+    use trackgen::vehicles::marder::{Marder, SHOE_PITCH};
+    let geometry = Marder::geometry();
+    let joints = (
+        Vector2::new(-SHOE_PITCH / 2.0, 0.0),
+        Vector2::new(SHOE_PITCH / 2.0, 0.0),
+    );
+    assert_eq!(geometry.sprocket.check(joints, &geometry.shoe), Ok(()));
+    let mut chrono = geometry.sprocket;
+    chrono.addendum = 0.3;
+    let half = std::f64::consts::PI / 12.0;
+    let chord = pitch_radius(12, SHOE_PITCH) * half.cos();
+    let want = chord.hypot(0.0535) - geometry.shoe.pin_radius;
+    match chrono.check(joints, &geometry.shoe) {
+        Err(ProfileProblem::TeethMissPins {
+            addendum,
+            lowest_pin,
+        }) => {
+            assert_eq!(addendum, 0.3);
+            assert!((lowest_pin - want).abs() < 1e-12, "{lowest_pin} {want}");
+            assert!((lowest_pin - 0.3067).abs() < 5e-5, "{lowest_pin}");
+        }
+        other => panic!("{other:?}"),
+    }
+    // Just past the pins' inner edge, a tooth meets them.
+    chrono.addendum = want + 1e-9;
+    assert_eq!(chrono.check(joints, &geometry.shoe), Ok(()));
+}

@@ -119,6 +119,16 @@ pub enum ProfileProblem {
         /// overlap at it, m.
         wider_gap: Option<f64>,
     },
+    /// No tooth reaches a pin of a seated link: every pin's inner edge
+    /// lies outside the tip circle, so the teeth pass under the pins and
+    /// cannot push the track.
+    TeethMissPins {
+        /// `r_a`, m.
+        addendum: f64,
+        /// The smallest distance from the sprocket's centre to a pin's
+        /// inner edge, on a link seated on the pitch circle, m.
+        lowest_pin: f64,
+    },
 }
 
 impl fmt::Display for ProfileProblem {
@@ -175,6 +185,13 @@ impl fmt::Display for ProfileProblem {
                     ),
                 }
             }
+            ProfileProblem::TeethMissPins {
+                addendum,
+                lowest_pin,
+            } => write!(
+                f,
+                "the teeth do not reach the pins: on a link seated on the sprocket the pins' inner edges lie {lowest_pin:.4} m from its centre, outside the tip circle ({addendum:.4} m), so the teeth pass under them and cannot drive the track; raise `tip_radius` above {lowest_pin:.4} m"
+            ),
         }
     }
 }
@@ -228,8 +245,10 @@ pub fn check_pin_radius(pin_radius: f64, gap_radius: f64) -> Result<(), ProfileP
 impl Engagement<'_> {
     /// Whether the profile can drive the track: the gaps
     /// ([`Radii::check`]), the pins narrower than the gaps
-    /// ([`check_pin_radius`]), and every pin of a link seated on the pitch
-    /// circle (its joints one gap apart) inside a gap, clear of the teeth.
+    /// ([`check_pin_radius`]), every pin of a link seated on the pitch
+    /// circle (its joints one gap apart) inside a gap, clear of the teeth,
+    /// and the tip circle reaching past the inner edge of at least one of
+    /// them, so that a tooth meets a pin as the sprocket turns.
     pub fn check(&self) -> Result<(), ProfileProblem> {
         self.radii.check(self.teeth)?;
         check_pin_radius(self.pin_radius, self.radii.arc_radius)?;
@@ -283,8 +302,10 @@ impl Engagement<'_> {
                 -1.0
             }
         };
+        let mut lowest_pin = f64::INFINITY;
         for (k, &pin) in self.pins.iter().enumerate() {
             let p = to_sprocket(pin);
+            lowest_pin = lowest_pin.min(p.0.hypot(p.1) - self.pin_radius);
             let nearest = gaps
                 .iter()
                 .map(|g| (p.0 - g.0).hypot(p.1 - g.1))
@@ -306,6 +327,13 @@ impl Engagement<'_> {
                     wider_gap: (wanted < largest).then_some(wanted),
                 });
             }
+        }
+        // A shoe without pins is not driven through them: nothing to reach.
+        if lowest_pin.is_finite() && lowest_pin >= addendum {
+            return Err(ProfileProblem::TeethMissPins {
+                addendum,
+                lowest_pin,
+            });
         }
         Ok(())
     }

@@ -3,7 +3,7 @@
 
 use proc_macro2::Span;
 use syn::spanned::Spanned;
-use trackgen_sprocket::Engagement;
+use trackgen_sprocket::{Engagement, ProfileProblem};
 
 use super::Lowering;
 use super::keys::Bound;
@@ -110,7 +110,8 @@ impl Lowering<'_> {
     /// The sprocket's checks (`trackgen_sprocket`, the rules the runtime
     /// applies too) on what the macro can evaluate: gaps that do not
     /// overlap, stay inside the sprocket and cut into the tip circle; pins
-    /// narrower than the gaps; every pin of a seated link in a gap. Each
+    /// narrower than the gaps; every pin of a seated link in a gap; teeth
+    /// that reach the pins. Each
     /// problem at the key to change, with the range that would work.
     fn check_engagement(
         &mut self,
@@ -177,7 +178,12 @@ impl Lowering<'_> {
             pin_radius,
         };
         if let Err(problem) = engagement.check() {
-            self.errors.at(spans.pins, problem);
+            // Teeth too short are the tip circle's to change, where declared.
+            let span = match problem {
+                ProfileProblem::TeethMissPins { .. } => profile.spans[0].unwrap_or(spans.pins),
+                _ => spans.pins,
+            };
+            self.errors.at(span, problem);
         }
     }
 
