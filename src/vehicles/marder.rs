@@ -11,9 +11,10 @@
 //! x and y, angles change sign (a counter-clockwise planar angle is a
 //! negative rotation about Chrono's +y), and the planar inertia of every
 //! body is Chrono's `Iyy`. The planar model carries one track and the
-//! matching half of the chassis: **half its mass (12 500 kg) and half its
-//! pitch inertia (49 091.35 kg m²)**. Positions are in the track-assembly
-//! frame, whose origin is the sprocket centre (and the chassis reference).
+//! matching half of the chassis: **half its mass and half its pitch
+//! inertia**, the hull's mass the 1A3's combat weight less the running
+//! gear ([`CHASSIS_MASS`]). Positions are in the track-assembly frame,
+//! whose origin is the sprocket centre (and the chassis reference).
 //!
 //! One figure is not Chrono's: the sprocket's **tip circle**, 0.34 m
 //! where Chrono's `Marder_SprocketSinglePin` gives 0.3 m. Chrono centres
@@ -53,9 +54,13 @@
 //! ([`powertrain`]: the MTU MB 833 Ea-500 through a converter gearbox, the
 //! Renk HSWL 194's kind; where a figure was not found it is Chrono's or
 //! assumed, each said so); the published figures it is held to are the
-//! 1A3's ([`PUBLISHED`]). The running gear and masses are Chrono's, which
-//! names no variant: 29.3 t with both sides' running gear, a Marder 1 or
-//! 1A1 (28–30 t); the 1A3 weighs 33.5 t in combat order.
+//! 1A3's ([`PUBLISHED`]). The running gear is Chrono's, which names no
+//! variant; Chrono's masses add up to 29.3 t with both sides' running
+//! gear (a Marder 1 or 1A1, 28–30 t). The declaration weighs what the 1A3
+//! weighs in combat order, [`COMBAT_WEIGHT`] (33.5 t): the hull takes the
+//! 4.2 t more at its centroid and with its radii of gyration, an
+//! assumption (the 1A3's added armour is on the hull's front and sides
+//! and its turret's roof, not placed from a drawing).
 //!
 //! Everything that makes it run is declared with it; as a
 //! [`Vehicle`](crate::vehicle::Vehicle), `Marder::system(terrain, drive)` assembles
@@ -70,17 +75,47 @@ pub const SHOE_PITCH: f64 = 0.17;
 pub const SHOE_MASS: f64 = 18.02;
 /// Shoe pitch inertia (Chrono `Iyy`), kg m².
 pub const SHOE_INERTIA: f64 = 0.04;
-/// Whole-vehicle hull mass, kg (the planar model uses half).
-pub const CHASSIS_MASS: f64 = 25_000.0;
-/// Whole-vehicle hull pitch inertia (Chrono `Iyy`), kg m² (the planar
-/// model uses half).
-pub const CHASSIS_INERTIA: f64 = 98_182.71;
-/// Whole-vehicle hull roll inertia (Chrono `Ixx`, about its forward
-/// axis), kg m²: the spatial vehicle's.
-pub const CHASSIS_ROLL_INERTIA: f64 = 13_653.39;
-/// Whole-vehicle hull yaw inertia (Chrono `Izz`, about its vertical
-/// axis), kg m².
-pub const CHASSIS_YAW_INERTIA: f64 = 101_954.43;
+/// The Marder 1A3's combat weight, kg: 33.5 t "gefechtsbereit" (the
+/// German-language encyclopaedia's Marder article, as de.pluspedia.org
+/// keeps it; its 13.2 kW/t for the 1A3 with the 441 kW engine is 33.4 t),
+/// which the declaration's masses add up to.
+pub const COMBAT_WEIGHT: f64 = 33_500.0;
+/// Sprocket mass, kg (Chrono's `Marder_SprocketSinglePin`).
+pub const SPROCKET_MASS: f64 = 27.68;
+/// Road-wheel mass, kg (Chrono's `Marder_RoadWheel`).
+pub const WHEEL_MASS: f64 = 35.56;
+/// Return-roller mass, kg (Chrono's `Marder_SupportRoller`).
+pub const ROLLER_MASS: f64 = 10.56;
+/// Idler-wheel mass, kg (Chrono's `Marder_IdlerWheel`).
+pub const IDLER_MASS: f64 = 25.76;
+/// The idler's carrier, the tensioner arm here, kg (Chrono's `Marder_Idler`).
+pub const TENSIONER_ARM_MASS: f64 = 10.0;
+/// Both sides' running gear as declared, kg: per side 77 shoes, the
+/// sprocket, six road wheels on their arms, three rollers, the idler and
+/// its tensioner arm (4 295.16 kg).
+pub const RUNNING_GEAR_MASS: f64 = 2.0
+    * (77.0 * SHOE_MASS
+        + SPROCKET_MASS
+        + 6.0 * (WHEEL_MASS + ARM_MASS)
+        + 3.0 * ROLLER_MASS
+        + IDLER_MASS
+        + TENSIONER_ARM_MASS);
+/// Chrono's hull (`Marder_Chassis`): 25 000 kg; inertias about its
+/// forward, lateral and vertical axes (`Ixx`, `Iyy`, `Izz`) 13 653.39,
+/// 98 182.71 and 101 954.43 kg m².
+pub const CHRONO_CHASSIS: (f64, [f64; 3]) = (25_000.0, [13_653.39, 98_182.71, 101_954.43]);
+/// Whole-vehicle hull mass, kg (the planar model uses half): the combat
+/// weight less the running gear, 29 204.84 kg.
+pub const CHASSIS_MASS: f64 = COMBAT_WEIGHT - RUNNING_GEAR_MASS;
+/// Whole-vehicle hull pitch inertia, kg m² (the planar model uses half):
+/// Chrono's `Iyy`, scaled with the mass (its radius of gyration kept).
+pub const CHASSIS_INERTIA: f64 = CHRONO_CHASSIS.1[1] * CHASSIS_MASS / CHRONO_CHASSIS.0;
+/// Whole-vehicle hull roll inertia (about its forward axis), kg m²: the
+/// spatial vehicle's; Chrono's `Ixx`, scaled with the mass.
+pub const CHASSIS_ROLL_INERTIA: f64 = CHRONO_CHASSIS.1[0] * CHASSIS_MASS / CHRONO_CHASSIS.0;
+/// Whole-vehicle hull yaw inertia (about its vertical axis), kg m²:
+/// Chrono's `Izz`, scaled with the mass.
+pub const CHASSIS_YAW_INERTIA: f64 = CHRONO_CHASSIS.1[2] * CHASSIS_MASS / CHRONO_CHASSIS.0;
 /// The centre guide's lateral play against the road wheels, m, each way:
 /// half of Chrono's gap between a road wheel's halves (0.051 m,
 /// `Marder_RoadWheel`) less its shoe's guide, 0.0114 m wide
@@ -151,12 +186,12 @@ crate::model! {
         // Gap arcs of 0.07 m centred on the 0.328414781 m circle (a 12-gon
         // of 0.17 m sides), Chrono's; the tip circle estimated (see the
         // module docs: Chrono's 0.3 m lies under the seated shoe's pins).
-        sprocket sprocket { at: (0.0, 0.0), mass: 27.68, inertia: SPROCKET_INERTIA, radius: 0.275,
+        sprocket sprocket { at: (0.0, 0.0), mass: SPROCKET_MASS, inertia: SPROCKET_INERTIA, radius: 0.275,
             teeth: 12, tip_radius: 0.34, gap_radius: 0.07, gap_centre: 0.328414781 },
         // Wheels 1, 2, 5 and 6 (from the front) carry shock absorbers.
         road_wheel shocked[4] {
             at: [(-0.8458, -0.3759), (-1.6258, -0.3759), (-3.9658, -0.3759), (-4.7458, -0.3759)],
-            mass: 35.56, inertia: 2.16, radius: 0.35,
+            mass: WHEEL_MASS, inertia: 2.16, radius: 0.35,
             arm { pivot_offset: (0.4, 0.065), mass: ARM_MASS, inertia: ARM_INERTIA,
                   stiffness: TORSION_STIFFNESS,
                   damping: TORSION_DAMPING + SHOCK_DAMPING * SHOCK_LEVER * SHOCK_LEVER,
@@ -165,18 +200,18 @@ crate::model! {
         // Wheels 3 and 4: the torsion bar alone.
         road_wheel plain[2] {
             at: [(-2.4058, -0.3759), (-3.1858, -0.3759)],
-            mass: 35.56, inertia: 2.16, radius: 0.35,
+            mass: WHEEL_MASS, inertia: 2.16, radius: 0.35,
             arm { pivot_offset: (0.4, 0.065), mass: ARM_MASS, inertia: ARM_INERTIA,
                   stiffness: TORSION_STIFFNESS, damping: TORSION_DAMPING,
                   preload: TORSION_PRELOAD },
         },
         roller roller[3] {
             at: [(-1.2358, 0.1761), (-2.7958, 0.1761), (-4.3106, 0.1761)],
-            mass: 10.56, inertia: 1.16, radius: 0.118,
+            mass: ROLLER_MASS, inertia: 1.16, radius: 0.118,
         },
         // The idler's 10 kg carrier is the tensioner arm.
-        idler idler { at: (-5.4, -0.0647), mass: 25.76, inertia: 1.12, radius: 0.334,
-            arm { pivot: (-5.4, -0.0647 + TENSIONER_ARM), mass: 10.0, inertia: 0.04,
+        idler idler { at: (-5.4, -0.0647), mass: IDLER_MASS, inertia: 1.12, radius: 0.334,
+            arm { pivot: (-5.4, -0.0647 + TENSIONER_ARM), mass: TENSIONER_ARM_MASS, inertia: 0.04,
                   stiffness: TENSIONER.0 * TENSIONER_ARM * TENSIONER_ARM,
                   damping: TENSIONER.1 * TENSIONER_ARM * TENSIONER_ARM,
                   preload: -TENSIONER.2 * TENSIONER_ARM } },
@@ -410,9 +445,8 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
 /// events answer, each with its source: the Bundeswehr's for the Marder
 /// 1A3 and its successors, as the German press quotes them (no field
 /// manual or manufacturer's sheet with them was found to cite directly).
-/// The declaration's masses are Chrono's (29.3 t with both sides'
-/// running gear, a Marder 1 or 1A1 of 28–30 t); the 1A3 weighs 33.5 t in
-/// combat order.
+/// The declaration weighs what the 1A3 does in combat order
+/// ([`COMBAT_WEIGHT`]).
 pub const PUBLISHED: [trackgen::mobility::Published; 4] = {
     use trackgen::mobility::quantity;
     [
