@@ -836,8 +836,9 @@ fn teeth_that_miss_the_pins_are_refused() {
     assert_eq!(geometry.sprocket.check(joints, &geometry.shoe), Ok(()));
     let mut chrono = geometry.sprocket;
     chrono.addendum = 0.3;
+    // The pitch circle of 12 joints 0.17 m apart, and the chord's distance.
     let half = std::f64::consts::PI / 12.0;
-    let chord = pitch_radius(12, SHOE_PITCH) * half.cos();
+    let chord = SHOE_PITCH / (2.0 * half.sin()) * half.cos();
     let want = chord.hypot(0.0535) - geometry.shoe.pin_radius;
     match chrono.check(joints, &geometry.shoe) {
         Err(ProfileProblem::TeethMissPins {

@@ -5,8 +5,7 @@
 //! so a part added, dropped or changed in the declaration and not in that
 //! sum fails here.
 
-use crate::support::vehicle::m113_mass;
-use trackgen::multibody::RecursiveModel;
+use crate::support::vehicle::{m113_mass, side_mass};
 use trackgen::vehicles::{m113, marder};
 
 /// Relative 1e-12: the same masses summed in another order, some 170
@@ -29,14 +28,7 @@ fn the_m113_weighs_the_m113a3s_combat_weight() {
 /// its mass, each radius of gyration Chrono's to 1e-12.
 #[test]
 fn the_marder_weighs_the_marder_1a3s_combat_weight() {
-    let side: f64 = marder::MarderTrack
-        .description()
-        .bodies
-        .iter()
-        .chain(marder::MarderChassis.description().bodies.iter())
-        .map(|b| b.mass)
-        .sum();
-    let mass = 2.0 * side;
+    let mass = 2.0 * side_mass(&marder::MarderTrack, &marder::MarderChassis);
     assert!(
         (mass / 33_500.0 - 1.0).abs() < 1e-12,
         "{mass} kg against 33 500 kg"

@@ -305,7 +305,8 @@ impl Engagement<'_> {
         let mut lowest_pin = f64::INFINITY;
         for (k, &pin) in self.pins.iter().enumerate() {
             let p = to_sprocket(pin);
-            lowest_pin = lowest_pin.min(p.0.hypot(p.1) - self.pin_radius);
+            let inner_edge = p.0.hypot(p.1) - self.pin_radius;
+            lowest_pin = lowest_pin.min(inner_edge);
             let nearest = gaps
                 .iter()
                 .map(|g| (p.0 - g.0).hypot(p.1 - g.1))
@@ -313,7 +314,7 @@ impl Engagement<'_> {
             let depth = nearest + self.pin_radius - rho;
             // Inside the gap's circle, or outside the tip circle (a pin
             // riding high, which no tooth strikes).
-            let outside_tip = p.0.hypot(p.1) - self.pin_radius >= addendum;
+            let outside_tip = inner_edge >= addendum;
             if depth > 0.0 && !outside_tip {
                 let along = (pin.0 - x1) * ux + (pin.1 - y1) * uy;
                 let from_joint = along.abs().min((span - along).abs());

@@ -26,12 +26,18 @@ pub fn m113_with(terrain: Terrain, drive: Drive, closure: ClosureMethod) -> M113
 /// `src/vehicles/m113.rs` as compiled (one side: 64 shoes, the half hull,
 /// sprocket, five road wheels and arms, idler and tensioner arm).
 pub fn m113_mass() -> f64 {
-    M113Track
-        .description()
-        .bodies
+    side_mass(&M113Track, &M113Chassis)
+}
+
+/// A planar side's mass, kg: every compiled body of its track and its
+/// chassis (the half hull and its running gear).
+pub fn side_mass<const DT: usize, const DC: usize>(
+    track: &impl RecursiveModel<DT>,
+    chassis: &impl RecursiveModel<DC>,
+) -> f64 {
+    [track.description(), chassis.description()]
         .iter()
-        .chain(M113Chassis.description().bodies.iter())
-        .map(|b| b.mass)
+        .flat_map(|d| d.bodies.iter().map(|b| b.mass))
         .sum()
 }
 

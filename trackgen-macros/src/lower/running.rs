@@ -180,7 +180,7 @@ impl Lowering<'_> {
         if let Err(problem) = engagement.check() {
             // Teeth too short are the tip circle's to change, where declared.
             let span = match problem {
-                ProfileProblem::TeethMissPins { .. } => profile.spans[0].unwrap_or(spans.pins),
+                ProfileProblem::TeethMissPins { .. } => profile.tip_span().unwrap_or(spans.pins),
                 _ => spans.pins,
             };
             self.errors.at(span, problem);

@@ -47,6 +47,11 @@ impl Profile {
         })
     }
 
+    /// Where the tip radius was declared, if it was.
+    pub(super) fn tip_span(&self) -> Option<Span> {
+        self.spans[0]
+    }
+
     /// Where to point at a gap's problem: the declared gap radius, else
     /// the gap centre, else the teeth.
     pub(super) fn gap_span(&self) -> Option<Span> {
