@@ -58,6 +58,7 @@ mod space_contact;
 mod spatial_assembly;
 mod spatial_books;
 mod spatial_drive;
+mod spatial_driveline;
 mod spatial_dynamics;
 mod spatial_slope;
 mod spatial_steering;

@@ -101,10 +101,12 @@ fn trees(system: &System, y: &[f64]) -> States {
     (hull, right, left)
 }
 
-/// Every value of a state's three trees, in one vector.
+/// Every value of a state's three trees (and the ground's
+/// deflections, zero), in one vector: not the driveline's three states
+/// nor the two books.
 fn values(system: &System, states: &States) -> DVector<f64> {
     let y = system.state(&states.0, &states.1, &states.2);
-    y.rows(0, system.dimension() - 4).into_owned()
+    y.rows(0, system.dimension() - 5).into_owned()
 }
 
 /// A left turn (the right belt faster) and the right turn with the belts'

@@ -1,12 +1,13 @@
 //! The main job in 3-D (`spatial`): the vehicle with both tracks and its
 //! hull floating in space, assembled on its course (the profile laid
 //! across its whole width), settled, driven to a target speed by a speed
-//! controller on each sprocket, over the course's bump, then steered
-//! through a turn by a driver holding a heading.
+//! controller on each sprocket (or one on a differential, steered by its
+//! brakes or a steer unit), over the course's bump, then steered through
+//! a turn by a driver holding a heading.
 //!
 //! Writes `spatial.csv` (one row per output interval: the hull's pose and
 //! motion, the centre of mass's, and per side the sprocket's speed,
-//! torque and power, the belt's and the ground's speeds, slip, and the
+//! torque and power, the steering brake's torque and power, the belt's and the ground's speeds, slip, and the
 //! ground's force and yaw moment) and `spatial.svg` (the path seen from
 //! above, and the heading against time).
 
@@ -21,10 +22,11 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    HeadingHold, SideDrives, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem,
+    Differential, DifferentialSteer, Driveline, HeadingHold, SideDrives, SpatialOutputs,
+    SpatialSimulated, SpatialVehicleSystem, SteerUnit, SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
-use trackgen::vehicle::speed_ramp;
+use trackgen::vehicle::{Drive, speed_ramp};
 
 use crate::cli::{self, CourseArgs, within};
 use crate::console::say;
@@ -73,9 +75,30 @@ pub struct SpatialArgs {
     /// 0.1 (the books are held to 10 × it).
     #[arg(long, default_value_t = Integrator::DEFAULT_EXPLICIT_TOLERANCE, value_name = "TOL", value_parser = cli::tolerance)]
     pub tolerance: f64,
+    /// How the drive reaches the sprockets.
+    #[arg(long, value_enum, default_value_t = DrivelineKind::Sides)]
+    pub driveline: DrivelineKind,
+    /// The steer unit's minimum steer ratio (`--driveline steer-ratio`),
+    /// 1.01 to 100; default the vehicle's first published one.
+    #[arg(long, value_name = "RATIO", value_parser = crate::steer::speed_ratio)]
+    pub steer_ratio: Option<f64>,
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = cli::folder)]
     pub out: Option<PathBuf>,
+}
+
+/// How the drive reaches the sprockets.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrivelineKind {
+    /// A speed controller on each sprocket (the vehicle's declared
+    /// gains), the driver moving their targets apart.
+    Sides,
+    /// One speed controller on a differential (twice a side's gains and
+    /// limit), the driver braking the inner sprocket.
+    Brakes,
+    /// One speed controller on a differential with a steer unit holding
+    /// the sprockets' speed ratio, at most `--steer-ratio`.
+    SteerRatio,
 }
 
 /// The turn's default angle, degrees.
@@ -93,6 +116,87 @@ const HEADING_GAIN: f64 = 1.5;
 /// The yaw rate the driver's largest belt-speed difference asks for,
 /// rad/s: the difference is the gauge times it.
 const MAX_YAW_RATE: f64 = 1.0;
+/// The steering brakes' largest torque over a side drive's limit:
+/// holding the inner sprocket in a clutch-brake turn takes the
+/// differential's half of the drive's torque and the ground's pull on
+/// the inner track, about twice a side's turning torque (an assumption:
+/// no brake figure of either vehicle was found).
+const BRAKE_OVER_DRIVE: f64 = 2.0;
+
+/// The driveline `args` ask for, with the vehicle's speed drive toward
+/// `target` (m/s against time): a differential's controller takes twice
+/// a side's gains and limit, a steer unit half a side's gains (its
+/// torque acts on both sprockets, `±Q`, so the speed difference moves as
+/// under the two side drives) and a side's limit, steering brakes twice a
+/// side's limit with the parking brake's elastic stage on half the
+/// vehicle's mass reflected to a sprocket, fully on when the driver asks
+/// a third of the largest difference (a brake turns the vehicle only
+/// past the ground's turning resistance: a driver braking in proportion
+/// up to the largest difference cannot take out a few degrees of
+/// overshoot).
+fn driveline<V: SpatialVehicleSystem>(
+    entry: &Offered,
+    args: &SpatialArgs,
+    system: &V::Spatial,
+    target: impl Fn() -> Box<dyn Fn(f64) -> f64 + Send>,
+) -> Result<(Driveline, String), String> {
+    if args.driveline == DrivelineKind::Sides {
+        let drives = SideDrives {
+            right: V::speed_drive(target()),
+            left: V::speed_drive(target()),
+        };
+        return Ok((
+            Driveline::Sides(drives),
+            "a speed drive on each sprocket".into(),
+        ));
+    }
+    let Drive::Speed {
+        proportional,
+        integral,
+        max_torque,
+        ..
+    } = V::speed_drive(|_| 0.0)
+    else {
+        return Err(format!("{}'s drive is not a speed controller", V::NAME));
+    };
+    let drive = Drive::Speed {
+        target: target(),
+        proportional: 2.0 * proportional,
+        integral: 2.0 * integral,
+        max_torque: 2.0 * max_torque,
+    };
+    let (steer, said) = if args.driveline == DrivelineKind::Brakes {
+        let largest = V::layout().gauge * MAX_YAW_RATE / 3.0;
+        let radius = system.rolling_radius();
+        let inertia = 0.5 * system.mass() * radius * radius;
+        let brakes =
+            SteeringBrakes::by_parking_rule(BRAKE_OVER_DRIVE * max_torque, inertia, largest);
+        let said = format!(
+            "a differential steered by its brakes ({:.1} kN m each)",
+            brakes.max_torque / 1e3
+        );
+        (DifferentialSteer::Brakes(brakes), said)
+    } else {
+        let ratio = args
+            .steer_ratio
+            .or(entry.steer_ratios.first().copied())
+            .ok_or_else(|| format!("{} publishes no steer ratio: give --steer-ratio", V::NAME))?;
+        let unit = SteerUnit {
+            min_ratio: ratio,
+            proportional: 0.5 * proportional,
+            integral: 0.5 * integral,
+            max_torque,
+        };
+        let said = format!("a differential with a steer unit (minimum steer ratio {ratio})");
+        (DifferentialSteer::Ratio(unit), said)
+    };
+    let differential = Differential {
+        drive,
+        steer,
+        input: Box::new(|_| 0.0),
+    };
+    Ok((Driveline::Differential(differential), said))
+}
 
 fn turn(s: &str) -> Result<f64, String> {
     within(
@@ -174,11 +278,11 @@ fn drive<V: SpatialVehicleSystem>(
     let mut system = V::spatial(V::declared_laws(), field)?;
     let mut y = system.assembled(&terrain)?;
     let assembly = assembling.elapsed().as_secs_f64();
-    let target = || speed_ramp(args.settle, args.ramp, args.speed);
-    system.set_drives(SideDrives {
-        right: V::speed_drive(target()),
-        left: V::speed_drive(target()),
-    })?;
+    let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
+        Box::new(speed_ramp(args.settle, args.ramp, args.speed))
+    };
+    let (driveline, driven) = driveline::<V>(entry, args, &system, target)?;
+    system.set_driveline(driveline)?;
     let angle = args.turn.to_radians();
     system.set_steering(HeadingHold::turn(
         angle,
@@ -195,6 +299,7 @@ fn drive<V: SpatialVehicleSystem>(
         layout.gauge,
         assembly * 1e3
     );
+    say!("driven through {driven}");
     say!(
         "settle {:.1} s, then to {:.1} m/s in {:.1} s; {}; turning {:.0}° {} from t = {:.1} s over {:.1} s; {:.1} s in all",
         args.settle,
@@ -338,7 +443,7 @@ const PICTURE_ROWS: usize = 2000;
 
 /// The CSV's columns after the time: SI units, angles in rad, sides `r_`
 /// and `l_`.
-const COLUMNS: [&str; 37] = [
+const COLUMNS: [&str; 41] = [
     "x",
     "y",
     "z",
@@ -357,6 +462,8 @@ const COLUMNS: [&str; 37] = [
     "r_sprocket_speed",
     "r_sprocket_torque",
     "r_sprocket_power",
+    "r_brake_torque",
+    "r_brake_power",
     "r_belt_speed",
     "r_ground_speed",
     "r_slip",
@@ -368,6 +475,8 @@ const COLUMNS: [&str; 37] = [
     "l_sprocket_speed",
     "l_sprocket_torque",
     "l_sprocket_power",
+    "l_brake_torque",
+    "l_brake_power",
     "l_belt_speed",
     "l_ground_speed",
     "l_slip",
@@ -403,6 +512,8 @@ fn record(out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
             side.sprocket_speed,
             side.sprocket_torque,
             side.sprocket_power,
+            side.brake_torque,
+            side.brake_power,
             side.belt_speed,
             side.ground_speed,
             side.slip,

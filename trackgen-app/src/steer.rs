@@ -310,7 +310,8 @@ fn turn_speed(s: &str) -> Result<f64, String> {
     crate::cli::within(s, Range::closed(0.1, 10.0, "from 0.1 to 10 m/s"), "a speed")
 }
 
-fn speed_ratio(s: &str) -> Result<f64, String> {
+/// A sprocket speed ratio from the command line: 1.01 to 100.
+pub(crate) fn speed_ratio(s: &str) -> Result<f64, String> {
     crate::cli::within(
         s,
         Range::closed(1.01, 100.0, "from 1.01 to 100"),

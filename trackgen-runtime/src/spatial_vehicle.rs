@@ -28,12 +28,14 @@
 //! surface's forward and left tangents: friction is isotropic there, and
 //! a shoe sliding sideways in a turn is what resists the turn); a point
 //! off the ground lets its deflection relax. Each side's sprocket
-//! has its own drive ([`SideDrives`]). [`SpatialSystem`] integrates the
-//! vehicle in time.
+//! has its own drive ([`SideDrives`]), or one drive reaches both through
+//! a differential steered by brakes or a steer unit ([`Driveline`]).
+//! [`SpatialSystem`] integrates the vehicle in time.
 
 mod bodies;
 mod declared;
 mod drive;
+mod driveline;
 mod ground;
 mod outputs;
 mod steering;
@@ -42,6 +44,10 @@ mod system;
 use bodies::Bodies;
 pub use declared::{SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, SideDrives};
+pub use driveline::{
+    Differential, DifferentialSteer, Driveline, DrivelineError, SteerInput, SteerUnit,
+    SteeringBrakes,
+};
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
 pub use system::{SpatialEnergy, SpatialSystem};

@@ -8,8 +8,8 @@
 use nalgebra::{DVector, SVector, Vector3};
 
 use super::{
-    HeadingHold, SideDrives, SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialSystem,
-    SteeringError, TreeState,
+    Driveline, DrivelineError, HeadingHold, SideDrives, SpatialEnergy, SpatialLaws, SpatialOutputs,
+    SpatialSystem, SteeringError, TreeState,
 };
 use crate::assembly::{SideError, assemble_sides};
 use crate::contact::axial::GuideLaw;
@@ -37,8 +37,20 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// no controller are refused.
     fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError>;
 
-    /// Steers by `hold` from now on (both drives must be speed drives).
+    /// Drives the sprockets through `driveline` from now on
+    /// ([`SpatialSystem::with_driveline`]).
+    fn set_driveline(&mut self, driveline: Driveline) -> Result<(), DrivelineError>;
+
+    /// Steers by `hold` from now on (a drive on each side must be a speed
+    /// drive).
     fn set_steering(&mut self, hold: HeadingHold) -> Result<(), SteeringError>;
+
+    /// The vehicle's mass, kg: every body's.
+    fn mass(&self) -> f64;
+
+    /// The sprockets' rolling radius, m: the mean of the two sides' (NaN
+    /// without sprockets).
+    fn rolling_radius(&self) -> f64;
 
     /// What the vehicle shows at `t` and `y` ([`SpatialSystem::outputs`]).
     fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError>;
@@ -97,14 +109,34 @@ where
 
     fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError> {
         drives.check()?;
-        self.drives = drives;
+        self.driveline = Driveline::Sides(drives);
         Ok(())
+    }
+
+    fn set_driveline(&mut self, driveline: Driveline) -> Result<(), DrivelineError> {
+        SpatialSystem::set_driveline(self, driveline)
     }
 
     fn set_steering(&mut self, hold: HeadingHold) -> Result<(), SteeringError> {
         self.check_steering(&hold)?;
         self.steering = Some(hold);
         Ok(())
+    }
+
+    fn mass(&self) -> f64 {
+        let d = &self.dynamics;
+        [d.hull.masses(), d.right.masses(), d.left.masses()]
+            .iter()
+            .flat_map(|m| m.iter())
+            .sum()
+    }
+
+    fn rolling_radius(&self) -> f64 {
+        let radii = self
+            .dynamics
+            .sprockets
+            .map(|s| s.map_or(f64::NAN, |s| s.rolling_radius));
+        0.5 * (radii[0] + radii[1])
     }
 
     fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {

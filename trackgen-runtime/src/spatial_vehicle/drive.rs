@@ -12,7 +12,10 @@
 
 use nalgebra::Vector3;
 
-use super::{HeadingHold, SpatialDynamics, SpatialLoads, TreeState};
+use super::{
+    Differential, DifferentialSteer, Driveline, HeadingHold, SpatialDynamics, SpatialLoads,
+    TreeState,
+};
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::plane_rotation;
@@ -48,20 +51,30 @@ impl SideDrives {
     }
 }
 
-/// What the drives do at a state: per side (right, left).
+/// What the driveline does at a state: per side (right, left).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct DriveState {
     /// The sprocket's speed relative to the frame, rad/s (planar sense:
     /// driving forward turns it negative).
     pub speed: [f64; 2],
-    /// The drive's torque on it, N m (planar sense).
+    /// The driveline's torque on it, N m (planar sense): the drive's
+    /// share, the steer unit's and the brake's together.
     pub torque: [f64; 2],
-    /// Each speed controller's integral's rate, rad/s.
-    pub integral_rate: [f64; 2],
+    /// The steering brake's part of it, N m.
+    pub brake: [f64; 2],
+    /// The power the drive and the steer unit put in, W: the books'
+    /// driven work's rate.
+    pub driven: f64,
+    /// The power the brakes dissipate, W.
+    pub dissipation: f64,
+    /// The rates of the driveline's three states
+    /// ([`SpatialSystem`](super::SpatialSystem)'s docs).
+    pub rates: [f64; 3],
 }
 
 impl DriveState {
-    /// The power the drives put in, W: `Σ τ ω`.
+    /// The power the driveline puts into the sprockets, W: `Σ τ ω` (the
+    /// drive's and the steer unit's less what the brakes take).
     pub fn power(&self) -> f64 {
         self.torque[0] * self.speed[0] + self.torque[1] * self.speed[1]
     }
@@ -74,53 +87,165 @@ where
     R: TrackModel<DR>,
     L: TrackModel<DL>,
 {
-    /// What the drives do at time `t` and the hull's state, with each
-    /// controller's `integrals` (rad, right then left) and the driver's
-    /// `steering`, if any (the right belt's target `+Δu/2`, the left's
-    /// `−Δu/2`, [`HeadingHold::difference`]): a side without a sprocket
-    /// takes no torque; a drive's demand or a heading wanted that is not
-    /// finite stops the run ([`Drive::checked_torque`]).
+    /// What the driveline does at time `t` and the hull's state, with its
+    /// three `states` and the driver's `steering`, if any (a belt-speed
+    /// difference asked for, [`HeadingHold::difference`]; without one a
+    /// differential steers by its input schedule): a side without a
+    /// sprocket takes no torque; a drive's demand, a heading wanted or a
+    /// steering input that is not finite stops the run
+    /// ([`Drive::checked_torque`]), and so does a steering input outside
+    /// `[−1, 1]`.
     pub fn drive(
         &self,
         t: f64,
         hull: &TreeState<DH>,
-        (drives, steering, integrals): (&SideDrives, Option<&HeadingHold>, [f64; 2]),
+        (driveline, steering, states): (&Driveline, Option<&HeadingHold>, [f64; 3]),
     ) -> Result<DriveState, SimulationError> {
         let qd = &hull.rates.planar;
-        let difference = match steering {
-            None => 0.0,
-            Some(hold) => {
-                hold.difference(t, hull.pose.yaw, self.gauge)
-                    .ok_or(SimulationError::NonFinite {
-                        t,
-                        what: "the steering's heading",
-                    })?
-            }
+        let asked = match steering {
+            None => None,
+            Some(hold) => Some(hold.difference(t, hull.pose.yaw, self.gauge).ok_or(
+                SimulationError::NonFinite {
+                    t,
+                    what: "the steering's heading",
+                },
+            )?),
         };
         let mut state = DriveState::default();
-        for (s, drive) in drives.each().into_iter().enumerate() {
-            let Some(sprocket) = self.sprockets[s] else {
-                continue;
-            };
-            let omega = qd[2 + sprocket.body] - qd[2];
-            // Right (index 0) outside in a left turn.
-            let trim = [0.5, -0.5][s] * difference;
-            let (torque, rate) = drive.checked_torque_trimmed(
-                (t, trim),
-                omega,
-                sprocket.rolling_radius,
-                integrals[s],
-                TorqueCap::NONE,
-            )?;
-            state.speed[s] = omega;
-            state.torque[s] = torque;
-            state.integral_rate[s] = rate;
+        for (s, sprocket) in self.sprockets.iter().enumerate() {
+            if let Some(sprocket) = sprocket {
+                state.speed[s] = qd[2 + sprocket.body] - qd[2];
+            }
+        }
+        match driveline {
+            Driveline::Sides(drives) => {
+                self.drive_sides(t, drives, asked.unwrap_or(0.0), states, &mut state)?
+            }
+            Driveline::Differential(differential) => {
+                self.drive_differential(t, differential, asked, states, &mut state)?
+            }
         }
         Ok(state)
     }
 
-    /// The drives' torques (`drive`'s) added to the sprockets' and the
-    /// frame's `loads`.
+    /// Each side's drive on its own sprocket, a speed drive's target
+    /// trimmed by half the `difference` asked (the right's up, the
+    /// left's down).
+    fn drive_sides(
+        &self,
+        t: f64,
+        drives: &SideDrives,
+        difference: f64,
+        states: [f64; 3],
+        state: &mut DriveState,
+    ) -> Result<(), SimulationError> {
+        for (s, drive) in drives.each().into_iter().enumerate() {
+            let Some(sprocket) = self.sprockets[s] else {
+                continue;
+            };
+            // Right (index 0) outside in a left turn.
+            let trim = [0.5, -0.5][s] * difference;
+            let (torque, rate) = drive.checked_torque_trimmed(
+                (t, trim),
+                state.speed[s],
+                sprocket.rolling_radius,
+                states[s],
+                TorqueCap::NONE,
+            )?;
+            state.torque[s] = torque;
+            state.rates[s] = rate;
+        }
+        state.driven = state.power();
+        Ok(())
+    }
+
+    /// The differential's drive halved to both sprockets, and its brakes
+    /// or steer unit, steered by the belt-speed difference `asked` or
+    /// else by the input schedule.
+    fn drive_differential(
+        &self,
+        t: f64,
+        differential: &Differential,
+        asked: Option<f64>,
+        states: [f64; 3],
+        state: &mut DriveState,
+    ) -> Result<(), SimulationError> {
+        let radii = self
+            .sprockets
+            .map(|s| s.map_or(f64::NAN, |s| s.rolling_radius));
+        let radius = 0.5 * (radii[0] + radii[1]);
+        let omega = state.speed;
+        let mean = 0.5 * (omega[0] + omega[1]);
+        let (torque, rate) = differential.drive.checked_torque_trimmed(
+            (t, 0.0),
+            mean,
+            radius,
+            states[0],
+            TorqueCap::NONE,
+        )?;
+        state.torque = [0.5 * torque; 2];
+        state.driven = torque * mean;
+        state.rates[0] = rate;
+        let input = || -> Result<f64, SimulationError> {
+            let s = (differential.input)(t);
+            if s.is_nan() {
+                return Err(SimulationError::NonFinite {
+                    t,
+                    what: "the steering input",
+                });
+            }
+            if !(-1.0..=1.0).contains(&s) {
+                return Err(SimulationError::Stopped {
+                    t,
+                    reason: "the steering input is outside -1 (full right) to 1 (full left)",
+                });
+            }
+            Ok(s)
+        };
+        match &differential.steer {
+            DifferentialSteer::Brakes(brakes) => {
+                // A driver's hands on the levers answer the heading (the
+                // difference asked), not the sprockets' speeds, which
+                // carry the teeth's and wheels' ripple.
+                let lever = match asked {
+                    Some(asked) => (asked / brakes.band).clamp(-1.0, 1.0),
+                    None => input()?,
+                };
+                // A left turn (lever > 0) brakes the left axle.
+                let applied = [(-lever).max(0.0), lever.max(0.0)].map(|l| l * brakes.max_torque);
+                for s in 0..2 {
+                    let law = brakes.respond(states[1 + s], omega[s], applied[s]);
+                    state.brake[s] = law.force;
+                    state.torque[s] += law.force;
+                    state.rates[1 + s] = law.rate;
+                    state.dissipation += law.dissipation;
+                }
+            }
+            DifferentialSteer::Ratio(unit) => {
+                let most = unit.span() * mean.abs();
+                let wanted = match asked {
+                    Some(asked) => (-asked / radius).clamp(-most, most),
+                    None => input()? * unit.span() * mean,
+                };
+                let difference = omega[0] - omega[1];
+                let (torque, rate) = unit.controller().checked_torque_trimmed(
+                    (t, -wanted),
+                    difference,
+                    1.0,
+                    states[1],
+                    TorqueCap::NONE,
+                )?;
+                state.torque[0] += torque;
+                state.torque[1] -= torque;
+                state.driven += torque * difference;
+                state.rates[1] = rate;
+            }
+        }
+        Ok(())
+    }
+
+    /// The driveline's torques (`drive`'s) added to the sprockets' and
+    /// the frame's `loads`.
     pub fn apply_drive(&self, hull: &TreeState<DH>, drive: &DriveState, loads: &mut SpatialLoads) {
         let eta: Vector3<f64> = plane_rotation(hull.pose.yaw, hull.pose.roll)
             .column(1)

@@ -1,7 +1,8 @@
 //! What a spatial run shows at a state, as a vehicle engineer reads a
 //! turn: the hull's heading, pitch, roll and yaw rate, the centre of mass's motion and
 //! acceleration (lateral in the hull's heading), the radius of its path,
-//! and per side the sprocket's speed, torque and power, the belt's speed,
+//! and per side the sprocket's speed, torque and power, the brake's
+//! torque and power, the belt's speed,
 //! the track's slip and its own speed round the hull, and the ground's
 //! force and yaw moment on the track.
 
@@ -17,10 +18,17 @@ pub struct SideOutputs {
     /// The sprocket's speed relative to the frame, rad/s (planar sense:
     /// driving forward turns it negative).
     pub sprocket_speed: f64,
-    /// The drive's torque on it, N m (planar sense).
+    /// The driveline's torque on it, N m (planar sense): the drive's, the
+    /// steer unit's and the brake's.
     pub sprocket_torque: f64,
-    /// The drive's power, W: torque times speed.
+    /// The driveline's power into it, W: torque times speed.
     pub sprocket_power: f64,
+    /// The steering brake's part of the torque, N m (0 without brakes).
+    pub brake_torque: f64,
+    /// The brake's power, W: its torque times the speed (never positive
+    /// while it slips; what its elastic stage stores and gives back while
+    /// it holds).
+    pub brake_power: f64,
     /// The belt's speed, m/s: how fast the ground run moves rearward
     /// along the hull, the sprocket's speed times its rolling radius
     /// (forward driving positive).
@@ -127,6 +135,8 @@ where
                 sprocket_speed: speed,
                 sprocket_torque: torque,
                 sprocket_power: torque * speed,
+                brake_torque: drive.brake[s],
+                brake_power: drive.brake[s] * speed,
                 belt_speed,
                 ground_speed,
                 slip: if belt_speed == 0.0 {

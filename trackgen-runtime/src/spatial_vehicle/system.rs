@@ -9,8 +9,12 @@
 //! across it (3). The state is the hull's, the right track's, the left
 //! track's, each track's ground points' stiction deflections (m, none
 //! under regularised friction: [`SpatialDynamics::ground_states`]), the
-//! two drives' controller integrals (rad, right then left),
-//! the energy dissipated so far and the drives' work so far (J). Each
+//! driveline's three states, the energy dissipated so far and the work
+//! the drive has done so far (J). The driveline's states are, with a
+//! drive on each side, the right's and the left's controller integrals
+//! (rad) and an unused 0; with a differential, its drive's integral
+//! (rad), then the right and the left steering brakes' deflections (rad)
+//! or the steer unit's integral (rad) and an unused 0. Each
 //! track's loop is
 //! held by Baumgarte's stabilisation of its planar closure
 //! ([`MultiplierOptions`]'s rate), which the plane's motion leaves
@@ -19,8 +23,8 @@
 use nalgebra::{DVector, SVector, Vector3};
 
 use super::{
-    DriveState, GroundForce, HeadingHold, LoadScratch, MassCentre, SideDrives, SpatialDynamics,
-    SteeringError, TreeState,
+    DriveState, Driveline, DrivelineError, GroundForce, HeadingHold, LoadScratch, MassCentre,
+    SideDrives, SpatialDynamics, SteeringError, TreeState,
 };
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
@@ -32,7 +36,7 @@ use crate::vehicle::{Drive, DriveError};
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
     /// Its dynamics at a state.
     pub dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>,
-    pub(super) drives: SideDrives,
+    pub(super) driveline: Driveline,
     pub(super) steering: Option<HeadingHold>,
     closure: MultiplierOptions,
     scratch: LoadScratch,
@@ -49,7 +53,7 @@ pub struct SpatialEnergy {
     pub stored: f64,
     /// What they have dissipated since the start.
     pub dissipated: f64,
-    /// The work the drives have done since the start.
+    /// The work the drive (and a steer unit) has done since the start.
     pub driven: f64,
 }
 
@@ -134,7 +138,7 @@ where
     pub fn new(dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>) -> Self {
         SpatialSystem {
             dynamics,
-            drives: SideDrives::free(),
+            driveline: Driveline::Sides(SideDrives::free()),
             steering: None,
             closure: MultiplierOptions::default(),
             scratch: LoadScratch::default(),
@@ -145,42 +149,73 @@ where
     /// make no controller are refused ([`SideDrives::check`]).
     pub fn with_drives(mut self, drives: SideDrives) -> Result<Self, DriveError> {
         drives.check()?;
-        self.drives = drives;
+        self.driveline = Driveline::Sides(drives);
         Ok(self)
     }
 
-    /// The system with a driver steering it to `hold`'s heading through
-    /// its two speed drives ([`HeadingHold`]); a setting out of range, or
-    /// a side without a speed drive, is refused.
+    /// The system with its sprockets driven through `driveline`; settings
+    /// out of range, or a differential on a vehicle without both
+    /// sprockets, are refused. A heading held already
+    /// ([`with_steering`](Self::with_steering)) must still be one the
+    /// driveline can steer.
+    pub fn with_driveline(mut self, driveline: Driveline) -> Result<Self, DrivelineError> {
+        self.set_driveline(driveline)?;
+        Ok(self)
+    }
+
+    /// [`with_driveline`](Self::with_driveline) in place.
+    pub(super) fn set_driveline(&mut self, driveline: Driveline) -> Result<(), DrivelineError> {
+        driveline.check()?;
+        if let Driveline::Differential(_) = driveline {
+            for (sprocket, side) in self.dynamics.sprockets.iter().zip(["right", "left"]) {
+                if sprocket.is_none() {
+                    return Err(DrivelineError::NoSprocket { side });
+                }
+            }
+        }
+        self.driveline = driveline;
+        Ok(())
+    }
+
+    /// The system with a driver steering it to `hold`'s heading
+    /// ([`HeadingHold`]): through its two speed drives, or its
+    /// differential's brakes or steer unit; a setting out of range, or a
+    /// side without a speed drive, is refused.
     pub fn with_steering(mut self, hold: HeadingHold) -> Result<Self, SteeringError> {
         self.check_steering(&hold)?;
         self.steering = Some(hold);
         Ok(self)
     }
 
-    /// Why `hold` cannot steer this system: a setting out of range, or a
-    /// side without a speed drive.
+    /// Why `hold` cannot steer this system: a setting out of range, or,
+    /// with a drive on each side, a side without a speed drive.
     pub(super) fn check_steering(&self, hold: &HeadingHold) -> Result<(), SteeringError> {
         hold.check()?;
         let speed = |d: &Drive| matches!(d, Drive::Speed { .. });
-        if !(speed(&self.drives.right) && speed(&self.drives.left)) {
+        if let Driveline::Sides(drives) = &self.driveline
+            && !(speed(&drives.right) && speed(&drives.left))
+        {
             return Err(SteeringError::NotSpeedDrives);
         }
         Ok(())
     }
 
-    /// The drives, the steering and the controllers' integrals at `y`,
-    /// as [`SpatialDynamics::drive`] takes them.
-    pub(super) fn driver(&self, y: &[f64]) -> (&SideDrives, Option<&HeadingHold>, [f64; 2]) {
-        (&self.drives, self.steering.as_ref(), self.integrals(y))
+    /// The driveline, the steering and the driveline's states at `y`, as
+    /// [`SpatialDynamics::drive`] takes them.
+    pub(super) fn driver(&self, y: &[f64]) -> (&Driveline, Option<&HeadingHold>, [f64; 3]) {
+        (
+            &self.driveline,
+            self.steering.as_ref(),
+            self.driveline_states(y),
+        )
     }
 
     /// Where the trees end in the state and the ground's deflections
     /// begin.
     const TREES: usize = (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6);
 
-    /// Where the books sit in the state: the drives' integrals, then
-    /// the energy dissipated and the drives' work.
+    /// Where the books sit in the state: the driveline's three states,
+    /// then the energy dissipated and the drive's work.
     fn books_at(&self) -> usize {
         let [r, l] = self.dynamics.ground_states();
         Self::TREES + r + l
@@ -220,10 +255,10 @@ where
         )
     }
 
-    /// The drives' controller integrals in `y`, rad (right, left).
-    pub fn integrals(&self, y: &[f64]) -> [f64; 2] {
+    /// The driveline's three states in `y` (the module's docs).
+    pub fn driveline_states(&self, y: &[f64]) -> [f64; 3] {
         let b = self.books_at();
-        [y[b], y[b + 1]]
+        [y[b], y[b + 1], y[b + 2]]
     }
 
     /// What the drives do at time `t` and state `y`.
@@ -268,7 +303,7 @@ where
             tree_state(&y[..h]),
             tree_state(&y[h..h + r]),
             tree_state(&y[h + r..h + r + l]),
-            y[self.books_at() + 2],
+            y[self.books_at() + 3],
         )
     }
 
@@ -289,9 +324,10 @@ where
                 + height(d.left.positions(&left.pose), d.left.masses()),
             stored: self
                 .loads_at(y, &mut vec![0.0; self.books_at() - Self::TREES])
-                .potential,
+                .potential
+                + self.driveline.stored(self.driveline_states(y)),
             dissipated,
-            driven: y[self.books_at() + 3],
+            driven: y[self.books_at() + 4],
         }
     }
 }
@@ -304,7 +340,7 @@ where
     L: TrackModel<DL>,
 {
     fn dimension(&self) -> usize {
-        self.books_at() + 4
+        self.books_at() + 5
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -345,13 +381,13 @@ where
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
         put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
         put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
-        dy[b..b + 2].copy_from_slice(&drive.integral_rate);
-        dy[b + 2] = loads.dissipation;
-        dy[b + 3] = drive.power();
+        dy[b..b + 3].copy_from_slice(&drive.rates);
+        dy[b + 3] = loads.dissipation + drive.dissipation;
+        dy[b + 4] = drive.driven;
         Ok(())
     }
 
     fn is_quadrature(&self, i: usize) -> bool {
-        i >= self.books_at() + 2
+        i >= self.books_at() + 3
     }
 }

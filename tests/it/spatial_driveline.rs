@@ -1,0 +1,338 @@
+//! The spatial vehicle driven through a differential (`Driveline`):
+//! straight, it is the two side drives it halves; steered by its brakes
+//! or its steer unit, a left turn mirrors the right one and the books
+//! hold the drive's work with what the brakes store and dissipate; a
+//! steering input out of range, or a figure out of its range, is refused.
+//! Its steady turns against the general theory of skid steering are in
+//! `spatial_turn`.
+//!
+//! Runs compared to 1e-9 use RK4 at a fixed 0.1 ms (an adaptive method's
+//! accepted steps may differ between two runs by a rejection near its
+//! threshold); the books use Dormand–Prince at rtol 1e-7, as
+//! `spatial_drive`'s do.
+
+use std::f64::consts::FRAC_PI_4;
+
+use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
+use trackgen::nalgebra::DVector;
+use trackgen::spatial_vehicle::{
+    Differential, DifferentialSteer, Driveline, DrivelineError, HeadingHold, SideDrives,
+    SpatialSystem, SteerUnit, SteeringBrakes,
+};
+use trackgen::vehicle::Drive;
+
+use crate::support::twin::{States, System, at_rest, belt, mirror, run, spatial};
+
+/// RK4 at a fixed 0.1 ms.
+const FIXED: Integrator = Integrator::Rk4 { step: 1e-4 };
+
+/// Dormand–Prince at rtol 1e-7.
+const ADAPTIVE: Integrator = Integrator::Dopri5 {
+    rtol: 1e-7,
+    atol: 1e-9,
+    max_step: 1e-3,
+};
+
+/// The differential's box held at a mean belt speed of `speed` m/s,
+/// reached over `ramp` s: [`belt`]'s controller on each side, summed
+/// (gains and limit twice a side's).
+pub fn box_drive(speed: f64, ramp: f64) -> Drive {
+    Drive::Speed {
+        target: Box::new(move |t| speed * (t / ramp).min(1.0)),
+        proportional: 800.0,
+        integral: 8000.0,
+        max_torque: 6000.0,
+    }
+}
+
+/// Steering brakes for the `Twin` (3.6 t; about 1 kN m on a sprocket in
+/// a turn): 3 kN m each, the elastic stage by the parking brake's rule
+/// (`k = 100 T`, `c = √(k J)` with `J` the vehicle's mass reflected to a
+/// sprocket, about 100 kg m²), fully on at 0.5 m/s of error in the belts'
+/// difference.
+pub fn brakes() -> DifferentialSteer {
+    let stiffness = 100.0 * 3000.0;
+    DifferentialSteer::Brakes(SteeringBrakes {
+        max_torque: 3000.0,
+        stiffness,
+        damping: (stiffness * 100.0_f64).sqrt(),
+        band: 0.5,
+    })
+}
+
+/// A steer unit of minimum steer ratio `ratio` for the `Twin`: a PI on
+/// the sprockets' speed difference stiffer than a side's drive (2 kN m
+/// per rad/s), limited to 3 kN m.
+pub fn steer_unit(ratio: f64) -> DifferentialSteer {
+    DifferentialSteer::Ratio(SteerUnit {
+        min_ratio: ratio,
+        proportional: 2000.0,
+        integral: 2e4,
+        max_torque: 3000.0,
+    })
+}
+
+/// The `Twin` driven through a differential: `drive` on its box, steered
+/// by `steer` at the input `input(t)`.
+pub fn through(
+    drive: Drive,
+    steer: DifferentialSteer,
+    input: impl Fn(f64) -> f64 + Send + 'static,
+) -> System {
+    SpatialSystem::new(spatial())
+        .with_driveline(Driveline::Differential(Differential {
+            drive,
+            steer,
+            input: Box::new(input),
+        }))
+        .expect("a driveline in range")
+}
+
+/// A steering input ramped to `lever` over 0.2 s.
+fn ramped(lever: f64) -> impl Fn(f64) -> f64 + Send + 'static {
+    move |t| lever * (t / 0.2).min(1.0)
+}
+
+/// Every value of the three trees at `y` (no driveline states, no books).
+fn trees(system: &System, y: &[f64]) -> DVector<f64> {
+    let (hull, right, left, _) = system.states(y);
+    tree_values(system, &(hull, right, left))
+}
+
+/// Every value of `states`, as the state holds them.
+fn tree_values(system: &System, states: &States) -> DVector<f64> {
+    let y = system.state(&states.0, &states.1, &states.2);
+    y.rows(0, system.dimension() - 5).into_owned()
+}
+
+/// `a` and `b` equal to `tol` of the larger's size (or of 1).
+fn same(a: &[f64], b: &[f64], tol: f64, what: &str) {
+    let scale = a.iter().chain(b).fold(1.0_f64, |m, v| m.max(v.abs()));
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        assert!((x - y).abs() <= tol * scale, "{what}[{i}]: {x} against {y}");
+    }
+}
+
+/// Driven straight with no steering, a differential under a drive of
+/// twice a side's gains and limit moves the (mirror-symmetric) `Twin` as
+/// the two side drives do, to 1e-9 of the state after 0.3 s of RK4: its
+/// box turns at the axles' mean and halves its torque, the brakes
+/// released hold nothing, and the steer unit holding the sprockets
+/// together pushes only the round-off between them.
+#[test]
+fn driven_straight_a_differential_is_the_two_drives_it_halves() {
+    let start = at_rest(0.0, (0.0, 0.0));
+    let mut sides = SpatialSystem::new(spatial())
+        .with_drives(SideDrives {
+            right: belt(1.2, 0.2),
+            left: belt(1.2, 0.2),
+        })
+        .expect("drives");
+    let reference = run(&mut sides, &start, 0.3, FIXED);
+    let moved = trees(&sides, reference.as_slice());
+    let (hull, ..) = sides.states(reference.as_slice());
+    assert!(
+        hull.pose.origin.x > start.0.pose.origin.x + 0.05,
+        "it moves"
+    );
+    for (name, steer) in [("brakes", brakes()), ("steer unit", steer_unit(2.31))] {
+        let mut system = through(box_drive(1.2, 0.2), steer, |_| 0.0);
+        let y = run(&mut system, &start, 0.3, FIXED);
+        same(
+            trees(&system, y.as_slice()).as_slice(),
+            moved.as_slice(),
+            1e-9,
+            name,
+        );
+        let drive = system.drive_state(0.3, y.as_slice()).expect("the drive");
+        assert_eq!(drive.brake, [0.0, 0.0], "{name}: {drive:?}");
+    }
+}
+
+/// Steered left by its brakes (the left braked at half the input's
+/// range) or its steer unit (full steer, ratio 2.31), and right by the
+/// opposite input, the `Twin` ends the mirror image of itself after
+/// 0.3 s, to 1e-9 of the state's size.
+#[test]
+fn a_left_turn_through_a_differential_mirrors_the_right_turn() {
+    let start = at_rest(0.0, (0.0, 0.0));
+    for (name, steer, lever) in [
+        ("brakes", brakes(), 0.5),
+        ("steer unit", steer_unit(2.31), 1.0),
+    ] {
+        let mut left = through(box_drive(1.2, 0.2), steer, ramped(lever));
+        let mut right = through(box_drive(1.2, 0.2), steer, ramped(-lever));
+        let a = run(&mut left, &start, 0.3, FIXED);
+        let b = run(&mut right, &start, 0.3, FIXED);
+        let (hull, ..) = left.states(a.as_slice());
+        assert!(
+            hull.pose.yaw > 1e-4,
+            "{name}: a left turn, yaw {}",
+            hull.pose.yaw
+        );
+        let (h, r, l, _) = left.states(a.as_slice());
+        same(
+            trees(&right, b.as_slice()).as_slice(),
+            tree_values(&left, &mirror(&(h, r, l))).as_slice(),
+            1e-9,
+            name,
+        );
+    }
+}
+
+/// A turn through a differential keeps its books (the drive's work, and
+/// the steer unit's, against the energy in the bodies, the force
+/// elements and the brakes' elastic stages and what all of them
+/// dissipate) to 1e-6 of the work at rtol 1e-7 (a brake's power left
+/// out of the books, or its stored energy, is of the order of the
+/// work), and turns left. The left brake holds the left sprocket back
+/// (its torque against the sprocket's forward turning); the steer unit
+/// pushes the right sprocket forward and the left one back, and the
+/// power it takes from the left side returns through the right.
+#[test]
+fn a_turn_through_a_differential_keeps_its_books() {
+    let start = at_rest(0.0, (0.0, 0.0));
+    for (name, steer, lever) in [
+        ("brakes", brakes(), 0.5),
+        ("steer unit", steer_unit(2.31), 1.0),
+    ] {
+        let mut system = through(box_drive(1.2, 0.2), steer, ramped(lever));
+        let y0 = system.state(&start.0, &start.1, &start.2);
+        let before = system.energy(y0.as_slice());
+        let y = run(&mut system, &start, 0.6, ADAPTIVE);
+        let after = system.energy(y.as_slice());
+        assert!(after.driven > 100.0, "{name}: {after:?}");
+        let residual = (after.total() - before.total()) / after.driven;
+        println!("{name}: {after:?}, residual {residual:.2e}");
+        assert!(residual.abs() < 1e-6, "{name}: residual {residual:e}");
+        let (hull, ..) = system.states(y.as_slice());
+        assert!(hull.pose.yaw > 1e-3, "{name}: yaw {}", hull.pose.yaw);
+        let drive = system.drive_state(0.6, y.as_slice()).expect("the drive");
+        println!("{name}: {drive:?}");
+        // Driving forward turns a sprocket negative.
+        assert!(drive.speed[0] < drive.speed[1], "{name}: {drive:?}");
+        match steer {
+            DifferentialSteer::Brakes(_) => {
+                assert!(drive.brake[1] > 0.0 && drive.brake[0] == 0.0, "{drive:?}");
+                assert!(drive.dissipation > 0.0, "{drive:?}");
+            }
+            DifferentialSteer::Ratio(_) => {
+                assert!(drive.torque[0] < drive.torque[1], "{drive:?}");
+                assert_eq!(drive.brake, [0.0, 0.0]);
+            }
+        }
+    }
+}
+
+/// A steering input outside `[−1, 1]` stops the run with the time and
+/// the cause, one that is NaN too; brakes or a steer unit with a figure
+/// out of its range are refused before any run.
+#[test]
+fn bad_steering_is_refused() {
+    let start = at_rest(0.0, (0.0, 0.0));
+    for (input, what) in [(1.5, "outside"), (f64::NAN, "steering input")] {
+        let mut system = through(box_drive(1.2, 0.2), brakes(), move |t| {
+            if t < 0.01 { 0.0 } else { input }
+        });
+        let mut y = system.state(&start.0, &start.1, &start.2);
+        let mut stepper = FIXED.stepper(system.dimension());
+        let mut t = 0.0;
+        let error = loop {
+            if let Err(e) = stepper.step(&mut system, &mut t, &mut y, 0.1) {
+                break e;
+            }
+            assert!(t < 0.1, "the run went on");
+        };
+        assert!(
+            matches!(
+                error,
+                SimulationError::Stopped { t, .. } | SimulationError::NonFinite { t, .. }
+                    if (0.01..0.0102).contains(&t)
+            ),
+            "{error:?}"
+        );
+        assert!(error.to_string().contains(what), "{error}");
+    }
+    let refused = |steer: DifferentialSteer| {
+        SpatialSystem::new(spatial())
+            .with_driveline(Driveline::Differential(Differential {
+                drive: box_drive(1.0, 0.2),
+                steer,
+                input: Box::new(|_| 0.0),
+            }))
+            .err()
+    };
+    let mut unit = SteerUnit {
+        min_ratio: 0.9,
+        proportional: 1.0,
+        integral: 1.0,
+        max_torque: 1.0,
+    };
+    let error = refused(DifferentialSteer::Ratio(unit)).expect("a ratio under 1 refused");
+    assert!(
+        matches!(error, DrivelineError::Figure { .. }) && error.to_string().contains("ratio"),
+        "{error}"
+    );
+    unit.min_ratio = 2.0;
+    unit.max_torque = f64::NAN;
+    assert!(refused(DifferentialSteer::Ratio(unit)).is_some());
+    let DifferentialSteer::Brakes(mut b) = brakes() else {
+        unreachable!()
+    };
+    b.band = 0.0;
+    assert!(refused(DifferentialSteer::Brakes(b)).is_some());
+    assert!(refused(brakes()).is_none());
+}
+
+/// A driver holding a heading steers through a differential too: asked
+/// 45° to the left from 0.5 s over 1.5 s, the `Twin` driven at a mean
+/// 1.2 m/s holds within 2° of it at 4 s through its steer unit (the
+/// difference asked, up to the unit's ratio; measured 0.9° short) and
+/// through its brakes (measured 0.8° short). A brake turns the vehicle
+/// only once its torque passes what the ground's turning resistance
+/// needs (about 2 kN m on the `Twin`, `spatial_turn`): a driver braking
+/// in proportion to the difference asked, fully at the gauge times
+/// 1 rad/s, left the `Twin` 5.7° past the heading, its correcting brake
+/// (0.8 kN m) short of that; one braking fully at a third of it (as
+/// here) corrects with the brake fully on.
+#[test]
+fn a_driver_turns_the_vehicle_through_a_differential() {
+    let start = at_rest(0.0, (0.0, 0.0));
+    let DifferentialSteer::Brakes(mut b) = brakes() else {
+        unreachable!()
+    };
+    b.band = 0.6;
+    for (name, steer) in [
+        ("brakes", DifferentialSteer::Brakes(b)),
+        ("steer unit", steer_unit(2.31)),
+    ] {
+        let mut system = through(box_drive(1.2, 0.5), steer, |_| 0.0)
+            .with_steering(HeadingHold::turn(FRAC_PI_4, (0.5, 1.5), 1.5, 1.8))
+            .expect("a driver");
+        let mut y = system.state(&start.0, &start.1, &start.2);
+        let mut stepper = Integrator::Bs23 {
+            rtol: 1e-4,
+            atol: 1e-4,
+            max_step: 2e-3,
+        }
+        .stepper(system.dimension());
+        let mut t = 0.0;
+        let mut brake_right = 0.0_f64;
+        while t < 4.0 {
+            stepper
+                .step(&mut system, &mut t, &mut y, 4.0)
+                .expect("the run");
+            let drive = system.drive_state(t, y.as_slice()).expect("the drive");
+            brake_right = brake_right.max(drive.brake[0].abs());
+        }
+        let heading = system.states(y.as_slice()).0.pose.yaw;
+        println!(
+            "{name}: heading {:.3}°, right brake at most {brake_right:.1} N m",
+            heading.to_degrees()
+        );
+        assert!(
+            (heading - FRAC_PI_4).abs() < 2f64.to_radians(),
+            "{name}: heading {heading}"
+        );
+    }
+}

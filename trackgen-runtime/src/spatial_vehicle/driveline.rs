@@ -1,0 +1,252 @@
+//! How the drive reaches the two sprockets: each sprocket its own drive
+//! ([`SideDrives`], a robot's two motors), or one drive through a
+//! differential between the sprocket axles, steered by brakes on the
+//! axles or by a steer unit that holds the two sprockets' speed ratio
+//! ([`Differential`]).
+//!
+//! **The differential** (Willis's formula with the ordinary ratio
+//! `t₀ = −1`, the form of Project Chrono's `ChTrackDrivelineBDS`, whose
+//! `ChShaftsPlanetary` joins the differential's box to the two axles):
+//! the box turns at the axles' mean speed `ω̄ = (ω_R + ω_L)/2` and its
+//! torque `τ` reaches each axle halved. Its gears and box are massless
+//! here (their inertia is small beside the vehicle's reflected to the
+//! sprocket), so the split is exact at every instant and the box's power
+//! `τ ω̄` is the two axles' `τ/2 (ω_R + ω_L)`. Left alone it lets the
+//! two sprockets run at any speeds about that mean: a differential steers
+//! by what holds one side back.
+//!
+//! **Steering brakes** (the braked differential: the driver brakes the
+//! inner axle, and the differential sends what the brake takes from it to
+//! the outer one). Each brake holds by stiction, as the parking brake
+//! does ([`Brake`](crate::vehicle::Brake)): the ground's stiction law
+//! ([`Stiction`]) in rotation, with the brake's torque as its limit, its
+//! deflection `φ` a state: `τ = −(k φ + c ω)` while it holds, the limit
+//! against the slip beyond; released, its deflection relaxes through the
+//! damper. What it stores and dissipates goes to the books.
+//!
+//! **A steer unit** (the hydrostatically controlled differential of the
+//! M113A3's Allison X200-4, whose minimum steer ratios are published per
+//! range: US Army Ordnance subcourse OD1714, lesson 1): it drives the two
+//! axles apart with equal and opposite torques `±Q` (its power `Q (ω_R −
+//! ω_L)` drawn from the engine, part of what the engine gives), holding
+//! the speed difference at `s q ω̄` for a steering input `s` in `[−1, 1]`,
+//! `q = 2 (ρ − 1)/(ρ + 1)` so that full steer turns the outer sprocket `ρ`
+//! times as fast as the inner (the minimum steer ratio). In the real
+//! transmission the steer speed is the engine's times the input, and the
+//! ratio it makes falls with the range's gear; held against the
+//! sprockets' mean speed, as here, it is the ratio of the range in use.
+//! The unit is a PI controller on the speed difference (the hydrostatic
+//! loop's stiffness and leak), limited to its largest torque (the relief
+//! valve's). It cannot pivot the vehicle from rest (the mean speed is
+//! zero there): the X200-4's neutral pivot, which needs the engine's
+//! speed, is not modelled.
+
+use thiserror::Error;
+
+use super::SideDrives;
+use crate::laws::{ParameterError, Stiction, TangentialResponse};
+use crate::vehicle::{Drive, DriveError};
+
+/// The driver's steering input against time (s): −1 full right to 1 full
+/// left (0 straight).
+pub type SteerInput = Box<dyn Fn(f64) -> f64 + Send>;
+
+/// How the drive reaches the two sprockets.
+pub enum Driveline {
+    /// Each sprocket its own drive.
+    Sides(SideDrives),
+    /// One drive through a differential, steered.
+    Differential(Differential),
+}
+
+/// One drive into a differential between the sprocket axles, and how it
+/// steers.
+pub struct Differential {
+    /// The drive on the differential's box: its speed the axles' mean,
+    /// its torque halved to each (a speed drive's target is the belts'
+    /// mean speed, its gains and limit the box's, twice a side's).
+    pub drive: Drive,
+    /// What steers it.
+    pub steer: DifferentialSteer,
+    /// The driver's steering input, if no heading is held
+    /// ([`HeadingHold`](super::HeadingHold) steers through the same
+    /// brakes or unit when one is).
+    pub input: SteerInput,
+}
+
+/// What steers a differential.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum DifferentialSteer {
+    /// A brake on each axle.
+    Brakes(SteeringBrakes),
+    /// A steer unit holding the sprockets' speed ratio.
+    Ratio(SteerUnit),
+}
+
+/// A steering brake on each sprocket axle: an input `s` brakes the left
+/// axle with `s` times the largest torque (a left turn), `−s` the right.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteeringBrakes {
+    /// Each brake's largest torque, N m, > 0.
+    pub max_torque: f64,
+    /// Its elastic stage's stiffness, N m/rad, > 0.
+    pub stiffness: f64,
+    /// Its elastic stage's damping, N m s/rad, > 0.
+    pub damping: f64,
+    /// For a driver holding a heading: the belts' speed difference asked
+    /// ([`HeadingHold::difference`](super::HeadingHold::difference), m/s)
+    /// at which the inner brake is fully on, > 0; less brakes in
+    /// proportion.
+    pub band: f64,
+}
+
+/// A steer unit: equal and opposite torques on the two axles holding
+/// their speed difference.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteerUnit {
+    /// The outer sprocket's speed over the inner's at full steer, > 1.
+    pub min_ratio: f64,
+    /// The PI controller's proportional gain on the speed difference,
+    /// N m s/rad, ≥ 0.
+    pub proportional: f64,
+    /// Its integral gain, N m/rad, ≥ 0.
+    pub integral: f64,
+    /// Its largest torque on each axle, N m, > 0.
+    pub max_torque: f64,
+}
+
+/// A driveline that makes no driveline.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum DrivelineError {
+    /// A drive's settings make no controller.
+    #[error(transparent)]
+    Drive(#[from] DriveError),
+    /// A figure out of its range.
+    #[error("the {what}: {source}")]
+    Figure {
+        /// The brakes' or the steer unit's.
+        what: &'static str,
+        /// Which figure, and its range.
+        source: ParameterError,
+    },
+    /// A differential joins both sprockets.
+    #[error("a differential drives both sides' sprockets: the {side} side has none")]
+    NoSprocket {
+        /// `right` or `left`.
+        side: &'static str,
+    },
+}
+
+impl SteerUnit {
+    /// `q`: the speed difference at full steer over the mean speed,
+    /// `2 (ρ − 1)/(ρ + 1)` (the outer sprocket at `ω̄ (1 + q/2)`, the
+    /// inner at `ω̄ (1 − q/2)`).
+    pub fn span(&self) -> f64 {
+        2.0 * (self.min_ratio - 1.0) / (self.min_ratio + 1.0)
+    }
+
+    /// The unit's PI law on the speed difference, as a speed drive on a
+    /// unit radius whose target, the difference wanted, comes as its trim
+    /// (one owner of the PI law and its anti-windup: [`Drive`]).
+    pub(super) fn controller(&self) -> Drive {
+        Drive::Speed {
+            target: Box::new(|_| 0.0),
+            proportional: self.proportional,
+            integral: self.integral,
+            max_torque: self.max_torque,
+        }
+    }
+
+    fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("minimum steer ratio", self.min_ratio, 1.0, true)?;
+        ParameterError::check("proportional gain", self.proportional, 0.0, false)?;
+        ParameterError::check("integral gain", self.integral, 0.0, false)?;
+        ParameterError::check("largest torque", self.max_torque, 0.0, true)
+    }
+}
+
+impl SteeringBrakes {
+    /// Brakes of `max_torque` N m each on sprockets carrying `inertia`
+    /// kg m² (the vehicle's mass reflected to one), their elastic stage
+    /// the parking brake's ([`Brake::parking`](crate::vehicle::Brake::parking):
+    /// 10 mrad of wind-up at the largest torque, damping ratio 0.5), fully
+    /// on when a driver asks the belts `band` m/s apart.
+    pub fn by_parking_rule(max_torque: f64, inertia: f64, band: f64) -> SteeringBrakes {
+        let parking = crate::vehicle::Brake::parking(max_torque, inertia, 0.0);
+        SteeringBrakes {
+            max_torque,
+            stiffness: parking.stiffness,
+            damping: parking.damping,
+            band,
+        }
+    }
+
+    /// The brake's law in rotation: the ground's stiction law with the
+    /// applied torque as its limit (`μ = 1`).
+    pub(super) fn law(&self) -> Stiction {
+        Stiction {
+            mu: 1.0,
+            stiffness: self.stiffness,
+            damping: self.damping,
+        }
+    }
+
+    /// The brake at deflection `phi` (rad) on an axle turning at `omega`
+    /// (rad/s, relative to the frame), applied with `torque` N m: its
+    /// torque on the axle (as a force on the body in [`Stiction`]), the
+    /// deflection's rate, what it stores and dissipates; released, the
+    /// deflection relaxing.
+    pub(super) fn respond(&self, phi: f64, omega: f64, torque: f64) -> TangentialResponse {
+        if torque > 0.0 {
+            self.law().respond(phi, omega, torque)
+        } else {
+            self.law().relax(phi)
+        }
+    }
+
+    fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("largest torque", self.max_torque, 0.0, true)?;
+        ParameterError::check("band", self.band, 0.0, true)?;
+        self.law().check()
+    }
+}
+
+impl Driveline {
+    /// Why the driveline's settings make none: a drive that makes no
+    /// controller ([`Drive::check`]), a brake's or the steer unit's
+    /// figure out of its range.
+    pub fn check(&self) -> Result<(), DrivelineError> {
+        match self {
+            Driveline::Sides(drives) => Ok(drives.check()?),
+            Driveline::Differential(d) => {
+                d.drive.check()?;
+                match &d.steer {
+                    DifferentialSteer::Brakes(b) => {
+                        b.check().map_err(|source| DrivelineError::Figure {
+                            what: "steering brakes",
+                            source,
+                        })
+                    }
+                    DifferentialSteer::Ratio(u) => {
+                        u.check().map_err(|source| DrivelineError::Figure {
+                            what: "steer unit",
+                            source,
+                        })
+                    }
+                }
+            }
+        }
+    }
+
+    /// What the driveline's states (three) hold at `states`: the energy
+    /// its brakes' elastic stages store, J.
+    pub fn stored(&self, states: [f64; 3]) -> f64 {
+        match self {
+            Driveline::Differential(Differential {
+                steer: DifferentialSteer::Brakes(b),
+                ..
+            }) => 0.5 * b.stiffness * (states[1] * states[1] + states[2] * states[2]),
+            _ => 0.0,
+        }
+    }
+}
