@@ -85,6 +85,7 @@ impl Entry {
                 published: Vec::new(),
                 gauge: None,
                 steer_ratios: Vec::new(),
+                turn_runs: None,
             },
             dispatch: dispatch::<V>,
             spatial: None,
@@ -94,10 +95,12 @@ impl Entry {
     /// [`of`](Self::of) a vehicle declared with a `tracks` block: its
     /// `spatial` subcommand drives both tracks and the hull in 3-D.
     pub fn of_spatial<V: SpatialVehicleSystem>() -> Self {
-        Entry {
+        let mut entry = Entry {
             spatial: Some(crate::spatial::main::<V>),
             ..Entry::of::<V>()
-        }
+        };
+        entry.offered.turn_runs = Some(crate::turn_runs::run_turns::<V>);
+        entry
     }
 
     /// The name `--vehicle` takes and the output folders use.

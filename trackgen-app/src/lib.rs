@@ -45,5 +45,6 @@ mod report;
 mod run;
 mod spatial;
 mod steer;
+mod turn_runs;
 
 pub use app::{App, Entry, main};

@@ -21,7 +21,15 @@ pub struct Offered {
     /// inner's at full steer), one per range, if published: the turns
     /// `steer` makes besides its radii.
     pub steer_ratios: Vec<f64>,
+    /// Steady turns of its spatial model at belt speeds (right, left,
+    /// m/s), for a vehicle declared with both tracks: what `steer
+    /// --spatial` runs.
+    pub turn_runs: Option<TurnRuns>,
 }
+
+/// Runs steady turns of a spatial vehicle at belt speeds (right, left,
+/// m/s), each its result or its error in words.
+pub type TurnRuns = fn(&[[f64; 2]]) -> Vec<Result<crate::turn_runs::RunTurn, String>>;
 
 impl Offered {
     /// Its name.

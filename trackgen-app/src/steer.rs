@@ -52,6 +52,13 @@ pub struct SteerArgs {
     /// them).
     #[arg(long = "ratio", value_name = "RATIO", value_parser = speed_ratio)]
     pub ratios: Vec<f64>,
+    /// Also run each turn on the vehicle's spatial model (both tracks,
+    /// the hull in space; a vehicle declared with a `tracks` block): its
+    /// sprockets held at the theory's belt speeds, the steady turn's
+    /// radius, yaw rate and torques beside the theory's, and
+    /// `steer-spatial.csv`.
+    #[arg(long)]
+    pub spatial: bool,
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = crate::cli::folder)]
     pub out: Option<PathBuf>,
@@ -62,7 +69,7 @@ pub const RADII: [f64; 5] = [0.0, 1.0, 2.0, 5.0, 10.0];
 
 /// What a turn was asked for.
 #[derive(Debug, Clone, Copy)]
-enum Asked {
+pub(crate) enum Asked {
     /// A radius, in gauges (0: the pivot).
     Radius(f64),
     /// A sprocket speed ratio, outer over inner.
@@ -70,7 +77,8 @@ enum Asked {
 }
 
 impl Asked {
-    fn label(self) -> String {
+    /// The table's name for it.
+    pub(crate) fn label(self) -> String {
         match self {
             Asked::Radius(0.0) => "pivot".to_string(),
             Asked::Radius(r) => format!("R/B {r}"),
@@ -217,6 +225,17 @@ fn estimate<V: Vehicle>(
     }
     std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
     write_csv(&dir.join("steer.csv"), &turns, gauge, sprocket, steeds)?;
+    if args.spatial {
+        let run = entry.turn_runs.ok_or_else(|| {
+            format!(
+                "the vehicle `{}` has no spatial model: declare it with a `tracks` block and \
+                 offer it with `Entry::of_spatial`",
+                entry.name()
+            )
+        })?;
+        crate::turn_runs::compare(run, &turns, sprocket, &dir.join("steer-spatial.csv"))?;
+        return Ok("steer.csv and steer-spatial.csv");
+    }
     Ok("steer.csv")
 }
 
