@@ -5,10 +5,12 @@
 //!
 //! A run assembles the vehicle at rest, lets it settle, brings each
 //! sprocket to its belt speed by the vehicle's speed drive over a ramp,
-//! and averages what it shows over the last stretch, once the turn is
-//! steady: the yaw rate (the heading's change over the stretch), the
-//! centre of mass's speed and the path's radius (speed over yaw rate),
-//! each sprocket's torque and power, and the belts' speeds.
+//! and averages what it shows over stretches of 1.5 s until two
+//! stretches' yaw rates agree to 1 % (or 40 s have run: a turn not
+//! steady by then is reported so): the yaw rate (the heading's change
+//! over the stretch), the centre of mass's speed and the path's radius
+//! (speed over yaw rate), each sprocket's torque and power, and the
+//! belts' speeds.
 
 use rayon::prelude::*;
 use trackgen::integrate::{Integrator, OdeSystem};
@@ -20,12 +22,15 @@ use trackgen::terrain::field::HeightField;
 const SETTLE: f64 = 1.0;
 /// The belts' ramp from rest, s.
 const RAMP: f64 = 2.0;
-/// When the averages start, s: the turn steady (the spatial tests'
-/// carrier settles within 2 s of its ramp; a turn 2 s further moved its
-/// averages by under 0.5 %).
-const STEADY: f64 = 5.0;
-/// When the run ends, s.
-const END: f64 = 8.0;
+/// The stretch averaged over, s.
+const WINDOW: f64 = 1.5;
+/// When the first stretch starts, s: a second after the ramp.
+const FIRST: f64 = SETTLE + RAMP + 1.0;
+/// The yaw rates of two stretches running this close (relative) make
+/// the turn steady.
+const STEADY: f64 = 0.01;
+/// The longest run, s: a turn not steady by then is reported as such.
+const LONGEST: f64 = 40.0;
 
 /// What a steady turn of the spatial vehicle showed, averaged over time.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,6 +48,11 @@ pub struct RunTurn {
     pub torques: [f64; 2],
     /// The sprockets' powers (right, left), W.
     pub powers: [f64; 2],
+    /// When the stretch averaged ended, s.
+    pub until: f64,
+    /// Whether the turn was steady: its yaw rate within 1 % of the
+    /// stretch's before.
+    pub steady: bool,
 }
 
 /// The steady turns of `V` at each pair of belt speeds (right, left,
@@ -56,7 +66,9 @@ pub(crate) fn run_turns<V: SpatialVehicleSystem>(
         .collect()
 }
 
-/// One steady turn at `belts` (right, left, m/s).
+/// One steady turn at `belts` (right, left, m/s): stretches of
+/// [`WINDOW`] from [`FIRST`] on until two running yaw rates agree to
+/// [`STEADY`], or [`LONGEST`] s.
 fn run_turn<V: SpatialVehicleSystem>(
     belts: [f64; 2],
 ) -> Result<RunTurn, Box<dyn std::error::Error + Send + Sync>> {
@@ -75,42 +87,47 @@ fn run_turn<V: SpatialVehicleSystem>(
     }
     .stepper(system.dimension());
     let mut t = 0.0;
-    while t < STEADY {
-        stepper.step(&mut system, &mut t, &mut y, STEADY)?;
+    while t < FIRST {
+        stepper.step(&mut system, &mut t, &mut y, FIRST)?;
     }
-    let heading = system.outputs(t, y.as_slice())?.heading;
-    let mut sums = RunTurn {
-        yaw_rate: 0.0,
-        speed: 0.0,
-        radius: 0.0,
-        belts: [0.0; 2],
-        torques: [0.0; 2],
-        powers: [0.0; 2],
-    };
-    while t < END {
-        let before = t;
-        stepper.step(&mut system, &mut t, &mut y, END)?;
-        let dt = t - before;
-        let out = system.outputs(t, y.as_slice())?;
-        sums.speed += dt * out.centre.velocity.xy().norm();
-        for s in 0..2 {
-            sums.belts[s] += dt * out.sides[s].belt_speed;
-            sums.torques[s] += dt * out.sides[s].sprocket_torque;
-            sums.powers[s] += dt * out.sides[s].sprocket_power;
+    let mut before: Option<RunTurn> = None;
+    loop {
+        let (start, end) = (t, t + WINDOW);
+        let heading = system.outputs(t, y.as_slice())?.heading;
+        let (mut speed, mut belts, mut torques, mut powers) = (0.0, [0.0; 2], [0.0; 2], [0.0; 2]);
+        while t < end {
+            let was = t;
+            stepper.step(&mut system, &mut t, &mut y, end)?;
+            let dt = t - was;
+            let out = system.outputs(t, y.as_slice())?;
+            speed += dt * out.centre.velocity.xy().norm();
+            for s in 0..2 {
+                belts[s] += dt * out.sides[s].belt_speed;
+                torques[s] += dt * out.sides[s].sprocket_torque;
+                powers[s] += dt * out.sides[s].sprocket_power;
+            }
         }
+        let span = t - start;
+        let yaw_rate = (system.outputs(t, y.as_slice())?.heading - heading) / span;
+        let speed = speed / span;
+        let steady = before.is_some_and(|b| {
+            (yaw_rate - b.yaw_rate).abs() <= STEADY * yaw_rate.abs().max(b.yaw_rate.abs())
+        });
+        let turn = RunTurn {
+            yaw_rate,
+            speed,
+            radius: speed / yaw_rate.abs(),
+            belts: belts.map(|v| v / span),
+            torques: torques.map(|v| v / span),
+            powers: powers.map(|v| v / span),
+            until: t,
+            steady,
+        };
+        if steady || t + WINDOW > LONGEST {
+            return Ok(turn);
+        }
+        before = Some(turn);
     }
-    let window = END - STEADY;
-    let last = system.outputs(t, y.as_slice())?;
-    let yaw_rate = (last.heading - heading) / window;
-    let speed = sums.speed / window;
-    Ok(RunTurn {
-        yaw_rate,
-        speed,
-        radius: speed / yaw_rate.abs(),
-        belts: sums.belts.map(|v| v / window),
-        torques: sums.torques.map(|v| v / window),
-        powers: sums.powers.map(|v| v / window),
-    })
 }
 
 /// Runs each of the theory's `turns` on the spatial model by `run`
@@ -134,10 +151,10 @@ pub(crate) fn compare(
         })
         .collect();
     say!(
-        "the same turns in 3-D (both tracks, the hull in space; each sprocket held at the theory's belt speed, settled {SETTLE} s, ramped over {RAMP} s, averaged from {STEADY} to {END} s):"
+        "the same turns in 3-D (both tracks, the hull in space; each sprocket held at the theory's belt speed, settled {SETTLE} s, ramped over {RAMP} s, averaged over {WINDOW} s once two such stretches' yaw rates agree to 1 %):"
     );
     say!(
-        "  asked        radius m (theory)    yaw rad/s (theory)    torque out/in kN m (theory)          power out/in kW"
+        "  asked        radius m (theory)    yaw rad/s (theory)    torque out/in kN m (theory)          power out/in kW   steady by"
     );
     let runs = run(&belts);
     let mut w = csv::Writer::from_path(file)?;
@@ -155,6 +172,8 @@ pub(crate) fn compare(
         "theory_inner_sprocket_torque",
         "outer_power",
         "inner_power",
+        "until",
+        "steady",
     ])?;
     for ((asked, turn), ran) in turns.iter().zip(runs) {
         let [outer, inner] = turn.outer_inner();
@@ -169,7 +188,7 @@ pub(crate) fn compare(
         // The run's torques in the theory's sense: driving forward positive.
         let torque = [-ran.torques[0], -ran.torques[1]];
         say!(
-            "  {:10}   {:8.3} ({:7.3})   {:8.4} ({:8.4})   {:7.2} {:7.2} ({:7.2} {:7.2})   {:7.1} {:7.1}",
+            "  {:10}   {:8.3} ({:7.3})   {:8.4} ({:8.4})   {:7.2} {:7.2} ({:7.2} {:7.2})   {:7.1} {:7.1}   {}",
             asked.label(),
             ran.radius,
             turn.radius,
@@ -180,7 +199,12 @@ pub(crate) fn compare(
             theory[0] / 1e3,
             theory[1] / 1e3,
             ran.powers[0] / 1e3,
-            ran.powers[1] / 1e3
+            ran.powers[1] / 1e3,
+            if ran.steady {
+                format!("{:.1} s", ran.until)
+            } else {
+                format!("not steady by {:.0} s", ran.until)
+            }
         );
         let row = [
             ran.belts[0],
@@ -195,6 +219,8 @@ pub(crate) fn compare(
             theory[1],
             ran.powers[0],
             ran.powers[1],
+            ran.until,
+            if ran.steady { 1.0 } else { 0.0 },
         ];
         let mut record = vec![asked.label()];
         record.extend(row.iter().map(|v| format!("{v}")));

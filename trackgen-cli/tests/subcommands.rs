@@ -251,15 +251,15 @@ fn steer_writes_the_turns_and_their_books_balance() {
 
 /// `steer --spatial` runs the M113's turns on its spatial model (both
 /// tracks, the hull in space, its declared ground and guides) at the
-/// theory's belt speeds and writes `steer-spatial.csv`: each run's yaw
-/// rate within 6 % of the theory's, its radius within 6 % (a pivot's on
-/// the gauge's scale), both sprockets' torques within 8 %. The theory
-/// here is fed the planar model's loads at rest, not the run's own (those
-/// are `tests/it/spatial_turn.rs`, held to 5 % on firm ground): the
-/// turn shifts load outward and forward, and the declared ground's
-/// stiction creeps. Measured (2026-12-06) at most 4.8 % on the radius
-/// (R/B 10), 4.3 % on the yaw rate (R/B 10) and 7.4 % on a torque (the
-/// pivot's outer, whose track's 63 shoes against the inner's 64 and
+/// theory's belt speeds until each is steady and writes
+/// `steer-spatial.csv`: every run steady, its yaw rate and radius within
+/// 5 % of the theory's (a pivot's radius on the gauge's scale), both
+/// sprockets' torques within 8 %. The theory here is fed the planar
+/// model's loads at rest, not the run's own (that check is
+/// `tests/it/spatial_turn.rs`, 5 % on firm ground): the turn shifts load
+/// outward and forward. Measured (2026-12-06) at most 1.8 % on the yaw
+/// rate (the pivot), 3.7 % on the radius (R/B 1) and 7.4 % on a torque
+/// (the pivot's outer, whose track's 63 shoes against the inner's 64 and
 /// staggered wheels the theory's mirrored runs do not have).
 #[test]
 fn steer_spatial_runs_the_m113s_turns_near_the_theorys() {
@@ -288,7 +288,7 @@ fn steer_spatial_runs_the_m113s_turns_near_the_theorys() {
         );
         let scale = row[at("theory_radius")].max(gauge);
         assert!(
-            (row[at("radius")] - row[at("theory_radius")]).abs() < 0.06 * scale,
+            (row[at("radius")] - row[at("theory_radius")]).abs() < 0.05 * scale,
             "{asked}: {row:?}"
         );
         for side in ["outer", "inner"] {
