@@ -105,3 +105,22 @@ fn parked_across_a_30_percent_side_slope_the_hull_holds_within_a_millimetre() {
         1e3 * farthest
     );
 }
+
+/// The system's own start across a slope (`SpatialSystem::rolled`, what
+/// `spatial --side-slope` sets the vehicle down with) is the tests' own
+/// (`support::twin::across_slope`, each tree turned by its own
+/// rotation), bit for bit, and every value of the state the trees do not
+/// hold is kept.
+#[test]
+fn the_systems_start_across_a_slope_is_the_tests_own() {
+    let level = crate::support::twin::at_rest(0.0, (0.0, 0.0));
+    let system = on(HeightField::level(), firm(), SideDrives::free());
+    let mut y = system.state(&level.0, &level.1, &level.2);
+    let n = y.len();
+    y[n - 1] = 7.0;
+    let rolled = system.rolled(y.as_slice(), SIDE_SLOPE.atan());
+    let own = across_slope(SIDE_SLOPE);
+    let mut expected = system.state(&own.0, &own.1, &own.2);
+    expected[n - 1] = 7.0;
+    assert_eq!(rolled, expected);
+}

@@ -18,6 +18,7 @@ use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::integrate::{Integrator, OdeSystem, Stats};
+use trackgen::nalgebra::Vector2;
 use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
@@ -75,6 +76,11 @@ pub struct SpatialArgs {
     /// 0.1 (the books are held to 10 × it).
     #[arg(long, default_value_t = Integrator::DEFAULT_EXPLICIT_TOLERANCE, value_name = "TOL", value_parser = cli::tolerance)]
     pub tolerance: f64,
+    /// A side slope across the course, rise over run to the left (the
+    /// ground `z = s y` added to the course), from -1 to 1; the vehicle
+    /// is set on it at rest, heading along the course.
+    #[arg(long, default_value_t = 0.0, value_name = "S", value_parser = side_slope)]
+    pub side_slope: f64,
     /// How the drive reaches the sprockets.
     #[arg(long, value_enum, default_value_t = DrivelineKind::Sides)]
     pub driveline: DrivelineKind,
@@ -198,6 +204,14 @@ fn driveline<V: SpatialVehicleSystem>(
     Ok((Driveline::Differential(differential), said))
 }
 
+fn side_slope(s: &str) -> Result<f64, String> {
+    within(
+        s,
+        trackgen::scenario::Range::closed(-1.0, 1.0, "from -1 to 1"),
+        "a side slope",
+    )
+}
+
 fn turn(s: &str) -> Result<f64, String> {
     within(
         s,
@@ -234,6 +248,7 @@ struct Summary {
     lateral: f64,
     /// The lateral acceleration's filter, fed every row.
     filter: Biquad,
+    first: Option<SpatialOutputs>,
     last: Option<SpatialOutputs>,
 }
 
@@ -245,6 +260,7 @@ impl Summary {
             radius: None,
             lateral: 0.0,
             filter: Biquad::bilinear(low_pass, dt, 0.0),
+            first: None,
             last: None,
         }
     }
@@ -258,6 +274,7 @@ impl Summary {
             );
             self.lateral = self.lateral.max(lateral.abs());
         }
+        self.first.get_or_insert(*out);
         self.last = Some(*out);
     }
 }
@@ -271,12 +288,16 @@ fn drive<V: SpatialVehicleSystem>(
     let field = HeightField {
         base: FieldShape::Profile(terrain.clone()),
         ..HeightField::level()
-    };
+    }
+    .tilted(Vector2::new(0.0, args.side_slope));
     field.check()?;
     let layout = V::layout();
     let assembling = Instant::now();
     let mut system = V::spatial(V::declared_laws(), field)?;
     let mut y = system.assembled(&terrain)?;
+    if args.side_slope != 0.0 {
+        y = system.rolled(y.as_slice(), args.side_slope.atan());
+    }
     let assembly = assembling.elapsed().as_secs_f64();
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
@@ -415,6 +436,18 @@ fn report(
             last.centre.velocity.xy().norm(),
             last.pitch.to_degrees(),
             last.roll.to_degrees()
+        );
+    }
+    if let (Some(first), Some(last), true) = (&summary.first, &summary.last, args.side_slope != 0.0)
+    {
+        // The slope rises to the world's left (`+y`) for a positive `s`.
+        let across = (last.centre.position.y - first.centre.position.y) * args.side_slope.signum();
+        say!(
+            "across the {:.0} % side slope: the centre of mass moved {:.3} m {} and {:.2} m along the course",
+            100.0 * args.side_slope.abs(),
+            across.abs(),
+            if across > 0.0 { "uphill" } else { "downhill" },
+            last.centre.position.x - first.centre.position.x
         );
     }
     if let Some(radius) = summary.radius {

@@ -33,6 +33,10 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// assembly put its arm ([`SpatialDynamics::set_tensioners`](super::SpatialDynamics::set_tensioners)).
     fn assembled(&mut self, terrain: &Terrain) -> Result<DVector<f64>, SideError>;
 
+    /// The state `y` of the vehicle at rest heading along `x` set on a
+    /// side slope turned `roll` rad about `x` ([`SpatialSystem::rolled`]).
+    fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64>;
+
     /// Drives the sprockets by `drives` from now on; settings that make
     /// no controller are refused.
     fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError>;
@@ -121,6 +125,10 @@ where
         self.check_steering(&hold)?;
         self.steering = Some(hold);
         Ok(())
+    }
+
+    fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64> {
+        SpatialSystem::rolled(self, y, roll)
     }
 
     fn mass(&self) -> f64 {

@@ -296,6 +296,34 @@ where
         y
     }
 
+    /// The state `y` of a vehicle at rest heading along `x` (each tree's
+    /// yaw 0) turned `roll` rad about the world's `x` axis: each tree's
+    /// plane rolled, its root's place turned with it, the rest of `y`
+    /// kept. Level ground through the origin so turned is the side slope
+    /// `tan roll` (the field `z = y tan roll`), so a vehicle assembled at
+    /// rest on the level is set on that slope as it sat on the level.
+    pub fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64> {
+        let (s, c) = roll.sin_cos();
+        let turn = nalgebra::Matrix3::new(1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c);
+        let (mut hull, mut right, mut left, _) = self.states(y);
+        for pose in [
+            &mut hull.pose.origin,
+            &mut right.pose.origin,
+            &mut left.pose.origin,
+        ] {
+            *pose = turn * *pose;
+        }
+        hull.pose.roll += roll;
+        right.pose.roll += roll;
+        left.pose.roll += roll;
+        let mut turned = DVector::from_column_slice(y);
+        let trees = self.state(&hull, &right, &left);
+        turned
+            .rows_mut(0, Self::TREES)
+            .copy_from(&trees.rows(0, Self::TREES));
+        turned
+    }
+
     /// The three trees' states in `y`, and the energy dissipated so far.
     pub fn states(&self, y: &[f64]) -> (TreeState<DH>, TreeState<DR>, TreeState<DL>, f64) {
         let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
