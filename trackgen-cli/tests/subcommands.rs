@@ -166,14 +166,18 @@ fn fmu_refuses_what_is_no_fmu_library() {
     assert_rejected("fmu with a missing library", &out, &["missing.so"]);
 }
 
-/// An unknown subcommand, an unknown vehicle and `run`'s options before
-/// another subcommand are refused by the parser (exit status 2), naming
+/// An unknown subcommand, an unknown vehicle, `run`'s options before
+/// another subcommand and `spatial`'s side slope, driveline or steer
+/// ratio out of range are refused by the parser (exit status 2), naming
 /// what is wrong; nothing is run or written.
 #[test]
 fn a_bad_command_line_is_refused_naming_it() {
     let dir = scratch("bad-subcommand");
-    let cases: [(&[&str], &[&str]); 4] = [
+    let cases: [(&[&str], &[&str]); 7] = [
         (&["mobilty"], &["mobilty"]),
+        (&["spatial", "--side-slope", "1.5"], &["--side-slope", "1.5"]),
+        (&["spatial", "--driveline", "clutch"], &["--driveline", "clutch"]),
+        (&["spatial", "--steer-ratio", "0.5"], &["--steer-ratio", "0.5"]),
         (&["--vehicle", "tiger"], &["tiger", "m113", "marder"]),
         (
             &["modes", "--vehicle", "tiger"],
