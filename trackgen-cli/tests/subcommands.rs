@@ -175,9 +175,18 @@ fn a_bad_command_line_is_refused_naming_it() {
     let dir = scratch("bad-subcommand");
     let cases: [(&[&str], &[&str]); 7] = [
         (&["mobilty"], &["mobilty"]),
-        (&["spatial", "--side-slope", "1.5"], &["--side-slope", "1.5"]),
-        (&["spatial", "--driveline", "clutch"], &["--driveline", "clutch"]),
-        (&["spatial", "--steer-ratio", "0.5"], &["--steer-ratio", "0.5"]),
+        (
+            &["spatial", "--side-slope", "1.5"],
+            &["--side-slope", "1.5"],
+        ),
+        (
+            &["spatial", "--driveline", "clutch"],
+            &["--driveline", "clutch"],
+        ),
+        (
+            &["spatial", "--steer-ratio", "0.5"],
+            &["--steer-ratio", "0.5"],
+        ),
         (&["--vehicle", "tiger"], &["tiger", "m113", "marder"]),
         (
             &["modes", "--vehicle", "tiger"],

@@ -250,3 +250,42 @@ impl Driveline {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Full steer holds the outer sprocket at `ω̄ (1 + q/2)` and the inner
+    /// at `ω̄ (1 − q/2)`: their ratio is the minimum steer ratio asked, to
+    /// rounding, for the X200-4's four and a few others.
+    #[test]
+    fn full_steer_turns_the_sprockets_at_the_minimum_steer_ratio() {
+        for ratio in [1.01, 1.22, 1.32, 1.58, 2.31, 10.0, 100.0] {
+            let unit = SteerUnit {
+                min_ratio: ratio,
+                proportional: 1.0,
+                integral: 1.0,
+                max_torque: 1.0,
+            };
+            let q = unit.span();
+            let held = (1.0 + 0.5 * q) / (1.0 - 0.5 * q);
+            assert!((held / ratio - 1.0).abs() < 1e-13, "{ratio}: {held}");
+        }
+    }
+
+    /// The brakes by the parking rule take the parking brake's elastic
+    /// stage (`k = 100 T`, `c = √(k J)`), and a released brake's law
+    /// relaxes its deflection through the damper, pushing nothing.
+    #[test]
+    fn steering_brakes_take_the_parking_brakes_stage_and_relax_released() {
+        let brakes = SteeringBrakes::by_parking_rule(2000.0, 50.0, 0.5);
+        assert_eq!(brakes.stiffness, 2e5);
+        assert_eq!(brakes.damping, (2e5_f64 * 50.0).sqrt());
+        let released = brakes.respond(0.01, 3.0, 0.0);
+        assert_eq!(released.force, 0.0);
+        assert_eq!(released.rate, -brakes.stiffness * 0.01 / brakes.damping);
+        let holding = brakes.respond(0.001, 0.0, 2000.0);
+        assert_eq!(holding.force, -200.0);
+        assert!(!holding.sliding);
+    }
+}
