@@ -221,7 +221,8 @@ pub const APP: Graph = &[
     ("modes", &["console", "cli", "offered"]),
     ("fmu", &["cli", "offered"]),
     ("mobility", &["cli", "offered"]),
-    ("steer", &["console", "cli", "offered", "modes"]),
+    ("turn_runs", &["offered"]),
+    ("steer", &["console", "cli", "offered", "modes", "turn_runs"]),
     ("spatial", &["console", "cli", "offered", "report"]),
     (
         "run",
@@ -230,7 +231,15 @@ pub const APP: Graph = &[
     (
         "app",
         &[
-            "cli", "offered", "run", "mobility", "modes", "steer", "spatial", "fmu",
+            "cli",
+            "offered",
+            "run",
+            "mobility",
+            "modes",
+            "steer",
+            "spatial",
+            "turn_runs",
+            "fmu",
         ],
     ),
     ("lib", &["app"]),

@@ -258,3 +258,12 @@ pub(crate) fn folder(s: &str) -> Result<PathBuf, String> {
         Ok(PathBuf::from(s))
     }
 }
+
+/// A sprocket speed ratio from the command line: 1.01 to 100.
+pub(crate) fn speed_ratio(s: &str) -> Result<f64, String> {
+    within(
+        s,
+        trackgen::scenario::Range::closed(1.01, 100.0, "from 1.01 to 100"),
+        "a speed ratio",
+    )
+}

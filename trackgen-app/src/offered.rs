@@ -29,7 +29,30 @@ pub struct Offered {
 
 /// Runs steady turns of a spatial vehicle at belt speeds (right, left,
 /// m/s), each its result or its error in words.
-pub type TurnRuns = fn(&[[f64; 2]]) -> Vec<Result<crate::turn_runs::RunTurn, String>>;
+pub type TurnRuns = fn(&[[f64; 2]]) -> Vec<Result<RunTurn, String>>;
+
+/// What a steady turn of the spatial vehicle showed, averaged over time.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RunTurn {
+    /// The yaw rate, rad/s (left positive).
+    pub yaw_rate: f64,
+    /// The centre of mass's horizontal speed, m/s.
+    pub speed: f64,
+    /// The path's radius, m: the speed over the yaw rate's size.
+    pub radius: f64,
+    /// The belts' speeds (right, left), m/s, forward positive.
+    pub belts: [f64; 2],
+    /// The sprockets' torques (right, left), N m, planar sense (driving
+    /// forward negative).
+    pub torques: [f64; 2],
+    /// The sprockets' powers (right, left), W.
+    pub powers: [f64; 2],
+    /// When the stretch averaged ended, s.
+    pub until: f64,
+    /// Whether the turn was steady: its yaw rate within 1 % of the
+    /// stretch's before.
+    pub steady: bool,
+}
 
 impl Offered {
     /// Its name.

@@ -86,7 +86,7 @@ pub struct SpatialArgs {
     pub driveline: DrivelineKind,
     /// The steer unit's minimum steer ratio (`--driveline steer-ratio`),
     /// 1.01 to 100; default the vehicle's first published one.
-    #[arg(long, value_name = "RATIO", value_parser = crate::steer::speed_ratio)]
+    #[arg(long, value_name = "RATIO", value_parser = cli::speed_ratio)]
     pub steer_ratio: Option<f64>,
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = cli::folder)]

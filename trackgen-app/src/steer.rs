@@ -18,7 +18,7 @@ use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleDynamics};
 
 use crate::console::say;
-use crate::offered::Offered;
+use crate::offered::{Offered, TurnRuns};
 
 /// Estimate the vehicle's steady turns on firm level ground: its two
 /// tracks, each loaded as the planar model rests, a gauge apart, turned at
@@ -50,7 +50,7 @@ pub struct SteerArgs {
     /// radius found (repeatable: `--ratio 2.31 --ratio 1.58`; default:
     /// the vehicle's published steer ratios, if the application gives
     /// them).
-    #[arg(long = "ratio", value_name = "RATIO", value_parser = speed_ratio)]
+    #[arg(long = "ratio", value_name = "RATIO", value_parser = crate::cli::speed_ratio)]
     pub ratios: Vec<f64>,
     /// Also run each turn on the vehicle's spatial model (both tracks,
     /// the hull in space; a vehicle declared with a `tracks` block): its
@@ -233,7 +233,7 @@ fn estimate<V: Vehicle>(
                 entry.name()
             )
         })?;
-        crate::turn_runs::compare(run, &turns, sprocket, &dir.join("steer-spatial.csv"))?;
+        compare_in_space(run, &turns, sprocket, &dir.join("steer-spatial.csv"))?;
         return Ok("steer.csv and steer-spatial.csv");
     }
     Ok("steer.csv")
@@ -329,19 +329,112 @@ fn turn_speed(s: &str) -> Result<f64, String> {
     crate::cli::within(s, Range::closed(0.1, 10.0, "from 0.1 to 10 m/s"), "a speed")
 }
 
-/// A sprocket speed ratio from the command line: 1.01 to 100.
-pub(crate) fn speed_ratio(s: &str) -> Result<f64, String> {
-    crate::cli::within(
-        s,
-        Range::closed(1.01, 100.0, "from 1.01 to 100"),
-        "a speed ratio",
-    )
-}
-
 fn rolling_resistance(s: &str) -> Result<f64, String> {
     crate::cli::within(
         s,
         Range::closed(0.0, 0.5, "from 0 to 0.5"),
         "a rolling resistance",
     )
+}
+
+/// Runs each of the theory's `turns` on the spatial model by `run`
+/// (turning left: the right belt the outer, at the theory's belt
+/// speeds), prints what each run showed beside the theory and writes
+/// `file`; the theory's torques are its shear times the sprockets'
+/// rolling radius `sprocket` (m). A run that fails is reported as failed
+/// and the others kept.
+fn compare_in_space(
+    run: TurnRuns,
+    turns: &[(Asked, SteadyTurn)],
+    sprocket: f64,
+    file: &std::path::Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let belts: Vec<[f64; 2]> = turns
+        .iter()
+        .map(|(_, turn)| {
+            let [outer, inner] = turn.outer_inner();
+            [outer.belt_speed, inner.belt_speed]
+        })
+        .collect();
+    say!(
+        "the same turns in 3-D (both tracks, the hull in space; each sprocket held at the theory's belt speed, settled {} s, ramped over {} s, averaged over {} s once two such stretches' yaw rates agree to 1 %):",
+        crate::turn_runs::SETTLE,
+        crate::turn_runs::RAMP,
+        crate::turn_runs::WINDOW
+    );
+    say!(
+        "  asked        radius m (theory)    yaw rad/s (theory)    torque out/in kN m (theory)          power out/in kW   steady by"
+    );
+    let runs = run(&belts);
+    let mut w = csv::Writer::from_path(file)?;
+    w.write_record([
+        "asked",
+        "outer_belt_speed",
+        "inner_belt_speed",
+        "radius",
+        "theory_radius",
+        "yaw_rate",
+        "theory_yaw_rate",
+        "outer_sprocket_torque",
+        "theory_outer_sprocket_torque",
+        "inner_sprocket_torque",
+        "theory_inner_sprocket_torque",
+        "outer_power",
+        "inner_power",
+        "until",
+        "steady",
+    ])?;
+    for ((asked, turn), ran) in turns.iter().zip(runs) {
+        let [outer, inner] = turn.outer_inner();
+        let theory = [outer.thrust * sprocket, inner.thrust * sprocket];
+        let ran = match ran {
+            Ok(ran) => ran,
+            Err(e) => {
+                say!("  {:10}   the run failed: {e}", asked.label());
+                continue;
+            }
+        };
+        // The run's torques in the theory's sense: driving forward positive.
+        let torque = [-ran.torques[0], -ran.torques[1]];
+        say!(
+            "  {:10}   {:8.3} ({:7.3})   {:8.4} ({:8.4})   {:7.2} {:7.2} ({:7.2} {:7.2})   {:7.1} {:7.1}   {}",
+            asked.label(),
+            ran.radius,
+            turn.radius,
+            ran.yaw_rate,
+            turn.yaw_rate,
+            torque[0] / 1e3,
+            torque[1] / 1e3,
+            theory[0] / 1e3,
+            theory[1] / 1e3,
+            ran.powers[0] / 1e3,
+            ran.powers[1] / 1e3,
+            if ran.steady {
+                format!("{:.1} s", ran.until)
+            } else {
+                format!("not steady by {:.0} s", ran.until)
+            }
+        );
+        let row = [
+            ran.belts[0],
+            ran.belts[1],
+            ran.radius,
+            turn.radius,
+            ran.yaw_rate,
+            turn.yaw_rate,
+            torque[0],
+            theory[0],
+            torque[1],
+            theory[1],
+            ran.powers[0],
+            ran.powers[1],
+            ran.until,
+            if ran.steady { 1.0 } else { 0.0 },
+        ];
+        let mut record = vec![asked.label()];
+        record.extend(row.iter().map(|v| format!("{v}")));
+        w.write_record(record)?;
+    }
+    w.flush()?;
+    Ok(())
 }

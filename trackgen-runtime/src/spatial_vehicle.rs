@@ -43,9 +43,9 @@ mod system;
 
 use bodies::Bodies;
 pub use declared::{SpatialSimulated, SpatialVehicleSystem};
-pub use drive::{DriveState, SideDrives};
+pub use drive::DriveState;
 pub use driveline::{
-    Differential, DifferentialSteer, Driveline, DrivelineError, SteerInput, SteerUnit,
+    Differential, DifferentialSteer, Driveline, DrivelineError, SideDrives, SteerInput, SteerUnit,
     SteeringBrakes,
 };
 pub use outputs::{SideOutputs, SpatialOutputs};

@@ -1,8 +1,8 @@
-//! Each side's sprocket drive: the planar vehicle's [`Drive`] per side
-//! (a torque schedule, or a speed controller tracking a belt speed), its
-//! torque acting on the side's sprocket about its axle and, reversed, on
-//! the frame. Two drives commanded apart steer the vehicle by skid
-//! steering, as a robot's independent sprocket motors do.
+//! What the driveline ([`Driveline`]) does at a state: each side's
+//! drive (the planar vehicle's [`Drive`](crate::vehicle::Drive) per
+//! side), or the differential's drive halved with its brakes or steer
+//! unit; its torque acting on each side's sprocket about its axle and,
+//! reversed, on the frame.
 //!
 //! A planar torque `τ` (counter-clockwise in the track's plane seen from
 //! the right, positive) is the moment `−τ η` in space, `η` the plane's
@@ -13,43 +13,13 @@
 use nalgebra::Vector3;
 
 use super::{
-    Differential, DifferentialSteer, Driveline, HeadingHold, SpatialDynamics, SpatialLoads,
-    TreeState,
+    Differential, DifferentialSteer, Driveline, HeadingHold, SideDrives, SpatialDynamics,
+    SpatialLoads, TreeState,
 };
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::plane_rotation;
-use crate::vehicle::{Drive, DriveError, TorqueCap};
-
-/// The two sprockets' drives.
-pub struct SideDrives {
-    /// The right sprocket's.
-    pub right: Drive,
-    /// The left sprocket's.
-    pub left: Drive,
-}
-
-impl SideDrives {
-    /// Both sprockets free.
-    pub fn free() -> SideDrives {
-        SideDrives {
-            right: Drive::Free,
-            left: Drive::Free,
-        }
-    }
-
-    /// Why either drive's settings make no controller
-    /// ([`Drive::check`]).
-    pub fn check(&self) -> Result<(), DriveError> {
-        self.right.check()?;
-        self.left.check()
-    }
-
-    /// The drives right then left.
-    pub(super) fn each(&self) -> [&Drive; 2] {
-        [&self.right, &self.left]
-    }
-}
+use crate::vehicle::TorqueCap;
 
 /// What the driveline does at a state: per side (right, left).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

@@ -43,9 +43,38 @@
 
 use thiserror::Error;
 
-use super::SideDrives;
 use crate::laws::{ParameterError, Stiction, TangentialResponse};
 use crate::vehicle::{Drive, DriveError};
+
+/// The two sprockets' drives.
+pub struct SideDrives {
+    /// The right sprocket's.
+    pub right: Drive,
+    /// The left sprocket's.
+    pub left: Drive,
+}
+
+impl SideDrives {
+    /// Both sprockets free.
+    pub fn free() -> SideDrives {
+        SideDrives {
+            right: Drive::Free,
+            left: Drive::Free,
+        }
+    }
+
+    /// Why either drive's settings make no controller
+    /// ([`Drive::check`]).
+    pub fn check(&self) -> Result<(), DriveError> {
+        self.right.check()?;
+        self.left.check()
+    }
+
+    /// The drives right then left.
+    pub(super) fn each(&self) -> [&Drive; 2] {
+        [&self.right, &self.left]
+    }
+}
 
 /// The driver's steering input against time (s): −1 full right to 1 full
 /// left (0 straight).
