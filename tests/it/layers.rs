@@ -222,7 +222,10 @@ pub const APP: Graph = &[
     ("fmu", &["cli", "offered"]),
     ("mobility", &["cli", "offered"]),
     ("turn_runs", &["offered"]),
-    ("steer", &["console", "cli", "offered", "modes", "turn_runs"]),
+    (
+        "steer",
+        &["console", "cli", "offered", "modes", "turn_runs"],
+    ),
     ("spatial", &["console", "cli", "offered", "report"]),
     (
         "run",

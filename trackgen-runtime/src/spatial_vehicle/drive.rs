@@ -63,8 +63,8 @@ where
     /// differential steers by its input schedule): a side without a
     /// sprocket takes no torque; a drive's demand, a heading wanted or a
     /// steering input that is not finite stops the run
-    /// ([`Drive::checked_torque`]), and so does a steering input outside
-    /// `[−1, 1]`.
+    /// ([`Drive::checked_torque`](crate::vehicle::Drive::checked_torque)),
+    /// and so does a steering input outside `[−1, 1]`.
     pub fn drive(
         &self,
         t: f64,
