@@ -155,9 +155,9 @@ where
 
     /// The system with its sprockets driven through `driveline`; settings
     /// out of range, or a differential on a vehicle without both
-    /// sprockets, are refused. A heading held already
-    /// ([`with_steering`](Self::with_steering)) must still be one the
-    /// driveline can steer.
+    /// sprockets, are refused. Set the driveline before a heading to hold
+    /// ([`with_steering`](Self::with_steering)), which checks that the
+    /// driveline can steer it.
     pub fn with_driveline(mut self, driveline: Driveline) -> Result<Self, DrivelineError> {
         self.set_driveline(driveline)?;
         Ok(self)
