@@ -57,6 +57,7 @@ pub fn brakes() -> DifferentialSteer {
         stiffness,
         damping: (stiffness * 100.0_f64).sqrt(),
         band: 0.5,
+        dead_band: 0.0,
     })
 }
 

@@ -128,6 +128,9 @@ const MAX_YAW_RATE: f64 = 1.0;
 /// the inner track, about twice a side's turning torque (an assumption:
 /// no brake figure of either vehicle was found).
 const BRAKE_OVER_DRIVE: f64 = 2.0;
+/// The driver's dead band on the steering brakes, m/s of the error of the
+/// belts' difference ([`SteeringBrakes::dead_band`]).
+const BRAKE_DEAD_BAND: f64 = 0.05;
 
 /// The driveline `args` ask for, with the vehicle's speed drive toward
 /// `target` (m/s against time): a differential's controller takes twice
@@ -175,8 +178,11 @@ fn driveline<V: SpatialVehicleSystem>(
         let largest = V::layout().gauge * MAX_YAW_RATE / 3.0;
         let radius = system.rolling_radius();
         let inertia = 0.5 * system.mass() * radius * radius;
-        let brakes =
-            SteeringBrakes::by_parking_rule(BRAKE_OVER_DRIVE * max_torque, inertia, largest);
+        let brakes = SteeringBrakes::by_parking_rule(
+            BRAKE_OVER_DRIVE * max_torque,
+            inertia,
+            (largest, BRAKE_DEAD_BAND),
+        );
         let said = format!(
             "a differential steered by its brakes ({:.1} kN m each)",
             brakes.max_torque / 1e3

@@ -92,7 +92,7 @@ where
                 self.drive_sides(t, drives, asked.unwrap_or(0.0), states, &mut state)?
             }
             Driveline::Differential(differential) => {
-                self.drive_differential(t, differential, asked, states, &mut state)?
+                self.drive_differential(t, hull, differential, asked, states, &mut state)?
             }
         }
         Ok(state)
@@ -135,6 +135,7 @@ where
     fn drive_differential(
         &self,
         t: f64,
+        hull: &TreeState<DH>,
         differential: &Differential,
         asked: Option<f64>,
         states: [f64; 3],
@@ -174,11 +175,20 @@ where
         };
         match &differential.steer {
             DifferentialSteer::Brakes(brakes) => {
-                // A driver's hands on the levers answer the heading (the
-                // difference asked), not the sprockets' speeds, which
-                // carry the teeth's and wheels' ripple.
+                // A driver brakes on what the hull does: the difference
+                // asked against the gauge times the heading's rate (the
+                // belts' difference that turns the hull so without slip),
+                // not against the sprockets' speeds, which carry the
+                // teeth's and wheels' ripple. Braking on the difference
+                // asked alone, a clutch-brake turn overshoots and rings.
                 let lever = match asked {
-                    Some(asked) => (asked / brakes.band).clamp(-1.0, 1.0),
+                    Some(asked) => {
+                        let (_, yaw_rate, ..) = self.hull.coordinate_rates(&hull.pose, &hull.rates);
+                        let error = asked - self.gauge * yaw_rate;
+                        // Inside the dead band the levers rest.
+                        let beyond = (error.abs() - brakes.dead_band).max(0.0).copysign(error);
+                        (beyond / brakes.band).clamp(-1.0, 1.0)
+                    }
                     None => input()?,
                 };
                 // A left turn (lever > 0) brakes the left axle.
