@@ -138,11 +138,11 @@ const BRAKE_DEAD_BAND: f64 = 0.05;
 /// torque acts on both sprockets, `±Q`, so the speed difference moves as
 /// under the two side drives) and a side's limit, steering brakes twice a
 /// side's limit with the parking brake's elastic stage on half the
-/// vehicle's mass reflected to a sprocket, fully on when the driver asks
-/// a third of the largest difference (a brake turns the vehicle only
-/// past the ground's turning resistance: a driver braking in proportion
-/// up to the largest difference cannot take out a few degrees of
-/// overshoot).
+/// vehicle's mass reflected to a sprocket, fully on when the driver's
+/// error (the gauge times the yaw rate against the difference asked) is
+/// a third of the largest difference beyond [`BRAKE_DEAD_BAND`] (a brake
+/// turns the vehicle only past the ground's turning resistance, so the
+/// driver must brake hard on a small error).
 fn driveline<V: SpatialVehicleSystem>(
     entry: &Offered,
     args: &SpatialArgs,
