@@ -56,12 +56,17 @@ fn planar_states<M: RecursiveModel<D>, const D: usize>(
 }
 
 /// The planar vehicle's accelerations at `(q, q̇)` of its track and its
-/// chassis, from the planar model's pieces, and how many contacts of
-/// each kind it has: ground, rims, teeth.
+/// chassis, from the planar model's pieces, how many contacts of each
+/// kind it has (ground, rims, teeth), and the track's joint forces.
 fn planar_accelerations(
     (qt, qdt): (&SVector<f64, DT>, &SVector<f64, DT>),
     (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
-) -> (SVector<f64, DT>, SVector<f64, DC>, [usize; 3]) {
+) -> (
+    SVector<f64, DT>,
+    SVector<f64, DC>,
+    [usize; 3],
+    Vec<Vector2<f64>>,
+) {
     let mut counts = [0; 3];
     let config = Twin::declared_config(
         Terrain::Flat { height: 0.0 },
@@ -139,7 +144,7 @@ fn planar_accelerations(
     TwinChassis
         .tree_dynamics(&trig(qc.as_slice()), qdc, &chassis_loads, &mut qddc)
         .expect("the planar chassis' dynamics");
-    (qddt, qddc, counts)
+    (qddt, qddc, counts, forces)
 }
 
 #[test]
@@ -169,7 +174,7 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     let qdt = SVector::<f64, DT>::from_fn(|i, _| 0.2 * (0.7 * i as f64).cos());
     let qc = SVector::<f64, DC>::from_fn(|i, _| qh[i]);
     let qdc = SVector::<f64, DC>::from_fn(|i, _| qdh[i]);
-    let (qddt, qddc, counts) = planar_accelerations((&qt, &qdt), (&qc, &qdc));
+    let (qddt, qddc, counts, forces) = planar_accelerations((&qt, &qdt), (&qc, &qdc));
     assert!(
         counts.iter().all(|&n| n >= 2),
         "ground, rim and tooth contacts: {counts:?}"
@@ -179,10 +184,32 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     let hull = upright(Vector3::new(qh[0], 0.0, qh[1]), &qh, &qdh);
     let right = upright(Vector3::new(qt[0], -half, qt[1]), &qt, &qdt);
     let left = upright(Vector3::new(qt[0], half, qt[1]), &qt, &qdt);
+    let states = (&hull, &right, &left);
+    let loads = dynamics.loads(&hull, &right, &left);
+    let closed = ClosingJoint::Constrained {
+        stabilisation: Vector2::zeros(),
+    };
+    let (mut right_forces, mut left_forces) = (
+        vec![Vector2::zeros(); TwinTrack::BODIES],
+        vec![Vector2::zeros(); TwinTrack::BODIES],
+    );
     let ((hull_planar, hull_across), (right_planar, right_across), (left_planar, left_across)) =
         dynamics
-            .accelerations(&hull, &right, &left)
+            .accelerations_in(
+                &dynamics.plane_motions(states),
+                states,
+                (&loads, [closed; 2]),
+                [&mut right_forces, &mut left_forces],
+            )
             .expect("the spatial dynamics");
+    assert_eq!(
+        (hull_planar, right_planar, left_planar),
+        {
+            let ((h, _), (r, _), (l, _)) = dynamics.accelerations(&hull, &right, &left).unwrap();
+            (h, r, l)
+        },
+        "the routes with and without the joint forces"
+    );
     let close = |a: f64, b: f64, what: String| {
         assert!(
             (a - b).abs() <= 1e-9 * b.abs().max(1.0),
@@ -202,6 +229,17 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     for i in 0..DT {
         close(right_planar[i], qddt[i], format!("right track q̈[{i}]"));
         close(left_planar[i], qddt[i], format!("left track q̈[{i}]"));
+    }
+    // The track's joint forces (what its tensions are read from), in the
+    // track's plane as in the planar one's.
+    let largest = forces.iter().map(|f| f.norm()).fold(0.0, f64::max);
+    for (j, f) in forces.iter().enumerate() {
+        for (side, found) in [("right", right_forces[j]), ("left", left_forces[j])] {
+            assert!(
+                (found - f).norm() <= 1e-9 * largest,
+                "{side} joint {j}: {found:?} against the plane's {f:?}"
+            );
+        }
     }
     // Across the planes: the hull neither slides, rolls nor yaws; the
     // tracks move out as far as the other comes in (the hull's lateral

@@ -146,7 +146,7 @@ const BRAKE_DEAD_BAND: f64 = 0.05;
 fn driveline<V: SpatialVehicleSystem>(
     entry: &Offered,
     args: &SpatialArgs,
-    system: &V::Spatial,
+    (system, mass): (&V::Spatial, f64),
     target: impl Fn() -> Box<dyn Fn(f64) -> f64 + Send>,
 ) -> Result<(Driveline, String), String> {
     if args.driveline == DrivelineKind::Sides {
@@ -177,7 +177,7 @@ fn driveline<V: SpatialVehicleSystem>(
     let (steer, said) = if args.driveline == DrivelineKind::Brakes {
         let largest = V::layout().gauge * MAX_YAW_RATE / 3.0;
         let radius = system.rolling_radius();
-        let inertia = 0.5 * system.mass() * radius * radius;
+        let inertia = 0.5 * mass * radius * radius;
         let brakes = SteeringBrakes::by_parking_rule(
             BRAKE_OVER_DRIVE * max_torque,
             inertia,
@@ -308,7 +308,8 @@ fn drive<V: SpatialVehicleSystem>(
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
     };
-    let (driveline, driven) = driveline::<V>(entry, args, &system, target)?;
+    let mass = system.outputs(0.0, y.as_slice())?.centre.mass;
+    let (driveline, driven) = driveline::<V>(entry, args, (&system, mass), target)?;
     system.set_driveline(driveline)?;
     let angle = args.turn.to_radians();
     system.set_steering(HeadingHold::turn(
@@ -348,12 +349,7 @@ fn drive<V: SpatialVehicleSystem>(
     let mut thinned = Thinned::new(PICTURE_ROWS);
     let mut sink = Tee::new().and(&mut csv).and(&mut thinned);
     sink.begin(&COLUMNS.map(String::from))?;
-    let method = Integrator::Bs23 {
-        rtol: args.tolerance,
-        atol: args.tolerance,
-        max_step: Integrator::DEFAULT_MAX_STEP,
-    };
-    let mut stepper = method.stepper(system.dimension());
+    let mut stepper = Integrator::bs23(args.tolerance).stepper(system.dimension());
     let before = system.energy(y.as_slice());
     let bar = ProgressBar::new((args.duration * 1000.0) as u64);
     bar.set_style(ProgressStyle::with_template(
@@ -482,7 +478,7 @@ const PICTURE_ROWS: usize = 2000;
 
 /// The CSV's columns after the time: SI units, angles in rad, sides `r_`
 /// and `l_`.
-const COLUMNS: [&str; 41] = [
+const COLUMNS: [&str; 47] = [
     "x",
     "y",
     "z",
@@ -511,6 +507,9 @@ const COLUMNS: [&str; 41] = [
     "r_ground_fy",
     "r_ground_fz",
     "r_ground_yaw_moment",
+    "r_tension_tight",
+    "r_tension_slack",
+    "r_tension_largest",
     "l_sprocket_speed",
     "l_sprocket_torque",
     "l_sprocket_power",
@@ -524,6 +523,9 @@ const COLUMNS: [&str; 41] = [
     "l_ground_fy",
     "l_ground_fz",
     "l_ground_yaw_moment",
+    "l_tension_tight",
+    "l_tension_slack",
+    "l_tension_largest",
 ];
 
 /// One row of [`COLUMNS`].
@@ -561,6 +563,9 @@ fn record(out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
             side.ground_force.y,
             side.ground_force.z,
             side.ground_yaw_moment,
+            side.tensions.tight,
+            side.tensions.slack,
+            side.tensions.largest,
         ]);
     }
     row.try_into().expect("one value per column")

@@ -59,12 +59,8 @@ fn run_turn<V: SpatialVehicleSystem>(
         right: V::speed_drive(ramp(belts[0])),
         left: V::speed_drive(ramp(belts[1])),
     })?;
-    let mut stepper = Integrator::Bs23 {
-        rtol: Integrator::DEFAULT_EXPLICIT_TOLERANCE,
-        atol: Integrator::DEFAULT_EXPLICIT_TOLERANCE,
-        max_step: Integrator::DEFAULT_MAX_STEP,
-    }
-    .stepper(system.dimension());
+    let mut stepper =
+        Integrator::bs23(Integrator::DEFAULT_EXPLICIT_TOLERANCE).stepper(system.dimension());
     let mut t = 0.0;
     while t < FIRST {
         stepper.step(&mut system, &mut t, &mut y, FIRST)?;

@@ -40,6 +40,7 @@ mod ground;
 mod outputs;
 mod steering;
 mod system;
+mod tensions;
 
 use bodies::Bodies;
 pub use declared::{SpatialSimulated, SpatialVehicleSystem};
@@ -51,11 +52,12 @@ pub use driveline::{
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
 pub use system::{SpatialEnergy, SpatialSystem};
+pub use tensions::TrackTensions;
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
 use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
-use crate::contact::sprocket::{Gaps, ToothProfile, rolling_radius};
+use crate::contact::sprocket::{Gaps, ToothProfile, pitch_radius, rolling_radius};
 use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
 use crate::multibody::{
     ArmSpring, ChassisModel, ChassisPart, ClosingJoint, DynamicsError, PartKind, TrackModel,
@@ -134,6 +136,8 @@ pub struct SpatialLoads {
 pub(crate) struct LoadScratch {
     bodies: [Bodies; 3],
     loads: SpatialLoads,
+    /// Each track's joint forces (right, left; one per link).
+    joint_forces: [Vec<Vector2<f64>>; 2],
 }
 
 /// What the ground gives one of a track's ground points at a state.
@@ -167,6 +171,8 @@ pub struct MassCentre {
 struct DrivenSprocket {
     body: usize,
     rolling_radius: f64,
+    /// The pitch circle's radius, m (the pins' seat).
+    pitch_radius: f64,
 }
 
 /// The spatial vehicle: its three trees, its layout, the shoe and the
@@ -243,6 +249,7 @@ where
             sprockets[s] = Some(DrivenSprocket {
                 body: part.body,
                 rolling_radius: rolling_radius(profile.teeth, pitch),
+                pitch_radius: pitch_radius(profile.teeth, pitch),
             });
         }
         Ok(SpatialDynamics {
@@ -632,36 +639,52 @@ where
         closing: [ClosingJoint; 2],
     ) -> Result<Accelerations<DH, DR, DL>, DynamicsError> {
         let states = (hull, right, left);
-        self.accelerations_in(&self.plane_motions(states), states, loads, closing)
+        let mut forces = [
+            vec![Vector2::zeros(); self.right.masses().len()],
+            vec![Vector2::zeros(); self.left.masses().len()],
+        ];
+        let [r, l] = &mut forces;
+        self.accelerations_in(
+            &self.plane_motions(states),
+            states,
+            (loads, closing),
+            [r, l],
+        )
     }
 
     /// [`accelerations_under`](Self::accelerations_under) with the trees'
     /// `motions` in their planes found already
-    /// ([`plane_motions`](Self::plane_motions)).
+    /// ([`plane_motions`](Self::plane_motions)), each track's joint forces
+    /// written to `joint_forces` (right, left; one per link, as
+    /// [`FloatingTree::closed_accelerations_in`] writes them).
+    ///
+    /// # Panics
+    /// If `joint_forces` are not one per link (a programming error).
     pub fn accelerations_in(
         &self,
         motions: &[PlaneMotion; 3],
         (hull, right, left): (&TreeState<DH>, &TreeState<DR>, &TreeState<DL>),
-        loads: &SpatialLoads,
-        closing: [ClosingJoint; 2],
+        (loads, closing): (&SpatialLoads, [ClosingJoint; 2]),
+        joint_forces: [&mut [Vector2<f64>]; 2],
     ) -> Result<Accelerations<DH, DR, DL>, DynamicsError> {
         let [m_hull, m_right, m_left] = motions;
+        let [f_right, f_left] = joint_forces;
         Ok((
             self.hull
                 .accelerations_in(m_hull, &hull.pose, &hull.rates, &loads.hull)?,
             self.right.closed_accelerations_in(
                 m_right,
-                &right.pose,
-                &right.rates,
+                (&right.pose, &right.rates),
                 &loads.right,
                 closing[0],
+                f_right,
             )?,
             self.left.closed_accelerations_in(
                 m_left,
-                &left.pose,
-                &left.rates,
+                (&left.pose, &left.rates),
                 &loads.left,
                 closing[1],
+                f_left,
             )?,
         ))
     }

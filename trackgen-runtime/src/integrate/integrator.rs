@@ -88,6 +88,17 @@ impl Integrator {
         }
     }
 
+    /// Bogacki-Shampine with `rtol = atol = tol` and steps of at most
+    /// [`DEFAULT_MAX_STEP`](Self::DEFAULT_MAX_STEP): what the 3-D main job
+    /// and its turns run at `tol`.
+    pub fn bs23(tol: f64) -> Self {
+        Integrator::Bs23 {
+            rtol: tol,
+            atol: tol,
+            max_step: Self::DEFAULT_MAX_STEP,
+        }
+    }
+
     /// A stepper for a system of `dimension` components.
     pub fn stepper(self, dimension: usize) -> Box<dyn Stepper> {
         match self {

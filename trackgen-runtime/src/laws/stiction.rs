@@ -125,13 +125,20 @@ impl Stiction {
         }
     }
 
+    /// The energy the elastic stage stores at deflection `z` (m), J:
+    /// `½ k z²`.
+    #[inline]
+    pub fn potential(&self, z: f64) -> f64 {
+        0.5 * self.stiffness * z * z
+    }
+
     /// The law at deflection `z` (m), slip velocity `v` (m/s, the body's
     /// point against the ground along the tangent) and normal force
     /// `normal` (N, ≥ 0).
     #[inline]
     pub fn respond(&self, z: f64, v: f64, normal: f64) -> TangentialResponse {
         let (k, c) = (self.stiffness, self.damping);
-        let potential = 0.5 * k * z * z;
+        let potential = self.potential(z);
         let stick = k * z + c * v;
         let limit = self.mu * normal;
         if stick.abs() <= limit {

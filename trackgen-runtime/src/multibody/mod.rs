@@ -1,11 +1,13 @@
 //! What a compiled model is: the traits generated code implements, the
 //! run-time description of the same body tree, the loads on its bodies,
-//! the closing joint, and why its dynamics could not be evaluated.
+//! the closing joint, a track's tensions from its joint forces, and why
+//! its dynamics could not be evaluated.
 
 mod closing;
 mod description;
 mod error;
 mod load;
+mod tension;
 mod traits;
 
 pub use closing::ClosingJoint;
@@ -15,4 +17,5 @@ pub use description::{
 };
 pub use error::DynamicsError;
 pub use load::BodyLoad;
+pub use tension::joint_tensions;
 pub use traits::{ChassisModel, RecursiveModel, TrackModel};

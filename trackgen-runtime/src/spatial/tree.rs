@@ -21,6 +21,15 @@ pub struct PlanePose<const DOF: usize> {
     pub planar: SVector<f64, DOF>,
 }
 
+impl<const DOF: usize> PlanePose<DOF> {
+    /// The heading's rate `ψ̇ = ω_ζ / cos φ` at `rates`, rad/s (the second
+    /// of [`FloatingTree::coordinate_rates`], without the rest).
+    #[inline]
+    pub fn yaw_rate(&self, rates: &PlaneRates<DOF>) -> f64 {
+        rates.across.z / self.roll.cos()
+    }
+}
+
 /// How the tree moves: the quasi-velocities of the module's docs.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PlaneRates<const DOF: usize> {
@@ -375,7 +384,7 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         for k in 2..DOF {
             angles[k] += turning;
         }
-        (velocity, w_zeta / pose.roll.cos(), w_xi, angles)
+        (velocity, pose.yaw_rate(rates), w_xi, angles)
     }
 
     /// The kinetic energy, J.
@@ -595,27 +604,46 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
         M: TrackModel<DOF>,
     {
         let motion = self.plane_motion(pose, rates);
-        self.closed_accelerations_in(&motion, pose, rates, loads, closing)
+        let mut forces = vec![Vector2::zeros(); self.masses.len()];
+        self.closed_accelerations_in(&motion, (pose, rates), loads, closing, &mut forces)
     }
 
     /// [`closed_accelerations`](Self::closed_accelerations) with the
     /// bodies' `motion` in their plane found already
-    /// ([`plane_motion`](Self::plane_motion)).
+    /// ([`plane_motion`](Self::plane_motion)), every joint's force written
+    /// to `joint_forces` (one per link, N, the plane's `(ξ, ζ)` axes; as
+    /// [`TrackModel::linear_time_dynamics`] writes them: the force link
+    /// `j + 2` exerts on link `j + 1`, links numbered from 1, the last the
+    /// closing joint's). A track's links lie in its plane (no offsets), so
+    /// one planar solve gives them: the forces of the motion found.
+    ///
+    /// # Panics
+    /// If `joint_forces` is not one per link (a programming error).
     pub fn closed_accelerations_in(
         &self,
         motion: &PlaneMotion,
-        pose: &PlanePose<DOF>,
-        rates: &PlaneRates<DOF>,
+        (pose, rates): (&PlanePose<DOF>, &PlaneRates<DOF>),
         loads: &[SpatialLoad],
         closing: ClosingJoint,
+        joint_forces: &mut [Vector2<f64>],
     ) -> Result<(SVector<f64, DOF>, Vector3<f64>), DynamicsError>
     where
         M: TrackModel<DOF>,
     {
+        debug_assert!(
+            self.offsets.iter().all(|&e| e == 0.0),
+            "a track's links lie in its plane: one planar solve gives the joint forces"
+        );
         let model = self.model;
-        let mut forces = vec![Vector2::zeros(); self.masses.len()];
         self.dynamics_with((motion, pose, rates), loads, |trig, planar_loads, qdd| {
-            model.linear_time_dynamics(trig, &rates.planar, planar_loads, closing, qdd, &mut forces)
+            model.linear_time_dynamics(
+                trig,
+                &rates.planar,
+                planar_loads,
+                closing,
+                qdd,
+                joint_forces,
+            )
         })
     }
 

@@ -49,9 +49,6 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// drive).
     fn set_steering(&mut self, hold: HeadingHold) -> Result<(), SteeringError>;
 
-    /// The vehicle's mass, kg: every body's.
-    fn mass(&self) -> f64;
-
     /// The sprockets' rolling radius, m: the mean of the two sides' (NaN
     /// without sprockets).
     fn rolling_radius(&self) -> f64;
@@ -129,14 +126,6 @@ where
 
     fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64> {
         SpatialSystem::rolled(self, y, roll)
-    }
-
-    fn mass(&self) -> f64 {
-        let d = &self.dynamics;
-        [d.hull.masses(), d.right.masses(), d.left.masses()]
-            .iter()
-            .flat_map(|m| m.iter())
-            .sum()
     }
 
     fn rolling_radius(&self) -> f64 {

@@ -183,7 +183,7 @@ where
                 // asked alone, a clutch-brake turn overshoots and rings.
                 let lever = match asked {
                     Some(asked) => {
-                        let (_, yaw_rate, ..) = self.hull.coordinate_rates(&hull.pose, &hull.rates);
+                        let yaw_rate = hull.pose.yaw_rate(&hull.rates);
                         let error = asked - self.gauge * yaw_rate;
                         // Inside the dead band the levers rest.
                         let beyond = (error.abs() - brakes.dead_band).max(0.0).copysign(error);

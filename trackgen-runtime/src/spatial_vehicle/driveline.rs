@@ -288,7 +288,7 @@ impl Driveline {
             Driveline::Differential(Differential {
                 steer: DifferentialSteer::Brakes(b),
                 ..
-            }) => 0.5 * b.stiffness * (states[1] * states[1] + states[2] * states[2]),
+            }) => b.law().potential(states[1]) + b.law().potential(states[2]),
             _ => 0.0,
         }
     }

@@ -3,12 +3,12 @@
 //! acceleration (lateral in the hull's heading), the radius of its path,
 //! and per side the sprocket's speed, torque and power, the brake's
 //! torque and power, the belt's speed,
-//! the track's slip and its own speed round the hull, and the ground's
-//! force and yaw moment on the track.
+//! the track's slip and its own speed round the hull, the ground's
+//! force and yaw moment on the track, and the track's tensions.
 
 use nalgebra::Vector3;
 
-use super::{MassCentre, SpatialSystem};
+use super::{MassCentre, SpatialSystem, TrackTensions};
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
 
@@ -56,6 +56,9 @@ pub struct SideOutputs {
     /// The ground's moment on the track about the vertical through the
     /// centre of mass, N m (counter-clockwise seen from above).
     pub ground_yaw_moment: f64,
+    /// The track's tensions: either side of the sprocket, and the
+    /// largest.
+    pub tensions: TrackTensions,
 }
 
 /// What the vehicle shows at a state ([`SpatialSystem::outputs`]).
@@ -99,6 +102,7 @@ where
         let (hull, right, left, _) = self.states(y);
         let d = &self.dynamics;
         let drive = d.drive(t, &hull, self.driver(y))?;
+        let tensions = self.tensions(t, y)?;
         // Every body in the world once, for the centre of mass, the hull's
         // yaw rate, the ground's forces and the patches' speeds.
         let bodies = d.bodies_at((&hull, &right, &left));
@@ -147,6 +151,7 @@ where
                 track_speed: ground_speed - patch[s].0 / patch[s].1,
                 ground_force: force[s],
                 ground_yaw_moment: moment[s],
+                tensions: tensions[s],
             }
         });
         let gravity = Vector3::new(0.0, 0.0, -d.hull.gravity());

@@ -20,7 +20,7 @@
 //! ([`MultiplierOptions`]'s rate), which the plane's motion leaves
 //! unchanged.
 
-use nalgebra::{DVector, SVector, Vector3};
+use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::{
     DriveState, Driveline, DrivelineError, GroundForce, HeadingHold, LoadScratch, MassCentre,
@@ -379,6 +379,36 @@ where
                 expected: self.dimension(),
             });
         }
+        // The scratch is taken for the evaluation and put back, so that
+        // the evaluation borrows the system whole.
+        let mut scratch = std::mem::take(&mut self.scratch);
+        let done = self.evaluate(t, y, dy, &mut scratch);
+        self.scratch = scratch;
+        done
+    }
+
+    fn is_quadrature(&self, i: usize) -> bool {
+        i >= self.books_at() + 3
+    }
+}
+
+impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
+    SpatialSystem<'_, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    /// The state's derivative at `t` and `y` into `dy` (both of the
+    /// system's dimension), through `scratch`, which keeps what it found:
+    /// the bodies in the world, the loads and each track's joint forces.
+    pub(super) fn evaluate(
+        &self,
+        t: f64,
+        y: &[f64],
+        dy: &mut [f64],
+        scratch: &mut LoadScratch,
+    ) -> Result<(), SimulationError> {
         let (hull, right, left, _) = self.states(y);
         let b = self.books_at();
         let states = (&hull, &right, &left);
@@ -388,7 +418,6 @@ where
         let (right_rates, left_rates) = dy[Self::TREES..b].split_at_mut(r);
         let deflections = self.deflections(y);
         let d = &self.dynamics;
-        let scratch = &mut self.scratch;
         d.loads_into(
             &motions,
             states,
@@ -396,14 +425,20 @@ where
             [right_rates, left_rates],
             scratch,
         );
-        let loads = &mut scratch.loads;
+        let LoadScratch {
+            loads,
+            joint_forces: [f_right, f_left],
+            ..
+        } = scratch;
         d.apply_drive(&hull, &drive, loads);
         let closing = [
             closing(d.right.model(), (&motions[1], &right), &self.closure),
             closing(d.left.model(), (&motions[2], &left), &self.closure),
         ];
+        f_right.resize(d.right.masses().len(), Vector2::zeros());
+        f_left.resize(d.left.masses().len(), Vector2::zeros());
         let (a_hull, a_right, a_left) = d
-            .accelerations_in(&motions, states, loads, closing)
+            .accelerations_in(&motions, states, (loads, closing), [f_right, f_left])
             .map_err(|source| SimulationError::Dynamics { t, source })?;
         let (h, r, l) = (2 * DH + 6, 2 * DR + 6, 2 * DL + 6);
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
@@ -413,9 +448,5 @@ where
         dy[b + 3] = loads.dissipation + drive.dissipation;
         dy[b + 4] = drive.driven;
         Ok(())
-    }
-
-    fn is_quadrature(&self, i: usize) -> bool {
-        i >= self.books_at() + 3
     }
 }

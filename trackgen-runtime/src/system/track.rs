@@ -11,8 +11,7 @@ use crate::closure::{
 use crate::integrate::OdeSystem;
 use crate::integrate::SimulationError;
 use crate::laws::PenaltyJoint;
-use crate::multibody::{BodyLoad, ClosingJoint, Closure, TrackModel};
-use crate::planar::Rotation;
+use crate::multibody::{BodyLoad, ClosingJoint, Closure, TrackModel, joint_tensions};
 
 record! {
     /// What a track records after its bodies' [`Mechanics`](super::Mechanics).
@@ -331,12 +330,10 @@ impl<M: TrackModel<D>, const D: usize> TrackSystem<M, D> {
     /// along its `d̄ⁱ`. For a cut closing joint, the force across the cut.
     pub(crate) fn tensions(&self, out: &mut Vec<f64>) {
         out.clear();
-        let trig = &self.recovered.trig;
-        out.extend(self.joint_forces.iter().zip(&self.spans).zip(trig).map(
-            |((force, span), &trig)| {
-                let axis = Rotation::from_sin_cos(trig).apply(*span);
-                force.dot(&axis) / span.norm()
-            },
+        out.extend(joint_tensions(
+            &self.joint_forces,
+            &self.spans,
+            &self.recovered.trig,
         ));
     }
 

@@ -58,6 +58,7 @@ pub use layout::StateLayout;
 pub use powertrain::{EngineSide, Powertrain};
 pub use powertrain_error::PowertrainError;
 pub use record::VehicleRecord;
+pub(crate) use record::seated_run;
 pub use shift::{Engaged, Shift};
 pub use system::VehicleSystem;
 

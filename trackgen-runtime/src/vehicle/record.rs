@@ -130,7 +130,6 @@ pub(super) fn sprocket_spans(
     (centre, radius): (Vector2<f64>, f64),
     offsets: &mut Vec<f64>,
 ) -> Option<(usize, usize)> {
-    let n = links.len();
     offsets.clear();
     offsets.extend(
         links
@@ -138,6 +137,14 @@ pub(super) fn sprocket_spans(
             .zip(forward_joints)
             .map(|(link, u2)| ((link.point(*u2) - centre).norm() - radius).abs()),
     );
+    seated_run(offsets)
+}
+
+/// [`sprocket_spans`] from each joint's distance to the sprocket's pitch
+/// circle, m (`offsets`, in link order; joint `j` the one ahead of link
+/// `j`): the one owner of the seating rule, in the plane and in space.
+pub(crate) fn seated_run(offsets: &[f64]) -> Option<(usize, usize)> {
+    let n = offsets.len();
     let nearest = offsets.iter().copied().fold(f64::INFINITY, f64::min);
     let seated = |j: usize| offsets[j] < SEATED || offsets[j] <= nearest;
     let first = (0..n).find(|&j| seated(j) && !seated((j + n - 1) % n))?;
