@@ -40,9 +40,10 @@ pub struct SteerArgs {
     /// at this speed.
     #[arg(long, default_value_t = 2.0, value_name = "M/S", value_parser = turn_speed)]
     pub speed: f64,
-    /// The coefficient of rolling resistance, from 0 to 0.5 (default: the
-    /// model's own, measured holding its track at 1.5 m/s on rigid
-    /// ground, which needs the vehicle's powertrain).
+    /// The coefficient of rolling resistance, from 0 to 0.5, all of it
+    /// the running gear's, lost at the belt (default: the model's own,
+    /// measured holding its track at 1.5 m/s on rigid ground, which needs
+    /// the vehicle's powertrain).
     #[arg(long, value_name = "F", value_parser = rolling_resistance)]
     pub rolling_resistance: Option<f64>,
     /// Also turn at this sprocket speed ratio (outer over inner), from
@@ -149,7 +150,10 @@ fn estimate<V: Vehicle>(
                 .gravity
                 .norm(),
         friction,
-        rolling_resistance,
+        // On rigid ground the model loses only in its running gear, at
+        // the belt: none of it is the ground's.
+        rolling_resistance: 0.0,
+        belt_resistance: rolling_resistance,
         tracks: [run.clone(), run.mirrored()],
     };
     let length = run.length();
@@ -204,8 +208,8 @@ fn estimate<V: Vehicle>(
             kinematic(turn, gauge).map_or("-1".to_string(), |k| format!("{k:.3}")),
             outer.slip,
             inner.slip,
-            outer.thrust * sprocket / 1e3,
-            inner.thrust * sprocket / 1e3,
+            outer.sprocket_force() * sprocket / 1e3,
+            inner.sprocket_force() * sprocket / 1e3,
             outer.power / 1e3,
             inner.power / 1e3,
             turn.resisting_moment / steeds
@@ -215,7 +219,7 @@ fn estimate<V: Vehicle>(
         let stall = powertrain.limit(0.0).0;
         let most = turns
             .iter()
-            .map(|(_, t)| t.outer_inner()[0].thrust * sprocket)
+            .map(|(_, t)| t.outer_inner()[0].sprocket_force() * sprocket)
             .fold(0.0, f64::max);
         say!(
             "the powertrain gives a sprocket at most {:.2} kN m at a crawl: the outer sprocket's largest above is {:.0} % of it",
@@ -299,8 +303,8 @@ fn write_csv(
             inner.slip,
             outer.thrust,
             inner.thrust,
-            outer.thrust * sprocket,
-            inner.thrust * sprocket,
+            outer.sprocket_force() * sprocket,
+            inner.sprocket_force() * sprocket,
             outer.power,
             inner.power,
             turn.dissipation,
@@ -386,7 +390,10 @@ fn compare_in_space(
     ])?;
     for ((asked, turn), ran) in turns.iter().zip(runs) {
         let [outer, inner] = turn.outer_inner();
-        let theory = [outer.thrust * sprocket, inner.thrust * sprocket];
+        let theory = [
+            outer.sprocket_force() * sprocket,
+            inner.sprocket_force() * sprocket,
+        ];
         let ran = match ran {
             Ok(ran) => ran,
             Err(e) => {

@@ -36,7 +36,7 @@ use trackgen::contact::axial::GuideLaw;
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::laws::Stiction;
 use trackgen::nalgebra::{DVector, Matrix3, SVector, Vector3};
-use trackgen::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
+use trackgen::spatial::{PlanePose, PlaneRates, SpatialError, SpatialLayout, SpatialVehicle};
 use trackgen::spatial_vehicle::{
     SideDrives, SpatialDynamics, SpatialLaws, SpatialSystem, TreeState,
 };
@@ -123,11 +123,33 @@ pub fn built(
     laws: SpatialLaws,
     field: HeightField,
 ) -> Result<SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT>, SpatialError> {
+    built_on(laws, field, &Twin::layout())
+}
+
+/// The `Twin`'s layout with its tracks `gauge` m apart: each side's
+/// running gear moved out or in with its track (the frame's inertia
+/// kept).
+pub fn layout_at(gauge: f64) -> SpatialLayout {
+    let mut layout = Twin::layout();
+    let scale = gauge / layout.gauge;
+    layout.gauge = gauge;
+    for offset in &mut layout.hull_offsets {
+        *offset *= scale;
+    }
+    layout
+}
+
+/// [`built`] on `layout`.
+pub fn built_on(
+    laws: SpatialLaws,
+    field: HeightField,
+    layout: &SpatialLayout,
+) -> Result<SpatialDynamics<'static, TwinHull, DH, TwinTrack, DT, TwinTrack, DT>, SpatialError> {
     let geometry = Twin::geometry();
     SpatialDynamics::new(
         &HULL,
         (&TRACK, &TRACK),
-        &Twin::layout(),
+        layout,
         geometry.shoe.clone(),
         geometry.sprocket,
         laws,
@@ -154,8 +176,13 @@ pub fn belt(speed: f64, ramp: f64) -> Drive {
 /// The `Twin` at rest on level ground, its hull's root at `(x, y)` and
 /// turned `heading` rad about the vertical.
 pub fn at_rest(heading: f64, (x, y): (f64, f64)) -> States {
+    at_rest_apart(Twin::layout().gauge, heading, (x, y))
+}
+
+/// [`at_rest`] with the tracks `gauge` m apart ([`layout_at`]).
+pub fn at_rest_apart(gauge: f64, heading: f64, (x, y): (f64, f64)) -> States {
     let start = assembled();
-    let half = Twin::layout().gauge / 2.0;
+    let half = gauge / 2.0;
     let (qh, qt) = (start.hull, start.right);
     let (s, c) = heading.sin_cos();
     let placed =
@@ -223,7 +250,17 @@ pub fn firm() -> SpatialLaws {
 
 /// The `Twin` on `field` under `laws`, its sprockets driven by `drives`.
 pub fn on(field: HeightField, laws: SpatialLaws, drives: SideDrives) -> System {
-    SpatialSystem::new(built(laws, field).expect("the spatial vehicle"))
+    on_layout(field, laws, drives, &Twin::layout())
+}
+
+/// [`on`] laid out as `layout` says ([`layout_at`]).
+pub fn on_layout(
+    field: HeightField,
+    laws: SpatialLaws,
+    drives: SideDrives,
+    layout: &SpatialLayout,
+) -> System {
+    SpatialSystem::new(built_on(laws, field, layout).expect("the spatial vehicle"))
         .with_drives(drives)
         .expect("drives that make controllers")
 }

@@ -22,8 +22,11 @@
 //! its sliding (isotropic), is a function of the point's place alone:
 //! the forces and moments are integrals over the run's load, in closed
 //! form for a load uniform over each stretch (the module `shear`). The steady turn
-//! is where they, with each track's rolling resistance, give the
-//! centripetal force and no moment about the centre of gravity.
+//! is where they, with each track's rolling resistance from the ground,
+//! give the centripetal force and no moment about the centre of gravity.
+//! The running gear's own losses act inside the vehicle: the sprocket
+//! overcomes them beyond the shear, and they move no instantaneous
+//! centre.
 //!
 //! This is Wong & Chiang's theory with the shear stress at once at its
 //! limit `μ p` (their shear-deformation modulus `K` → 0): the law of the
@@ -161,10 +164,19 @@ pub struct SkidSteer {
     /// The coefficient of friction between the track and the ground, the
     /// same in every direction.
     pub friction: f64,
-    /// The coefficient of rolling resistance: each track's resistance is
-    /// this times its normal load, against the way its centre line moves
-    /// over the ground (none where it stands still).
+    /// The coefficient of the ground's rolling resistance (a soil's, Wong
+    /// & Chiang's): each track's resistance is this times its normal load,
+    /// on its centre line against the way it moves over the ground (none
+    /// where it stands still), in the vehicle's balance of forces.
     pub rolling_resistance: f64,
+    /// The coefficient of the running gear's resistance (the rims', the
+    /// teeth's and the pins' losses as the belt runs round the hull: all
+    /// a vehicle loses on rigid ground): each track's is this times its
+    /// normal load against the belt's motion round the hull (none where
+    /// the belt stands), a force inside the vehicle that the sprocket
+    /// overcomes beyond the ground's shear
+    /// ([`SideInTurn::sprocket_force`]), not in the balance of forces.
+    pub belt_resistance: f64,
     /// The left track (`lateral` > 0) and the right (`lateral` < 0).
     pub tracks: [TrackLoad; 2],
 }
@@ -217,6 +229,7 @@ impl SkidSteer {
             mass,
             friction,
             rolling_resistance,
+            belt_resistance: 0.0,
             tracks: [
                 TrackLoad::uniform(0.5 * gauge, length, half),
                 TrackLoad::uniform(-0.5 * gauge, length, half),
@@ -245,6 +258,12 @@ impl SkidSteer {
             "at least 0",
             self.rolling_resistance,
             self.rolling_resistance >= 0.0,
+        )?;
+        input(
+            "the running gear's resistance",
+            "at least 0",
+            self.belt_resistance,
+            self.belt_resistance >= 0.0,
         )?;
         let [left, right] = &self.tracks;
         input(

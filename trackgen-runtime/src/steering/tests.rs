@@ -194,6 +194,7 @@ fn lumpy() -> SkidSteer {
         mass: 12_337.7,
         friction: 0.8,
         rolling_resistance: 0.03,
+        belt_resistance: 0.02,
         tracks: [
             TrackLoad {
                 lateral: 1.1,
@@ -246,6 +247,36 @@ fn a_found_turn_balances_by_quadrature_and_its_sprockets_pay_for_its_losses() {
         );
         assert!((turn.dissipation - dissipation).abs() < 1e-9 * dissipation);
     }
+}
+
+/// The running gear's losses act inside the vehicle: they move no
+/// instantaneous centre (the turn is the one without them, bit for bit),
+/// and each sprocket gives them beyond the shear, `f_b N` against its
+/// belt's motion, to rounding; where a belt stands (a clutch-brake turn's
+/// inner) it gives the shear alone.
+#[test]
+fn the_running_gears_losses_load_the_sprockets_and_move_no_centre() {
+    let with = lumpy();
+    let without = SkidSteer {
+        belt_resistance: 0.0,
+        ..with.clone()
+    };
+    for (omega, vx) in [(0.5, 1.0), (-0.3, 2.0), (0.8, 0.0)] {
+        let (a, b) = (
+            with.turn(omega, vx).unwrap(),
+            without.turn(omega, vx).unwrap(),
+        );
+        assert_eq!((a.velocity, a.centre), (b.velocity, b.centre));
+        for (j, (sa, sb)) in a.sides.iter().zip(&b.sides).enumerate() {
+            assert_eq!(sa.thrust, sb.thrust);
+            let loss = with.belt_resistance * with.tracks[j].load() * sa.belt_speed.signum();
+            assert!((sa.sprocket_force() - (sb.thrust + loss)).abs() < 1e-9 * loss.abs());
+        }
+    }
+    let [left, right] = [0.0, 1.0];
+    let brake = with.drive([left, right]).unwrap();
+    assert_eq!(brake.sides[0].belt_loss, 0.0);
+    assert_eq!(brake.sides[0].sprocket_force(), brake.sides[0].thrust);
 }
 
 #[test]

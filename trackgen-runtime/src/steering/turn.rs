@@ -25,10 +25,15 @@ pub struct SideInTurn {
     pub thrust: f64,
     /// The ground's shear across the track, N (to the left positive).
     pub lateral: f64,
-    /// The rolling resistance on the track, N along the hull.
+    /// The ground's rolling resistance on the track, N along the hull.
     pub resistance: f64,
-    /// The sprocket's power, W: `thrust × belt_speed` (negative where the
-    /// sprocket brakes its track).
+    /// The running gear's losses as a force on the belt, N along the
+    /// hull: `−f_b N` against the belt's motion round the hull, none where
+    /// it stands ([`SkidSteer::belt_resistance`]).
+    pub belt_loss: f64,
+    /// The sprocket's power, W: [`sprocket_force`](Self::sprocket_force)
+    /// times the belt speed (negative where the sprocket brakes its
+    /// track).
     pub power: f64,
     /// The track's instantaneous centre's distance from its centre line,
     /// m (toward the right positive): where it slips or skids.
@@ -58,10 +63,20 @@ pub struct SteadyTurn {
     pub resisting_moment: f64,
     /// The power the ground's friction dissipates, W.
     pub dissipation: f64,
-    /// The power the rolling resistance dissipates, W.
+    /// The power the rolling resistance dissipates, W: the ground's and
+    /// the running gear's.
     pub rolling_loss: f64,
     /// Newton iterations taken.
     pub iterations: usize,
+}
+
+impl SideInTurn {
+    /// The force the sprocket gives the belt along the hull, N: the
+    /// ground's shear and the running gear's losses, `thrust −
+    /// belt_loss` (its torque is this times its pitch radius).
+    pub fn sprocket_force(&self) -> f64 {
+        self.thrust - self.belt_loss
+    }
 }
 
 impl SteadyTurn {
@@ -342,13 +357,28 @@ impl SkidSteer {
             let ground = speed - yaw_rate * y;
             let resistance = self.resistance(track, ground);
             rolling_loss -= resistance * ground;
+            // A belt asked to stand comes back from the centres as
+            // rounding: it stands (its losses turn over at standstill).
             let belt_speed = speed - yaw_rate * (y - d);
+            let scale = speed.abs() + (yaw_rate * y).abs() + (yaw_rate * d).abs();
+            let belt_speed = if belt_speed.abs() <= 1e-12 * scale {
+                0.0
+            } else {
+                belt_speed
+            };
+            let belt_loss = if belt_speed == 0.0 {
+                0.0
+            } else {
+                -self.belt_resistance * track.load() * belt_speed.signum()
+            };
+            rolling_loss -= belt_loss * belt_speed;
             sides[j] = SideInTurn {
                 belt_speed,
                 thrust,
                 lateral,
                 resistance,
-                power: thrust * belt_speed,
+                belt_loss,
+                power: (thrust - belt_loss) * belt_speed,
                 offset: d,
                 slip: if belt_speed == 0.0 {
                     f64::NAN
@@ -376,6 +406,7 @@ const SIDE_AT_REST: SideInTurn = SideInTurn {
     thrust: 0.0,
     lateral: 0.0,
     resistance: 0.0,
+    belt_loss: 0.0,
     power: 0.0,
     offset: 0.0,
     slip: f64::NAN,
