@@ -226,7 +226,11 @@ pub const APP: Graph = &[
         "steer",
         &["console", "cli", "offered", "modes", "turn_runs"],
     ),
-    ("spatial", &["console", "cli", "offered", "report"]),
+    ("spatial_rows", &[]),
+    (
+        "spatial",
+        &["console", "cli", "offered", "report", "spatial_rows"],
+    ),
     (
         "run",
         &["console", "cli", "offered", "outputs", "report", "modes"],

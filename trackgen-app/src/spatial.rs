@@ -8,8 +8,9 @@
 //! Writes `spatial.csv` (one row per output interval: the hull's pose and
 //! motion, the centre of mass's, and per side the sprocket's speed,
 //! torque and power, the steering brake's torque and power, the belt's and the ground's speeds, slip, and the
-//! ground's force and yaw moment) and `spatial.svg` (the path seen from
-//! above, and the heading against time).
+//! ground's force and yaw moment, the track's tensions), `spatial.arrow`
+//! (the same, and the ground's force on every shoe) and `spatial.svg`
+//! (the path seen from above, and the heading against time).
 
 use std::error::Error;
 use std::path::{Path, PathBuf};
@@ -28,15 +29,17 @@ use trackgen::spatial_vehicle::{
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
 use trackgen::vehicle::{Drive, speed_ramp};
+use trackgen_arrow::ArrowSink;
 
 use crate::cli::{self, CourseArgs, within};
 use crate::console::say;
 use crate::offered::Offered;
+use crate::spatial_rows::{COLUMNS, record, shoe_columns, shoe_forces};
 
 /// Drive the vehicle in 3-D: both tracks and the hull, settled, driven
 /// to speed over the course, then turned by a driver holding a heading.
 ///
-/// Writes `spatial.csv` and `spatial.svg`.
+/// Writes `spatial.csv`, `spatial.arrow` and `spatial.svg`.
 #[derive(clap::Args, Debug)]
 #[command(allow_negative_numbers = true)]
 pub struct SpatialArgs {
@@ -349,6 +352,11 @@ fn drive<V: SpatialVehicleSystem>(
     let mut thinned = Thinned::new(PICTURE_ROWS);
     let mut sink = Tee::new().and(&mut csv).and(&mut thinned);
     sink.begin(&COLUMNS.map(String::from))?;
+    let mut arrow = ArrowSink::create(dir.join("spatial.arrow"))?;
+    let mut wide: Vec<String> = COLUMNS.map(String::from).to_vec();
+    wide.extend(shoe_columns(shoes));
+    arrow.begin(&wide)?;
+    let mut wide_row = Vec::with_capacity(wide.len());
     let mut stepper = Integrator::bs23(args.tolerance).stepper(system.dimension());
     let before = system.energy(y.as_slice());
     let bar = ProgressBar::new((args.duration * 1000.0) as u64);
@@ -366,7 +374,12 @@ fn drive<V: SpatialVehicleSystem>(
         };
         let turning = t >= args.turn_at && t <= args.turn_at + args.turn_time;
         summary.add(&out, turning && angle != 0.0);
-        sink.row(t, &record(&out))?;
+        let values = record(&out);
+        sink.row(t, &values)?;
+        wide_row.clear();
+        wide_row.extend_from_slice(&values);
+        shoe_forces(&system.ground_forces(y.as_slice()), shoes, &mut wide_row);
+        arrow.row(t, &wide_row)?;
         row += 1;
         if t >= args.duration {
             break Ok(());
@@ -388,6 +401,7 @@ fn drive<V: SpatialVehicleSystem>(
     let wall = started.elapsed().as_secs_f64();
     sink.finish()?;
     drop(sink);
+    arrow.finish()?;
     let after = system.energy(y.as_slice());
     let books = EnergyBalance {
         motor_work: after.driven - before.driven,
@@ -395,7 +409,7 @@ fn drive<V: SpatialVehicleSystem>(
         dissipated: after.dissipated - before.dissipated,
     };
     report(&summary, (t, wall), &stepper.stats(), &books, args);
-    let mut written = vec!["spatial.csv"];
+    let mut written = vec!["spatial.csv", "spatial.arrow"];
     let kept = thinned.results();
     if kept.len() >= 2 {
         let column = |name| kept.column(name).unwrap_or_default();
@@ -475,101 +489,6 @@ fn report(
 /// The rows the picture is drawn from, at most: a run of any length
 /// keeps them evenly spaced.
 const PICTURE_ROWS: usize = 2000;
-
-/// The CSV's columns after the time: SI units, angles in rad, sides `r_`
-/// and `l_`.
-const COLUMNS: [&str; 47] = [
-    "x",
-    "y",
-    "z",
-    "heading",
-    "pitch",
-    "roll",
-    "yaw_rate",
-    "vx",
-    "vy",
-    "vz",
-    "ax",
-    "ay",
-    "az",
-    "lateral_acceleration",
-    "turn_radius",
-    "r_sprocket_speed",
-    "r_sprocket_torque",
-    "r_sprocket_power",
-    "r_brake_torque",
-    "r_brake_power",
-    "r_belt_speed",
-    "r_ground_speed",
-    "r_slip",
-    "r_track_speed",
-    "r_ground_fx",
-    "r_ground_fy",
-    "r_ground_fz",
-    "r_ground_yaw_moment",
-    "r_tension_tight",
-    "r_tension_slack",
-    "r_tension_largest",
-    "l_sprocket_speed",
-    "l_sprocket_torque",
-    "l_sprocket_power",
-    "l_brake_torque",
-    "l_brake_power",
-    "l_belt_speed",
-    "l_ground_speed",
-    "l_slip",
-    "l_track_speed",
-    "l_ground_fx",
-    "l_ground_fy",
-    "l_ground_fz",
-    "l_ground_yaw_moment",
-    "l_tension_tight",
-    "l_tension_slack",
-    "l_tension_largest",
-];
-
-/// One row of [`COLUMNS`].
-fn record(out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
-    let c = &out.centre;
-    let mut row = vec![
-        c.position.x,
-        c.position.y,
-        c.position.z,
-        out.heading,
-        out.pitch,
-        out.roll,
-        out.yaw_rate,
-        c.velocity.x,
-        c.velocity.y,
-        c.velocity.z,
-        out.acceleration.x,
-        out.acceleration.y,
-        out.acceleration.z,
-        out.lateral_acceleration,
-        out.turn_radius,
-    ];
-    for side in &out.sides {
-        row.extend([
-            side.sprocket_speed,
-            side.sprocket_torque,
-            side.sprocket_power,
-            side.brake_torque,
-            side.brake_power,
-            side.belt_speed,
-            side.ground_speed,
-            side.slip,
-            side.track_speed,
-            side.ground_force.x,
-            side.ground_force.y,
-            side.ground_force.z,
-            side.ground_yaw_moment,
-            side.tensions.tight,
-            side.tensions.slack,
-            side.tensions.largest,
-        ]);
-    }
-    row.try_into().expect("one value per column")
-}
 
 /// The path seen from above and the heading against time.
 fn draw(file: &Path, path: &[(f64, f64, f64, f64)], name: &str) -> Result<(), Box<dyn Error>> {

@@ -431,7 +431,8 @@ fn mean_over(
     values.iter().sum::<f64>() / values.len() as f64
 }
 
-/// The M113's tracks' tensions in 3-D, two independent ways:
+/// The M113's tracks' tensions in 3-D, two independent ways (and
+/// `spatial.arrow`'s shoes, [`shoes_add_up_to_the_sides`]):
 /// - driven straight to 3 m/s (1.5 to 3 s), the right track's spans
 ///   either side of the sprocket carry the planar model's tensions
 ///   (`all.csv`'s `tension_tight` and `tension_slack`) within 2 %
@@ -461,10 +462,12 @@ fn spatial_records_the_tensions_the_plane_and_the_sprockets_give() {
         &dir,
     );
     assert_success("spatial", &ran);
+    let arrow = arrow_table(&spatial.join("spatial.arrow"));
     let (planar, spatial) = (
         table(&planar.join("all.csv")),
         table(&spatial.join("spatial.csv")),
     );
+    shoes_add_up_to_the_sides(&arrow, &spatial);
     let straight = (1.5, 3.0);
     for span in ["tight", "slack"] {
         let plane = mean_over(&planar, &format!("tension_{span}"), straight);
@@ -492,5 +495,72 @@ fn spatial_records_the_tensions_the_plane_and_the_sprockets_give() {
             "{side}: (T_tight − T_slack) r_p = {:.0} N m against the torque {torque:.0} N m",
             pull * r_p
         );
+    }
+}
+
+/// The columns and rows of the Arrow IPC file at `path`.
+fn arrow_table(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    use arrow_array::{Array, Float64Array};
+    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let reader = arrow_ipc::reader::FileReader::try_new(file, None)
+        .unwrap_or_else(|e| panic!("{}: not a complete Arrow file: {e}", path.display()));
+    let names = reader
+        .schema()
+        .fields()
+        .iter()
+        .map(|f| f.name().clone())
+        .collect();
+    let mut rows = Vec::new();
+    for batch in reader {
+        let batch = batch.unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let columns: Vec<&Float64Array> = batch
+            .columns()
+            .iter()
+            .map(|c| c.as_any().downcast_ref().expect("Float64 columns"))
+            .collect();
+        for r in 0..batch.num_rows() {
+            rows.push(columns.iter().map(|c| c.value(r)).collect());
+        }
+    }
+    (names, rows)
+}
+
+/// `spatial.arrow` is `spatial.csv` (the same columns first, the same
+/// values bit for bit) and then the ground's force on every shoe, the
+/// M113's 64 on the right and 63 on the left, which add up, row by row,
+/// to each side's ground force in the CSV (to 1e-9 of the weight's
+/// order: the same points summed in another order).
+fn shoes_add_up_to_the_sides(
+    (names, rows): &(Vec<String>, Vec<Vec<f64>>),
+    (header, csv): &(Vec<String>, Vec<Vec<f64>>),
+) {
+    assert_eq!(
+        &names[..header.len()],
+        &header[..],
+        "the CSV's columns first"
+    );
+    assert_eq!(names.len(), header.len() + 3 * (64 + 63), "{names:?}");
+    assert_eq!(rows.len(), csv.len(), "rows");
+    let at = |name: &str| names.iter().position(|h| h == name).expect(name);
+    for (row, line) in rows.iter().zip(csv) {
+        let same = |(a, b): (&f64, &f64)| a == b || (a.is_nan() && b.is_nan());
+        assert!(row.iter().zip(line).all(same), "the CSV's values: {row:?}");
+        for (side, links) in [("r", 64), ("l", 63)] {
+            for (axis, component) in [
+                ("fx", "ground_fx"),
+                ("fy", "ground_fy"),
+                ("fz", "ground_fz"),
+            ] {
+                let shoes: f64 = (1..=links)
+                    .map(|k| row[at(&format!("{side}_shoe_{k}_{axis}"))])
+                    .sum();
+                let whole = row[at(&format!("{side}_{component}"))];
+                assert!(
+                    (shoes - whole).abs() <= 1e-9 * 1e5,
+                    "t = {}: {side} {axis}: the shoes' {shoes} against {whole}",
+                    row[0]
+                );
+            }
+        }
     }
 }

@@ -526,8 +526,12 @@ where
         } + self.shoe.extent();
         let (mut potential, mut dissipation) = (0.0, 0.0);
         for k in links.near(centre, reach * reach) {
+            let [rear, front] = self.shoe.inner_face;
+            // Written out, not `inner_face.map(…)`: the array's map left
+            // its closure out of line in this loop (1.7 million calls in
+            // 2 s of the M113, 2 % of the evaluation).
             let face = SpaceFace {
-                ends: self.shoe.inner_face.map(|p| links.point(k, p)),
+                ends: [links.point(k, rear), links.point(k, front)],
                 inward: links.axis(k, 2),
                 guide: links.point(k, (self.shoe.inner_face[0] + self.shoe.inner_face[1]) / 2.0),
                 centroid: links.centroid(k),

@@ -8,8 +8,8 @@
 use nalgebra::{DVector, SVector, Vector3};
 
 use super::{
-    Driveline, DrivelineError, HeadingHold, SideDrives, SpatialEnergy, SpatialLaws, SpatialOutputs,
-    SpatialSystem, SteeringError, TreeState,
+    Driveline, DrivelineError, GroundForce, HeadingHold, SideDrives, SpatialEnergy, SpatialLaws,
+    SpatialOutputs, SpatialSystem, SteeringError, TreeState,
 };
 use crate::assembly::{SideError, assemble_sides};
 use crate::contact::axial::GuideLaw;
@@ -58,6 +58,10 @@ pub trait SpatialSimulated: OdeSystem + Send {
 
     /// Where its energy is at `y` ([`SpatialSystem::energy`]).
     fn energy(&self, y: &[f64]) -> SpatialEnergy;
+
+    /// What the ground gives each of the tracks' ground points at `y`
+    /// ([`SpatialSystem::ground_forces`]).
+    fn ground_forces(&self, y: &[f64]) -> Vec<GroundForce>;
 }
 
 /// A tree standing upright at yaw 0 with its planar coordinates `q` (its
@@ -142,6 +146,10 @@ where
 
     fn energy(&self, y: &[f64]) -> SpatialEnergy {
         SpatialSystem::energy(self, y)
+    }
+
+    fn ground_forces(&self, y: &[f64]) -> Vec<GroundForce> {
+        SpatialSystem::ground_forces(self, y)
     }
 }
 
