@@ -12,7 +12,9 @@
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{DVector, Vector3};
 use trackgen::spatial::Side;
-use trackgen::spatial_vehicle::{SideDrives, SideOutputs, SpatialOutputs, SpatialSystem};
+use trackgen::spatial_vehicle::{
+    DrivelineError, SideDrives, SideOutputs, SpatialOutputs, SpatialSystem,
+};
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, DriveError};
 
@@ -313,7 +315,10 @@ fn a_drive_that_is_no_controller_is_refused() {
         right: Drive::Free,
         left: bad,
     });
-    assert!(matches!(refused, Err(DriveError::Gains { .. })));
+    assert!(matches!(
+        refused,
+        Err(DrivelineError::Drive(DriveError::Gains { .. }))
+    ));
     let negative = Drive::Speed {
         target: Box::new(|_| 1.0),
         proportional: 1.0,
@@ -324,7 +329,10 @@ fn a_drive_that_is_no_controller_is_refused() {
         right: negative,
         left: Drive::Free,
     });
-    assert!(matches!(refused, Err(DriveError::TorqueLimit { .. })));
+    assert!(matches!(
+        refused,
+        Err(DrivelineError::Drive(DriveError::TorqueLimit { .. }))
+    ));
 }
 
 /// The `Twin` on level ground with stiction, its right belt asked

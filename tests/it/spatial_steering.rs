@@ -7,7 +7,8 @@
 
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::spatial_vehicle::{
-    HeadingHold, SideDrives, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringError,
+    DrivelineError, HeadingHold, SideDrives, SpatialOutputs, SpatialSimulated,
+    SpatialVehicleSystem, SteeringError,
 };
 use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
@@ -124,8 +125,8 @@ fn a_driver_turns_the_vehicle_through_the_angle_asked() {
     assert!((right + left).abs() < 1e-4, "left {left}, right {right}");
 }
 
-/// A driver cannot steer torque drives, and a setting out of range is
-/// refused, naming it.
+/// A driver cannot steer torque drives, set before it or after, and a
+/// setting out of range is refused, naming it.
 #[test]
 fn a_driver_needs_speed_drives_and_settings_in_range() {
     let torque = || Drive::Torque(Box::new(|_| 0.0));
@@ -155,5 +156,18 @@ fn a_driver_needs_speed_drives_and_settings_in_range() {
     assert!(matches!(
         bad_difference,
         Err(SteeringError::Difference { .. })
+    ));
+    // Drives set after the heading are checked against it as well: a
+    // torque drive it cannot steer is refused.
+    let steered = system()
+        .with_steering(HeadingHold::turn(1.0, (0.0, 1.0), 1.0, 1.0))
+        .expect("speed drives steer");
+    let refused = steered.with_drives(SideDrives {
+        right: belt(1.0, 1.0),
+        left: torque(),
+    });
+    assert!(matches!(
+        refused,
+        Err(DrivelineError::Steering(SteeringError::NotSpeedDrives))
     ));
 }

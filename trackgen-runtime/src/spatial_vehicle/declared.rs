@@ -18,7 +18,7 @@ use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
-use crate::vehicle::{Drive, DriveError, Vehicle};
+use crate::vehicle::{Drive, Vehicle};
 
 /// The gap the assembly leaves between the lower track and the ground, m
 /// (the planar main job's).
@@ -39,7 +39,7 @@ pub trait SpatialSimulated: OdeSystem + Send {
 
     /// Drives the sprockets by `drives` from now on; settings that make
     /// no controller are refused.
-    fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError>;
+    fn set_drives(&mut self, drives: SideDrives) -> Result<(), DrivelineError>;
 
     /// Drives the sprockets through `driveline` from now on
     /// ([`SpatialSystem::with_driveline`]).
@@ -112,10 +112,8 @@ where
         ))
     }
 
-    fn set_drives(&mut self, drives: SideDrives) -> Result<(), DriveError> {
-        drives.check()?;
-        self.driveline = Driveline::Sides(drives);
-        Ok(())
+    fn set_drives(&mut self, drives: SideDrives) -> Result<(), DrivelineError> {
+        self.set_driveline(Driveline::Sides(drives))
     }
 
     fn set_driveline(&mut self, driveline: Driveline) -> Result<(), DrivelineError> {

@@ -43,6 +43,7 @@
 
 use thiserror::Error;
 
+use super::SteeringError;
 use crate::laws::{ParameterError, Stiction, TangentialResponse};
 use crate::vehicle::{Drive, DriveError};
 
@@ -171,6 +172,9 @@ pub enum DrivelineError {
         /// `right` or `left`.
         side: &'static str,
     },
+    /// The heading already held cannot be steered through it.
+    #[error(transparent)]
+    Steering(#[from] SteeringError),
 }
 
 impl SteerUnit {

@@ -30,7 +30,7 @@ use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates};
-use crate::vehicle::{Drive, DriveError};
+use crate::vehicle::Drive;
 
 /// The spatial vehicle in time.
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
@@ -112,6 +112,19 @@ fn put_rates<M: RecursiveModel<D>, const D: usize>(
     dy[2 * D + 3..2 * D + 6].copy_from_slice(across.as_slice());
 }
 
+/// Why a driver holding a heading cannot steer through `driveline`: a
+/// drive on each side, not both speed drives (the driver moves their
+/// targets). A differential steers through its brakes or steer unit.
+fn steerable(driveline: &Driveline) -> Result<(), SteeringError> {
+    let speed = |d: &Drive| matches!(d, Drive::Speed { .. });
+    match driveline {
+        Driveline::Sides(drives) if !(speed(&drives.right) && speed(&drives.left)) => {
+            Err(SteeringError::NotSpeedDrives)
+        }
+        _ => Ok(()),
+    }
+}
+
 /// A track's loop held by Baumgarte's stabilisation of its planar closure
 /// (which the plane's turning about its normal leaves unchanged).
 fn closing<T: TrackModel<D>, const D: usize>(
@@ -146,18 +159,17 @@ where
     }
 
     /// The system with its sprockets driven by `drives`; settings that
-    /// make no controller are refused ([`SideDrives::check`]).
-    pub fn with_drives(mut self, drives: SideDrives) -> Result<Self, DriveError> {
-        drives.check()?;
-        self.driveline = Driveline::Sides(drives);
-        Ok(self)
+    /// make no controller are refused ([`SideDrives::check`]), and so are
+    /// drives a heading already held cannot steer (not both speed drives).
+    pub fn with_drives(self, drives: SideDrives) -> Result<Self, DrivelineError> {
+        self.with_driveline(Driveline::Sides(drives))
     }
 
     /// The system with its sprockets driven through `driveline`; settings
-    /// out of range, or a differential on a vehicle without both
-    /// sprockets, are refused. Set the driveline before a heading to hold
-    /// ([`with_steering`](Self::with_steering)), which checks that the
-    /// driveline can steer it.
+    /// out of range, a differential on a vehicle without both sprockets,
+    /// or drives on each side that a heading already held
+    /// ([`with_steering`](Self::with_steering)) cannot steer, are refused
+    /// (the driveline kept as it was).
     pub fn with_driveline(mut self, driveline: Driveline) -> Result<Self, DrivelineError> {
         self.set_driveline(driveline)?;
         Ok(self)
@@ -166,6 +178,9 @@ where
     /// [`with_driveline`](Self::with_driveline) in place.
     pub(super) fn set_driveline(&mut self, driveline: Driveline) -> Result<(), DrivelineError> {
         driveline.check()?;
+        if self.steering.is_some() {
+            steerable(&driveline)?;
+        }
         if let Driveline::Differential(_) = driveline {
             for (sprocket, side) in self.dynamics.sprockets.iter().zip(["right", "left"]) {
                 if sprocket.is_none() {
@@ -191,13 +206,7 @@ where
     /// with a drive on each side, a side without a speed drive.
     pub(super) fn check_steering(&self, hold: &HeadingHold) -> Result<(), SteeringError> {
         hold.check()?;
-        let speed = |d: &Drive| matches!(d, Drive::Speed { .. });
-        if let Driveline::Sides(drives) = &self.driveline
-            && !(speed(&drives.right) && speed(&drives.left))
-        {
-            return Err(SteeringError::NotSpeedDrives);
-        }
-        Ok(())
+        steerable(&self.driveline)
     }
 
     /// The driveline, the steering and the driveline's states at `y`, as
