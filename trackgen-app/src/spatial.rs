@@ -257,6 +257,8 @@ struct Summary {
     lateral: f64,
     /// The lateral acceleration's filter, fed every row.
     filter: Biquad,
+    /// Each track's largest tension, N, and when, s (right, left).
+    tension: [(f64, f64); 2],
     first: Option<SpatialOutputs>,
     last: Option<SpatialOutputs>,
 }
@@ -269,13 +271,19 @@ impl Summary {
             radius: None,
             lateral: 0.0,
             filter: Biquad::bilinear(low_pass, dt, 0.0),
+            tension: [(f64::NEG_INFINITY, f64::NAN); 2],
             first: None,
             last: None,
         }
     }
 
-    fn add(&mut self, out: &SpatialOutputs, turning: bool) {
+    fn add(&mut self, t: f64, out: &SpatialOutputs, turning: bool) {
         let lateral = self.filter.push(out.lateral_acceleration);
+        for (kept, side) in self.tension.iter_mut().zip(&out.sides) {
+            if side.tensions.largest > kept.0 {
+                *kept = (side.tensions.largest, t);
+            }
+        }
         if turning {
             self.radius = Some(
                 self.radius
@@ -373,7 +381,7 @@ fn drive<V: SpatialVehicleSystem>(
             Err(e) => break Err(e),
         };
         let turning = t >= args.turn_at && t <= args.turn_at + args.turn_time;
-        summary.add(&out, turning && angle != 0.0);
+        summary.add(t, &out, turning && angle != 0.0);
         let values = record(&out);
         sink.row(t, &values)?;
         wide_row.clear();
@@ -471,6 +479,14 @@ fn report(
             "in the turn: smallest radius {radius:.2} m, largest lateral acceleration {:.2} m/s² ({:.3} g; low-passed at {LATERAL_FILTER_HZ} Hz)",
             summary.lateral,
             summary.lateral / 9.80665
+        );
+    }
+    let [(right, right_at), (left, left_at)] = summary.tension;
+    if right.is_finite() && left.is_finite() {
+        say!(
+            "the tracks' largest tension: right {:.1} kN (at {right_at:.2} s), left {:.1} kN (at {left_at:.2} s)",
+            right / 1e3,
+            left / 1e3
         );
     }
     let bound = EnergyBalance::bound_for_tolerance(args.tolerance);
