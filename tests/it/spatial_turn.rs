@@ -288,7 +288,7 @@ fn steady_turns_match_the_skid_steering_theory() {
             .collect()
     });
     for seen in &seen {
-        agrees_with_the_theory(seen, rolling, weight);
+        agrees_with_the_theory(seen, rolling, weight, Twin::layout().gauge);
     }
 }
 
@@ -339,7 +339,7 @@ fn past_the_simplified_steerability_criterion_the_spatial_model_turns_as_the_gen
             seen.yaw_rate,
             seen.yaw_rate / kinematic
         );
-        agrees_with_the_theory(seen, rolling, weight);
+        agrees_with_the_theory(seen, rolling, weight, length / ratio);
     }
     let past = &seen[2];
     assert!(
@@ -351,9 +351,10 @@ fn past_the_simplified_steerability_criterion_the_spatial_model_turns_as_the_gen
 
 /// `seen` within 5 % of the theory's turn for its own loads and belts at
 /// the rolling resistance `rolling` (of the weight `weight`, N): the yaw
-/// rate, the radius and both sprockets' torques, as the check
+/// rate, the radius (on the scale of the run's `gauge`, m, where the
+/// radius is smaller) and both sprockets' torques, as the check
 /// asks; the moment of turning resistance printed beside Steeds'.
-fn agrees_with_the_theory(seen: &Observed, rolling: f64, weight: f64) {
+fn agrees_with_the_theory(seen: &Observed, rolling: f64, weight: f64, gauge: f64) {
     let r = rolling_radius();
     let turn = theory(seen, rolling);
     let expected = |side: &trackgen::steering::SideInTurn| -side.sprocket_force() * r;
@@ -378,7 +379,7 @@ fn agrees_with_the_theory(seen: &Observed, rolling: f64, weight: f64) {
     within("yaw rate", seen.yaw_rate, turn.yaw_rate, seen);
     // A pivot's radius is the centre of gravity's few centimetres
     // from the turn's centre: compared on the gauge's scale.
-    let scale = turn.radius.max(Twin::layout().gauge);
+    let scale = turn.radius.max(gauge);
     assert!(
         (radius - turn.radius).abs() < 0.05 * scale,
         "radius: the run's {radius} m against the theory's {} m ({seen:?})",
@@ -444,7 +445,7 @@ fn steady_turns_through_a_differential_match_the_skid_steering_theory() {
     let weight = straight.mass * trackgen::ride::G;
     let rolling = -(straight.torque[0] + straight.torque[1]) / rolling_radius() / weight;
     for (seen, driven) in seen.iter().zip(runs).skip(1) {
-        agrees_with_the_theory(seen, rolling, weight);
+        agrees_with_the_theory(seen, rolling, weight, Twin::layout().gauge);
         if let Driven::Differential {
             steer: DifferentialSteer::Ratio(unit),
             input,

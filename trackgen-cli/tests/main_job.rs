@@ -22,6 +22,8 @@
 //! time is the duration to 1e-9 s and no gap exceeds 0.01 s by more than
 //! that; a missing or extra sample is off by 0.01 s.
 
+#[path = "support/arrow.rs"]
+mod arrow;
 #[path = "../../tests/it/support/programs.rs"]
 mod programs;
 
@@ -91,29 +93,8 @@ fn check_m113_outputs(dir: &Path, duration: f64) {
 
 /// The Arrow IPC file at `path` has the columns and the values of `csv`.
 fn check_arrow_equals_csv(path: &Path, csv: &Csv) {
-    use arrow_array::{Array, Float64Array};
-    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let reader = arrow_ipc::reader::FileReader::try_new(file, None)
-        .unwrap_or_else(|e| panic!("{}: not a complete Arrow file: {e}", path.display()));
-    let names: Vec<String> = reader
-        .schema()
-        .fields()
-        .iter()
-        .map(|f| f.name().clone())
-        .collect();
+    let (names, rows) = arrow::read(path);
     assert_eq!(names, csv.header, "{}: columns", path.display());
-    let mut rows: Vec<Vec<f64>> = Vec::new();
-    for batch in reader {
-        let batch = batch.unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let columns: Vec<&Float64Array> = batch
-            .columns()
-            .iter()
-            .map(|c| c.as_any().downcast_ref().expect("Float64 columns"))
-            .collect();
-        for r in 0..batch.num_rows() {
-            rows.push(columns.iter().map(|c| c.value(r)).collect());
-        }
-    }
     assert_eq!(rows.len(), csv.rows.len(), "{}: rows", path.display());
     for (i, (a, c)) in rows.iter().zip(&csv.rows).enumerate() {
         assert_eq!(a, c, "{}: row {i} differs from the CSV", path.display());

@@ -12,6 +12,8 @@
 //! The binary is cargo's `CARGO_BIN_EXE_trackgen`, built with this test;
 //! outputs go to folders under `CARGO_TARGET_TMPDIR`.
 
+#[path = "support/arrow.rs"]
+mod arrow;
 #[path = "../../tests/it/support/programs.rs"]
 mod programs;
 
@@ -462,7 +464,7 @@ fn spatial_records_the_tensions_the_plane_and_the_sprockets_give() {
         &dir,
     );
     assert_success("spatial", &ran);
-    let arrow = arrow_table(&spatial.join("spatial.arrow"));
+    let arrow = arrow::read(&spatial.join("spatial.arrow"));
     let (planar, spatial) = (
         table(&planar.join("all.csv")),
         table(&spatial.join("spatial.csv")),
@@ -496,33 +498,6 @@ fn spatial_records_the_tensions_the_plane_and_the_sprockets_give() {
             pull * r_p
         );
     }
-}
-
-/// The columns and rows of the Arrow IPC file at `path`.
-fn arrow_table(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
-    use arrow_array::{Array, Float64Array};
-    let file = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let reader = arrow_ipc::reader::FileReader::try_new(file, None)
-        .unwrap_or_else(|e| panic!("{}: not a complete Arrow file: {e}", path.display()));
-    let names = reader
-        .schema()
-        .fields()
-        .iter()
-        .map(|f| f.name().clone())
-        .collect();
-    let mut rows = Vec::new();
-    for batch in reader {
-        let batch = batch.unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let columns: Vec<&Float64Array> = batch
-            .columns()
-            .iter()
-            .map(|c| c.as_any().downcast_ref().expect("Float64 columns"))
-            .collect();
-        for r in 0..batch.num_rows() {
-            rows.push(columns.iter().map(|c| c.value(r)).collect());
-        }
-    }
-    (names, rows)
 }
 
 /// `spatial.arrow` is `spatial.csv` (the same columns first, the same

@@ -99,14 +99,17 @@ where
     /// demand is not finite is the run's error, as in the run
     /// ([`drive_state`](Self::drive_state)).
     pub fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {
-        let (hull, right, left, _) = self.states(y);
+        let (hull, ..) = self.states(y);
         let d = &self.dynamics;
         let drive = d.drive(t, &hull, self.driver(y))?;
-        let tensions = self.tensions(t, y)?;
-        // Every body in the world once, for the centre of mass, the hull's
-        // yaw rate, the ground's forces and the patches' speeds.
-        let bodies = d.bodies_at((&hull, &right, &left));
-        let centre = d.mass_centre_of(&bodies);
+        // One evaluation of the right-hand side: every body in the world
+        // once, for the centre of mass, the hull's yaw rate, the ground's
+        // forces and the patches' speeds, and the joint forces the
+        // tensions are read from.
+        let (scratch, motions) = self.evaluated(t, y)?;
+        let tensions = self.tensions_in(&scratch, &motions);
+        let bodies = &scratch.bodies;
+        let centre = d.mass_centre_of(bodies);
         let heading = hull.pose.yaw;
         let yaw_rate = bodies[0].spin(0).z;
         let (forward, leftward) = (

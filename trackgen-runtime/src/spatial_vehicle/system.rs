@@ -393,7 +393,7 @@ where
         let mut scratch = std::mem::take(&mut self.scratch);
         let done = self.evaluate(t, y, dy, &mut scratch);
         self.scratch = scratch;
-        done
+        done.map(|_| ())
     }
 
     fn is_quadrature(&self, i: usize) -> bool {
@@ -410,14 +410,15 @@ where
 {
     /// The state's derivative at `t` and `y` into `dy` (both of the
     /// system's dimension), through `scratch`, which keeps what it found:
-    /// the bodies in the world, the loads and each track's joint forces.
+    /// the bodies in the world, the loads and each track's joint forces;
+    /// the trees' motions in their planes are handed back.
     pub(super) fn evaluate(
         &self,
         t: f64,
         y: &[f64],
         dy: &mut [f64],
         scratch: &mut LoadScratch,
-    ) -> Result<(), SimulationError> {
+    ) -> Result<[PlaneMotion; 3], SimulationError> {
         let (hull, right, left, _) = self.states(y);
         let b = self.books_at();
         let states = (&hull, &right, &left);
@@ -456,6 +457,6 @@ where
         dy[b..b + 3].copy_from_slice(&drive.rates);
         dy[b + 3] = loads.dissipation + drive.dissipation;
         dy[b + 4] = drive.driven;
-        Ok(())
+        Ok(motions)
     }
 }

@@ -11,6 +11,7 @@ use nalgebra::Vector2;
 use super::{LoadScratch, SpatialSystem};
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, TrackModel, TreeDescription, joint_tensions};
+use crate::spatial::PlaneMotion;
 use crate::vehicle::seated_run;
 
 /// A track's tensions at a state, N (positive pulling).
@@ -39,14 +40,35 @@ where
     /// run there (a drive's demand not finite, dynamics that cannot be
     /// solved) is the error.
     pub fn tensions(&self, t: f64, y: &[f64]) -> Result<[TrackTensions; 2], SimulationError> {
+        let (scratch, motions) = self.evaluated(t, y)?;
+        Ok(self.tensions_in(&scratch, &motions))
+    }
+
+    /// The right-hand side evaluated at `t` and `y` into a workspace of
+    /// its own: what it found (the bodies in the world, the loads, the
+    /// joint forces) and the trees' motions in their planes, for what the
+    /// vehicle shows there.
+    pub(super) fn evaluated(
+        &self,
+        t: f64,
+        y: &[f64],
+    ) -> Result<(LoadScratch, [PlaneMotion; 3]), SimulationError> {
         let mut scratch = LoadScratch::default();
         let mut dy = vec![0.0; self.dimension()];
-        self.evaluate(t, y, &mut dy, &mut scratch)?;
-        let (hull, right, left, _) = self.states(y);
+        let motions = self.evaluate(t, y, &mut dy, &mut scratch)?;
+        Ok((scratch, motions))
+    }
+
+    /// [`tensions`](Self::tensions) from an evaluation's `scratch` and
+    /// `motions` ([`evaluated`](Self::evaluated)).
+    pub(super) fn tensions_in(
+        &self,
+        scratch: &LoadScratch,
+        motions: &[PlaneMotion; 3],
+    ) -> [TrackTensions; 2] {
         let d = &self.dynamics;
-        let motions = d.plane_motions((&hull, &right, &left));
         let descriptions = [d.right.model().description(), d.left.model().description()];
-        Ok([0, 1].map(|s| {
+        [0, 1].map(|s| {
             let tensions: Vec<f64> = joint_tensions(
                 &scratch.joint_forces[s],
                 &descriptions[s].link_spans().unwrap_or_default(),
@@ -77,7 +99,7 @@ where
                 slack,
                 largest,
             }
-        }))
+        })
     }
 }
 
