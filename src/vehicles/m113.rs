@@ -437,11 +437,11 @@ pub fn powertrain() -> trackgen::vehicle::Powertrain {
     M113::powertrain().unwrap_or_else(|| unreachable!("the M113's declaration has a powertrain"))
 }
 
-/// The real M113A3's published mobility figures that the pitch-plane
-/// events answer, each with its source. The grade, the vertical obstacle
-/// and the trench are the M113 family's (the A3 keeps them: its heavier
+/// The real M113A3's published mobility figures that the events answer,
+/// each with its source. The grade, the vertical obstacle, the trench and
+/// the side slope are the M113 family's (the A3 keeps them: its heavier
 /// hull came with the larger engine and the converter transmission).
-pub const PUBLISHED: [trackgen::mobility::Published; 4] = {
+pub const PUBLISHED: [trackgen::mobility::Published; 5] = {
     use trackgen::mobility::quantity;
     [
         trackgen::mobility::Published {
@@ -470,6 +470,13 @@ pub const PUBLISHED: [trackgen::mobility::Published; 4] = {
             unit: "m",
             source: "power-projection.com, M113A3 (the manufacturer's figures): trench \
                  crossing 1.68 m; AFV Database, M113: 66 in",
+        },
+        trackgen::mobility::Published {
+            quantity: quantity::STEEPEST_SIDE_SLOPE,
+            value: 0.30,
+            unit: "rise over run",
+            source: "AFV Database, M113 (afvdatabase.com/usa/m113.html): maximum side slope \
+                 30 % (a rating: no criterion given)",
         },
     ]
 };

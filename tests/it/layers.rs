@@ -155,6 +155,7 @@ pub const RUNTIME: Graph = &[
             "simulate",
             "scene",
             "scenario",
+            "spatial_vehicle",
         ],
     ),
     // `__private`: the paths generated code names (lib.rs).

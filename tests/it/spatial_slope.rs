@@ -124,3 +124,53 @@ fn the_systems_start_across_a_slope_is_the_tests_own() {
     expected[n - 1] = 7.0;
     assert_eq!(rolled, expected);
 }
+
+/// The side-slope event's trial (`mobility::side_slope::traverse`)
+/// against the closed form that bounds it: with friction the same in
+/// every direction the ground holds at most `μ N` across, so no vehicle
+/// holds a slope steeper than `tan φ = μ`. The `Twin` on firm ground
+/// (stiction, `μ = 0.7`) and on ground of half that friction, each
+/// driven along the contour at the events' crawl:
+///
+/// - at 5 % past `μ` it slides away (its drift past the event's 5 %:
+///   the trial fails);
+/// - at 85 % of `μ` it holds (the M113 creeps 1.3 % at 87.5 % of its
+///   `μ = 0.8` and holds to 94 %; the drive's own pull along the path
+///   and the sprung hull's sway take the rest).
+///
+/// The limit moves with the ground's friction, as the closed form says:
+/// the experiment behind the guide's account of the event's answer
+/// against the published side slope.
+#[test]
+fn a_side_slope_is_held_below_the_grounds_friction_and_not_past_it() {
+    use trackgen::contact::GroundFriction;
+    use trackgen::laws::Stiction;
+    use trackgen::mobility::EventSettings;
+    use trackgen::mobility::side_slope::{DRIFT, traverse};
+    use trackgen::vehicle::Powertrain;
+
+    // The side slope drives on the speed drives alone: the settings'
+    // powertrain is not used.
+    let settings = EventSettings::new(Powertrain::Power {
+        power: 1e5,
+        max_torque: 1e4,
+    });
+    for mu in [crate::support::twin::MU, crate::support::twin::MU / 2.0] {
+        let mut laws = firm();
+        let GroundFriction::Stiction(stiction) = laws.ground.friction else {
+            unreachable!("the firm laws stick")
+        };
+        laws.ground.friction = GroundFriction::Stiction(Stiction { mu, ..stiction });
+        let below = traverse::<Twin>(&settings, laws, 0.85 * mu).expect("the run below");
+        let past = traverse::<Twin>(&settings, laws, 1.05 * mu).expect("the run past");
+        println!(
+            "μ {mu}: drift {:.4} at 0.85 μ (roll off by {:.3} rad), {:.4} at 1.05 μ",
+            below.drift(),
+            below.roll_error,
+            past.drift()
+        );
+        assert!(below.held, "μ {mu}: not held at 0.85 μ: {below:?}");
+        assert!(!past.held, "μ {mu}: held past μ: {past:?}");
+        assert!(past.drift() > DRIFT);
+    }
+}

@@ -86,6 +86,7 @@ impl Entry {
                 gauge: None,
                 steer_ratios: Vec::new(),
                 turn_runs: None,
+                side_slope: None,
             },
             dispatch: dispatch::<V>,
             spatial: None,
@@ -100,6 +101,9 @@ impl Entry {
             ..Entry::of::<V>()
         };
         entry.offered.turn_runs = Some(crate::turn_runs::run_turns::<V>);
+        entry.offered.side_slope = Some(|settings| {
+            trackgen::mobility::side_slope::steepest::<V>(settings, V::declared_laws())
+        });
         entry
     }
 

@@ -2,7 +2,8 @@
 //! its name, its powertrain, the real vehicle's published figures and
 //! gauge.
 
-use trackgen::mobility::Published;
+use trackgen::mobility::search::Search;
+use trackgen::mobility::{EventError, EventSettings, Published};
 use trackgen::vehicle::Powertrain;
 
 /// A vehicle as the application offers it.
@@ -25,7 +26,14 @@ pub struct Offered {
     /// m/s), for a vehicle declared with both tracks: what `steer
     /// --spatial` runs.
     pub turn_runs: Option<TurnRuns>,
+    /// The side-slope event of its spatial model, for a vehicle declared
+    /// with both tracks: what `mobility` runs as `side-slope`.
+    pub side_slope: Option<SideSlopeSearch>,
 }
+
+/// The steepest side slope a spatial vehicle holds under its declared
+/// laws (`trackgen::mobility::side_slope::steepest`).
+pub type SideSlopeSearch = fn(&EventSettings) -> Result<Search, EventError>;
 
 /// Runs steady turns of a spatial vehicle at belt speeds (right, left,
 /// m/s), each its result or its error in words.

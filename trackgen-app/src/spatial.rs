@@ -119,12 +119,6 @@ pub const TURN_AT: f64 = 8.0;
 pub const TURN_TIME: f64 = 4.0;
 /// The default simulated time, s: the turn and 2 s after it.
 pub const DURATION: f64 = 14.0;
-/// The driver's heading gain, 1/s: an error of heading halves in about
-/// 0.5 s.
-const HEADING_GAIN: f64 = 1.5;
-/// The yaw rate the driver's largest belt-speed difference asks for,
-/// rad/s: the difference is the gauge times it.
-const MAX_YAW_RATE: f64 = 1.0;
 /// The steering brakes' largest torque over a side drive's limit:
 /// holding the inner sprocket in a clutch-brake turn takes the
 /// differential's half of the drive's torque and the ground's pull on
@@ -178,7 +172,7 @@ fn driveline<V: SpatialVehicleSystem>(
         max_torque: 2.0 * max_torque,
     };
     let (steer, said) = if args.driveline == DrivelineKind::Brakes {
-        let largest = V::layout().gauge * MAX_YAW_RATE / 3.0;
+        let largest = V::layout().gauge * HeadingHold::DRIVER_MAX_YAW_RATE / 3.0;
         let radius = system.rolling_radius();
         let inertia = 0.5 * mass * radius * radius;
         let brakes = SteeringBrakes::by_parking_rule(
@@ -323,11 +317,10 @@ fn drive<V: SpatialVehicleSystem>(
     let (driveline, driven) = driveline::<V>(entry, args, (&system, mass), target)?;
     system.set_driveline(driveline)?;
     let angle = args.turn.to_radians();
-    system.set_steering(HeadingHold::turn(
+    system.set_steering(HeadingHold::driver(
         angle,
         (args.turn_at, args.turn_time),
-        HEADING_GAIN,
-        layout.gauge * MAX_YAW_RATE,
+        layout.gauge,
     ))?;
     let shoes = (V::RIGHT_TRACK_DOF - 2, V::LEFT_TRACK_DOF - 2);
     say!(

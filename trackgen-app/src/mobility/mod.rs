@@ -3,13 +3,14 @@
 //!
 //! ```text
 //! <app> mobility [--vehicle NAME] [--out FOLDER]
-//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil] [--json] [--quick] [--no-confirm]
+//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil,side-slope] [--json] [--quick] [--no-confirm]
 //!     [--slice K/N | --merge FILE…]
 //! ```
 //!
 //! Runs the events of `trackgen::mobility` (each a limit found by
-//! bracketing over runs, the vehicle driven through its engine) in parallel
-//! on every core, and writes to `out/mobility/<vehicle>/` (or `--out`):
+//! bracketing over runs, the vehicle driven through its engine; the side
+//! slope in 3-D, on its speed drives, for a vehicle declared with both
+//! tracks) in parallel on every core, and writes to `out/mobility/<vehicle>/` (or `--out`):
 //! `<event>.csv` (one row per result: the parameter, the limit, its unit
 //! and the runs it took), `trials.csv` (every run), `summary.svg` (the
 //! curves of the events the set ran that have one: ride-limiting speed
@@ -63,7 +64,7 @@ use trackgen::vehicle::Vehicle;
 use crate::cli::{named, tolerance};
 use crate::offered::Offered;
 use files::write_all;
-use tasks::{EVENTS, Row, event_name, tasks};
+use tasks::{EVENTS, Row, SIDE_SLOPE, event_name, tasks};
 use text::{json, print_against, print_summary};
 
 /// The standard pitch-plane mobility events for the vehicle, each a limit
@@ -75,7 +76,8 @@ pub struct MobilityArgs {
     #[arg(long, value_name = "NAME")]
     pub vehicle: Option<String>,
     /// The events, comma-separated: ride, half-round, step, gap, ditch,
-    /// barrier, grade, soil (default: all).
+    /// barrier, grade, soil, side-slope (default: all; side-slope, in
+    /// 3-D, for a vehicle declared with a `tracks` block).
     #[arg(long, value_delimiter = ',', value_parser = event_name)]
     pub events: Option<Vec<&'static str>>,
     /// Where to write, default out/mobility/<vehicle>.
@@ -133,7 +135,7 @@ fn parse_slice(s: &str) -> Result<(usize, usize), String> {
 /// events still answered) or the outputs could not be written.
 pub fn main<V: Vehicle>(entry: &Offered, args: &MobilityArgs) -> ExitCode {
     match entry.engine() {
-        Ok(powertrain) => run::<V>(args, entry.name(), powertrain, entry.figures()),
+        Ok(powertrain) => run::<V>(args, entry, powertrain),
         Err(e) => {
             eprintln!("error: the mobility events drive through the engine: {e}");
             ExitCode::FAILURE
@@ -143,10 +145,10 @@ pub fn main<V: Vehicle>(entry: &Offered, args: &MobilityArgs) -> ExitCode {
 
 fn run<V: Vehicle>(
     args: &MobilityArgs,
-    name: &str,
+    entry: &Offered,
     powertrain: trackgen::vehicle::Powertrain,
-    published: &[Published],
 ) -> ExitCode {
+    let (name, published) = (entry.name(), entry.figures());
     let mut settings = EventSettings::new(powertrain);
     settings.scenario.method = args.integrator;
     settings.scenario.tolerance = args.tolerance;
@@ -166,8 +168,22 @@ fn run<V: Vehicle>(
             return ExitCode::FAILURE;
         }
     };
-    let events: Vec<&'static str> = args.events.clone().unwrap_or_else(|| EVENTS.to_vec());
-    let work = tasks::<V>(&settings, &footprint, &events, args.quick);
+    // The side slope is a 3-D event: in the default set where the
+    // vehicle has a spatial model, refused where it is asked for and
+    // there is none.
+    let events: Vec<&'static str> = args.events.clone().unwrap_or_else(|| {
+        (EVENTS.iter().copied())
+            .filter(|e| *e != SIDE_SLOPE || entry.side_slope.is_some())
+            .collect()
+    });
+    if events.contains(&SIDE_SLOPE) && entry.side_slope.is_none() {
+        eprintln!(
+            "error: the side-slope event runs the vehicle in 3-D: `{name}` is declared without a \
+             `tracks` block"
+        );
+        return ExitCode::FAILURE;
+    }
+    let work = tasks::<V>(&settings, &footprint, &events, args.quick, entry.side_slope);
     let dir = args
         .out
         .clone()

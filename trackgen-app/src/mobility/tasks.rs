@@ -11,8 +11,10 @@ use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::Vehicle;
 use trackgen_draw::vehicle;
 
+use crate::offered::SideSlopeSearch;
+
 /// Every event, in the order they are reported.
-pub(super) const EVENTS: [&str; 8] = [
+pub(super) const EVENTS: [&str; 9] = [
     "ride",
     "half-round",
     "step",
@@ -21,7 +23,11 @@ pub(super) const EVENTS: [&str; 8] = [
     "barrier",
     "grade",
     "soil",
+    SIDE_SLOPE,
 ];
+
+/// The side slope's event, run in 3-D.
+pub(super) const SIDE_SLOPE: &str = trackgen::mobility::side_slope::EVENT;
 
 pub(super) fn event_name(s: &str) -> Result<&'static str, String> {
     EVENTS
@@ -146,6 +152,7 @@ pub(super) fn tasks<'a, V: Vehicle>(
     footprint: &'a Footprint,
     events: &[&'static str],
     quick: bool,
+    side_slope: Option<SideSlopeSearch>,
 ) -> Vec<Task<'a>> {
     const INCH: f64 = 0.0254;
     let pick = |all: &'static [f64], one: &'static [f64]| if quick { one } else { all };
@@ -244,6 +251,18 @@ pub(super) fn tasks<'a, V: Vehicle>(
                         "drawbar curve",
                         "",
                         Box::new(move || soil_curve::<V>(settings, preset, fractions)),
+                    ));
+                }
+            }
+            SIDE_SLOPE => {
+                // `mobility` refuses the event for a vehicle without a
+                // spatial model before it makes the tasks.
+                if let Some(search) = side_slope {
+                    out.push(task(
+                        None,
+                        quantity::STEEPEST_SIDE_SLOPE,
+                        "rise over run",
+                        Box::new(move || search(settings).map(Found::Limit)),
                     ));
                 }
             }

@@ -15,7 +15,7 @@ pub enum EventError {
     #[error("{event}: {what} must be {range}, got {value}")]
     Setting {
         /// The event: `ride`, `half-round`, `step`, `gap`, `ditch`,
-        /// `barrier` or `grade`.
+        /// `barrier`, `grade` or `side-slope`.
         event: &'static str,
         /// The setting.
         what: &'static str,
@@ -73,6 +73,16 @@ pub enum EventError {
         unit: &'static str,
         /// How far the hull got, m.
         reached: f64,
+    },
+    /// The spatial vehicle could not be set up for the event: its laws,
+    /// its assembly, its drives or its driver refused.
+    #[error("{event}: the spatial vehicle could not be set up: {source}")]
+    Spatial {
+        /// The event.
+        event: &'static str,
+        /// Why.
+        #[source]
+        source: Box<dyn std::error::Error + Send + Sync>,
     },
     /// A run failed: the integrator gave up, or a sink refused a row.
     #[error("{event}: the run at {parameter} {unit} failed at t = {time} s: {source}")]

@@ -26,6 +26,7 @@ pub mod quantity;
 pub mod ride;
 mod runs;
 pub mod search;
+pub mod side_slope;
 pub mod soil;
 
 pub use error::EventError;

@@ -18,3 +18,6 @@ pub const DEEPEST_DITCH: &str = "deepest ditch";
 /// The highest trapezoidal barrier crossed, m
 /// ([`obstacle::barrier`](super::obstacle::barrier)).
 pub const HIGHEST_BARRIER: &str = "highest barrier";
+/// The steepest side slope held driving along it, rise over run
+/// ([`side_slope::steepest`](super::side_slope::steepest)).
+pub const STEEPEST_SIDE_SLOPE: &str = "steepest side slope";

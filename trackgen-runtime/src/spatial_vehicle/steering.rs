@@ -54,6 +54,26 @@ pub struct HeadingHold {
 }
 
 impl HeadingHold {
+    /// The driver's heading gain of [`driver`](Self::driver), 1/s: an
+    /// error of heading halves in about 0.5 s.
+    pub const DRIVER_GAIN: f64 = 1.5;
+    /// The yaw rate the largest belt-speed difference of
+    /// [`driver`](Self::driver) asks for, rad/s: the difference is the
+    /// gauge times it.
+    pub const DRIVER_MAX_YAW_RATE: f64 = 1.0;
+
+    /// The applications' driver on a gauge of `gauge` m: [`turn`](Self::turn)
+    /// at [`DRIVER_GAIN`](Self::DRIVER_GAIN), its belts at most
+    /// `gauge` × [`DRIVER_MAX_YAW_RATE`](Self::DRIVER_MAX_YAW_RATE) apart.
+    pub fn driver(angle: f64, (start, duration): (f64, f64), gauge: f64) -> Self {
+        HeadingHold::turn(
+            angle,
+            (start, duration),
+            Self::DRIVER_GAIN,
+            gauge * Self::DRIVER_MAX_YAW_RATE,
+        )
+    }
+
     /// A driver turning through `angle` (rad, to the left positive) from
     /// heading 0, starting at `start` s and taking `duration` s, its
     /// heading wanted along the half-cosine `ψ_ref = angle (1 − cos(π s))
