@@ -149,6 +149,65 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
     assert!(stderr.contains("unknown event `mud`"), "{stderr}");
 }
 
+/// `mobility --quick --events side-slope --json` for the M113 (declared
+/// with both tracks): one result, the steepest side slope, bracketed by
+/// its trials (each passing trial's drift at most the event's 5 %, each
+/// failing one's over it or its roll off), no steeper than the closed
+/// form allows on its ground (`tan φ ≤ μ = 0.8`, plus the quick search's
+/// 0.1), and set beside the published 30 % with the ratio.
+#[test]
+fn mobility_finds_the_steepest_side_slope_in_3d() {
+    let dir = scratch("mobility-side-slope");
+    let out = mobility(
+        &[
+            "--quick",
+            "--events",
+            "side-slope",
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_success("mobility --events side-slope", &out);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let results: Vec<serde_json::Value> = stdout
+        .lines()
+        .filter(|l| l.starts_with('{'))
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
+        .collect();
+    assert_eq!(results.len(), 1, "{stdout}");
+    let result = &results[0];
+    assert_eq!(result["event"], "side-slope");
+    assert_eq!(result["quantity"], "steepest side slope");
+    assert_eq!(result["unit"], "rise over run");
+    assert_eq!(result["relation"], "=");
+    let slope = result["value"].as_f64().unwrap();
+    assert!(slope > 0.1 && slope <= 0.8 + 0.1, "{slope}");
+    let trials = std::fs::read_to_string(dir.join("trials.csv")).unwrap();
+    let trials: Vec<(f64, f64, bool)> = trials
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            (f[4].parse().unwrap(), f[5].parse().unwrap(), f[6] == "true")
+        })
+        .collect();
+    assert_eq!(trials.len() as u64, result["runs"].as_u64().unwrap());
+    for &(parameter, drift, passed) in &trials {
+        assert_eq!(passed, parameter < slope, "trial at {parameter}");
+        if passed {
+            assert!(drift <= 0.05, "held at {parameter} drifting {drift}");
+        }
+    }
+    let against = stdout
+        .lines()
+        .find(|l| l.starts_with("steepest side slope"))
+        .unwrap_or_else(|| panic!("no published side slope: {stdout}"));
+    let ratio = format!("ratio {:.2}", slope / 0.30);
+    assert!(against.contains(&ratio), "{against}");
+}
+
 /// `mobility --slice K/N` and `--merge`: two slices of the quick set, run
 /// apart and merged, give the event CSVs and the trials of the whole set
 /// run at once (every task is deterministic; the wall times aside); a
