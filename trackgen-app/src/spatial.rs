@@ -367,36 +367,53 @@ fn drive<V: SpatialVehicleSystem>(
     let mut summary = Summary::new(args.output_every);
     let started = Instant::now();
     let mut t = 0.0;
-    let mut row = 0u64;
-    let outcome = loop {
-        let out = match system.outputs(t, y.as_slice()) {
-            Ok(out) => out,
-            Err(e) => break Err(e),
-        };
-        let turning = t >= args.turn_at && t <= args.turn_at + args.turn_time;
-        summary.add(t, &out, turning && angle != 0.0);
-        let values = record(&out);
-        sink.row(t, &values)?;
-        wide_row.clear();
-        wide_row.extend_from_slice(&values);
-        shoe_forces(&system.ground_forces(y.as_slice()), shoes, &mut wide_row);
-        arrow.row(t, &wide_row)?;
-        row += 1;
-        if t >= args.duration {
+    // Rows written, and rows due so far (the start's).
+    let (mut row, mut queued) = (0u64, 1u64);
+    // The rows' times, every `output_every` s and the end; a row within
+    // `eps` of a step's end is that step's state.
+    let row_time = |k: u64| (k as f64 * args.output_every).min(args.duration);
+    let eps = 1e-12 * args.duration.max(1.0);
+    // The rows due: the start's, then those within each step, by the
+    // integrator's dense output (the planar main job's rule), so that the
+    // steps are the error control's and not cut at the rows' times.
+    let mut due = vec![(0.0, y.clone())];
+    let outcome = 'run: loop {
+        for (at, state) in due.drain(..) {
+            let out = match system.outputs(at, state.as_slice()) {
+                Ok(out) => out,
+                Err(e) => break 'run Err(e),
+            };
+            let turning = at >= args.turn_at && at <= args.turn_at + args.turn_time;
+            summary.add(at, &out, turning && angle != 0.0);
+            let values = record(&out);
+            sink.row(at, &values)?;
+            wide_row.clear();
+            wide_row.extend_from_slice(&values);
+            shoe_forces(
+                &system.ground_forces(state.as_slice()),
+                shoes,
+                &mut wide_row,
+            );
+            arrow.row(at, &wide_row)?;
+            row += 1;
+        }
+        if t >= args.duration - eps {
             break Ok(());
         }
-        let next = (row as f64 * args.output_every).min(args.duration);
-        let mut failed = None;
-        while t < next {
-            if let Err(e) = stepper.step(&mut system, &mut t, &mut y, next) {
-                failed = Some(e);
-                break;
-            }
-        }
-        bar.set_position((t * 1000.0) as u64);
-        if let Some(e) = failed {
+        if let Err(e) = stepper.step(&mut system, &mut t, &mut y, args.duration) {
             break Err(e);
         }
+        while row_time(queued) <= t + eps && row_time(queued - 1) < args.duration {
+            let at = row_time(queued).min(t);
+            let state = if t - at <= eps {
+                y.clone()
+            } else {
+                stepper.interpolate(at)
+            };
+            due.push((at, state));
+            queued += 1;
+        }
+        bar.set_position((t * 1000.0) as u64);
     };
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
