@@ -60,6 +60,7 @@ mod spatial_books;
 mod spatial_drive;
 mod spatial_driveline;
 mod spatial_dynamics;
+mod spatial_modes;
 mod spatial_slope;
 mod spatial_steering;
 mod spatial_tree;

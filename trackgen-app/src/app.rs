@@ -87,6 +87,7 @@ impl Entry {
                 steer_ratios: Vec::new(),
                 turn_runs: None,
                 side_slope: None,
+                spatial_modes: None,
             },
             dispatch: dispatch::<V>,
             spatial: None,
@@ -101,6 +102,7 @@ impl Entry {
             ..Entry::of::<V>()
         };
         entry.offered.turn_runs = Some(crate::turn_runs::run_turns::<V>);
+        entry.offered.spatial_modes = Some(crate::spatial_modes::modes_at_rest::<V>);
         entry.offered.side_slope = Some(|settings| {
             trackgen::mobility::side_slope::steepest::<V>(settings, V::declared_laws())
         });

@@ -29,6 +29,12 @@ pub struct ModesArgs {
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = crate::cli::folder)]
     pub out: Option<PathBuf>,
+    /// Also the spatial model's modes at rest (a vehicle declared with a
+    /// `tracks` block): settled on its speed drives, linearised, the
+    /// hull's bounce, pitch, roll, sway, surge and yaw printed and every
+    /// mode up to 30 Hz in `modes-spatial.csv`.
+    #[arg(long)]
+    pub spatial: bool,
 }
 
 /// `modes` for the vehicle `V`: exits 1, saying why, when the rest or the
@@ -47,7 +53,17 @@ pub fn main<V: Vehicle>(entry: &Offered, args: &ModesArgs) -> ExitCode {
             terrain,
             rut: Vec::new(),
         };
-        Ok(report::<V>(&mut system, &rest, &dir, &ground)?.0)
+        let mut files = report::<V>(&mut system, &rest, &dir, &ground)?.0;
+        if args.spatial {
+            let found = entry.spatial_modes.ok_or_else(|| {
+                format!(
+                    "`--spatial` runs the vehicle in 3-D: `{}` is declared without a `tracks` block",
+                    entry.name()
+                )
+            })?;
+            files.push(crate::spatial_modes::report(&found()?, &dir)?);
+        }
+        Ok(files)
     };
     match found() {
         Ok(files) => {

@@ -29,7 +29,14 @@ pub struct Offered {
     /// The side-slope event of its spatial model, for a vehicle declared
     /// with both tracks: what `mobility` runs as `side-slope`.
     pub side_slope: Option<SideSlopeSearch>,
+    /// The spatial model's modes at rest, for a vehicle declared with
+    /// both tracks: what `modes --spatial` finds.
+    pub spatial_modes: Option<fn() -> Result<SpatialModes, String>>,
 }
+
+/// The spatial vehicle's modes at rest, and the largest acceleration
+/// left where it settled (m/s², rad/s²).
+pub type SpatialModes = (f64, Vec<trackgen::analysis::SpatialMode>);
 
 /// The steepest side slope a spatial vehicle holds under its declared
 /// laws (`trackgen::mobility::side_slope::steepest`).

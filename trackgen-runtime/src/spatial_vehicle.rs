@@ -43,7 +43,7 @@ mod system;
 mod tensions;
 
 use bodies::Bodies;
-pub use declared::{SpatialSimulated, SpatialVehicleSystem};
+pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
 pub use drive::DriveState;
 pub use driveline::{
     Differential, DifferentialSteer, Driveline, DrivelineError, SideDrives, SteerInput, SteerUnit,

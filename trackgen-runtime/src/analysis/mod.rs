@@ -2,7 +2,8 @@
 //! its right-hand side ([`state_jacobian`]), where it rests
 //! ([`equilibrium`]), its linearisation there and the modes it vibrates in
 //! ([`modes`]), and how its rest changes with a spring rate
-//! ([`equilibrium_sensitivity`]).
+//! ([`equilibrium_sensitivity`]); the spatial vehicle's rest and modes
+//! ([`settle`], [`spatial_modes`]).
 //!
 //! The state Jacobian is taken by central differences of the compiled
 //! right-hand side (each column two evaluations, the step stated in
@@ -14,6 +15,7 @@ mod error;
 mod jacobian;
 mod modes;
 mod sensitivity;
+mod spatial_modes;
 mod statics;
 
 pub use equilibrium::{Equilibrium, EquilibriumOptions, equilibrium};
@@ -21,3 +23,4 @@ pub use error::AnalysisError;
 pub use jacobian::{state_jacobian, step_for};
 pub use modes::{Mode, Share, linearise, mode_of, modes};
 pub use sensitivity::{ArmSensitivity, equilibrium_sensitivity};
+pub use spatial_modes::{SpatialMode, SpatialRest, settle, spatial_mode_of, spatial_modes};

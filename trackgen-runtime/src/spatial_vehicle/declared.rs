@@ -62,7 +62,33 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// What the ground gives each of the tracks' ground points at `y`
     /// ([`SpatialSystem::ground_forces`]).
     fn ground_forces(&self, y: &[f64]) -> Vec<GroundForce>;
+
+    /// How many of the state's values, from the first, have dynamics: the
+    /// trees, the ground's deflections and the driveline's states; not
+    /// the books (the energy dissipated, the drive's work) after them.
+    fn dynamic_states(&self) -> usize;
+
+    /// Where the hull's root body's six rates sit in the state: along its
+    /// plane and up it (m/s), its pitch rate, its rate across the plane
+    /// (m/s), its roll and its yaw rate (rad/s), in that order
+    /// ([`HULL_MOTIONS`]).
+    fn hull_rates(&self) -> [usize; 6];
+
+    /// `y` with every tree's rates set to zero (the ground's deflections,
+    /// the driveline's states and the books kept).
+    fn stilled(&self, y: &[f64]) -> DVector<f64>;
 }
+
+/// The hull's six motions, as [`SpatialSimulated::hull_rates`] orders
+/// their rates.
+pub const HULL_MOTIONS: [&str; 6] = [
+    "hull surge",
+    "hull bounce",
+    "hull pitch",
+    "hull sway",
+    "hull roll",
+    "hull yaw",
+];
 
 /// A tree standing upright at yaw 0 with its planar coordinates `q` (its
 /// root's place in the plane moved into the pose's origin, `lateral` m
@@ -148,6 +174,34 @@ where
 
     fn ground_forces(&self, y: &[f64]) -> Vec<GroundForce> {
         SpatialSystem::ground_forces(self, y)
+    }
+
+    fn dynamic_states(&self) -> usize {
+        self.books_at() + 3
+    }
+
+    fn hull_rates(&self) -> [usize; 6] {
+        // A tree's planar rates start at `D + 3` (`v_ξ`, `v_ζ`, the root's
+        // angle's), its rates across at `2 D + 3` (`v_η`, `ω_ξ`, `ω_ζ`).
+        let (planar, across) = (DH + 3, 2 * DH + 3);
+        [
+            planar,
+            planar + 1,
+            planar + 2,
+            across,
+            across + 1,
+            across + 2,
+        ]
+    }
+
+    fn stilled(&self, y: &[f64]) -> DVector<f64> {
+        let mut still = DVector::from_column_slice(y);
+        let mut start = 0;
+        for d in [DH, DR, DL] {
+            still.as_mut_slice()[start + d + 3..start + 2 * d + 6].fill(0.0);
+            start += 2 * d + 6;
+        }
+        still
     }
 }
 

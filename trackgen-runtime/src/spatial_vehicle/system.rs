@@ -225,7 +225,7 @@ where
 
     /// Where the books sit in the state: the driveline's three states,
     /// then the energy dissipated and the drive's work.
-    fn books_at(&self) -> usize {
+    pub(super) fn books_at(&self) -> usize {
         let [r, l] = self.dynamics.ground_states();
         Self::TREES + r + l
     }
