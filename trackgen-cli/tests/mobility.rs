@@ -21,6 +21,30 @@ fn mobility(args: &[&str], cwd: &Path) -> Output {
     run(&binary, &all, cwd)
 }
 
+/// `mobility --quick --events EVENTS --json --out DIR`, which must
+/// succeed: its standard output and the JSON results on it.
+fn quick_json(events: &str, dir: &Path) -> (String, Vec<serde_json::Value>) {
+    let out = mobility(
+        &[
+            "--quick",
+            "--events",
+            events,
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ],
+        dir,
+    );
+    assert_success(&format!("mobility --quick --events {events}"), &out);
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    let results = stdout
+        .lines()
+        .filter(|l| l.starts_with('{'))
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
+        .collect();
+    (stdout, results)
+}
+
 /// `mobility --quick --events ride,half-round,soil --json`: one result per
 /// speed event and the soil's two rows, each a JSON line with the fields the issue names (SI units), a
 /// CSV per event, the trials, the curves and the report written; the
@@ -31,24 +55,7 @@ fn mobility(args: &[&str], cwd: &Path) -> Output {
 #[test]
 fn mobility_answers_its_events_and_refuses_an_unknown_one() {
     let dir = scratch("mobility");
-    let out = mobility(
-        &[
-            "--quick",
-            "--events",
-            "ride,half-round,soil",
-            "--json",
-            "--out",
-            dir.to_str().unwrap(),
-        ],
-        &dir,
-    );
-    assert_success("mobility --quick", &out);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    let results: Vec<serde_json::Value> = stdout
-        .lines()
-        .filter(|l| l.starts_with('{'))
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
-        .collect();
+    let (stdout, results) = quick_json("ride,half-round,soil", &dir);
     // The ride, the half-round, and the soil's two rows (the resistance,
     // the slip at 0.2 of the weight).
     assert_eq!(results.len(), 4, "{stdout}");
@@ -158,24 +165,7 @@ fn mobility_answers_its_events_and_refuses_an_unknown_one() {
 #[test]
 fn mobility_finds_the_steepest_side_slope_in_3d() {
     let dir = scratch("mobility-side-slope");
-    let out = mobility(
-        &[
-            "--quick",
-            "--events",
-            "side-slope",
-            "--json",
-            "--out",
-            dir.to_str().unwrap(),
-        ],
-        &dir,
-    );
-    assert_success("mobility --events side-slope", &out);
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    let results: Vec<serde_json::Value> = stdout
-        .lines()
-        .filter(|l| l.starts_with('{'))
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{l}: {e}")))
-        .collect();
+    let (stdout, results) = quick_json("side-slope", &dir);
     assert_eq!(results.len(), 1, "{stdout}");
     let result = &results[0];
     assert_eq!(result["event"], "side-slope");
