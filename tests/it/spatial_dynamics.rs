@@ -20,14 +20,15 @@
 //! and moved elsewhere, its mirror image accelerates as its mirror, and
 //! the force elements' books close at it.
 
-use trackgen::contact::{BodyState, Contact, ground, sprocket, wheel};
+use trackgen::contact::{BodyState, Contact, GroundFriction, GroundLaws, ground, sprocket, wheel};
 use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::laws::Stiction;
 use trackgen::multibody::{
     BodyLoad, ChassisModel, ClosingJoint, PartKind, RecursiveModel, TrackModel,
 };
 use trackgen::nalgebra::{SVector, Vector2, Vector3};
 use trackgen::spatial::{FloatingTree, SpatialError, SpatialLoad, SpatialVehicle};
-use trackgen::spatial_vehicle::{SpatialDynamics, SpatialSystem, TreeState};
+use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, SpatialSystem, TreeState};
 use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::{Drive, Vehicle};
@@ -59,6 +60,7 @@ fn planar_states<M: RecursiveModel<D>, const D: usize>(
 /// chassis, from the planar model's pieces, how many contacts of each
 /// kind it has (ground, rims, teeth), and the track's joint forces.
 fn planar_accelerations(
+    ground_laws: GroundLaws,
     (qt, qdt): (&SVector<f64, DT>, &SVector<f64, DT>),
     (qc, qdc): (&SVector<f64, DC>, &SVector<f64, DC>),
 ) -> (
@@ -68,10 +70,11 @@ fn planar_accelerations(
     Vec<Vector2<f64>>,
 ) {
     let mut counts = [0; 3];
-    let config = Twin::declared_config(
+    let mut config = Twin::declared_config(
         Terrain::Flat { height: 0.0 },
         Drive::Torque(Box::new(|_| 0.0)),
     );
+    config.ground = ground_laws;
     let geometry = Twin::geometry();
     let links = planar_states(&TwinTrack, qt, qdt);
     let parts = planar_states(&TwinChassis, qc, qdc);
@@ -147,8 +150,25 @@ fn planar_accelerations(
     (qddt, qddc, counts, forces)
 }
 
+/// Under the declared ground (regularised friction) and under stiction
+/// at rest (each ground point's spring unstretched: the planar point's
+/// damper alone, shared by its two points across the width, each with
+/// half its law).
 #[test]
 fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
+    let regularised = laws();
+    let mut sticking = laws();
+    sticking.ground.friction = GroundFriction::Stiction(Stiction {
+        mu: 0.7,
+        stiffness: 1e6,
+        damping: 2e3,
+    });
+    for laws in [regularised, sticking] {
+        mirrored_as_planar(laws);
+    }
+}
+
+fn mirrored_as_planar(laws: SpatialLaws) {
     let layout = Twin::layout();
     let start = assembled();
     assert_eq!(start.right, start.left, "a mirror assembles alike");
@@ -174,12 +194,12 @@ fn a_mirrored_vehicle_accelerates_as_the_planar_one() {
     let qdt = SVector::<f64, DT>::from_fn(|i, _| 0.2 * (0.7 * i as f64).cos());
     let qc = SVector::<f64, DC>::from_fn(|i, _| qh[i]);
     let qdc = SVector::<f64, DC>::from_fn(|i, _| qdh[i]);
-    let (qddt, qddc, counts, forces) = planar_accelerations((&qt, &qdt), (&qc, &qdc));
+    let (qddt, qddc, counts, forces) = planar_accelerations(laws.ground, (&qt, &qdt), (&qc, &qdc));
     assert!(
         counts.iter().all(|&n| n >= 2),
         "ground, rim and tooth contacts: {counts:?}"
     );
-    let dynamics = spatial();
+    let dynamics = built(laws, HeightField::level()).expect("the spatial vehicle");
     let half = layout.gauge / 2.0;
     let hull = upright(Vector3::new(qh[0], 0.0, qh[1]), &qh, &qdh);
     let right = upright(Vector3::new(qt[0], -half, qt[1]), &qt, &qdt);

@@ -134,8 +134,8 @@ fn the_systems_start_across_a_slope_is_the_tests_own() {
 ///
 /// - at 5 % past `μ` it slides away (its drift past the event's 5 %:
 ///   the trial fails);
-/// - at 85 % of `μ` it holds (the M113 creeps 1.3 % at 87.5 % of its
-///   `μ = 0.8` and holds to 94 %; the drive's own pull along the path
+/// - at 85 % of `μ` it holds (the M113 creeps 2.9 % at 90 % of its
+///   `μ = 0.8` and holds to 93 %; the drive's own pull along the path
 ///   and the sprung hull's sway take the rest).
 ///
 /// The limit moves with the ground's friction, as the closed form says:

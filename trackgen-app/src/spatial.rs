@@ -18,8 +18,8 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use trackgen::integrate::{Integrator, OdeSystem, Stats};
-use trackgen::nalgebra::Vector2;
+use trackgen::integrate::{Integrator, OdeSystem, Stats, Stepper};
+use trackgen::nalgebra::{DVector, Vector2};
 use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
@@ -367,15 +367,8 @@ fn drive<V: SpatialVehicleSystem>(
     let mut summary = Summary::new(args.output_every);
     let started = Instant::now();
     let mut t = 0.0;
-    // Rows written, and rows due so far (the start's).
-    let (mut row, mut queued) = (0u64, 1u64);
-    // The rows' times, every `output_every` s and the end; a row within
-    // `eps` of a step's end is that step's state.
-    let row_time = |k: u64| (k as f64 * args.output_every).min(args.duration);
-    let eps = 1e-12 * args.duration.max(1.0);
-    // The rows due: the start's, then those within each step, by the
-    // integrator's dense output (the planar main job's rule), so that the
-    // steps are the error control's and not cut at the rows' times.
+    let mut row = 0u64;
+    let mut rows = RowTimes::new(args.output_every, args.duration);
     let mut due = vec![(0.0, y.clone())];
     let outcome = 'run: loop {
         for (at, state) in due.drain(..) {
@@ -397,22 +390,13 @@ fn drive<V: SpatialVehicleSystem>(
             arrow.row(at, &wide_row)?;
             row += 1;
         }
-        if t >= args.duration - eps {
+        if t >= args.duration - rows.eps {
             break Ok(());
         }
         if let Err(e) = stepper.step(&mut system, &mut t, &mut y, args.duration) {
             break Err(e);
         }
-        while row_time(queued) <= t + eps && row_time(queued - 1) < args.duration {
-            let at = row_time(queued).min(t);
-            let state = if t - at <= eps {
-                y.clone()
-            } else {
-                stepper.interpolate(at)
-            };
-            due.push((at, state));
-            queued += 1;
-        }
+        rows.within(&*stepper, (t, &y), &mut due);
         bar.set_position((t * 1000.0) as u64);
     };
     bar.finish_and_clear();
@@ -445,6 +429,55 @@ fn drive<V: SpatialVehicleSystem>(
     );
     outcome
         .map_err(|e| format!("the run stopped early: {e} (rows up to t = {t:.4} s written)").into())
+}
+
+/// The rows' times: every `every` s from 0, and the end. The rows are
+/// read by the integrator's dense output (the planar main job's rule),
+/// so that the steps are the error control's, not cut at the rows.
+struct RowTimes {
+    every: f64,
+    end: f64,
+    /// Two times this close are one (s): a row within it of a step's end
+    /// is that step's state.
+    eps: f64,
+    /// The rows due so far (the start's first).
+    queued: u64,
+}
+
+impl RowTimes {
+    /// Rows `every` s apart up to `end` s, the start's due already.
+    fn new(every: f64, end: f64) -> RowTimes {
+        RowTimes {
+            every,
+            end,
+            eps: 1e-12 * end.max(1.0),
+            queued: 1,
+        }
+    }
+
+    fn time(&self, k: u64) -> f64 {
+        (k as f64 * self.every).min(self.end)
+    }
+
+    /// The rows within the step `stepper` just took to `(t, y)`, each
+    /// with its state, onto `due`.
+    fn within(
+        &mut self,
+        stepper: &dyn Stepper,
+        (t, y): (f64, &DVector<f64>),
+        due: &mut Vec<(f64, DVector<f64>)>,
+    ) {
+        while self.time(self.queued) <= t + self.eps && self.time(self.queued - 1) < self.end {
+            let at = self.time(self.queued).min(t);
+            let state = if t - at <= self.eps {
+                y.clone()
+            } else {
+                stepper.interpolate(at)
+            };
+            due.push((at, state));
+            self.queued += 1;
+        }
+    }
 }
 
 /// Prints the run's time, its steps, the turn and the books.

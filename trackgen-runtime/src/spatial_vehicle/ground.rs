@@ -1,5 +1,8 @@
 //! The shoes on the ground in space: each planar ground point of each
-//! shoe as two points across its width, each with half the point's law.
+//! shoe as two points across its width, each with half the point's law
+//! (half its normal stiffness and damping, half its stiction's spring
+//! and damper): a mirrored vehicle's two sides are its planar model's
+//! side.
 //!
 //! A link whose ground points all lie above the highest ground under
 //! the whole track ([`HeightField::max_height`] over the links' box) is
@@ -42,13 +45,21 @@ where
         (deflections, rates): (&[f64], &mut [f64]),
         mut found: Option<(Side, &mut Vec<GroundForce>)>,
     ) -> (f64, f64) {
+        // Half of each law: the normal law's stiffness and damping, and
+        // a stiction's spring and damper (its limit, `μ` times the halved
+        // normal force, halves with it); regularised friction is a
+        // multiple of the normal force already.
+        let stiction = match self.laws.ground.friction {
+            GroundFriction::Stiction(law) => Some(Stiction {
+                stiffness: 0.5 * law.stiffness,
+                damping: 0.5 * law.damping,
+                ..law
+            }),
+            GroundFriction::Regularised(_) => None,
+        };
         let half = GroundLaws {
             normal: share(self.laws.ground.normal, 0.5),
-            ..self.laws.ground
-        };
-        let stiction = match self.laws.ground.friction {
-            GroundFriction::Stiction(law) => Some(law),
-            GroundFriction::Regularised(_) => None,
+            friction: stiction.map_or(self.laws.ground.friction, GroundFriction::Stiction),
         };
         let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
         let points = self.shoe.ground_points.len();
