@@ -22,8 +22,8 @@ use crate::support::twin::Twin;
 
 /// How far the spatial frequencies may stand from the planar ones,
 /// relative: 0.5 %. The settled state is not the planar equilibrium
-/// (what is left of the settling, mostly the links' on their stiff
-/// contacts once their rates are zeroed, is printed), and the central
+/// (what is left of the settling, the largest acceleration of any tree
+/// coordinate once the rates are zeroed, is printed), and the central
 /// differences give six digits; the planar route's rest is Newton's, to
 /// 1e-8 m/s². Measured: 0.02 % (bounce) and 0.05 % (pitch), and the
 /// damping ratios within 0.003. Under the declared ground, whose

@@ -14,8 +14,10 @@ use crate::console::say;
 use crate::offered::SpatialModes;
 
 /// How long the vehicle settles before it is linearised, s: its hull's
-/// slowest mode (pitch, about 1 Hz at a damping ratio of 0.15 or more)
-/// has decayed a hundredfold by then.
+/// bounce and pitch (above 1 Hz, at damping ratios of 0.15 or more) have
+/// decayed fifty-fold by then. A slower mode (the Marder's sway, 0.2 Hz)
+/// has not; setting the rates to zero takes its motion out, not its
+/// displacement.
 pub(crate) const SETTLE: f64 = 4.0;
 /// The settling run's tolerance: tight, so that the rest is one.
 const TOLERANCE: f64 = 1e-6;
