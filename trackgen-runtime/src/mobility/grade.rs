@@ -2,7 +2,7 @@
 //! steepest grade climbed from
 //! a crawl, and the speed held up a grade at full power.
 
-use super::runs::{Footprint, Probe, confirmed, drive, obstacle_course, ramp};
+use super::runs::{Footprint, Probe, confirmed, drive, obstacle_course, ramp, slope_setting};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::terrain::Terrain;
@@ -51,14 +51,7 @@ pub fn climb<V: Vehicle>(
     climb: f64,
 ) -> Result<Climb, EventError> {
     settings.check(EVENT)?;
-    if !(slope.is_finite() && slope > 0.0 && slope <= 2.0) {
-        return Err(EventError::Setting {
-            event: EVENT,
-            what: "the grade (rise over run)",
-            range: "more than 0 and at most 2",
-            value: slope,
-        });
-    }
+    slope_setting(EVENT, "the grade (rise over run)", slope)?;
     let at = footprint.front + 1.0;
     let terrain = course(footprint, at, slope, climb)?;
     let goal = at + climb - footprint.rear;

@@ -424,6 +424,25 @@ pub(super) fn obstacle_course(
     laid().map_err(|source| EventError::Course { event, source })
 }
 
+/// `slope` (rise over run) as `event` takes it, `what` it is: finite,
+/// more than 0 and at most 2; otherwise the setting's error.
+pub(super) fn slope_setting(
+    event: &'static str,
+    what: &'static str,
+    slope: f64,
+) -> Result<(), EventError> {
+    if slope.is_finite() && slope > 0.0 && slope <= 2.0 {
+        Ok(())
+    } else {
+        Err(EventError::Setting {
+            event,
+            what,
+            range: "more than 0 and at most 2",
+            value: slope,
+        })
+    }
+}
+
 /// A speed ramp at `acceleration` (m/s²) from rest to `speed` (m/s).
 pub(super) fn ramp(speed: f64, acceleration: f64) -> impl Fn(f64) -> f64 + Send + 'static {
     move |t| (acceleration * t).min(speed)
@@ -592,6 +611,23 @@ impl Sink for Probe {
 
 #[cfg(test)]
 mod tests {
+    /// A slope is taken from just above 0 to 2; 0, past 2, NaN and
+    /// infinity are the setting's error, naming the event.
+    #[test]
+    fn a_slope_out_of_range_is_the_settings_error() {
+        for ok in [1e-9, 0.3, 2.0] {
+            assert!(super::slope_setting("grade", "the grade", ok).is_ok());
+        }
+        for bad in [0.0, -0.1, 2.01, f64::NAN, f64::INFINITY] {
+            let e = super::slope_setting("side-slope", "the side slope", bad).unwrap_err();
+            assert!(
+                e.to_string()
+                    .starts_with("side-slope: the side slope must be"),
+                "{e}"
+            );
+        }
+    }
+
     use super::*;
 
     /// Feeds a probe a held hull (x = 0) every 0.1 s with the engine's

@@ -25,7 +25,7 @@
 //! for tracked vehicles (the M113's 30 %) are ratings, not measured
 //! sliding limits: their sources give no criterion.
 
-use super::runs::confirmed;
+use super::runs::{confirmed, slope_setting};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
@@ -109,14 +109,7 @@ pub fn traverse<V: SpatialVehicleSystem>(
     slope: f64,
 ) -> Result<Traverse, EventError> {
     settings.check(EVENT)?;
-    if !(slope.is_finite() && slope > 0.0 && slope <= 2.0) {
-        return Err(EventError::Setting {
-            event: EVENT,
-            what: "the side slope (rise over run)",
-            range: "more than 0 and at most 2",
-            value: slope,
-        });
-    }
+    slope_setting(EVENT, "the side slope (rise over run)", slope)?;
     let field = HeightField::level().tilted(nalgebra::Vector2::new(0.0, slope));
     let mut system = V::spatial(laws, field).map_err(setup)?;
     let level = system
