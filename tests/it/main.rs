@@ -63,6 +63,7 @@ mod spatial_dynamics;
 mod spatial_modes;
 mod spatial_slope;
 mod spatial_steering;
+mod spatial_straight;
 mod spatial_tree;
 mod spatial_turn;
 mod spatial_vehicle;

@@ -24,8 +24,8 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, HeadingHold, SideDrives, SpatialOutputs,
-    SpatialSimulated, SpatialVehicleSystem, SteerUnit, SteeringBrakes,
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideDrives,
+    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteerUnit, SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
 use trackgen::vehicle::{Drive, speed_ramp};
@@ -91,6 +91,12 @@ pub struct SpatialArgs {
     /// 1.01 to 100; default the vehicle's first published one.
     #[arg(long, value_name = "RATIO", value_parser = cli::speed_ratio)]
     pub steer_ratio: Option<f64>,
+    /// Cap the drive by the vehicle's engine: its full-load envelope (the
+    /// planar `--engine`'s, ranges chosen ideally) on each side's drive,
+    /// or twice a side's on a differential's, so the engine's power, not
+    /// the controller's target, sets the speed where they disagree.
+    #[arg(long)]
+    pub engine: bool,
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = cli::folder)]
     pub out: Option<PathBuf>,
@@ -314,8 +320,16 @@ fn drive<V: SpatialVehicleSystem>(
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
     };
     let mass = system.outputs(0.0, y.as_slice())?.centre.mass;
-    let (driveline, driven) = driveline::<V>(entry, args, (&system, mass), target)?;
+    let (driveline, mut driven) = driveline::<V>(entry, args, (&system, mass), target)?;
     system.set_driveline(driveline)?;
+    if args.engine {
+        let envelope = EngineEnvelope::new(entry.engine()?)?;
+        driven.push_str(&format!(
+            ", capped by the engine's full-load envelope (at most {:.1} kW a side)",
+            envelope.powertrain().max_power() / 1e3
+        ));
+        system.set_envelope(Some(envelope));
+    }
     let angle = args.turn.to_radians();
     system.set_steering(HeadingHold::driver(
         angle,

@@ -36,6 +36,7 @@ mod bodies;
 mod declared;
 mod drive;
 mod driveline;
+mod envelope;
 mod ground;
 mod outputs;
 mod steering;
@@ -44,11 +45,12 @@ mod tensions;
 
 use bodies::Bodies;
 pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
-pub use drive::DriveState;
+pub use drive::{DriveState, Driver};
 pub use driveline::{
     Differential, DifferentialSteer, Driveline, DrivelineError, SideDrives, SteerInput, SteerUnit,
     SteeringBrakes,
 };
+pub use envelope::EngineEnvelope;
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
 pub use system::{SpatialEnergy, SpatialSystem};

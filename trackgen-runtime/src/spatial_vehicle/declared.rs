@@ -8,8 +8,8 @@
 use nalgebra::{DVector, SVector, Vector3};
 
 use super::{
-    Driveline, DrivelineError, GroundForce, HeadingHold, SideDrives, SpatialEnergy, SpatialLaws,
-    SpatialOutputs, SpatialSystem, SteeringError, TreeState,
+    Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideDrives, SpatialEnergy,
+    SpatialLaws, SpatialOutputs, SpatialSystem, SteeringError, TreeState,
 };
 use crate::assembly::{SideError, assemble_sides};
 use crate::contact::axial::GuideLaw;
@@ -48,6 +48,10 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// Steers by `hold` from now on (a drive on each side must be a speed
     /// drive).
     fn set_steering(&mut self, hold: HeadingHold) -> Result<(), SteeringError>;
+
+    /// Caps the drive by an engine's full-load `envelope` from now on
+    /// (`None`: no cap; [`SpatialSystem::with_envelope`]).
+    fn set_envelope(&mut self, envelope: Option<EngineEnvelope>);
 
     /// The sprockets' rolling radius, m: the mean of the two sides' (NaN
     /// without sprockets).
@@ -150,6 +154,10 @@ where
         self.check_steering(&hold)?;
         self.steering = Some(hold);
         Ok(())
+    }
+
+    fn set_envelope(&mut self, envelope: Option<EngineEnvelope>) {
+        self.envelope = envelope;
     }
 
     fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64> {

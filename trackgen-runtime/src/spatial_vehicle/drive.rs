@@ -13,13 +13,29 @@
 use nalgebra::Vector3;
 
 use super::{
-    Differential, DifferentialSteer, Driveline, HeadingHold, SideDrives, SpatialDynamics,
-    SpatialLoads, TreeState,
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideDrives,
+    SpatialDynamics, SpatialLoads, TreeState,
 };
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::plane_rotation;
 use crate::vehicle::TorqueCap;
+
+/// What drives the sprockets at a state: the driveline, the driver holding
+/// a heading (if one is), the engine's envelope (if any) and the
+/// driveline's three states
+/// ([`SpatialSystem`](super::SpatialSystem)'s docs).
+#[derive(Clone, Copy)]
+pub struct Driver<'a> {
+    /// How the drive reaches the sprockets.
+    pub driveline: &'a Driveline,
+    /// The driver holding a heading.
+    pub steering: Option<&'a HeadingHold>,
+    /// The engine's full-load envelope capping the drive.
+    pub envelope: Option<&'a EngineEnvelope>,
+    /// The driveline's states.
+    pub states: [f64; 3],
+}
 
 /// What the driveline does at a state: per side (right, left).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -58,10 +74,10 @@ where
     L: TrackModel<DL>,
 {
     /// What the driveline does at time `t` and the hull's state, with its
-    /// three `states` and the driver's `steering`, if any (a belt-speed
-    /// difference asked for, [`HeadingHold::difference`]; without one a
-    /// differential steers by its input schedule): a side without a
-    /// sprocket takes no torque; a drive's demand, a heading wanted or a
+    /// three `states`, the engine's envelope capping its drive, and the
+    /// driver's `steering`, if any (a belt-speed difference asked for,
+    /// [`HeadingHold::difference`]; without one a differential steers by
+    /// its input schedule): a side without a sprocket takes no torque; a drive's demand, a heading wanted or a
     /// steering input that is not finite stops the run
     /// ([`Drive::checked_torque`](crate::vehicle::Drive::checked_torque)),
     /// and so does a steering input outside `[−1, 1]`.
@@ -69,8 +85,14 @@ where
         &self,
         t: f64,
         hull: &TreeState<DH>,
-        (driveline, steering, states): (&Driveline, Option<&HeadingHold>, [f64; 3]),
+        driver: Driver<'_>,
     ) -> Result<DriveState, SimulationError> {
+        let Driver {
+            driveline,
+            steering,
+            envelope,
+            states,
+        } = driver;
         let qd = &hull.rates.planar;
         let asked = match steering {
             None => None,
@@ -88,23 +110,33 @@ where
             }
         }
         match driveline {
-            Driveline::Sides(drives) => {
-                self.drive_sides(t, drives, asked.unwrap_or(0.0), states, &mut state)?
-            }
-            Driveline::Differential(differential) => {
-                self.drive_differential(t, hull, differential, asked, states, &mut state)?
-            }
+            Driveline::Sides(drives) => self.drive_sides(
+                t,
+                (drives, envelope),
+                asked.unwrap_or(0.0),
+                states,
+                &mut state,
+            )?,
+            Driveline::Differential(differential) => self.drive_differential(
+                t,
+                hull,
+                (differential, envelope),
+                asked,
+                states,
+                &mut state,
+            )?,
         }
         Ok(state)
     }
 
     /// Each side's drive on its own sprocket, a speed drive's target
     /// trimmed by half the `difference` asked (the right's up, the
-    /// left's down).
+    /// left's down), each capped by a side's share of the `envelope` at
+    /// its own speed.
     fn drive_sides(
         &self,
         t: f64,
-        drives: &SideDrives,
+        (drives, envelope): (&SideDrives, Option<&EngineEnvelope>),
         difference: f64,
         states: [f64; 3],
         state: &mut DriveState,
@@ -115,12 +147,13 @@ where
             };
             // Right (index 0) outside in a left turn.
             let trim = [0.5, -0.5][s] * difference;
+            let cap = envelope.map_or(TorqueCap::NONE, |e| e.side(state.speed[s]));
             let (torque, rate) = drive.checked_torque_trimmed(
                 (t, trim),
                 state.speed[s],
                 sprocket.rolling_radius,
                 states[s],
-                TorqueCap::NONE,
+                cap,
             )?;
             state.torque[s] = torque;
             state.rates[s] = rate;
@@ -131,12 +164,14 @@ where
 
     /// The differential's drive halved to both sprockets, and its brakes
     /// or steer unit, steered by the belt-speed difference `asked` or
-    /// else by the input schedule.
+    /// else by the input schedule. The drive is capped by both sides'
+    /// share of the `envelope` at their mean speed, less what the steer
+    /// unit draws from the engine.
     fn drive_differential(
         &self,
         t: f64,
         hull: &TreeState<DH>,
-        differential: &Differential,
+        (differential, envelope): (&Differential, Option<&EngineEnvelope>),
         asked: Option<f64>,
         states: [f64; 3],
         state: &mut DriveState,
@@ -147,16 +182,6 @@ where
         let radius = 0.5 * (radii[0] + radii[1]);
         let omega = state.speed;
         let mean = 0.5 * (omega[0] + omega[1]);
-        let (torque, rate) = differential.drive.checked_torque_trimmed(
-            (t, 0.0),
-            mean,
-            radius,
-            states[0],
-            TorqueCap::NONE,
-        )?;
-        state.torque = [0.5 * torque; 2];
-        state.driven = torque * mean;
-        state.rates[0] = rate;
         let input = || -> Result<f64, SimulationError> {
             let s = (differential.input)(t);
             if s.is_nan() {
@@ -221,6 +246,25 @@ where
                 state.rates[1] = rate;
             }
         }
+        // The engine drives the steer unit too: what the unit draws
+        // (`Q Δω`, the steering brakes none) leaves the box that much less
+        // of the envelope's power at the mean speed.
+        let steering = state.driven;
+        let cap = envelope.map_or(TorqueCap::NONE, |e| {
+            let mut cap = e.differential(mean);
+            if steering > 0.0 && mean != 0.0 {
+                cap.value = (cap.value - steering / mean.abs()).max(0.0);
+            }
+            cap
+        });
+        let (torque, rate) =
+            differential
+                .drive
+                .checked_torque_trimmed((t, 0.0), mean, radius, states[0], cap)?;
+        state.torque[0] += 0.5 * torque;
+        state.torque[1] += 0.5 * torque;
+        state.driven += torque * mean;
+        state.rates[0] = rate;
         Ok(())
     }
 

@@ -23,8 +23,8 @@
 use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::{
-    DriveState, Driveline, DrivelineError, GroundForce, HeadingHold, LoadScratch, MassCentre,
-    SideDrives, SpatialDynamics, SteeringError, TreeState,
+    DriveState, Driveline, DrivelineError, Driver, EngineEnvelope, GroundForce, HeadingHold,
+    LoadScratch, MassCentre, SideDrives, SpatialDynamics, SteeringError, TreeState,
 };
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
@@ -38,6 +38,7 @@ pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL
     pub dynamics: SpatialDynamics<'m, H, DH, R, DR, L, DL>,
     pub(super) driveline: Driveline,
     pub(super) steering: Option<HeadingHold>,
+    pub(super) envelope: Option<EngineEnvelope>,
     closure: MultiplierOptions,
     scratch: LoadScratch,
 }
@@ -153,6 +154,7 @@ where
             dynamics,
             driveline: Driveline::Sides(SideDrives::free()),
             steering: None,
+            envelope: None,
             closure: MultiplierOptions::default(),
             scratch: LoadScratch::default(),
         }
@@ -209,14 +211,24 @@ where
         steerable(&self.driveline)
     }
 
-    /// The driveline, the steering and the driveline's states at `y`, as
-    /// [`SpatialDynamics::drive`] takes them.
-    pub(super) fn driver(&self, y: &[f64]) -> (&Driveline, Option<&HeadingHold>, [f64; 3]) {
-        (
-            &self.driveline,
-            self.steering.as_ref(),
-            self.driveline_states(y),
-        )
+    /// The system with its drive capped by an engine's full-load
+    /// `envelope` ([`EngineEnvelope`]: a side's cap on each side's drive,
+    /// twice it on a differential's); `None` takes the cap off.
+    pub fn with_envelope(mut self, envelope: Option<EngineEnvelope>) -> Self {
+        self.envelope = envelope;
+        self
+    }
+
+    /// The driveline, the steering, the engine's envelope and the
+    /// driveline's states at `y`, as [`SpatialDynamics::drive`] takes
+    /// them.
+    pub(super) fn driver(&self, y: &[f64]) -> Driver<'_> {
+        Driver {
+            driveline: &self.driveline,
+            steering: self.steering.as_ref(),
+            envelope: self.envelope.as_ref(),
+            states: self.driveline_states(y),
+        }
     }
 
     /// Where the trees end in the state and the ground's deflections

@@ -1,0 +1,328 @@
+//! The mirrored light carrier (`Twin`) driven straight in 3-D over a bump
+//! across its whole width, against the planar model of one of its sides
+//! driven the same way: both start from the same assembled rest, settle,
+//! ramp their belts to 2 m/s and cross a cosine bump 60 mm high and 1 m
+//! long. The spatial run must reproduce the planar one (#41's check:
+//! pitch within 1 mrad, heave within 0.5 mm, sprocket torque within
+//! 0.5 %), and by symmetry neither roll, yaw nor drift sideways (below
+//! 1e-9).
+//!
+//! The two are separate programs: the planar vehicle's generated closed
+//! chain with coordinate partitioning and its planar contacts, against
+//! the three floating trees, the ground split across the shoe's width and
+//! the contacts in space. Their right-hand sides agree to 1e-9 at a state
+//! (`spatial_dynamics`); this is the same over a run, through the
+//! integrator, the drive controllers and the bump. Both are integrated by
+//! Bogacki-Shampine at 1e-6 with steps of at most 1 ms, so each run's own
+//! error is far below the bounds, and the bounds measure the models.
+//!
+//! The same carrier through an engine's envelope (a power and a torque
+//! cap per side, [`EngineEnvelope`]) accelerates along the planar run's
+//! line until the power caps it, both with a drive on each side and
+//! through a differential (which takes twice a side's cap at the
+//! sprockets' mean speed).
+
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::spatial_vehicle::{
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, SideDrives, SpatialSimulated,
+    SpatialVehicleSystem, SteerUnit,
+};
+use trackgen::system::Simulated;
+use trackgen::terrain::Terrain;
+use trackgen::terrain::field::{FieldShape, HeightField};
+use trackgen::vehicle::{Drive, Powertrain, Vehicle, VehicleConfig, build, speed_ramp};
+
+use crate::support::twin::Twin;
+
+/// When the belts start, s; how long they take to reach the speed, s; the
+/// speed, m/s.
+const SETTLE: f64 = 0.5;
+const RAMP: f64 = 1.0;
+const SPEED: f64 = 2.0;
+/// How long each run lasts, s: the rear idler leaves the bump by 3.9 s.
+const DURATION: f64 = 4.4;
+/// The rows' interval, s.
+const EVERY: f64 = 0.01;
+
+/// The bump across the whole width: 60 mm high, 1 m long, its crest 2.5 m
+/// ahead of the sprocket's start.
+fn course() -> Terrain {
+    Terrain::Bump {
+        centre: 2.5,
+        width: 1.0,
+        height: 0.06,
+    }
+}
+
+/// Bogacki-Shampine at 1e-6, steps of at most 1 ms.
+const METHOD: Integrator = Integrator::Bs23 {
+    rtol: 1e-6,
+    atol: 1e-6,
+    max_step: 1e-3,
+};
+
+/// What both runs show at a row: the frame's height (m), its pitch (rad),
+/// each sprocket's torque (N m, planar sense) and speed (rad/s), and, from
+/// the spatial run, the roll, the heading and the sideways place of the
+/// hull (rad, rad, m).
+#[derive(Debug, Clone, Copy, Default)]
+struct Row {
+    height: f64,
+    pitch: f64,
+    torque: [f64; 2],
+    speed: [f64; 2],
+    forward: f64,
+    across: [f64; 3],
+}
+
+/// The planar side on `terrain` driven by `drive`, a configuration change
+/// first: its rows.
+fn planar(drive: Drive, change: impl FnOnce(&mut VehicleConfig)) -> Vec<Row> {
+    let mut config = Twin::declared_config(course(), drive);
+    change(&mut config);
+    let mut system = build::<Twin>(config).expect("builds");
+    let columns = system.columns();
+    let at = |name: &str| {
+        columns
+            .iter()
+            .position(|c| c == name)
+            .unwrap_or_else(|| panic!("no column {name}"))
+    };
+    let (y_at, pitch_at, x_at) = (at("y"), at("pitch"), at("x"));
+    let (torque_at, speed_at) = (at("sprocket_torque"), at("sprocket_speed"));
+    let mut y = system.initial_state();
+    let mut stepper = METHOD.stepper(system.dimension());
+    let (mut t, mut rows, mut row) = (0.0, Vec::new(), Vec::new());
+    for k in 0..=(DURATION / EVERY).round() as usize {
+        let next = k as f64 * EVERY;
+        while t < next {
+            stepper
+                .step(&mut system, &mut t, &mut y, next)
+                .expect("steps");
+            if system
+                .after_step(t, y.as_mut_slice(), &mut |_| {})
+                .expect("after a step")
+            {
+                stepper.restart();
+            }
+        }
+        row.clear();
+        system.observe(t, y.as_slice(), &mut row).expect("observes");
+        rows.push(Row {
+            height: row[y_at],
+            pitch: row[pitch_at],
+            torque: [row[torque_at]; 2],
+            speed: [row[speed_at]; 2],
+            forward: row[x_at],
+            across: [0.0; 3],
+        });
+    }
+    rows
+}
+
+/// The spatial vehicle on the bump extruded across the width, driven
+/// through `driveline` (and an engine's `envelope`): its rows.
+fn spatial(driveline: Driveline, envelope: Option<EngineEnvelope>) -> Vec<Row> {
+    let field = HeightField {
+        base: FieldShape::Profile(course()),
+        ..HeightField::level()
+    };
+    let mut system = Twin::spatial(Twin::declared_laws(), field).expect("the spatial vehicle");
+    let mut y = system.assembled(&course()).expect("assembled");
+    system.set_driveline(driveline).expect("a driveline");
+    system.set_envelope(envelope);
+    let mut stepper = METHOD.stepper(system.dimension());
+    let (mut t, mut rows) = (0.0, Vec::new());
+    for k in 0..=(DURATION / EVERY).round() as usize {
+        let next = k as f64 * EVERY;
+        while t < next {
+            stepper
+                .step(&mut system, &mut t, &mut y, next)
+                .expect("steps");
+        }
+        let out = system.outputs(t, y.as_slice()).expect("outputs");
+        let (hull, ..) = system.states(y.as_slice());
+        let root = hull.pose.origin;
+        rows.push(Row {
+            height: root.z,
+            pitch: out.pitch,
+            torque: [out.sides[0].sprocket_torque, out.sides[1].sprocket_torque],
+            speed: [out.sides[0].sprocket_speed, out.sides[1].sprocket_speed],
+            forward: root.x,
+            across: [out.roll, out.heading, root.y],
+        });
+    }
+    rows
+}
+
+/// Each row's height from the first row's.
+fn heaved(rows: &mut [Row]) {
+    let start = rows[0].height;
+    for r in rows {
+        r.height -= start;
+    }
+}
+
+/// The largest difference between the two runs' `what`, each row's
+/// (scaled by `scale`).
+fn largest(planar: &[Row], spatial: &[Row], what: impl Fn(&Row) -> f64) -> f64 {
+    planar
+        .iter()
+        .zip(spatial)
+        .map(|(p, s)| (what(p) - what(s)).abs())
+        .fold(0.0, f64::max)
+}
+
+fn speed_drive() -> Drive {
+    Twin::speed_drive(speed_ramp(SETTLE, RAMP, SPEED))
+}
+
+/// How far apart two runs are: the frame's heave (m) and pitch (rad),
+/// each sprocket's torque (N m), the hull's place along (m); and the
+/// planar run's largest torque (N m) and rise (m).
+#[derive(Debug)]
+struct Apart {
+    heave: f64,
+    pitch: f64,
+    torque: [f64; 2],
+    forward: f64,
+    most_torque: f64,
+    rise: f64,
+}
+
+fn apart(mut plane: Vec<Row>, mut space: Vec<Row>) -> Apart {
+    heaved(&mut plane);
+    heaved(&mut space);
+    let start = [plane[0].forward, space[0].forward];
+    let apart = Apart {
+        heave: largest(&plane, &space, |r| r.height),
+        pitch: largest(&plane, &space, |r| r.pitch),
+        torque: [0, 1].map(|s| largest(&plane, &space, |r| r.torque[s])),
+        forward: plane
+            .iter()
+            .zip(&space)
+            .map(|(p, s)| ((p.forward - start[0]) - (s.forward - start[1])).abs())
+            .fold(0.0, f64::max),
+        most_torque: plane.iter().map(|r| r.torque[0].abs()).fold(0.0, f64::max),
+        rise: plane.iter().map(|r| r.height).fold(0.0, f64::max),
+    };
+    println!("{apart:?}");
+    let asymmetry = space
+        .iter()
+        .flat_map(|r| r.across)
+        .map(f64::abs)
+        .fold(0.0, f64::max);
+    println!("roll, heading and sideways place at most {asymmetry:.1e}");
+    assert!(
+        asymmetry <= 1e-9,
+        "the mirrored run leaves its plane: {asymmetry}"
+    );
+    apart
+}
+
+/// #41's bounds: pitch within 1 mrad, heave within 0.5 mm, each
+/// sprocket's torque within 0.5 % of the largest.
+fn within_bounds(apart: &Apart) {
+    assert!(
+        apart.rise > 0.01,
+        "the bump lifts the frame: {} m",
+        apart.rise
+    );
+    assert!(apart.heave <= 0.5e-3, "heave apart by {} m", apart.heave);
+    assert!(apart.pitch <= 1e-3, "pitch apart by {} rad", apart.pitch);
+    for t in apart.torque {
+        assert!(
+            t <= 5e-3 * apart.most_torque,
+            "sprocket torque apart by {t} N m of {}",
+            apart.most_torque
+        );
+    }
+}
+
+#[test]
+fn a_mirrored_vehicle_crosses_a_bump_as_the_planar_one() {
+    let plane = planar(speed_drive(), |_| {});
+    let space = spatial(
+        Driveline::Sides(SideDrives {
+            right: speed_drive(),
+            left: speed_drive(),
+        }),
+        None,
+    );
+    within_bounds(&apart(plane, space));
+}
+
+/// A side's power, W, and torque, N m: the torque caps the start (1.2
+/// m/s² where the belts ask 2), the power from 1.3 m/s.
+const POWER: f64 = 3e3;
+const MAX_TORQUE: f64 = 400.0;
+
+/// Through an engine's envelope (a power and torque limit), with a drive
+/// on each side and through a differential with a steer unit asked to go
+/// straight: the envelope caps the drive as the planar one's caps its
+/// side, so the runs agree to the same bounds, and the hull's place
+/// along to 1 mm. The planar run's driving torque reaches the cap and
+/// never passes it (the torque cap from 0.6 s, the power's from 2.0 s
+/// until the belts reach 2 m/s at 3.4 s).
+#[test]
+fn a_mirrored_vehicle_on_an_engine_s_envelope_runs_as_the_planar_one() {
+    let powertrain = Powertrain::Power {
+        power: POWER,
+        max_torque: MAX_TORQUE,
+    };
+    let plane = planar(speed_drive(), |c| c.powertrain = Some(powertrain.clone()));
+    let cap = |r: &Row| MAX_TORQUE.min(POWER / r.speed[0].abs());
+    // Driving (the torque the way the sprocket turns); braking past the
+    // target is the brakes', not the engine's.
+    let over = plane
+        .iter()
+        .filter(|r| r.torque[0] * r.speed[0] > 0.0)
+        .map(|r| r.torque[0].abs() - cap(r))
+        .fold(f64::NEG_INFINITY, f64::max);
+    println!("the planar torque's largest excess over the cap: {over:.3e} N m");
+
+    assert!(over <= 1e-9 * MAX_TORQUE, "the cap is passed by {over} N m");
+    assert!(
+        over >= -1e-6 * MAX_TORQUE,
+        "the cap never bites: {over} N m"
+    );
+    let envelope = || Some(EngineEnvelope::new(powertrain.clone()).expect("an envelope"));
+    let sides = Driveline::Sides(SideDrives {
+        right: speed_drive(),
+        left: speed_drive(),
+    });
+    let Drive::Speed {
+        proportional,
+        integral,
+        max_torque,
+        ..
+    } = speed_drive()
+    else {
+        unreachable!("a speed drive")
+    };
+    let differential = Driveline::Differential(Differential {
+        drive: Drive::Speed {
+            target: Box::new(speed_ramp(SETTLE, RAMP, SPEED)),
+            proportional: 2.0 * proportional,
+            integral: 2.0 * integral,
+            max_torque: 2.0 * max_torque,
+        },
+        steer: DifferentialSteer::Ratio(SteerUnit {
+            min_ratio: 2.0,
+            proportional: 0.5 * proportional,
+            integral: 0.5 * integral,
+            max_torque,
+        }),
+        input: Box::new(|_| 0.0),
+    });
+    for (what, driveline) in [("sides", sides), ("differential", differential)] {
+        println!("{what}:");
+        let apart = apart(plane.clone(), spatial(driveline, envelope()));
+        within_bounds(&apart);
+        assert!(
+            apart.forward <= 1e-3,
+            "{what}: apart along by {} m",
+            apart.forward
+        );
+    }
+}
