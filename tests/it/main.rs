@@ -66,6 +66,7 @@ mod spatial_steering;
 mod spatial_straight;
 mod spatial_tree;
 mod spatial_turn;
+mod spatial_turning;
 mod spatial_vehicle;
 mod stands_alone;
 mod steering;

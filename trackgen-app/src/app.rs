@@ -15,7 +15,7 @@ use crate::cli::RunArgs;
 use crate::fmu::FmuArgs;
 use crate::mobility::MobilityArgs;
 use crate::modes::ModesArgs;
-use crate::offered::Offered;
+use crate::offered::{Offered, SpatialEvents};
 use crate::spatial::SpatialArgs;
 use crate::steer::SteerArgs;
 
@@ -86,7 +86,7 @@ impl Entry {
                 gauge: None,
                 steer_ratios: Vec::new(),
                 turn_runs: None,
-                side_slope: None,
+                spatial_events: None,
                 spatial_modes: None,
             },
             dispatch: dispatch::<V>,
@@ -103,8 +103,18 @@ impl Entry {
         };
         entry.offered.turn_runs = Some(crate::turn_runs::run_turns::<V>);
         entry.offered.spatial_modes = Some(crate::spatial_modes::modes_at_rest::<V>);
-        entry.offered.side_slope = Some(|settings| {
-            trackgen::mobility::side_slope::steepest::<V>(settings, V::declared_laws())
+        entry.offered.spatial_events = Some(SpatialEvents {
+            side_slope: |settings| {
+                trackgen::mobility::side_slope::steepest::<V>(settings, V::declared_laws())
+            },
+            smallest_radius: |settings, ratio| {
+                trackgen::mobility::turning::smallest_radius::<V>(
+                    settings,
+                    V::declared_laws(),
+                    ratio,
+                )
+            },
+            pivot: |settings| trackgen::mobility::turning::pivot::<V>(settings, V::declared_laws()),
         });
         entry
     }

@@ -3,6 +3,7 @@
 //! gauge.
 
 use trackgen::mobility::search::Search;
+use trackgen::mobility::turning::{SmallestTurn, SteadyTurnRun};
 use trackgen::mobility::{EventError, EventSettings, Published};
 use trackgen::vehicle::Powertrain;
 
@@ -26,9 +27,10 @@ pub struct Offered {
     /// m/s), for a vehicle declared with both tracks: what `steer
     /// --spatial` runs.
     pub turn_runs: Option<TurnRuns>,
-    /// The side-slope event of its spatial model, for a vehicle declared
-    /// with both tracks: what `mobility` runs as `side-slope`.
-    pub side_slope: Option<SideSlopeSearch>,
+    /// The mobility events of its spatial model, for a vehicle declared
+    /// with both tracks: what `mobility` runs as `side-slope` and
+    /// `turning`.
+    pub spatial_events: Option<SpatialEvents>,
     /// The spatial model's modes at rest, for a vehicle declared with
     /// both tracks: what `modes --spatial` finds.
     pub spatial_modes: Option<fn() -> Result<SpatialModes, String>>,
@@ -38,36 +40,27 @@ pub struct Offered {
 /// left where it settled (m/s², rad/s²).
 pub type SpatialModes = (f64, Vec<trackgen::analysis::SpatialMode>);
 
-/// The steepest side slope a spatial vehicle holds under its declared
-/// laws (`trackgen::mobility::side_slope::steepest`).
-pub type SideSlopeSearch = fn(&EventSettings) -> Result<Search, EventError>;
+/// The mobility events a spatial vehicle answers under its declared
+/// laws (`trackgen::mobility::{side_slope, turning}`).
+#[derive(Clone, Copy)]
+pub struct SpatialEvents {
+    /// The steepest side slope held (`side_slope::steepest`).
+    pub side_slope: fn(&EventSettings) -> Result<Search, EventError>,
+    /// The smallest radius at a crawl at full steer, through a steer unit
+    /// of the ratio given or else the braked differential
+    /// (`turning::smallest_radius`).
+    pub smallest_radius: fn(&EventSettings, Option<f64>) -> Result<SmallestTurn, EventError>,
+    /// The pivot turn (`turning::pivot`).
+    pub pivot: fn(&EventSettings) -> Result<RunTurn, EventError>,
+}
 
 /// Runs steady turns of a spatial vehicle at belt speeds (right, left,
 /// m/s), each its result or its error in words.
 pub type TurnRuns = fn(&[[f64; 2]]) -> Vec<Result<RunTurn, String>>;
 
-/// What a steady turn of the spatial vehicle showed, averaged over time.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RunTurn {
-    /// The yaw rate, rad/s (left positive).
-    pub yaw_rate: f64,
-    /// The centre of mass's horizontal speed, m/s.
-    pub speed: f64,
-    /// The path's radius, m: the speed over the yaw rate's size.
-    pub radius: f64,
-    /// The belts' speeds (right, left), m/s, forward positive.
-    pub belts: [f64; 2],
-    /// The sprockets' torques (right, left), N m, planar sense (driving
-    /// forward negative).
-    pub torques: [f64; 2],
-    /// The sprockets' powers (right, left), W.
-    pub powers: [f64; 2],
-    /// When the stretch averaged ended, s.
-    pub until: f64,
-    /// Whether the turn was steady: its yaw rate within 1 % of the
-    /// stretch's before.
-    pub steady: bool,
-}
+/// What a steady turn of the spatial vehicle showed (the runtime's
+/// [`SteadyTurnRun`]).
+pub type RunTurn = SteadyTurnRun;
 
 impl Offered {
     /// Its name.

@@ -362,9 +362,9 @@ fn compare_in_space(
         .collect();
     say!(
         "the same turns in 3-D (both tracks, the hull in space; each sprocket held at the theory's belt speed, settled {} s, ramped over {} s, averaged over {} s once two such stretches' yaw rates agree to 1 %):",
-        crate::turn_runs::SETTLE,
-        crate::turn_runs::RAMP,
-        crate::turn_runs::WINDOW
+        trackgen::mobility::turning::SETTLE,
+        trackgen::mobility::turning::RAMP,
+        trackgen::mobility::turning::WINDOW
     );
     say!(
         "  asked        radius m (theory)    yaw rad/s (theory)    torque out/in kN m (theory)          power out/in kW   steady by"

@@ -198,6 +198,37 @@ fn mobility_finds_the_steepest_side_slope_in_3d() {
     assert!(against.contains(&ratio), "{against}");
 }
 
+/// `mobility --quick --events turning --json` for the M113: the smallest
+/// radius at a crawl through its steer unit's first-range ratio (2.31,
+/// `Entry::steer_ratios`) beside its radius without slip, `B/2 (ρ + 1)/(ρ
+/// − 1)` at its 2.159 m gauge (to the printed digits), which slip only
+/// opens (measured 3.61 m against 2.73 m); and the pivot at ±1 m/s, its
+/// yaw rate below the kinematic `2 v / B` (measured 0.685 of 0.926
+/// rad/s), its power positive. Each run steady (`=`).
+#[test]
+fn mobility_turns_the_m113_in_3d() {
+    let dir = scratch("mobility-turning");
+    let (stdout, results) = quick_json("turning", &dir);
+    assert_eq!(results.len(), 4, "{stdout}");
+    let value = |quantity: &str| {
+        let row = results
+            .iter()
+            .find(|r| r["quantity"] == quantity)
+            .unwrap_or_else(|| panic!("no {quantity}: {stdout}"));
+        assert_eq!(row["relation"], "=", "{row}");
+        assert_eq!(row["event"], "turning");
+        row["value"].as_f64().unwrap()
+    };
+    let half = 0.5 * 2.159;
+    let kinematic = value("radius without slip");
+    assert!((kinematic - half * 3.31 / 1.31).abs() < 1e-3, "{kinematic}");
+    let radius = value("smallest turning radius");
+    assert!(radius > kinematic && radius < 2.0 * kinematic, "{radius}");
+    let yaw_rate = value("pivot turn's yaw rate");
+    assert!(yaw_rate > 0.0 && yaw_rate < 1.0 / half, "{yaw_rate}");
+    assert!(value("pivot turn's power") > 0.0);
+}
+
 /// `mobility --slice K/N` and `--merge`: two slices of the quick set, run
 /// apart and merged, give the event CSVs and the trials of the whole set
 /// run at once (every task is deterministic; the wall times aside); a

@@ -64,7 +64,7 @@ use trackgen::vehicle::Vehicle;
 use crate::cli::{named, tolerance};
 use crate::offered::Offered;
 use files::write_all;
-use tasks::{EVENTS, Row, SIDE_SLOPE, event_name, tasks};
+use tasks::{EVENTS, Row, SPATIAL, event_name, tasks};
 use text::{json, print_against, print_summary};
 
 /// The standard pitch-plane mobility events for the vehicle, each a limit
@@ -168,22 +168,28 @@ fn run<V: Vehicle>(
             return ExitCode::FAILURE;
         }
     };
-    // The side slope is a 3-D event: in the default set where the
-    // vehicle has a spatial model, refused where it is asked for and
-    // there is none.
+    // The side slope and the turns are 3-D events: in the default set
+    // where the vehicle has a spatial model, refused where one is asked
+    // for and there is none.
     let events: Vec<&'static str> = args.events.clone().unwrap_or_else(|| {
         (EVENTS.iter().copied())
-            .filter(|e| *e != SIDE_SLOPE || entry.side_slope.is_some())
+            .filter(|e| !SPATIAL.contains(e) || entry.spatial_events.is_some())
             .collect()
     });
-    if events.contains(&SIDE_SLOPE) && entry.side_slope.is_none() {
+    if let (Some(event), None) = (
+        events.iter().find(|e| SPATIAL.contains(e)),
+        entry.spatial_events,
+    ) {
         eprintln!(
-            "error: the side-slope event runs the vehicle in 3-D: `{name}` is declared without a \
+            "error: the {event} event runs the vehicle in 3-D: `{name}` is declared without a \
              `tracks` block"
         );
         return ExitCode::FAILURE;
     }
-    let work = tasks::<V>(&settings, &footprint, &events, args.quick, entry.side_slope);
+    let spatial = entry
+        .spatial_events
+        .map(|events| (events, entry.steer_ratios.first().copied()));
+    let work = tasks::<V>(&settings, &footprint, &events, args.quick, spatial);
     let dir = args
         .out
         .clone()

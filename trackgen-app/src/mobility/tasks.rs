@@ -11,10 +11,10 @@ use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::Vehicle;
 use trackgen_draw::vehicle;
 
-use crate::offered::SideSlopeSearch;
+use crate::offered::SpatialEvents;
 
 /// Every event, in the order they are reported.
-pub(super) const EVENTS: [&str; 9] = [
+pub(super) const EVENTS: [&str; 10] = [
     "ride",
     "half-round",
     "step",
@@ -24,10 +24,15 @@ pub(super) const EVENTS: [&str; 9] = [
     "grade",
     "soil",
     SIDE_SLOPE,
+    TURNING,
 ];
 
 /// The side slope's event, run in 3-D.
 pub(super) const SIDE_SLOPE: &str = trackgen::mobility::side_slope::EVENT;
+/// The turning event, run in 3-D.
+pub(super) const TURNING: &str = trackgen::mobility::turning::EVENT;
+/// The events only a vehicle with a spatial model answers.
+pub(super) const SPATIAL: [&str; 2] = [SIDE_SLOPE, TURNING];
 
 pub(super) fn event_name(s: &str) -> Result<&'static str, String> {
     EVENTS
@@ -152,7 +157,7 @@ pub(super) fn tasks<'a, V: Vehicle>(
     footprint: &'a Footprint,
     events: &[&'static str],
     quick: bool,
-    side_slope: Option<SideSlopeSearch>,
+    spatial: Option<(SpatialEvents, Option<f64>)>,
 ) -> Vec<Task<'a>> {
     const INCH: f64 = 0.0254;
     let pick = |all: &'static [f64], one: &'static [f64]| if quick { one } else { all };
@@ -257,12 +262,28 @@ pub(super) fn tasks<'a, V: Vehicle>(
             SIDE_SLOPE => {
                 // `mobility` refuses the event for a vehicle without a
                 // spatial model before it makes the tasks.
-                if let Some(search) = side_slope {
+                if let Some((events, _)) = spatial {
                     out.push(task(
                         None,
                         quantity::STEEPEST_SIDE_SLOPE,
                         "rise over run",
-                        Box::new(move || search(settings).map(Found::Limit)),
+                        Box::new(move || (events.side_slope)(settings).map(Found::Limit)),
+                    ));
+                }
+            }
+            TURNING => {
+                if let Some((events, ratio)) = spatial {
+                    out.push(task(
+                        None,
+                        quantity::SMALLEST_TURNING_RADIUS,
+                        "m",
+                        Box::new(move || smallest_turn(events, settings, ratio)),
+                    ));
+                    out.push(task(
+                        None,
+                        quantity::PIVOT_YAW_RATE,
+                        "rad/s",
+                        Box::new(move || pivot_turn(events, settings)),
                     ));
                 }
             }
@@ -352,6 +373,75 @@ fn soil_curve<V: Vehicle>(
     Ok(Found::Curve {
         runs: curve.len(),
         points,
+        search: None,
+    })
+}
+
+/// How a steady turn's answer stands: `=`, or `unsteady` where its yaw
+/// rate had not settled by the longest run.
+fn steady(run: &trackgen::mobility::turning::SteadyTurnRun) -> &'static str {
+    if run.steady { "=" } else { "unsteady" }
+}
+
+/// The smallest radius at a crawl at full steer (the steer unit's
+/// `ratio`, or the braked differential's), and its radius without slip.
+fn smallest_turn(
+    events: SpatialEvents,
+    settings: &EventSettings,
+    ratio: Option<f64>,
+) -> Result<Found, EventError> {
+    let turn = (events.smallest_radius)(settings, ratio)?;
+    let parameter = Some(match ratio {
+        Some(rho) => ("minimum steer ratio", rho, ""),
+        None => ("inner belt held", 0.0, "m/s"),
+    });
+    let relation = steady(&turn.run);
+    Ok(Found::Curve {
+        points: vec![
+            (
+                parameter,
+                quantity::SMALLEST_TURNING_RADIUS,
+                turn.run.radius,
+                relation,
+                "m",
+            ),
+            (
+                parameter,
+                quantity::RADIUS_WITHOUT_SLIP,
+                turn.kinematic,
+                "=",
+                "m",
+            ),
+        ],
+        runs: 1,
+        search: None,
+    })
+}
+
+/// The pivot turn at the crawl's belt speeds: its yaw rate and the
+/// power at both sprockets.
+fn pivot_turn(events: SpatialEvents, settings: &EventSettings) -> Result<Found, EventError> {
+    let run = (events.pivot)(settings)?;
+    let parameter = Some(("belts at ±", settings.crawl, "m/s"));
+    let relation = steady(&run);
+    Ok(Found::Curve {
+        points: vec![
+            (
+                parameter,
+                quantity::PIVOT_YAW_RATE,
+                run.yaw_rate,
+                relation,
+                "rad/s",
+            ),
+            (
+                parameter,
+                quantity::PIVOT_POWER,
+                (run.powers[0] + run.powers[1]) / 1e3,
+                relation,
+                "kW",
+            ),
+        ],
+        runs: 1,
         search: None,
     })
 }

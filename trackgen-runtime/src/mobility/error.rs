@@ -15,7 +15,7 @@ pub enum EventError {
     #[error("{event}: {what} must be {range}, got {value}")]
     Setting {
         /// The event: `ride`, `half-round`, `step`, `gap`, `ditch`,
-        /// `barrier`, `grade` or `side-slope`.
+        /// `barrier`, `grade`, `side-slope` or `turning`.
         event: &'static str,
         /// The setting.
         what: &'static str,

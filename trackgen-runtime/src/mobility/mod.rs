@@ -8,15 +8,18 @@
 //! steepest grade climbed and the speed on grades at full power, and the
 //! drawbar pull against slip and the motion resistance on a soft soil;
 //! and, in 3-D for a vehicle declared with both tracks, the steepest side
-//! slope held driving along it ([`side_slope`]).
+//! slope held driving along it ([`side_slope`]), the smallest radius
+//! turned at a crawl and the pivot turn ([`turning`]).
 //!
 //! Every event is a function generic over [`Vehicle`](crate::vehicle::Vehicle),
 //! driven by the vehicle's [`Powertrain`](crate::vehicle::Powertrain) through its own speed
 //! controller ([`EventSettings`]): the engine, not per-vehicle code,
 //! decides the speeds reached (the side slope, generic over
 //! [`SpatialVehicleSystem`](crate::spatial_vehicle::SpatialVehicleSystem),
-//! runs on the sides' speed drives: the spatial model has no engine yet,
-//! and at a crawl across a slope the grip is what is asked). A limit is found by bracketing and
+//! runs on the sides' speed drives: at a crawl across a slope the grip
+//! is what is asked; the turns on them capped by the powertrain's
+//! envelope, [`EngineEnvelope`](crate::spatial_vehicle::EngineEnvelope)).
+//! A limit is found by bracketing and
 //! bisection ([`search`]) and returned with the trials that found it; a
 //! run that fails (the integrator gives up, the ride's rows are refused)
 //! is an [`EventError::Run`], never taken for a limit, and a vehicle that
@@ -33,6 +36,7 @@ mod runs;
 pub mod search;
 pub mod side_slope;
 pub mod soil;
+pub mod turning;
 
 pub use error::EventError;
 pub use published::{AGREEMENT, Comparison, Published};

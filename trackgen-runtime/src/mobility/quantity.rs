@@ -21,3 +21,15 @@ pub const HIGHEST_BARRIER: &str = "highest barrier";
 /// The steepest side slope held driving along it, rise over run
 /// ([`side_slope::steepest`](super::side_slope::steepest)).
 pub const STEEPEST_SIDE_SLOPE: &str = "steepest side slope";
+/// The smallest radius turned at a crawl at full steer, m
+/// ([`turning::smallest_radius`](super::turning::smallest_radius)).
+pub const SMALLEST_TURNING_RADIUS: &str = "smallest turning radius";
+/// That turn's radius without slip, m
+/// ([`SmallestTurn::kinematic`](super::turning::SmallestTurn::kinematic)).
+pub const RADIUS_WITHOUT_SLIP: &str = "radius without slip";
+/// The pivot turn's yaw rate at the crawl's belt speeds, rad/s
+/// ([`turning::pivot`](super::turning::pivot)).
+pub const PIVOT_YAW_RATE: &str = "pivot turn's yaw rate";
+/// The pivot turn's power at both sprockets, kW
+/// ([`turning::pivot`](super::turning::pivot)).
+pub const PIVOT_POWER: &str = "pivot turn's power";

@@ -112,13 +112,15 @@ where
             .iter()
             .filter(|c| c.other.is_none())
             .map(|c| {
+                // The evaluation keeps a ground point's normal force where
+                // the point has a tangential state (stiction, soil); under
+                // regularised friction it has none, and the law gives it
+                // (its normal force does not depend on that state).
                 let normal = match c.ground_point_slot(points) {
-                    Some(slot) => work
-                        .ground_normal
-                        .get(slot)
-                        .copied()
-                        .flatten()
-                        .unwrap_or(0.0),
+                    Some(slot) => match work.ground_normal.get(slot).copied() {
+                        Some(kept) => kept.unwrap_or(0.0),
+                        None => self.config.ground.respond(c, 0.0).0.normal,
+                    },
                     None => corners.respond(c).normal,
                 };
                 (c.point, normal)
