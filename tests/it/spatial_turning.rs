@@ -23,6 +23,7 @@ use trackgen::analysis::{EquilibriumOptions, equilibrium};
 use trackgen::mobility::turning::{SteadyTurnRun, pivot, smallest_radius};
 use trackgen::mobility::{EventError, EventSettings};
 use trackgen::spatial::SpatialVehicle;
+use trackgen::spatial_vehicle::SpatialVehicleSystem;
 use trackgen::steering::{SkidSteer, SteadyTurn, TrackLoad};
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Powertrain, Vehicle, VehicleDynamics};
@@ -171,6 +172,48 @@ fn a_steer_ratio_out_of_range_is_refused() {
                 assert!(what.contains("steer ratio"), "{what}");
             }
             other => panic!("a ratio of {ratio} was not refused: {other:?}"),
+        }
+    }
+}
+
+/// Cornering (`mobility::cornering::corner`) on the light carrier's
+/// regularised ground (`μ` 0.7), through its side drives: at 2 m/s on a
+/// 10 m circle (0.4 m/s², 6 % of `μ g`) it holds the circle, its path's
+/// radius within the event's 10 % and its lateral acceleration `v²/R`
+/// within 10 % (measured 10.02 m, 0.402 m/s²); at 10 m/s on the same
+/// circle (10 m/s², past the `μ g` = 6.9 m/s² that the ground's friction
+/// allows any steady turn: the closed form) it cannot (it slid out to a
+/// 38 m path at 9.5 m/s). A speed, a radius or a steer ratio out of
+/// range is refused before anything runs.
+#[test]
+fn a_corner_is_held_below_the_grip_and_not_past_it() {
+    use trackgen::mobility::cornering::corner;
+    let settings = settings();
+    let laws = Twin::declared_laws();
+    let (slow, fast) = std::thread::scope(|scope| {
+        let fast = scope.spawn(|| corner::<Twin>(&settings, laws, (10.0, None), 10.0));
+        let slow = corner::<Twin>(&settings, laws, (10.0, None), 2.0).expect("the slow corner");
+        (slow, fast.join().unwrap().expect("the fast corner"))
+    });
+    println!("slow {slow:?}, {:.3} m/s²", slow.lateral_acceleration());
+    println!("fast {fast:?}, {:.3} m/s²", fast.lateral_acceleration());
+    assert!(slow.held, "{slow:?}");
+    assert!((slow.radius / 10.0 - 1.0).abs() <= 0.1, "{slow:?}");
+    assert!(
+        (slow.lateral_acceleration() / 0.4 - 1.0).abs() <= 0.1,
+        "{slow:?}"
+    );
+    assert!(!fast.held, "held past the grip: {fast:?}");
+    let g = trackgen::ride::G;
+    assert!(10.0 * 10.0 / 10.0 > MU * g);
+    for (circle, speed) in [
+        ((0.0, None), 2.0),
+        ((10.0, None), f64::NAN),
+        ((10.0, Some(1.0)), 2.0),
+    ] {
+        match corner::<Twin>(&settings, laws, circle, speed) {
+            Err(EventError::Setting { event, .. }) => assert_eq!(event, "cornering"),
+            other => panic!("{circle:?} at {speed} was not refused: {other:?}"),
         }
     }
 }

@@ -115,6 +115,9 @@ impl Entry {
                 )
             },
             pivot: |settings| trackgen::mobility::turning::pivot::<V>(settings, V::declared_laws()),
+            cornering: |settings, circle| {
+                trackgen::mobility::cornering::fastest::<V>(settings, V::declared_laws(), circle)
+            },
         });
         entry
     }

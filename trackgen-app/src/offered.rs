@@ -2,6 +2,7 @@
 //! its name, its powertrain, the real vehicle's published figures and
 //! gauge.
 
+use trackgen::mobility::cornering::Circle;
 use trackgen::mobility::search::Search;
 use trackgen::mobility::turning::{SmallestTurn, SteadyTurnRun};
 use trackgen::mobility::{EventError, EventSettings, Published};
@@ -52,6 +53,10 @@ pub struct SpatialEvents {
     pub smallest_radius: fn(&EventSettings, Option<f64>) -> Result<SmallestTurn, EventError>,
     /// The pivot turn (`turning::pivot`).
     pub pivot: fn(&EventSettings) -> Result<RunTurn, EventError>,
+    /// The fastest steady turn on a circle of the radius given (m),
+    /// through a steer unit of the ratio given or else the side drives
+    /// (`cornering::fastest`).
+    pub cornering: fn(&EventSettings, Circle) -> Result<Search, EventError>,
 }
 
 /// Runs steady turns of a spatial vehicle at belt speeds (right, left,

@@ -25,7 +25,7 @@ use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
     Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideDrives,
-    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteerUnit, SteeringBrakes,
+    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
 use trackgen::vehicle::{Drive, speed_ramp};
@@ -137,9 +137,8 @@ const BRAKE_DEAD_BAND: f64 = 0.05;
 
 /// The driveline `args` ask for, with the vehicle's speed drive toward
 /// `target` (m/s against time): a differential's controller takes twice
-/// a side's gains and limit, a steer unit half a side's gains (its
-/// torque acts on both sprockets, `±Q`, so the speed difference moves as
-/// under the two side drives) and a side's limit, steering brakes twice a
+/// a side's gains and limit, a steer unit half a side's gains and a
+/// side's limit ([`Differential::with_steer_unit`]), steering brakes twice a
 /// side's limit with the parking brake's elastic stage on half the
 /// vehicle's mass reflected to a sprocket, fully on when the driver's
 /// error (the gauge times the yaw rate against the difference asked) is
@@ -162,14 +161,26 @@ fn driveline<V: SpatialVehicleSystem>(
             "a speed drive on each sprocket".into(),
         ));
     }
+    let side = V::speed_drive(|_| 0.0);
+    let not_speed = || format!("{}'s drive is not a speed controller", V::NAME);
+    if args.driveline == DrivelineKind::SteerRatio {
+        let ratio = args
+            .steer_ratio
+            .or(entry.steer_ratios.first().copied())
+            .ok_or_else(|| format!("{} publishes no steer ratio: give --steer-ratio", V::NAME))?;
+        let differential =
+            Differential::with_steer_unit(&side, target(), ratio).ok_or_else(not_speed)?;
+        let said = format!("a differential with a steer unit (minimum steer ratio {ratio})");
+        return Ok((Driveline::Differential(differential), said));
+    }
     let Drive::Speed {
         proportional,
         integral,
         max_torque,
         ..
-    } = V::speed_drive(|_| 0.0)
+    } = side
     else {
-        return Err(format!("{}'s drive is not a speed controller", V::NAME));
+        return Err(not_speed());
     };
     let drive = Drive::Speed {
         target: target(),
@@ -177,37 +188,21 @@ fn driveline<V: SpatialVehicleSystem>(
         integral: 2.0 * integral,
         max_torque: 2.0 * max_torque,
     };
-    let (steer, said) = if args.driveline == DrivelineKind::Brakes {
-        let largest = V::layout().gauge * HeadingHold::DRIVER_MAX_YAW_RATE / 3.0;
-        let radius = system.rolling_radius();
-        let inertia = 0.5 * mass * radius * radius;
-        let brakes = SteeringBrakes::by_parking_rule(
-            BRAKE_OVER_DRIVE * max_torque,
-            inertia,
-            (largest, BRAKE_DEAD_BAND),
-        );
-        let said = format!(
-            "a differential steered by its brakes ({:.1} kN m each)",
-            brakes.max_torque / 1e3
-        );
-        (DifferentialSteer::Brakes(brakes), said)
-    } else {
-        let ratio = args
-            .steer_ratio
-            .or(entry.steer_ratios.first().copied())
-            .ok_or_else(|| format!("{} publishes no steer ratio: give --steer-ratio", V::NAME))?;
-        let unit = SteerUnit {
-            min_ratio: ratio,
-            proportional: 0.5 * proportional,
-            integral: 0.5 * integral,
-            max_torque,
-        };
-        let said = format!("a differential with a steer unit (minimum steer ratio {ratio})");
-        (DifferentialSteer::Ratio(unit), said)
-    };
+    let largest = V::layout().gauge * HeadingHold::DRIVER_MAX_YAW_RATE / 3.0;
+    let radius = system.rolling_radius();
+    let inertia = 0.5 * mass * radius * radius;
+    let brakes = SteeringBrakes::by_parking_rule(
+        BRAKE_OVER_DRIVE * max_torque,
+        inertia,
+        (largest, BRAKE_DEAD_BAND),
+    );
+    let said = format!(
+        "a differential steered by its brakes ({:.1} kN m each)",
+        brakes.max_torque / 1e3
+    );
     let differential = Differential {
         drive,
-        steer,
+        steer: DifferentialSteer::Brakes(brakes),
         input: Box::new(|_| 0.0),
     };
     Ok((Driveline::Differential(differential), said))

@@ -14,7 +14,7 @@ use trackgen_draw::vehicle;
 use crate::offered::SpatialEvents;
 
 /// Every event, in the order they are reported.
-pub(super) const EVENTS: [&str; 10] = [
+pub(super) const EVENTS: [&str; 11] = [
     "ride",
     "half-round",
     "step",
@@ -25,14 +25,21 @@ pub(super) const EVENTS: [&str; 10] = [
     "soil",
     SIDE_SLOPE,
     TURNING,
+    CORNERING,
 ];
 
 /// The side slope's event, run in 3-D.
 pub(super) const SIDE_SLOPE: &str = trackgen::mobility::side_slope::EVENT;
 /// The turning event, run in 3-D.
 pub(super) const TURNING: &str = trackgen::mobility::turning::EVENT;
+/// The cornering event, run in 3-D.
+pub(super) const CORNERING: &str = trackgen::mobility::cornering::EVENT;
 /// The events only a vehicle with a spatial model answers.
-pub(super) const SPATIAL: [&str; 2] = [SIDE_SLOPE, TURNING];
+pub(super) const SPATIAL: [&str; 3] = [SIDE_SLOPE, TURNING, CORNERING];
+/// The circle the cornering event turns on, m: a tight corner (a
+/// search is some ten runs of up to 25 s simulated in 3-D; `cornering::
+/// fastest` takes any radius).
+const CORNERING_RADIUS: f64 = 15.0;
 
 pub(super) fn event_name(s: &str) -> Result<&'static str, String> {
     EVENTS
@@ -268,6 +275,19 @@ pub(super) fn tasks<'a, V: Vehicle>(
                         quantity::STEEPEST_SIDE_SLOPE,
                         "rise over run",
                         Box::new(move || (events.side_slope)(settings).map(Found::Limit)),
+                    ));
+                }
+            }
+            CORNERING => {
+                if let Some((events, ratio)) = spatial {
+                    let radius = CORNERING_RADIUS;
+                    out.push(task(
+                        Some(("radius", radius, "m")),
+                        quantity::CORNERING_SPEED,
+                        "m/s",
+                        Box::new(move || {
+                            (events.cornering)(settings, (radius, ratio)).map(Found::Limit)
+                        }),
                     ));
                 }
             }

@@ -15,7 +15,7 @@ pub enum EventError {
     #[error("{event}: {what} must be {range}, got {value}")]
     Setting {
         /// The event: `ride`, `half-round`, `step`, `gap`, `ditch`,
-        /// `barrier`, `grade`, `side-slope` or `turning`.
+        /// `barrier`, `grade`, `side-slope`, `turning` or `cornering`.
         event: &'static str,
         /// The setting.
         what: &'static str,

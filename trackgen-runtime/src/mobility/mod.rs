@@ -9,7 +9,8 @@
 //! drawbar pull against slip and the motion resistance on a soft soil;
 //! and, in 3-D for a vehicle declared with both tracks, the steepest side
 //! slope held driving along it ([`side_slope`]), the smallest radius
-//! turned at a crawl and the pivot turn ([`turning`]).
+//! turned at a crawl and the pivot turn ([`turning`]), and the fastest
+//! steady turn on a circle ([`cornering`]).
 //!
 //! Every event is a function generic over [`Vehicle`](crate::vehicle::Vehicle),
 //! driven by the vehicle's [`Powertrain`](crate::vehicle::Powertrain) through its own speed
@@ -26,6 +27,7 @@
 //! stops short of an obstacle's far side is a trial that did not pass,
 //! with the distance it reached.
 
+pub mod cornering;
 mod error;
 pub mod grade;
 pub mod obstacle;

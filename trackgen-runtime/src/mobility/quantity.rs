@@ -33,3 +33,6 @@ pub const PIVOT_YAW_RATE: &str = "pivot turn's yaw rate";
 /// The pivot turn's power at both sprockets, kW
 /// ([`turning::pivot`](super::turning::pivot)).
 pub const PIVOT_POWER: &str = "pivot turn's power";
+/// The fastest steady turn held on a circle, m/s
+/// ([`cornering::fastest`](super::cornering::fastest)).
+pub const CORNERING_SPEED: &str = "cornering speed";

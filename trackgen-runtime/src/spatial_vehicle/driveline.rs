@@ -177,6 +177,47 @@ pub enum DrivelineError {
     Steering(#[from] SteeringError),
 }
 
+impl Differential {
+    /// A differential whose box is driven toward `target` (m/s of the
+    /// belts' mean against time) by a speed drive of twice `side`'s gains
+    /// and limit (`side` a side's speed drive: the box drives both
+    /// sides), steered by a steer unit of minimum steer ratio `ratio`
+    /// with half `side`'s gains (its torque acts on both sprockets, `±Q`,
+    /// so their speed difference moves as under the two side drives) and
+    /// `side`'s limit, its input 0 (a driver holding a heading steers
+    /// through it). `None` where `side` is not a speed drive.
+    pub fn with_steer_unit(
+        side: &Drive,
+        target: Box<dyn Fn(f64) -> f64 + Send>,
+        ratio: f64,
+    ) -> Option<Differential> {
+        let Drive::Speed {
+            proportional,
+            integral,
+            max_torque,
+            ..
+        } = *side
+        else {
+            return None;
+        };
+        Some(Differential {
+            drive: Drive::Speed {
+                target,
+                proportional: 2.0 * proportional,
+                integral: 2.0 * integral,
+                max_torque: 2.0 * max_torque,
+            },
+            steer: DifferentialSteer::Ratio(SteerUnit {
+                min_ratio: ratio,
+                proportional: 0.5 * proportional,
+                integral: 0.5 * integral,
+                max_torque,
+            }),
+            input: Box::new(|_| 0.0),
+        })
+    }
+}
+
 impl SteerUnit {
     /// `q`: the speed difference at full steer over the mean speed,
     /// `2 (ρ − 1)/(ρ + 1)` (the outer sprocket at `ω̄ (1 + q/2)`, the
