@@ -266,51 +266,65 @@ pub(super) fn tasks<'a, V: Vehicle>(
                     ));
                 }
             }
-            SIDE_SLOPE => {
-                // `mobility` refuses the event for a vehicle without a
-                // spatial model before it makes the tasks.
-                if let Some((events, _)) = spatial {
-                    out.push(task(
-                        None,
-                        quantity::STEEPEST_SIDE_SLOPE,
-                        "rise over run",
-                        Box::new(move || (events.side_slope)(settings).map(Found::Limit)),
-                    ));
-                }
-            }
-            CORNERING => {
-                if let Some((events, ratio)) = spatial {
-                    let radius = CORNERING_RADIUS;
-                    out.push(task(
-                        Some(("radius", radius, "m")),
-                        quantity::CORNERING_SPEED,
-                        "m/s",
-                        Box::new(move || {
-                            (events.cornering)(settings, (radius, ratio)).map(Found::Limit)
-                        }),
-                    ));
-                }
-            }
-            TURNING => {
-                if let Some((events, ratio)) = spatial {
-                    out.push(task(
-                        None,
-                        quantity::SMALLEST_TURNING_RADIUS,
-                        "m",
-                        Box::new(move || smallest_turn(events, settings, ratio)),
-                    ));
-                    out.push(task(
-                        None,
-                        quantity::PIVOT_YAW_RATE,
-                        "rad/s",
-                        Box::new(move || pivot_turn(events, settings)),
-                    ));
+            // `mobility` refuses a 3-D event for a vehicle without a
+            // spatial model before it makes the tasks.
+            SIDE_SLOPE | TURNING | CORNERING => {
+                if let Some(spatial) = spatial {
+                    out.extend(spatial_tasks(event, settings, spatial));
                 }
             }
             _ => unreachable!("events are parsed from EVENTS"),
         }
     }
     out
+}
+
+/// The tasks of a 3-D event (`side-slope`, `turning`, `cornering`) of a
+/// vehicle with a spatial model, its steer unit's minimum ratio if it
+/// publishes one.
+fn spatial_tasks<'a>(
+    event: &'static str,
+    settings: &'a EventSettings,
+    (events, ratio): (SpatialEvents, Option<f64>),
+) -> Vec<Task<'a>> {
+    let task = |parameter, quantity, unit, run| Task {
+        event,
+        parameter,
+        quantity,
+        unit,
+        run,
+    };
+    match event {
+        SIDE_SLOPE => vec![task(
+            None,
+            quantity::STEEPEST_SIDE_SLOPE,
+            "rise over run",
+            Box::new(move || (events.side_slope)(settings).map(Found::Limit)),
+        )],
+        CORNERING => {
+            let radius = CORNERING_RADIUS;
+            vec![task(
+                Some(("radius", radius, "m")),
+                quantity::CORNERING_SPEED,
+                "m/s",
+                Box::new(move || (events.cornering)(settings, (radius, ratio)).map(Found::Limit)),
+            )]
+        }
+        _ => vec![
+            task(
+                None,
+                quantity::SMALLEST_TURNING_RADIUS,
+                "m",
+                Box::new(move || smallest_turn(events, settings, ratio)),
+            ),
+            task(
+                None,
+                quantity::PIVOT_YAW_RATE,
+                "rad/s",
+                Box::new(move || pivot_turn(events, settings)),
+            ),
+        ],
+    }
 }
 
 /// The steepest grade climbed, then the speed at full power on each of

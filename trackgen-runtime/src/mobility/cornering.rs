@@ -49,6 +49,7 @@ use crate::spatial_vehicle::{
 };
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
+use crate::vehicle::VehicleDynamics;
 
 /// The event's name in results.
 pub const EVENT: &str = "cornering";
@@ -256,7 +257,11 @@ pub fn fastest<V: SpatialVehicleSystem>(
             passed: run.held,
         })
     };
-    let grip = (laws.ground.friction.mu() * crate::ride::G * radius).sqrt();
+    // The model's own gravity.
+    let g = <V::System as VehicleDynamics>::track_description()
+        .gravity
+        .norm();
+    let grip = (laws.ground.friction.mu() * g * radius).sqrt();
     let range = (SLOWEST, settings.max_speed.min(grip));
     let tolerance = settings.speed_tolerance;
     let search = bisect(range.0, range.1, tolerance, |v| trial(settings, v))?;
