@@ -101,6 +101,25 @@ pub(super) struct Task<'a> {
     run: Box<dyn Fn() -> Result<Found, EventError> + Send + Sync + 'a>,
 }
 
+impl<'a> Task<'a> {
+    /// `run`, asked of `event` at `parameter`, answering `quantity` in
+    /// `unit`.
+    fn new(
+        event: &'static str,
+        parameter: Parameter,
+        (quantity, unit): (&'static str, &'static str),
+        run: Box<dyn Fn() -> Result<Found, EventError> + Send + Sync + 'a>,
+    ) -> Task<'a> {
+        Task {
+            event,
+            parameter,
+            quantity,
+            unit,
+            run,
+        }
+    }
+}
+
 impl Task<'_> {
     /// Runs it: its rows, with the wall time it took.
     pub(super) fn rows(&self) -> Vec<Row> {
@@ -173,13 +192,8 @@ pub(super) fn tasks<'a, V: Vehicle>(
     let grades = pick(&[0.1, 0.2, 0.3, 0.4, 0.5, 0.6], &[0.1]);
     let mut out: Vec<Task<'a>> = Vec::new();
     for &event in events {
-        let task = |parameter, quantity, unit, run| Task {
-            event,
-            parameter,
-            quantity,
-            unit,
-            run,
-        };
+        let task =
+            |parameter, quantity, unit, run| Task::new(event, parameter, (quantity, unit), run);
         match event {
             "ride" => {
                 for &r in roughnesses {
@@ -287,13 +301,7 @@ fn spatial_tasks<'a>(
     settings: &'a EventSettings,
     (events, ratio): (SpatialEvents, Option<f64>),
 ) -> Vec<Task<'a>> {
-    let task = |parameter, quantity, unit, run| Task {
-        event,
-        parameter,
-        quantity,
-        unit,
-        run,
-    };
+    let task = |parameter, quantity, unit, run| Task::new(event, parameter, (quantity, unit), run);
     match event {
         SIDE_SLOPE => vec![task(
             None,

@@ -7,8 +7,9 @@
 //! A trial at speed `v` on radius `R`: the vehicle assembled at rest on
 //! level ground, settled [`SETTLE`] s, its belts ramped to `v` at the
 //! settings' acceleration, capped by the settings' powertrain
-//! ([`EngineEnvelope`]): through a differential with a steer unit where
-//! the vehicle's transmission publishes its minimum steer ratio (the
+//! ([`EngineEnvelope`](crate::spatial_vehicle::EngineEnvelope)):
+//! through a differential with a steer unit where the vehicle's
+//! transmission publishes its minimum steer ratio (the
 //! first range's: the steer unit carries the inner side's power to the
 //! outer, as the M113A3's X200-4 does), else by a speed drive on each
 //! side (each with half the engine). Meanwhile a driver
@@ -38,14 +39,13 @@
 //! acceleration (the speed times the yaw rate, m/s²) over its last
 //! stretch.
 
-use super::runs::confirmed;
+use super::runs::{confirmed, envelope, spatial_failure, spatial_setup};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
-use crate::simulate::RunError;
 use crate::spatial_vehicle::{
-    Differential, Driveline, EngineEnvelope, HeadingHold, SideDrives, SpatialLaws,
-    SpatialSimulated, SpatialVehicleSystem, SteeringError,
+    Differential, Driveline, HeadingHold, SideDrives, SpatialLaws, SpatialSimulated,
+    SpatialVehicleSystem, SteeringError,
 };
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
@@ -96,14 +96,6 @@ impl Corner {
     }
 }
 
-/// A failure to set the vehicle up, as the event's error.
-fn setup(source: impl std::error::Error + Send + Sync + 'static) -> EventError {
-    EventError::Spatial {
-        event: EVENT,
-        source: Box::new(source),
-    }
-}
-
 /// `V` under `laws` driven at `speed` (m/s) round a circle of `radius`
 /// (m) to the left, steered through a steer unit of minimum steer
 /// `ratio` or else by its side drives, as the module describes; a
@@ -141,15 +133,12 @@ pub fn corner<V: SpatialVehicleSystem>(
             });
         }
     }
-    let envelope = EngineEnvelope::new(settings.powertrain.clone()).map_err(|source| {
-        EventError::Powertrain {
-            event: EVENT,
-            source,
-        }
-    })?;
+    let envelope = envelope(settings, EVENT)?;
     let flat = Terrain::Flat { height: 0.0 };
-    let mut system = V::spatial(laws, HeightField::level()).map_err(setup)?;
-    let mut y = system.assembled(&flat).map_err(setup)?;
+    let mut system = V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
+    let mut y = system
+        .assembled(&flat)
+        .map_err(|e| spatial_setup(EVENT, e))?;
     let acceleration = settings.acceleration;
     let ramp = move |t: f64| (acceleration * (t - SETTLE)).clamp(0.0, speed);
     let driveline = match ratio {
@@ -162,8 +151,10 @@ pub fn corner<V: SpatialVehicleSystem>(
             left: V::speed_drive(ramp),
         })),
     };
-    let driveline = driveline.ok_or_else(|| setup(SteeringError::NotSpeedDrives))?;
-    system.set_driveline(driveline).map_err(setup)?;
+    let driveline = driveline.ok_or_else(|| spatial_setup(EVENT, SteeringError::NotSpeedDrives))?;
+    system
+        .set_driveline(driveline)
+        .map_err(|e| spatial_setup(EVENT, e))?;
     system.set_envelope(Some(envelope));
     let turning = SETTLE + speed / acceleration;
     let rate = speed / radius;
@@ -175,14 +166,10 @@ pub fn corner<V: SpatialVehicleSystem>(
             (0.0, 0.0)
         }
     });
-    system.set_steering(driver).map_err(setup)?;
-    let failed = |t: f64, e| EventError::Run {
-        event: EVENT,
-        parameter: speed,
-        unit: "m/s",
-        time: t,
-        source: Box::new(RunError::Simulation(e)),
-    };
+    system
+        .set_steering(driver)
+        .map_err(|e| spatial_setup(EVENT, e))?;
+    let failed = spatial_failure(EVENT, speed, "m/s");
     let tolerance = settings.scenario.explicit_tolerance();
     let mut stepper = Integrator::bs23(tolerance).stepper(system.dimension());
     let mut t = 0.0;

@@ -5,8 +5,10 @@ use nalgebra::Vector2;
 
 use super::EventError;
 use super::search::{Search, Trial, confirm, interpolate, scan_then_bisect};
+use crate::integrate::SimulationError;
 use crate::scenario::{Method, Scenario};
 use crate::simulate::{RideFigures, RideSink, RunError, RunReport, Sink, SinkError};
+use crate::spatial_vehicle::EngineEnvelope;
 use crate::system::Simulated;
 use crate::terrain::Terrain;
 use crate::terrain::course::CourseSpec;
@@ -446,6 +448,43 @@ pub(super) fn slope_setting(
 /// A speed ramp at `acceleration` (m/s²) from rest to `speed` (m/s).
 pub(super) fn ramp(speed: f64, acceleration: f64) -> impl Fn(f64) -> f64 + Send + 'static {
     move |t| (acceleration * t).min(speed)
+}
+
+/// A failure to set a spatial vehicle up for `event` (its laws, its
+/// assembly, its drives or its driver refused), as the event's error.
+pub(super) fn spatial_setup(
+    event: &'static str,
+    source: impl std::error::Error + Send + Sync + 'static,
+) -> EventError {
+    EventError::Spatial {
+        event,
+        source: Box::new(source),
+    }
+}
+
+/// A spatial run of `event` at `parameter` (`unit`) failing at `t`, as
+/// the event's error.
+pub(super) fn spatial_failure(
+    event: &'static str,
+    parameter: f64,
+    unit: &'static str,
+) -> impl Fn(f64, SimulationError) -> EventError {
+    move |t, e| EventError::Run {
+        event,
+        parameter,
+        unit,
+        time: t,
+        source: Box::new(RunError::Simulation(e)),
+    }
+}
+
+/// The settings' powertrain as a spatial drive's envelope, for `event`.
+pub(super) fn envelope(
+    settings: &EventSettings,
+    event: &'static str,
+) -> Result<EngineEnvelope, EventError> {
+    EngineEnvelope::new(settings.powertrain.clone())
+        .map_err(|source| EventError::Powertrain { event, source })
 }
 
 fn run_error(

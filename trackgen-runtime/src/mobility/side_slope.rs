@@ -25,11 +25,10 @@
 //! for tracked vehicles (the M113's 30 %) are ratings, not measured
 //! sliding limits: their sources give no criterion.
 
-use super::runs::{confirmed, slope_setting};
+use super::runs::{confirmed, slope_setting, spatial_failure, spatial_setup};
 use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
-use crate::simulate::RunError;
 use crate::spatial_vehicle::{
     HeadingHold, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem,
 };
@@ -90,14 +89,6 @@ impl Traverse {
     }
 }
 
-/// A failure to set the vehicle up, as the event's error.
-fn setup(source: impl std::error::Error + Send + Sync + 'static) -> EventError {
-    EventError::Spatial {
-        event: EVENT,
-        source: Box::new(source),
-    }
-}
-
 /// `V` under `laws` driven at the settings' crawl along the contour of a
 /// side slope of `slope` (rise over run, more than 0 and at most 2), as
 /// the module describes. The run stops as soon as the drift or the roll
@@ -111,10 +102,10 @@ pub fn traverse<V: SpatialVehicleSystem>(
     settings.check(EVENT)?;
     slope_setting(EVENT, "the side slope (rise over run)", slope)?;
     let field = HeightField::level().tilted(nalgebra::Vector2::new(0.0, slope));
-    let mut system = V::spatial(laws, field).map_err(setup)?;
+    let mut system = V::spatial(laws, field).map_err(|e| spatial_setup(EVENT, e))?;
     let level = system
         .assembled(&Terrain::Flat { height: 0.0 })
-        .map_err(setup)?;
+        .map_err(|e| spatial_setup(EVENT, e))?;
     let mut y = system.rolled(level.as_slice(), slope.atan());
     let (crawl, acceleration) = (settings.crawl, settings.acceleration);
     let ramp = move |t: f64| (acceleration * (t - SETTLE)).clamp(0.0, crawl);
@@ -123,20 +114,14 @@ pub fn traverse<V: SpatialVehicleSystem>(
             right: V::speed_drive(ramp),
             left: V::speed_drive(ramp),
         })
-        .map_err(setup)?;
+        .map_err(|e| spatial_setup(EVENT, e))?;
     system
         .set_steering(HeadingHold::driver(0.0, (0.0, 0.0), V::layout().gauge))
-        .map_err(setup)?;
+        .map_err(|e| spatial_setup(EVENT, e))?;
     let tolerance = settings.scenario.explicit_tolerance();
     let mut stepper = Integrator::bs23(tolerance).stepper(system.dimension());
     let mut t = 0.0;
-    let failed = |t: f64, e| EventError::Run {
-        event: EVENT,
-        parameter: slope,
-        unit: "rise over run",
-        time: t,
-        source: Box::new(RunError::Simulation(e)),
-    };
+    let failed = spatial_failure(EVENT, slope, "rise over run");
     let watch = SETTLE + crawl / acceleration + RUN_IN;
     while t < watch {
         stepper

@@ -31,9 +31,9 @@
 //!   vehicles on firm ground", Proc. IMechE Part D 215, 2001; Steeds'
 //!   estimate `μ_t W L / 4`).
 
+use super::runs::{envelope, spatial_failure, spatial_setup};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
-use crate::simulate::RunError;
 use crate::spatial_vehicle::{
     EngineEnvelope, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem,
 };
@@ -81,14 +81,6 @@ pub struct SteadyTurnRun {
     pub steady: bool,
 }
 
-/// A failure to set the vehicle up, as the event's error.
-fn setup(source: impl std::error::Error + Send + Sync + 'static) -> EventError {
-    EventError::Spatial {
-        event: EVENT,
-        source: Box::new(source),
-    }
-}
-
 /// One steady turn of `V` under `laws` on firm level ground with its
 /// belts at `belts` (right, left, m/s, forward positive), integrated by
 /// Bogacki-Shampine at `tolerance`, its drive capped by `envelope` if
@@ -103,23 +95,20 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
     tolerance: f64,
 ) -> Result<SteadyTurnRun, EventError> {
     let flat = Terrain::Flat { height: 0.0 };
-    let mut system = V::spatial(laws, HeightField::level()).map_err(setup)?;
-    let mut y = system.assembled(&flat).map_err(setup)?;
+    let mut system = V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
+    let mut y = system
+        .assembled(&flat)
+        .map_err(|e| spatial_setup(EVENT, e))?;
     let ramp = |speed: f64| move |t: f64| speed * ((t - SETTLE) / RAMP).clamp(0.0, 1.0);
     system
         .set_drives(SideDrives {
             right: V::speed_drive(ramp(belts[0])),
             left: V::speed_drive(ramp(belts[1])),
         })
-        .map_err(setup)?;
+        .map_err(|e| spatial_setup(EVENT, e))?;
     system.set_envelope(envelope);
-    let failed = |t: f64, e| EventError::Run {
-        event: EVENT,
-        parameter: belts[0].abs().max(belts[1].abs()),
-        unit: "m/s (the faster belt)",
-        time: t,
-        source: Box::new(RunError::Simulation(e)),
-    };
+    let fastest = belts[0].abs().max(belts[1].abs());
+    let failed = spatial_failure(EVENT, fastest, "m/s (the faster belt)");
     let mut stepper = Integrator::bs23(tolerance).stepper(system.dimension());
     let mut t = 0.0;
     while t < FIRST {
@@ -130,8 +119,10 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
     let mut before: Option<SteadyTurnRun> = None;
     loop {
         let (start, end) = (t, t + WINDOW);
-        let at = |t: f64, y: &[f64]| system.outputs(t, y).map_err(|e| failed(t, e));
-        let heading = at(t, y.as_slice())?.heading;
+        let heading = system
+            .outputs(t, y.as_slice())
+            .map_err(|e| failed(t, e))?
+            .heading;
         let (mut speed, mut belts, mut torques, mut powers) = (0.0, [0.0; 2], [0.0; 2], [0.0; 2]);
         while t < end {
             let was = t;
@@ -186,14 +177,6 @@ pub struct SmallestTurn {
     pub run: SteadyTurnRun,
 }
 
-/// The settings' powertrain as the spatial drive's envelope.
-fn envelope(settings: &EventSettings) -> Result<EngineEnvelope, EventError> {
-    EngineEnvelope::new(settings.powertrain.clone()).map_err(|source| EventError::Powertrain {
-        event: EVENT,
-        source,
-    })
-}
-
 /// A left turn's belts (right, left, m/s) at mean speed `v` at full steer:
 /// the steer unit's `ratio` or, without one, the inner belt held.
 fn full_steer(v: f64, ratio: Option<f64>) -> [f64; 2] {
@@ -225,7 +208,7 @@ pub fn smallest_radius<V: SpatialVehicleSystem>(
             value: rho,
         });
     }
-    let envelope = envelope(settings)?;
+    let envelope = envelope(settings, EVENT)?;
     let half = V::layout().gauge / 2.0;
     let kinematic = ratio.map_or(half, |rho| half * (rho + 1.0) / (rho - 1.0));
     let tolerance = settings.scenario.explicit_tolerance();
@@ -251,7 +234,7 @@ pub fn pivot<V: SpatialVehicleSystem>(
     laws: SpatialLaws,
 ) -> Result<SteadyTurnRun, EventError> {
     settings.check(EVENT)?;
-    let envelope = envelope(settings)?;
+    let envelope = envelope(settings, EVENT)?;
     let v = settings.crawl;
     steady_turn::<V>(
         laws,

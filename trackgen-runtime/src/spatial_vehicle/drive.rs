@@ -77,8 +77,9 @@ where
     /// three `states`, the engine's envelope capping its drive, and the
     /// driver's `steering`, if any (a belt-speed difference asked for,
     /// [`HeadingHold::difference`]; without one a differential steers by
-    /// its input schedule): a side without a sprocket takes no torque; a drive's demand, a heading wanted or a
-    /// steering input that is not finite stops the run
+    /// its input schedule): a side without a sprocket takes no torque; a
+    /// drive's demand, a heading wanted or a steering input that is not
+    /// finite stops the run
     /// ([`Drive::checked_torque`](crate::vehicle::Drive::checked_torque)),
     /// and so does a steering input outside `[−1, 1]`.
     pub fn drive(
