@@ -527,6 +527,16 @@ where
             _ => part.radius + self.laws.guide.height,
         } + self.shoe.extent();
         let (mut potential, mut dissipation) = (0.0, 0.0);
+        let sprocket = (part.kind == PartKind::Sprocket).then(|| {
+            let sprocket = SpaceSprocket {
+                centre,
+                axes: [plane.column(0).into(), plane.column(2).into()],
+                angle: hull.pose.planar[2 + b],
+                velocity,
+                angular_velocity: spin,
+            };
+            (sprocket, sprocket.in_plane())
+        });
         for k in links.near(centre, reach * reach) {
             let [rear, front] = self.shoe.inner_face;
             // Written out, not `inner_face.map(…)`: the array's map left
@@ -540,18 +550,11 @@ where
                 velocity: links.velocity(k),
                 angular_velocity: links.spin(k),
             };
-            if part.kind == PartKind::Sprocket {
-                let sprocket = SpaceSprocket {
-                    centre,
-                    axes: [plane.column(0).into(), plane.column(2).into()],
-                    angle: hull.pose.planar[2 + b],
-                    velocity,
-                    angular_velocity: spin,
-                };
+            if let Some((sprocket, turned)) = &sprocket {
                 for pin in &self.shoe.pins {
                     let x = links.point(k, *pin);
                     let Some(contact) = sprocket.pin_contact_among(
-                        (&self.profile, &self.gaps),
+                        (&self.profile, &self.gaps, turned),
                         &face,
                         x,
                         self.shoe.pin_radius,

@@ -225,14 +225,24 @@ impl SpaceSprocket {
         pin: Vector3<f64>,
         pin_radius: f64,
     ) -> Option<AxialContact> {
-        self.pin_contact_among((profile, &Gaps::of(profile)), face, pin, pin_radius)
+        let among = (profile, &Gaps::of(profile), &self.in_plane());
+        self.pin_contact_among(among, face, pin, pin_radius)
+    }
+
+    /// The sprocket in its own plane, centred and turned by its angle:
+    /// what the tooth profile's tests take. Its angle's sine and cosine
+    /// found once, for every pin near it.
+    pub(crate) fn in_plane(&self) -> BodyState {
+        BodyState::at_rest(nalgebra::Vector2::zeros(), self.angle)
     }
 
     /// [`pin_contact`](Self::pin_contact) with the profile's gaps found
-    /// already ([`Gaps::of`]): a vehicle finds them once, not per pin.
+    /// already ([`Gaps::of`]) and the sprocket in its plane
+    /// ([`in_plane`](Self::in_plane)): a vehicle finds them once, not per
+    /// pin.
     pub(crate) fn pin_contact_among(
         &self,
-        (profile, gaps): (&ToothProfile, &Gaps),
+        (profile, gaps, sprocket): (&ToothProfile, &Gaps, &BodyState),
         face: &SpaceFace,
         pin: Vector3<f64>,
         pin_radius: f64,
@@ -246,8 +256,7 @@ impl SpaceSprocket {
         if local.norm() >= profile.addendum + pin_radius {
             return None;
         }
-        let sprocket = BodyState::at_rest(nalgebra::Vector2::zeros(), self.angle);
-        let tooth = profile.pin_in_tooth_among(gaps, &sprocket, local, pin_radius)?;
+        let tooth = profile.pin_in_tooth_among(gaps, sprocket, local, pin_radius)?;
         let axle = self.axle();
         let lift = |v: nalgebra::Vector2<f64>| xi * v.x + zeta * v.y;
         let point = self.centre + lift(tooth.point) + axle * offset.dot(&axle);

@@ -74,6 +74,22 @@ impl SpaceContact {
         self.tangents_with(self.gradient.norm())
     }
 
+    /// `|g|` and the surface's unit tangents, forward and left
+    /// ([`tangents`](Self::tangents)). On level ground (`g = (0, 0, 1)`,
+    /// most of any course) they are `1`, `x̂` and `ŷ`, which the general
+    /// route gives too (to the sign of a zero component) after a root and
+    /// six divisions: not found again per point.
+    #[inline]
+    fn surface(&self) -> (f64, Vector3<f64>, Vector3<f64>) {
+        let g = self.gradient;
+        if g.x == 0.0 && g.y == 0.0 {
+            return (1.0, Vector3::x(), Vector3::y());
+        }
+        let norm = g.norm();
+        let (forward, left) = self.tangents_with(norm);
+        (norm, forward, left)
+    }
+
     /// [`tangents`](Self::tangents) with `|g|` (`norm`) found already.
     /// Where the field does not slope across `x` (`∂z/∂y = 0`, a profile
     /// or a level field), the forward tangent `(1, 0, ∂z/∂x)` has the
@@ -96,9 +112,8 @@ impl GroundLaws {
     pub fn respond_in_space(&self, contact: &SpaceContact, z: Vector2<f64>) -> SpaceForce {
         let rate = contact.rate();
         let normal = self.normal.respond(contact.depth, rate);
-        let norm = contact.gradient.norm();
+        let (norm, forward, left) = contact.surface();
         let pressing = normal.force * norm;
-        let (forward, left) = contact.tangents_with(norm);
         let slip = Vector2::new(contact.velocity.dot(&forward), contact.velocity.dot(&left));
         let (tangential, deflection_rate, potential, dissipation) = match self.friction {
             GroundFriction::Stiction(stiction) => {

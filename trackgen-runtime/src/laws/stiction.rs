@@ -186,6 +186,27 @@ impl Stiction {
         }
     }
 
+    /// [`relax`](Self::relax) for each of `deflections` (m), its rate into
+    /// `rates` (m/s, from the start); what they store (J) and dissipate
+    /// (W) in all. Each rate is `relax`'s to the bit; the sums are taken in
+    /// four lanes (each lane in order, then the lanes in turn), so they
+    /// may differ from `relax`'s added one by one in the last bits, and
+    /// the four chains of additions run side by side.
+    #[inline]
+    pub fn relax_each(&self, deflections: &[f64], rates: &mut [f64]) -> (f64, f64) {
+        let (mut stored, mut lost) = ([0.0; 4], [0.0; 4]);
+        for (j, (&z, rate)) in deflections.iter().zip(rates.iter_mut()).enumerate() {
+            let relaxing = self.relax(z);
+            *rate = relaxing.rate;
+            stored[j % 4] += relaxing.potential;
+            lost[j % 4] += relaxing.dissipation;
+        }
+        (
+            (stored[0] + stored[1]) + (stored[2] + stored[3]),
+            (lost[0] + lost[1]) + (lost[2] + lost[3]),
+        )
+    }
+
     /// A coefficient of zero or more, a positive stiffness and damping, all
     /// finite.
     pub fn check(&self) -> Result<(), ParameterError> {

@@ -66,19 +66,20 @@ where
         let clear_above = self.clear_above(links, across);
         let (mut potential, mut dissipation) = (0.0, 0.0);
         let mut i = 0;
+        // The run of passed-over links since `clear_from` relaxes in one
+        // pass when it ends (the track's whole upper run at once).
+        let mut clear_from = None;
         for k in 0..links.len() {
             if links.centroid(k).z > clear_above {
-                if let Some(law) = stiction {
-                    let books = (&mut potential, &mut dissipation);
-                    relax(
-                        &law,
-                        &deflections[i..i + 4 * points],
-                        &mut rates[i..],
-                        books,
-                    );
+                if stiction.is_some() {
+                    clear_from.get_or_insert(i);
                     i += 4 * points;
                 }
                 continue;
+            }
+            if let (Some(law), Some(from)) = (stiction, clear_from.take()) {
+                let books = (&mut potential, &mut dissipation);
+                relax(&law, &deflections[from..i], &mut rates[from..], books);
             }
             for p in &self.shoe.ground_points {
                 for lateral in [-across, across] {
@@ -118,6 +119,10 @@ where
                 }
             }
         }
+        if let (Some(law), Some(from)) = (stiction, clear_from) {
+            let books = (&mut potential, &mut dissipation);
+            relax(&law, &deflections[from..i], &mut rates[from..], books);
+        }
         (potential, dissipation)
     }
 
@@ -154,8 +159,7 @@ where
 }
 
 /// Each of `deflections` relaxing off the ground, its rate into `rates`
-/// (from the start); what each stores and dissipates added to the books
-/// in turn.
+/// (from the start); what they store and dissipate added to the books.
 #[inline]
 fn relax(
     law: &Stiction,
@@ -163,15 +167,9 @@ fn relax(
     rates: &mut [f64],
     (potential, dissipation): (&mut f64, &mut f64),
 ) {
-    // Summed in registers, in the same order as into the books.
-    let (mut stored, mut lost) = (*potential, *dissipation);
-    for (z, rate) in deflections.iter().zip(rates.iter_mut()) {
-        let relaxing = law.relax(*z);
-        *rate = relaxing.rate;
-        stored += relaxing.potential;
-        lost += relaxing.dissipation;
-    }
-    (*potential, *dissipation) = (stored, lost);
+    let (stored, lost) = law.relax_each(deflections, rates);
+    *potential += stored;
+    *dissipation += lost;
 }
 
 /// The normal law with `fraction` of its stiffness (and of a
