@@ -319,9 +319,13 @@ impl<'m, M: RecursiveModel<DOF>, const DOF: usize> FloatingTree<'m, M, DOF> {
             world
                 .positions
                 .push(pose.origin + (xi * p.x + eta * e + zeta * p.y));
-            world
-                .orientations
-                .push(a * Matrix3::new(c, 0.0, -s, 0.0, 1.0, 0.0, s, 0.0, c));
+            // `A R(θ)` with `R(θ)`'s zeros and one left out: the same sums
+            // as the full product, less the terms that add zero.
+            world.orientations.push(Matrix3::from_columns(&[
+                xi * c + zeta * s,
+                eta,
+                zeta * c - xi * s,
+            ]));
             world
                 .velocities
                 .push(a * Vector3::new(v.x, v_eta + w_zeta * p.x - w_xi * p.y, v.y));
