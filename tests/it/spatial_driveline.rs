@@ -16,8 +16,8 @@ use std::f64::consts::FRAC_PI_4;
 use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::nalgebra::DVector;
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, DrivelineError, HeadingHold, SideDrives,
-    SpatialSystem, SteerUnit, SteeringBrakes,
+    Differential, DifferentialSteer, Driveline, DrivelineError, HeadingHold, SideBooks, SideDrives,
+    SpatialSimulated, SpatialSystem, SteerUnit, SteeringBrakes,
 };
 use trackgen::vehicle::Drive;
 
@@ -103,7 +103,7 @@ fn trees(system: &System, y: &[f64]) -> DVector<f64> {
 /// Every value of `states`, as the state holds them.
 fn tree_values(system: &System, states: &States) -> DVector<f64> {
     let y = system.state(&states.0, &states.1, &states.2);
-    y.rows(0, system.dimension() - 5).into_owned()
+    y.rows(0, system.dynamic_states() - 3).into_owned()
 }
 
 /// `a` and `b` equal to `tol` of the larger's size (or of 1).
@@ -178,6 +178,20 @@ fn a_left_turn_through_a_differential_mirrors_the_right_turn() {
             1e-9,
             name,
         );
+        // Each side's books are the mirrored turn's other side's.
+        let values = |b: &SideBooks| {
+            [
+                b.sprocket_work,
+                b.ground,
+                b.running_gear,
+                b.suspension,
+                b.brake,
+            ]
+        };
+        let [l_right, l_left] = left.side_books(a.as_slice());
+        let [r_right, r_left] = right.side_books(b.as_slice());
+        same(&values(&l_right), &values(&r_left), 1e-9, name);
+        same(&values(&l_left), &values(&r_right), 1e-9, name);
     }
 }
 
@@ -206,6 +220,21 @@ fn a_turn_through_a_differential_keeps_its_books() {
         let residual = (after.total() - before.total()) / after.driven;
         println!("{name}: {after:?}, residual {residual:.2e}");
         assert!(residual.abs() < 1e-6, "{name}: residual {residual:e}");
+        // Every loss is one side's: the sides' add up to the books' (the
+        // same terms integrated apart, to rounding).
+        let sides = system.side_books(y.as_slice());
+        println!("{name}: {sides:?}");
+        let lost = sides[0].lost() + sides[1].lost();
+        let dissipated = after.dissipated - before.dissipated;
+        assert!(
+            (lost - dissipated).abs() < 1e-9 * dissipated,
+            "{name}: {lost} against {dissipated}"
+        );
+        // The outer (right) side takes more work than the inner, whose
+        // brake alone dissipates.
+        assert!(sides[0].sprocket_work > sides[1].sprocket_work, "{sides:?}");
+        assert_eq!(sides[0].brake, 0.0, "{name}");
+        assert_eq!(sides[1].brake > 0.0, name == "brakes", "{sides:?}");
         let (hull, ..) = system.states(y.as_slice());
         assert!(hull.pose.yaw > 1e-3, "{name}: yaw {}", hull.pose.yaw);
         let drive = system.drive_state(0.6, y.as_slice()).expect("the drive");

@@ -24,7 +24,7 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideDrives,
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideBooks, SideDrives,
     SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
@@ -369,6 +369,7 @@ fn drive<V: SpatialVehicleSystem>(
     let mut wide_row = Vec::with_capacity(wide.len());
     let mut stepper = Integrator::bs23(args.tolerance).stepper(system.dimension());
     let before = system.energy(y.as_slice());
+    let sides_before = system.side_books(y.as_slice());
     let bar = ProgressBar::new((args.duration * 1000.0) as u64);
     bar.set_style(ProgressStyle::with_template(
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
@@ -419,7 +420,15 @@ fn drive<V: SpatialVehicleSystem>(
         energy_change: after.held() - before.held(),
         dissipated: after.dissipated - before.dissipated,
     };
-    report(&summary, (t, wall), &stepper.stats(), &books, args);
+    let sides_after = system.side_books(y.as_slice());
+    let sides = [0, 1].map(|s| since(&sides_before[s], &sides_after[s]));
+    report(
+        &summary,
+        (t, wall),
+        &stepper.stats(),
+        (&books, &sides),
+        args,
+    );
     let mut written = vec!["spatial.csv", "spatial.arrow"];
     let kept = thinned.results();
     if kept.len() >= 2 {
@@ -489,12 +498,24 @@ impl RowTimes {
     }
 }
 
-/// Prints the run's time, its steps, the turn and the books.
+/// A side's books from `before` to `after`.
+fn since(before: &SideBooks, after: &SideBooks) -> SideBooks {
+    SideBooks {
+        sprocket_work: after.sprocket_work - before.sprocket_work,
+        ground: after.ground - before.ground,
+        running_gear: after.running_gear - before.running_gear,
+        suspension: after.suspension - before.suspension,
+        brake: after.brake - before.brake,
+    }
+}
+
+/// Prints the run's time, its steps, the turn and the books, in all and
+/// per side.
 fn report(
     summary: &Summary,
     (t, wall): (f64, f64),
     stats: &Stats,
-    books: &EnergyBalance,
+    (books, sides): (&EnergyBalance, &[SideBooks; 2]),
     args: &SpatialArgs,
 ) {
     say!(
@@ -549,6 +570,16 @@ fn report(
         books.dissipated / 1e3,
         books.residual()
     );
+    for (name, side) in ["right", "left"].iter().zip(sides) {
+        say!(
+            "  {name}: into its sprocket {:.1} kJ; lost in the ground {:.1}, the running gear {:.1}, the suspension {:.1}, the brake {:.1} kJ",
+            side.sprocket_work / 1e3,
+            side.ground / 1e3,
+            side.running_gear / 1e3,
+            side.suspension / 1e3,
+            side.brake / 1e3
+        );
+    }
     if let Some(warning) = crate::report::books_warning(books, args.tolerance) {
         say!("{warning}");
     }

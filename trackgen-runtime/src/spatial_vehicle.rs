@@ -53,7 +53,7 @@ pub use driveline::{
 pub use envelope::EngineEnvelope;
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
-pub use system::{SpatialEnergy, SpatialSystem};
+pub use system::{SideBooks, SpatialEnergy, SpatialSystem};
 pub use tensions::TrackTensions;
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
@@ -129,6 +129,22 @@ pub struct SpatialLoads {
     pub potential: f64,
     /// Power they dissipate, W.
     pub dissipation: f64,
+    /// Where that power is lost on each side (right, left): `dissipation`
+    /// is their sum, the same terms added in another order.
+    pub losses: [SideLosses; 2],
+}
+
+/// The power a side's force elements dissipate, W.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SideLosses {
+    /// The ground under the track (its normal law's damping, the
+    /// shoes' slip and their stiction's damper and relaxing).
+    pub ground: f64,
+    /// The running gear on the track: the rims, the guides and the
+    /// sprocket's teeth.
+    pub running_gear: f64,
+    /// The side's suspension: its arms' dampers.
+    pub suspension: f64,
 }
 
 /// What a right-hand side's loads reuse from one evaluation to the next:
@@ -386,6 +402,7 @@ where
             loads.resize(bodies.len(), SpatialLoad::default());
         }
         (out.potential, out.dissipation) = (0.0, 0.0);
+        out.losses = [SideLosses::default(); 2];
         let plane = plane_rotation(hull.pose.yaw, hull.pose.roll);
         let mut rates = rates.into_iter();
         for (s, side) in [Side::Right, Side::Left].into_iter().enumerate() {
@@ -402,6 +419,7 @@ where
             );
             out.potential += books.0;
             out.dissipation += books.1;
+            out.losses[s].ground = books.1;
             for (part, _) in self
                 .parts
                 .iter()
@@ -416,13 +434,14 @@ where
                 );
                 out.potential += books.0;
                 out.dissipation += books.1;
+                out.losses[s].running_gear += books.1;
             }
             match side {
                 Side::Right => out.right = link_loads,
                 Side::Left => out.left = link_loads,
             }
         }
-        let books = self.arms(hull, &plane, &mut out.hull);
+        let books = self.arms(hull, &plane, &mut out.hull, &mut out.losses);
         out.potential += books.0;
         out.dissipation += books.1;
     }
@@ -599,23 +618,30 @@ where
     }
 
     /// The arms' torsion springs: the planar torque `τ` on the arm as the
-    /// moment `−τ η`, its reverse on the frame.
+    /// moment `−τ η`, its reverse on the frame; what each dissipates
+    /// added to its side's `losses` too.
     fn arms(
         &self,
         hull: &TreeState<DH>,
         plane: &Matrix3<f64>,
         loads: &mut [SpatialLoad],
+        losses: &mut [SideLosses; 2],
     ) -> (f64, f64) {
         let eta: Vector3<f64> = plane.column(1).into();
         let (q, qd) = (&hull.pose.planar, &hull.rates.planar);
         let (mut potential, mut dissipation) = (0.0, 0.0);
-        for arm in &self.arms {
+        // The arms are the parts' that have one, in the parts' order.
+        let sides = (self.parts.iter().zip(&self.sides))
+            .filter(|(part, _)| part.arm.is_some())
+            .map(|(_, side)| *side);
+        for (arm, side) in self.arms.iter().zip(sides) {
             let (phi, rate) = (q[2 + arm.body] - q[2], qd[2 + arm.body] - qd[2]);
             let response = arm.spring.respond(phi, rate);
             loads[arm.body].moment -= eta * response.force;
             loads[0].moment += eta * response.force;
             potential += response.potential;
             dissipation += response.dissipation;
+            losses[side.index()].suspension += response.dissipation;
         }
         (potential, dissipation)
     }

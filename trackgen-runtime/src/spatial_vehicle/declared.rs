@@ -8,8 +8,8 @@
 use nalgebra::{DVector, SVector, Vector3};
 
 use super::{
-    Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideDrives, SpatialEnergy,
-    SpatialLaws, SpatialOutputs, SpatialSystem, SteeringError, TreeState,
+    Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideBooks, SideDrives,
+    SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialSystem, SteeringError, TreeState,
 };
 use crate::assembly::{SideError, assemble_sides};
 use crate::contact::axial::GuideLaw;
@@ -62,6 +62,10 @@ pub trait SpatialSimulated: OdeSystem + Send {
 
     /// Where its energy is at `y` ([`SpatialSystem::energy`]).
     fn energy(&self, y: &[f64]) -> SpatialEnergy;
+
+    /// Each side's books at `y`, right then left
+    /// ([`SpatialSystem::side_books`]).
+    fn side_books(&self, y: &[f64]) -> [SideBooks; 2];
 
     /// What the ground gives each of the tracks' ground points at `y`
     /// ([`SpatialSystem::ground_forces`]).
@@ -178,6 +182,10 @@ where
 
     fn energy(&self, y: &[f64]) -> SpatialEnergy {
         SpatialSystem::energy(self, y)
+    }
+
+    fn side_books(&self, y: &[f64]) -> [SideBooks; 2] {
+        SpatialSystem::side_books(self, y)
     }
 
     fn ground_forces(&self, y: &[f64]) -> Vec<GroundForce> {

@@ -53,6 +53,8 @@ pub struct DriveState {
     pub driven: f64,
     /// The power the brakes dissipate, W.
     pub dissipation: f64,
+    /// Each side's brake's part of it, W (right, left).
+    pub braked: [f64; 2],
     /// The rates of the driveline's three states
     /// ([`SpatialSystem`](super::SpatialSystem)'s docs).
     pub rates: [f64; 3],
@@ -62,7 +64,13 @@ impl DriveState {
     /// The power the driveline puts into the sprockets, W: `Σ τ ω` (the
     /// drive's and the steer unit's less what the brakes take).
     pub fn power(&self) -> f64 {
-        self.torque[0] * self.speed[0] + self.torque[1] * self.speed[1]
+        self.side_power(0) + self.side_power(1)
+    }
+
+    /// The power the driveline puts into side `s`'s sprocket (0 right, 1
+    /// left), W: `τ ω`, its brake's torque included.
+    pub fn side_power(&self, s: usize) -> f64 {
+        self.torque[s] * self.speed[s]
     }
 }
 
@@ -225,6 +233,7 @@ where
                     state.torque[s] += law.force;
                     state.rates[1 + s] = law.rate;
                     state.dissipation += law.dissipation;
+                    state.braked[s] = law.dissipation;
                 }
             }
             DifferentialSteer::Ratio(unit) => {

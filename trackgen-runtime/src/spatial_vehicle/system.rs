@@ -10,7 +10,9 @@
 //! track's, each track's ground points' stiction deflections (m, none
 //! under regularised friction: [`SpatialDynamics::ground_states`]), the
 //! driveline's three states, the energy dissipated so far and the work
-//! the drive has done so far (J). The driveline's states are, with a
+//! the drive has done so far (J), then each side's books (J, right then
+//! left: [`SideBooks`]' five, in its fields' order; passive, so keeping
+//! them moves no step). The driveline's states are, with a
 //! drive on each side, the right's and the left's controller integrals
 //! (rad) and an unused 0; with a differential, its drive's integral
 //! (rad), then the right and the left steering brakes' deflections (rad)
@@ -56,6 +58,47 @@ pub struct SpatialEnergy {
     pub dissipated: f64,
     /// The work the drive (and a steer unit) has done since the start.
     pub driven: f64,
+}
+
+/// Where a side's share of the work went since the start, J: what the
+/// driveline put into its sprocket and what its brake and its force
+/// elements dissipated. A side's books do not balance alone (the hull
+/// carries work from one side to the other); the two sides' losses add up
+/// to [`SpatialEnergy::dissipated`].
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SideBooks {
+    /// `∫ τ ω dt` at the sprocket (the drive's share, a steer unit's and
+    /// the brake's torque together): negative where the side was held
+    /// back more than driven.
+    pub sprocket_work: f64,
+    /// Lost in the ground under the track.
+    pub ground: f64,
+    /// Lost in the rims, the guides and the sprocket's teeth.
+    pub running_gear: f64,
+    /// Lost in the side's arms' dampers.
+    pub suspension: f64,
+    /// Lost in the side's steering brake.
+    pub brake: f64,
+}
+
+impl SideBooks {
+    /// How many values a side's books take in the state.
+    const VALUES: usize = 5;
+
+    fn from_values(v: &[f64]) -> SideBooks {
+        SideBooks {
+            sprocket_work: v[0],
+            ground: v[1],
+            running_gear: v[2],
+            suspension: v[3],
+            brake: v[4],
+        }
+    }
+
+    /// Everything the side lost, J.
+    pub fn lost(&self) -> f64 {
+        self.ground + self.running_gear + self.suspension + self.brake
+    }
 }
 
 impl SpatialEnergy {
@@ -356,6 +399,16 @@ where
         )
     }
 
+    /// Each side's books at `y` (right, left).
+    pub fn side_books(&self, y: &[f64]) -> [SideBooks; 2] {
+        let at = self.books_at() + 5;
+        let n = SideBooks::VALUES;
+        [
+            SideBooks::from_values(&y[at..at + n]),
+            SideBooks::from_values(&y[at + n..at + 2 * n]),
+        ]
+    }
+
     /// Where the energy is at `y`.
     pub fn energy(&self, y: &[f64]) -> SpatialEnergy {
         let (hull, right, left, dissipated) = self.states(y);
@@ -389,7 +442,7 @@ where
     L: TrackModel<DL>,
 {
     fn dimension(&self) -> usize {
-        self.books_at() + 5
+        self.books_at() + 5 + 2 * SideBooks::VALUES
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -410,6 +463,10 @@ where
 
     fn is_quadrature(&self, i: usize) -> bool {
         i >= self.books_at() + 3
+    }
+
+    fn is_passive(&self, i: usize) -> bool {
+        i >= self.books_at() + 5
     }
 }
 
@@ -469,6 +526,16 @@ where
         dy[b..b + 3].copy_from_slice(&drive.rates);
         dy[b + 3] = loads.dissipation + drive.dissipation;
         dy[b + 4] = drive.driven;
+        let sides = dy[b + 5..].chunks_exact_mut(SideBooks::VALUES);
+        for (s, (books, losses)) in sides.zip(&loads.losses).enumerate() {
+            books.copy_from_slice(&[
+                drive.side_power(s),
+                losses.ground,
+                losses.running_gear,
+                losses.suspension,
+                drive.braked[s],
+            ]);
+        }
         Ok(motions)
     }
 }
