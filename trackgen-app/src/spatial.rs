@@ -421,7 +421,7 @@ fn drive<V: SpatialVehicleSystem>(
         dissipated: after.dissipated - before.dissipated,
     };
     let sides_after = system.side_books(y.as_slice());
-    let sides = [0, 1].map(|s| since(&sides_before[s], &sides_after[s]));
+    let sides = [0, 1].map(|s| sides_after[s].since(&sides_before[s]));
     report(
         &summary,
         (t, wall),
@@ -495,17 +495,6 @@ impl RowTimes {
             due.push((at, state));
             self.queued += 1;
         }
-    }
-}
-
-/// A side's books from `before` to `after`.
-fn since(before: &SideBooks, after: &SideBooks) -> SideBooks {
-    SideBooks {
-        sprocket_work: after.sprocket_work - before.sprocket_work,
-        ground: after.ground - before.ground,
-        running_gear: after.running_gear - before.running_gear,
-        suspension: after.suspension - before.suspension,
-        brake: after.brake - before.brake,
     }
 }
 

@@ -95,6 +95,17 @@ impl SideBooks {
         }
     }
 
+    /// What these books gained since `before` (a run's share of them).
+    pub fn since(&self, before: &SideBooks) -> SideBooks {
+        SideBooks {
+            sprocket_work: self.sprocket_work - before.sprocket_work,
+            ground: self.ground - before.ground,
+            running_gear: self.running_gear - before.running_gear,
+            suspension: self.suspension - before.suspension,
+            brake: self.brake - before.brake,
+        }
+    }
+
     /// Everything the side lost, J.
     pub fn lost(&self) -> f64 {
         self.ground + self.running_gear + self.suspension + self.brake
