@@ -25,7 +25,7 @@ use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
     Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideBooks, SideDrives,
-    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringBrakes,
+    SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
 use trackgen::vehicle::{Drive, speed_ramp};
@@ -368,8 +368,7 @@ fn drive<V: SpatialVehicleSystem>(
     arrow.begin(&wide)?;
     let mut wide_row = Vec::with_capacity(wide.len());
     let mut stepper = Integrator::bs23(args.tolerance).stepper(system.dimension());
-    let before = system.energy(y.as_slice());
-    let sides_before = system.side_books(y.as_slice());
+    let before = Books::at(&system, y.as_slice());
     let bar = ProgressBar::new((args.duration * 1000.0) as u64);
     bar.set_style(ProgressStyle::with_template(
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
@@ -414,21 +413,8 @@ fn drive<V: SpatialVehicleSystem>(
     sink.finish()?;
     drop(sink);
     arrow.finish()?;
-    let after = system.energy(y.as_slice());
-    let books = EnergyBalance {
-        motor_work: after.driven - before.driven,
-        energy_change: after.held() - before.held(),
-        dissipated: after.dissipated - before.dissipated,
-    };
-    let sides_after = system.side_books(y.as_slice());
-    let sides = [0, 1].map(|s| sides_after[s].since(&sides_before[s]));
-    report(
-        &summary,
-        (t, wall),
-        &stepper.stats(),
-        (&books, &sides),
-        args,
-    );
+    let books = Books::at(&system, y.as_slice()).since(&before);
+    report(&summary, (t, wall), &stepper.stats(), &books, args);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
     let kept = thinned.results();
     if kept.len() >= 2 {
@@ -498,13 +484,42 @@ impl RowTimes {
     }
 }
 
+/// The books at a state: where the energy is, and each side's.
+struct Books {
+    energy: SpatialEnergy,
+    sides: [SideBooks; 2],
+}
+
+impl Books {
+    fn at(system: &dyn SpatialSimulated, y: &[f64]) -> Books {
+        Books {
+            energy: system.energy(y),
+            sides: system.side_books(y),
+        }
+    }
+
+    /// A run's balance from `before` to these, and each side's share.
+    fn since(&self, before: &Books) -> (EnergyBalance, [SideBooks; 2]) {
+        let (after, before_energy) = (&self.energy, &before.energy);
+        let balance = EnergyBalance {
+            motor_work: after.driven - before_energy.driven,
+            energy_change: after.held() - before_energy.held(),
+            dissipated: after.dissipated - before_energy.dissipated,
+        };
+        (
+            balance,
+            [0, 1].map(|s| self.sides[s].since(&before.sides[s])),
+        )
+    }
+}
+
 /// Prints the run's time, its steps, the turn and the books, in all and
 /// per side.
 fn report(
     summary: &Summary,
     (t, wall): (f64, f64),
     stats: &Stats,
-    (books, sides): (&EnergyBalance, &[SideBooks; 2]),
+    (books, sides): &(EnergyBalance, [SideBooks; 2]),
     args: &SpatialArgs,
 ) {
     say!(
