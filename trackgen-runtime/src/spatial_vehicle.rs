@@ -38,6 +38,7 @@ mod drive;
 mod driveline;
 mod envelope;
 mod ground;
+mod near;
 mod outputs;
 mod steering;
 mod system;
