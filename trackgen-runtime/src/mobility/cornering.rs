@@ -41,6 +41,7 @@
 
 use super::runs::{confirmed, envelope, spatial_failure, spatial_setup};
 use super::search::{Search, Trial, bisect};
+use super::stretch::watch;
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
@@ -173,10 +174,10 @@ pub fn corner<V: SpatialVehicleSystem>(
     let tolerance = settings.scenario.explicit_tolerance();
     let mut stepper = Integrator::bs23(tolerance).stepper(system.dimension());
     let mut t = 0.0;
-    let watch = turning + RUN_IN;
-    while t < watch {
+    let watched = turning + RUN_IN;
+    while t < watched {
         stepper
-            .step(&mut system, &mut t, &mut y, watch)
+            .step(&mut system, &mut t, &mut y, watched)
             .map_err(|e| failed(t, e))?;
     }
     let mut before = false;
@@ -187,31 +188,17 @@ pub fn corner<V: SpatialVehicleSystem>(
         held: false,
     };
     for _ in 0..STRETCHES {
-        let (start, end) = (t, t + WINDOW);
-        let heading = system
-            .outputs(t, y.as_slice())
-            .map_err(|e| failed(t, e))?
-            .heading;
-        let mut travelled = 0.0;
-        while t < end {
-            let was = t;
-            stepper
-                .step(&mut system, &mut t, &mut y, end)
-                .map_err(|e| failed(t, e))?;
-            let out = system.outputs(t, y.as_slice()).map_err(|e| failed(t, e))?;
-            travelled += (t - was) * out.centre.velocity.xy().norm();
-        }
-        let span = t - start;
-        let turned = system
-            .outputs(t, y.as_slice())
-            .map_err(|e| failed(t, e))?
-            .heading
-            - heading;
-        let yaw_rate = turned / span;
+        let stretch = watch(
+            &mut system,
+            &mut *stepper,
+            (&mut t, &mut y),
+            WINDOW,
+            &failed,
+        )?;
         trial = Corner {
-            speed: travelled / span,
-            yaw_rate,
-            radius: travelled / turned.abs(),
+            speed: stretch.speed(),
+            yaw_rate: stretch.yaw_rate(),
+            radius: stretch.radius(),
             held: false,
         };
         let on_circle = (trial.radius / radius - 1.0).abs() <= KEPT

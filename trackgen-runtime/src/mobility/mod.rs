@@ -38,6 +38,7 @@ mod runs;
 pub mod search;
 pub mod side_slope;
 pub mod soil;
+mod stretch;
 pub mod turning;
 
 pub use error::EventError;

@@ -32,6 +32,7 @@
 //!   estimate `μ_t W L / 4`).
 
 use super::runs::{envelope, spatial_failure, spatial_setup};
+use super::stretch::watch;
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
@@ -118,33 +119,14 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
     }
     let mut before: Option<SteadyTurnRun> = None;
     loop {
-        let (start, end) = (t, t + WINDOW);
-        let heading = system
-            .outputs(t, y.as_slice())
-            .map_err(|e| failed(t, e))?
-            .heading;
-        let (mut speed, mut belts, mut torques, mut powers) = (0.0, [0.0; 2], [0.0; 2], [0.0; 2]);
-        while t < end {
-            let was = t;
-            stepper
-                .step(&mut system, &mut t, &mut y, end)
-                .map_err(|e| failed(t, e))?;
-            let dt = t - was;
-            let out = system.outputs(t, y.as_slice()).map_err(|e| failed(t, e))?;
-            speed += dt * out.centre.velocity.xy().norm();
-            for s in 0..2 {
-                belts[s] += dt * out.sides[s].belt_speed;
-                torques[s] += dt * out.sides[s].sprocket_torque;
-                powers[s] += dt * out.sides[s].sprocket_power;
-            }
-        }
-        let span = t - start;
-        let heading_now = system
-            .outputs(t, y.as_slice())
-            .map_err(|e| failed(t, e))?
-            .heading;
-        let yaw_rate = (heading_now - heading) / span;
-        let speed = speed / span;
+        let stretch = watch(
+            &mut system,
+            &mut *stepper,
+            (&mut t, &mut y),
+            WINDOW,
+            &failed,
+        )?;
+        let (yaw_rate, speed) = (stretch.yaw_rate(), stretch.speed());
         let steady = before.is_some_and(|b| {
             (yaw_rate - b.yaw_rate).abs() <= STEADY * yaw_rate.abs().max(b.yaw_rate.abs())
         });
@@ -152,9 +134,9 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
             yaw_rate,
             speed,
             radius: speed / yaw_rate.abs(),
-            belts: belts.map(|v| v / span),
-            torques: torques.map(|v| v / span),
-            powers: powers.map(|v| v / span),
+            belts: stretch.belts,
+            torques: stretch.torques,
+            powers: stretch.powers,
             until: t,
             steady,
         };

@@ -3,7 +3,7 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::near::Centroids;
+use super::near::{Centroids, Near};
 use crate::multibody::RecursiveModel;
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
 
@@ -120,11 +120,7 @@ impl Bodies {
     /// The bodies whose centroids are within `reach2` (m², squared) of
     /// `centre`, or at a distance that is not a number (so a NaN state
     /// shows as a NaN force), in order ([`Centroids::near`]).
-    pub(super) fn near(
-        &self,
-        centre: Vector3<f64>,
-        reach2: f64,
-    ) -> impl Iterator<Item = usize> + '_ {
+    pub(super) fn near(&self, centre: Vector3<f64>, reach2: f64) -> Near<'_> {
         self.centroids.near(centre, reach2)
     }
 }

@@ -33,23 +33,50 @@ impl Centroids {
 
     /// The bodies whose centroids are within `reach2` (m², squared) of
     /// `centre`, or at a distance that is not a number, in order.
-    pub(super) fn near(
-        &self,
-        centre: Vector3<f64>,
-        reach2: f64,
-    ) -> impl Iterator<Item = usize> + '_ {
-        (0..self.x.len()).step_by(64).flat_map(move |start| {
-            let end = (start + 64).min(self.x.len());
-            let block = [&self.x, &self.y, &self.z].map(|c| &c[start..end]);
-            let mut near = near_mask(block, centre, reach2);
-            std::iter::from_fn(move || {
-                (near != 0).then(|| {
-                    let k = near.trailing_zeros() as usize;
-                    near &= near - 1;
-                    start + k
-                })
-            })
-        })
+    pub(super) fn near(&self, centre: Vector3<f64>, reach2: f64) -> Near<'_> {
+        Near {
+            centroids: self,
+            centre,
+            reach2,
+            next_block: 0,
+            block: 0,
+            mask: 0,
+        }
+    }
+}
+
+/// The bodies near a point ([`Centroids::near`]): each block of 64
+/// compared at once into a mask, its bits walked in order.
+pub(super) struct Near<'a> {
+    centroids: &'a Centroids,
+    centre: Vector3<f64>,
+    reach2: f64,
+    /// The first body of the next block to compare.
+    next_block: usize,
+    /// The first body of the block whose mask is being walked.
+    block: usize,
+    mask: u64,
+}
+
+impl Iterator for Near<'_> {
+    type Item = usize;
+
+    #[inline]
+    fn next(&mut self) -> Option<usize> {
+        let c = self.centroids;
+        while self.mask == 0 {
+            let start = self.next_block;
+            if start >= c.x.len() {
+                return None;
+            }
+            let end = (start + 64).min(c.x.len());
+            let block = [&c.x, &c.y, &c.z].map(|v| &v[start..end]);
+            self.mask = near_mask(block, self.centre, self.reach2);
+            (self.block, self.next_block) = (start, end);
+        }
+        let k = self.mask.trailing_zeros() as usize;
+        self.mask &= self.mask - 1;
+        Some(self.block + k)
     }
 }
 
