@@ -598,21 +598,30 @@ where
                 let Some(rim) = RimContact::near(&wheel, &face, self.laws.guide.height) else {
                     continue;
                 };
+                // A force that is exactly zero (the guide inside its
+                // play, the rim short of the face) is not added: adding
+                // a zero leaves every load's bits as they were (a load
+                // starts at +0, and +0 + −0 is +0).
                 let guide = self.laws.guide.respond(&rim);
-                let along = rim.contact.axle * guide.force;
-                links.push(link_loads, k, along, rim.guide);
-                frame.push(hull_loads, b, -along, rim.guide);
+                if guide.force != 0.0 {
+                    let along = rim.contact.axle * guide.force;
+                    links.push(link_loads, k, along, rim.guide);
+                    frame.push(hull_loads, b, -along, rim.guide);
+                }
                 let mut radial = rim.contact.normal * guide.radial;
                 potential += guide.potential;
                 dissipation += guide.dissipation;
-                if rim.contact.depth > 0.0 {
+                let touching = rim.contact.depth > 0.0;
+                if touching {
                     let force = self.laws.wheels.respond_axial(&rim.contact);
                     radial += force.force;
                     potential += force.potential;
                     dissipation += force.dissipation;
                 }
-                links.push(link_loads, k, radial, rim.contact.point);
-                frame.push(hull_loads, b, -radial, rim.contact.point);
+                if touching || guide.radial != 0.0 {
+                    links.push(link_loads, k, radial, rim.contact.point);
+                    frame.push(hull_loads, b, -radial, rim.contact.point);
+                }
             }
         }
         (potential, dissipation)
