@@ -38,7 +38,6 @@ mod drive;
 mod driveline;
 mod envelope;
 mod ground;
-mod near;
 mod outputs;
 mod steering;
 mod system;

@@ -262,8 +262,7 @@ fn norm_over(
 /// pass over the components, each component's sum in the terms' order
 /// (`((base + w₀k₀) + w₁k₁) + …`, the bits of adding them one pass per
 /// term), so a step of Bogacki-Shampine reads and writes its vectors
-/// half as often. Inlined into [`Embedded::attempt`]'s wide build.
-#[inline(always)]
+/// half as often.
 fn combine<'a>(
     out: &mut DVector<f64>,
     base: Option<&DVector<f64>>,

@@ -3,18 +3,15 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use super::near::{Centroids, Near};
 use crate::multibody::RecursiveModel;
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates, SpatialLoad, WorldMotion};
 
 /// Every body's world motion: centroid, orientation, velocity, angular
-/// velocity ([`WorldMotion`]), and the centroids a coordinate to an
-/// array for the broad phase ([`near`](Self::near)). Kept between
-/// evaluations, refilled in place ([`fill`](Self::fill)).
+/// velocity ([`WorldMotion`]). Kept between evaluations, refilled in
+/// place ([`fill`](Self::fill)).
 #[derive(Default)]
 pub(super) struct Bodies {
     world: WorldMotion,
-    centroids: Centroids,
 }
 
 impl Bodies {
@@ -28,7 +25,6 @@ impl Bodies {
         (pose, rates): (&PlanePose<D>, &PlaneRates<D>),
     ) {
         tree.world_into(motion, pose, rates, &mut self.world);
-        self.centroids.fill(&self.world.positions);
     }
 
     /// `tree`'s bodies at `state`, new ([`FloatingTree::world`]).
@@ -36,10 +32,9 @@ impl Bodies {
         tree: &FloatingTree<'_, M, D>,
         (pose, rates): (&PlanePose<D>, &PlaneRates<D>),
     ) -> Bodies {
-        let world = tree.world(pose, rates);
-        let mut centroids = Centroids::default();
-        centroids.fill(&world.positions);
-        Bodies { world, centroids }
+        Bodies {
+            world: tree.world(pose, rates),
+        }
     }
 
     /// How many bodies.
@@ -119,8 +114,43 @@ impl Bodies {
 
     /// The bodies whose centroids are within `reach2` (m², squared) of
     /// `centre`, or at a distance that is not a number (so a NaN state
-    /// shows as a NaN force), in order ([`Centroids::near`]).
-    pub(super) fn near(&self, centre: Vector3<f64>, reach2: f64) -> Near<'_> {
-        self.centroids.near(centre, reach2)
+    /// shows as a NaN force), in order. The distances are compared 64
+    /// bodies at a time into a bit mask without branches: a wheel is near
+    /// a handful of a track's links, and a branch per link mispredicts at
+    /// the edges of every run of them.
+    pub(super) fn near(
+        &self,
+        centre: Vector3<f64>,
+        reach2: f64,
+    ) -> impl Iterator<Item = usize> + '_ {
+        let centroids = &self.world.positions;
+        centroids
+            .chunks(64)
+            .enumerate()
+            .flat_map(move |(chunk, block)| {
+                let mut near = near_mask(block, centre, reach2);
+                std::iter::from_fn(move || {
+                    (near != 0).then(|| {
+                        let k = near.trailing_zeros() as usize;
+                        near &= near - 1;
+                        chunk * 64 + k
+                    })
+                })
+            })
     }
+}
+
+/// Bit `k` set where body `k` of a block (at most 64) is within `reach2`
+/// of `centre`, or at a distance that is not a number: `!(d² > r²)`, `d²`
+/// summed `x`, `y`, `z` in turn as `Vector3::norm_squared` sums.
+#[inline(always)]
+fn near_mask(block: &[Vector3<f64>], centre: Vector3<f64>, reach2: f64) -> u64 {
+    let mut near = 0u64;
+    for (k, p) in block.iter().enumerate() {
+        let (dx, dy, dz) = (p.x - centre.x, p.y - centre.y, p.z - centre.z);
+        #[allow(clippy::neg_cmp_op_on_partial_ord)]
+        let close = !(dx * dx + dy * dy + dz * dz > reach2);
+        near |= u64::from(close) << k;
+    }
+    near
 }
