@@ -3,14 +3,15 @@
 //!
 //! ```text
 //! <app> mobility [--vehicle NAME] [--out FOLDER]
-//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil,side-slope] [--json] [--quick] [--no-confirm]
+//!     [--events ride,half-round,step,gap,ditch,barrier,grade,soil,side-slope,turning,cornering]
+//!     [--json] [--quick] [--no-confirm]
 //!     [--slice K/N | --merge FILE…]
 //! ```
 //!
 //! Runs the events of `trackgen::mobility` (each a limit found by
 //! bracketing over runs, the vehicle driven through its engine; the side
-//! slope in 3-D, on its speed drives, for a vehicle declared with both
-//! tracks) in parallel on every core, and writes to `out/mobility/<vehicle>/` (or `--out`):
+//! slope, the turns and the cornering in 3-D, for a vehicle declared with
+//! both tracks) in parallel on every core, the costliest events first, and writes to `out/mobility/<vehicle>/` (or `--out`):
 //! `<event>.csv` (one row per result: the parameter, the limit, its unit
 //! and the runs it took), `trials.csv` (every run), `summary.svg` (the
 //! curves of the events the set ran that have one: ride-limiting speed
