@@ -51,7 +51,10 @@ const QUEUE: [&str; 11] = [
 /// Where `event` stands in the workers' queue ([`QUEUE`]); an event not
 /// in it last.
 pub(super) fn queue_rank(event: &str) -> usize {
-    QUEUE.iter().position(|e| *e == event).unwrap_or(QUEUE.len())
+    QUEUE
+        .iter()
+        .position(|e| *e == event)
+        .unwrap_or(QUEUE.len())
 }
 
 /// The side slope's event, run in 3-D.

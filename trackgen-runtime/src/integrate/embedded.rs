@@ -486,34 +486,32 @@ impl Embedded {
         Ok(self.norm(&self.error, y, &self.trial))
     }
 
-    /// The dense-output coefficients of the accepted step `y → trial`.
+    /// Hairer's `contd5` dense output of the accepted step `y → trial`
+    /// (Dormand-Prince's; cubic Hermite's is kept once the step has moved
+    /// on, [`keep_hermite_output`](Self::keep_hermite_output)).
     fn keep_dense_output(&mut self, y: &DVector<f64>, h: f64) {
+        let Some(d) = self.tableau.dense else {
+            return;
+        };
         let last = self.stages.len() - 1;
-        match self.tableau.dense {
-            Some(d) => {
-                // Hairer's contd5: r1 = y, r2 = y1 − y, r3 = h f0 − r2,
-                // r4 = r2 − h f1 − r3, r5 = h Σ d_j k_j.
-                let [r1, r2, r3, r4, r5] = &mut self.dense[..] else {
-                    unreachable!("contd5 has five coefficients")
-                };
-                r1.copy_from(y);
-                r2.copy_from(&self.trial);
-                r2.axpy(-1.0, y, 1.0);
-                r3.copy_from(&self.stages[0]);
-                r3.axpy(-1.0, r2, h);
-                r4.copy_from(r2);
-                r4.axpy(-h, &self.stages[last], 1.0);
-                r4.axpy(-1.0, r3, 1.0);
-                r5.fill(0.0);
-                for (j, &dj) in d.iter().enumerate() {
-                    if dj != 0.0 {
-                        r5.axpy(h * dj, &self.stages[j], 1.0);
-                    }
-                }
+        // r1 = y, r2 = y1 − y, r3 = h f0 − r2, r4 = r2 − h f1 − r3,
+        // r5 = h Σ d_j k_j.
+        let [r1, r2, r3, r4, r5] = &mut self.dense[..] else {
+            unreachable!("contd5 has five coefficients")
+        };
+        r1.copy_from(y);
+        r2.copy_from(&self.trial);
+        r2.axpy(-1.0, y, 1.0);
+        r3.copy_from(&self.stages[0]);
+        r3.axpy(-1.0, r2, h);
+        r4.copy_from(r2);
+        r4.axpy(-h, &self.stages[last], 1.0);
+        r4.axpy(-1.0, r3, 1.0);
+        r5.fill(0.0);
+        for (j, &dj) in d.iter().enumerate() {
+            if dj != 0.0 {
+                r5.axpy(h * dj, &self.stages[j], 1.0);
             }
-            // Cubic Hermite's, once the step has moved on
-            // ([`keep_hermite_output`](Self::keep_hermite_output)).
-            None => {}
         }
     }
 
