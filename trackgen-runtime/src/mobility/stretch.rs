@@ -9,7 +9,8 @@ use super::EventError;
 use crate::integrate::{SimulationError, Stepper};
 use crate::spatial_vehicle::SpatialSimulated;
 
-/// What a stretch of a run showed, averaged over its span.
+/// What a stretch of a run showed: its span, the distance travelled and
+/// the heading's change over it (totals), and each side's means.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(super) struct Stretch {
     /// Its span, s.

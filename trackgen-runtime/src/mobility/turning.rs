@@ -66,7 +66,8 @@ pub struct SteadyTurnRun {
     pub yaw_rate: f64,
     /// The centre of mass's horizontal speed, m/s.
     pub speed: f64,
-    /// The path's radius, m: the speed over the yaw rate's size.
+    /// The path's radius, m: the distance travelled over the heading's
+    /// change (the speed over the yaw rate's size).
     pub radius: f64,
     /// The belts' speeds (right, left), m/s, forward positive.
     pub belts: [f64; 2],
@@ -133,7 +134,7 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
         let turn = SteadyTurnRun {
             yaw_rate,
             speed,
-            radius: speed / yaw_rate.abs(),
+            radius: stretch.radius(),
             belts: stretch.belts,
             torques: stretch.torques,
             powers: stretch.powers,
