@@ -359,6 +359,48 @@ fn the_most_power_is_the_envelope_s_peak() {
     );
 }
 
+/// The rated speed is where the full-load map's power peaks: the
+/// M113A3's map at its published 2800 rpm (the droop falls to none at
+/// 3000 rpm, too steeply for `T ω` to rise past it); on a map falling
+/// linearly from 100 N m at 100 rad/s to none at 300 rad/s, `T ω =
+/// (150 − ω/2) ω` peaks inside the segment at 150 rad/s (11 250 W against
+/// 10 000 W at its first point), to 1e-12; against a scan of 200 000
+/// speeds on both.
+#[test]
+fn the_rated_speed_is_the_full_load_power_s_peak() {
+    let scan = |d: &Driveline| {
+        let last = d.engine[d.engine.len() - 1].0;
+        (0..=200_000)
+            .map(|i| last * i as f64 / 200_000.0)
+            .map(|w| (w, Driveline::full_load(&d.engine, w) * w))
+            .fold(
+                (0.0, 0.0),
+                |best, (w, p)| if p > best.1 { (w, p) } else { best },
+            )
+    };
+    let m113a3 = m113a3_driveline();
+    let rated = m113a3.rated_speed();
+    assert!(
+        (rated / m113::ENGINE_RATED_SPEED - 1.0).abs() < 1e-12,
+        "{rated} rad/s against {}",
+        m113::ENGINE_RATED_SPEED
+    );
+    let falling = a_driveline(
+        vec![(100.0, 100.0), (300.0, 0.0)],
+        vec![(0.0, 10.0), (1.0, 10.0)],
+    );
+    let rated = falling.rated_speed();
+    assert!((rated / 150.0 - 1.0).abs() < 1e-12, "{rated}");
+    for d in [&m113a3, &falling] {
+        let (w, _) = scan(d);
+        assert!(
+            (w / d.rated_speed() - 1.0).abs() < 1e-4,
+            "{w} against {}",
+            d.rated_speed()
+        );
+    }
+}
+
 /// The declared capacity factor at stall is the one that stalls the
 /// declared engine at the stated speed: `K(0) = ω / √T_e(ω)`, to 1e-12
 /// (the declaration holds the figure as a literal: a square root is not a

@@ -16,8 +16,8 @@ use std::f64::consts::FRAC_PI_4;
 use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::nalgebra::DVector;
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, DrivelineError, HeadingHold, SideBooks, SideDrives,
-    SpatialSimulated, SpatialSystem, SteerUnit, SteeringBrakes,
+    Differential, DifferentialSteer, Driveline, DrivelineError, HeadingHold, NeutralSteer,
+    SideBooks, SideDrives, SpatialSimulated, SpatialSystem, SteerUnit, SteeringBrakes,
 };
 use trackgen::vehicle::Drive;
 
@@ -71,6 +71,28 @@ pub fn steer_unit(ratio: f64) -> DifferentialSteer {
         integral: 2e4,
         max_torque: 3000.0,
     })
+}
+
+/// A steer unit in neutral for the `Twin`: [`steer_unit`]'s gains, its
+/// full steer turning the sprockets `full_difference` rad/s apart, up to
+/// 5 kN m (a pivot's turning resistance on a sprocket is about 2 kN m,
+/// `spatial_turn`).
+pub fn neutral(full_difference: f64) -> DifferentialSteer {
+    DifferentialSteer::Neutral(NeutralSteer {
+        full_difference,
+        proportional: 2000.0,
+        integral: 2e4,
+        max_torque: 5000.0,
+    })
+}
+
+/// The box's drive for `steer`: free in neutral, else [`box_drive`] to a
+/// mean belt of 1.2 m/s over 0.2 s.
+fn box_for(steer: DifferentialSteer) -> Drive {
+    match steer {
+        DifferentialSteer::Neutral(_) => Drive::Free,
+        _ => box_drive(1.2, 0.2),
+    }
 }
 
 /// The `Twin` driven through a differential: `drive` on its box, steered
@@ -151,18 +173,19 @@ fn driven_straight_a_differential_is_the_two_drives_it_halves() {
 }
 
 /// Steered left by its brakes (the left braked at half the input's
-/// range) or its steer unit (full steer, ratio 2.31), and right by the
-/// opposite input, the `Twin` ends the mirror image of itself after
-/// 0.3 s, to 1e-9 of the state's size.
+/// range), its steer unit (full steer, ratio 2.31) or its steer unit in
+/// neutral (a pivot), and right by the opposite input, the `Twin` ends
+/// the mirror image of itself after 0.3 s, to 1e-9 of the state's size.
 #[test]
 fn a_left_turn_through_a_differential_mirrors_the_right_turn() {
     let start = at_rest(0.0, (0.0, 0.0));
     for (name, steer, lever) in [
         ("brakes", brakes(), 0.5),
         ("steer unit", steer_unit(2.31), 1.0),
+        ("neutral", neutral(8.0), 1.0),
     ] {
-        let mut left = through(box_drive(1.2, 0.2), steer, ramped(lever));
-        let mut right = through(box_drive(1.2, 0.2), steer, ramped(-lever));
+        let mut left = through(box_for(steer), steer, ramped(lever));
+        let mut right = through(box_for(steer), steer, ramped(-lever));
         let a = run(&mut left, &start, 0.3, FIXED);
         let b = run(&mut right, &start, 0.3, FIXED);
         let (hull, ..) = left.states(a.as_slice());
@@ -203,15 +226,17 @@ fn a_left_turn_through_a_differential_mirrors_the_right_turn() {
 /// work), and turns left. The left brake holds the left sprocket back
 /// (its torque against the sprocket's forward turning); the steer unit
 /// pushes the right sprocket forward and the left one back, and the
-/// power it takes from the left side returns through the right.
+/// power it takes from the left side returns through the right. In
+/// neutral the unit alone drives: a pivot, both sides taking work.
 #[test]
 fn a_turn_through_a_differential_keeps_its_books() {
     let start = at_rest(0.0, (0.0, 0.0));
     for (name, steer, lever) in [
         ("brakes", brakes(), 0.5),
         ("steer unit", steer_unit(2.31), 1.0),
+        ("neutral", neutral(8.0), 1.0),
     ] {
-        let mut system = through(box_drive(1.2, 0.2), steer, ramped(lever));
+        let mut system = through(box_for(steer), steer, ramped(lever));
         let y0 = system.state(&start.0, &start.1, &start.2);
         let before = system.energy(y0.as_slice());
         let y = run(&mut system, &start, 0.6, ADAPTIVE);
@@ -231,8 +256,12 @@ fn a_turn_through_a_differential_keeps_its_books() {
             "{name}: {lost} against {dissipated}"
         );
         // The outer (right) side takes more work than the inner, whose
-        // brake alone dissipates.
-        assert!(sides[0].sprocket_work > sides[1].sprocket_work, "{sides:?}");
+        // brake alone dissipates; pivoting, each side takes work.
+        if name == "neutral" {
+            assert!(sides.iter().all(|s| s.sprocket_work > 10.0), "{sides:?}");
+        } else {
+            assert!(sides[0].sprocket_work > sides[1].sprocket_work, "{sides:?}");
+        }
         assert_eq!(sides[0].brake, 0.0, "{name}");
         assert_eq!(sides[1].brake > 0.0, name == "brakes", "{sides:?}");
         let (hull, ..) = system.states(y.as_slice());
@@ -246,10 +275,14 @@ fn a_turn_through_a_differential_keeps_its_books() {
                 assert!(drive.brake[1] > 0.0 && drive.brake[0] == 0.0, "{drive:?}");
                 assert!(drive.dissipation > 0.0, "{drive:?}");
             }
-            DifferentialSteer::Ratio(_) => {
+            DifferentialSteer::Ratio(_) | DifferentialSteer::Neutral(_) => {
                 assert!(drive.torque[0] < drive.torque[1], "{drive:?}");
                 assert_eq!(drive.brake, [0.0, 0.0]);
             }
+        }
+        if name == "neutral" {
+            // The right sprocket forward, the left back.
+            assert!(drive.speed[0] < 0.0 && drive.speed[1] > 0.0, "{drive:?}");
         }
     }
 }
@@ -312,13 +345,32 @@ fn bad_steering_is_refused() {
     b.band = 0.0;
     assert!(refused(DifferentialSteer::Brakes(b)).is_some());
     assert!(refused(brakes()).is_none());
+    let in_neutral = |steer: DifferentialSteer| {
+        SpatialSystem::new(spatial())
+            .with_driveline(Driveline::Differential(Differential {
+                drive: Drive::Free,
+                steer,
+                input: Box::new(|_| 0.0),
+            }))
+            .err()
+    };
+    assert!(in_neutral(neutral(8.0)).is_none());
+    for bad in [0.0, -1.0, f64::INFINITY, f64::NAN] {
+        let error = in_neutral(neutral(bad)).expect("a full difference out of range refused");
+        assert!(
+            matches!(error, DrivelineError::Figure { .. })
+                && error.to_string().contains("full-steer difference"),
+            "{bad}: {error}"
+        );
+    }
 }
 
 /// A driver holding a heading steers through a differential too: asked
 /// 45° to the left from 0.5 s over 1.5 s, the `Twin` driven at a mean
 /// 1.2 m/s holds within 2° of it at 4 s through its steer unit (the
 /// difference asked, up to the unit's ratio; measured 0.9° short) and
-/// through its brakes (measured 0.8° short). A brake turns the vehicle
+/// through its brakes (measured 0.8° short), and pivots to it standing
+/// through its steer unit in neutral. A brake turns the vehicle
 /// only once its torque passes what the ground's turning resistance
 /// needs (about 2 kN m on the `Twin`, `spatial_turn`): a driver braking
 /// in proportion to the difference asked, fully at the gauge times
@@ -335,8 +387,13 @@ fn a_driver_turns_the_vehicle_through_a_differential() {
     for (name, steer) in [
         ("brakes", DifferentialSteer::Brakes(b)),
         ("steer unit", steer_unit(2.31)),
+        ("neutral", neutral(8.0)),
     ] {
-        let mut system = through(box_drive(1.2, 0.5), steer, |_| 0.0)
+        let drive = match steer {
+            DifferentialSteer::Neutral(_) => Drive::Free,
+            _ => box_drive(1.2, 0.5),
+        };
+        let mut system = through(drive, steer, |_| 0.0)
             .with_steering(HeadingHold::turn(FRAC_PI_4, (0.5, 1.5), 1.5, 1.8))
             .expect("a driver");
         let mut y = system.state(&start.0, &start.1, &start.2);

@@ -419,16 +419,28 @@ fn steer_spatial_runs_the_m113s_turns_near_the_theorys() {
 /// short through the brakes, whose driver brakes only on an error), its
 /// books within their bound (the run's own warning absent); through the
 /// brakes the left (inner) brake's torque reaches at least a kilonewton
-/// metre in the turn, through the others no brake acts. The Marder, which
-/// publishes no steer ratio, is refused a steer unit without one (exit
-/// 1, saying so).
+/// metre in the turn, through the others no brake acts. Standing, in
+/// neutral, it pivots: its centre of mass stays within 0.25 m of where
+/// it stood, a tenth of the track's length on the ground (measured
+/// 0.15 m: the turn's centre is the tracks' loads', not the centre of
+/// mass). The Marder, which publishes no
+/// steer ratio, is refused a steer unit without one, and a neutral pivot;
+/// the M113 a neutral pivot with a speed asked or through `--engine`
+/// (exit 1, saying why).
 #[test]
 fn spatial_turns_through_each_driveline() {
     let dir = scratch("spatial-drivelines");
-    for driveline in ["sides", "brakes", "steer-ratio"] {
+    for driveline in ["sides", "brakes", "steer-ratio", "neutral-pivot"] {
         let out = dir.join(driveline);
+        let speed = if driveline == "neutral-pivot" {
+            "0"
+        } else {
+            "3"
+        };
         let args = [
             "spatial",
+            "--speed",
+            speed,
             "--driveline",
             driveline,
             "--duration",
@@ -460,6 +472,14 @@ fn spatial_turns_through_each_driveline() {
             "{driveline}: heading {heading}°"
         );
         let most = |name: &str| rows.iter().map(|r| r[at(name)].abs()).fold(0.0, f64::max);
+        if driveline == "neutral-pivot" {
+            let (x0, y0) = (rows[0][at("x")], rows[0][at("y")]);
+            let moved = rows
+                .iter()
+                .map(|r| (r[at("x")] - x0).hypot(r[at("y")] - y0))
+                .fold(0.0, f64::max);
+            assert!(moved < 0.25, "pivoting, the centre moved {moved} m");
+        }
         if driveline == "brakes" {
             assert!(most("l_brake_torque") > 1e3, "{driveline}");
         } else {
@@ -483,6 +503,27 @@ fn spatial_turns_through_each_driveline() {
     );
     assert_eq!(refused.status.code(), Some(1));
     assert!(programs::text(&refused.stderr).contains("--steer-ratio"));
+    for (args, why) in [
+        (
+            &["--vehicle", "marder", "--speed", "0"][..],
+            "publishes no steer ratio",
+        ),
+        (&["--speed", "3"][..], "--speed 0"),
+        (&["--speed", "0", "--engine"][..], "--engine"),
+    ] {
+        let mut all = vec![
+            "spatial",
+            "--driveline",
+            "neutral-pivot",
+            "--duration",
+            "0.1",
+        ];
+        all.extend_from_slice(args);
+        let refused = run(&binary(), &all, &dir);
+        assert_eq!(refused.status.code(), Some(1), "{args:?}");
+        let said = programs::text(&refused.stderr);
+        assert!(said.contains(why), "{args:?}: {said}");
+    }
 }
 
 /// The columns of a CSV file by name, and its rows.

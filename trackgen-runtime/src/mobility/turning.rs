@@ -21,9 +21,9 @@
 //!   `B/2 (ρ + 1)/(ρ − 1)`. Without a published ratio, the braked
 //!   differential's full steer: the inner belt held, the outer at `2 v`,
 //!   kinematically `B/2`. The tracks slip, so the radius run is larger.
-//!   A neutral pivot (the X200-4's, by the engine's speed in neutral) is
-//!   not modelled: the smallest radius asked of a geared steer is its
-//!   ratio's.
+//!   The radius is asked while moving, so a geared steer's is its lowest
+//!   range's ratio's; the X200-4's pivot in neutral is a
+//!   [`NeutralSteer`](crate::spatial_vehicle::NeutralSteer)'s.
 //! - **The pivot turn** ([`pivot`]): the belts at `±v`, the vehicle
 //!   turning about its centre: its yaw rate and the sprockets' power,
 //!   what skid-steering's moment of turning resistance costs (the theory

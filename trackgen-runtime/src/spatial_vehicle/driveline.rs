@@ -38,8 +38,24 @@
 //! The unit is a PI controller on the speed difference (the hydrostatic
 //! loop's stiffness and leak), limited to its largest torque (the relief
 //! valve's). It cannot pivot the vehicle from rest (the mean speed is
-//! zero there): the X200-4's neutral pivot, which needs the engine's
-//! speed, is not modelled.
+//! zero there).
+//!
+//! **In neutral** ([`NeutralSteer`]) no range drives the differential's
+//! box, while the steer drive, geared to the engine, still turns the two
+//! sprockets apart: the X200-4 pivots the vehicle (OD1714). The unit then
+//! holds the speed difference at `s k ω_e`, `ω_e` the engine's speed held
+//! by its governor and `k` the steer drive's ratio, whatever the
+//! sprockets' mean. The box's drive says what holds the mean: free, it
+//! settles where the two tracks' resistances balance, and the vehicle
+//! creeps toward the side that resists less as it turns; held at rest,
+//! the tracks turn at equal and opposite speeds and the vehicle pivots
+//! about its centre. The published minimum steer ratios give `k`: in
+//! range `r`, locked up, the sprockets' mean turns at `ω̄ = ω_e / N_r`
+//! (`N_r` the range's reduction with the final drive), so full steer's
+//! `q_r ω̄` is `(q_r / N_r) ω_e`, and a steer drive geared to the engine
+//! makes `q_r / N_r` the same in every range
+//! ([`steer_drive_ratio`]: the X200-4's four agree within 0.9 % of
+//! their mean).
 
 use thiserror::Error;
 
@@ -111,6 +127,10 @@ pub enum DifferentialSteer {
     Brakes(SteeringBrakes),
     /// A steer unit holding the sprockets' speed ratio.
     Ratio(SteerUnit),
+    /// A steer unit in neutral, holding the sprockets' speed difference
+    /// at the steer drive's whatever their mean: a pivot (the box's drive
+    /// free, or holding the mean at rest).
+    Neutral(NeutralSteer),
 }
 
 /// A steering brake on each sprocket axle: an input `s` brakes the left
@@ -150,6 +170,81 @@ pub struct SteerUnit {
     pub integral: f64,
     /// Its largest torque on each axle, N m, > 0.
     pub max_torque: f64,
+}
+
+/// A steer unit in neutral: equal and opposite torques on the two axles
+/// holding their speed difference at `s` times
+/// [`full_difference`](Self::full_difference) for a steering input `s`,
+/// whatever their mean (the X200-4's neutral pivot).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NeutralSteer {
+    /// The sprockets' speed difference at full steer, rad/s, > 0: the
+    /// steer drive's ratio times the engine's governed speed
+    /// ([`steer_drive_ratio`]).
+    pub full_difference: f64,
+    /// The PI controller's proportional gain on the speed difference,
+    /// N m s/rad, ≥ 0.
+    pub proportional: f64,
+    /// Its integral gain, N m/rad, ≥ 0.
+    pub integral: f64,
+    /// Its largest torque on each axle, N m, > 0.
+    pub max_torque: f64,
+}
+
+/// Published steer ratios that no steer drive geared to the engine makes.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum SteerRatiosError {
+    /// Not one ratio per range.
+    #[error("{ratios} minimum steer ratios for {ranges} ranges: one per range is needed")]
+    Count {
+        /// How many ratios.
+        ratios: usize,
+        /// How many ranges.
+        ranges: usize,
+    },
+    /// A ratio or a reduction out of its range.
+    #[error("range {range}: {source}")]
+    Figure {
+        /// The range, 1-based.
+        range: usize,
+        /// Which figure, and its range.
+        source: ParameterError,
+    },
+}
+
+/// The steer drive's ratio `k` that the minimum steer ratios `ratios` of
+/// ranges whose overall reductions (engine over sprocket speed, the
+/// final drive's included) are `reductions` imply: each range's
+/// `q_r / N_r` (`q_r = 2 (ρ_r − 1)/(ρ_r + 1)`, the sprockets' speed
+/// difference at full steer over their mean), their mean, and the largest
+/// departure of one from it as a fraction of it. Full steer turns the
+/// sprockets `k ω_e` apart (rad/s) with the engine at `ω_e`: in range `r`
+/// with the converter locked the mean is `ω_e / N_r`, so a steer drive
+/// geared to the engine makes every range's `q_r / N_r` the same.
+pub fn steer_drive_ratio(
+    ratios: &[f64],
+    reductions: &[f64],
+) -> Result<(f64, f64), SteerRatiosError> {
+    if ratios.len() != reductions.len() || ratios.is_empty() {
+        return Err(SteerRatiosError::Count {
+            ratios: ratios.len(),
+            ranges: reductions.len(),
+        });
+    }
+    let mut each = Vec::with_capacity(ratios.len());
+    for (r, (&rho, &n)) in ratios.iter().zip(reductions).enumerate() {
+        let figure = |source| SteerRatiosError::Figure {
+            range: r + 1,
+            source,
+        };
+        ParameterError::check("minimum steer ratio", rho, 1.0, true).map_err(figure)?;
+        ParameterError::check("overall reduction", n, 0.0, true).map_err(figure)?;
+        let span = 2.0 * (rho - 1.0) / (rho + 1.0);
+        each.push(span / n);
+    }
+    let k = each.iter().sum::<f64>() / each.len() as f64;
+    let departure = each.iter().fold(0.0_f64, |m, e| m.max((e / k - 1.0).abs()));
+    Ok((k, departure))
 }
 
 /// A driveline that makes no driveline.
@@ -230,20 +325,47 @@ impl SteerUnit {
     /// unit radius whose target, the difference wanted, comes as its trim
     /// (one owner of the PI law and its anti-windup: [`Drive`]).
     pub(super) fn controller(&self) -> Drive {
-        Drive::Speed {
-            target: Box::new(|_| 0.0),
-            proportional: self.proportional,
-            integral: self.integral,
-            max_torque: self.max_torque,
-        }
+        unit_controller(self.proportional, self.integral, self.max_torque)
     }
 
     fn check(&self) -> Result<(), ParameterError> {
         ParameterError::check("minimum steer ratio", self.min_ratio, 1.0, true)?;
-        ParameterError::check("proportional gain", self.proportional, 0.0, false)?;
-        ParameterError::check("integral gain", self.integral, 0.0, false)?;
-        ParameterError::check("largest torque", self.max_torque, 0.0, true)
+        check_unit_gains(self.proportional, self.integral, self.max_torque)
     }
+}
+
+impl NeutralSteer {
+    /// The unit's PI law on the speed difference ([`SteerUnit`]'s).
+    pub(super) fn controller(&self) -> Drive {
+        unit_controller(self.proportional, self.integral, self.max_torque)
+    }
+
+    fn check(&self) -> Result<(), ParameterError> {
+        ParameterError::check("full-steer difference", self.full_difference, 0.0, true)?;
+        check_unit_gains(self.proportional, self.integral, self.max_torque)
+    }
+}
+
+/// A steer unit's PI law: a speed drive on a unit radius, its target 0 and
+/// the difference wanted its trim.
+fn unit_controller(proportional: f64, integral: f64, max_torque: f64) -> Drive {
+    Drive::Speed {
+        target: Box::new(|_| 0.0),
+        proportional,
+        integral,
+        max_torque,
+    }
+}
+
+/// A steer unit's gains ≥ 0 and its largest torque > 0.
+fn check_unit_gains(
+    proportional: f64,
+    integral: f64,
+    max_torque: f64,
+) -> Result<(), ParameterError> {
+    ParameterError::check("proportional gain", proportional, 0.0, false)?;
+    ParameterError::check("integral gain", integral, 0.0, false)?;
+    ParameterError::check("largest torque", max_torque, 0.0, true)
 }
 
 impl SteeringBrakes {
@@ -321,6 +443,12 @@ impl Driveline {
                             source,
                         })
                     }
+                    DifferentialSteer::Neutral(u) => {
+                        u.check().map_err(|source| DrivelineError::Figure {
+                            what: "steer unit in neutral",
+                            source,
+                        })
+                    }
                 }
             }
         }
@@ -359,6 +487,61 @@ mod tests {
             let held = (1.0 + 0.5 * q) / (1.0 - 0.5 * q);
             assert!((held / ratio - 1.0).abs() < 1e-13, "{ratio}: {held}");
         }
+    }
+
+    /// A transmission whose minimum steer ratios come from one steer
+    /// drive geared to the engine (`ρ_r = (2 + k N_r)/(2 − k N_r)`) gives
+    /// that drive's ratio back to rounding, with no departure.
+    #[test]
+    fn ratios_made_by_one_steer_drive_give_its_ratio_back() {
+        let k = 0.05;
+        let reductions = [15.9, 8.97, 5.6, 3.99];
+        let ratios = reductions.map(|n| (2.0 + k * n) / (2.0 - k * n));
+        let (found, departure) = steer_drive_ratio(&ratios, &reductions).expect("in range");
+        assert!((found / k - 1.0).abs() < 1e-14, "{found}");
+        assert!(departure < 1e-14, "{departure}");
+    }
+
+    /// The Allison X200-4's published minimum steer ratios (2.31, 1.58,
+    /// 1.32, 1.22 in ranges 1–4 of 4.16, 2.34, 1.46, 1.04:1; US Army
+    /// Ordnance subcourse OD1714) are one steer drive's: each range's
+    /// `q_r / N_r` within 0.9 % of their mean (measured 0.87 %: within
+    /// what the ratios' two decimals carry, 0.2–2 % of each `q_r`),
+    /// whatever the final drive, while the `q_r` themselves span a factor
+    /// of 4.
+    #[test]
+    fn the_x200_4s_steer_ratios_are_one_steer_drive_geared_to_the_engine() {
+        let ratios = [2.31, 1.58, 1.32, 1.22];
+        for final_drive in [1.0, 3.833] {
+            let reductions = [4.16, 2.34, 1.46, 1.04].map(|n| n * final_drive);
+            let (k, departure) = steer_drive_ratio(&ratios, &reductions).expect("in range");
+            assert!(departure < 0.009, "{departure}");
+            let first = 2.0 * (2.31 - 1.0) / (2.31 + 1.0) / reductions[0];
+            assert!((first / k - 1.0).abs() < 0.009, "{first} against {k}");
+        }
+    }
+
+    /// Not one ratio per range, a ratio of 1 or less, or a reduction of 0
+    /// is refused, naming the range.
+    #[test]
+    fn steer_ratios_that_no_steer_drive_makes_are_refused() {
+        assert!(matches!(
+            steer_drive_ratio(&[2.0, 1.5], &[4.0]),
+            Err(SteerRatiosError::Count {
+                ratios: 2,
+                ranges: 1
+            })
+        ));
+        assert!(matches!(
+            steer_drive_ratio(&[], &[]),
+            Err(SteerRatiosError::Count { .. })
+        ));
+        assert!(matches!(
+            steer_drive_ratio(&[2.0, 1.0], &[4.0, 2.0]),
+            Err(SteerRatiosError::Figure { range: 2, .. })
+        ));
+        let error = steer_drive_ratio(&[2.0, 1.5], &[4.0, 0.0]).expect_err("a zero reduction");
+        assert!(error.to_string().starts_with("range 2: "), "{error}");
     }
 
     /// The brakes by the parking rule take the parking brake's elastic

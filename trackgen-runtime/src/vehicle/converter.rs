@@ -192,6 +192,35 @@ impl Driveline {
         engine_torque(engine, speed).0
     }
 
+    /// The engine's rated speed, rad/s: where its full-load map's power
+    /// `T ω` is largest (the map is linear between its points, so the
+    /// largest is at a point or where a falling segment's `T ω` turns
+    /// over, `ω = −a / 2b` for `T = a + b ω`).
+    pub fn rated_speed(&self) -> f64 {
+        let power = |w: f64| Self::full_load(&self.engine, w) * w;
+        let mut best = (0.0, f64::NEG_INFINITY);
+        let mut consider = |w: f64| {
+            let p = power(w);
+            if p > best.1 {
+                best = (w, p);
+            }
+        };
+        for pair in self.engine.windows(2) {
+            let [(w0, t0), (w1, t1)] = [pair[0], pair[1]];
+            consider(w0);
+            consider(w1);
+            let b = (t1 - t0) / (w1 - w0);
+            let a = t0 - b * w0;
+            if b < 0.0 {
+                let w = -a / (2.0 * b);
+                if w0 < w && w < w1 {
+                    consider(w);
+                }
+            }
+        }
+        best.0
+    }
+
     /// The part of the turbine's torque that reaches this sprocket: the
     /// stages' efficiencies times the side's share.
     pub fn fraction(&self) -> f64 {
