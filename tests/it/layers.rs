@@ -230,9 +230,17 @@ pub const APP: Graph = &[
         &["console", "cli", "offered", "modes", "turn_runs"],
     ),
     ("spatial_rows", &[]),
+    ("spatial_frames", &[]),
     (
         "spatial",
-        &["console", "cli", "offered", "report", "spatial_rows"],
+        &[
+            "console",
+            "cli",
+            "offered",
+            "report",
+            "spatial_rows",
+            "spatial_frames",
+        ],
     ),
     (
         "run",

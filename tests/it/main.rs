@@ -61,6 +61,7 @@ mod spatial_drive;
 mod spatial_driveline;
 mod spatial_dynamics;
 mod spatial_modes;
+mod spatial_scene;
 mod spatial_slope;
 mod spatial_steering;
 mod spatial_straight;

@@ -35,6 +35,7 @@ use trackgen_arrow::ArrowSink;
 use crate::cli::{self, CourseArgs, within};
 use crate::console::say;
 use crate::offered::Offered;
+use crate::spatial_frames::Frames;
 use crate::spatial_rows::{COLUMNS, record, shoe_columns, shoe_forces};
 
 /// Drive the vehicle in 3-D: both tracks and the hull, settled, driven
@@ -394,6 +395,7 @@ fn drive<V: SpatialVehicleSystem>(
     field.check()?;
     let layout = V::layout();
     let assembling = Instant::now();
+    let ground = field.clone();
     let mut system = V::spatial(V::declared_laws(), field)?;
     let mut y = system.assembled(&terrain)?;
     if args.side_slope != 0.0 {
@@ -463,6 +465,7 @@ fn drive<V: SpatialVehicleSystem>(
         "{bar:40} {pos:>5}/{len} ms simulated  {elapsed_precise}  eta {eta}",
     )?);
     let mut summary = Summary::new(args.output_every);
+    let mut frames = Frames::new::<V>(args.duration);
     let started = Instant::now();
     let mut t = 0.0;
     let mut row = 0u64;
@@ -476,6 +479,7 @@ fn drive<V: SpatialVehicleSystem>(
             };
             let turning = at >= args.turn_at && at <= args.turn_at + args.turn_time;
             summary.add(at, &out, turning && angle != 0.0);
+            frames.offer(&system, at, state.as_slice());
             let values = record(&out);
             sink.row(at, &values)?;
             wide_row.clear();
@@ -505,16 +509,7 @@ fn drive<V: SpatialVehicleSystem>(
     let books = Books::at(&system, y.as_slice()).since(&before);
     report(&summary, (t, wall), &stepper.stats(), &books, args);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
-    let kept = thinned.results();
-    if kept.len() >= 2 {
-        let column = |name| kept.column(name).unwrap_or_default();
-        let path: Vec<_> = (kept.times().iter().zip(column("x")).zip(column("y")))
-            .zip(column("heading"))
-            .map(|(((t, x), y), heading)| (*t, x, y, heading))
-            .collect();
-        draw(&dir.join("spatial.svg"), &path, V::NAME)?;
-        written.push("spatial.svg");
-    }
+    written.extend(pictures(&dir, &thinned, (&frames, &ground), V::NAME)?);
     say!(
         "wrote {}/{{{}}} ({row} rows)",
         dir.display(),
@@ -522,6 +517,32 @@ fn drive<V: SpatialVehicleSystem>(
     );
     outcome
         .map_err(|e| format!("the run stopped early: {e} (rows up to t = {t:.4} s written)").into())
+}
+
+/// The run's pictures into `dir`: the path from above (`spatial.svg`,
+/// from the `thinned` rows) and the page that plays its `frames` over the
+/// `ground` (`animation.html`); the files written.
+fn pictures(
+    dir: &Path,
+    thinned: &Thinned,
+    (frames, ground): (&Frames, &HeightField),
+    name: &str,
+) -> Result<Vec<&'static str>, Box<dyn Error>> {
+    let mut written = Vec::new();
+    let kept = thinned.results();
+    if kept.len() >= 2 {
+        let column = |name| kept.column(name).unwrap_or_default();
+        let path: Vec<_> = (kept.times().iter().zip(column("x")).zip(column("y")))
+            .zip(column("heading"))
+            .map(|(((t, x), y), heading)| (*t, x, y, heading))
+            .collect();
+        draw(&dir.join("spatial.svg"), &path, name)?;
+        written.push("spatial.svg");
+    }
+    if frames.write(&dir.join("animation.html"), ground, name)? {
+        written.push("animation.html");
+    }
+    Ok(written)
 }
 
 /// The rows' times: every `every` s from 0, and the end. The rows are

@@ -419,7 +419,8 @@ fn steer_spatial_runs_the_m113s_turns_near_the_theorys() {
 /// short through the brakes, whose driver brakes only on an error), its
 /// books within their bound (the run's own warning absent); through the
 /// brakes the left (inner) brake's torque reaches at least a kilonewton
-/// metre in the turn, through the others no brake acts. Standing, in
+/// metre in the turn, through the others no brake acts; `animation.html`
+/// holds a frame every 0.04 s. Standing, in
 /// neutral, it pivots: its centre of mass stays within 0.25 m of where
 /// it stood, a tenth of the track's length on the ground (measured
 /// 0.15 m: the turn's centre is the tracks' loads', not the centre of
@@ -471,6 +472,9 @@ fn spatial_turns_through_each_driveline() {
             (heading - 30.0).abs() < 3.0,
             "{driveline}: heading {heading}°"
         );
+        // The page plays a frame every 0.04 s of the 6 s, both ends in.
+        let page = std::fs::read_to_string(out.join("animation.html")).unwrap();
+        assert_eq!(page.matches("{\"t\":").count(), 151, "{driveline}");
         let most = |name: &str| rows.iter().map(|r| r[at(name)].abs()).fold(0.0, f64::max);
         if driveline == "neutral-pivot" {
             let (x0, y0) = (rows[0][at("x")], rows[0][at("y")]);

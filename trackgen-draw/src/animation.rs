@@ -9,7 +9,7 @@ use trackgen::scene::{Frame, Ground};
 /// integer formatting: the page holds ~10⁵ numbers, and float formatting
 /// with a precision (its exact, bignum path) was a tenth of the main job's
 /// time outside the simulation.
-struct Mm(f64);
+pub(crate) struct Mm(pub(crate) f64);
 
 impl std::fmt::Display for Mm {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

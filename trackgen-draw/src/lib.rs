@@ -1,7 +1,7 @@
 //! Pictures of trackgen runs, apart from the physics: the vehicle at one
 //! moment on its ground as a still SVG picture ([`vehicle`]), the run's
 //! time histories ([`plots`]) and a self-contained page that plays the
-//! run ([`animation`]). The geometry they draw is the runtime's
+//! run ([`animation`]; in 3-D, [`spatial_animation`]). The geometry they draw is the runtime's
 //! `trackgen::scene` (a [`Frame`](trackgen::scene::Frame) of the vehicle
 //! from its recorded coordinates, the [`Ground`](trackgen::scene::Ground)
 //! it drove on); the main job, the mobility report and a user's own code
@@ -11,4 +11,5 @@
 
 pub mod animation;
 pub mod plots;
+pub mod spatial_animation;
 pub mod vehicle;

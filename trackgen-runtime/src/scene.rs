@@ -50,12 +50,7 @@ impl Scene {
     /// running gear).
     pub fn of<V: Vehicle>() -> Scene {
         type S<V> = <V as Vehicle>::System;
-        let declared = S::<V>::hull();
-        let hull: Vec<Vector2<f64>> = if declared.is_empty() {
-            hull::<V>()
-        } else {
-            declared.iter().map(|&[x, y]| Vector2::new(x, y)).collect()
-        };
+        let hull = outline::<V>();
         let joints = S::<V>::track_description()
             .joints()
             .expect("a track has joints");
@@ -159,6 +154,18 @@ impl Scene {
             ));
         }
         out
+    }
+}
+
+/// The hull's outline that pictures of `V` draw, in the chassis'
+/// centroid frame, m: the declared one (`hull: [...]`), or for a vehicle
+/// that declares none a side view drawn over its running gear.
+pub fn outline<V: Vehicle>() -> Vec<Vector2<f64>> {
+    let declared = <V as Vehicle>::System::hull();
+    if declared.is_empty() {
+        hull::<V>()
+    } else {
+        declared.iter().map(|&[x, y]| Vector2::new(x, y)).collect()
     }
 }
 

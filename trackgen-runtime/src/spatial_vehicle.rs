@@ -39,6 +39,7 @@ mod driveline;
 mod envelope;
 mod ground;
 mod outputs;
+mod scene;
 mod steering;
 mod system;
 mod tensions;
@@ -52,6 +53,7 @@ pub use driveline::{
 };
 pub use envelope::EngineEnvelope;
 pub use outputs::{SideOutputs, SpatialOutputs};
+pub use scene::SpatialScene;
 pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
 pub use system::{SideBooks, SpatialEnergy, SpatialSystem};
 pub use tensions::TrackTensions;

@@ -5,11 +5,12 @@
 //! [`SpatialSimulated`]: assembled on a course, driven and steered, read
 //! out.
 
-use nalgebra::{DVector, SVector, Vector3};
+use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::{
     Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideBooks, SideDrives,
-    SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialSystem, SteeringError, TreeState,
+    SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialScene, SpatialSystem, SteeringError,
+    TreeState,
 };
 use crate::assembly::{SideError, assemble_sides};
 use crate::contact::axial::GuideLaw;
@@ -59,6 +60,10 @@ pub trait SpatialSimulated: OdeSystem + Send {
 
     /// What the vehicle shows at `t` and `y` ([`SpatialSystem::outputs`]).
     fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError>;
+
+    /// The vehicle drawn at `t` and `y`, its hull by `outline`
+    /// ([`SpatialSystem::scene`]).
+    fn scene(&self, t: f64, y: &[f64], outline: &[Vector2<f64>]) -> SpatialScene;
 
     /// Where its energy is at `y` ([`SpatialSystem::energy`]).
     fn energy(&self, y: &[f64]) -> SpatialEnergy;
@@ -169,15 +174,15 @@ where
     }
 
     fn rolling_radius(&self) -> f64 {
-        let radii = self
-            .dynamics
-            .sprockets
-            .map(|s| s.map_or(f64::NAN, |s| s.rolling_radius));
-        0.5 * (radii[0] + radii[1])
+        self.dynamics.mean_rolling_radius()
     }
 
     fn outputs(&self, t: f64, y: &[f64]) -> Result<SpatialOutputs, SimulationError> {
         SpatialSystem::outputs(self, t, y)
+    }
+
+    fn scene(&self, t: f64, y: &[f64], outline: &[Vector2<f64>]) -> SpatialScene {
+        SpatialSystem::scene(self, t, y, outline)
     }
 
     fn energy(&self, y: &[f64]) -> SpatialEnergy {

@@ -270,7 +270,7 @@ where
 
     /// The two sprockets' mean rolling radius, m (NaN where a side has
     /// none: a differential refuses such a vehicle).
-    fn mean_rolling_radius(&self) -> f64 {
+    pub(super) fn mean_rolling_radius(&self) -> f64 {
         let radii = self
             .sprockets
             .map(|s| s.map_or(f64::NAN, |s| s.rolling_radius));
