@@ -24,9 +24,9 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, NeutralSteer,
-    SideBooks, SideDrives, SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem,
-    SteeringBrakes, steer_drive_ratio,
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideBooks, SideDrives,
+    SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringBrakes,
+    steer_drive_ratio,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
 use trackgen::vehicle::{Drive, Powertrain, speed_ramp};
@@ -173,13 +173,11 @@ fn driveline<V: SpatialVehicleSystem>(
     let side = V::speed_drive(|_| 0.0);
     let not_speed = || format!("{}'s drive is not a speed controller", V::NAME);
     if args.driveline == DrivelineKind::NeutralPivot {
-        // The box held at rest by a differential's speed drive (twice a
-        // side's gains and limit) toward the target, 0.
-        let unit = neutral_pivot::<V>(entry, args, &side)?;
-        let mut differential =
-            Differential::with_steer_unit(&side, target(), 2.0).ok_or_else(not_speed)?;
-        differential.steer = DifferentialSteer::Neutral(unit.0);
-        return Ok((Driveline::Differential(differential), unit.1));
+        // The box held at rest by a differential's speed drive toward the
+        // target, 0.
+        let (full, said) = neutral_pivot::<V>(entry, args)?;
+        let differential = Differential::in_neutral(&side, target(), full).ok_or_else(not_speed)?;
+        return Ok((Driveline::Differential(differential), said));
     }
     if args.driveline == DrivelineKind::SteerRatio {
         let ratio = args
@@ -226,21 +224,18 @@ fn driveline<V: SpatialVehicleSystem>(
     Ok((Driveline::Differential(differential), said))
 }
 
-/// The steer unit in neutral `args` ask for: full steer turns the
-/// sprockets `k ω_e` apart, `k` the steer drive's ratio that the
-/// vehicle's published steer ratios and its converter powertrain's
-/// ranges imply ([`steer_drive_ratio`]) and `ω_e` the engine's rated
-/// speed (the governor at full throttle); the unit's gains half of
-/// `side`'s and its limit `side`'s, as [`Differential::with_steer_unit`]'s.
-/// Refused, saying why: a speed asked (a pivot stands), `--engine` (it
-/// caps the box's drive, and no range drives the box in neutral), no
-/// published steer ratios or no converter powertrain, ratios that are not
-/// one per range.
+/// The sprockets' speed difference at full steer in neutral that `args`
+/// ask for, rad/s, and what to say of it: `k ω_e`, `k` the steer drive's
+/// ratio that the vehicle's published steer ratios and its converter
+/// powertrain's ranges imply ([`steer_drive_ratio`]) and `ω_e` the
+/// engine's rated speed (the governor at full throttle). Refused, saying
+/// why: a speed asked (a pivot stands), `--engine` (it caps the box's
+/// drive, and no range drives the box in neutral), no published steer
+/// ratios or no converter powertrain, ratios that are not one per range.
 fn neutral_pivot<V: SpatialVehicleSystem>(
     entry: &Offered,
     args: &SpatialArgs,
-    side: &Drive,
-) -> Result<(NeutralSteer, String), String> {
+) -> Result<(f64, String), String> {
     if args.speed != 0.0 {
         return Err(format!(
             "a pivot in neutral stands: give --speed 0 (not {})",
@@ -272,30 +267,15 @@ fn neutral_pivot<V: SpatialVehicleSystem>(
     let (ratio, departure) = steer_drive_ratio(&entry.steer_ratios, &reductions)
         .map_err(|e| format!("{}'s steer ratios: {e}", V::NAME))?;
     let engine = converter.rated_speed();
-    let Drive::Speed {
-        proportional,
-        integral,
-        max_torque,
-        ..
-    } = *side
-    else {
-        return Err(format!("{}'s drive is not a speed controller", V::NAME));
-    };
-    let unit = NeutralSteer {
-        full_difference: ratio * engine,
-        proportional: 0.5 * proportional,
-        integral: 0.5 * integral,
-        max_torque,
-    };
+    let full = ratio * engine;
     let said = format!(
         "a differential in neutral, its box held still and its steer unit pivoting it: the \
-         sprockets {:.2} rad/s apart at full steer, the steer drive's {ratio:.5} of the engine's rated {:.0} rpm (the steer \
-         ratios' ranges within {:.1} % of it)",
-        unit.full_difference,
+         sprockets {full:.2} rad/s apart at full steer, the steer drive's {ratio:.5} of the \
+         engine's rated {:.0} rpm (the steer ratios' ranges within {:.1} % of it)",
         engine * 30.0 / std::f64::consts::PI,
         departure * 100.0
     );
-    Ok((unit, said))
+    Ok((full, said))
 }
 
 fn side_slope(s: &str) -> Result<f64, String> {

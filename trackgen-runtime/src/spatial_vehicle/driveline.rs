@@ -286,6 +286,45 @@ impl Differential {
         target: Box<dyn Fn(f64) -> f64 + Send>,
         ratio: f64,
     ) -> Option<Differential> {
+        Self::steered_by_unit(side, target, |proportional, integral, max_torque| {
+            DifferentialSteer::Ratio(SteerUnit {
+                min_ratio: ratio,
+                proportional,
+                integral,
+                max_torque,
+            })
+        })
+    }
+
+    /// [`with_steer_unit`](Self::with_steer_unit)'s differential in
+    /// neutral: the same unit holding the sprockets `full_difference`
+    /// rad/s apart at full steer ([`NeutralSteer`]), the box's drive
+    /// holding the belts' mean at `target` (at rest, for a pivot about
+    /// the vehicle's centre).
+    pub fn in_neutral(
+        side: &Drive,
+        target: Box<dyn Fn(f64) -> f64 + Send>,
+        full_difference: f64,
+    ) -> Option<Differential> {
+        Self::steered_by_unit(side, target, |proportional, integral, max_torque| {
+            DifferentialSteer::Neutral(NeutralSteer {
+                full_difference,
+                proportional,
+                integral,
+                max_torque,
+            })
+        })
+    }
+
+    /// The box driven by twice `side`'s gains and limit toward `target`,
+    /// steered by the `unit` made of half `side`'s gains and its limit
+    /// (proportional, integral, largest torque); `None` where `side` is
+    /// not a speed drive.
+    fn steered_by_unit(
+        side: &Drive,
+        target: Box<dyn Fn(f64) -> f64 + Send>,
+        unit: impl FnOnce(f64, f64, f64) -> DifferentialSteer,
+    ) -> Option<Differential> {
         let Drive::Speed {
             proportional,
             integral,
@@ -302,12 +341,7 @@ impl Differential {
                 integral: 2.0 * integral,
                 max_torque: 2.0 * max_torque,
             },
-            steer: DifferentialSteer::Ratio(SteerUnit {
-                min_ratio: ratio,
-                proportional: 0.5 * proportional,
-                integral: 0.5 * integral,
-                max_torque,
-            }),
+            steer: unit(0.5 * proportional, 0.5 * integral, max_torque),
             input: Box::new(|_| 0.0),
         })
     }
