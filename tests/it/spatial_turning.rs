@@ -22,6 +22,7 @@
 use trackgen::analysis::{EquilibriumOptions, equilibrium};
 use trackgen::mobility::turning::{SteadyTurnRun, pivot, smallest_radius};
 use trackgen::mobility::{EventError, EventSettings};
+use trackgen::multibody::RecursiveModel;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::SpatialVehicleSystem;
 use trackgen::steering::{SkidSteer, SteadyTurn, TrackLoad};
@@ -117,7 +118,9 @@ fn the_smallest_turns_and_the_pivot_follow_the_theory() {
     let (unit, braked, pivoted) = std::thread::scope(|scope| {
         let unit = scope.spawn(|| smallest_radius::<Twin>(&settings, firm(), Some(2.31)));
         let braked = scope.spawn(|| smallest_radius::<Twin>(&settings, firm(), None));
-        let pivoted = pivot::<Twin>(&settings, firm()).expect("the pivot");
+        let pivoted = pivot::<Twin>(&settings, firm(), &[]).expect("the pivot");
+        assert_eq!(pivoted.belts, 1.0, "without steer ratios, the crawl");
+        let pivoted = pivoted.run;
         (
             unit.join().unwrap().expect("the steer unit's turn"),
             braked.join().unwrap().expect("the braked turn"),
@@ -161,6 +164,37 @@ fn the_smallest_turns_and_the_pivot_follow_the_theory() {
     assert!((pivoted.belts[0] - 1.0).abs() < 0.01 && (pivoted.belts[1] + 1.0).abs() < 0.01);
     assert!(pivoted.radius < 0.05 * half, "{pivoted:?}");
     agrees("pivot", &pivoted, &theory_at(&vehicle, &pivoted));
+}
+
+/// With the M113A3's converter powertrain and the X200-4's published
+/// steer ratios, the `Twin` pivots in neutral at full steer: its belts
+/// asked at `±k ω_e r / 2`, `k` the mean of each range's `q_r / N_r`
+/// (computed here from the published figures), `ω_e` the 6V53T's rated
+/// 2800 rpm and `r` the `Twin`'s rolling radius, to 1e-12; run there
+/// within 1 %, and turning as the theory does within 5 %.
+#[test]
+fn with_published_steer_ratios_the_pivot_is_the_neutral_one() {
+    use trackgen::vehicles::m113;
+    let settings = EventSettings::new(m113::powertrain());
+    let turn = pivot::<Twin>(&settings, firm(), &m113::STEER_RATIOS).expect("the neutral pivot");
+    let (asked, pivoted) = (turn.belts, turn.run);
+    let k = m113::STEER_RATIOS
+        .iter()
+        .zip(m113::RANGES)
+        .map(|(rho, n)| 2.0 * (rho - 1.0) / (rho + 1.0) / (n * m113::FINAL_DRIVE))
+        .sum::<f64>()
+        / 4.0;
+    let pitch = crate::support::twin::TRACK
+        .description()
+        .pitch()
+        .expect("one pitch");
+    let r = trackgen::contact::sprocket::rolling_radius(Twin::geometry().sprocket.teeth, pitch);
+    let want = 0.5 * k * m113::ENGINE_RATED_SPEED * r;
+    assert!((asked / want - 1.0).abs() < 1e-12, "{asked} against {want}");
+    for (belt, sign) in pivoted.belts.iter().zip([1.0, -1.0]) {
+        assert!((belt / (sign * asked) - 1.0).abs() < 0.01, "{pivoted:?}");
+    }
+    agrees("neutral pivot", &pivoted, &theory_at(&theory(), &pivoted));
 }
 
 #[test]

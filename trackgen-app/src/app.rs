@@ -114,7 +114,9 @@ impl Entry {
                     ratio,
                 )
             },
-            pivot: |settings| trackgen::mobility::turning::pivot::<V>(settings, V::declared_laws()),
+            pivot: |settings, ratios| {
+                trackgen::mobility::turning::pivot::<V>(settings, V::declared_laws(), ratios)
+            },
             cornering: |settings, circle| {
                 trackgen::mobility::cornering::fastest::<V>(settings, V::declared_laws(), circle)
             },

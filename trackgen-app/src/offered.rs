@@ -4,7 +4,7 @@
 
 use trackgen::mobility::cornering::Circle;
 use trackgen::mobility::search::Search;
-use trackgen::mobility::turning::{SmallestTurn, SteadyTurnRun};
+use trackgen::mobility::turning::{PivotTurn, SmallestTurn, SteadyTurnRun};
 use trackgen::mobility::{EventError, EventSettings, Published};
 use trackgen::vehicle::Powertrain;
 
@@ -51,8 +51,8 @@ pub struct SpatialEvents {
     /// of the ratio given or else the braked differential
     /// (`turning::smallest_radius`).
     pub smallest_radius: fn(&EventSettings, Option<f64>) -> Result<SmallestTurn, EventError>,
-    /// The pivot turn (`turning::pivot`).
-    pub pivot: fn(&EventSettings) -> Result<RunTurn, EventError>,
+    /// The pivot turn (`turning::pivot`), with the published steer ratios.
+    pub pivot: fn(&EventSettings, &[f64]) -> Result<PivotTurn, EventError>,
     /// The fastest steady turn on a circle of the radius given (m),
     /// through a steer unit of the ratio given or else the side drives
     /// (`cornering::fastest`).

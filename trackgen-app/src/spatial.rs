@@ -25,11 +25,11 @@ use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
     Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideBooks, SideDrives,
-    SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteeringBrakes,
-    steer_drive_ratio,
+    SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
+    SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
-use trackgen::vehicle::{Drive, Powertrain, speed_ramp};
+use trackgen::vehicle::{Drive, speed_ramp};
 use trackgen_arrow::ArrowSink;
 
 use crate::cli::{self, CourseArgs, within};
@@ -227,7 +227,7 @@ fn driveline<V: SpatialVehicleSystem>(
 /// The sprockets' speed difference at full steer in neutral that `args`
 /// ask for, rad/s, and what to say of it: `k ω_e`, `k` the steer drive's
 /// ratio that the vehicle's published steer ratios and its converter
-/// powertrain's ranges imply ([`steer_drive_ratio`]) and `ω_e` the
+/// powertrain's ranges imply ([`SteerDrive`]) and `ω_e` the
 /// engine's rated speed (the governor at full throttle). Refused, saying
 /// why: a speed asked (a pivot stands), `--engine` (it caps the box's
 /// drive, and no range drives the box in neutral), no published steer
@@ -254,20 +254,21 @@ fn neutral_pivot<V: SpatialVehicleSystem>(
             V::NAME
         ));
     }
-    let Powertrain::Converter(converter) = entry.engine()? else {
-        return Err(format!(
-            "{}'s powertrain has no ranges: a neutral pivot's steer drive is found from its \
-             ranges' reductions and its steer ratios",
-            V::NAME
-        ));
-    };
-    let reductions: Vec<f64> = (0..converter.ranges.len())
-        .map(|r| converter.reduction(r))
-        .collect();
-    let (ratio, departure) = steer_drive_ratio(&entry.steer_ratios, &reductions)
-        .map_err(|e| format!("{}'s steer ratios: {e}", V::NAME))?;
-    let engine = converter.rated_speed();
-    let full = ratio * engine;
+    let drive = SteerDrive::of(&entry.engine()?, &entry.steer_ratios)
+        .map_err(|e| format!("{}'s steer ratios: {e}", V::NAME))?
+        .ok_or_else(|| {
+            format!(
+                "{}'s powertrain has no ranges: a neutral pivot's steer drive is found from its \
+                 ranges' reductions and its steer ratios",
+                V::NAME
+            )
+        })?;
+    let (full, ratio, engine, departure) = (
+        drive.full_difference(),
+        drive.ratio,
+        drive.engine_speed,
+        drive.departure,
+    );
     let said = format!(
         "a differential in neutral, its box held still and its steer unit pivoting it: the \
          sprockets {full:.2} rad/s apart at full steer, the steer drive's {ratio:.5} of the \

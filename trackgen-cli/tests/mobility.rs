@@ -202,9 +202,13 @@ fn mobility_finds_the_steepest_side_slope_in_3d() {
 /// radius at a crawl through its steer unit's first-range ratio (2.31,
 /// `Entry::steer_ratios`) beside its radius without slip, `B/2 (ρ + 1)/(ρ
 /// − 1)` at its 2.159 m gauge (to the printed digits), which slip only
-/// opens (measured 3.61 m against 2.73 m); and the pivot at ±1 m/s, its
-/// yaw rate below the kinematic `2 v / B` (measured 0.685 of 0.926
-/// rad/s), its power positive. Each run steady (`=`).
+/// opens (measured 3.61 m against 2.73 m); and the X200-4's pivot in
+/// neutral at full steer, its belts at the steer drive's `±k ω_e r / 2`
+/// (k from the published steer ratios over the ranges' reductions, the
+/// 6V53T at its rated 2800 rpm, `r` the sprocket's rolling radius: 1.786
+/// m/s, checked against the figures to 1e-3), its yaw rate below the
+/// kinematic `2 v / B` (measured 1.216 of 1.654 rad/s), its power
+/// positive. Each run steady (`=`).
 #[test]
 fn mobility_turns_the_m113_in_3d() {
     let dir = scratch("mobility-turning");
@@ -224,8 +228,25 @@ fn mobility_turns_the_m113_in_3d() {
     assert!((kinematic - half * 3.31 / 1.31).abs() < 1e-3, "{kinematic}");
     let radius = value("smallest turning radius");
     assert!(radius > kinematic && radius < 2.0 * kinematic, "{radius}");
+    let pivot = results
+        .iter()
+        .find(|r| r["quantity"] == "pivot turn's yaw rate")
+        .expect("the pivot");
+    let belts = pivot["parameter"]["value"].as_f64().expect("the belts");
+    // The steer drive's ratio from the figures, k = mean(q_r / N_r).
+    use trackgen::vehicles::m113;
+    let k = m113::STEER_RATIOS
+        .iter()
+        .zip(m113::RANGES)
+        .map(|(rho, n)| 2.0 * (rho - 1.0) / (rho + 1.0) / (n * m113::FINAL_DRIVE))
+        .sum::<f64>()
+        / 4.0;
+    // Ten teeth on the shoes' 0.154 m pitch: `N p / (2π)`.
+    let rolling = 10.0 * 0.154 / (2.0 * std::f64::consts::PI);
+    let want = 0.5 * k * m113::ENGINE_RATED_SPEED * rolling;
+    assert!((belts / want - 1.0).abs() < 1e-3, "{belts} against {want}");
     let yaw_rate = value("pivot turn's yaw rate");
-    assert!(yaw_rate > 0.0 && yaw_rate < 1.0 / half, "{yaw_rate}");
+    assert!(yaw_rate > 0.0 && yaw_rate < belts / half, "{yaw_rate}");
     assert!(value("pivot turn's power") > 0.0);
 }
 

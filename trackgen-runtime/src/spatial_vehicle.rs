@@ -49,7 +49,7 @@ pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, Driver};
 pub use driveline::{
     Differential, DifferentialSteer, Driveline, DrivelineError, NeutralSteer, SideDrives,
-    SteerInput, SteerRatiosError, SteerUnit, SteeringBrakes, steer_drive_ratio,
+    SteerDrive, SteerInput, SteerRatiosError, SteerUnit, SteeringBrakes, steer_drive_ratio,
 };
 pub use envelope::EngineEnvelope;
 pub use outputs::{SideOutputs, SpatialOutputs};

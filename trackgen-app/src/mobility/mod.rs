@@ -189,7 +189,7 @@ fn run<V: Vehicle>(
     }
     let spatial = entry
         .spatial_events
-        .map(|events| (events, entry.steer_ratios.first().copied()));
+        .map(|events| (events, entry.steer_ratios.as_slice()));
     let work = tasks::<V>(&settings, &footprint, &events, args.quick, spatial);
     let dir = args
         .out

@@ -4,6 +4,7 @@
 use std::time::Instant;
 
 use trackgen::mobility::search::{Limit, Search};
+use trackgen::mobility::turning::PivotTurn;
 use trackgen::mobility::{
     EventError, EventSettings, Footprint, grade, obstacle, quantity, ride, soil,
 };
@@ -217,7 +218,7 @@ pub(super) fn tasks<'a, V: Vehicle>(
     footprint: &'a Footprint,
     events: &[&'static str],
     quick: bool,
-    spatial: Option<(SpatialEvents, Option<f64>)>,
+    spatial: Option<(SpatialEvents, &'a [f64])>,
 ) -> Vec<Task<'a>> {
     const INCH: f64 = 0.0254;
     let pick = |all: &'static [f64], one: &'static [f64]| if quick { one } else { all };
@@ -328,13 +329,14 @@ pub(super) fn tasks<'a, V: Vehicle>(
 }
 
 /// The tasks of a 3-D event (`side-slope`, `turning`, `cornering`) of a
-/// vehicle with a spatial model, its steer unit's minimum ratio if it
-/// publishes one.
+/// vehicle with a spatial model, with its transmission's published
+/// minimum steer ratios (the steer unit's is the first).
 fn spatial_tasks<'a>(
     event: &'static str,
     settings: &'a EventSettings,
-    (events, ratio): (SpatialEvents, Option<f64>),
+    (events, ratios): (SpatialEvents, &'a [f64]),
 ) -> Vec<Task<'a>> {
+    let ratio = ratios.first().copied();
     let task = |parameter, quantity, unit, run| Task::new(event, parameter, (quantity, unit), run);
     match event {
         SIDE_SLOPE => vec![task(
@@ -363,7 +365,7 @@ fn spatial_tasks<'a>(
                 None,
                 quantity::PIVOT_YAW_RATE,
                 "rad/s",
-                Box::new(move || pivot_turn(events, settings)),
+                Box::new(move || pivot_turn(events, settings, ratios)),
             ),
         ],
     }
@@ -494,11 +496,16 @@ fn smallest_turn(
     })
 }
 
-/// The pivot turn at the crawl's belt speeds: its yaw rate and the
-/// power at both sprockets.
-fn pivot_turn(events: SpatialEvents, settings: &EventSettings) -> Result<Found, EventError> {
-    let run = (events.pivot)(settings)?;
-    let parameter = Some(("belts at ±", settings.crawl, "m/s"));
+/// The pivot turn (in neutral at full steer where the steer `ratios` are
+/// published, else at the crawl's belt speeds): its yaw rate and the
+/// power at both sprockets, named by the belts' speed.
+fn pivot_turn(
+    events: SpatialEvents,
+    settings: &EventSettings,
+    ratios: &[f64],
+) -> Result<Found, EventError> {
+    let PivotTurn { belts, run } = (events.pivot)(settings, ratios)?;
+    let parameter = Some(("belts at ±", belts, "m/s"));
     let relation = steady(&run);
     Ok(Found::Curve {
         points: vec![

@@ -25,7 +25,9 @@
 //!   range's ratio's; the X200-4's pivot in neutral is a
 //!   [`NeutralSteer`](crate::spatial_vehicle::NeutralSteer)'s.
 //! - **The pivot turn** ([`pivot`]): the belts at `±v`, the vehicle
-//!   turning about its centre: its yaw rate and the sprockets' power,
+//!   turning about its centre (`v` the neutral pivot's at full steer for
+//!   a transmission with published steer ratios, else the crawl): its yaw
+//!   rate and the sprockets' power,
 //!   what skid-steering's moment of turning resistance costs (the theory
 //!   of Wong & Chiang, "A general theory for skid steering of tracked
 //!   vehicles on firm ground", Proc. IMechE Part D 215, 2001; Steeds'
@@ -36,7 +38,7 @@ use super::stretch::watch;
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
-    EngineEnvelope, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem,
+    EngineEnvelope, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
 };
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
@@ -81,6 +83,15 @@ pub struct SteadyTurnRun {
     /// Whether the turn was steady: its yaw rate within [`STEADY`] of the
     /// stretch's before.
     pub steady: bool,
+}
+
+/// The pivot turn ([`pivot`]): the belts' speed asked and the turn.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PivotTurn {
+    /// The belts' speed asked, m/s: the right forward, the left back.
+    pub belts: f64,
+    /// The turn.
+    pub run: SteadyTurnRun,
 }
 
 /// One steady turn of `V` under `laws` on firm level ground with its
@@ -208,21 +219,35 @@ pub fn smallest_radius<V: SpatialVehicleSystem>(
     })
 }
 
-/// The pivot turn of `V` under `laws`: its belts at plus and minus the
-/// settings' crawl (the right forward: a turn to the left about the
-/// vehicle's centre), its drive capped by the settings' powertrain, at
-/// the settings' tolerance.
+/// The pivot turn of `V` under `laws` (the right belt forward: a turn to
+/// the left about the vehicle's centre), its drive capped by the
+/// settings' powertrain, at the settings' tolerance. A transmission whose
+/// minimum steer ratios `ratios` are published for the powertrain's
+/// ranges pivots in neutral at full steer: its belts at `±k ω_e r / 2`
+/// ([`SteerDrive`]: the steer drive's ratio, the engine at its rated
+/// speed, `r` the sprockets' rolling radius); any other vehicle at plus
+/// and minus the settings' crawl.
 pub fn pivot<V: SpatialVehicleSystem>(
     settings: &EventSettings,
     laws: SpatialLaws,
-) -> Result<SteadyTurnRun, EventError> {
+    ratios: &[f64],
+) -> Result<PivotTurn, EventError> {
     settings.check(EVENT)?;
     let envelope = envelope(settings, EVENT)?;
-    let v = settings.crawl;
-    steady_turn::<V>(
+    let v =
+        match SteerDrive::of(&settings.powertrain, ratios).map_err(|e| spatial_setup(EVENT, e))? {
+            Some(drive) => {
+                let system =
+                    V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
+                0.5 * drive.full_difference() * system.rolling_radius()
+            }
+            None => settings.crawl,
+        };
+    let run = steady_turn::<V>(
         laws,
         [v, -v],
         Some(envelope),
         settings.scenario.explicit_tolerance(),
-    )
+    )?;
+    Ok(PivotTurn { belts: v, run })
 }

@@ -61,7 +61,7 @@ use thiserror::Error;
 
 use super::SteeringError;
 use crate::laws::{ParameterError, Stiction, TangentialResponse};
-use crate::vehicle::{Drive, DriveError};
+use crate::vehicle::{Drive, DriveError, Powertrain};
 
 /// The two sprockets' drives.
 pub struct SideDrives {
@@ -245,6 +245,52 @@ pub fn steer_drive_ratio(
     let k = each.iter().sum::<f64>() / each.len() as f64;
     let departure = each.iter().fold(0.0_f64, |m, e| m.max((e / k - 1.0).abs()));
     Ok((k, departure))
+}
+
+/// A transmission's steer drive, geared to its engine: what turns the
+/// sprockets apart in neutral ([`NeutralSteer`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SteerDrive {
+    /// Its ratio `k`: the sprockets' speed difference at full steer over
+    /// the engine's speed ([`steer_drive_ratio`]).
+    pub ratio: f64,
+    /// The largest departure of one range's `q_r / N_r` from `k`, as a
+    /// fraction of it.
+    pub departure: f64,
+    /// The engine's speed it turns at, rad/s: its rated speed, the
+    /// governor at full throttle ([`Driveline::rated_speed`](crate::vehicle::Driveline::rated_speed)).
+    pub engine_speed: f64,
+}
+
+impl SteerDrive {
+    /// The steer drive that the minimum steer ratios `ratios` published
+    /// for `powertrain`'s ranges imply; `None` where there are no ratios
+    /// or the powertrain has no ranges (a converter's).
+    pub fn of(
+        powertrain: &Powertrain,
+        ratios: &[f64],
+    ) -> Result<Option<SteerDrive>, SteerRatiosError> {
+        let Powertrain::Converter(converter) = powertrain else {
+            return Ok(None);
+        };
+        if ratios.is_empty() {
+            return Ok(None);
+        }
+        let reductions: Vec<f64> = (0..converter.ranges.len())
+            .map(|r| converter.reduction(r))
+            .collect();
+        let (ratio, departure) = steer_drive_ratio(ratios, &reductions)?;
+        Ok(Some(SteerDrive {
+            ratio,
+            departure,
+            engine_speed: converter.rated_speed(),
+        }))
+    }
+
+    /// The sprockets' speed difference at full steer, rad/s: `k ω_e`.
+    pub fn full_difference(&self) -> f64 {
+        self.ratio * self.engine_speed
+    }
 }
 
 /// A driveline that makes no driveline.
