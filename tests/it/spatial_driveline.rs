@@ -16,8 +16,8 @@ use std::f64::consts::FRAC_PI_4;
 use trackgen::integrate::{Integrator, OdeSystem, SimulationError};
 use trackgen::nalgebra::DVector;
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, DrivelineError, HeadingHold, NeutralSteer,
-    SideBooks, SideDrives, SpatialSimulated, SpatialSystem, SteerUnit, SteeringBrakes,
+    Differential, DifferentialSteer, Driveline, DrivelineError, FullSteer, HeadingHold, SideBooks,
+    SideDrives, SpatialSimulated, SpatialSystem, SteerUnit, SteeringBrakes,
 };
 use trackgen::vehicle::Drive;
 
@@ -65,8 +65,8 @@ pub fn brakes() -> DifferentialSteer {
 /// the sprockets' speed difference stiffer than a side's drive (2 kN m
 /// per rad/s), limited to 3 kN m.
 pub fn steer_unit(ratio: f64) -> DifferentialSteer {
-    DifferentialSteer::Ratio(SteerUnit {
-        min_ratio: ratio,
+    DifferentialSteer::Unit(SteerUnit {
+        full_steer: FullSteer::Ratio(ratio),
         proportional: 2000.0,
         integral: 2e4,
         max_torque: 3000.0,
@@ -78,20 +78,32 @@ pub fn steer_unit(ratio: f64) -> DifferentialSteer {
 /// 5 kN m (a pivot's turning resistance on a sprocket is about 2 kN m,
 /// `spatial_turn`).
 pub fn neutral(full_difference: f64) -> DifferentialSteer {
-    DifferentialSteer::Neutral(NeutralSteer {
-        full_difference,
+    DifferentialSteer::Unit(SteerUnit {
+        full_steer: FullSteer::Neutral(full_difference),
         proportional: 2000.0,
         integral: 2e4,
         max_torque: 5000.0,
     })
 }
 
+/// Whether `steer` is a steer unit in neutral.
+pub fn in_neutral(steer: &DifferentialSteer) -> bool {
+    matches!(
+        steer,
+        DifferentialSteer::Unit(SteerUnit {
+            full_steer: FullSteer::Neutral(_),
+            ..
+        })
+    )
+}
+
 /// The box's drive for `steer`: free in neutral, else [`box_drive`] to a
 /// mean belt of 1.2 m/s over 0.2 s.
 fn box_for(steer: DifferentialSteer) -> Drive {
-    match steer {
-        DifferentialSteer::Neutral(_) => Drive::Free,
-        _ => box_drive(1.2, 0.2),
+    if in_neutral(&steer) {
+        Drive::Free
+    } else {
+        box_drive(1.2, 0.2)
     }
 }
 
@@ -275,7 +287,7 @@ fn a_turn_through_a_differential_keeps_its_books() {
                 assert!(drive.brake[1] > 0.0 && drive.brake[0] == 0.0, "{drive:?}");
                 assert!(drive.dissipation > 0.0, "{drive:?}");
             }
-            DifferentialSteer::Ratio(_) | DifferentialSteer::Neutral(_) => {
+            DifferentialSteer::Unit(_) => {
                 assert!(drive.torque[0] < drive.torque[1], "{drive:?}");
                 assert_eq!(drive.brake, [0.0, 0.0]);
             }
@@ -326,26 +338,26 @@ fn bad_steering_is_refused() {
             .err()
     };
     let mut unit = SteerUnit {
-        min_ratio: 0.9,
+        full_steer: FullSteer::Ratio(0.9),
         proportional: 1.0,
         integral: 1.0,
         max_torque: 1.0,
     };
-    let error = refused(DifferentialSteer::Ratio(unit)).expect("a ratio under 1 refused");
+    let error = refused(DifferentialSteer::Unit(unit)).expect("a ratio under 1 refused");
     assert!(
         matches!(error, DrivelineError::Figure { .. }) && error.to_string().contains("ratio"),
         "{error}"
     );
-    unit.min_ratio = 2.0;
+    unit.full_steer = FullSteer::Ratio(2.0);
     unit.max_torque = f64::NAN;
-    assert!(refused(DifferentialSteer::Ratio(unit)).is_some());
+    assert!(refused(DifferentialSteer::Unit(unit)).is_some());
     let DifferentialSteer::Brakes(mut b) = brakes() else {
         unreachable!()
     };
     b.band = 0.0;
     assert!(refused(DifferentialSteer::Brakes(b)).is_some());
     assert!(refused(brakes()).is_none());
-    let in_neutral = |steer: DifferentialSteer| {
+    let neutral_refused = |steer: DifferentialSteer| {
         SpatialSystem::new(spatial())
             .with_driveline(Driveline::Differential(Differential {
                 drive: Drive::Free,
@@ -354,9 +366,9 @@ fn bad_steering_is_refused() {
             }))
             .err()
     };
-    assert!(in_neutral(neutral(8.0)).is_none());
+    assert!(neutral_refused(neutral(8.0)).is_none());
     for bad in [0.0, -1.0, f64::INFINITY, f64::NAN] {
-        let error = in_neutral(neutral(bad)).expect("a full difference out of range refused");
+        let error = neutral_refused(neutral(bad)).expect("a full difference out of range refused");
         assert!(
             matches!(error, DrivelineError::Figure { .. })
                 && error.to_string().contains("full-steer difference"),
@@ -389,9 +401,10 @@ fn a_driver_turns_the_vehicle_through_a_differential() {
         ("steer unit", steer_unit(2.31)),
         ("neutral", neutral(8.0)),
     ] {
-        let drive = match steer {
-            DifferentialSteer::Neutral(_) => Drive::Free,
-            _ => box_drive(1.2, 0.5),
+        let drive = if in_neutral(&steer) {
+            Drive::Free
+        } else {
+            box_drive(1.2, 0.5)
         };
         let mut system = through(drive, steer, |_| 0.0)
             .with_steering(HeadingHold::turn(FRAC_PI_4, (0.5, 1.5), 1.5, 1.8))

@@ -24,8 +24,8 @@
 
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, EngineEnvelope, SideDrives, SpatialSimulated,
-    SpatialVehicleSystem, SteerUnit,
+    Differential, Driveline, EngineEnvelope, FullSteer, SideDrives, SpatialSimulated,
+    SpatialVehicleSystem,
 };
 use trackgen::system::Simulated;
 use trackgen::terrain::Terrain;
@@ -291,30 +291,14 @@ fn a_mirrored_vehicle_on_an_engine_s_envelope_runs_as_the_planar_one() {
         right: speed_drive(),
         left: speed_drive(),
     });
-    let Drive::Speed {
-        proportional,
-        integral,
-        max_torque,
-        ..
-    } = speed_drive()
-    else {
-        unreachable!("a speed drive")
-    };
-    let differential = Driveline::Differential(Differential {
-        drive: Drive::Speed {
-            target: Box::new(speed_ramp(SETTLE, RAMP, SPEED)),
-            proportional: 2.0 * proportional,
-            integral: 2.0 * integral,
-            max_torque: 2.0 * max_torque,
-        },
-        steer: DifferentialSteer::Ratio(SteerUnit {
-            min_ratio: 2.0,
-            proportional: 0.5 * proportional,
-            integral: 0.5 * integral,
-            max_torque,
-        }),
-        input: Box::new(|_| 0.0),
-    });
+    let differential = Driveline::Differential(
+        Differential::with_steer_unit(
+            &speed_drive(),
+            Box::new(speed_ramp(SETTLE, RAMP, SPEED)),
+            FullSteer::Ratio(2.0),
+        )
+        .expect("a speed drive"),
+    );
     for (what, driveline) in [("sides", sides), ("differential", differential)] {
         println!("{what}:");
         let apart = apart(plane.clone(), spatial(driveline, envelope()));

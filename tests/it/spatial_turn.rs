@@ -27,7 +27,9 @@ use std::collections::BTreeMap;
 
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::{Vector2, Vector3};
-use trackgen::spatial_vehicle::{Differential, DifferentialSteer, Driveline, SideDrives};
+use trackgen::spatial_vehicle::{
+    Differential, DifferentialSteer, Driveline, FullSteer, SideDrives,
+};
 use trackgen::steering::{SkidSteer, SteadyTurn, TrackLoad, steeds_resisting_moment};
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::Drive;
@@ -36,7 +38,7 @@ use trackgen::multibody::RecursiveModel;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::vehicle::Vehicle;
 
-use crate::spatial_driveline::{brakes, neutral, steer_unit};
+use crate::spatial_driveline::{brakes, in_neutral, neutral, steer_unit};
 use crate::support::twin::{MU, System, TRACK, Twin, at_rest_apart, firm, layout_at, on_layout};
 
 /// What a run shows over its last stretch, averaged over time.
@@ -173,14 +175,15 @@ fn observe_apart(gauge: f64, driven: Driven, end: f64, window: f64) -> Observed 
             .map_err(|e| e.to_string()),
         Driven::Differential { mean, steer, input } => system
             .with_driveline(Driveline::Differential(Differential {
-                drive: match steer {
-                    DifferentialSteer::Neutral(_) => Drive::Free,
-                    _ => Drive::Speed {
+                drive: if in_neutral(&steer) {
+                    Drive::Free
+                } else {
+                    Drive::Speed {
                         target: Box::new(move |t| mean * t.min(1.0)),
                         proportional: 6000.0,
                         integral: 4e4,
                         max_torque: 10000.0,
-                    },
+                    }
                 },
                 steer,
                 input: Box::new(move |t| input * t.min(1.0)),
@@ -462,32 +465,32 @@ fn steady_turns_through_a_differential_match_the_skid_steering_theory() {
     let rolling = -(straight.torque[0] + straight.torque[1]) / rolling_radius() / weight;
     for (seen, driven) in seen.iter().zip(runs).skip(1) {
         agrees_with_the_theory(seen, rolling, weight, Twin::layout().gauge);
-        if let Driven::Differential {
-            steer: DifferentialSteer::Ratio(unit),
+        let Driven::Differential {
+            steer: DifferentialSteer::Unit(unit),
             input,
             ..
         } = driven
-        {
-            let q = input * unit.span();
-            let asked = (2.0 + q) / (2.0 - q);
-            let ratio = seen.belt[0] / seen.belt[1];
-            assert!(
-                (ratio / asked - 1.0).abs() < 0.01,
-                "the belts' ratio {ratio} against the {asked} asked"
-            );
-        }
-        if let Driven::Differential {
-            steer: DifferentialSteer::Neutral(unit),
-            input,
-            ..
-        } = driven
-        {
-            let apart = (seen.belt[0] - seen.belt[1]) / rolling_radius();
-            let asked = input * unit.full_difference;
-            assert!(
-                (apart / asked - 1.0).abs() < 0.01,
-                "the sprockets {apart} rad/s apart against the {asked} asked"
-            );
+        else {
+            continue;
+        };
+        match unit.full_steer {
+            FullSteer::Ratio(rho) => {
+                let q = input * 2.0 * (rho - 1.0) / (rho + 1.0);
+                let asked = (2.0 + q) / (2.0 - q);
+                let ratio = seen.belt[0] / seen.belt[1];
+                assert!(
+                    (ratio / asked - 1.0).abs() < 0.01,
+                    "the belts' ratio {ratio} against the {asked} asked"
+                );
+            }
+            FullSteer::Neutral(full) => {
+                let apart = (seen.belt[0] - seen.belt[1]) / rolling_radius();
+                let asked = input * full;
+                assert!(
+                    (apart / asked - 1.0).abs() < 0.01,
+                    "the sprockets {apart} rad/s apart against the {asked} asked"
+                );
+            }
         }
     }
 }

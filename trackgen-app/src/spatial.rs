@@ -24,8 +24,8 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideBooks, SideDrives,
-    SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideBooks,
+    SideDrives, SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
     SteeringBrakes,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
@@ -176,7 +176,8 @@ fn driveline<V: SpatialVehicleSystem>(
         // The box held at rest by a differential's speed drive toward the
         // target, 0.
         let (full, said) = neutral_pivot::<V>(entry, args)?;
-        let differential = Differential::in_neutral(&side, target(), full).ok_or_else(not_speed)?;
+        let differential = Differential::with_steer_unit(&side, target(), FullSteer::Neutral(full))
+            .ok_or_else(not_speed)?;
         return Ok((Driveline::Differential(differential), said));
     }
     if args.driveline == DrivelineKind::SteerRatio {
@@ -184,8 +185,8 @@ fn driveline<V: SpatialVehicleSystem>(
             .steer_ratio
             .or(entry.steer_ratios.first().copied())
             .ok_or_else(|| format!("{} publishes no steer ratio: give --steer-ratio", V::NAME))?;
-        let differential =
-            Differential::with_steer_unit(&side, target(), ratio).ok_or_else(not_speed)?;
+        let differential = Differential::with_steer_unit(&side, target(), FullSteer::Ratio(ratio))
+            .ok_or_else(not_speed)?;
         let said = format!("a differential with a steer unit (minimum steer ratio {ratio})");
         return Ok((Driveline::Differential(differential), said));
     }

@@ -48,8 +48,8 @@ use bodies::Bodies;
 pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, Driver};
 pub use driveline::{
-    Differential, DifferentialSteer, Driveline, DrivelineError, NeutralSteer, SideDrives,
-    SteerDrive, SteerInput, SteerRatiosError, SteerUnit, SteeringBrakes, steer_drive_ratio,
+    Differential, DifferentialSteer, Driveline, DrivelineError, FullSteer, SideDrives, SteerDrive,
+    SteerInput, SteerRatiosError, SteerUnit, SteeringBrakes, span, steer_drive_ratio,
 };
 pub use envelope::EngineEnvelope;
 pub use outputs::{SideOutputs, SpatialOutputs};

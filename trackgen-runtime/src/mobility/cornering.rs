@@ -45,7 +45,7 @@ use super::stretch::watch;
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
-    Differential, Driveline, HeadingHold, SideDrives, SpatialLaws, SpatialSimulated,
+    Differential, Driveline, FullSteer, HeadingHold, SideDrives, SpatialLaws, SpatialSimulated,
     SpatialVehicleSystem, SteeringError,
 };
 use crate::terrain::Terrain;
@@ -143,10 +143,12 @@ pub fn corner<V: SpatialVehicleSystem>(
     let acceleration = settings.acceleration;
     let ramp = move |t: f64| (acceleration * (t - SETTLE)).clamp(0.0, speed);
     let driveline = match ratio {
-        Some(ratio) => {
-            Differential::with_steer_unit(&V::speed_drive(|_| 0.0), Box::new(ramp), ratio)
-                .map(Driveline::Differential)
-        }
+        Some(ratio) => Differential::with_steer_unit(
+            &V::speed_drive(|_| 0.0),
+            Box::new(ramp),
+            FullSteer::Ratio(ratio),
+        )
+        .map(Driveline::Differential),
         None => Some(Driveline::Sides(SideDrives {
             right: V::speed_drive(ramp),
             left: V::speed_drive(ramp),

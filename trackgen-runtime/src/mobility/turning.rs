@@ -23,7 +23,7 @@
 //!   kinematically `B/2`. The tracks slip, so the radius run is larger.
 //!   The radius is asked while moving, so a geared steer's is its lowest
 //!   range's ratio's; the X200-4's pivot in neutral is a
-//!   [`NeutralSteer`](crate::spatial_vehicle::NeutralSteer)'s.
+//!   steer unit's in neutral ([`FullSteer::Neutral`](crate::spatial_vehicle::FullSteer::Neutral)).
 //! - **The pivot turn** ([`pivot`]): the belts at `±v`, the vehicle
 //!   turning about its centre (`v` the neutral pivot's at full steer for
 //!   a transmission with published steer ratios, else the crawl): its yaw

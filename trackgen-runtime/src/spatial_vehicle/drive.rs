@@ -233,17 +233,25 @@ where
                     state.braked[s] = law.dissipation;
                 }
             }
-            DifferentialSteer::Ratio(unit) => {
-                // Full steer `q ω̄`: forward (ω̄ < 0) a left turn slows the
-                // left sprocket, `ω_R − ω_L < 0`.
-                let full = unit.span() * mean;
-                self.steer_apart(t, (unit.controller(), full), asked, input, states, state)?;
-            }
-            DifferentialSteer::Neutral(unit) => {
-                // A left pivot turns the right sprocket forward (ω_R < 0)
-                // and the left back.
-                let full = -unit.full_difference;
-                self.steer_apart(t, (unit.controller(), full), asked, input, states, state)?;
+            DifferentialSteer::Unit(unit) => {
+                let full = unit.full_difference(mean);
+                let most = full.abs();
+                let wanted = match asked {
+                    Some(asked) => (-asked / radius).clamp(-most, most),
+                    None => input()? * full,
+                };
+                let difference = omega[0] - omega[1];
+                let (torque, rate) = unit.controller().checked_torque_trimmed(
+                    (t, -wanted),
+                    difference,
+                    1.0,
+                    states[1],
+                    TorqueCap::NONE,
+                )?;
+                state.torque[0] += torque;
+                state.torque[1] -= torque;
+                state.driven += torque * difference;
+                state.rates[1] = rate;
             }
         }
         // The engine drives the steer unit too: what the unit draws
@@ -275,42 +283,6 @@ where
             .sprockets
             .map(|s| s.map_or(f64::NAN, |s| s.rolling_radius));
         0.5 * (radii[0] + radii[1])
-    }
-
-    /// A steer unit's torques `±Q` on the two sprockets, its PI law
-    /// `controller` holding their speed difference `ω_R − ω_L` at the belt
-    /// difference `asked` (held to the full steer's size) or else at the
-    /// steering `input` times `full` (rad/s, signed: what a full left
-    /// steer holds); its power into the driven work, its integral the
-    /// driveline's second state.
-    fn steer_apart(
-        &self,
-        t: f64,
-        (controller, full): (crate::vehicle::Drive, f64),
-        asked: Option<f64>,
-        input: impl Fn() -> Result<f64, SimulationError>,
-        states: [f64; 3],
-        state: &mut DriveState,
-    ) -> Result<(), SimulationError> {
-        let radius = self.mean_rolling_radius();
-        let most = full.abs();
-        let wanted = match asked {
-            Some(asked) => (-asked / radius).clamp(-most, most),
-            None => input()? * full,
-        };
-        let difference = state.speed[0] - state.speed[1];
-        let (torque, rate) = controller.checked_torque_trimmed(
-            (t, -wanted),
-            difference,
-            1.0,
-            states[1],
-            TorqueCap::NONE,
-        )?;
-        state.torque[0] += torque;
-        state.torque[1] -= torque;
-        state.driven += torque * difference;
-        state.rates[1] = rate;
-        Ok(())
     }
 
     /// The driveline's torques (`drive`'s) added to the sprockets' and

@@ -40,7 +40,7 @@
 //! valve's). It cannot pivot the vehicle from rest (the mean speed is
 //! zero there).
 //!
-//! **In neutral** ([`NeutralSteer`]) no range drives the differential's
+//! **In neutral** ([`FullSteer::Neutral`]) no range drives the differential's
 //! box, while the steer drive, geared to the engine, still turns the two
 //! sprockets apart: the X200-4 pivots the vehicle (OD1714). The unit then
 //! holds the speed difference at `s k ω_e`, `ω_e` the engine's speed held
@@ -125,12 +125,9 @@ pub struct Differential {
 pub enum DifferentialSteer {
     /// A brake on each axle.
     Brakes(SteeringBrakes),
-    /// A steer unit holding the sprockets' speed ratio.
-    Ratio(SteerUnit),
-    /// A steer unit in neutral, holding the sprockets' speed difference
-    /// at the steer drive's whatever their mean: a pivot (the box's drive
-    /// free, or holding the mean at rest).
-    Neutral(NeutralSteer),
+    /// A steer unit holding the sprockets' speed difference: their ratio
+    /// in a range, the steer drive's difference in neutral.
+    Unit(SteerUnit),
 }
 
 /// A steering brake on each sprocket axle: an input `s` brakes the left
@@ -158,11 +155,12 @@ pub struct SteeringBrakes {
 }
 
 /// A steer unit: equal and opposite torques on the two axles holding
-/// their speed difference.
+/// their speed difference at `s` times full steer's for a steering input
+/// `s`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteerUnit {
-    /// The outer sprocket's speed over the inner's at full steer, > 1.
-    pub min_ratio: f64,
+    /// What full steer holds the difference at.
+    pub full_steer: FullSteer,
     /// The PI controller's proportional gain on the speed difference,
     /// N m s/rad, ≥ 0.
     pub proportional: f64,
@@ -172,23 +170,25 @@ pub struct SteerUnit {
     pub max_torque: f64,
 }
 
-/// A steer unit in neutral: equal and opposite torques on the two axles
-/// holding their speed difference at `s` times
-/// [`full_difference`](Self::full_difference) for a steering input `s`,
-/// whatever their mean (the X200-4's neutral pivot).
+/// What a steer unit's full steer holds the sprockets' speed difference
+/// at.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NeutralSteer {
-    /// The sprockets' speed difference at full steer, rad/s, > 0: the
-    /// steer drive's ratio times the engine's governed speed
-    /// ([`steer_drive_ratio`]).
-    pub full_difference: f64,
-    /// The PI controller's proportional gain on the speed difference,
-    /// N m s/rad, ≥ 0.
-    pub proportional: f64,
-    /// Its integral gain, N m/rad, ≥ 0.
-    pub integral: f64,
-    /// Its largest torque on each axle, N m, > 0.
-    pub max_torque: f64,
+pub enum FullSteer {
+    /// In a range: the outer sprocket at most this many times as fast as
+    /// the inner (the minimum steer ratio `ρ`, > 1), against their mean:
+    /// `q ω̄`, `q` = [`span`]`(ρ)`.
+    Ratio(f64),
+    /// In neutral: this difference, rad/s (> 0), whatever their mean (the
+    /// steer drive's `k ω_e`, [`SteerDrive::full_difference`]): a pivot,
+    /// the box's drive free or holding the mean at rest.
+    Neutral(f64),
+}
+
+/// `q`: a steer unit's speed difference at full steer over the sprockets'
+/// mean speed for the minimum steer ratio `rho`, `2 (ρ − 1)/(ρ + 1)` (the
+/// outer sprocket at `ω̄ (1 + q/2)`, the inner at `ω̄ (1 − q/2)`).
+pub fn span(rho: f64) -> f64 {
+    2.0 * (rho - 1.0) / (rho + 1.0)
 }
 
 /// Published steer ratios that no steer drive geared to the engine makes.
@@ -239,8 +239,7 @@ pub fn steer_drive_ratio(
         };
         ParameterError::check("minimum steer ratio", rho, 1.0, true).map_err(figure)?;
         ParameterError::check("overall reduction", n, 0.0, true).map_err(figure)?;
-        let span = 2.0 * (rho - 1.0) / (rho + 1.0);
-        each.push(span / n);
+        each.push(span(rho) / n);
     }
     let k = each.iter().sum::<f64>() / each.len() as f64;
     let departure = each.iter().fold(0.0_f64, |m, e| m.max((e / k - 1.0).abs()));
@@ -248,7 +247,7 @@ pub fn steer_drive_ratio(
 }
 
 /// A transmission's steer drive, geared to its engine: what turns the
-/// sprockets apart in neutral ([`NeutralSteer`]).
+/// sprockets apart in neutral ([`FullSteer::Neutral`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteerDrive {
     /// Its ratio `k`: the sprockets' speed difference at full steer over
@@ -322,54 +321,18 @@ impl Differential {
     /// A differential whose box is driven toward `target` (m/s of the
     /// belts' mean against time) by a speed drive of twice `side`'s gains
     /// and limit (`side` a side's speed drive: the box drives both
-    /// sides), steered by a steer unit of minimum steer ratio `ratio`
-    /// with half `side`'s gains (its torque acts on both sprockets, `±Q`,
-    /// so their speed difference moves as under the two side drives) and
-    /// `side`'s limit, its input 0 (a driver holding a heading steers
-    /// through it). `None` where `side` is not a speed drive.
+    /// sides), steered by a steer unit whose full steer is `full_steer`
+    /// (a range's minimum steer ratio; or in neutral, with `target` at
+    /// rest, the steer drive's difference: a pivot about the vehicle's
+    /// centre) with half `side`'s gains (its torque acts on both
+    /// sprockets, `±Q`, so their speed difference moves as under the two
+    /// side drives) and `side`'s limit, its input 0 (a driver holding a
+    /// heading steers through it). `None` where `side` is not a speed
+    /// drive.
     pub fn with_steer_unit(
         side: &Drive,
         target: Box<dyn Fn(f64) -> f64 + Send>,
-        ratio: f64,
-    ) -> Option<Differential> {
-        Self::steered_by_unit(side, target, |proportional, integral, max_torque| {
-            DifferentialSteer::Ratio(SteerUnit {
-                min_ratio: ratio,
-                proportional,
-                integral,
-                max_torque,
-            })
-        })
-    }
-
-    /// [`with_steer_unit`](Self::with_steer_unit)'s differential in
-    /// neutral: the same unit holding the sprockets `full_difference`
-    /// rad/s apart at full steer ([`NeutralSteer`]), the box's drive
-    /// holding the belts' mean at `target` (at rest, for a pivot about
-    /// the vehicle's centre).
-    pub fn in_neutral(
-        side: &Drive,
-        target: Box<dyn Fn(f64) -> f64 + Send>,
-        full_difference: f64,
-    ) -> Option<Differential> {
-        Self::steered_by_unit(side, target, |proportional, integral, max_torque| {
-            DifferentialSteer::Neutral(NeutralSteer {
-                full_difference,
-                proportional,
-                integral,
-                max_torque,
-            })
-        })
-    }
-
-    /// The box driven by twice `side`'s gains and limit toward `target`,
-    /// steered by the `unit` made of half `side`'s gains and its limit
-    /// (proportional, integral, largest torque); `None` where `side` is
-    /// not a speed drive.
-    fn steered_by_unit(
-        side: &Drive,
-        target: Box<dyn Fn(f64) -> f64 + Send>,
-        unit: impl FnOnce(f64, f64, f64) -> DifferentialSteer,
+        full_steer: FullSteer,
     ) -> Option<Differential> {
         let Drive::Speed {
             proportional,
@@ -387,65 +350,49 @@ impl Differential {
                 integral: 2.0 * integral,
                 max_torque: 2.0 * max_torque,
             },
-            steer: unit(0.5 * proportional, 0.5 * integral, max_torque),
+            steer: DifferentialSteer::Unit(SteerUnit {
+                full_steer,
+                proportional: 0.5 * proportional,
+                integral: 0.5 * integral,
+                max_torque,
+            }),
             input: Box::new(|_| 0.0),
         })
     }
 }
 
 impl SteerUnit {
-    /// `q`: the speed difference at full steer over the mean speed,
-    /// `2 (ρ − 1)/(ρ + 1)` (the outer sprocket at `ω̄ (1 + q/2)`, the
-    /// inner at `ω̄ (1 − q/2)`).
-    pub fn span(&self) -> f64 {
-        2.0 * (self.min_ratio - 1.0) / (self.min_ratio + 1.0)
+    /// The sprockets' speed difference `ω_R − ω_L` at full left steer,
+    /// rad/s, with their mean at `mean` rad/s (planar sense: forward turns
+    /// them negative, and a left turn slows the left sprocket).
+    pub fn full_difference(&self, mean: f64) -> f64 {
+        match self.full_steer {
+            FullSteer::Ratio(rho) => span(rho) * mean,
+            FullSteer::Neutral(difference) => -difference,
+        }
     }
 
     /// The unit's PI law on the speed difference, as a speed drive on a
     /// unit radius whose target, the difference wanted, comes as its trim
     /// (one owner of the PI law and its anti-windup: [`Drive`]).
     pub(super) fn controller(&self) -> Drive {
-        unit_controller(self.proportional, self.integral, self.max_torque)
+        Drive::Speed {
+            target: Box::new(|_| 0.0),
+            proportional: self.proportional,
+            integral: self.integral,
+            max_torque: self.max_torque,
+        }
     }
 
     fn check(&self) -> Result<(), ParameterError> {
-        ParameterError::check("minimum steer ratio", self.min_ratio, 1.0, true)?;
-        check_unit_gains(self.proportional, self.integral, self.max_torque)
+        match self.full_steer {
+            FullSteer::Ratio(rho) => ParameterError::check("minimum steer ratio", rho, 1.0, true)?,
+            FullSteer::Neutral(d) => ParameterError::check("full-steer difference", d, 0.0, true)?,
+        }
+        ParameterError::check("proportional gain", self.proportional, 0.0, false)?;
+        ParameterError::check("integral gain", self.integral, 0.0, false)?;
+        ParameterError::check("largest torque", self.max_torque, 0.0, true)
     }
-}
-
-impl NeutralSteer {
-    /// The unit's PI law on the speed difference ([`SteerUnit`]'s).
-    pub(super) fn controller(&self) -> Drive {
-        unit_controller(self.proportional, self.integral, self.max_torque)
-    }
-
-    fn check(&self) -> Result<(), ParameterError> {
-        ParameterError::check("full-steer difference", self.full_difference, 0.0, true)?;
-        check_unit_gains(self.proportional, self.integral, self.max_torque)
-    }
-}
-
-/// A steer unit's PI law: a speed drive on a unit radius, its target 0 and
-/// the difference wanted its trim.
-fn unit_controller(proportional: f64, integral: f64, max_torque: f64) -> Drive {
-    Drive::Speed {
-        target: Box::new(|_| 0.0),
-        proportional,
-        integral,
-        max_torque,
-    }
-}
-
-/// A steer unit's gains ≥ 0 and its largest torque > 0.
-fn check_unit_gains(
-    proportional: f64,
-    integral: f64,
-    max_torque: f64,
-) -> Result<(), ParameterError> {
-    ParameterError::check("proportional gain", proportional, 0.0, false)?;
-    ParameterError::check("integral gain", integral, 0.0, false)?;
-    ParameterError::check("largest torque", max_torque, 0.0, true)
 }
 
 impl SteeringBrakes {
@@ -517,15 +464,9 @@ impl Driveline {
                             source,
                         })
                     }
-                    DifferentialSteer::Ratio(u) => {
+                    DifferentialSteer::Unit(u) => {
                         u.check().map_err(|source| DrivelineError::Figure {
                             what: "steer unit",
-                            source,
-                        })
-                    }
-                    DifferentialSteer::Neutral(u) => {
-                        u.check().map_err(|source| DrivelineError::Figure {
-                            what: "steer unit in neutral",
                             source,
                         })
                     }
@@ -558,12 +499,13 @@ mod tests {
     fn full_steer_turns_the_sprockets_at_the_minimum_steer_ratio() {
         for ratio in [1.01, 1.22, 1.32, 1.58, 2.31, 10.0, 100.0] {
             let unit = SteerUnit {
-                min_ratio: ratio,
+                full_steer: FullSteer::Ratio(ratio),
                 proportional: 1.0,
                 integral: 1.0,
                 max_torque: 1.0,
             };
-            let q = unit.span();
+            // Forward at a mean of −1 rad/s: the right sprocket outside.
+            let q = -unit.full_difference(-1.0);
             let held = (1.0 + 0.5 * q) / (1.0 - 0.5 * q);
             assert!((held / ratio - 1.0).abs() < 1e-13, "{ratio}: {held}");
         }
