@@ -231,6 +231,7 @@ pub const APP: Graph = &[
     ),
     ("spatial_rows", &[]),
     ("spatial_frames", &[]),
+    ("spatial_driveline", &["offered"]),
     (
         "spatial",
         &[
@@ -240,6 +241,7 @@ pub const APP: Graph = &[
             "report",
             "spatial_rows",
             "spatial_frames",
+            "spatial_driveline",
         ],
     ),
     (

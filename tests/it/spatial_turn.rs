@@ -187,6 +187,7 @@ fn observe_apart(gauge: f64, driven: Driven, end: f64, window: f64) -> Observed 
                 },
                 steer,
                 input: Box::new(move |t| input * t.min(1.0)),
+                engine: None,
             }))
             .map_err(|e| e.to_string()),
     }
@@ -491,6 +492,7 @@ fn steady_turns_through_a_differential_match_the_skid_steering_theory() {
                     "the sprockets {apart} rad/s apart against the {asked} asked"
                 );
             }
+            FullSteer::Engine(_) => unreachable!("these runs drive no engine"),
         }
     }
 }

@@ -44,6 +44,7 @@ mod outputs;
 mod report;
 mod run;
 mod spatial;
+mod spatial_driveline;
 mod spatial_frames;
 mod spatial_modes;
 mod spatial_rows;

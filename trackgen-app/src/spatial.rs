@@ -24,17 +24,17 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    Differential, DifferentialSteer, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideBooks,
-    SideDrives, SpatialEnergy, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
-    SteeringBrakes,
+    EngineEnvelope, HeadingHold, SideBooks, SpatialEnergy, SpatialOutputs, SpatialSimulated,
+    SpatialVehicleSystem,
 };
 use trackgen::terrain::field::{FieldShape, HeightField};
-use trackgen::vehicle::{Drive, speed_ramp};
+use trackgen::vehicle::speed_ramp;
 use trackgen_arrow::ArrowSink;
 
 use crate::cli::{self, CourseArgs, within};
 use crate::console::say;
 use crate::offered::Offered;
+use crate::spatial_driveline::{Asked, DrivelineKind, driveline};
 use crate::spatial_frames::Frames;
 use crate::spatial_rows::{COLUMNS, record, shoe_columns, shoe_forces};
 
@@ -93,36 +93,20 @@ pub struct SpatialArgs {
     /// 1.01 to 100; default the vehicle's first published one.
     #[arg(long, value_name = "RATIO", value_parser = cli::speed_ratio)]
     pub steer_ratio: Option<f64>,
-    /// Cap the drive by the vehicle's engine: its full-load envelope (the
-    /// planar `--engine`'s, ranges chosen ideally) on each side's drive,
-    /// or twice a side's on a differential's, so the engine's power, not
-    /// the controller's target, sets the speed where they disagree.
+    /// Drive through the vehicle's engine. On a differential (`brakes`,
+    /// `steer-ratio`), an engine whose inertia is declared has its speed
+    /// as a state: its governor, torque converter, scheduled ranges and
+    /// lock-up drive the box (the planar `--engine`'s), and a steer unit
+    /// draws its power from it; with published steer ratios and no
+    /// `--steer-ratio`, the steer unit is the steer drive geared to that
+    /// engine. Otherwise (a drive on each side, or no engine inertia) the
+    /// engine's full-load envelope caps each side's drive, or twice a
+    /// side's the box's.
     #[arg(long)]
     pub engine: bool,
     /// Output folder (created if missing); default `out/<vehicle>`.
     #[arg(long, value_name = "DIR", value_parser = cli::folder)]
     pub out: Option<PathBuf>,
-}
-
-/// How the drive reaches the sprockets.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DrivelineKind {
-    /// A speed controller on each sprocket (the vehicle's declared
-    /// gains), the driver moving their targets apart.
-    Sides,
-    /// One speed controller on a differential (twice a side's gains and
-    /// limit), the driver braking the inner sprocket.
-    Brakes,
-    /// One speed controller on a differential with a steer unit holding
-    /// the sprockets' speed ratio, at most `--steer-ratio`.
-    SteerRatio,
-    /// The differential in neutral (`--speed 0`: its box held at rest),
-    /// its steer unit turning the sprockets apart at the steer drive's
-    /// speed with the engine at its rated speed: a pivot about the
-    /// vehicle's centre (the X200-4's; the vehicle's published steer
-    /// ratios and its converter powertrain's ranges give the steer
-    /// drive's ratio).
-    NeutralPivot,
 }
 
 /// The turn's default angle, degrees.
@@ -134,152 +118,6 @@ pub const TURN_AT: f64 = 8.0;
 pub const TURN_TIME: f64 = 4.0;
 /// The default simulated time, s: the turn and 2 s after it.
 pub const DURATION: f64 = 14.0;
-/// The steering brakes' largest torque over a side drive's limit:
-/// holding the inner sprocket in a clutch-brake turn takes the
-/// differential's half of the drive's torque and the ground's pull on
-/// the inner track, about twice a side's turning torque (an assumption:
-/// no brake figure of either vehicle was found).
-const BRAKE_OVER_DRIVE: f64 = 2.0;
-/// The driver's dead band on the steering brakes, m/s of the error of the
-/// belts' difference ([`SteeringBrakes::dead_band`]).
-const BRAKE_DEAD_BAND: f64 = 0.05;
-
-/// The driveline `args` ask for, with the vehicle's speed drive toward
-/// `target` (m/s against time): a differential's controller takes twice
-/// a side's gains and limit, a steer unit half a side's gains and a
-/// side's limit ([`Differential::with_steer_unit`]), steering brakes twice a
-/// side's limit with the parking brake's elastic stage on half the
-/// vehicle's mass reflected to a sprocket, fully on when the driver's
-/// error (the gauge times the yaw rate against the difference asked) is
-/// a third of the largest difference beyond [`BRAKE_DEAD_BAND`] (a brake
-/// turns the vehicle only past the ground's turning resistance, so the
-/// driver must brake hard on a small error).
-fn driveline<V: SpatialVehicleSystem>(
-    entry: &Offered,
-    args: &SpatialArgs,
-    (system, mass): (&V::Spatial, f64),
-    target: impl Fn() -> Box<dyn Fn(f64) -> f64 + Send>,
-) -> Result<(Driveline, String), String> {
-    if args.driveline == DrivelineKind::Sides {
-        let drives = SideDrives {
-            right: V::speed_drive(target()),
-            left: V::speed_drive(target()),
-        };
-        return Ok((
-            Driveline::Sides(drives),
-            "a speed drive on each sprocket".into(),
-        ));
-    }
-    let side = V::speed_drive(|_| 0.0);
-    let not_speed = || format!("{}'s drive is not a speed controller", V::NAME);
-    if args.driveline == DrivelineKind::NeutralPivot {
-        // The box held at rest by a differential's speed drive toward the
-        // target, 0.
-        let (full, said) = neutral_pivot::<V>(entry, args)?;
-        let differential = Differential::with_steer_unit(&side, target(), FullSteer::Neutral(full))
-            .ok_or_else(not_speed)?;
-        return Ok((Driveline::Differential(differential), said));
-    }
-    if args.driveline == DrivelineKind::SteerRatio {
-        let ratio = args
-            .steer_ratio
-            .or(entry.steer_ratios.first().copied())
-            .ok_or_else(|| format!("{} publishes no steer ratio: give --steer-ratio", V::NAME))?;
-        let differential = Differential::with_steer_unit(&side, target(), FullSteer::Ratio(ratio))
-            .ok_or_else(not_speed)?;
-        let said = format!("a differential with a steer unit (minimum steer ratio {ratio})");
-        return Ok((Driveline::Differential(differential), said));
-    }
-    let Drive::Speed {
-        proportional,
-        integral,
-        max_torque,
-        ..
-    } = side
-    else {
-        return Err(not_speed());
-    };
-    let drive = Drive::Speed {
-        target: target(),
-        proportional: 2.0 * proportional,
-        integral: 2.0 * integral,
-        max_torque: 2.0 * max_torque,
-    };
-    let largest = V::layout().gauge * HeadingHold::DRIVER_MAX_YAW_RATE / 3.0;
-    let radius = system.rolling_radius();
-    let inertia = 0.5 * mass * radius * radius;
-    let brakes = SteeringBrakes::by_parking_rule(
-        BRAKE_OVER_DRIVE * max_torque,
-        inertia,
-        (largest, BRAKE_DEAD_BAND),
-    );
-    let said = format!(
-        "a differential steered by its brakes ({:.1} kN m each)",
-        brakes.max_torque / 1e3
-    );
-    let differential = Differential {
-        drive,
-        steer: DifferentialSteer::Brakes(brakes),
-        input: Box::new(|_| 0.0),
-    };
-    Ok((Driveline::Differential(differential), said))
-}
-
-/// The sprockets' speed difference at full steer in neutral that `args`
-/// ask for, rad/s, and what to say of it: `k ω_e`, `k` the steer drive's
-/// ratio that the vehicle's published steer ratios and its converter
-/// powertrain's ranges imply ([`SteerDrive`]) and `ω_e` the
-/// engine's rated speed (the governor at full throttle). Refused, saying
-/// why: a speed asked (a pivot stands), `--engine` (it caps the box's
-/// drive, and no range drives the box in neutral), no published steer
-/// ratios or no converter powertrain, ratios that are not one per range.
-fn neutral_pivot<V: SpatialVehicleSystem>(
-    entry: &Offered,
-    args: &SpatialArgs,
-) -> Result<(f64, String), String> {
-    if args.speed != 0.0 {
-        return Err(format!(
-            "a pivot in neutral stands: give --speed 0 (not {})",
-            args.speed
-        ));
-    }
-    if args.engine {
-        return Err(
-            "--engine caps the drive on the differential's box, and in neutral no range drives it"
-                .into(),
-        );
-    }
-    if entry.steer_ratios.is_empty() {
-        return Err(format!(
-            "{} publishes no steer ratio: a neutral pivot's steer drive is found from them",
-            V::NAME
-        ));
-    }
-    let drive = SteerDrive::of(&entry.engine()?, &entry.steer_ratios)
-        .map_err(|e| format!("{}'s steer ratios: {e}", V::NAME))?
-        .ok_or_else(|| {
-            format!(
-                "{}'s powertrain has no ranges: a neutral pivot's steer drive is found from its \
-                 ranges' reductions and its steer ratios",
-                V::NAME
-            )
-        })?;
-    let (full, ratio, engine, departure) = (
-        drive.full_difference(),
-        drive.ratio,
-        drive.engine_speed,
-        drive.departure,
-    );
-    let said = format!(
-        "a differential in neutral, its box held still and its steer unit pivoting it: the \
-         sprockets {full:.2} rad/s apart at full steer, the steer drive's {ratio:.5} of the \
-         engine's rated {:.0} rpm (the steer ratios' ranges within {:.1} % of it)",
-        engine * 30.0 / std::f64::consts::PI,
-        departure * 100.0
-    );
-    Ok((full, said))
-}
-
 fn side_slope(s: &str) -> Result<f64, String> {
     within(
         s,
@@ -388,9 +226,16 @@ fn drive<V: SpatialVehicleSystem>(
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
     };
     let mass = system.outputs(0.0, y.as_slice())?.centre.mass;
-    let (driveline, mut driven) = driveline::<V>(entry, args, (&system, mass), target)?;
+    let asked = Asked {
+        driveline: args.driveline,
+        steer_ratio: args.steer_ratio,
+        engine: args.engine,
+        speed: args.speed,
+    };
+    let (driveline, mut driven) = driveline::<V>(entry, &asked, (&system, mass), target)?;
     system.set_driveline(driveline)?;
-    if args.engine {
+    system.start_engine(y.as_mut_slice());
+    if args.engine && system.engine().is_none() {
         let envelope = EngineEnvelope::new(entry.engine()?)?;
         driven.push_str(&format!(
             ", capped by the engine's full-load envelope (at most {:.1} kW a side)",
@@ -481,6 +326,11 @@ fn drive<V: SpatialVehicleSystem>(
             break Err(e);
         }
         rows.within(&*stepper, (t, &y), &mut due);
+        // A shift or the lock-up changes the right-hand side: the rows
+        // within the step are read first, from the step as it was taken.
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
         bar.set_position((t * 1000.0) as u64);
     };
     bar.finish_and_clear();

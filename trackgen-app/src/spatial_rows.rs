@@ -5,8 +5,10 @@
 use trackgen::spatial_vehicle::{GroundForce, SpatialOutputs};
 
 /// The CSV's columns after the time: SI units, angles in rad, sides `r_`
-/// and `l_`.
-pub const COLUMNS: [&str; 47] = [
+/// and `l_`; the engine's last (the whole engine's; the range from 1, −1
+/// in reverse; `locked` 1 or 0), NaN unless an engine whose speed is a
+/// state drives the differential (`--engine`).
+pub const COLUMNS: [&str; 55] = [
     "x",
     "y",
     "z",
@@ -54,6 +56,14 @@ pub const COLUMNS: [&str; 47] = [
     "l_tension_tight",
     "l_tension_slack",
     "l_tension_largest",
+    "engine_speed",
+    "engine_torque",
+    "engine_power",
+    "turbine_power",
+    "gear",
+    "speed_ratio",
+    "torque_ratio",
+    "locked",
 ];
 
 /// One row of [`COLUMNS`].
@@ -96,6 +106,19 @@ pub fn record(out: &SpatialOutputs) -> [f64; COLUMNS.len()] {
             side.tensions.largest,
         ]);
     }
+    row.extend(match out.engine {
+        Some(e) => [
+            e.engine_speed,
+            e.engine_torque,
+            e.engine_power,
+            e.turbine_power,
+            out.gear,
+            e.speed_ratio,
+            e.torque_ratio,
+            f64::from(u8::from(e.locked == Some(true))),
+        ],
+        None => [f64::NAN; 8],
+    });
     row.try_into().expect("one value per column")
 }
 

@@ -673,9 +673,13 @@ fn shoes_add_up_to_the_sides(
 /// braking its power away, so the turn falls short (measured 59° of 90°:
 /// asserted short by more than 10°). Through a differential with the
 /// X200-4's steer unit, which carries the inner side's power to the
-/// outer, the same turn ends within 3° of the heading asked. That the
-/// cap is the envelope's at every speed is
-/// `tests/it/spatial_straight.rs`'s check.
+/// outer, now through the engine whose speed is a state (its converter
+/// and ranges on the box, the steer drive geared to it), the same turn
+/// ends within 3° of the heading asked, the engine's power within its
+/// rating at every row (measured 173 kW of 205 kW at the most) and its
+/// range and converter recorded at every row. That the cap is the
+/// envelope's at every speed, and that the engine on the box runs as the
+/// planar side's, is `tests/it/spatial_straight.rs`'s check.
 #[test]
 fn spatial_turns_on_the_engine_s_envelope() {
     let dir = scratch("spatial-engine");
@@ -697,21 +701,45 @@ fn spatial_turns_on_the_engine_s_envelope() {
         let ran = run(&binary(), &args, &dir);
         assert_success(driveline, &ran);
         let said = programs::text(&ran.stdout);
-        let peak: f64 = said
-            .split("at most ")
-            .nth(1)
-            .and_then(|s| s.split(" kW a side").next())
-            .and_then(|s| s.parse().ok())
-            .unwrap_or_else(|| panic!("the envelope's peak named: {said}"));
+        let named = |before: &str, after: &str| -> f64 {
+            said.split(before)
+                .nth(1)
+                .and_then(|s| s.split(after).next())
+                .and_then(|s| s.parse().ok())
+                .unwrap_or_else(|| panic!("`{before}…{after}` named: {said}"))
+        };
         let table = table(&out.join("spatial.csv"));
         let (header, rows) = &table;
         let at = |name: &str| header.iter().position(|h| h == name).expect(name);
         let most = |name: &str| rows.iter().map(|r| r[at(name)]).fold(0.0, f64::max) / 1e3;
-        let power = [most("r_sprocket_power"), most("l_sprocket_power")];
-        println!("{driveline}: the envelope's {peak} kW a side; the sides' most {power:?} kW");
         if driveline == "sides" {
+            // The envelope caps each side's drive: half the engine each.
+            let peak = named("at most ", " kW a side");
+            let power = [most("r_sprocket_power"), most("l_sprocket_power")];
+            println!("{driveline}: the envelope's {peak} kW a side; the sides' most {power:?} kW");
             for p in power {
                 assert!(p <= peak + 0.05, "{p} kW past the side's {peak} kW");
+            }
+            assert!(rows.iter().all(|r| r[at("engine_speed")].is_nan()));
+        } else {
+            // The engine's speed is a state: its power within its rating,
+            // the range and the converter recorded at every row.
+            let rated = named("rated ", " kW)");
+            let engine = most("engine_power");
+            println!("{driveline}: the engine's most {engine} kW of its rated {rated} kW");
+            assert!(
+                engine <= rated + 0.05,
+                "{engine} kW past the rated {rated} kW"
+            );
+            assert!(
+                engine > 0.5 * rated,
+                "the turn asks the engine for {engine} kW"
+            );
+            for r in rows {
+                assert!(
+                    r[at("gear")] >= 1.0 && r[at("speed_ratio")].is_finite(),
+                    "{r:?}"
+                );
             }
         }
         headings.push(rows.last().unwrap()[at("heading")].to_degrees());

@@ -36,6 +36,7 @@ mod bodies;
 mod declared;
 mod drive;
 mod driveline;
+mod engine;
 mod envelope;
 mod ground;
 mod outputs;
@@ -51,6 +52,7 @@ pub use driveline::{
     Differential, DifferentialSteer, Driveline, DrivelineError, FullSteer, SideDrives, SteerDrive,
     SteerInput, SteerRatiosError, SteerUnit, SteeringBrakes, span, steer_drive_ratio,
 };
+pub use engine::{SpatialEngine, SpatialEngineError};
 pub use envelope::EngineEnvelope;
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use scene::SpatialScene;

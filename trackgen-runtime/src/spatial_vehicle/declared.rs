@@ -54,6 +54,19 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// (`None`: no cap; [`SpatialSystem::with_envelope`]).
     fn set_envelope(&mut self, envelope: Option<EngineEnvelope>);
 
+    /// The engine driving the differential, its speed a state, if one
+    /// does ([`SpatialSystem::engine`]).
+    fn engine(&self) -> Option<&super::SpatialEngine>;
+
+    /// `y` with the differential's engine (if its speed is a state) at
+    /// its idle speed ([`SpatialSystem::start_engine`]).
+    fn start_engine(&self, y: &mut [f64]);
+
+    /// After an accepted step to `(t, y)`: the engine's gearbox shifted
+    /// and its clutch locked where their rules say; whether the
+    /// integrator must restart ([`SpatialSystem::after_step`]).
+    fn after_step(&mut self, t: f64, y: &[f64]) -> bool;
+
     /// The sprockets' rolling radius, m: the mean of the two sides' (NaN
     /// without sprockets).
     fn rolling_radius(&self) -> f64;
@@ -173,6 +186,18 @@ where
         SpatialSystem::rolled(self, y, roll)
     }
 
+    fn engine(&self) -> Option<&super::SpatialEngine> {
+        SpatialSystem::engine(self)
+    }
+
+    fn start_engine(&self, y: &mut [f64]) {
+        SpatialSystem::start_engine(self, y)
+    }
+
+    fn after_step(&mut self, t: f64, y: &[f64]) -> bool {
+        SpatialSystem::after_step(self, t, y)
+    }
+
     fn rolling_radius(&self) -> f64 {
         self.dynamics.mean_rolling_radius()
     }
@@ -198,7 +223,8 @@ where
     }
 
     fn dynamic_states(&self) -> usize {
-        self.books_at() + 3
+        // The engine's speed and twist follow the driveline's first three.
+        self.books_at() + if self.engine().is_some() { 5 } else { 3 }
     }
 
     fn hull_rates(&self) -> [usize; 6] {

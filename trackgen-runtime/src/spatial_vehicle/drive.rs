@@ -19,11 +19,11 @@ use super::{
 use crate::integrate::SimulationError;
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::plane_rotation;
-use crate::vehicle::TorqueCap;
+use crate::vehicle::{EngineSide, TorqueCap};
 
 /// What drives the sprockets at a state: the driveline, the driver holding
 /// a heading (if one is), the engine's envelope (if any) and the
-/// driveline's three states
+/// driveline's five states
 /// ([`SpatialSystem`](super::SpatialSystem)'s docs).
 #[derive(Clone, Copy)]
 pub struct Driver<'a> {
@@ -34,7 +34,7 @@ pub struct Driver<'a> {
     /// The engine's full-load envelope capping the drive.
     pub envelope: Option<&'a EngineEnvelope>,
     /// The driveline's states.
-    pub states: [f64; 3],
+    pub states: [f64; 5],
 }
 
 /// What the driveline does at a state: per side (right, left).
@@ -55,9 +55,13 @@ pub struct DriveState {
     pub dissipation: f64,
     /// Each side's brake's part of it, W (right, left).
     pub braked: [f64; 2],
-    /// The rates of the driveline's three states
+    /// The rates of the driveline's five states
     /// ([`SpatialSystem`](super::SpatialSystem)'s docs).
-    pub rates: [f64; 3],
+    pub rates: [f64; 5],
+    /// The engine's side where an engine whose speed is a state drives
+    /// the differential ([`SpatialEngine`](super::SpatialEngine)): its
+    /// speed, torque, range, converter and powers (the whole engine's).
+    pub engine: Option<EngineSide>,
 }
 
 impl DriveState {
@@ -102,7 +106,6 @@ where
             envelope,
             states,
         } = driver;
-        let qd = &hull.rates.planar;
         let asked = match steering {
             None => None,
             Some(hold) => Some(hold.difference(t, hull.pose.yaw, self.gauge).ok_or(
@@ -112,12 +115,10 @@ where
                 },
             )?),
         };
-        let mut state = DriveState::default();
-        for (s, sprocket) in self.sprockets.iter().enumerate() {
-            if let Some(sprocket) = sprocket {
-                state.speed[s] = qd[2 + sprocket.body] - qd[2];
-            }
-        }
+        let mut state = DriveState {
+            speed: self.sprocket_speeds(hull),
+            ..DriveState::default()
+        };
         match driveline {
             Driveline::Sides(drives) => self.drive_sides(
                 t,
@@ -147,7 +148,7 @@ where
         t: f64,
         (drives, envelope): (&SideDrives, Option<&EngineEnvelope>),
         difference: f64,
-        states: [f64; 3],
+        states: [f64; 5],
         state: &mut DriveState,
     ) -> Result<(), SimulationError> {
         for (s, drive) in drives.each().into_iter().enumerate() {
@@ -173,16 +174,18 @@ where
 
     /// The differential's drive halved to both sprockets, and its brakes
     /// or steer unit, steered by the belt-speed difference `asked` or
-    /// else by the input schedule. The drive is capped by both sides'
-    /// share of the `envelope` at their mean speed, less what the steer
-    /// unit draws from the engine.
+    /// else by the input schedule. Through an engine whose speed is a
+    /// state, the box's torque is what the engine gives it, loaded by
+    /// what the steer unit draws ([`SpatialEngine`](super::SpatialEngine));
+    /// else the drive is capped by both sides' share of the `envelope` at
+    /// their mean speed, less what the steer unit draws from the engine.
     fn drive_differential(
         &self,
         t: f64,
         hull: &TreeState<DH>,
         (differential, envelope): (&Differential, Option<&EngineEnvelope>),
         asked: Option<f64>,
-        states: [f64; 3],
+        states: [f64; 5],
         state: &mut DriveState,
     ) -> Result<(), SimulationError> {
         let radius = self.mean_rolling_radius();
@@ -234,7 +237,7 @@ where
                 }
             }
             DifferentialSteer::Unit(unit) => {
-                let full = unit.full_difference(mean);
+                let full = unit.full_difference(mean, states[3]);
                 let most = full.abs();
                 let wanted = match asked {
                     Some(asked) => (-asked / radius).clamp(-most, most),
@@ -255,9 +258,24 @@ where
             }
         }
         // The engine drives the steer unit too: what the unit draws
-        // (`Q Δω`, the steering brakes none) leaves the box that much less
-        // of the envelope's power at the mean speed.
+        // (`Q Δω`, the steering brakes none) loads the engine whose speed
+        // is a state, or leaves the box that much less of the envelope's
+        // power at the mean speed.
         let steering = state.driven;
+        if let Some(engine) = &differential.engine {
+            let boxed = engine.drive(
+                (&differential.drive, t),
+                (mean, radius),
+                states[0],
+                (states[3], states[4], steering),
+            )?;
+            state.torque[0] += 0.5 * boxed.torque;
+            state.torque[1] += 0.5 * boxed.torque;
+            state.driven += boxed.torque * mean;
+            [state.rates[0], state.rates[3], state.rates[4]] = boxed.rates;
+            state.engine = Some(boxed.side);
+            return Ok(());
+        }
         let cap = envelope.map_or(TorqueCap::NONE, |e| {
             let mut cap = e.differential(mean);
             if steering > 0.0 && mean != 0.0 {
@@ -274,6 +292,15 @@ where
         state.driven += torque * mean;
         state.rates[0] = rate;
         Ok(())
+    }
+
+    /// Each sprocket's speed relative to the frame, rad/s (right, left;
+    /// planar sense: driving forward turns it negative), 0 for a side
+    /// without one.
+    pub fn sprocket_speeds(&self, hull: &TreeState<DH>) -> [f64; 2] {
+        let qd = &hull.rates.planar;
+        self.sprockets
+            .map(|s| s.map_or(0.0, |sprocket| qd[2 + sprocket.body] - qd[2]))
     }
 
     /// The two sprockets' mean rolling radius, m (NaN where a side has

@@ -59,7 +59,7 @@
 
 use thiserror::Error;
 
-use super::SteeringError;
+use super::{SpatialEngine, SteeringError};
 use crate::laws::{ParameterError, Stiction, TangentialResponse};
 use crate::vehicle::{Drive, DriveError, Powertrain};
 
@@ -118,6 +118,11 @@ pub struct Differential {
     /// ([`HeadingHold`](super::HeadingHold) steers through the same
     /// brakes or unit when one is).
     pub input: SteerInput,
+    /// The engine driving the box, its speed a state
+    /// ([`SpatialEngine`]): the drive's demand is then asked of it, and
+    /// the box gets what its converter and range give. `None`: the drive
+    /// is the box's own (capped by an envelope, if one is set).
+    pub engine: Option<SpatialEngine>,
 }
 
 /// What steers a differential.
@@ -182,6 +187,14 @@ pub enum FullSteer {
     /// steer drive's `k ω_e`, [`SteerDrive::full_difference`]): a pivot,
     /// the box's drive free or holding the mean at rest.
     Neutral(f64),
+    /// In any range, a steer drive geared to the engine whose speed is a
+    /// state ([`Differential::engine`]): `k ω_e`, `k` this ratio (> 0,
+    /// [`SteerDrive::ratio`]), whatever the range and the converter's
+    /// slip. With the converter locked in range `r` it is `q_r ω̄`, the
+    /// range's minimum steer ratio; through the unlocked converter, at a
+    /// crawl, the engine turns faster than the box and the turn is
+    /// tighter.
+    Engine(f64),
 }
 
 /// `q`: a steer unit's speed difference at full steer over the sprockets'
@@ -315,6 +328,12 @@ pub enum DrivelineError {
     /// The heading already held cannot be steered through it.
     #[error(transparent)]
     Steering(#[from] SteeringError),
+    /// A steer drive geared to the engine without an engine whose speed
+    /// is a state.
+    #[error(
+        "a steer drive geared to the engine (FullSteer::Engine) needs the differential's engine          (Differential::engine)"
+    )]
+    NoEngine,
 }
 
 impl Differential {
@@ -357,18 +376,25 @@ impl Differential {
                 max_torque,
             }),
             input: Box::new(|_| 0.0),
+            engine: None,
         })
     }
 }
 
 impl SteerUnit {
     /// The sprockets' speed difference `ω_R − ω_L` at full left steer,
-    /// rad/s, with their mean at `mean` rad/s (planar sense: forward turns
-    /// them negative, and a left turn slows the left sprocket).
-    pub fn full_difference(&self, mean: f64) -> f64 {
+    /// rad/s, with their mean at `mean` rad/s and the engine at
+    /// `engine_speed` rad/s (planar sense: forward turns them negative,
+    /// and a left turn slows the left sprocket; a steer drive geared to
+    /// the engine turns them as forward unless the mean runs backward).
+    pub fn full_difference(&self, mean: f64, engine_speed: f64) -> f64 {
         match self.full_steer {
             FullSteer::Ratio(rho) => span(rho) * mean,
             FullSteer::Neutral(difference) => -difference,
+            FullSteer::Engine(k) => {
+                let difference = k * engine_speed;
+                if mean > 0.0 { difference } else { -difference }
+            }
         }
     }
 
@@ -388,6 +414,7 @@ impl SteerUnit {
         match self.full_steer {
             FullSteer::Ratio(rho) => ParameterError::check("minimum steer ratio", rho, 1.0, true)?,
             FullSteer::Neutral(d) => ParameterError::check("full-steer difference", d, 0.0, true)?,
+            FullSteer::Engine(k) => ParameterError::check("steer drive's ratio", k, 0.0, true)?,
         }
         ParameterError::check("proportional gain", self.proportional, 0.0, false)?;
         ParameterError::check("integral gain", self.integral, 0.0, false)?;
@@ -457,6 +484,11 @@ impl Driveline {
             Driveline::Sides(drives) => Ok(drives.check()?),
             Driveline::Differential(d) => {
                 d.drive.check()?;
+                if let (DifferentialSteer::Unit(unit), None) = (&d.steer, &d.engine)
+                    && let FullSteer::Engine(_) = unit.full_steer
+                {
+                    return Err(DrivelineError::NoEngine);
+                }
                 match &d.steer {
                     DifferentialSteer::Brakes(b) => {
                         b.check().map_err(|source| DrivelineError::Figure {
@@ -475,9 +507,11 @@ impl Driveline {
         }
     }
 
-    /// What the driveline's states (three) hold at `states`: the energy
-    /// its brakes' elastic stages store, J.
-    pub fn stored(&self, states: [f64; 3]) -> f64 {
+    /// What the driveline's states (five) hold at `states`: the energy
+    /// its brakes' elastic stages store, J (the engine's and its
+    /// driveline's twist are behind the sprockets, where the books are
+    /// kept).
+    pub fn stored(&self, states: [f64; 5]) -> f64 {
         match self {
             Driveline::Differential(Differential {
                 steer: DifferentialSteer::Brakes(b),
@@ -505,7 +539,7 @@ mod tests {
                 max_torque: 1.0,
             };
             // Forward at a mean of −1 rad/s: the right sprocket outside.
-            let q = -unit.full_difference(-1.0);
+            let q = -unit.full_difference(-1.0, 0.0);
             let held = (1.0 + 0.5 * q) / (1.0 - 0.5 * q);
             assert!((held / ratio - 1.0).abs() < 1e-13, "{ratio}: {held}");
         }

@@ -6,6 +6,7 @@
 //! the track's slip and its own speed round the hull, the ground's
 //! force and yaw moment on the track, and the track's tensions.
 
+use crate::vehicle::EngineSide;
 use nalgebra::Vector3;
 
 use super::{MassCentre, SpatialSystem, TrackTensions};
@@ -86,6 +87,14 @@ pub struct SpatialOutputs {
     pub turn_radius: f64,
     /// The right side's, then the left's.
     pub sides: [SideOutputs; 2],
+    /// The engine's side where an engine whose speed is a state drives
+    /// the differential: its speed, torque, range, lock-up, converter and
+    /// powers (the whole engine's).
+    pub engine: Option<EngineSide>,
+    /// Its range as a run records it
+    /// ([`Driveline::gear_number`](crate::vehicle::Driveline::gear_number):
+    /// from 1, −1 in reverse); NaN without such an engine.
+    pub gear: f64,
 }
 
 impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
@@ -170,6 +179,11 @@ where
             lateral_acceleration: acceleration.dot(&leftward),
             turn_radius: horizontal / yaw_rate.abs(),
             sides,
+            engine: drive.engine,
+            gear: match (drive.engine, self.engine()) {
+                (Some(side), Some(engine)) => engine.driveline().gear_number(side.gear),
+                _ => f64::NAN,
+            },
         })
     }
 }

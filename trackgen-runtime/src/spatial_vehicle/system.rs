@@ -9,14 +9,18 @@
 //! across it (3). The state is the hull's, the right track's, the left
 //! track's, each track's ground points' stiction deflections (m, none
 //! under regularised friction: [`SpatialDynamics::ground_states`]), the
-//! driveline's three states, the energy dissipated so far and the work
+//! driveline's five states, the energy dissipated so far and the work
 //! the drive has done so far (J), then each side's books (J, right then
 //! left: [`SideBooks`]' five, in its fields' order; passive, so keeping
-//! them moves no step). The driveline's states are, with a
+//! them moves no step). The driveline's first three states are, with a
 //! drive on each side, the right's and the left's controller integrals
 //! (rad) and an unused 0; with a differential, its drive's integral
 //! (rad), then the right and the left steering brakes' deflections (rad)
-//! or the steer unit's integral (rad) and an unused 0. Each
+//! or the steer unit's integral (rad) and an unused 0. The last two are
+//! the engine's speed (rad/s) and its locked driveline's twist (rad) where
+//! an engine whose speed is a state drives the differential
+//! ([`SpatialEngine`](super::SpatialEngine)); else they stay 0 and are
+//! passive, so that they move no step either. Each
 //! track's loop is
 //! held by Baumgarte's stabilisation of its planar closure
 //! ([`MultiplierOptions`]'s rate), which the plane's motion leaves
@@ -289,8 +293,8 @@ where
     /// begin.
     const TREES: usize = (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6);
 
-    /// Where the books sit in the state: the driveline's three states,
-    /// then the energy dissipated and the drive's work.
+    /// Where the driveline's five states sit in the state, then the
+    /// energy dissipated and the drive's work, then the sides' books.
     pub(super) fn books_at(&self) -> usize {
         let [r, l] = self.dynamics.ground_states();
         Self::TREES + r + l
@@ -330,10 +334,48 @@ where
         )
     }
 
-    /// The driveline's three states in `y` (the module's docs).
-    pub fn driveline_states(&self, y: &[f64]) -> [f64; 3] {
+    /// The driveline's five states in `y` (the module's docs).
+    pub fn driveline_states(&self, y: &[f64]) -> [f64; 5] {
         let b = self.books_at();
-        [y[b], y[b + 1], y[b + 2]]
+        [y[b], y[b + 1], y[b + 2], y[b + 3], y[b + 4]]
+    }
+
+    /// The engine driving the differential, its speed a state, if one
+    /// does.
+    pub fn engine(&self) -> Option<&super::SpatialEngine> {
+        match &self.driveline {
+            Driveline::Differential(d) => d.engine.as_ref(),
+            Driveline::Sides(_) => None,
+        }
+    }
+
+    /// `y` with the engine driving the differential (if one does) at its
+    /// idle speed: where a run through it starts.
+    pub fn start_engine(&self, y: &mut [f64]) {
+        if let Some(engine) = self.engine() {
+            y[self.books_at() + 3] = engine.idle();
+        }
+    }
+
+    /// After an accepted step to `(t, y)`: the engine's gearbox shifted
+    /// and its lock-up clutch engaged or released where their rules say
+    /// ([`SpatialEngine::after_step`](super::SpatialEngine::after_step)).
+    /// Whether anything changed: the integrator must then restart. A run
+    /// through an engine whose speed is a state calls it after every
+    /// step, as the planar vehicle's run calls
+    /// [`Simulated::after_step`](crate::system::Simulated::after_step).
+    pub fn after_step(&mut self, t: f64, y: &[f64]) -> bool {
+        let b = self.books_at();
+        let (hull, ..) = self.states(y);
+        let omega = self.dynamics.sprocket_speeds(&hull);
+        let mean = 0.5 * (omega[0] + omega[1]);
+        match &mut self.driveline {
+            Driveline::Differential(d) => match d.engine.as_mut() {
+                Some(engine) => engine.after_step(t, (mean, y[b + 3]), &d.drive),
+                None => false,
+            },
+            Driveline::Sides(_) => false,
+        }
     }
 
     /// What the drives do at time `t` and state `y`.
@@ -406,13 +448,13 @@ where
             tree_state(&y[..h]),
             tree_state(&y[h..h + r]),
             tree_state(&y[h + r..h + r + l]),
-            y[self.books_at() + 3],
+            y[self.books_at() + 5],
         )
     }
 
     /// Each side's books at `y` (right, left).
     pub fn side_books(&self, y: &[f64]) -> [SideBooks; 2] {
-        let at = self.books_at() + 5;
+        let at = self.books_at() + 7;
         let n = SideBooks::VALUES;
         [
             SideBooks::from_values(&y[at..at + n]),
@@ -440,7 +482,7 @@ where
                 .potential
                 + self.driveline.stored(self.driveline_states(y)),
             dissipated,
-            driven: y[self.books_at() + 4],
+            driven: y[self.books_at() + 6],
         }
     }
 }
@@ -453,7 +495,7 @@ where
     L: TrackModel<DL>,
 {
     fn dimension(&self) -> usize {
-        self.books_at() + 5 + 2 * SideBooks::VALUES
+        self.books_at() + 7 + 2 * SideBooks::VALUES
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -473,11 +515,12 @@ where
     }
 
     fn is_quadrature(&self, i: usize) -> bool {
-        i >= self.books_at() + 3
+        i >= self.books_at() + 5 || self.is_passive(i)
     }
 
     fn is_passive(&self, i: usize) -> bool {
-        i >= self.books_at() + 5
+        let b = self.books_at();
+        i >= b + 7 || (self.engine().is_none() && (b + 3..b + 5).contains(&i))
     }
 }
 
@@ -534,10 +577,10 @@ where
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
         put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
         put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
-        dy[b..b + 3].copy_from_slice(&drive.rates);
-        dy[b + 3] = loads.dissipation + drive.dissipation;
-        dy[b + 4] = drive.driven;
-        let sides = dy[b + 5..].chunks_exact_mut(SideBooks::VALUES);
+        dy[b..b + 5].copy_from_slice(&drive.rates);
+        dy[b + 5] = loads.dissipation + drive.dissipation;
+        dy[b + 6] = drive.driven;
+        let sides = dy[b + 7..].chunks_exact_mut(SideBooks::VALUES);
         for (s, (books, losses)) in sides.zip(&loads.losses).enumerate() {
             books.copy_from_slice(&[
                 drive.side_power(s),

@@ -167,15 +167,7 @@ impl VehicleConfig {
         self.powertrain
             .as_ref()
             .map_or((TorqueCap::NONE, None), |p| {
-                let cap = p.cap(omega.abs(), engaged, reverse);
-                (
-                    TorqueCap {
-                        value: cap.torque,
-                        slope: cap.slope,
-                        stall,
-                    },
-                    Some(cap),
-                )
+                cap_in_gear(p, omega, stall, (engaged, reverse))
             })
     }
 
@@ -196,9 +188,7 @@ impl VehicleConfig {
     pub(super) fn stall_torque(&self) -> (f64, f64) {
         self.powertrain
             .as_ref()
-            .map_or((f64::INFINITY, f64::INFINITY), |p| {
-                (p.limit(0.0).0, p.cap(0.0, None, true).torque)
-            })
+            .map_or((f64::INFINITY, f64::INFINITY), Powertrain::stall_torques)
     }
 
     /// The arms, checked to be one per arm of a chassis whose arms are at
@@ -217,4 +207,27 @@ impl VehicleConfig {
             })
         }
     }
+}
+
+/// `powertrain`'s cap on the drive at sprocket speed `omega` (rad/s), its
+/// torque at rest being `stall` (N m), a scheduled gearbox in the range
+/// `engaged`, in reverse where the driver asks (`reverse`), and its own
+/// cap (its gear and full-load point): the one rule the planar sprocket's
+/// drive ([`VehicleConfig::torque_cap_in_gear`]) and the spatial
+/// differential's box through an engine read.
+pub(super) fn cap_in_gear(
+    powertrain: &Powertrain,
+    omega: f64,
+    stall: f64,
+    (engaged, reverse): (Option<Engaged>, bool),
+) -> (TorqueCap, Option<Cap>) {
+    let cap = powertrain.cap(omega.abs(), engaged, reverse);
+    (
+        TorqueCap {
+            value: cap.torque,
+            slope: cap.slope,
+            stall,
+        },
+        Some(cap),
+    )
 }

@@ -244,6 +244,16 @@ impl Driveline {
         self.reverse.map(|_| self.ranges.len())
     }
 
+    /// The range `gear` (0-based, the reverse range last) as a run
+    /// records it: numbered from 1, −1 in reverse, 0 for none.
+    pub fn gear_number(&self, gear: Option<usize>) -> f64 {
+        match gear {
+            None => 0.0,
+            Some(g) if Some(g) == self.reverse_range() => -1.0,
+            Some(g) => (g + 1) as f64,
+        }
+    }
+
     /// The full-load operating point in range `range` (0-based) with the
     /// turbine at `turbine_speed` (rad/s, ≥ 0): the converter's match, or
     /// the lock-up's where the range locks and the match's speed ratio

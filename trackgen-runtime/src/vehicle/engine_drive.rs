@@ -19,8 +19,8 @@
 //! to the chassis and `g` the way the range turns it (−1 forward: the
 //! sprocket turns clockwise driving forward; +1 in reverse).
 
-use super::converter::Driveline;
-use super::{DriveSlopes, Engaged, EngineSide, VehicleConfig};
+use super::config::cap_in_gear;
+use super::{Drive, DriveSlopes, Engaged, EngineSide, Powertrain, TorqueCap};
 use crate::integrate::SimulationError;
 
 /// What the drive gives at one instant through an engine with its speed a
@@ -28,7 +28,7 @@ use crate::integrate::SimulationError;
 /// fuel and the engine's side, and their slopes over the drive's states
 /// `(ω, s, ω_e)`.
 #[derive(Debug, Clone, Copy)]
-pub(super) struct EngineDrive {
+pub(crate) struct EngineDrive {
     /// The torque on the sprocket, N m.
     pub torque: f64,
     /// The controller integral's rate, rad/s.
@@ -52,7 +52,7 @@ pub(super) struct EngineDrive {
 /// (N m) and the gearbox's state (the engaged range of a scheduled
 /// gearbox, and whether the driver asks reverse).
 #[derive(Debug, Clone, Copy)]
-pub(super) struct AtSprocket {
+pub(crate) struct AtSprocket {
     pub omega: f64,
     pub rolling_radius: f64,
     pub stall: f64,
@@ -61,20 +61,25 @@ pub(super) struct AtSprocket {
     pub locked: bool,
 }
 
-/// The drive at time `t` with the sprocket `at` its state, the
+/// The drive `drive` at time `t` with the sprocket `at` its state, the
 /// controller's integral at `integral` (rad), the engine at
 /// `engine_speed` (rad/s) and the locked driveline twisted by `twist` (rad
-/// at the turbine), through `driveline`, whose
-/// [`dynamics`](Driveline::dynamics) are declared.
+/// at the turbine), through `powertrain`, a converter driveline whose
+/// [`dynamics`](super::Driveline::dynamics) are declared, its engine's
+/// shaft also loaded by `accessory` N m (a steer unit's pump; its slopes
+/// are not in the drive's).
 #[inline]
-pub(super) fn engine_drive(
-    driveline: &Driveline,
-    config: &VehicleConfig,
+pub(crate) fn engine_drive(
+    powertrain: &Powertrain,
+    drive: &Drive,
     t: f64,
     at: AtSprocket,
     integral: f64,
-    (engine_speed, twist): (f64, f64),
+    (engine_speed, twist, accessory): (f64, f64, f64),
 ) -> Result<EngineDrive, SimulationError> {
+    let Powertrain::Converter(driveline) = powertrain else {
+        unreachable!("engine_drive is called for a converter driveline")
+    };
     let AtSprocket {
         omega,
         rolling_radius,
@@ -82,20 +87,16 @@ pub(super) fn engine_drive(
         gearbox,
         locked,
     } = at;
-    let (cap, own) = config.torque_cap_in_gear(omega, stall, gearbox);
+    let (cap, own) = cap_in_gear(powertrain, omega, stall, gearbox);
     // The controller's integral is held where the powertrain's envelope
     // caps its torque (no wind-up), as without the engine's inertia; what
     // it asks of the engine is its torque within its own limit alone: at
     // full throttle the governor opens the fuel fully, rather than
     // following the envelope's cap as the sprocket's speed ripples.
     let (_, integral_rate, capped_slopes, _) =
-        config
-            .drive
-            .checked_law(t, omega, rolling_radius, integral, cap)?;
+        drive.checked_law(t, omega, rolling_radius, integral, cap)?;
     let (demand, _, demand_slopes, direction) =
-        config
-            .drive
-            .checked_law(t, omega, rolling_radius, integral, super::TorqueCap::NONE)?;
+        drive.checked_law(t, omega, rolling_radius, integral, TorqueCap::NONE)?;
     // The range the gearbox is in: reverse where the driver asks it; the
     // scheduled one (a shift engages it at once); shifted ideally, the
     // cap's (the envelope's best; beyond every range's reach, the highest).
@@ -117,7 +118,7 @@ pub(super) fn engine_drive(
         (0.0, demand)
     };
     let state = driveline
-        .engine_state(locked, engine_speed, wt, twist, asked)
+        .loaded_engine_state(locked, engine_speed, wt, twist, asked, accessory)
         .unwrap_or_else(|| unreachable!("engine_drive is called for a driveline with dynamics"));
     let torque = way * f * n * state.turbine_torque + brake;
     // Slopes over (ω, s, ω_e, z): the demand's through what it asks of

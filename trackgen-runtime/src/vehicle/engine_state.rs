@@ -97,8 +97,8 @@ pub struct EngineState {
     pub fuel: f64,
     /// The engine's torque, N m.
     pub engine_torque: f64,
-    /// What the engine's shaft gives the converter's pump and the
-    /// lock-up clutch, N m.
+    /// What the engine's shaft gives the converter's pump, the lock-up
+    /// clutch and an accessory, N m.
     pub load: f64,
     /// What the turbine (with the clutch) gives the gearbox, N m.
     pub turbine_torque: f64,
@@ -307,6 +307,23 @@ impl Driveline {
         twist: f64,
         asked: f64,
     ) -> Option<EngineState> {
+        self.loaded_engine_state(locked, we, wt, twist, asked, 0.0)
+    }
+
+    /// [`engine_state`](Self::engine_state) with the engine's shaft also
+    /// loaded by `accessory` N m besides the converter's pump and the
+    /// clutch (a hydrostatic steer unit's pump, driven by the engine): the
+    /// governor fuels for it, and it slows the engine as the pump does;
+    /// its slopes are not in the state's (it is taken as given).
+    pub fn loaded_engine_state(
+        &self,
+        locked: bool,
+        we: f64,
+        wt: f64,
+        twist: f64,
+        asked: f64,
+        accessory: f64,
+    ) -> Option<EngineState> {
         let dynamics = self.dynamics.as_ref()?;
         let clutch = dynamics.lockup();
         let cap = dynamics.lockup_capacity;
@@ -337,7 +354,7 @@ impl Driveline {
             (f, sr, f.torque_ratio)
         };
         let load = [
-            fluid.pump[0] + clutch_torque[0],
+            fluid.pump[0] + clutch_torque[0] + accessory,
             fluid.pump[1] + clutch_torque[1],
             fluid.pump[2] + clutch_torque[2],
             clutch_torque[3],
@@ -352,7 +369,7 @@ impl Driveline {
         // load at this state through the converter; locked, the torque
         // asked (∂/∂T* last).
         let feed = if locked {
-            [asked, 0.0, 0.0, 0.0, 1.0]
+            [asked + accessory, 0.0, 0.0, 0.0, 1.0]
         } else {
             [load[0], load[1], load[2], load[3], 0.0]
         };

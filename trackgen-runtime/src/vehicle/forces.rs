@@ -351,11 +351,11 @@ fn drive<const DC: usize>(
     books: &mut EnergyBooks,
 ) -> Result<(), SimulationError> {
     let omega = sprocket.omega(qdc);
-    if let Some(Powertrain::Converter(driveline)) = &config.powertrain
+    if let Some(p @ Powertrain::Converter(driveline)) = &config.powertrain
         && driveline.dynamics.is_some()
     {
         let at = sprocket.at(config, t, omega);
-        let drive = engine_drive(driveline, config, t, at, integral, engine)?;
+        let drive = engine_drive(p, &config.drive, t, at, integral, (engine.0, engine.1, 0.0))?;
         books.engine_load = drive.fuel;
         books.engine = drive.side;
         books.engine_rate = [drive.engine_rate, drive.twist_rate];

@@ -44,6 +44,7 @@ pub use converter::{Driveline, OperatingPoint};
 pub use declared::{Vehicle, VehicleDynamics, build};
 pub use drive::{Drive, DriveError, DriveSlopes, TorqueCap, speed_ramp};
 pub use engine::EngineDynamics;
+pub(crate) use engine_drive::{AtSprocket, engine_drive};
 pub use engine_state::{
     COUPLING_BAND, EngineState, IDEAL_DOWNSHIFT, IDEAL_SHIFT_TIME, LOCKUP_RELEASE,
 };

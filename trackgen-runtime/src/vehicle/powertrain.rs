@@ -91,6 +91,13 @@ impl Powertrain {
         }
     }
 
+    /// The torque at rest, N m, forward and in reverse (reverse as
+    /// forward without a reverse range): found once per run, the cap's
+    /// stall.
+    pub(crate) fn stall_torques(&self) -> (f64, f64) {
+        (self.limit(0.0).0, self.cap(0.0, None, true).torque)
+    }
+
     /// The largest driving torque at sprocket speed `|ω|` (`speed`, rad/s,
     /// ≥ 0), N m, and its slope with `|ω|`, N m s/rad.
     pub fn limit(&self, speed: f64) -> (f64, f64) {

@@ -327,15 +327,15 @@ where
             Some(s) => {
                 let omega = s.omega(qdc);
                 let slopes = match &self.config.powertrain {
-                    Some(Powertrain::Converter(driveline)) if driveline.dynamics.is_some() => {
+                    Some(p @ Powertrain::Converter(driveline)) if driveline.dynamics.is_some() => {
                         let at = s.at(&self.config, t, omega);
                         super::engine_drive::engine_drive(
-                            driveline,
-                            &self.config,
+                            p,
+                            &self.config.drive,
                             t,
                             at,
                             integral,
-                            engine,
+                            (engine.0, engine.1, 0.0),
                         )?
                         .slopes
                     }

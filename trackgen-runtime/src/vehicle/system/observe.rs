@@ -91,10 +91,9 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
             turbine_power: books.engine.turbine_power,
             engine_speed: books.engine.engine_speed,
             engine_torque: books.engine.engine_torque,
-            gear: match (books.engine.gear, &self.config.powertrain) {
-                (None, _) => 0.0,
-                (Some(g), Some(Powertrain::Converter(d))) if Some(g) == d.reverse_range() => -1.0,
-                (Some(g), _) => (g + 1) as f64,
+            gear: match &self.config.powertrain {
+                Some(Powertrain::Converter(d)) => d.gear_number(books.engine.gear),
+                _ => books.engine.gear.map_or(0.0, |g| (g + 1) as f64),
             },
             speed_ratio: books.engine.speed_ratio,
             torque_ratio: books.engine.torque_ratio,
