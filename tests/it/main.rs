@@ -60,6 +60,7 @@ mod spatial_books;
 mod spatial_drive;
 mod spatial_driveline;
 mod spatial_dynamics;
+mod spatial_engine;
 mod spatial_modes;
 mod spatial_scene;
 mod spatial_slope;
