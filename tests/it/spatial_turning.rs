@@ -210,6 +210,34 @@ fn a_steer_ratio_out_of_range_is_refused() {
     }
 }
 
+/// Cornering through a steer unit with an engine whose speed is a state
+/// (the M113A3's engine, converter and ranges with a final drive of 12,
+/// so that the light carrier's crawl turns its turbine in the first
+/// range): the box driven through the engine, the steer unit the drive
+/// geared to it at the ratio a minimum steer ratio of 2 makes through
+/// the first range. At 2 m/s on a 10 m circle it holds the circle, its
+/// path's radius within the event's 10 % and its lateral acceleration
+/// `v²/R` within 10 %, as on its side drives (measured 10.09 m,
+/// 0.399 m/s²).
+#[test]
+fn a_corner_is_held_through_the_engine_s_steer_drive() {
+    use trackgen::mobility::cornering::corner;
+    let mut powertrain = trackgen::vehicles::m113::powertrain();
+    if let Powertrain::Converter(d) = &mut powertrain {
+        d.final_drive = 12.0;
+    }
+    let settings = EventSettings::new(powertrain);
+    let run = corner::<Twin>(&settings, Twin::declared_laws(), (10.0, Some(2.0)), 2.0)
+        .expect("the corner");
+    println!("{run:?}, {:.3} m/s²", run.lateral_acceleration());
+    assert!(run.held, "{run:?}");
+    assert!((run.radius / 10.0 - 1.0).abs() <= 0.1, "{run:?}");
+    assert!(
+        (run.lateral_acceleration() / 0.4 - 1.0).abs() <= 0.1,
+        "{run:?}"
+    );
+}
+
 /// Cornering (`mobility::cornering::corner`) on the light carrier's
 /// regularised ground (`μ` 0.7), through its side drives: at 2 m/s on a
 /// 10 m circle (0.4 m/s², 6 % of `μ g`) it holds the circle, its path's

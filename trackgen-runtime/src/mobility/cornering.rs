@@ -6,12 +6,19 @@
 //!
 //! A trial at speed `v` on radius `R`: the vehicle assembled at rest on
 //! level ground, settled [`SETTLE`] s, its belts ramped to `v` at the
-//! settings' acceleration, capped by the settings' powertrain
-//! ([`EngineEnvelope`](crate::spatial_vehicle::EngineEnvelope)):
-//! through a differential with a steer unit where the vehicle's
-//! transmission publishes its minimum steer ratio (the
-//! first range's: the steer unit carries the inner side's power to the
-//! outer, as the M113A3's X200-4 does), else by a speed drive on each
+//! settings' acceleration through the settings' powertrain: where the
+//! vehicle's transmission publishes its minimum steer ratio, through a
+//! differential with a steer unit (which carries the inner side's power
+//! to the outer, as the M113A3's X200-4 does). An engine that declares
+//! its inertia then drives the box with its speed a state
+//! ([`SpatialEngine`]: its converter, scheduled ranges and lock-up) and
+//! the unit is the steer drive geared to it
+//! ([`FullSteer::Engine`], its ratio the one the first range's published
+//! ratio makes through that range's reduction), so that the steer at
+//! speed is the range's; otherwise the unit holds the first range's
+//! ratio, the drive capped by the engine's envelope
+//! ([`EngineEnvelope`](crate::spatial_vehicle::EngineEnvelope)). Without
+//! a published ratio, a speed drive on each
 //! side (each with half the engine). Meanwhile a driver
 //! ([`HeadingHold::driver`]'s gain and largest belt difference) holds the
 //! heading wanted: still until the speed is reached, then turning left
@@ -45,8 +52,8 @@ use super::stretch::watch;
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
-    Differential, Driveline, FullSteer, HeadingHold, SideDrives, SpatialLaws, SpatialSimulated,
-    SpatialVehicleSystem, SteeringError,
+    Differential, Driveline, FullSteer, HeadingHold, SideDrives, SpatialEngine, SpatialLaws,
+    SpatialSimulated, SpatialVehicleSystem, SteeringError, steer_drive_ratio,
 };
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
@@ -135,6 +142,10 @@ pub fn corner<V: SpatialVehicleSystem>(
         }
     }
     let envelope = envelope(settings, EVENT)?;
+    let engine = match (ratio, SpatialEngine::new(settings.powertrain.clone())) {
+        (Some(_), Ok(engine)) => Some(engine),
+        _ => None,
+    };
     let flat = Terrain::Flat { height: 0.0 };
     let mut system = V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
     let mut y = system
@@ -142,14 +153,29 @@ pub fn corner<V: SpatialVehicleSystem>(
         .map_err(|e| spatial_setup(EVENT, e))?;
     let acceleration = settings.acceleration;
     let ramp = move |t: f64| (acceleration * (t - SETTLE)).clamp(0.0, speed);
-    let driveline = match ratio {
-        Some(ratio) => Differential::with_steer_unit(
+    let driveline = match (ratio, engine) {
+        (Some(ratio), Some(engine)) => {
+            // The steer drive the first range's published ratio makes
+            // with that range's reduction, geared to the engine.
+            let (k, _) = steer_drive_ratio(&[ratio], &[engine.driveline().reduction(0)])
+                .map_err(|e| spatial_setup(EVENT, e))?;
+            Differential::with_steer_unit(
+                &V::speed_drive(|_| 0.0),
+                Box::new(ramp),
+                FullSteer::Engine(k),
+            )
+            .map(|mut d| {
+                d.engine = Some(engine);
+                Driveline::Differential(d)
+            })
+        }
+        (Some(ratio), None) => Differential::with_steer_unit(
             &V::speed_drive(|_| 0.0),
             Box::new(ramp),
             FullSteer::Ratio(ratio),
         )
         .map(Driveline::Differential),
-        None => Some(Driveline::Sides(SideDrives {
+        (None, _) => Some(Driveline::Sides(SideDrives {
             right: V::speed_drive(ramp),
             left: V::speed_drive(ramp),
         })),
@@ -158,7 +184,10 @@ pub fn corner<V: SpatialVehicleSystem>(
     system
         .set_driveline(driveline)
         .map_err(|e| spatial_setup(EVENT, e))?;
-    system.set_envelope(Some(envelope));
+    if system.engine().is_none() {
+        system.set_envelope(Some(envelope));
+    }
+    system.start_engine(y.as_mut_slice());
     let turning = SETTLE + speed / acceleration;
     let rate = speed / radius;
     let mut driver = HeadingHold::driver(0.0, (0.0, 0.0), V::layout().gauge);
@@ -181,6 +210,9 @@ pub fn corner<V: SpatialVehicleSystem>(
         stepper
             .step(&mut system, &mut t, &mut y, watched)
             .map_err(|e| failed(t, e))?;
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
     }
     let mut before = false;
     let mut trial = Corner {

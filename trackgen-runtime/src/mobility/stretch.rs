@@ -72,6 +72,9 @@ pub(super) fn watch<S: SpatialSimulated>(
     while *t < end {
         let was = *t;
         stepper.step(system, t, y, end).map_err(|e| failed(*t, e))?;
+        if system.after_step(*t, y.as_slice()) {
+            stepper.restart();
+        }
         let dt = *t - was;
         let out = system
             .outputs(*t, y.as_slice())
