@@ -164,6 +164,8 @@ struct Summary {
     filter: Biquad,
     /// Each track's largest tension, N, and when, s (right, left).
     tension: [(f64, f64); 2],
+    /// Through an engine whose speed is a state: what it did.
+    engine: Option<EngineSeen>,
     first: Option<SpatialOutputs>,
     last: Option<SpatialOutputs>,
 }
@@ -177,6 +179,7 @@ impl Summary {
             lateral: 0.0,
             filter: Biquad::bilinear(low_pass, dt, 0.0),
             tension: [(f64::NEG_INFINITY, f64::NAN); 2],
+            engine: None,
             first: None,
             last: None,
         }
@@ -189,6 +192,22 @@ impl Summary {
                 *kept = (side.tensions.largest, t);
             }
         }
+        if let Some(side) = &out.engine {
+            let seen = self.engine.get_or_insert(EngineSeen {
+                power: (f64::NEG_INFINITY, f64::NAN),
+                speed: f64::NEG_INFINITY,
+                ranges: (f64::INFINITY, f64::NEG_INFINITY),
+                rows: 0,
+                locked: 0,
+            });
+            if side.engine_power > seen.power.0 {
+                seen.power = (side.engine_power, t);
+            }
+            seen.speed = seen.speed.max(side.engine_speed);
+            seen.ranges = (seen.ranges.0.min(out.gear), seen.ranges.1.max(out.gear));
+            seen.rows += 1;
+            seen.locked += usize::from(side.locked == Some(true));
+        }
         if turning {
             self.radius = Some(
                 self.radius
@@ -199,6 +218,19 @@ impl Summary {
         self.first.get_or_insert(*out);
         self.last = Some(*out);
     }
+}
+
+/// What an engine whose speed is a state did over the rows.
+struct EngineSeen {
+    /// Its largest power, W, and when, s.
+    power: (f64, f64),
+    /// Its fastest speed, rad/s.
+    speed: f64,
+    /// The lowest and highest range recorded (from 1, −1 in reverse).
+    ranges: (f64, f64),
+    /// The rows seen, and those with the lock-up clutch engaged.
+    rows: usize,
+    locked: usize,
 }
 
 fn drive<V: SpatialVehicleSystem>(
@@ -506,6 +538,17 @@ fn report(
             "the tracks' largest tension: right {:.1} kN (at {right_at:.2} s), left {:.1} kN (at {left_at:.2} s)",
             right / 1e3,
             left / 1e3
+        );
+    }
+    if let Some(e) = &summary.engine {
+        say!(
+            "the engine: at most {:.1} kW (at {:.2} s), {:.0} rpm at the fastest, ranges {} to {}, locked up in {:.0} % of the rows",
+            e.power.0 / 1e3,
+            e.power.1,
+            e.speed * 30.0 / std::f64::consts::PI,
+            e.ranges.0,
+            e.ranges.1,
+            100.0 * e.locked as f64 / e.rows as f64
         );
     }
     let bound = EnergyBalance::bound_for_tolerance(args.tolerance);

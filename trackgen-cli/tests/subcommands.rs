@@ -726,6 +726,12 @@ fn spatial_turns_on_the_engine_s_envelope() {
             // the range and the converter recorded at every row.
             let rated = named("rated ", " kW)");
             let engine = most("engine_power");
+            // The summary's engine line reads the same rows.
+            let summed = named("the engine: at most ", " kW");
+            assert!(
+                (summed - engine).abs() <= 0.05,
+                "{summed} against {engine} kW"
+            );
             println!("{driveline}: the engine's most {engine} kW of its rated {rated} kW");
             assert!(
                 engine <= rated + 0.05,
