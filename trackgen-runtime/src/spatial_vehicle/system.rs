@@ -365,6 +365,9 @@ where
     /// step, as the planar vehicle's run calls
     /// [`Simulated::after_step`](crate::system::Simulated::after_step).
     pub fn after_step(&mut self, t: f64, y: &[f64]) -> bool {
+        if self.engine().is_none() {
+            return false;
+        }
         let b = self.books_at();
         let (hull, ..) = self.states(y);
         let omega = self.dynamics.sprocket_speeds(&hull);
