@@ -106,7 +106,9 @@ impl Corner {
 
 /// `V` under `laws` driven at `speed` (m/s) round a circle of `radius`
 /// (m) to the left, steered through a steer unit of minimum steer
-/// `ratio` or else by its side drives, as the module describes; a
+/// `ratio` (on the settings' engine with its speed a state where it
+/// declares its inertia, the unit then the steer drive geared to it) or
+/// else by its side drives, as the module describes; a
 /// radius or a speed not finite and positive, or a ratio not finite and
 /// more than 1, is refused, and a run that fails is the event's error,
 /// with the speed and the time.
