@@ -99,7 +99,7 @@ pub(crate) fn driveline<V: SpatialVehicleSystem>(
             Differential::with_steer_unit(&side, target(), FullSteer::Ratio(ratio))
                 .ok_or_else(not_speed)?;
         let mut said = format!("a differential with a steer unit (minimum steer ratio {ratio})");
-        if let Some(engine) = engine_state::<V>(entry, args)? {
+        if let Some(engine) = engine_on_box::<V>(entry, args)? {
             if let (None, Some(drive), DifferentialSteer::Unit(unit)) = (
                 args.steer_ratio,
                 SteerDrive::of(&entry.engine()?, &entry.steer_ratios)
@@ -146,7 +146,7 @@ pub(crate) fn driveline<V: SpatialVehicleSystem>(
         "a differential steered by its brakes ({:.1} kN m each)",
         brakes.max_torque / 1e3
     );
-    let engine = engine_state::<V>(entry, args)?;
+    let engine = engine_on_box::<V>(entry, args)?;
     if let Some(engine) = &engine {
         said.push_str(&engine_said(engine));
     }
@@ -163,7 +163,7 @@ pub(crate) fn driveline<V: SpatialVehicleSystem>(
 /// differential's box: `None` without `--engine`, or for a vehicle whose
 /// powertrain declares no engine inertia (its envelope caps the drive
 /// then).
-fn engine_state<V: SpatialVehicleSystem>(
+fn engine_on_box<V: SpatialVehicleSystem>(
     entry: &Offered,
     args: &Asked,
 ) -> Result<Option<SpatialEngine>, String> {

@@ -223,8 +223,14 @@ where
     }
 
     fn dynamic_states(&self) -> usize {
-        // The engine's speed and twist follow the driveline's first three.
-        self.books_at() + if self.engine().is_some() { 5 } else { 3 }
+        // The engine's speed and twist follow the drive's own states.
+        use super::driveline::{DRIVELINE, ENGINE_SPEED};
+        self.driveline_at()
+            + if self.engine().is_some() {
+                DRIVELINE
+            } else {
+                ENGINE_SPEED
+            }
     }
 
     fn hull_rates(&self) -> [usize; 6] {

@@ -12,6 +12,7 @@
 
 use nalgebra::Vector3;
 
+use super::driveline::DRIVELINE;
 use super::{
     Differential, DifferentialSteer, Driveline, EngineEnvelope, HeadingHold, SideDrives,
     SpatialDynamics, SpatialLoads, TreeState,
@@ -34,7 +35,7 @@ pub struct Driver<'a> {
     /// The engine's full-load envelope capping the drive.
     pub envelope: Option<&'a EngineEnvelope>,
     /// The driveline's states.
-    pub states: [f64; 5],
+    pub states: [f64; DRIVELINE],
 }
 
 /// What the driveline does at a state: per side (right, left).
@@ -57,7 +58,7 @@ pub struct DriveState {
     pub braked: [f64; 2],
     /// The rates of the driveline's five states
     /// ([`SpatialSystem`](super::SpatialSystem)'s docs).
-    pub rates: [f64; 5],
+    pub rates: [f64; DRIVELINE],
     /// The engine's side where an engine whose speed is a state drives
     /// the differential ([`SpatialEngine`](super::SpatialEngine)): its
     /// speed, torque, range, converter and powers (the whole engine's).
@@ -148,7 +149,7 @@ where
         t: f64,
         (drives, envelope): (&SideDrives, Option<&EngineEnvelope>),
         difference: f64,
-        states: [f64; 5],
+        states: [f64; DRIVELINE],
         state: &mut DriveState,
     ) -> Result<(), SimulationError> {
         for (s, drive) in drives.each().into_iter().enumerate() {
@@ -185,7 +186,7 @@ where
         hull: &TreeState<DH>,
         (differential, envelope): (&Differential, Option<&EngineEnvelope>),
         asked: Option<f64>,
-        states: [f64; 5],
+        states: [f64; DRIVELINE],
         state: &mut DriveState,
     ) -> Result<(), SimulationError> {
         let radius = self.mean_rolling_radius();

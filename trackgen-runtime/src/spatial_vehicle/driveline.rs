@@ -63,6 +63,13 @@ use super::{SpatialEngine, SteeringError};
 use crate::laws::{ParameterError, Stiction, TangentialResponse};
 use crate::vehicle::{Drive, DriveError, Powertrain};
 
+/// How many states the driveline keeps ([`SpatialSystem`](super::SpatialSystem)'s docs): three of its
+/// drive and brakes or steer unit, then the engine's speed and twist.
+pub(super) const DRIVELINE: usize = 5;
+/// Where the engine's speed sits among the driveline's states (its
+/// twist next).
+pub(super) const ENGINE_SPEED: usize = 3;
+
 /// The two sprockets' drives.
 pub struct SideDrives {
     /// The right sprocket's.
@@ -511,7 +518,7 @@ impl Driveline {
     /// its brakes' elastic stages store, J (the engine's and its
     /// driveline's twist are behind the sprockets, where the books are
     /// kept).
-    pub fn stored(&self, states: [f64; 5]) -> f64 {
+    pub fn stored(&self, states: [f64; DRIVELINE]) -> f64 {
         match self {
             Driveline::Differential(Differential {
                 steer: DifferentialSteer::Brakes(b),

@@ -178,41 +178,16 @@ impl SpatialEngine {
 
     /// After an accepted step at time `t` with the box turning at `mean`
     /// (rad/s), the engine at `speed` (rad/s) and the driver of `drive`
-    /// asking what it asks: the gearbox shifted where its schedule says
-    /// (a shift under way ended when its time has come), then the
-    /// lock-up clutch engaged or released ([`Driveline::lockup_next`]).
-    /// In reverse the forward ranges wait where they are. Whether either
-    /// changed (the integrator must then restart).
+    /// asking what it asks: the gearbox shifted and the lock-up clutch
+    /// engaged or released as the planar sprocket's are
+    /// ([`Driveline::gearbox_next`], the box as the gearbox's output).
+    /// Whether either changed (the integrator must then restart).
     pub fn after_step(&mut self, t: f64, (mean, speed): (f64, f64), drive: &Drive) -> bool {
-        let reverse = drive.asks_reverse(t);
-        let driveline = match &self.powertrain {
-            Powertrain::Converter(d) => d,
-            _ => return false,
-        };
-        let mut changed = false;
-        if let (Some(engaged), Some(shift), false) =
-            (self.engaged, driveline.shift.as_ref(), reverse)
-        {
-            let input = driveline.reduction(engaged.range) * mean.abs();
-            if let Some(next) = shift.next(engaged, input, t) {
-                self.engaged = Some(next);
-                changed = true;
-            }
-        }
-        let range = match (reverse, driveline.reverse_range(), self.engaged) {
-            (true, Some(r), _) => Some(r),
-            (_, _, Some(engaged)) => Some(engaged.range),
-            _ => None,
-        };
-        if let Some(range) = range {
-            let shifting = self.engaged.is_some_and(|e| e.from.is_some());
-            let wt = driveline.reduction(range) * mean.abs();
-            let next = driveline.lockup_next(range, self.locked, speed, wt, shifting);
-            if next != self.locked {
-                self.locked = next;
-                changed = true;
-            }
-        }
-        changed
+        let now = (self.engaged, self.locked);
+        let next =
+            self.driveline()
+                .gearbox_next(t, now, (mean, Some(speed)), drive.asks_reverse(t));
+        (self.engaged, self.locked) = next;
+        next != now
     }
 }

@@ -28,6 +28,7 @@
 
 use nalgebra::{DVector, SVector, Vector2, Vector3};
 
+use super::driveline::{DRIVELINE, ENGINE_SPEED};
 use super::{
     DriveState, Driveline, DrivelineError, Driver, EngineEnvelope, GroundForce, HeadingHold,
     LoadScratch, MassCentre, SideDrives, SpatialDynamics, SteeringError, TreeState,
@@ -37,6 +38,13 @@ use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates};
 use crate::vehicle::Drive;
+
+/// Where the energy dissipated sits from the driveline's first state.
+const DISSIPATED: usize = DRIVELINE;
+/// Where the drive's work sits.
+const DRIVEN: usize = DRIVELINE + 1;
+/// Where the sides' books start.
+const SIDES: usize = DRIVELINE + 2;
 
 /// The spatial vehicle in time.
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
@@ -293,9 +301,11 @@ where
     /// begin.
     const TREES: usize = (2 * DH + 6) + (2 * DR + 6) + (2 * DL + 6);
 
-    /// Where the driveline's five states sit in the state, then the
-    /// energy dissipated and the drive's work, then the sides' books.
-    pub(super) fn books_at(&self) -> usize {
+    /// Where the driveline's [`DRIVELINE`] states start in the state,
+    /// the ground's deflections ended: then the energy dissipated
+    /// ([`DISSIPATED`] on), the drive's work ([`DRIVEN`]) and the sides'
+    /// books ([`SIDES`]).
+    pub(super) fn driveline_at(&self) -> usize {
         let [r, l] = self.dynamics.ground_states();
         Self::TREES + r + l
     }
@@ -303,7 +313,7 @@ where
     /// Each track's ground deflections in `y` (right, left).
     pub(super) fn deflections<'y>(&self, y: &'y [f64]) -> [&'y [f64]; 2] {
         let r = self.dynamics.ground_states()[0];
-        let (right, rest) = y[Self::TREES..self.books_at()].split_at(r);
+        let (right, rest) = y[Self::TREES..self.driveline_at()].split_at(r);
         [right, rest]
     }
 
@@ -335,9 +345,9 @@ where
     }
 
     /// The driveline's five states in `y` (the module's docs).
-    pub fn driveline_states(&self, y: &[f64]) -> [f64; 5] {
-        let b = self.books_at();
-        [y[b], y[b + 1], y[b + 2], y[b + 3], y[b + 4]]
+    pub fn driveline_states(&self, y: &[f64]) -> [f64; DRIVELINE] {
+        let b = self.driveline_at();
+        std::array::from_fn(|i| y[b + i])
     }
 
     /// The engine driving the differential, its speed a state, if one
@@ -353,7 +363,7 @@ where
     /// idle speed: where a run through it starts.
     pub fn start_engine(&self, y: &mut [f64]) {
         if let Some(engine) = self.engine() {
-            y[self.books_at() + 3] = engine.idle();
+            y[self.driveline_at() + ENGINE_SPEED] = engine.idle();
         }
     }
 
@@ -365,20 +375,17 @@ where
     /// step, as the planar vehicle's run calls
     /// [`Simulated::after_step`](crate::system::Simulated::after_step).
     pub fn after_step(&mut self, t: f64, y: &[f64]) -> bool {
-        if self.engine().is_none() {
+        let speed = y[self.driveline_at() + ENGINE_SPEED];
+        let Driveline::Differential(d) = &mut self.driveline else {
             return false;
-        }
-        let b = self.books_at();
-        let (hull, ..) = self.states(y);
-        let omega = self.dynamics.sprocket_speeds(&hull);
-        let mean = 0.5 * (omega[0] + omega[1]);
-        match &mut self.driveline {
-            Driveline::Differential(d) => match d.engine.as_mut() {
-                Some(engine) => engine.after_step(t, (mean, y[b + 3]), &d.drive),
-                None => false,
-            },
-            Driveline::Sides(_) => false,
-        }
+        };
+        let Some(engine) = d.engine.as_mut() else {
+            return false;
+        };
+        let omega = self
+            .dynamics
+            .sprocket_speeds(&tree_state::<DH>(&y[..2 * DH + 6]));
+        engine.after_step(t, (0.5 * (omega[0] + omega[1]), speed), &d.drive)
     }
 
     /// What the drives do at time `t` and state `y`.
@@ -451,13 +458,13 @@ where
             tree_state(&y[..h]),
             tree_state(&y[h..h + r]),
             tree_state(&y[h + r..h + r + l]),
-            y[self.books_at() + 5],
+            y[self.driveline_at() + DISSIPATED],
         )
     }
 
     /// Each side's books at `y` (right, left).
     pub fn side_books(&self, y: &[f64]) -> [SideBooks; 2] {
-        let at = self.books_at() + 7;
+        let at = self.driveline_at() + SIDES;
         let n = SideBooks::VALUES;
         [
             SideBooks::from_values(&y[at..at + n]),
@@ -481,11 +488,11 @@ where
                 + height(d.right.positions(&right.pose), d.right.masses())
                 + height(d.left.positions(&left.pose), d.left.masses()),
             stored: self
-                .loads_at(y, &mut vec![0.0; self.books_at() - Self::TREES])
+                .loads_at(y, &mut vec![0.0; self.driveline_at() - Self::TREES])
                 .potential
                 + self.driveline.stored(self.driveline_states(y)),
             dissipated,
-            driven: y[self.books_at() + 6],
+            driven: y[self.driveline_at() + DRIVEN],
         }
     }
 }
@@ -498,7 +505,7 @@ where
     L: TrackModel<DL>,
 {
     fn dimension(&self) -> usize {
-        self.books_at() + 7 + 2 * SideBooks::VALUES
+        self.driveline_at() + SIDES + 2 * SideBooks::VALUES
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -518,12 +525,13 @@ where
     }
 
     fn is_quadrature(&self, i: usize) -> bool {
-        i >= self.books_at() + 5 || self.is_passive(i)
+        i >= self.driveline_at() + DISSIPATED || self.is_passive(i)
     }
 
     fn is_passive(&self, i: usize) -> bool {
-        let b = self.books_at();
-        i >= b + 7 || (self.engine().is_none() && (b + 3..b + 5).contains(&i))
+        let b = self.driveline_at();
+        let engine = b + ENGINE_SPEED..b + DRIVELINE;
+        i >= b + SIDES || (self.engine().is_none() && engine.contains(&i))
     }
 }
 
@@ -546,7 +554,7 @@ where
         scratch: &mut LoadScratch,
     ) -> Result<[PlaneMotion; 3], SimulationError> {
         let (hull, right, left, _) = self.states(y);
-        let b = self.books_at();
+        let b = self.driveline_at();
         let states = (&hull, &right, &left);
         let motions = self.dynamics.plane_motions(states);
         let drive = self.dynamics.drive(t, &hull, self.driver(y))?;
@@ -580,10 +588,10 @@ where
         put_rates(&d.hull, &hull, &a_hull, &mut dy[..h]);
         put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
         put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
-        dy[b..b + 5].copy_from_slice(&drive.rates);
-        dy[b + 5] = loads.dissipation + drive.dissipation;
-        dy[b + 6] = drive.driven;
-        let sides = dy[b + 7..].chunks_exact_mut(SideBooks::VALUES);
+        dy[b..b + DRIVELINE].copy_from_slice(&drive.rates);
+        dy[b + DISSIPATED] = loads.dissipation + drive.dissipation;
+        dy[b + DRIVEN] = drive.driven;
+        let sides = dy[b + SIDES..].chunks_exact_mut(SideBooks::VALUES);
         for (s, (books, losses)) in sides.zip(&loads.losses).enumerate() {
             books.copy_from_slice(&[
                 drive.side_power(s),

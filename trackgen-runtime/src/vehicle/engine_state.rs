@@ -68,6 +68,7 @@
 //! driveline's shafts do.
 
 use super::converter::Driveline;
+use super::shift::Engaged;
 use super::tables::{engine_torque, lerp, solve_piece};
 
 /// The converter's coupling band, δ: the speed ratios below 1 over which
@@ -243,6 +244,43 @@ impl Driveline {
         } else {
             we > 0.0 && wt >= self.lockup_speed_ratio * we && self.locks(wt)
         }
+    }
+
+    /// The gearbox and the lock-up clutch after an accepted step at time
+    /// `t` (s), from `(engaged, locked)`, the gearbox's output (the
+    /// sprocket, or a differential's box) turning at `omega` (rad/s), the
+    /// engine at `engine_speed` (rad/s; `None` where its speed is no
+    /// state: no lock-up is decided), the driver asking `reverse`: a
+    /// scheduled gearbox shifted where its schedule says
+    /// ([`Shift::next`](super::Shift::next), its input at the engaged
+    /// range's reduction times `|ω|`; in reverse the forward ranges wait
+    /// where they are), then the clutch engaged or released in the range
+    /// now in use ([`lockup_next`](Self::lockup_next)). The one rule the
+    /// planar sprocket's and the spatial box's runs follow.
+    pub fn gearbox_next(
+        &self,
+        t: f64,
+        (engaged, locked): (Option<Engaged>, bool),
+        (omega, engine_speed): (f64, Option<f64>),
+        reverse: bool,
+    ) -> (Option<Engaged>, bool) {
+        let mut engaged = engaged;
+        if let (Some(now), Some(shift), false) = (engaged, self.shift.as_ref(), reverse)
+            && let Some(next) = shift.next(now, self.reduction(now.range) * omega.abs(), t)
+        {
+            engaged = Some(next);
+        }
+        let Some(we) = engine_speed else {
+            return (engaged, locked);
+        };
+        let range = match (reverse, self.reverse_range(), engaged) {
+            (true, Some(r), _) => r,
+            (_, _, Some(now)) => now.range,
+            _ => return (engaged, locked),
+        };
+        let shifting = engaged.is_some_and(|e| e.from.is_some());
+        let wt = self.reduction(range) * omega.abs();
+        (engaged, self.lockup_next(range, locked, we, wt, shifting))
     }
 
     /// The speed the governor brings the engine to for a turbine at `wt`

@@ -33,65 +33,28 @@ where
         }
     }
 
-    /// Shifts a scheduled gearbox where its schedule says at the end of
-    /// a step ([`Shift::next`](crate::vehicle::Shift::next): its input at the
-    /// sprocket's speed through the engaged range), or ends a shift whose
-    /// time has come. Whether it did (the integrator then restarts: the
-    /// cap changed).
-    pub(super) fn shift_gears(&mut self, t: f64, y: &[f64]) -> bool {
+    /// Shifts a scheduled gearbox and engages or releases an engine's
+    /// lock-up clutch (an engine whose speed is a state) at the end of a
+    /// step, as [`Driveline::gearbox_next`](crate::vehicle::Driveline::gearbox_next)
+    /// says with the sprocket as the gearbox's output. Whether either
+    /// changed (the integrator then restarts: the cap or the law changed).
+    pub(super) fn shift_and_lock(&mut self, t: f64, y: &[f64]) -> bool {
         let (Some(sprocket), Some(Powertrain::Converter(driveline))) =
             (self.sprocket.as_mut(), self.config.powertrain.as_ref())
         else {
             return false;
         };
-        let (Some(engaged), Some(shift)) = (sprocket.engaged, driveline.shift.as_ref()) else {
-            return false;
-        };
-        if self.config.drive.asks_reverse(t) {
-            // In reverse the forward ranges wait where they are.
-            return false;
-        }
         let omega = sprocket.omega_of(&y[self.layout.chassis_rates.clone()]);
-        let input = driveline.reduction(engaged.range) * omega.abs();
-        match shift.next(engaged, input, t) {
-            Some(next) => {
-                sprocket.engaged = Some(next);
-                true
-            }
-            None => false,
-        }
-    }
-
-    /// Engages or releases an engine's lock-up clutch at the end of a
-    /// step ([`Driveline::lockup_next`](crate::vehicle::Driveline::lockup_next), an
-    /// engine whose speed is a state). Whether it did (the integrator then
-    /// restarts: the law changed).
-    pub(super) fn lock_up(&mut self, t: f64, y: &[f64]) -> bool {
-        let (Some(sprocket), Some(Powertrain::Converter(driveline))) =
-            (self.sprocket, self.config.powertrain.as_ref())
-        else {
-            return false;
-        };
-        let Some(engine) = self.layout.engine else {
-            return false;
-        };
-        let omega = sprocket.omega_of(&y[self.layout.chassis_rates.clone()]);
-        let (_, gearbox) = sprocket.gearbox(&self.config, t);
-        let range = match (gearbox, driveline.reverse_range()) {
-            ((_, true), Some(reverse)) => reverse,
-            ((Some(engaged), _), _) => engaged.range,
-            _ => return false,
-        };
-        let shifting = gearbox.0.is_some_and(|e| e.from.is_some());
-        let wt = driveline.reduction(range) * omega.abs();
-        let next = driveline.lockup_next(range, sprocket.locked, y[engine], wt, shifting);
-        if next == sprocket.locked {
-            return false;
-        }
-        if let Some(s) = self.sprocket.as_mut() {
-            s.locked = next;
-        }
-        true
+        let engine_speed = self.layout.engine.map(|i| y[i]);
+        let next = driveline.gearbox_next(
+            t,
+            (sprocket.engaged, sprocket.locked),
+            (omega, engine_speed),
+            self.config.drive.asks_reverse(t),
+        );
+        let changed = next != (sprocket.engaged, sprocket.locked);
+        (sprocket.engaged, sprocket.locked) = next;
+        changed
     }
 
     /// After an accepted step on soft soil: the rut pressed wherever a

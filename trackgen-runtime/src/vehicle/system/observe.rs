@@ -158,8 +158,7 @@ impl<T: TrackModel<DT>, const DT: usize, C: ChassisModel<DC>, const DC: usize> S
         let mut restart = self.bodies.after_step(t, &mut y[..nb], switched)?;
         restart |= self.press_soil(t, y)?;
         restart |= self.apply_brake(t, y);
-        restart |= self.shift_gears(t, y);
-        restart |= self.lock_up(t, y);
+        restart |= self.shift_and_lock(t, y);
         Ok(restart)
     }
 }
