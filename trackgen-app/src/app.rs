@@ -88,6 +88,7 @@ impl Entry {
                 turn_runs: None,
                 spatial_events: None,
                 spatial_modes: None,
+                spatial_fmu: None,
             },
             dispatch: dispatch::<V>,
             spatial: None,
@@ -103,6 +104,7 @@ impl Entry {
         };
         entry.offered.turn_runs = Some(crate::turn_runs::run_turns::<V>);
         entry.offered.spatial_modes = Some(crate::spatial_modes::modes_at_rest::<V>);
+        entry.offered.spatial_fmu = Some(crate::fmu::pack::<trackgen_fmu::Spatial<V>>);
         entry.offered.spatial_events = Some(SpatialEvents {
             side_slope: |settings| {
                 trackgen::mobility::side_slope::steepest::<V>(settings, V::declared_laws())

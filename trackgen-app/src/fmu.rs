@@ -1,11 +1,12 @@
 //! The `fmu` subcommand: a vehicle's built FMU library packed into its
-//! FMI 3.0 and 2.0 archives.
+//! FMI 3.0 and 2.0 archives, the planar model's or (`--spatial`) the 3-D
+//! one's.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use trackgen::vehicle::Vehicle;
-use trackgen_fmu::{Version, write_fmu};
+use trackgen_fmu::{Plant, Version, write_fmu};
 
 use crate::offered::Offered;
 
@@ -14,7 +15,9 @@ use crate::offered::Offered;
 ///
 /// The library is the `cdylib` of a crate whose `lib.rs` calls
 /// `trackgen_fmu::export_fmu!(Vehicle)` for this same vehicle (`cargo
-/// build --release` writes it as `target/release/lib<crate>.so`).
+/// build --release` writes it as `target/release/lib<crate>.so`), or,
+/// with `--spatial`, `trackgen_fmu::export_spatial_fmu!(Vehicle)`: its
+/// archives are `<Name>Spatial.fmu` and `<Name>Spatial-fmi2.fmu`.
 #[derive(clap::Args, Debug)]
 pub struct FmuArgs {
     /// The vehicle (the application's first by default).
@@ -23,6 +26,10 @@ pub struct FmuArgs {
     /// The built FMU library (`lib<crate>.so`).
     #[arg(long, value_name = "FILE.so")]
     pub library: PathBuf,
+    /// The 3-D model (both tracks and the hull; a vehicle declared with a
+    /// `tracks` block): the library calls `export_spatial_fmu!`.
+    #[arg(long)]
+    pub spatial: bool,
     /// Output folder (created if missing); default `out/fmu`.
     #[arg(long, value_name = "DIR", value_parser = crate::cli::folder)]
     pub out: Option<PathBuf>,
@@ -34,9 +41,18 @@ const EXPORTED: &[u8] = b"fmi3InstantiateCoSimulation";
 
 /// `fmu` for the vehicle `V`: exits 1, saying why, when the library is
 /// missing or exports no FMI functions, or an archive cannot be written.
-pub fn main<V: Vehicle>(_entry: &Offered, args: &FmuArgs) -> ExitCode {
+pub fn main<V: Vehicle>(entry: &Offered, args: &FmuArgs) -> ExitCode {
     let out = args.out.clone().unwrap_or_else(|| PathBuf::from("out/fmu"));
-    match pack::<V>(&args.library, &out) {
+    let packed = match (args.spatial, entry.spatial_fmu) {
+        (false, _) => pack::<V>(&args.library, &out),
+        (true, Some(pack_spatial)) => pack_spatial(&args.library, &out),
+        (true, None) => Err(format!(
+            "{} has no 3-D model: declare it with a `tracks` block and offer it with \
+             `Entry::of_spatial`",
+            V::NAME
+        )),
+    };
+    match packed {
         Ok(paths) => {
             for p in paths {
                 println!("wrote {}", p.display());
@@ -50,19 +66,20 @@ pub fn main<V: Vehicle>(_entry: &Offered, args: &FmuArgs) -> ExitCode {
     }
 }
 
-/// Both archives, after checking that `library` is an FMU library.
-fn pack<V: Vehicle>(library: &Path, out: &Path) -> Result<Vec<PathBuf>, String> {
+/// Both archives of the model `P`, after checking that `library` is an
+/// FMU library.
+pub(crate) fn pack<P: Plant>(library: &Path, out: &Path) -> Result<Vec<PathBuf>, String> {
     let bytes = std::fs::read(library).map_err(|e| format!("{}: {e}", library.display()))?;
     if !bytes.windows(EXPORTED.len()).any(|w| w == EXPORTED) {
         return Err(format!(
             "{} exports no FMI functions: build the `cdylib` of a crate whose lib.rs calls \
-             `trackgen_fmu::export_fmu!({})`",
+             `trackgen_fmu::export_fmu!` (or, for {}, `export_spatial_fmu!`) for the vehicle",
             library.display(),
-            V::NAME
+            P::name()
         ));
     }
     [Version::Fmi3, Version::Fmi2]
         .into_iter()
-        .map(|version| write_fmu::<V>(library, out, version).map_err(|e| e.to_string()))
+        .map(|version| write_fmu::<P>(library, out, version).map_err(|e| e.to_string()))
         .collect()
 }

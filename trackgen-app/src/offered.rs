@@ -35,7 +35,16 @@ pub struct Offered {
     /// The spatial model's modes at rest, for a vehicle declared with
     /// both tracks: what `modes --spatial` finds.
     pub spatial_modes: Option<fn() -> Result<SpatialModes, String>>,
+    /// Packs the spatial model's FMU library (`export_spatial_fmu!`) into
+    /// its archives, for a vehicle declared with both tracks: what `fmu
+    /// --spatial` does (the library, the folder; the archives written).
+    pub spatial_fmu: Option<SpatialFmu>,
 }
+
+/// Packs a spatial FMU library (the library, the folder): the archives
+/// written.
+pub type SpatialFmu =
+    fn(&std::path::Path, &std::path::Path) -> Result<Vec<std::path::PathBuf>, String>;
 
 /// The spatial vehicle's modes at rest, and the largest acceleration
 /// left where it settled (m/s², rad/s²).

@@ -18,16 +18,16 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use trackgen::integrate::{Integrator, OdeSystem, Stats, Stepper};
-use trackgen::nalgebra::{DVector, Vector2};
+use trackgen::integrate::{Integrator, Stats};
+use trackgen::nalgebra::DVector;
 use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
-use trackgen::simulate::{CsvSink, EnergyBalance, Sink, Tee, Thinned};
+use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    EngineEnvelope, HeadingHold, SideBooks, SpatialEnergy, SpatialOutputs, SpatialSimulated,
-    SpatialVehicleSystem,
+    EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialOutputs,
+    SpatialSimulated, SpatialVehicleSystem, on_course, spatial_row,
 };
-use trackgen::terrain::field::{FieldShape, HeightField};
+use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::speed_ramp;
 use trackgen_arrow::ArrowSink;
 
@@ -36,7 +36,7 @@ use crate::console::say;
 use crate::offered::Offered;
 use crate::spatial_driveline::{Asked, DrivelineKind, driveline};
 use crate::spatial_frames::Frames;
-use crate::spatial_rows::{COLUMNS, record, shoe_columns, shoe_forces};
+use crate::spatial_rows::{shoe_columns, shoe_forces};
 
 /// Drive the vehicle in 3-D: both tracks and the hull, settled, driven
 /// to speed over the course, then turned by a driver holding a heading.
@@ -239,20 +239,9 @@ fn drive<V: SpatialVehicleSystem>(
 ) -> Result<(), Box<dyn Error>> {
     let course = args.course.spec(args.speed, args.duration);
     let terrain = course.terrain()?;
-    let field = HeightField {
-        base: FieldShape::Profile(terrain.clone()),
-        ..HeightField::level()
-    }
-    .tilted(Vector2::new(0.0, args.side_slope));
-    field.check()?;
     let layout = V::layout();
     let assembling = Instant::now();
-    let ground = field.clone();
-    let mut system = V::spatial(V::declared_laws(), field)?;
-    let mut y = system.assembled(&terrain)?;
-    if args.side_slope != 0.0 {
-        y = system.rolled(y.as_slice(), args.side_slope.atan());
-    }
+    let (mut system, mut y, ground) = on_course::<V>(&terrain, args.side_slope)?;
     let assembly = assembling.elapsed().as_secs_f64();
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
@@ -311,13 +300,18 @@ fn drive<V: SpatialVehicleSystem>(
     let mut csv = CsvSink::create(dir.join("spatial.csv"))?;
     let mut thinned = Thinned::new(PICTURE_ROWS);
     let mut sink = Tee::new().and(&mut csv).and(&mut thinned);
-    sink.begin(&COLUMNS.map(String::from))?;
+    sink.begin(&SPATIAL_COLUMNS.map(String::from))?;
     let mut arrow = ArrowSink::create(dir.join("spatial.arrow"))?;
-    let mut wide: Vec<String> = COLUMNS.map(String::from).to_vec();
+    let mut wide: Vec<String> = SPATIAL_COLUMNS.map(String::from).to_vec();
     wide.extend(shoe_columns(shoes));
     arrow.begin(&wide)?;
     let mut wide_row = Vec::with_capacity(wide.len());
-    let mut stepper = Integrator::bs23(args.tolerance).stepper(system.dimension());
+    let mut march = March::from_state(
+        Integrator::bs23(args.tolerance),
+        y.clone(),
+        0.0,
+        args.duration,
+    )?;
     let before = Books::at(&system, y.as_slice());
     let bar = ProgressBar::new((args.duration * 1000.0) as u64);
     bar.set_style(ProgressStyle::with_template(
@@ -326,10 +320,9 @@ fn drive<V: SpatialVehicleSystem>(
     let mut summary = Summary::new(args.output_every);
     let mut frames = Frames::new::<V>(args.duration);
     let started = Instant::now();
-    let mut t = 0.0;
     let mut row = 0u64;
     let mut rows = RowTimes::new(args.output_every, args.duration);
-    let mut due = vec![(0.0, y.clone())];
+    let mut due = vec![(0.0, y)];
     let outcome = 'run: loop {
         for (at, state) in due.drain(..) {
             let out = match system.outputs(at, state.as_slice()) {
@@ -339,7 +332,7 @@ fn drive<V: SpatialVehicleSystem>(
             let turning = at >= args.turn_at && at <= args.turn_at + args.turn_time;
             summary.add(at, &out, turning && angle != 0.0);
             frames.offer(&system, at, state.as_slice());
-            let values = record(&out);
+            let values = spatial_row(&out);
             sink.row(at, &values)?;
             wide_row.clear();
             wide_row.extend_from_slice(&values);
@@ -351,27 +344,28 @@ fn drive<V: SpatialVehicleSystem>(
             arrow.row(at, &wide_row)?;
             row += 1;
         }
-        if t >= args.duration - rows.eps {
+        if march.finished() {
             break Ok(());
         }
-        if let Err(e) = stepper.step(&mut system, &mut t, &mut y, args.duration) {
+        if let Err(e) = march.step(&mut system) {
             break Err(e);
         }
-        rows.within(&*stepper, (t, &y), &mut due);
+        rows.within(&march, &mut due);
         // A shift or the lock-up changes the right-hand side: the rows
         // within the step are read first, from the step as it was taken.
-        if system.after_step(t, y.as_slice()) {
-            stepper.restart();
+        if system.after_step(march.time(), march.state().as_slice()) {
+            march.restart();
         }
-        bar.set_position((t * 1000.0) as u64);
+        bar.set_position((march.time() * 1000.0) as u64);
     };
     bar.finish_and_clear();
     let wall = started.elapsed().as_secs_f64();
     sink.finish()?;
     drop(sink);
     arrow.finish()?;
-    let books = Books::at(&system, y.as_slice()).since(&before);
-    report(&summary, (t, wall), &stepper.stats(), &books, args);
+    let t = march.time();
+    let books = Books::at(&system, march.state().as_slice()).since(&before);
+    report(&summary, (t, wall), &march.stats(), &books, args);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
     written.extend(pictures(&dir, &thinned, (&frames, &ground), V::NAME)?);
     say!(
@@ -415,9 +409,6 @@ fn pictures(
 struct RowTimes {
     every: f64,
     end: f64,
-    /// Two times this close are one (s): a row within it of a step's end
-    /// is that step's state.
-    eps: f64,
     /// The rows due so far (the start's first).
     queued: u64,
 }
@@ -428,7 +419,6 @@ impl RowTimes {
         RowTimes {
             every,
             end,
-            eps: 1e-12 * end.max(1.0),
             queued: 1,
         }
     }
@@ -437,22 +427,14 @@ impl RowTimes {
         (k as f64 * self.every).min(self.end)
     }
 
-    /// The rows within the step `stepper` just took to `(t, y)`, each
-    /// with its state, onto `due`.
-    fn within(
-        &mut self,
-        stepper: &dyn Stepper,
-        (t, y): (f64, &DVector<f64>),
-        due: &mut Vec<(f64, DVector<f64>)>,
-    ) {
-        while self.time(self.queued) <= t + self.eps && self.time(self.queued - 1) < self.end {
+    /// The rows within the step `march` just took, each with its state
+    /// (by dense output, the step's end's own within `march`'s
+    /// [`eps`](March::eps)), onto `due`.
+    fn within(&mut self, march: &March, due: &mut Vec<(f64, DVector<f64>)>) {
+        let t = march.time();
+        while self.time(self.queued) <= t + march.eps() && self.time(self.queued - 1) < self.end {
             let at = self.time(self.queued).min(t);
-            let state = if t - at <= self.eps {
-                y.clone()
-            } else {
-                stepper.interpolate(at)
-            };
-            due.push((at, state));
+            due.push((at, march.state_at(at)));
             self.queued += 1;
         }
     }

@@ -5,10 +5,11 @@
 use std::ffi::{CStr, CString, c_char, c_int, c_void};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use trackgen::vehicle::{Powertrain, Vehicle};
+use trackgen::vehicle::Powertrain;
 
 use crate::error::FmuError;
 use crate::instance::Instance;
+use crate::plant::Plant;
 
 /// A status, as both versions number them: OK 0, warning 1, discard 2,
 /// error 3, fatal 4.
@@ -58,9 +59,9 @@ pub enum Logger {
 }
 
 /// An instance behind the C API's opaque pointer.
-pub struct Component<V: Vehicle> {
+pub struct Component<P: Plant> {
     /// The instance.
-    pub instance: Instance<V>,
+    pub instance: Instance<P>,
     name: CString,
     logger: Logger,
     /// Strings handed to the master, alive until the next call that reads
@@ -68,19 +69,20 @@ pub struct Component<V: Vehicle> {
     pub strings: Vec<CString>,
 }
 
-impl<V: Vehicle> Component<V> {
+impl<P: Plant> Component<P> {
     /// A new instance named `name` logging to `logger`, with the engine
     /// the library was exported with, else the vehicle's declared one
-    /// ([`Vehicle::powertrain`]), if any; `None` (after logging why) if
+    /// ([`Plant::declared_powertrain`]), if any; `None` (after logging why) if
     /// the vehicle cannot be built.
     pub fn create(
         name: &str,
         logger: Logger,
         engine: Option<fn() -> Powertrain>,
-    ) -> Option<Box<Component<V>>> {
+    ) -> Option<Box<Component<P>>> {
         let name = CString::new(name.replace('\0', " ")).unwrap_or_default();
-        let created =
-            catch_unwind(|| Instance::<V>::with_engine(engine.map(|f| f()).or_else(V::powertrain)));
+        let created = catch_unwind(|| {
+            Instance::<P>::with_engine(engine.map(|f| f()).or_else(P::declared_powertrain))
+        });
         match created {
             Ok(Ok(instance)) => Some(Box::new(Component {
                 instance,
@@ -155,15 +157,15 @@ fn panic_text(panic: &(dyn std::any::Any + Send)) -> String {
 /// # Safety
 /// `pointer` is null or a pointer this library returned from an
 /// instantiate function and has not freed.
-pub unsafe fn with<V: Vehicle>(
+pub unsafe fn with<P: Plant>(
     pointer: *mut c_void,
-    call: impl FnOnce(&mut Component<V>) -> Result<Status, FmuError>,
+    call: impl FnOnce(&mut Component<P>) -> Result<Status, FmuError>,
 ) -> Status {
     if pointer.is_null() {
         return Status::Error;
     }
     // SAFETY: by the caller's contract.
-    let component = unsafe { &mut *(pointer as *mut Component<V>) };
+    let component = unsafe { &mut *(pointer as *mut Component<P>) };
     let logger = (component.logger, component.name.clone());
     match catch_unwind(AssertUnwindSafe(|| call(component))) {
         Ok(Ok(status)) => status,
@@ -187,10 +189,10 @@ pub unsafe fn with<V: Vehicle>(
 ///
 /// # Safety
 /// As [`with`]; the pointer is not used again.
-pub unsafe fn free<V: Vehicle>(pointer: *mut c_void) {
+pub unsafe fn free<P: Plant>(pointer: *mut c_void) {
     if !pointer.is_null() {
         // SAFETY: by the caller's contract, a box this library leaked.
-        let component = unsafe { Box::from_raw(pointer as *mut Component<V>) };
+        let component = unsafe { Box::from_raw(pointer as *mut Component<P>) };
         let _ = catch_unwind(AssertUnwindSafe(move || drop(component)));
     }
 }

@@ -3,19 +3,14 @@
 
 use std::fmt::Write;
 
-use trackgen::vehicle::Vehicle;
-
+use crate::plant::Plant;
 use crate::variables::{Causality, Kind, Start, Variable};
-
-/// The main job's run, as the default experiment: 8 s, rows every 10 ms.
-const DEFAULT_STOP: f64 = 8.0;
-const DEFAULT_STEP: f64 = 0.01;
 
 /// The instantiation token (FMI 3.0) and GUID (FMI 2.0): the vehicle's
 /// name and a 64-bit FNV-1a hash of every variable's name, type and
 /// causality, so a library and a description of different vehicles or
 /// versions refuse each other.
-pub fn token<V: Vehicle>(table: &[Variable]) -> String {
+pub fn token<P: Plant>(table: &[Variable]) -> String {
     let mut hash: u64 = 0xcbf2_9ce4_8422_2325;
     let mut eat = |bytes: &[u8]| {
         for b in bytes {
@@ -23,18 +18,18 @@ pub fn token<V: Vehicle>(table: &[Variable]) -> String {
             hash = hash.wrapping_mul(0x0100_0000_01b3);
         }
     };
-    eat(V::NAME.as_bytes());
+    eat(P::name().as_bytes());
     for v in table {
         eat(v.name.as_bytes());
         eat(&[v.kind as u8, v.causality as u8, 0xff]);
     }
-    format!("{{trackgen-{}-{hash:016x}}}", identifier::<V>())
+    format!("{{trackgen-{}-{hash:016x}}}", identifier::<P>())
 }
 
-/// The model identifier: the vehicle's name with every character that is
+/// The model identifier: the model's name with every character that is
 /// not a letter, a digit or `_` made `_` (it names the shared library).
-pub fn identifier<V: Vehicle>() -> String {
-    V::NAME
+pub fn identifier<P: Plant>() -> String {
+    P::name()
         .chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() || c == '_' {
@@ -47,20 +42,20 @@ pub fn identifier<V: Vehicle>() -> String {
 }
 
 /// FMI 3.0's model description.
-pub fn fmi3<V: Vehicle>(table: &[Variable]) -> String {
-    let mut x = header::<V>(
+pub fn fmi3<P: Plant>(table: &[Variable]) -> String {
+    let mut x = header::<P>(
         "3.0",
-        &format!("instantiationToken=\"{}\"", token::<V>(table)),
+        &format!("instantiationToken=\"{}\"", token::<P>(table)),
     );
     let _ = writeln!(
         x,
         "  <CoSimulation modelIdentifier=\"{}\" canHandleVariableCommunicationStepSize=\"true\" \
          canReturnEarlyAfterIntermediateUpdate=\"false\" hasEventMode=\"false\" \
          canGetAndSetFMUState=\"false\" canSerializeFMUState=\"false\"/>",
-        identifier::<V>()
+        identifier::<P>()
     );
     units(&mut x, table);
-    experiment(&mut x);
+    experiment::<P>(&mut x);
     x.push_str("  <ModelVariables>\n");
     for v in table {
         let tag = match v.kind {
@@ -101,12 +96,12 @@ pub fn fmi3<V: Vehicle>(table: &[Variable]) -> String {
 }
 
 /// FMI 2.0's model description.
-pub fn fmi2<V: Vehicle>(table: &[Variable]) -> String {
-    let mut x = header::<V>(
+pub fn fmi2<P: Plant>(table: &[Variable]) -> String {
+    let mut x = header::<P>(
         "2.0",
         &format!(
             "guid=\"{}\" numberOfEventIndicators=\"0\"",
-            token::<V>(table)
+            token::<P>(table)
         ),
     );
     let _ = writeln!(
@@ -114,10 +109,10 @@ pub fn fmi2<V: Vehicle>(table: &[Variable]) -> String {
         "  <CoSimulation modelIdentifier=\"{}\" canHandleVariableCommunicationStepSize=\"true\" \
          canNotUseMemoryManagementFunctions=\"true\" canGetAndSetFMUstate=\"false\" \
          canSerializeFMUstate=\"false\"/>",
-        identifier::<V>()
+        identifier::<P>()
     );
     units(&mut x, table);
-    experiment(&mut x);
+    experiment::<P>(&mut x);
     x.push_str("  <ModelVariables>\n");
     for v in table {
         let _ = writeln!(x, "    <ScalarVariable {}>", attributes(v));
@@ -158,14 +153,15 @@ pub fn fmi2<V: Vehicle>(table: &[Variable]) -> String {
     x
 }
 
-fn header<V: Vehicle>(version: &str, identity: &str) -> String {
+fn header<P: Plant>(version: &str, identity: &str) -> String {
     format!(
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
          <fmiModelDescription fmiVersion=\"{version}\" modelName=\"{}\" {identity} \
-         description=\"{} (one side, pitch plane): a tracked vehicle compiled by trackgen\" \
+         description=\"{} ({}): a tracked vehicle compiled by trackgen\" \
          generationTool=\"trackgen {}\" variableNamingConvention=\"flat\">\n",
-        escape(V::NAME),
-        escape(V::NAME),
+        escape(&P::name()),
+        escape(&P::name()),
+        P::summary(),
         env!("CARGO_PKG_VERSION"),
     )
 }
@@ -194,21 +190,23 @@ fn outputs(table: &[Variable]) -> impl Iterator<Item = &Variable> {
     table.iter().filter(|v| v.causality == Causality::Output)
 }
 
-fn experiment(x: &mut String) {
+fn experiment<P: Plant>(x: &mut String) {
+    let (stop, step) = P::default_experiment();
     let _ = writeln!(
         x,
-        "  <DefaultExperiment startTime=\"0.0\" stopTime=\"{DEFAULT_STOP:?}\" stepSize=\"{DEFAULT_STEP:?}\"/>"
+        "  <DefaultExperiment startTime=\"0.0\" stopTime=\"{stop:?}\" stepSize=\"{step:?}\"/>"
     );
 }
 
 /// The SI units the variables use, by their base units' exponents.
 fn units(x: &mut String, table: &[Variable]) {
-    const UNITS: [(&str, &str); 14] = [
+    const UNITS: [(&str, &str); 15] = [
         ("m", "m=\"1\""),
         ("s", "s=\"1\""),
         ("m/s", "m=\"1\" s=\"-1\""),
         ("m/s2", "m=\"1\" s=\"-2\""),
         ("rad", "rad=\"1\""),
+        ("deg", "rad=\"1\" factor=\"0.017453292519943295\""),
         ("rad/s", "rad=\"1\" s=\"-1\""),
         ("N", "kg=\"1\" m=\"1\" s=\"-2\""),
         ("N.s", "kg=\"1\" m=\"1\" s=\"-1\""),

@@ -4,11 +4,12 @@
 
 use std::ffi::{c_char, c_int, c_void};
 
-use trackgen::vehicle::{Powertrain, Vehicle};
+use trackgen::vehicle::Powertrain;
 
 use crate::component::{self, Component, Fmi2Logger, Logger, Status};
 use crate::error::FmuError;
 use crate::instance::Mode;
+use crate::plant::Plant;
 
 /// `fmi2GetVersion`.
 pub const VERSION: &std::ffi::CStr = c"2.0";
@@ -36,7 +37,7 @@ pub struct Callbacks {
 /// # Safety
 /// The strings are null or NUL-terminated; `callbacks` is null or valid
 /// for the instance's lifetime.
-pub unsafe fn instantiate<V: Vehicle>(
+pub unsafe fn instantiate<P: Plant>(
     name: *const c_char,
     kind: c_int,
     guid: *const c_char,
@@ -49,7 +50,7 @@ pub unsafe fn instantiate<V: Vehicle>(
         .unwrap_or(Logger::None);
     // SAFETY: as above.
     let name = unsafe { component::text(name) }.unwrap_or("trackgen");
-    let Some(component) = Component::<V>::create(name, logger, engine) else {
+    let Some(component) = Component::<P>::create(name, logger, engine) else {
         return std::ptr::null_mut();
     };
     if kind != 1 {
@@ -61,7 +62,7 @@ pub unsafe fn instantiate<V: Vehicle>(
     }
     // SAFETY: as above.
     let guid = unsafe { component::text(guid) }.unwrap_or("");
-    let expected = crate::description::token::<V>(component.instance.variables());
+    let expected = crate::description::token::<P>(component.instance.variables());
     if guid != expected {
         component.log(
             Status::Error,
@@ -77,42 +78,38 @@ pub unsafe fn instantiate<V: Vehicle>(
 /// # Safety
 /// `instance` is null or this library's and alive; the arrays hold `n`
 /// elements.
-pub unsafe fn get_string<V: Vehicle>(
+pub unsafe fn get_string<P: Plant>(
     instance: *mut c_void,
     refs: *const u32,
     n: usize,
     values: *mut *const c_char,
 ) -> Status {
     // SAFETY: by the caller's contract.
-    unsafe { crate::fmi3::get_string::<V>(instance, refs, n, values, n) }
+    unsafe { crate::fmi3::get_string::<P>(instance, refs, n, values, n) }
 }
 
 /// `fmi2SetString`.
 ///
 /// # Safety
 /// As [`get_string`].
-pub unsafe fn set_string<V: Vehicle>(
+pub unsafe fn set_string<P: Plant>(
     instance: *mut c_void,
     refs: *const u32,
     n: usize,
     values: *const *const c_char,
 ) -> Status {
     // SAFETY: by the caller's contract.
-    unsafe { crate::fmi3::set_string::<V>(instance, refs, n, values, n) }
+    unsafe { crate::fmi3::set_string::<P>(instance, refs, n, values, n) }
 }
 
 /// `fmi2GetRealStatus`: `fmi2LastSuccessfulTime` (2) is the point reached.
 ///
 /// # Safety
 /// As [`get_string`]; `value` is null or writable.
-pub unsafe fn real_status<V: Vehicle>(
-    instance: *mut c_void,
-    kind: c_int,
-    value: *mut f64,
-) -> Status {
+pub unsafe fn real_status<P: Plant>(instance: *mut c_void, kind: c_int, value: *mut f64) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c: &mut Component<V>| {
+        component::with::<P>(instance, |c: &mut Component<P>| {
             if kind != 2 || value.is_null() {
                 return Err(FmuError::State {
                     call: "fmi2GetRealStatus",
@@ -129,14 +126,14 @@ pub unsafe fn real_status<V: Vehicle>(
 ///
 /// # Safety
 /// As [`real_status`].
-pub unsafe fn boolean_status<V: Vehicle>(
+pub unsafe fn boolean_status<P: Plant>(
     instance: *mut c_void,
     kind: c_int,
     value: *mut c_int,
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c: &mut Component<V>| {
+        component::with::<P>(instance, |c: &mut Component<P>| {
             if kind != 3 || value.is_null() {
                 return Err(FmuError::State {
                     call: "fmi2GetBooleanStatus",

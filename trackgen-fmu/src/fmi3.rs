@@ -5,11 +5,12 @@
 
 use std::ffi::{CString, c_char, c_void};
 
-use trackgen::vehicle::{Powertrain, Vehicle};
+use trackgen::vehicle::Powertrain;
 
 use crate::component::{self, Component, Fmi3Logger, Logger, Status};
 use crate::error::FmuError;
 use crate::instance::Instance;
+use crate::plant::Plant;
 
 /// `fmi3GetVersion`.
 pub const VERSION: &std::ffi::CStr = c"3.0";
@@ -21,7 +22,7 @@ pub const VERSION: &std::ffi::CStr = c"3.0";
 /// # Safety
 /// The strings are null or NUL-terminated; the logger, if any, is callable
 /// with `env` for the instance's lifetime.
-pub unsafe fn instantiate<V: Vehicle>(
+pub unsafe fn instantiate<P: Plant>(
     name: *const c_char,
     token: *const c_char,
     env: *mut c_void,
@@ -31,12 +32,12 @@ pub unsafe fn instantiate<V: Vehicle>(
     let logger = logger.map_or(Logger::None, |f| Logger::Fmi3(f, env));
     // SAFETY: by the caller's contract.
     let name = unsafe { component::text(name) }.unwrap_or("trackgen");
-    let Some(component) = Component::<V>::create(name, logger, engine) else {
+    let Some(component) = Component::<P>::create(name, logger, engine) else {
         return std::ptr::null_mut();
     };
     // SAFETY: as above.
     let token = unsafe { component::text(token) }.unwrap_or("");
-    let expected = crate::description::token::<V>(component.instance.variables());
+    let expected = crate::description::token::<P>(component.instance.variables());
     if !token.is_empty() && token != expected {
         component.log(
             Status::Error,
@@ -51,7 +52,7 @@ pub unsafe fn instantiate<V: Vehicle>(
 ///
 /// # Safety
 /// `instance` is null or this library's and alive.
-pub unsafe fn enter_initialization<V: Vehicle>(
+pub unsafe fn enter_initialization<P: Plant>(
     instance: *mut c_void,
     tolerance_defined: bool,
     tolerance: f64,
@@ -61,7 +62,7 @@ pub unsafe fn enter_initialization<V: Vehicle>(
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c| {
+        component::with::<P>(instance, |c| {
             c.instance.setup_experiment(
                 tolerance_defined.then_some(tolerance),
                 start,
@@ -79,7 +80,7 @@ pub unsafe fn enter_initialization<V: Vehicle>(
 /// # Safety
 /// As [`enter_initialization`]; the out-pointers are null or writable.
 #[allow(clippy::too_many_arguments)]
-pub unsafe fn do_step<V: Vehicle>(
+pub unsafe fn do_step<P: Plant>(
     instance: *mut c_void,
     t: f64,
     h: f64,
@@ -90,7 +91,7 @@ pub unsafe fn do_step<V: Vehicle>(
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c| {
+        component::with::<P>(instance, |c| {
             let outcome = c.instance.do_step(t, h);
             let reached = c.instance.time();
             for (p, v) in [(event_handling_needed, false), (early_return, false)] {
@@ -114,7 +115,7 @@ pub unsafe fn do_step<V: Vehicle>(
 ///
 /// # Safety
 /// As [`enter_initialization`]; the arrays hold `n` elements.
-pub unsafe fn get_string<V: Vehicle>(
+pub unsafe fn get_string<P: Plant>(
     instance: *mut c_void,
     refs: *const u32,
     n_refs: usize,
@@ -123,7 +124,7 @@ pub unsafe fn get_string<V: Vehicle>(
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c| {
+        component::with::<P>(instance, |c| {
             same_length(n_refs, n_values)?;
             let refs = component::slice(refs, n_refs)?;
             let values = component::slice_mut(values, n_values)?;
@@ -144,7 +145,7 @@ pub unsafe fn get_string<V: Vehicle>(
 ///
 /// # Safety
 /// As [`get_string`]; each string is null or NUL-terminated.
-pub unsafe fn set_string<V: Vehicle>(
+pub unsafe fn set_string<P: Plant>(
     instance: *mut c_void,
     refs: *const u32,
     n_refs: usize,
@@ -153,7 +154,7 @@ pub unsafe fn set_string<V: Vehicle>(
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c| {
+        component::with::<P>(instance, |c| {
             same_length(n_refs, n_values)?;
             let refs = component::slice(refs, n_refs)?;
             let values = component::slice(values, n_values)?;
@@ -170,29 +171,29 @@ pub unsafe fn set_string<V: Vehicle>(
 /// read and written by the instance's own method.
 pub trait Value: Copy {
     /// The instance's values of `refs` into `out`.
-    fn get<V: Vehicle>(
-        instance: &Instance<V>,
+    fn get<P: Plant>(
+        instance: &Instance<P>,
         refs: &[u32],
         out: &mut [Self],
     ) -> Result<(), FmuError>;
     /// Sets the instance's `refs` to `values`.
-    fn set<V: Vehicle>(
-        instance: &mut Instance<V>,
+    fn set<P: Plant>(
+        instance: &mut Instance<P>,
         refs: &[u32],
         values: &[Self],
     ) -> Result<(), FmuError>;
 }
 
 impl Value for f64 {
-    fn get<V: Vehicle>(
-        instance: &Instance<V>,
+    fn get<P: Plant>(
+        instance: &Instance<P>,
         refs: &[u32],
         out: &mut [f64],
     ) -> Result<(), FmuError> {
         instance.get_f64(refs, out)
     }
-    fn set<V: Vehicle>(
-        instance: &mut Instance<V>,
+    fn set<P: Plant>(
+        instance: &mut Instance<P>,
         refs: &[u32],
         values: &[f64],
     ) -> Result<(), FmuError> {
@@ -201,15 +202,15 @@ impl Value for f64 {
 }
 
 impl Value for i32 {
-    fn get<V: Vehicle>(
-        instance: &Instance<V>,
+    fn get<P: Plant>(
+        instance: &Instance<P>,
         refs: &[u32],
         out: &mut [i32],
     ) -> Result<(), FmuError> {
         instance.get_i32(refs, out)
     }
-    fn set<V: Vehicle>(
-        instance: &mut Instance<V>,
+    fn set<P: Plant>(
+        instance: &mut Instance<P>,
         refs: &[u32],
         values: &[i32],
     ) -> Result<(), FmuError> {
@@ -222,14 +223,14 @@ impl Value for i32 {
 ///
 /// # Safety
 /// As [`get_string`].
-pub unsafe fn get<V: Vehicle, T: Value>(
+pub unsafe fn get<P: Plant, T: Value>(
     instance: *mut c_void,
     (refs, n_refs): (*const u32, usize),
     (values, n_values): (*mut T, usize),
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c| {
+        component::with::<P>(instance, |c| {
             same_length(n_refs, n_values)?;
             let (refs, values) = (
                 component::slice(refs, n_refs)?,
@@ -245,14 +246,14 @@ pub unsafe fn get<V: Vehicle, T: Value>(
 ///
 /// # Safety
 /// As [`get_string`].
-pub unsafe fn set<V: Vehicle, T: Value>(
+pub unsafe fn set<P: Plant, T: Value>(
     instance: *mut c_void,
     (refs, n_refs): (*const u32, usize),
     (values, n_values): (*const T, usize),
 ) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |c| {
+        component::with::<P>(instance, |c| {
             same_length(n_refs, n_values)?;
             let (refs, values) = (
                 component::slice(refs, n_refs)?,
@@ -278,10 +279,10 @@ pub fn same_length(n_refs: usize, n_values: usize) -> Result<(), FmuError> {
 ///
 /// # Safety
 /// As [`enter_initialization`].
-pub unsafe fn unsupported<V: Vehicle>(instance: *mut c_void, name: &'static str) -> Status {
+pub unsafe fn unsupported<P: Plant>(instance: *mut c_void, name: &'static str) -> Status {
     // SAFETY: by the caller's contract.
     unsafe {
-        component::with::<V>(instance, |_| {
+        component::with::<P>(instance, |_| {
             Err(FmuError::State {
                 call: name,
                 state: "in this FMU (co-simulation only; no FMU state, no derivatives, no clocks)",

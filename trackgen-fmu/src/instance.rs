@@ -12,19 +12,17 @@
 //! point's state.
 
 use std::sync::Arc;
-use std::sync::atomic::{AtomicU64, Ordering};
 
-use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
-use trackgen::scenario::{Method, Range, Scenario, Soil};
-use trackgen::simulate::{DISSIPATED, ENERGY, EnergyBalance, MOTOR_WORK, March};
-use trackgen::system::Simulated;
+use trackgen::scenario::{Range, Scenario};
+use trackgen::simulate::{EnergyBalance, March};
 use trackgen::terrain::course::{self, CourseSpec};
 use trackgen::terrain::soil::SoilPreset;
-use trackgen::vehicle::{Drive, Powertrain, Vehicle, VehicleDynamics};
+use trackgen::vehicle::Powertrain;
 
 use crate::error::FmuError;
-use crate::variables::{self, Causality, Input, Kind, Role, Setting, Start, Variable};
+use crate::plant::{Cells, Plant};
+use crate::variables::{Causality, Input, Kind, Role, Setting, Start, Variable};
 
 /// Where the instance is in FMI's state machine.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -54,25 +52,9 @@ impl Mode {
     }
 }
 
-/// The inputs the drive reads while it runs (shared with its closures).
-#[derive(Debug, Default)]
-struct Cells {
-    target_speed: AtomicU64,
-    torque: AtomicU64,
-}
-
-impl Cells {
-    fn get(cell: &AtomicU64) -> f64 {
-        f64::from_bits(cell.load(Ordering::Relaxed))
-    }
-    fn set(cell: &AtomicU64, value: f64) {
-        cell.store(value.to_bits(), Ordering::Relaxed);
-    }
-}
-
 /// The run under way.
-struct Running<V: Vehicle> {
-    system: V::System,
+struct Running<P: Plant> {
+    system: P::System,
     march: March,
     /// The last step covers the communication point reached and has not
     /// been settled ([`March::settle`]) yet.
@@ -80,13 +62,15 @@ struct Running<V: Vehicle> {
     /// The communication point reached, s, and the state there.
     t: f64,
     y: DVector<f64>,
-    /// The motor's work, the energy and the dissipated work at the start,
-    /// and their columns.
-    books: [(usize, f64); 3],
+    /// The drive's work, the energy and the dissipated work at the start,
+    /// J.
+    books: [f64; 3],
 }
 
-/// An FMU instance of the vehicle `V`.
-pub struct Instance<V: Vehicle> {
+/// An FMU instance of the model `P`: a vehicle `V` (one side in the
+/// pitch plane), or [`Spatial<V>`](crate::Spatial) (both tracks and the
+/// hull in 3-D).
+pub struct Instance<P: Plant> {
     table: Vec<Variable>,
     /// Every variable's value by value reference (a number in `numbers`,
     /// an integer in `integers`, a string in `strings`).
@@ -97,18 +81,18 @@ pub struct Instance<V: Vehicle> {
     start_time: f64,
     stop_time: Option<f64>,
     master_tolerance: Option<f64>,
-    cells: Arc<Cells>,
+    pub(crate) cells: Arc<Cells>,
     /// An input was changed since the last communication point.
     inputs_changed: bool,
-    run: Option<Running<V>>,
+    run: Option<Running<P>>,
     /// The engine `engine = 1` drives through.
-    engine: Option<Powertrain>,
+    pub(crate) engine: Option<Powertrain>,
 }
 
 /// Without a stop time the run ends this long after its start, s.
 const OPEN_END: f64 = 1e6;
 
-impl<V: Vehicle> Instance<V> {
+impl<P: Plant> Instance<P> {
     /// A new instance with every variable at its start value, without an
     /// engine (the parameter `engine` must stay 0).
     pub fn new() -> Result<Self, FmuError> {
@@ -118,7 +102,7 @@ impl<V: Vehicle> Instance<V> {
     /// A new instance whose parameter `engine = 1` drives through
     /// `engine`.
     pub fn with_engine(engine: Option<Powertrain>) -> Result<Self, FmuError> {
-        let table = variables::table::<V>()?;
+        let table = P::table()?;
         let n = table.len();
         let mut instance = Instance {
             numbers: vec![f64::NAN; n],
@@ -147,8 +131,7 @@ impl<V: Vehicle> Instance<V> {
                 Start::Computed => self.numbers[i] = f64::NAN,
             }
         }
-        Cells::set(&self.cells.target_speed, 0.0);
-        Cells::set(&self.cells.torque, 0.0);
+        self.cells.clear();
     }
 
     /// The variables (the model description's).
@@ -206,36 +189,22 @@ impl<V: Vehicle> Instance<V> {
     /// and starts the run; the outputs are the start's.
     pub fn exit_initialization(&mut self) -> Result<(), FmuError> {
         self.expect(&[Mode::Initialization], "leaving initialisation mode")?;
-        let mut system =
-            V::system_with(self.config()?).map_err(|e| FmuError::Build(e.to_string()))?;
-        variables::check_columns(&self.table, &system)?;
-        system
-            .set_drawbar_pull(self.input(Input::DrawbarPull))
-            .map_err(|e| FmuError::Build(e.to_string()))?;
+        let (system, y, integrator) = P::build(self)?;
         let t0 = self.start_time;
         let t_end = self.stop_time.unwrap_or(t0 + OPEN_END);
-        let march = March::start(&system, self.integrator(), t0, t_end)
+        let march = March::from_state(integrator, y.clone(), t0, t_end)
             .map_err(|e| FmuError::Build(e.to_string()))?;
-        let y = march.state().clone();
-        let columns = system.columns();
-        let at = |name: &str| columns.iter().position(|c| c == name).unwrap_or(usize::MAX);
         let mut run = Running {
             system,
             march,
             pending: false,
             t: t0,
             y,
-            books: [
-                (at(MOTOR_WORK), 0.0),
-                (at(ENERGY), 0.0),
-                (at(DISSIPATED), 0.0),
-            ],
+            books: [0.0; 3],
         };
-        let row = observe::<V>(&mut run, t0)?;
-        for (column, start) in &mut run.books {
-            *start = row.get(*column).copied().unwrap_or(f64::NAN);
-        }
-        self.store_outputs(run.books, &row);
+        let (row, books) = observe::<P>(&mut run, t0)?;
+        run.books = books;
+        self.store_outputs(&row, books, books);
         self.run = Some(run);
         self.inputs_changed = false;
         self.mode = Mode::Step;
@@ -268,11 +237,11 @@ impl<V: Vehicle> Instance<V> {
             )));
         }
         let changed = std::mem::take(&mut self.inputs_changed);
-        let result = advance::<V>(run, target, changed);
+        let result = advance::<P>(run, target, changed);
         match result {
-            Ok(row) => {
-                let books = self.run.as_ref().expect("a run").books;
-                self.store_outputs(books, &row);
+            Ok((row, books)) => {
+                let start = self.run.as_ref().expect("a run").books;
+                self.store_outputs(&row, start, books);
                 Ok(())
             }
             Err(e) => {
@@ -341,22 +310,15 @@ impl<V: Vehicle> Instance<V> {
         for (r, value) in refs.iter().zip(values) {
             let v = self.variable(*r, Kind::Float64)?.clone();
             self.settable(&v)?;
-            check_number(&v, *value)?;
+            P::check_number(&v, *value)?;
             let i = *r as usize;
             if let Role::Input(input) = v.role {
+                let t = self.time();
+                let system = self.run.as_mut().map(|r| &mut r.system);
+                P::set_input(&self.cells, system, (input, t, *value))
+                    .map_err(|why| self.refuse_text(&v.name, value, &why))?;
                 if self.numbers[i].to_bits() != value.to_bits() {
                     self.inputs_changed = true;
-                }
-                match input {
-                    Input::TargetSpeed => Cells::set(&self.cells.target_speed, *value),
-                    Input::DriveTorque => Cells::set(&self.cells.torque, *value),
-                    Input::DrawbarPull => {
-                        if let Some(run) = &mut self.run {
-                            run.system
-                                .set_drawbar_pull(*value)
-                                .map_err(|e| self.refuse_text(&v.name, value, &e.to_string()))?;
-                        }
-                    }
                 }
             }
             self.numbers[i] = *value;
@@ -386,7 +348,11 @@ impl<V: Vehicle> Instance<V> {
         let v = self.variable(r, Kind::String)?.clone();
         self.settable(&v)?;
         if let Role::Setting(setting) = v.role {
-            check_string(setting, &v.name, value)?;
+            P::check_string(setting, value).map_err(|why| FmuError::Parameter {
+                name: v.name.clone(),
+                value: format!("\"{value}\""),
+                why,
+            })?;
         }
         self.strings[r as usize] = value.to_string();
         Ok(())
@@ -432,11 +398,16 @@ impl<V: Vehicle> Instance<V> {
         }
     }
 
-    fn refuse(&self, name: &str, value: f64, why: &str) -> FmuError {
+    pub(crate) fn refuse(&self, name: &str, value: f64, why: &str) -> FmuError {
         self.refuse_text(name, &value, why)
     }
 
-    fn refuse_text(&self, name: &str, value: &dyn std::fmt::Display, why: &str) -> FmuError {
+    pub(crate) fn refuse_text(
+        &self,
+        name: &str,
+        value: &dyn std::fmt::Display,
+        why: &str,
+    ) -> FmuError {
         FmuError::Parameter {
             name: name.to_string(),
             value: value.to_string(),
@@ -444,22 +415,22 @@ impl<V: Vehicle> Instance<V> {
         }
     }
 
-    fn setting(&self, setting: Setting) -> usize {
+    pub(crate) fn setting(&self, setting: Setting) -> usize {
         self.table
             .iter()
             .position(|v| v.role == Role::Setting(setting))
             .expect("every setting is in the table")
     }
 
-    fn number(&self, setting: Setting) -> f64 {
+    pub(crate) fn number(&self, setting: Setting) -> f64 {
         self.numbers[self.setting(setting)]
     }
 
-    fn text(&self, setting: Setting) -> &str {
+    pub(crate) fn text(&self, setting: Setting) -> &str {
         &self.strings[self.setting(setting)]
     }
 
-    fn input(&self, input: Input) -> f64 {
+    pub(crate) fn input(&self, input: Input) -> f64 {
         let i = self
             .table
             .iter()
@@ -468,68 +439,16 @@ impl<V: Vehicle> Instance<V> {
         self.numbers[i]
     }
 
-    /// The integrator: the main job's (chosen by stiffness, steps of at
-    /// most 10 ms) at the `tolerance` parameter, else the master's, else
-    /// the main job's defaults.
-    fn integrator(&self) -> Integrator {
-        Scenario {
-            method: Method::Auto,
-            tolerance: self.tolerance(),
-            ..Scenario::default()
-        }
-        .integrator()
-    }
-
     /// The `tolerance` parameter where it is set (above 0), else the
     /// master's.
-    fn tolerance(&self) -> Option<f64> {
+    pub(crate) fn tolerance(&self) -> Option<f64> {
         Some(self.number(Setting::Tolerance))
             .filter(|t| *t > 0.0)
             .or(self.master_tolerance)
     }
 
-    /// The run the parameters name, as the main job's [`Scenario`]: the
-    /// course, the soil, the speed profile, the engine and the integrator
-    /// (`auto` at the `tolerance` parameter, else the master's, else the
-    /// defaults). The master, not the scenario, sets the duration and the
-    /// communication points. With every parameter at its start value,
-    /// [`Scenario::default`] (a test holds them to it).
-    pub fn scenario(&self) -> Result<Scenario, FmuError> {
-        let scenario = Scenario {
-            course: self.course()?,
-            soil: self.soil()?,
-            speed: self.number(Setting::Speed),
-            settle: self.number(Setting::Settle),
-            ramp: self.number(Setting::Ramp),
-            engine: self.integers[self.setting(Setting::Engine)] == 1,
-            method: Method::Auto,
-            tolerance: self.tolerance(),
-            ..Scenario::default()
-        };
-        // Each parameter was checked when set; the whole is held to the
-        // scenario's own ranges as well.
-        scenario.check().map_err(|e| FmuError::Parameter {
-            name: e.setting.to_string(),
-            value: e.value.to_string(),
-            why: e.range.to_string(),
-        })?;
-        Ok(scenario)
-    }
-
-    /// The soil the `soil` parameter names.
-    fn soil(&self) -> Result<Soil, FmuError> {
-        let name = self.text(Setting::Soil);
-        name.parse().map_err(|_| {
-            self.refuse_text(
-                "soil",
-                &name,
-                &format!("rigid or one of {}", SoilPreset::names()),
-            )
-        })
-    }
-
     /// The course the parameters name.
-    fn course(&self) -> Result<CourseSpec, FmuError> {
+    pub(crate) fn course(&self) -> Result<CourseSpec, FmuError> {
         let course = self.text(Setting::Course);
         Ok(match course {
             "flat" => CourseSpec::Flat,
@@ -576,66 +495,14 @@ impl<V: Vehicle> Instance<V> {
         })
     }
 
-    /// The vehicle's configuration from the parameters.
-    fn config(&self) -> Result<trackgen::vehicle::VehicleConfig, FmuError> {
-        let scenario = self.scenario()?;
-        let terrain = scenario
-            .terrain()
-            .map_err(|e| FmuError::Build(e.to_string()))?;
-        let drive = match self.text(Setting::Drive) {
-            "profile" => V::speed_drive(scenario.speed_profile()),
-            "speed" => {
-                let cells = Arc::clone(&self.cells);
-                V::speed_drive(move |_| Cells::get(&cells.target_speed))
-            }
-            "torque" => {
-                let cells = Arc::clone(&self.cells);
-                Drive::Torque(Box::new(move |_| Cells::get(&cells.torque)))
-            }
-            other => {
-                return Err(self.refuse_text("drive", &other, "one of profile, speed, torque"));
-            }
-        };
-        let powertrain = if scenario.engine {
-            Some(self.engine.clone().ok_or_else(|| {
-                self.refuse_text(
-                    "engine",
-                    &1,
-                    "this FMU has no engine: its vehicle declares no powertrain and export_fmu! \
-                     was given none",
-                )
-            })?)
-        } else {
-            None
-        };
-        let mut config = scenario.config_with::<V>(terrain, drive, powertrain);
-        for (i, (_, body)) in variables::arm_names::<V>().iter().enumerate() {
-            let value = |role: Role| {
-                let k = self
-                    .table
-                    .iter()
-                    .position(|v| v.role == role)
-                    .expect("an arm's variable");
-                self.numbers[k]
-            };
-            if let Some(arm) = config.arms.iter_mut().find(|a| a.body == *body) {
-                arm.spring.stiffness = value(Role::ArmStiffness(i));
-                arm.spring.damping = value(Role::ArmDamping(i));
-            }
-        }
-        Ok(config)
-    }
-
     /// The outputs from a recorded row; the books' residual from the
-    /// start's motor work, energy and dissipated work (`start`).
-    fn store_outputs(&mut self, start: [(usize, f64); 3], row: &[f64]) {
-        let change = |(column, at_start): (usize, f64)| {
-            row.get(column).copied().unwrap_or(f64::NAN) - at_start
-        };
+    /// books at the start and now (the drive's work, the energy held, the
+    /// energy dissipated, J).
+    fn store_outputs(&mut self, row: &[f64], start: [f64; 3], now: [f64; 3]) {
         let books = EnergyBalance {
-            motor_work: change(start[0]),
-            energy_change: change(start[1]),
-            dissipated: change(start[2]),
+            motor_work: now[0] - start[0],
+            energy_change: now[1] - start[1],
+            dissipated: now[2] - start[2],
         };
         for (i, v) in self.table.iter().enumerate() {
             match v.role {
@@ -646,43 +513,57 @@ impl<V: Vehicle> Instance<V> {
             }
         }
     }
+
+    /// The master's tolerance, if it gave one.
+    pub(crate) fn master_tolerance(&self) -> Option<f64> {
+        self.master_tolerance
+    }
+
+    /// The integer parameter `setting`.
+    pub(crate) fn integer(&self, setting: Setting) -> i32 {
+        self.integers[self.setting(setting)]
+    }
+
+    /// The number of the variable whose role is `role`.
+    pub(crate) fn number_of(&self, role: Role) -> f64 {
+        let k = self
+            .table
+            .iter()
+            .position(|v| v.role == role)
+            .expect("a variable of this role");
+        self.numbers[k]
+    }
 }
 
-/// The recorded row at the communication point reached.
-fn observe<V: Vehicle>(run: &mut Running<V>, t: f64) -> Result<Vec<f64>, FmuError> {
+/// The recorded row at the communication point reached, and the books.
+fn observe<P: Plant>(run: &mut Running<P>, t: f64) -> Result<(Vec<f64>, [f64; 3]), FmuError> {
     let mut row = Vec::new();
-    run.system
-        .observe(t, run.y.as_slice(), &mut row)
-        .map_err(|e| FmuError::Run(e.to_string()))?;
-    Ok(row)
+    let books = P::observe(&mut run.system, t, run.y.as_slice(), &mut row)?;
+    Ok((row, books))
 }
 
 /// The run from its communication point to `target` (s), in the native
 /// run's order: the pending step settled (or, inputs `changed`, dropped),
 /// steps until one covers `target`, the state there by dense output.
-fn advance<V: Vehicle>(
-    run: &mut Running<V>,
+fn advance<P: Plant>(
+    run: &mut Running<P>,
     target: f64,
     changed: bool,
-) -> Result<Vec<f64>, FmuError> {
+) -> Result<(Vec<f64>, [f64; 3]), FmuError> {
     let failed = |e: trackgen::integrate::SimulationError| FmuError::Run(e.to_string());
     let eps = run.march.eps();
     if run.pending {
         if changed {
             run.march.restart_at(run.t, run.y.clone());
-            run.march
-                .settle(&mut run.system, &mut |_| {})
-                .map_err(failed)?;
+            P::settle(&mut run.system, &mut run.march).map_err(failed)?;
             run.pending = false;
         } else if run.march.time() >= target - eps {
             // The same step covers this point too.
             run.y = run.march.state_at(target);
             run.t = target;
-            return observe::<V>(run, target);
+            return observe::<P>(run, target);
         } else {
-            run.march
-                .settle(&mut run.system, &mut |_| {})
-                .map_err(failed)?;
+            P::settle(&mut run.system, &mut run.march).map_err(failed)?;
             run.pending = false;
         }
     }
@@ -692,16 +573,14 @@ fn advance<V: Vehicle>(
             run.y = run.march.state_at(target);
             run.t = target;
             run.pending = true;
-            return observe::<V>(run, target);
+            return observe::<P>(run, target);
         }
-        run.march
-            .settle(&mut run.system, &mut |_| {})
-            .map_err(failed)?;
+        P::settle(&mut run.system, &mut run.march).map_err(failed)?;
     }
 }
 
 /// A number's range, by its variable.
-fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
+pub(crate) fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
     // The scenario's figures by the scenario's own ranges
     // ([`Scenario::check`]), as the main job's options are held to them;
     // `zero` is what 0 means where it is allowed besides.
@@ -745,31 +624,27 @@ fn check_number(v: &Variable, value: f64) -> Result<(), FmuError> {
     }
 }
 
-/// A string parameter's values, checked when set.
-fn check_string(setting: Setting, name: &str, value: &str) -> Result<(), FmuError> {
-    let refuse = |why: String| FmuError::Parameter {
-        name: name.to_string(),
-        value: format!("\"{value}\""),
-        why,
-    };
+/// A string parameter's values, checked when set: why `value` is
+/// refused, if it is.
+pub(crate) fn check_string(setting: Setting, value: &str) -> Result<(), String> {
     match setting {
         Setting::Course => ["flat", "bump", "file", "random", "obstacle"]
             .contains(&value)
             .then_some(())
-            .ok_or_else(|| refuse("one of flat, bump, file, random, obstacle".into())),
+            .ok_or_else(|| "one of flat, bump, file, random, obstacle".into()),
         Setting::Drive => ["profile", "speed", "torque"]
             .contains(&value)
             .then_some(())
-            .ok_or_else(|| refuse("one of profile, speed, torque".into())),
+            .ok_or_else(|| "one of profile, speed, torque".into()),
         Setting::Soil => {
             if value == "rigid" || value.parse::<SoilPreset>().is_ok() {
                 Ok(())
             } else {
-                Err(refuse(format!("rigid or one of {}", SoilPreset::names())))
+                Err(format!("rigid or one of {}", SoilPreset::names()))
             }
         }
-        Setting::Roughness => course::roughness(value).map(|_| ()).map_err(refuse),
-        Setting::Obstacle => course::obstacle(value).map(|_| ()).map_err(refuse),
+        Setting::Roughness => course::roughness(value).map(|_| ()),
+        Setting::Obstacle => course::obstacle(value).map(|_| ()),
         _ => Ok(()),
     }
 }

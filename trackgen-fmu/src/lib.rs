@@ -2,7 +2,9 @@
 //!
 //! A declared vehicle as a Functional Mock-up Unit: FMI 3.0 and FMI 2.0
 //! co-simulation, for fmpy, Simulink, Modelica tools and any other
-//! importer.
+//! importer; in the pitch plane ([`export_fmu!`]), or in 3-D with both
+//! tracks, the hull and steering for a vehicle declared with a `tracks`
+//! block ([`export_spatial_fmu!`], the model [`Spatial`]).
 //!
 //! A `cdylib` crate exports the C API for one vehicle with
 //! [`export_fmu!`]; [`write_fmu`] packs the library with its model
@@ -43,11 +45,16 @@ pub mod fmi2;
 pub mod fmi3;
 mod instance;
 mod package;
+mod planar;
+mod plant;
+mod spatial;
 pub mod variables;
 
 pub use error::FmuError;
 pub use instance::{Instance, Mode};
 pub use package::{PackageError, Version, write_fmu};
+pub use plant::{Cells, Plant};
+pub use spatial::Spatial;
 
 /// Exports the FMI 3.0 and FMI 2.0 co-simulation functions for the
 /// vehicle `$vehicle` (a type implementing `trackgen::vehicle::Vehicle`)
@@ -78,5 +85,22 @@ macro_rules! export_fmu {
             $vehicle,
             Some($powertrain as fn() -> ::trackgen::vehicle::Powertrain)
         );
+    };
+}
+
+/// Exports the FMI 3.0 and FMI 2.0 co-simulation functions for the
+/// spatial model of `$vehicle` (a vehicle declared with a `tracks` block:
+/// both tracks and the hull in 3-D, [`Spatial`]) from the `cdylib` this
+/// is written in; [`write_fmu`]`::<Spatial<V>>` packs it as
+/// `<Name>Spatial.fmu`. One model per library, as [`export_fmu!`].
+///
+/// ```ignore
+/// trackgen_fmu::export_spatial_fmu!(trackgen::vehicles::m113::M113);
+/// ```
+#[macro_export]
+macro_rules! export_spatial_fmu {
+    ($vehicle:ty $(,)?) => {
+        $crate::__export_fmi3!($crate::Spatial<$vehicle>, None);
+        $crate::__export_fmi2!($crate::Spatial<$vehicle>, None);
     };
 }

@@ -5,11 +5,11 @@ use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use trackgen::vehicle::Vehicle;
 use zip::write::SimpleFileOptions;
 
+use crate::description;
 use crate::error::FmuError;
-use crate::{description, variables};
+use crate::plant::Plant;
 
 /// Which standard an archive declares.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -45,24 +45,27 @@ pub enum PackageError {
 }
 
 /// Writes `out_dir/<Name>.fmu` (FMI 3.0) or `out_dir/<Name>-fmi2.fmu`
-/// (FMI 2.0) for the vehicle `V`, with `library` (the `cdylib` that
-/// [`export_fmu!`](crate::export_fmu)`(V)` built) as its binary; returns
-/// the archive's path.
-pub fn write_fmu<V: Vehicle>(
+/// (FMI 2.0) for the model `P` (a vehicle `V`, or
+/// [`Spatial<V>`](crate::Spatial)), with `library` (the `cdylib` that
+/// [`export_fmu!`](crate::export_fmu)`(V)` or
+/// [`export_spatial_fmu!`](crate::export_spatial_fmu)`(V)` built) as its
+/// binary; returns the archive's path (`<Name>` the model's
+/// [`identifier`](crate::description::identifier)).
+pub fn write_fmu<P: Plant>(
     library: &Path,
     out_dir: &Path,
     version: Version,
 ) -> Result<PathBuf, PackageError> {
-    let table = variables::table::<V>()?;
-    let id = description::identifier::<V>();
+    let table = P::table()?;
+    let id = description::identifier::<P>();
     let (xml, platform, file) = match version {
         Version::Fmi3 => (
-            description::fmi3::<V>(&table),
+            description::fmi3::<P>(&table),
             "x86_64-linux",
             format!("{id}.fmu"),
         ),
         Version::Fmi2 => (
-            description::fmi2::<V>(&table),
+            description::fmi2::<P>(&table),
             "linux64",
             format!("{id}-fmi2.fmu"),
         ),

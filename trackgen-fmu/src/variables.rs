@@ -101,6 +101,16 @@ pub enum Setting {
     Ramp,
     /// `engine`: 1 drives through the vehicle's engine.
     Engine,
+    /// `side_slope`: the ground's rise over run to the left (3-D).
+    SideSlope,
+    /// `steering`: profile or yaw_rate (3-D).
+    Steering,
+    /// `turn`, degrees to the left (3-D, steering = profile).
+    Turn,
+    /// `turn_at`, s.
+    TurnAt,
+    /// `turn_time`, s.
+    TurnTime,
 }
 
 /// The inputs.
@@ -112,6 +122,8 @@ pub enum Input {
     DriveTorque,
     /// `drawbar_pull`, N.
     DrawbarPull,
+    /// `target_yaw_rate`, rad/s (3-D, steering = yaw_rate).
+    TargetYawRate,
 }
 
 /// One variable of the FMU.
@@ -277,7 +289,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
 
 /// The scenario's settings as the FMU's parameters: name, kind, unit,
 /// description and start value (the scenario's defaults).
-fn scenario_settings() -> [(
+pub(crate) fn scenario_settings() -> [(
     &'static str,
     Kind,
     &'static str,

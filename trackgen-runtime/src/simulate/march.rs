@@ -7,7 +7,9 @@ use nalgebra::DVector;
 
 use super::Output;
 use crate::closure::Switch;
-use crate::integrate::{Check, Integrator, SettingsError, SimulationError, Stats, Stepper};
+use crate::integrate::{
+    Check, Integrator, OdeSystem, SettingsError, SimulationError, Stats, Stepper,
+};
 use crate::system::Simulated;
 
 /// The integration of one run between its start and its end time: the
@@ -39,9 +41,20 @@ impl March {
         t0: f64,
         t_end: f64,
     ) -> Result<March, SimulationError> {
+        March::from_state(integrator, system.initial_state(), t0, t_end)
+    }
+
+    /// A run of a system of `y.len()` states from `y` at `t0` to `t_end`
+    /// (s): for a system that is no [`Simulated`] (a spatial vehicle, whose
+    /// start is assembled on its course). The same checks as
+    /// [`start`](Self::start)'s.
+    pub fn from_state(
+        integrator: Integrator,
+        y: DVector<f64>,
+        t0: f64,
+        t_end: f64,
+    ) -> Result<March, SimulationError> {
         validate(integrator, t0, t_end)?;
-        let stepper = integrator.stepper(system.dimension());
-        let y = system.initial_state();
         if !y.iter().all(|v| v.is_finite()) {
             return Err(SimulationError::NonFinite {
                 t: t0,
@@ -49,7 +62,7 @@ impl March {
             });
         }
         Ok(March {
-            stepper,
+            stepper: integrator.stepper(y.len()),
             t: t0,
             t_previous: t0,
             y,
@@ -93,7 +106,7 @@ impl March {
     /// One accepted step, never past the end time (a step ending within
     /// [`eps`](Self::eps) of it ends on it). A non-finite state is an error
     /// at the step's end.
-    pub fn step(&mut self, system: &mut dyn Simulated) -> Result<(), SimulationError> {
+    pub fn step(&mut self, system: &mut dyn OdeSystem) -> Result<(), SimulationError> {
         self.t_previous = self.t;
         self.stepper
             .step(system, &mut self.t, &mut self.y, self.t_end)?;
@@ -131,6 +144,13 @@ impl March {
             self.stepper.restart();
         }
         Ok(())
+    }
+
+    /// The integrator restarts (its step size kept): for a system whose
+    /// right-hand side changed between steps (a spatial vehicle's gearbox
+    /// shifted), where [`settle`](Self::settle) is not its rule.
+    pub fn restart(&mut self) {
+        self.stepper.restart();
     }
 
     /// Goes on from the state `y` at `t` (s) instead, the integrator

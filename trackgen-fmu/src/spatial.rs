@@ -1,0 +1,414 @@
+//! The spatial vehicle as an FMU's model: both tracks and the hull in
+//! 3-D ([`SpatialVehicleSystem`]), a speed drive on each sprocket and a
+//! driver holding a heading by skid steering, as the applications' 3-D
+//! main job (`spatial`) drives it. With every parameter at its start
+//! value the run is that main job's: the bump across both tracks, to
+//! 3 m/s, a 90° turn to the left from 8 to 12 s, Bogacki-Shampine at its
+//! default tolerance.
+
+use std::marker::PhantomData;
+use std::sync::Arc;
+
+use trackgen::integrate::{Integrator, SimulationError};
+use trackgen::nalgebra::DVector;
+use trackgen::scenario::{Range, Scenario};
+use trackgen::simulate::March;
+use trackgen::spatial_vehicle::{
+    Driveline, HeadingHold, SPATIAL_COLUMNS, SideDrives, SpatialSimulated, SpatialVehicleSystem,
+    on_course, spatial_row,
+};
+use trackgen::vehicle::speed_ramp;
+
+use crate::error::FmuError;
+use crate::instance::Instance;
+use crate::plant::{Cells, Plant};
+use crate::variables::{Causality, Input, Kind, Role, Setting, Start, Variable, scenario_settings};
+
+/// The spatial model of the vehicle `V` (declared with a `tracks`
+/// block), as an FMU's [`Plant`]:
+/// [`export_spatial_fmu!`](crate::export_spatial_fmu) exports it.
+pub struct Spatial<V>(PhantomData<V>);
+
+/// The 3-D main job's turn: degrees, its start and its duration, s.
+const TURN: (f64, f64, f64) = (90.0, 8.0, 4.0);
+/// The 3-D main job's duration, s.
+const DURATION: f64 = 14.0;
+/// A turn's range, degrees (the main job's `--turn`).
+const TURN_RANGE: Range = Range::closed(-360.0, 360.0, "from -360 to 360 degrees");
+/// A side slope's range, rise over run (the main job's `--side-slope`).
+const SLOPE_RANGE: Range = Range::closed(-1.0, 1.0, "from -1 to 1");
+/// A yaw rate's range, rad/s: at most the driver's largest
+/// ([`HeadingHold::DRIVER_MAX_YAW_RATE`]).
+const YAW_RATE_RANGE: Range = Range::closed(
+    -HeadingHold::DRIVER_MAX_YAW_RATE,
+    HeadingHold::DRIVER_MAX_YAW_RATE,
+    "from -1 to 1 rad/s",
+);
+
+impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
+    type System = V::Spatial;
+
+    fn name() -> String {
+        format!("{}Spatial", V::NAME)
+    }
+
+    fn summary() -> &'static str {
+        "both tracks and the hull, in 3-D"
+    }
+
+    fn default_experiment() -> (f64, f64) {
+        (DURATION, Scenario::OUTPUT_EVERY)
+    }
+
+    fn table() -> Result<Vec<Variable>, FmuError> {
+        Ok(table())
+    }
+
+    fn build(
+        instance: &Instance<Self>,
+    ) -> Result<(V::Spatial, DVector<f64>, Integrator), FmuError> {
+        let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
+        let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
+        let slope = instance.number(Setting::SideSlope);
+        let (mut system, y, _) = on_course::<V>(&terrain, slope).map_err(|e| built(&e))?;
+        let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
+            match instance.text(Setting::Drive) {
+                "speed" => {
+                    let cells = Arc::clone(&instance.cells);
+                    Box::new(move |_| Cells::get(&cells.target_speed))
+                }
+                _ => Box::new(speed_ramp(
+                    instance.number(Setting::Settle),
+                    instance.number(Setting::Ramp),
+                    instance.number(Setting::Speed),
+                )),
+            }
+        };
+        let drives = SideDrives {
+            right: V::speed_drive(target()),
+            left: V::speed_drive(target()),
+        };
+        system
+            .set_driveline(Driveline::Sides(drives))
+            .map_err(|e| built(&e))?;
+        let gauge = V::layout().gauge;
+        let hold = match instance.text(Setting::Steering) {
+            "yaw_rate" => {
+                let cells = Arc::clone(&instance.cells);
+                HeadingHold {
+                    heading: Box::new(move |t| cells.heading(t)),
+                    gain: HeadingHold::DRIVER_GAIN,
+                    max_difference: gauge * HeadingHold::DRIVER_MAX_YAW_RATE,
+                }
+            }
+            _ => HeadingHold::driver(
+                instance.number(Setting::Turn).to_radians(),
+                (
+                    instance.number(Setting::TurnAt),
+                    instance.number(Setting::TurnTime),
+                ),
+                gauge,
+            ),
+        };
+        system.set_steering(hold).map_err(|e| built(&e))?;
+        let tolerance = Some(instance.number(Setting::Tolerance))
+            .filter(|t| *t > 0.0)
+            .or(instance.master_tolerance())
+            .unwrap_or(Integrator::DEFAULT_EXPLICIT_TOLERANCE);
+        Ok((system, y, Integrator::bs23(tolerance)))
+    }
+
+    fn settle(system: &mut V::Spatial, march: &mut March) -> Result<(), SimulationError> {
+        if system.after_step(march.time(), march.state().as_slice()) {
+            march.restart();
+        }
+        Ok(())
+    }
+
+    fn observe(
+        system: &mut V::Spatial,
+        t: f64,
+        y: &[f64],
+        row: &mut Vec<f64>,
+    ) -> Result<[f64; 3], FmuError> {
+        let out = system
+            .outputs(t, y)
+            .map_err(|e| FmuError::Run(e.to_string()))?;
+        row.clear();
+        row.extend(spatial_row(&out));
+        let energy = system.energy(y);
+        Ok([energy.driven, energy.held(), energy.dissipated])
+    }
+
+    fn set_input(
+        cells: &Cells,
+        _: Option<&mut V::Spatial>,
+        (input, t, value): (Input, f64, f64),
+    ) -> Result<(), String> {
+        match input {
+            Input::TargetSpeed => Cells::set(&cells.target_speed, value),
+            Input::TargetYawRate => cells.turn_at(t, value),
+            Input::DriveTorque | Input::DrawbarPull => {
+                return Err("not an input of the spatial vehicle".into());
+            }
+        }
+        Ok(())
+    }
+
+    fn check_number(variable: &Variable, value: f64) -> Result<(), FmuError> {
+        match range(variable.role) {
+            Some(range) if !range.contains(value) => Err(FmuError::Parameter {
+                name: variable.name.clone(),
+                value: value.to_string(),
+                why: range.what.to_string(),
+            }),
+            Some(_) => Ok(()),
+            None => crate::instance::check_number(variable, value),
+        }
+    }
+
+    fn check_string(setting: Setting, value: &str) -> Result<(), String> {
+        match setting {
+            Setting::Drive => ["profile", "speed"]
+                .contains(&value)
+                .then_some(())
+                .ok_or_else(|| "one of profile, speed".into()),
+            Setting::Steering => ["profile", "yaw_rate"]
+                .contains(&value)
+                .then_some(())
+                .ok_or_else(|| "one of profile, yaw_rate".into()),
+            _ => crate::instance::check_string(setting, value),
+        }
+    }
+}
+
+/// A spatial parameter's or input's range, if it has its own.
+fn range(role: Role) -> Option<Range> {
+    match role {
+        Role::Setting(Setting::SideSlope) => Some(SLOPE_RANGE),
+        Role::Setting(Setting::Turn) => Some(TURN_RANGE),
+        Role::Setting(Setting::TurnAt | Setting::TurnTime) => Some(Scenario::TIME_RANGE),
+        Role::Input(Input::TargetSpeed) => Some(Scenario::SPEED_RANGE),
+        Role::Input(Input::TargetYawRate) => Some(YAW_RATE_RANGE),
+        _ => None,
+    }
+}
+
+/// The spatial FMU's variables: the time; the course's, the speed
+/// profile's and the integrator's parameters as the planar FMU's (but the
+/// soil and the engine), the side slope and the steering; the inputs
+/// `target_speed` and `target_yaw_rate`; one output per recorded column
+/// ([`SPATIAL_COLUMNS`]) and the books' residual.
+fn table() -> Vec<Variable> {
+    let mut table = Vec::new();
+    let mut push = |name: &str, kind, causality, unit, description: String, start, role| {
+        table.push(Variable {
+            name: name.to_string(),
+            value_reference: table.len() as u32,
+            kind,
+            causality,
+            unit,
+            description,
+            start,
+            role,
+        });
+    };
+    use Causality::{Input as In, Output as Out, Parameter as P};
+    push(
+        "time",
+        Kind::Float64,
+        Causality::Independent,
+        "s",
+        "time".into(),
+        Start::Computed,
+        Role::Time,
+    );
+    for (name, kind, unit, description, start, setting) in scenario_settings() {
+        let description = match setting {
+            Setting::Soil | Setting::Engine => continue,
+            Setting::Course => "the course, laid across the vehicle's whole width: flat, bump \
+                 (a cosine bump 1 m wide), file (course_file), random (roughness, seed, \
+                 course_length) or obstacle (obstacle, obstacle_at)"
+                .to_string(),
+            Setting::Tolerance => "Bogacki-Shampine's relative and absolute tolerance, 1e-12 to \
+                 0.1 (0: the master's, else 1e-3, as the 3-D main job)"
+                .to_string(),
+            Setting::Drive => "what the speed controller on each sprocket holds: profile \
+                 (profile_speed, profile_settle, profile_ramp) or speed (the input target_speed)"
+                .to_string(),
+            _ => description.to_string(),
+        };
+        push(
+            name,
+            kind,
+            P,
+            unit,
+            description,
+            start,
+            Role::Setting(setting),
+        );
+    }
+    for (name, kind, unit, description, start, setting) in spatial_settings() {
+        push(
+            name,
+            kind,
+            P,
+            unit,
+            description.into(),
+            start,
+            Role::Setting(setting),
+        );
+    }
+    let inputs = [
+        (
+            "target_speed",
+            "m/s",
+            "drive = speed: the belts' speed each sprocket's controller holds, -20 to 20 (the driver moves the two apart to steer)",
+            Input::TargetSpeed,
+        ),
+        (
+            "target_yaw_rate",
+            "rad/s",
+            "steering = yaw_rate: the rate the heading wanted turns at, to the left positive, -1 to 1; the driver holds the hull to that heading",
+            Input::TargetYawRate,
+        ),
+    ];
+    for (name, unit, description, input) in inputs {
+        push(
+            name,
+            Kind::Float64,
+            In,
+            unit,
+            description.into(),
+            Start::Float64(0.0),
+            Role::Input(input),
+        );
+    }
+    for (i, column) in SPATIAL_COLUMNS.iter().enumerate() {
+        let (unit, description) = describe(column);
+        push(
+            column,
+            Kind::Float64,
+            Out,
+            unit,
+            description,
+            Start::Computed,
+            Role::Column(i),
+        );
+    }
+    push(
+        "books_residual",
+        Kind::Float64,
+        Out,
+        "1",
+        "the energy books since the start: (the drives' work - change of energy - dissipated) / the largest of the three".into(),
+        Start::Computed,
+        Role::BooksResidual,
+    );
+    table
+}
+
+/// The spatial model's own parameters: the side slope and the steering.
+fn spatial_settings() -> [(
+    &'static str,
+    Kind,
+    &'static str,
+    &'static str,
+    Start,
+    Setting,
+); 5] {
+    let (turn, turn_at, turn_time) = TURN;
+    [
+        (
+            "side_slope",
+            Kind::Float64,
+            "1",
+            "the ground's side slope, rise over run to the left, -1 to 1 (the vehicle set on it at rest)",
+            Start::Float64(0.0),
+            Setting::SideSlope,
+        ),
+        (
+            "steering",
+            Kind::String,
+            "",
+            "how the driver steers: profile (turn, turn_at, turn_time) or yaw_rate (the heading wanted turns at the input target_yaw_rate)",
+            Start::String("profile".into()),
+            Setting::Steering,
+        ),
+        (
+            "turn",
+            Kind::Float64,
+            "deg",
+            "steering = profile: the turn, degrees to the left, -360 to 360 (0 drives straight)",
+            Start::Float64(turn),
+            Setting::Turn,
+        ),
+        (
+            "turn_at",
+            Kind::Float64,
+            "s",
+            "steering = profile: when the turn starts, 0 to 1e6",
+            Start::Float64(turn_at),
+            Setting::TurnAt,
+        ),
+        (
+            "turn_time",
+            Kind::Float64,
+            "s",
+            "steering = profile: how long the heading wanted takes to turn, 0 to 1e6 (0: a step)",
+            Start::Float64(turn_time),
+            Setting::TurnTime,
+        ),
+    ]
+}
+
+/// A recorded column's unit and description, from its name.
+fn describe(column: &str) -> (&'static str, String) {
+    let (side, leaf) = match column.split_once('_') {
+        Some(("r", leaf)) => ("the right track's ", leaf),
+        Some(("l", leaf)) => ("the left track's ", leaf),
+        _ => ("", column),
+    };
+    let (unit, what) = match leaf {
+        "x" | "y" | "z" => ("m", "the centre of mass's position (world axes)"),
+        "heading" => ("rad", "the hull's heading, to the left positive"),
+        "pitch" => ("rad", "the frame's pitch, nose up positive"),
+        "roll" => ("rad", "the hull's roll, the left side up positive"),
+        "yaw_rate" => ("rad/s", "the hull's yaw rate, to the left positive"),
+        "vx" | "vy" | "vz" => ("m/s", "the centre of mass's velocity (world axes)"),
+        "ax" | "ay" | "az" => ("m/s2", "the centre of mass's acceleration (world axes)"),
+        "lateral_acceleration" => (
+            "m/s2",
+            "the centre of mass's acceleration across the heading",
+        ),
+        "turn_radius" => ("m", "the radius of the centre of mass's path"),
+        "sprocket_speed" => ("rad/s", "sprocket's speed relative to the frame"),
+        "sprocket_torque" => ("N.m", "sprocket's torque from the driveline"),
+        "sprocket_power" | "brake_power" => ("W", "power into its sprocket (or its brake's)"),
+        "brake_torque" => ("N.m", "steering brake's torque"),
+        "belt_speed" => (
+            "m/s",
+            "belt speed: the sprocket's speed times its rolling radius",
+        ),
+        "ground_speed" => ("m/s", "speed over the ground along the heading"),
+        "slip" => ("1", "slip, 1 - ground speed / belt speed"),
+        "track_speed" => ("m/s", "speed round the hull at its ground patch"),
+        "ground_fx" | "ground_fy" | "ground_fz" => ("N", "ground force (world axes)"),
+        "ground_yaw_moment" => ("N.m", "ground's yaw moment about the centre of mass"),
+        "tension_tight" | "tension_slack" | "tension_largest" => ("N", "track tension"),
+        "engine_speed" => ("rad/s", "the engine's speed (NaN without an engine)"),
+        "engine_torque" => ("N.m", "the engine's torque (NaN without an engine)"),
+        "engine_power" | "turbine_power" => (
+            "W",
+            "the engine's or the turbine's power (NaN without an engine)",
+        ),
+        "gear" => ("1", "the range engaged (NaN without an engine)"),
+        "speed_ratio" | "torque_ratio" => ("1", "the converter's ratio (NaN without an engine)"),
+        "locked" => (
+            "1",
+            "1 with the lock-up clutch engaged (NaN without an engine)",
+        ),
+        _ => ("1", ""),
+    };
+    (unit, format!("{side}{what} ({column})"))
+}
