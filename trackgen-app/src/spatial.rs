@@ -241,7 +241,8 @@ fn drive<V: SpatialVehicleSystem>(
     let terrain = course.terrain()?;
     let layout = V::layout();
     let assembling = Instant::now();
-    let (mut system, mut y, ground) = on_course::<V>(&terrain, args.side_slope)?;
+    let (mut system, mut y, ground) =
+        on_course::<V>(V::declared_laws(), &terrain, args.side_slope)?;
     let assembly = assembling.elapsed().as_secs_f64();
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))

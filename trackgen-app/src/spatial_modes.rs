@@ -6,9 +6,10 @@
 use std::path::Path;
 
 use trackgen::analysis::{settle, spatial_mode_of, spatial_modes};
-use trackgen::spatial_vehicle::{HULL_MOTIONS, SideDrives, SpatialSimulated, SpatialVehicleSystem};
+use trackgen::spatial_vehicle::{
+    HULL_MOTIONS, SideDrives, SpatialSimulated, SpatialVehicleSystem, on_course,
+};
 use trackgen::terrain::Terrain;
-use trackgen::terrain::field::HeightField;
 
 use crate::console::say;
 use crate::offered::SpatialModes;
@@ -32,11 +33,8 @@ const SHARE: f64 = 0.1;
 /// acceleration of its rest; an error in words.
 pub(crate) fn modes_at_rest<V: SpatialVehicleSystem>() -> Result<SpatialModes, String> {
     let flat = Terrain::Flat { height: 0.0 };
-    let mut system = V::spatial(V::declared_laws(), HeightField::level())
-        .map_err(|e| format!("the spatial vehicle: {e}"))?;
-    let start = system
-        .assembled(&flat)
-        .map_err(|e| format!("assembling it: {e}"))?;
+    let (mut system, start, _) = on_course::<V>(V::declared_laws(), &flat, 0.0)
+        .map_err(|e| format!("the spatial vehicle on level ground: {e}"))?;
     system
         .set_drives(SideDrives {
             right: V::speed_drive(|_| 0.0),

@@ -70,7 +70,8 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
         let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
         let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
         let slope = instance.number(Setting::SideSlope);
-        let (mut system, y, _) = on_course::<V>(&terrain, slope).map_err(|e| built(&e))?;
+        let (mut system, y, _) =
+            on_course::<V>(V::declared_laws(), &terrain, slope).map_err(|e| built(&e))?;
         let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
             match instance.text(Setting::Drive) {
                 "speed" => {

@@ -89,7 +89,7 @@ fn native(t_end: f64, every: f64, (speed, turn): (f64, f64)) -> Vec<Vec<f64>> {
         width: 1.0,
         height: 0.1,
     };
-    let (mut system, mut y, _) = on_course::<M113>(&bump, 0.0).unwrap();
+    let (mut system, mut y, _) = on_course::<M113>(M113::declared_laws(), &bump, 0.0).unwrap();
     let drive = || M113::speed_drive(speed_ramp(1.0, 2.0, speed));
     let drives = SideDrives {
         right: drive(),

@@ -53,10 +53,9 @@ use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
     Differential, Driveline, FullSteer, HeadingHold, SideDrives, SpatialEngine, SpatialLaws,
-    SpatialSimulated, SpatialVehicleSystem, SteeringError, steer_drive_ratio,
+    SpatialSimulated, SpatialVehicleSystem, SteeringError, on_course, steer_drive_ratio,
 };
 use crate::terrain::Terrain;
-use crate::terrain::field::HeightField;
 use crate::vehicle::VehicleDynamics;
 
 /// The event's name in results.
@@ -149,10 +148,8 @@ pub fn corner<V: SpatialVehicleSystem>(
         _ => None,
     };
     let flat = Terrain::Flat { height: 0.0 };
-    let mut system = V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
-    let mut y = system
-        .assembled(&flat)
-        .map_err(|e| spatial_setup(EVENT, e))?;
+    let (mut system, mut y, _) =
+        on_course::<V>(laws, &flat, 0.0).map_err(|e| spatial_setup(EVENT, e))?;
     let acceleration = settings.acceleration;
     let ramp = move |t: f64| (acceleration * (t - SETTLE)).clamp(0.0, speed);
     let driveline = match (ratio, engine) {

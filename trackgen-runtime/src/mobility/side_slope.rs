@@ -30,10 +30,9 @@ use super::search::{Search, Trial, bisect};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
-    HeadingHold, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem,
+    HeadingHold, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem, on_course,
 };
 use crate::terrain::Terrain;
-use crate::terrain::field::HeightField;
 
 /// The event's name in results.
 pub const EVENT: &str = "side-slope";
@@ -101,12 +100,8 @@ pub fn traverse<V: SpatialVehicleSystem>(
 ) -> Result<Traverse, EventError> {
     settings.check(EVENT)?;
     slope_setting(EVENT, "the side slope (rise over run)", slope)?;
-    let field = HeightField::level().tilted(nalgebra::Vector2::new(0.0, slope));
-    let mut system = V::spatial(laws, field).map_err(|e| spatial_setup(EVENT, e))?;
-    let level = system
-        .assembled(&Terrain::Flat { height: 0.0 })
+    let (mut system, mut y, _) = on_course::<V>(laws, &Terrain::Flat { height: 0.0 }, slope)
         .map_err(|e| spatial_setup(EVENT, e))?;
-    let mut y = system.rolled(level.as_slice(), slope.atan());
     let (crawl, acceleration) = (settings.crawl, settings.acceleration);
     let ramp = move |t: f64| (acceleration * (t - SETTLE)).clamp(0.0, crawl);
     system

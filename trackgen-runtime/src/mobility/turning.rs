@@ -39,6 +39,7 @@ use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
     EngineEnvelope, SideDrives, SpatialLaws, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
+    on_course,
 };
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
@@ -108,10 +109,8 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
     tolerance: f64,
 ) -> Result<SteadyTurnRun, EventError> {
     let flat = Terrain::Flat { height: 0.0 };
-    let mut system = V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
-    let mut y = system
-        .assembled(&flat)
-        .map_err(|e| spatial_setup(EVENT, e))?;
+    let (mut system, mut y, _) =
+        on_course::<V>(laws, &flat, 0.0).map_err(|e| spatial_setup(EVENT, e))?;
     let ramp = |speed: f64| move |t: f64| speed * ((t - SETTLE) / RAMP).clamp(0.0, 1.0);
     system
         .set_drives(SideDrives {

@@ -1,12 +1,13 @@
 //! A declared spatial vehicle set on its course: the profile laid across
 //! the vehicle's whole width, tilted by a side slope, the vehicle
-//! assembled on it at rest heading along the course. The one start of the
-//! applications' 3-D main job and of the spatial FMU.
+//! assembled on it at rest heading along the course. The one start of
+//! every 3-D run: the applications' main job and modes, the spatial FMU
+//! and the mobility events.
 
 use nalgebra::{DVector, Vector2};
 use thiserror::Error;
 
-use super::{SpatialSimulated, SpatialVehicleSystem};
+use super::{SpatialLaws, SpatialSimulated, SpatialVehicleSystem};
 use crate::assembly::SideError;
 use crate::spatial::SpatialError;
 use crate::terrain::Terrain;
@@ -26,23 +27,30 @@ pub enum OnCourseError {
     Assembly(#[from] SideError),
 }
 
-/// The vehicle `V` under its declared laws on `terrain` laid across its
-/// width, with a side slope `side_slope` (rise over run to the left: the
-/// ground `z = s y` added), assembled at rest heading along `x`
-/// ([`SpatialSimulated::assembled`]) and, on a slope, turned onto it
-/// ([`SpatialSimulated::rolled`]): the system, its sprockets free, and
-/// its state; and the ground.
+/// The vehicle `V` under `laws` (its declared ones:
+/// [`SpatialVehicleSystem::declared_laws`]) on `terrain` laid across its
+/// width (level ground for level terrain at height 0, the same heights
+/// found without the profile), with a side slope `side_slope` (rise over
+/// run to the left: the ground `z = s y` added), assembled at rest heading
+/// along `x` ([`SpatialSimulated::assembled`]) and, on a slope, turned
+/// onto it ([`SpatialSimulated::rolled`]): the system, its sprockets
+/// free, and its state; and the ground.
 pub fn on_course<V: SpatialVehicleSystem>(
+    laws: SpatialLaws,
     terrain: &Terrain,
     side_slope: f64,
 ) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
+    let base = match terrain {
+        Terrain::Flat { height } if *height == 0.0 => FieldShape::Level,
+        _ => FieldShape::Profile(terrain.clone()),
+    };
     let field = HeightField {
-        base: FieldShape::Profile(terrain.clone()),
+        base,
         ..HeightField::level()
     }
     .tilted(Vector2::new(0.0, side_slope));
     field.check()?;
-    let mut system = V::spatial(V::declared_laws(), field.clone())?;
+    let mut system = V::spatial(laws, field.clone())?;
     let mut y = system.assembled(terrain)?;
     if side_slope != 0.0 {
         y = system.rolled(y.as_slice(), side_slope.atan());
