@@ -92,7 +92,9 @@ macro_rules! export_fmu {
 /// spatial model of `$vehicle` (a vehicle declared with a `tracks` block:
 /// both tracks and the hull in 3-D, [`Spatial`]) from the `cdylib` this
 /// is written in; [`write_fmu`]`::<Spatial<V>>` packs it as
-/// `<Name>Spatial.fmu`. One model per library, as [`export_fmu!`].
+/// `<Name>Spatial.fmu`. One model per library, as [`export_fmu!`]; with
+/// `powertrain = f`, the parameter `engine = 1` caps each sprocket's
+/// drive by that engine's envelope, else by the vehicle's declared one.
 ///
 /// ```ignore
 /// trackgen_fmu::export_spatial_fmu!(trackgen::vehicles::m113::M113);
@@ -102,5 +104,15 @@ macro_rules! export_spatial_fmu {
     ($vehicle:ty $(,)?) => {
         $crate::__export_fmi3!($crate::Spatial<$vehicle>, None);
         $crate::__export_fmi2!($crate::Spatial<$vehicle>, None);
+    };
+    ($vehicle:ty, powertrain = $powertrain:path $(,)?) => {
+        $crate::__export_fmi3!(
+            $crate::Spatial<$vehicle>,
+            Some($powertrain as fn() -> ::trackgen::vehicle::Powertrain)
+        );
+        $crate::__export_fmi2!(
+            $crate::Spatial<$vehicle>,
+            Some($powertrain as fn() -> ::trackgen::vehicle::Powertrain)
+        );
     };
 }

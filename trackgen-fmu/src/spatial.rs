@@ -14,10 +14,10 @@ use trackgen::nalgebra::DVector;
 use trackgen::scenario::{Range, Scenario};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
-    Driveline, HeadingHold, SPATIAL_COLUMNS, SideDrives, SpatialSimulated, SpatialVehicleSystem,
-    on_course, spatial_row,
+    Driveline, EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SideDrives, SpatialSimulated,
+    SpatialVehicleSystem, on_course, spatial_row,
 };
-use trackgen::vehicle::speed_ramp;
+use trackgen::vehicle::{Powertrain, speed_ramp};
 
 use crate::error::FmuError;
 use crate::instance::Instance;
@@ -58,6 +58,10 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
 
     fn default_experiment() -> (f64, f64) {
         (DURATION, Scenario::OUTPUT_EVERY)
+    }
+
+    fn declared_powertrain() -> Option<Powertrain> {
+        V::powertrain()
     }
 
     fn table() -> Result<Vec<Variable>, FmuError> {
@@ -112,6 +116,17 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
             ),
         };
         system.set_steering(hold).map_err(|e| built(&e))?;
+        if instance.integer(Setting::Engine) == 1 {
+            let powertrain = instance.engine.clone().ok_or_else(|| FmuError::Parameter {
+                name: "engine".into(),
+                value: "1".into(),
+                why: "this FMU has no engine: its vehicle declares no powertrain and \
+                      export_spatial_fmu! was given none"
+                    .into(),
+            })?;
+            let envelope = EngineEnvelope::new(powertrain).map_err(|e| built(&e))?;
+            system.set_envelope(Some(envelope));
+        }
         let tolerance = Some(instance.number(Setting::Tolerance))
             .filter(|t| *t > 0.0)
             .or(instance.master_tolerance())
@@ -196,8 +211,8 @@ fn range(role: Role) -> Option<Range> {
 }
 
 /// The spatial FMU's variables: the time; the course's, the speed
-/// profile's and the integrator's parameters as the planar FMU's (but the
-/// soil and the engine), the side slope and the steering; the inputs
+/// profile's, the engine's and the integrator's parameters as the planar
+/// FMU's (but the soil), the side slope and the steering; the inputs
 /// `target_speed` and `target_yaw_rate`; one output per recorded column
 /// ([`SPATIAL_COLUMNS`]) and the books' residual.
 fn table() -> Vec<Variable> {
@@ -226,7 +241,12 @@ fn table() -> Vec<Variable> {
     );
     for (name, kind, unit, description, start, setting) in scenario_settings() {
         let description = match setting {
-            Setting::Soil | Setting::Engine => continue,
+            Setting::Soil => continue,
+            Setting::Engine => "1: the engine's full-load envelope caps each sprocket's drive \
+                 (a side's share of the engine: the 3-D main job's --engine on its side drives), \
+                 through the powertrain export_spatial_fmu!(V, powertrain = f) was given, else the \
+                 vehicle's declared one (refused where there is neither); 0: the controllers alone"
+                .to_string(),
             Setting::Course => "the course, laid across the vehicle's whole width: flat, bump \
                  (a cosine bump 1 m wide), file (course_file), random (roughness, seed, \
                  course_length) or obstacle (obstacle, obstacle_at)"

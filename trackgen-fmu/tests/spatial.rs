@@ -7,8 +7,8 @@ use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{
-    Driveline, HeadingHold, SideDrives, SpatialSimulated, SpatialVehicleSystem, on_course,
-    spatial_row,
+    Driveline, EngineEnvelope, HeadingHold, SideDrives, SpatialSimulated, SpatialVehicleSystem,
+    on_course, spatial_row,
 };
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, speed_ramp};
@@ -83,14 +83,29 @@ fn run_fmu(instance: &mut Instance<Model>, t_end: f64, h: f64) -> Vec<Vec<f64>> 
 /// plain stepper's loop (its own steps to `t_end`, each row read from the
 /// step that covers it by the stepper's dense output, the gearbox's rule
 /// after each step): the rows at the points of [`grid`]`(t_end, every)`.
-fn native(t_end: f64, every: f64, (speed, turn): (f64, f64)) -> Vec<Vec<f64>> {
+/// With `engine`, the declared engine's envelope caps each side's drive.
+fn native(t_end: f64, every: f64, (speed, turn): (f64, f64), engine: bool) -> Vec<Vec<f64>> {
+    native_run(t_end, every, (speed, 2.0, turn), engine)
+}
+
+/// [`native`] to `speed` over `ramp` s, no turn within 3 s.
+fn native_with(t_end: f64, every: f64, (speed, ramp): (f64, f64), engine: bool) -> Vec<Vec<f64>> {
+    native_run(t_end, every, (speed, ramp, 90.0), engine)
+}
+
+fn native_run(
+    t_end: f64,
+    every: f64,
+    (speed, ramp, turn): (f64, f64, f64),
+    engine: bool,
+) -> Vec<Vec<f64>> {
     let bump = Terrain::Bump {
         centre: 12.0,
         width: 1.0,
         height: 0.1,
     };
     let (mut system, mut y, _) = on_course::<M113>(M113::declared_laws(), &bump, 0.0).unwrap();
-    let drive = || M113::speed_drive(speed_ramp(1.0, 2.0, speed));
+    let drive = || M113::speed_drive(speed_ramp(1.0, ramp, speed));
     let drives = SideDrives {
         right: drive(),
         left: drive(),
@@ -100,6 +115,10 @@ fn native(t_end: f64, every: f64, (speed, turn): (f64, f64)) -> Vec<Vec<f64>> {
     system
         .set_steering(HeadingHold::driver(turn.to_radians(), (8.0, 4.0), gauge))
         .unwrap();
+    if engine {
+        let powertrain = M113::powertrain().expect("the M113 declares its powertrain");
+        system.set_envelope(Some(EngineEnvelope::new(powertrain).unwrap()));
+    }
     let row = |system: &<M113 as SpatialVehicleSystem>::Spatial, t: f64, y: &DVector<f64>| {
         spatial_row(&system.outputs(t, y.as_slice()).unwrap()).to_vec()
     };
@@ -150,8 +169,42 @@ fn outputs_are_the_native_runs() {
     let t_end = 2.0;
     for h in [0.05, 0.01] {
         let fmu = run_fmu(&mut Instance::<Model>::new().unwrap(), t_end, h);
-        assert_same(&fmu, &native(t_end, h, (3.0, 90.0)));
+        assert_same(&fmu, &native(t_end, h, (3.0, 90.0), false));
     }
+}
+
+/// `engine = 1`: the declared engine's full-load envelope caps each
+/// side's drive, as `spatial --engine` on side drives; the run is the
+/// native one with that envelope, bit for bit. Driven to 10 m/s in 1 s
+/// the cap binds (the torque the controller asks is more than the
+/// envelope gives), so the run differs from the one without. An instance
+/// given no engine refuses `engine = 1` when the run is built.
+#[test]
+fn the_engine_caps_each_sides_drive() {
+    let (t_end, h) = (3.0, 0.05);
+    let mut without = Instance::<Model>::new().unwrap();
+    without.set_i32(&[reference("engine")], &[1]).unwrap();
+    without.enter_initialization().unwrap();
+    let e = without.exit_initialization().unwrap_err();
+    assert!(e.to_string().contains("no engine"), "{e}");
+    let mut instance = Instance::<Model>::with_engine(M113::powertrain()).unwrap();
+    instance.set_i32(&[reference("engine")], &[1]).unwrap();
+    instance
+        .set_f64(&[reference("profile_speed")], &[10.0])
+        .unwrap();
+    instance
+        .set_f64(&[reference("profile_ramp")], &[1.0])
+        .unwrap();
+    let fmu = run_fmu(&mut instance, t_end, h);
+    let capped = native_with(t_end, h, (10.0, 1.0), true);
+    assert_same(&fmu, &capped);
+    let free = native_with(t_end, h, (10.0, 1.0), false);
+    assert_ne!(capped.last(), free.last(), "the envelope never bound");
+    let e = Instance::<Model>::new()
+        .unwrap()
+        .set_i32(&[reference("engine")], &[2])
+        .unwrap_err();
+    assert!(e.to_string().starts_with("engine"), "{e}");
 }
 
 /// `steering = yaw_rate`: the heading wanted turns at the input's rate
@@ -237,7 +290,7 @@ fn bad_values_are_refused_by_name() {
         .iter()
         .map(|v| v.name.as_str())
         .collect();
-    for planar in ["drawbar_pull", "drive_torque", "soil", "engine"] {
+    for planar in ["drawbar_pull", "drive_torque", "soil"] {
         assert!(!names.contains(&planar), "{planar} is no spatial variable");
     }
     instance
