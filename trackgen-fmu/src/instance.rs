@@ -65,6 +65,10 @@ struct Running<P: Plant> {
     /// The drive's work, the energy and the dissipated work at the start,
     /// J.
     books: [f64; 3],
+    /// What reading a row finds once.
+    reader: P::Reader,
+    /// The last row read (its storage kept).
+    row: Vec<f64>,
 }
 
 /// An FMU instance of the model `P`: a vehicle `V` (one side in the
@@ -195,16 +199,19 @@ impl<P: Plant> Instance<P> {
         let march = March::from_state(integrator, y.clone(), t0, t_end)
             .map_err(|e| FmuError::Build(e.to_string()))?;
         let mut run = Running {
+            reader: P::reader(&system),
             system,
             march,
             pending: false,
             t: t0,
             y,
             books: [0.0; 3],
+            row: Vec::new(),
         };
         let (row, books) = observe::<P>(&mut run, t0)?;
         run.books = books;
         self.store_outputs(&row, books, books);
+        run.row = row;
         self.run = Some(run);
         self.inputs_changed = false;
         self.mode = Mode::Step;
@@ -242,6 +249,7 @@ impl<P: Plant> Instance<P> {
             Ok((row, books)) => {
                 let start = self.run.as_ref().expect("a run").books;
                 self.store_outputs(&row, start, books);
+                self.run.as_mut().expect("a run").row = row;
                 Ok(())
             }
             Err(e) => {
@@ -537,8 +545,13 @@ impl<P: Plant> Instance<P> {
 
 /// The recorded row at the communication point reached, and the books.
 fn observe<P: Plant>(run: &mut Running<P>, t: f64) -> Result<(Vec<f64>, [f64; 3]), FmuError> {
-    let mut row = Vec::new();
-    let books = P::observe(&mut run.system, t, run.y.as_slice(), &mut row)?;
+    let mut row = std::mem::take(&mut run.row);
+    let books = P::observe(
+        &mut run.system,
+        &run.reader,
+        (t, run.y.as_slice()),
+        &mut row,
+    )?;
     Ok((row, books))
 }
 

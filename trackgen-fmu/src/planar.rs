@@ -55,24 +55,27 @@ impl<V: Vehicle> Plant for V {
         march.settle(system, &mut |_| {})
     }
 
+    /// The books' columns (the motor's work, the energy, the dissipated
+    /// work), `usize::MAX` where one is not recorded.
+    type Reader = [usize; 3];
+
+    fn reader(system: &V::System) -> [usize; 3] {
+        let columns = system.columns();
+        [MOTOR_WORK, ENERGY, DISSIPATED]
+            .map(|name| columns.iter().position(|c| c == name).unwrap_or(usize::MAX))
+    }
+
     fn observe(
         system: &mut V::System,
-        t: f64,
-        y: &[f64],
+        books: &[usize; 3],
+        (t, y): (f64, &[f64]),
         row: &mut Vec<f64>,
     ) -> Result<[f64; 3], FmuError> {
+        row.clear();
         system
             .observe(t, y, row)
             .map_err(|e| FmuError::Run(e.to_string()))?;
-        let columns = system.columns();
-        let at = |name: &str| {
-            columns
-                .iter()
-                .position(|c| c == name)
-                .and_then(|i| row.get(i).copied())
-                .unwrap_or(f64::NAN)
-        };
-        Ok([at(MOTOR_WORK), at(ENERGY), at(DISSIPATED)])
+        Ok(books.map(|i| row.get(i).copied().unwrap_or(f64::NAN)))
     }
 
     fn set_input(

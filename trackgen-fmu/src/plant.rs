@@ -53,13 +53,20 @@ pub trait Plant: Sized + 'static {
     /// shifts), the integrator restarted where it asks.
     fn settle(system: &mut Self::System, march: &mut March) -> Result<(), SimulationError>;
 
-    /// The recorded row at `(t, y)` into `row` (one value per output
+    /// What [`observe`](Self::observe) finds once per run (where the books
+    /// sit among the recorded columns).
+    type Reader;
+
+    /// The run's [`Reader`](Self::Reader), from its system.
+    fn reader(system: &Self::System) -> Self::Reader;
+
+    /// The recorded row at `at`, `(t, y)`, into `row` (one value per output
     /// column), and the books: the drive's work, the energy held and the
     /// energy dissipated since the run's start, J.
     fn observe(
         system: &mut Self::System,
-        t: f64,
-        y: &[f64],
+        reader: &Self::Reader,
+        at: (f64, &[f64]),
         row: &mut Vec<f64>,
     ) -> Result<[f64; 3], FmuError>;
 

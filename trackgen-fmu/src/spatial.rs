@@ -141,10 +141,14 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
         Ok(())
     }
 
+    type Reader = ();
+
+    fn reader(_: &V::Spatial) {}
+
     fn observe(
         system: &mut V::Spatial,
-        t: f64,
-        y: &[f64],
+        _: &(),
+        (t, y): (f64, &[f64]),
         row: &mut Vec<f64>,
     ) -> Result<[f64; 3], FmuError> {
         let out = system
