@@ -23,10 +23,7 @@ m113 FMU_DIR); SPATIAL_JOB_DIR the default 3-D main job's output
    equals the job as in 2 (its CSV prints 16 significant digits).
 """
 
-import csv
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -35,42 +32,10 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
-TOLERANCE = 1e-9
+from fmu_compare import compare, fmusim_compare, read_csv
+
 STOP, STEP = 14.0, 0.01
 NAMES = ["M113Spatial.fmu", "M113Spatial-fmi2.fmu"]
-
-
-def read_csv(path, time="t"):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = [name.strip('"') for name in rows[0]]
-    values = np.array(rows[1:], dtype=float)
-    return {(time if name == "time" else name): values[:, i] for i, name in enumerate(header)}
-
-
-def compare(label, result, native):
-    """The largest difference over every output column, relative to the
-    column's largest magnitude (NaN where both are NaN counts as equal);
-    fails above TOLERANCE."""
-    assert np.allclose(result["time"], native["t"], rtol=0, atol=1e-12), \
-        f"{label}: the communication points"
-    worst, where = 0.0, None
-    for name, column in native.items():
-        if name == "t":
-            continue
-        got = result[name]
-        both_nan = np.isnan(got) & np.isnan(column)
-        assert np.array_equal(np.isnan(got), np.isnan(column)), f"{label}: {name}'s NaNs"
-        if both_nan.all():
-            continue
-        scale = max(np.nanmax(np.abs(column)), 1e-300)
-        diff = np.nanmax(np.abs(np.where(both_nan, 0.0, got - column))) / scale
-        if diff > worst:
-            worst, where = diff, name
-    print(f"{label}: {len(native) - 1} outputs at {len(native['t'])} points; "
-          f"largest difference {worst:.1e} of the column's range"
-          + (f" ({where})" if where else ""))
-    assert worst <= TOLERANCE, f"{label}: {where} differs by {worst:.2e}"
 
 
 def instance(path, messages):
@@ -128,14 +93,7 @@ def main():
     assert abs(heading - 0.9) < 0.05 and abs(yaw_rate) < 0.02
 
     if len(sys.argv) > 3:
-        fmusim = sys.argv[3]
-        for name in NAMES:
-            with tempfile.TemporaryDirectory() as tmp:
-                out = Path(tmp) / "out.csv"
-                subprocess.run([fmusim, "--interface-type", "cs", "--set-stop-time",
-                                "--stop-time", str(STOP), "--output-interval", str(STEP),
-                                "--output-file", str(out), str(fmu_dir / name)], check=True)
-                compare(f"fmusim {name}", read_csv(out, time="time"), native)
+        fmusim_compare(sys.argv[3], fmu_dir, NAMES, STOP, STEP, native)
 
     print("fmu-check-spatial: all checks passed")
 

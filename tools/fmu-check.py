@@ -21,10 +21,7 @@ course, 8 s, rows every 10 ms). Checks, each failing loudly:
    significant digits, so the difference is its rounding).
 """
 
-import csv
-import subprocess
 import sys
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -33,40 +30,13 @@ from fmpy.fmi1 import FMICallException
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
-TOLERANCE = 1e-9
+from fmu_compare import compare, fmusim_compare, read_csv
+
 STOP, STEP = 8.0, 0.01
 
 
 def native_rows(main_job_dir):
     return read_csv(Path(main_job_dir) / "all.csv")
-
-
-def read_csv(path, time="t"):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header = [name.strip('"') for name in rows[0]]
-    values = np.array(rows[1:], dtype=float)
-    return {(time if name == "time" else name): values[:, i] for i, name in enumerate(header)}
-
-
-def compare(label, result, native):
-    """The largest difference over every output column, relative to the
-    column's largest magnitude; fails above TOLERANCE."""
-    # (fmusim prints times with 16 significant digits.)
-    assert np.allclose(result["time"], native["t"], rtol=0, atol=1e-12), \
-        f"{label}: the communication points"
-    worst, where = 0.0, None
-    for name, column in native.items():
-        if name == "t":
-            continue
-        scale = max(np.max(np.abs(column)), 1e-300)
-        diff = np.max(np.abs(result[name] - column)) / scale
-        if diff > worst:
-            worst, where = diff, name
-    print(f"{label}: {len(native) - 1} outputs at {len(native['t'])} points; "
-          f"largest difference {worst:.1e} of the column's range"
-          + (f" ({where})" if where else ""))
-    assert worst <= TOLERANCE, f"{label}: {where} differs by {worst:.2e}"
 
 
 def stepped(path, start_values, n_steps, messages=None):
@@ -153,14 +123,7 @@ def main():
     print(f"two instances ({rate} {rates[0]:.0f} and {rates[1]:.0f} N m/rad), "
           f"stepped in turn for {n} steps: each equals its run alone")
     if len(sys.argv) > 3:
-        fmusim = sys.argv[3]
-        for name in ["M113.fmu", "M113-fmi2.fmu"]:
-            with tempfile.TemporaryDirectory() as tmp:
-                out = Path(tmp) / "out.csv"
-                subprocess.run([fmusim, "--interface-type", "cs", "--set-stop-time",
-                                "--stop-time", str(STOP), "--output-interval", str(STEP),
-                                "--output-file", str(out), str(fmu_dir / name)], check=True)
-                compare(f"fmusim {name}", read_csv(out, time="time"), native)
+        fmusim_compare(sys.argv[3], fmu_dir, ["M113.fmu", "M113-fmi2.fmu"], STOP, STEP, native)
 
     print("fmu-check: all checks passed")
 

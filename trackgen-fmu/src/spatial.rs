@@ -22,7 +22,9 @@ use trackgen::vehicle::{Powertrain, speed_ramp};
 use crate::error::FmuError;
 use crate::instance::Instance;
 use crate::plant::{Cells, Plant};
-use crate::variables::{Causality, Input, Kind, Role, Setting, Start, Variable, scenario_settings};
+use crate::variables::{
+    Causality, Input, Kind, Role, Setting, Start, Table, Variable, scenario_settings,
+};
 
 /// The spatial model of the vehicle `V` (declared with a `tracks`
 /// block), as an FMU's [`Plant`]:
@@ -220,29 +222,17 @@ fn range(role: Role) -> Option<Range> {
 /// `target_speed` and `target_yaw_rate`; one output per recorded column
 /// ([`SPATIAL_COLUMNS`]) and the books' residual.
 fn table() -> Vec<Variable> {
-    let mut table = Vec::new();
+    let mut table = Table::new();
     let mut push = |name: &str, kind, causality, unit, description: String, start, role| {
-        table.push(Variable {
-            name: name.to_string(),
-            value_reference: table.len() as u32,
-            kind,
-            causality,
-            unit,
+        table.push(
+            name.into(),
+            (kind, causality, unit),
             description,
             start,
             role,
-        });
+        );
     };
     use Causality::{Input as In, Output as Out, Parameter as P};
-    push(
-        "time",
-        Kind::Float64,
-        Causality::Independent,
-        "s",
-        "time".into(),
-        Start::Computed,
-        Role::Time,
-    );
     for (name, kind, unit, description, start, setting) in scenario_settings() {
         let description = match setting {
             Setting::Soil => continue,
@@ -321,16 +311,8 @@ fn table() -> Vec<Variable> {
             Role::Column(i),
         );
     }
-    push(
-        "books_residual",
-        Kind::Float64,
-        Out,
-        "1",
-        "the energy books since the start: (the drives' work - change of energy - dissipated) / the largest of the three".into(),
-        Start::Computed,
-        Role::BooksResidual,
-    );
-    table
+    table.books_residual("the drives' work");
+    table.0
 }
 
 /// The spatial model's own parameters: the side slope and the steering.

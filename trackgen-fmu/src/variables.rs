@@ -157,7 +157,7 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
         trackgen::vehicle::Drive::Free,
     ))
     .map_err(|e| FmuError::Build(e.to_string()))?;
-    let mut table = Vec::new();
+    let mut table = Table::new();
     let mut push = |name: String,
                     kind: Kind,
                     causality: Causality,
@@ -165,27 +165,8 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
                     description: String,
                     start: Start,
                     role: Role| {
-        let value_reference = table.len() as u32;
-        table.push(Variable {
-            name,
-            value_reference,
-            kind,
-            causality,
-            unit,
-            description,
-            start,
-            role,
-        });
+        table.push(name, (kind, causality, unit), description, start, role);
     };
-    push(
-        "time".into(),
-        Kind::Float64,
-        Causality::Independent,
-        "s",
-        "time".into(),
-        Start::Computed,
-        Role::Time,
-    );
     use Causality::Parameter as P;
     for (name, kind, unit, description, start, setting) in scenario_settings() {
         push(
@@ -275,16 +256,65 @@ pub fn table<V: Vehicle>() -> Result<Vec<Variable>, FmuError> {
             Role::Column(i),
         );
     }
-    push(
-        "books_residual".into(),
-        Kind::Float64,
-        Causality::Output,
-        "1",
-        "the energy books since the start: (motor work - change of energy - dissipated) / the largest of the three".into(),
-        Start::Computed,
-        Role::BooksResidual,
-    );
-    Ok(table)
+    table.books_residual("motor work");
+    Ok(table.0)
+}
+
+/// A table being written: each variable's value reference is its place,
+/// the independent variable `time` first.
+pub(crate) struct Table(pub(crate) Vec<Variable>);
+
+impl Table {
+    /// A table holding `time` alone.
+    pub(crate) fn new() -> Table {
+        let mut table = Table(Vec::new());
+        table.push(
+            "time".into(),
+            (Kind::Float64, Causality::Independent, "s"),
+            "time".into(),
+            Start::Computed,
+            Role::Time,
+        );
+        table
+    }
+
+    /// Adds a variable: its name, its type, causality and unit, what it
+    /// is, its start value and what the instance does with it.
+    pub(crate) fn push(
+        &mut self,
+        name: String,
+        (kind, causality, unit): (Kind, Causality, &'static str),
+        description: String,
+        start: Start,
+        role: Role,
+    ) {
+        let value_reference = self.0.len() as u32;
+        self.0.push(Variable {
+            name,
+            value_reference,
+            kind,
+            causality,
+            unit,
+            description,
+            start,
+            role,
+        });
+    }
+
+    /// Adds the output `books_residual`, the books weighed against the
+    /// `work` put in (the drive's, in words).
+    pub(crate) fn books_residual(&mut self, work: &str) {
+        self.push(
+            "books_residual".into(),
+            (Kind::Float64, Causality::Output, "1"),
+            format!(
+                "the energy books since the start: ({work} - change of energy - dissipated) / \
+                 the largest of the three"
+            ),
+            Start::Computed,
+            Role::BooksResidual,
+        );
+    }
 }
 
 /// The scenario's settings as the FMU's parameters: name, kind, unit,
