@@ -231,7 +231,7 @@ pub const APP: Graph = &[
     ),
     ("spatial_rows", &[]),
     ("spatial_frames", &[]),
-    ("spatial_driveline", &["offered"]),
+    ("spatial_driveline", &[]),
     (
         "spatial",
         &[

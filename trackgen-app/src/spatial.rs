@@ -24,8 +24,9 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialOutputs,
-    SpatialSimulated, SpatialVehicleSystem, on_course, spatial_row,
+    DrivelineAsked, EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy,
+    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, asked_driveline, on_course,
+    spatial_row,
 };
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::speed_ramp;
@@ -34,7 +35,7 @@ use trackgen_arrow::ArrowSink;
 use crate::cli::{self, CourseArgs, within};
 use crate::console::say;
 use crate::offered::Offered;
-use crate::spatial_driveline::{Asked, DrivelineKind, driveline};
+use crate::spatial_driveline::DrivelineKind;
 use crate::spatial_frames::Frames;
 use crate::spatial_rows::{shoe_columns, shoe_forces};
 
@@ -248,13 +249,15 @@ fn drive<V: SpatialVehicleSystem>(
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
     };
     let mass = system.outputs(0.0, y.as_slice())?.centre.mass;
-    let asked = Asked {
-        driveline: args.driveline,
+    let asked = DrivelineAsked {
+        driveline: args.driveline.into(),
         steer_ratio: args.steer_ratio,
         engine: args.engine,
         speed: args.speed,
+        powertrain: entry.engine(),
+        steer_ratios: &entry.steer_ratios,
     };
-    let (driveline, mut driven) = driveline::<V>(entry, &asked, (&system, mass), target)?;
+    let (driveline, mut driven) = asked_driveline::<V>(&asked, (&system, mass), target)?;
     system.set_driveline(driveline)?;
     system.start_engine(y.as_mut_slice());
     if args.engine && system.engine().is_none() {

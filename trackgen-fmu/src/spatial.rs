@@ -14,8 +14,8 @@ use trackgen::nalgebra::DVector;
 use trackgen::scenario::{Range, Scenario};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
-    Driveline, EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SideDrives, SpatialSimulated,
-    SpatialVehicleSystem, on_course, spatial_row,
+    DrivelineAsked, DrivelineKind, EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SpatialSimulated,
+    SpatialVehicleSystem, asked_driveline, on_course, spatial_row,
 };
 use trackgen::vehicle::{Powertrain, speed_ramp};
 
@@ -39,6 +39,9 @@ const DURATION: f64 = 14.0;
 const TURN_RANGE: Range = Range::closed(-360.0, 360.0, "from -360 to 360 degrees");
 /// A side slope's range, rise over run (the main job's `--side-slope`).
 const SLOPE_RANGE: Range = Range::closed(-1.0, 1.0, "from -1 to 1");
+/// A minimum steer ratio's range (the main job's `--steer-ratio`); 0
+/// besides, for none.
+const STEER_RATIO_RANGE: Range = Range::closed(1.01, 100.0, "0 (none) or from 1.01 to 100");
 /// A yaw rate's range, rad/s: at most the driver's largest
 /// ([`HeadingHold::DRIVER_MAX_YAW_RATE`]).
 const YAW_RATE_RANGE: Range = Range::closed(
@@ -76,7 +79,7 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
         let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
         let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
         let slope = instance.number(Setting::SideSlope);
-        let (mut system, y, _) =
+        let (mut system, mut y, _) =
             on_course::<V>(V::declared_laws(), &terrain, slope).map_err(|e| built(&e))?;
         let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
             match instance.text(Setting::Drive) {
@@ -91,13 +94,37 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
                 )),
             }
         };
-        let drives = SideDrives {
-            right: V::speed_drive(target()),
-            left: V::speed_drive(target()),
+        let engine = instance.integer(Setting::Engine) == 1;
+        if engine && instance.engine.is_none() {
+            return Err(FmuError::Parameter {
+                name: "engine".into(),
+                value: "1".into(),
+                why: "this FMU has no engine: its vehicle declares no powertrain and \
+                      export_spatial_fmu! was given none"
+                    .into(),
+            });
+        }
+        let mass = system
+            .outputs(0.0, y.as_slice())
+            .map_err(|e| built(&e))?
+            .centre
+            .mass;
+        let asked = DrivelineAsked {
+            driveline: DrivelineKind::named(instance.text(Setting::Driveline))
+                .unwrap_or(DrivelineKind::Sides),
+            steer_ratio: Some(instance.number(Setting::SteerRatio)).filter(|r| *r > 0.0),
+            engine,
+            speed: instance.number(Setting::Speed),
+            powertrain: instance
+                .engine
+                .clone()
+                .ok_or_else(|| "no engine".to_string()),
+            steer_ratios: &[],
         };
-        system
-            .set_driveline(Driveline::Sides(drives))
-            .map_err(|e| built(&e))?;
+        let (driveline, _) =
+            asked_driveline::<V>(&asked, (&system, mass), target).map_err(FmuError::Build)?;
+        system.set_driveline(driveline).map_err(|e| built(&e))?;
+        system.start_engine(y.as_mut_slice());
         let gauge = V::layout().gauge;
         let hold = match instance.text(Setting::Steering) {
             "yaw_rate" => {
@@ -118,15 +145,8 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
             ),
         };
         system.set_steering(hold).map_err(|e| built(&e))?;
-        if instance.integer(Setting::Engine) == 1 {
-            let powertrain = instance.engine.clone().ok_or_else(|| FmuError::Parameter {
-                name: "engine".into(),
-                value: "1".into(),
-                why: "this FMU has no engine: its vehicle declares no powertrain and \
-                      export_spatial_fmu! was given none"
-                    .into(),
-            })?;
-            let envelope = EngineEnvelope::new(powertrain).map_err(|e| built(&e))?;
+        if let (true, None, Some(powertrain)) = (engine, system.engine(), &instance.engine) {
+            let envelope = EngineEnvelope::new(powertrain.clone()).map_err(|e| built(&e))?;
             system.set_envelope(Some(envelope));
         }
         let tolerance = Some(instance.number(Setting::Tolerance))
@@ -178,6 +198,9 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
     }
 
     fn check_number(variable: &Variable, value: f64) -> Result<(), FmuError> {
+        if variable.role == Role::Setting(Setting::SteerRatio) && value == 0.0 {
+            return Ok(());
+        }
         match range(variable.role) {
             Some(range) if !range.contains(value) => Err(FmuError::Parameter {
                 name: variable.name.clone(),
@@ -195,6 +218,10 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
                 .contains(&value)
                 .then_some(())
                 .ok_or_else(|| "one of profile, speed".into()),
+            Setting::Driveline => ["sides", "brakes", "steer-ratio"]
+                .contains(&value)
+                .then_some(())
+                .ok_or_else(|| "one of sides, brakes, steer-ratio".into()),
             Setting::Steering => ["profile", "yaw_rate"]
                 .contains(&value)
                 .then_some(())
@@ -210,6 +237,7 @@ fn range(role: Role) -> Option<Range> {
         Role::Setting(Setting::SideSlope) => Some(SLOPE_RANGE),
         Role::Setting(Setting::Turn) => Some(TURN_RANGE),
         Role::Setting(Setting::TurnAt | Setting::TurnTime) => Some(Scenario::TIME_RANGE),
+        Role::Setting(Setting::SteerRatio) => Some(STEER_RATIO_RANGE),
         Role::Input(Input::TargetSpeed) => Some(Scenario::SPEED_RANGE),
         Role::Input(Input::TargetYawRate) => Some(YAW_RATE_RANGE),
         _ => None,
@@ -236,10 +264,12 @@ fn table() -> Vec<Variable> {
     for (name, kind, unit, description, start, setting) in scenario_settings() {
         let description = match setting {
             Setting::Soil => continue,
-            Setting::Engine => "1: the engine's full-load envelope caps each sprocket's drive \
-                 (a side's share of the engine: the 3-D main job's --engine on its side drives), \
-                 through the powertrain export_spatial_fmu!(V, powertrain = f) was given, else the \
-                 vehicle's declared one (refused where there is neither); 0: the controllers alone"
+            Setting::Engine => "1: through the engine (the powertrain export_spatial_fmu!(V, \
+                 powertrain = f) was given, else the vehicle's declared one; refused where there \
+                 is neither): on a differential with the engine's inertia declared, its speed a \
+                 state (governor, converter, ranges, lock-up); else its full-load envelope caps \
+                 each side's drive or the box's, as the 3-D main job's --engine; 0: the \
+                 controllers alone"
                 .to_string(),
             Setting::Course => "the course, laid across the vehicle's whole width: flat, bump \
                  (a cosine bump 1 m wide), file (course_file), random (roughness, seed, \
@@ -315,7 +345,8 @@ fn table() -> Vec<Variable> {
     table.0
 }
 
-/// The spatial model's own parameters: the side slope and the steering.
+/// The spatial model's own parameters: the side slope, the driveline and
+/// the steering.
 fn spatial_settings() -> [(
     &'static str,
     Kind,
@@ -323,7 +354,7 @@ fn spatial_settings() -> [(
     &'static str,
     Start,
     Setting,
-); 5] {
+); 7] {
     let (turn, turn_at, turn_time) = TURN;
     [
         (
@@ -333,6 +364,22 @@ fn spatial_settings() -> [(
             "the ground's side slope, rise over run to the left, -1 to 1 (the vehicle set on it at rest)",
             Start::Float64(0.0),
             Setting::SideSlope,
+        ),
+        (
+            "driveline",
+            Kind::String,
+            "",
+            "how the drive reaches the sprockets: sides (a speed controller on each), brakes (one on a differential, the driver braking the inner sprocket) or steer-ratio (one on a differential with a steer unit holding the sprockets' speed ratio at most steer_ratio); with engine = 1 on a differential, an engine whose inertia is declared has its speed as a state (the 3-D main job's --driveline and --engine)",
+            Start::String("sides".into()),
+            Setting::Driveline,
+        ),
+        (
+            "steer_ratio",
+            Kind::Float64,
+            "1",
+            "driveline = steer-ratio: the steer unit's minimum steer ratio, 1.01 to 100 (0: none, refused there)",
+            Start::Float64(0.0),
+            Setting::SteerRatio,
         ),
         (
             "steering",

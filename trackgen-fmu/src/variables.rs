@@ -111,6 +111,10 @@ pub enum Setting {
     TurnAt,
     /// `turn_time`, s.
     TurnTime,
+    /// `driveline`: sides, brakes or steer-ratio (3-D).
+    Driveline,
+    /// `steer_ratio`: the steer unit's minimum steer ratio (3-D).
+    SteerRatio,
 }
 
 /// The inputs.

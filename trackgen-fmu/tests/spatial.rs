@@ -7,8 +7,8 @@ use trackgen::integrate::Integrator;
 use trackgen::nalgebra::DVector;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{
-    Driveline, EngineEnvelope, HeadingHold, SideDrives, SpatialSimulated, SpatialVehicleSystem,
-    on_course, spatial_row,
+    Differential, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideDrives, SpatialEngine,
+    SpatialSimulated, SpatialVehicleSystem, on_course, spatial_row,
 };
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, speed_ramp};
@@ -83,21 +83,34 @@ fn run_fmu(instance: &mut Instance<Model>, t_end: f64, h: f64) -> Vec<Vec<f64>> 
 /// plain stepper's loop (its own steps to `t_end`, each row read from the
 /// step that covers it by the stepper's dense output, the gearbox's rule
 /// after each step): the rows at the points of [`grid`]`(t_end, every)`.
-/// With `engine`, the declared engine's envelope caps each side's drive.
-fn native(t_end: f64, every: f64, (speed, turn): (f64, f64), engine: bool) -> Vec<Vec<f64>> {
-    native_run(t_end, every, (speed, 2.0, turn), engine)
+/// The drive reaches the sprockets as `drives` says.
+fn native(t_end: f64, every: f64, (speed, turn): (f64, f64), drives: Drives) -> Vec<Vec<f64>> {
+    native_run(t_end, every, (speed, 2.0, turn), drives)
 }
 
 /// [`native`] to `speed` over `ramp` s, no turn within 3 s.
-fn native_with(t_end: f64, every: f64, (speed, ramp): (f64, f64), engine: bool) -> Vec<Vec<f64>> {
-    native_run(t_end, every, (speed, ramp, 90.0), engine)
+fn native_with(t_end: f64, every: f64, (speed, ramp): (f64, f64), drives: Drives) -> Vec<Vec<f64>> {
+    native_run(t_end, every, (speed, ramp, 90.0), drives)
+}
+
+/// How the native run's drive reaches the sprockets.
+#[derive(Clone, Copy)]
+enum Drives {
+    /// A speed drive on each side.
+    Sides,
+    /// The same, each capped by the declared engine's envelope.
+    Capped,
+    /// One speed drive on a differential with a steer unit of this
+    /// minimum steer ratio, the declared engine on its box, its speed a
+    /// state.
+    SteerUnit(f64),
 }
 
 fn native_run(
     t_end: f64,
     every: f64,
     (speed, ramp, turn): (f64, f64, f64),
-    engine: bool,
+    drives: Drives,
 ) -> Vec<Vec<f64>> {
     let bump = Terrain::Bump {
         centre: 12.0,
@@ -106,18 +119,31 @@ fn native_run(
     };
     let (mut system, mut y, _) = on_course::<M113>(M113::declared_laws(), &bump, 0.0).unwrap();
     let drive = || M113::speed_drive(speed_ramp(1.0, ramp, speed));
-    let drives = SideDrives {
-        right: drive(),
-        left: drive(),
+    let powertrain = || M113::powertrain().expect("the M113 declares its powertrain");
+    let driveline = match drives {
+        Drives::Sides | Drives::Capped => Driveline::Sides(SideDrives {
+            right: drive(),
+            left: drive(),
+        }),
+        Drives::SteerUnit(ratio) => {
+            let mut differential = Differential::with_steer_unit(
+                &M113::speed_drive(|_| 0.0),
+                Box::new(speed_ramp(1.0, ramp, speed)),
+                FullSteer::Ratio(ratio),
+            )
+            .unwrap();
+            differential.engine = Some(SpatialEngine::new(powertrain()).unwrap());
+            Driveline::Differential(differential)
+        }
     };
-    system.set_driveline(Driveline::Sides(drives)).unwrap();
+    system.set_driveline(driveline).unwrap();
+    system.start_engine(y.as_mut_slice());
     let gauge = M113::layout().gauge;
     system
         .set_steering(HeadingHold::driver(turn.to_radians(), (8.0, 4.0), gauge))
         .unwrap();
-    if engine {
-        let powertrain = M113::powertrain().expect("the M113 declares its powertrain");
-        system.set_envelope(Some(EngineEnvelope::new(powertrain).unwrap()));
+    if let Drives::Capped = drives {
+        system.set_envelope(Some(EngineEnvelope::new(powertrain()).unwrap()));
     }
     let row = |system: &<M113 as SpatialVehicleSystem>::Spatial, t: f64, y: &DVector<f64>| {
         spatial_row(&system.outputs(t, y.as_slice()).unwrap()).to_vec()
@@ -169,7 +195,7 @@ fn outputs_are_the_native_runs() {
     let t_end = 2.0;
     for h in [0.05, 0.01] {
         let fmu = run_fmu(&mut Instance::<Model>::new().unwrap(), t_end, h);
-        assert_same(&fmu, &native(t_end, h, (3.0, 90.0), false));
+        assert_same(&fmu, &native(t_end, h, (3.0, 90.0), Drives::Sides));
     }
 }
 
@@ -196,15 +222,57 @@ fn the_engine_caps_each_sides_drive() {
         .set_f64(&[reference("profile_ramp")], &[1.0])
         .unwrap();
     let fmu = run_fmu(&mut instance, t_end, h);
-    let capped = native_with(t_end, h, (10.0, 1.0), true);
+    let capped = native_with(t_end, h, (10.0, 1.0), Drives::Capped);
     assert_same(&fmu, &capped);
-    let free = native_with(t_end, h, (10.0, 1.0), false);
+    let free = native_with(t_end, h, (10.0, 1.0), Drives::Sides);
     assert_ne!(capped.last(), free.last(), "the envelope never bound");
     let e = Instance::<Model>::new()
         .unwrap()
         .set_i32(&[reference("engine")], &[2])
         .unwrap_err();
     assert!(e.to_string().starts_with("engine"), "{e}");
+}
+
+/// `driveline = steer-ratio` with `engine = 1`: one speed drive on a
+/// differential whose steer unit holds the sprockets' speed ratio (at
+/// most `steer_ratio`, the X200-4's first 2.31), the M113's declared
+/// engine on the box with its speed a state, as `spatial --driveline
+/// steer-ratio --steer-ratio 2.31 --engine`: the native run with that
+/// differential built by hand, bit for bit (the engine's columns
+/// numbers, not NaN). A steer unit with no ratio is refused when the run
+/// is built; a driveline that is no word of the three when set.
+#[test]
+fn a_differential_through_the_engine_is_the_native_runs() {
+    let (t_end, h) = (2.0, 0.05);
+    let mut instance = Instance::<Model>::with_engine(M113::powertrain()).unwrap();
+    instance
+        .set_string(reference("driveline"), "steer-ratio")
+        .unwrap();
+    instance
+        .set_f64(&[reference("steer_ratio")], &[2.31])
+        .unwrap();
+    instance.set_i32(&[reference("engine")], &[1]).unwrap();
+    let fmu = run_fmu(&mut instance, t_end, h);
+    assert_same(
+        &fmu,
+        &native(t_end, h, (3.0, 90.0), Drives::SteerUnit(2.31)),
+    );
+    let speed = columns(&instance)
+        .iter()
+        .position(|r| *r == reference("engine_speed"))
+        .unwrap();
+    assert!(fmu.iter().all(|row| row[speed].is_finite()));
+    let mut unset = Instance::<Model>::new().unwrap();
+    unset
+        .set_string(reference("driveline"), "steer-ratio")
+        .unwrap();
+    unset.enter_initialization().unwrap();
+    let e = unset.exit_initialization().unwrap_err();
+    assert!(e.to_string().contains("steer ratio"), "{e}");
+    let e = unset
+        .set_string(reference("driveline"), "neutral-pivot")
+        .unwrap_err();
+    assert!(e.to_string().starts_with("driveline"), "{e}");
 }
 
 /// `steering = yaw_rate`: the heading wanted turns at the input's rate
@@ -271,6 +339,7 @@ fn bad_values_are_refused_by_name() {
         ("turn_time", -1.0),
         ("target_yaw_rate", 2.0),
         ("target_speed", 30.0),
+        ("steer_ratio", 0.5),
     ] {
         let e = instance
             .set_f64(&[reference(name)], &[value])

@@ -32,6 +32,7 @@
 //! a differential steered by brakes or a steer unit ([`Driveline`]).
 //! [`SpatialSystem`] integrates the vehicle in time.
 
+mod asked;
 mod bodies;
 mod declared;
 mod drive;
@@ -47,6 +48,7 @@ mod steering;
 mod system;
 mod tensions;
 
+pub use asked::{DrivelineAsked, DrivelineKind, asked_driveline};
 use bodies::Bodies;
 pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, Driver};
