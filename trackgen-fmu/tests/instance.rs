@@ -8,8 +8,10 @@ use trackgen::simulate::{Output, Results, simulate};
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, VehicleConfig, speed_ramp};
 use trackgen::vehicles::m113::M113;
-use trackgen_fmu::variables::{Causality, Role};
-use trackgen_fmu::{FmuError, Instance, Mode, description};
+use trackgen_fmu::variables::Role;
+use trackgen_fmu::{FmuError, Instance, Mode};
+
+mod common;
 
 /// The main job's integrator at its default tolerances.
 const INTEGRATOR: Integrator = Integrator::DEFAULT;
@@ -325,34 +327,7 @@ fn every_course_kind_runs() {
 #[test]
 fn the_table_is_consistent() {
     let instance = Instance::<M113>::new().unwrap();
-    let table = instance.variables();
-    let mut names: Vec<&str> = table.iter().map(|v| v.name.as_str()).collect();
-    names.sort_unstable();
-    let n = names.len();
-    names.dedup();
-    assert_eq!(names.len(), n, "names are unique");
-    for (i, v) in table.iter().enumerate() {
-        assert_eq!(v.value_reference as usize, i);
-    }
-    assert_eq!(
-        table
-            .iter()
-            .filter(|v| v.causality == Causality::Independent)
-            .count(),
-        1
-    );
-    let xml = description::fmi3::<M113>(table);
-    for v in table {
-        if !v.unit.is_empty() && v.unit != "1" {
-            assert!(
-                xml.contains(&format!("<Unit name=\"{}\">", v.unit)),
-                "{}'s unit {} is defined",
-                v.name,
-                v.unit
-            );
-        }
-    }
-    assert!(xml.contains(&description::token::<M113>(table)));
+    common::assert_table_is_consistent::<M113>(instance.variables());
 }
 
 /// The guide's chapter lists every parameter and input (arms by their
