@@ -1,6 +1,7 @@
 """Checks what try.sh wrote for the Mule: every mobility event answered
-(a value, or a stall or failure with its reason); every steady turn's
-sprockets paying for its friction and rolling losses; the FMU valid by fmpy's
+(a value, or a stall or failure with its reason), the 3-D ones among
+them; every steady turn's sprockets paying for its friction and rolling
+losses; the 3-D run's 90° turn made; its 3-D modes written; the FMU valid by fmpy's
 checks, and its first 3 s simulated (settling, then the speed ramp),
 with and without the engine: every output finite, the hull driven
 forward.
@@ -18,7 +19,8 @@ from fmpy.validation import validate_fmu
 
 out = Path(sys.argv[1] if len(sys.argv) > 1 else "out")
 
-EVENTS = ["ride", "half-round", "step", "gap", "ditch", "barrier", "grade", "soil"]
+EVENTS = ["ride", "half-round", "step", "gap", "ditch", "barrier", "grade", "soil",
+          "side-slope", "turning"]
 rows = [json.loads(line) for line in (out / "mobility.jsonl").read_text().splitlines()
         if line.startswith("{")]
 for event in EVENTS:
@@ -41,6 +43,15 @@ for t in turns:
     lost = float(t["friction_dissipation"]) + float(t["rolling_loss"])
     assert abs(paid - lost) <= 1e-9 * lost, (paid, lost)
 print(f"steer: {len(turns)} turns, the tightest on {float(turns[1]['radius']):.2f} m")
+
+lines = (out / "spatial" / "spatial.csv").read_text().splitlines()
+header = lines[0].split(",")
+last = dict(zip(header, map(float, lines[-1].split(","))))
+# The driver's 90° turn to the left, held: the heading within 3°.
+assert abs(math.degrees(last["heading"]) - 90.0) < 3.0, last["heading"]
+print(f"spatial: heading {math.degrees(last['heading']):.1f}° after the 90° turn, "
+      f"{last['vx']:.2f}, {last['vy']:.2f} m/s")
+assert (out / "modes-spatial" / "modes-spatial.csv").stat().st_size > 0
 
 for fmu in [out / "fmu" / "Mule.fmu", out / "fmu" / "Mule-fmi2.fmu"]:
     problems = validate_fmu(str(fmu))

@@ -1,7 +1,8 @@
 //! The Mule: a light tracked carrier of about 4 t, one side of it
-//! declared for the pitch plane. A made-up vehicle, not a real one: its
-//! figures are round numbers of the right size for its class, chosen to
-//! show a declaration that is not the M113's.
+//! declared for the pitch plane and both in 3-D (its `tracks` block). A
+//! made-up vehicle, not a real one: its figures are round numbers of the
+//! right size for its class, chosen to show a declaration that is not the
+//! M113's.
 
 /// Engine speed per rpm, rad/s.
 const RPM: f64 = std::f64::consts::PI / 30.0;
@@ -61,6 +62,15 @@ trackgen::model! {
             final_drive: 4.5,
             gearbox_efficiency: 0.92,
             final_drive_efficiency: 0.97,
+        },
+        // Both sides in space: the tracks 1.6 m apart, the guides 10 mm
+        // of play each way, the whole hull (twice the side's share) with
+        // its roll, pitch and yaw inertias those of a uniform box 2.75 m
+        // long, 2.0 m wide and 1.2 m high.
+        tracks {
+            gauge: 1.6,
+            guide_play: 0.01,
+            hull { mass: 3000.0, inertia: (1360.0, 2800.0, 2890.0) },
         },
     }
 }

@@ -77,8 +77,9 @@ pub struct MobilityArgs {
     #[arg(long, value_name = "NAME")]
     pub vehicle: Option<String>,
     /// The events, comma-separated: ride, half-round, step, gap, ditch,
-    /// barrier, grade, soil, side-slope (default: all; side-slope, in
-    /// 3-D, for a vehicle declared with a `tracks` block).
+    /// barrier, grade, soil, side-slope, turning, cornering (default: all;
+    /// the last three, in 3-D, for a vehicle declared with a `tracks`
+    /// block).
     #[arg(long, value_delimiter = ',', value_parser = event_name)]
     pub events: Option<Vec<&'static str>>,
     /// Where to write, default out/mobility/<vehicle>.
