@@ -24,9 +24,8 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    DrivelineAsked, EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy,
-    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, asked_driveline, on_course,
-    spatial_row,
+    DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialOutputs,
+    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_course, spatial_row,
 };
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::speed_ramp;
@@ -248,7 +247,6 @@ fn drive<V: SpatialVehicleSystem>(
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
     };
-    let mass = system.outputs(0.0, y.as_slice())?.centre.mass;
     let asked = DrivelineAsked {
         driveline: args.driveline.into(),
         steer_ratio: args.steer_ratio,
@@ -257,17 +255,7 @@ fn drive<V: SpatialVehicleSystem>(
         powertrain: entry.engine(),
         steer_ratios: &entry.steer_ratios,
     };
-    let (driveline, mut driven) = asked_driveline::<V>(&asked, (&system, mass), target)?;
-    system.set_driveline(driveline)?;
-    system.start_engine(y.as_mut_slice());
-    if args.engine && system.engine().is_none() {
-        let envelope = EngineEnvelope::new(entry.engine()?)?;
-        driven.push_str(&format!(
-            ", capped by the engine's full-load envelope (at most {:.1} kW a side)",
-            envelope.powertrain().max_power() / 1e3
-        ));
-        system.set_envelope(Some(envelope));
-    }
+    let driven = drive_as_asked::<V>(&mut system, y.as_mut_slice(), &asked, target)?;
     let angle = args.turn.to_radians();
     system.set_steering(HeadingHold::driver(
         angle,

@@ -14,8 +14,8 @@ use trackgen::nalgebra::DVector;
 use trackgen::scenario::{Range, Scenario};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
-    DrivelineAsked, DrivelineKind, EngineEnvelope, HeadingHold, SPATIAL_COLUMNS, SpatialSimulated,
-    SpatialVehicleSystem, asked_driveline, on_course, spatial_row,
+    DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialSimulated,
+    SpatialVehicleSystem, drive_as_asked, on_course, spatial_row,
 };
 use trackgen::vehicle::{Powertrain, speed_ramp};
 
@@ -23,7 +23,7 @@ use crate::error::FmuError;
 use crate::instance::Instance;
 use crate::plant::{Cells, Plant};
 use crate::variables::{
-    Causality, Input, Kind, Role, Setting, Start, Table, Variable, scenario_settings,
+    Causality, Input, Kind, Role, Setting, SettingRow, Start, Table, Variable, scenario_settings,
 };
 
 /// The spatial model of the vehicle `V` (declared with a `tracks`
@@ -94,37 +94,21 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
                 )),
             }
         };
-        let engine = instance.integer(Setting::Engine) == 1;
-        if engine && instance.engine.is_none() {
-            return Err(FmuError::Parameter {
-                name: "engine".into(),
-                value: "1".into(),
-                why: "this FMU has no engine: its vehicle declares no powertrain and \
-                      export_spatial_fmu! was given none"
-                    .into(),
-            });
-        }
-        let mass = system
-            .outputs(0.0, y.as_slice())
-            .map_err(|e| built(&e))?
-            .centre
-            .mass;
         let asked = DrivelineAsked {
             driveline: DrivelineKind::named(instance.text(Setting::Driveline))
                 .unwrap_or(DrivelineKind::Sides),
             steer_ratio: Some(instance.number(Setting::SteerRatio)).filter(|r| *r > 0.0),
-            engine,
+            engine: instance.integer(Setting::Engine) == 1,
             speed: instance.number(Setting::Speed),
-            powertrain: instance
-                .engine
-                .clone()
-                .ok_or_else(|| "no engine".to_string()),
+            powertrain: instance.engine.clone().ok_or_else(|| {
+                "this FMU has no engine (engine = 1): its vehicle declares no powertrain and \
+                 export_spatial_fmu! was given none"
+                    .to_string()
+            }),
             steer_ratios: &[],
         };
-        let (driveline, _) =
-            asked_driveline::<V>(&asked, (&system, mass), target).map_err(FmuError::Build)?;
-        system.set_driveline(driveline).map_err(|e| built(&e))?;
-        system.start_engine(y.as_mut_slice());
+        drive_as_asked::<V>(&mut system, y.as_mut_slice(), &asked, target)
+            .map_err(FmuError::Build)?;
         let gauge = V::layout().gauge;
         let hold = match instance.text(Setting::Steering) {
             "yaw_rate" => {
@@ -145,10 +129,6 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
             ),
         };
         system.set_steering(hold).map_err(|e| built(&e))?;
-        if let (true, None, Some(powertrain)) = (engine, system.engine(), &instance.engine) {
-            let envelope = EngineEnvelope::new(powertrain.clone()).map_err(|e| built(&e))?;
-            system.set_envelope(Some(envelope));
-        }
         let tolerance = Some(instance.number(Setting::Tolerance))
             .filter(|t| *t > 0.0)
             .or(instance.master_tolerance())
@@ -347,14 +327,7 @@ fn table() -> Vec<Variable> {
 
 /// The spatial model's own parameters: the side slope, the driveline and
 /// the steering.
-fn spatial_settings() -> [(
-    &'static str,
-    Kind,
-    &'static str,
-    &'static str,
-    Start,
-    Setting,
-); 7] {
+fn spatial_settings() -> [SettingRow; 7] {
     let (turn, turn_at, turn_time) = TURN;
     [
         (

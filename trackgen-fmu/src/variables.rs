@@ -321,16 +321,20 @@ impl Table {
     }
 }
 
-/// The scenario's settings as the FMU's parameters: name, kind, unit,
-/// description and start value (the scenario's defaults).
-pub(crate) fn scenario_settings() -> [(
+/// A parameter as a table lists it: its name, kind, unit, description,
+/// start value and setting.
+pub(crate) type SettingRow = (
     &'static str,
     Kind,
     &'static str,
     &'static str,
     Start,
     Setting,
-); 16] {
+);
+
+/// The scenario's settings as the FMU's parameters: name, kind, unit,
+/// description and start value (the scenario's defaults).
+pub(crate) fn scenario_settings() -> [SettingRow; 16] {
     use Setting as S;
     [
         (

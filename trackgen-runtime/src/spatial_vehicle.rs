@@ -48,7 +48,7 @@ mod steering;
 mod system;
 mod tensions;
 
-pub use asked::{DrivelineAsked, DrivelineKind, asked_driveline};
+pub use asked::{DrivelineAsked, DrivelineKind, asked_driveline, drive_as_asked};
 use bodies::Bodies;
 pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
 pub use drive::{DriveState, Driver};

@@ -6,8 +6,9 @@
 //! envelope).
 
 use super::{
-    Differential, DifferentialSteer, Driveline, FullSteer, HeadingHold, SideDrives, SpatialEngine,
-    SpatialEngineError, SpatialSimulated, SpatialVehicleSystem, SteerDrive, SteeringBrakes,
+    Differential, DifferentialSteer, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideDrives,
+    SpatialEngine, SpatialEngineError, SpatialSimulated, SpatialVehicleSystem, SteerDrive,
+    SteeringBrakes,
 };
 use crate::vehicle::{Drive, Powertrain};
 
@@ -86,6 +87,38 @@ const BRAKE_OVER_DRIVE: f64 = 2.0;
 /// The driver's dead band on the steering brakes, m/s of the error of the
 /// belts' difference ([`SteeringBrakes::dead_band`]).
 const BRAKE_DEAD_BAND: f64 = 0.05;
+
+/// Sets the driveline `args` ask for on `system` at its state `y`
+/// ([`asked_driveline`], the vehicle's mass read at `y`), the engine whose
+/// speed is a state started at its idle, and, where `args` drive through
+/// an engine that is no state, its full-load envelope capping the drive:
+/// what to say of it, or why it cannot be. The one set-up of the 3-D
+/// main job's and the spatial FMU's drive.
+pub fn drive_as_asked<V: SpatialVehicleSystem>(
+    system: &mut V::Spatial,
+    y: &mut [f64],
+    args: &DrivelineAsked,
+    target: impl Fn() -> Box<dyn Fn(f64) -> f64 + Send>,
+) -> Result<String, String> {
+    let mass = system
+        .outputs(0.0, y)
+        .map_err(|e| e.to_string())?
+        .centre
+        .mass;
+    let (driveline, mut said) = asked_driveline::<V>(args, (system, mass), target)?;
+    system.set_driveline(driveline).map_err(|e| e.to_string())?;
+    system.start_engine(y);
+    if args.engine && system.engine().is_none() {
+        let envelope = EngineEnvelope::new(args.engine()?)
+            .map_err(|e| format!("{}'s powertrain: {e}", V::NAME))?;
+        said.push_str(&format!(
+            ", capped by the engine's full-load envelope (at most {:.1} kW a side)",
+            envelope.powertrain().max_power() / 1e3
+        ));
+        system.set_envelope(Some(envelope));
+    }
+    Ok(said)
+}
 
 /// The driveline `args` ask for of the vehicle `V` (its `system` and its
 /// `mass`, kg), with its speed drive toward `target` (m/s against time),

@@ -11,7 +11,7 @@ use super::{SpatialLaws, SpatialSimulated, SpatialVehicleSystem};
 use crate::assembly::SideError;
 use crate::spatial::SpatialError;
 use crate::terrain::Terrain;
-use crate::terrain::field::{FieldError, FieldShape, HeightField};
+use crate::terrain::field::{FieldError, HeightField};
 
 /// Why a spatial vehicle cannot be set on its course.
 #[derive(Debug, Error)]
@@ -29,8 +29,7 @@ pub enum OnCourseError {
 
 /// The vehicle `V` under `laws` (its declared ones:
 /// [`SpatialVehicleSystem::declared_laws`]) on `terrain` laid across its
-/// width (level ground for level terrain at height 0, the same heights
-/// found without the profile), with a side slope `side_slope` (rise over
+/// width ([`HeightField::profile`]), with a side slope `side_slope` (rise over
 /// run to the left: the ground `z = s y` added), assembled at rest heading
 /// along `x` ([`SpatialSimulated::assembled`]) and, on a slope, turned
 /// onto it ([`SpatialSimulated::rolled`]): the system, its sprockets
@@ -40,15 +39,7 @@ pub fn on_course<V: SpatialVehicleSystem>(
     terrain: &Terrain,
     side_slope: f64,
 ) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
-    let base = match terrain {
-        Terrain::Flat { height } if *height == 0.0 => FieldShape::Level,
-        _ => FieldShape::Profile(terrain.clone()),
-    };
-    let field = HeightField {
-        base,
-        ..HeightField::level()
-    }
-    .tilted(Vector2::new(0.0, side_slope));
+    let field = HeightField::profile(terrain).tilted(Vector2::new(0.0, side_slope));
     field.check()?;
     let mut system = V::spatial(laws, field.clone())?;
     let mut y = system.assembled(terrain)?;

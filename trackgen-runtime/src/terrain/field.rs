@@ -222,6 +222,20 @@ impl Grid {
 }
 
 impl HeightField {
+    /// `terrain`'s profile laid across the whole width, untilted: level
+    /// ground for level terrain at height 0 (the same heights, found
+    /// without the profile's lookup).
+    pub fn profile(terrain: &Terrain) -> HeightField {
+        let base = match terrain {
+            Terrain::Flat { height } if *height == 0.0 => FieldShape::Level,
+            _ => FieldShape::Profile(terrain.clone()),
+        };
+        HeightField {
+            base,
+            ..HeightField::level()
+        }
+    }
+
     /// Level ground at height 0.
     pub fn level() -> HeightField {
         HeightField {
