@@ -121,6 +121,8 @@ pub const GUIDE_PLAY: f64 = (0.051 - 0.0114) / 2.0;
 /// 1 ("an infinitely variable, hydrostatically controlled differential
 /// with a minimum steer ratio ... First 2.31:1 ... Fourth 1.22:1"), read
 /// as the outer sprocket's speed over the inner's at full steer.
+/// Declared with the powertrain (its `steer_ratios`), which every 3-D
+/// driveline, the pivot event, `steer` and the spatial FMU read.
 pub const STEER_RATIOS: [f64; 4] = [2.31, 1.58, 1.32, 1.22];
 /// The driver's seat, m, in the track-assembly frame: Chrono's
 /// `M113_Chassis` puts the driver at (0, 0.5, 1.2) m in the chassis
@@ -250,6 +252,7 @@ crate::model! {
             upshift: [UPSHIFT[0], UPSHIFT[1], UPSHIFT[2], UPSHIFT[3]],
             downshift: [DOWNSHIFT[0], DOWNSHIFT[1], DOWNSHIFT[2], DOWNSHIFT[3]],
             shift_time: SHIFT_TIME,
+            steer_ratios: [STEER_RATIOS[0], STEER_RATIOS[1], STEER_RATIOS[2], STEER_RATIOS[3]],
             engine_inertia: ENGINE_INERTIA,
             engine_drag: [
                 (0.0, 0.0),

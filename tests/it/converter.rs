@@ -43,6 +43,7 @@ fn a_driveline(engine: Vec<(f64, f64)>, capacity: Vec<(f64, f64)>) -> Driveline 
         reverse: None,
         shift: None,
         dynamics: None,
+        steer_ratios: vec![],
     }
 }
 
@@ -324,6 +325,28 @@ fn bad_driveline_data_is_refused() {
             ..
         }
     ));
+    assert!(matches!(
+        refused(&|d| d.steer_ratios.truncate(3)),
+        PowertrainError::SteerRatios {
+            count: 3,
+            ranges: 4
+        }
+    ));
+    assert!(matches!(
+        refused(&|d| d.steer_ratios[2] = 1.0),
+        PowertrainError::SteerRatio { range: 2, .. }
+    ));
+    assert!(matches!(
+        refused(&|d| d.steer_ratios[0] = f64::INFINITY),
+        PowertrainError::SteerRatio { range: 0, .. }
+    ));
+    // None declared: no steer unit, and nothing to refuse.
+    Driveline {
+        steer_ratios: Vec::new(),
+        ..good.clone()
+    }
+    .check()
+    .unwrap();
     // Every message names what is wrong.
     let message = refused(&|d| d.torque_ratio[3].1 = 1.5).to_string();
     assert!(

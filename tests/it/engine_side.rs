@@ -50,6 +50,7 @@ fn part_load_on_a_linear_torque_ratio_is_the_quadratic_s_root() {
         reverse: None,
         shift: None,
         dynamics: None,
+        steer_ratios: vec![],
     };
     driveline.check().unwrap();
     for wt in [0.0, 20.0, 60.0, 120.0, 200.0] {

@@ -118,7 +118,7 @@ fn the_smallest_turns_and_the_pivot_follow_the_theory() {
     let (unit, braked, pivoted) = std::thread::scope(|scope| {
         let unit = scope.spawn(|| smallest_radius::<Twin>(&settings, firm(), Some(2.31)));
         let braked = scope.spawn(|| smallest_radius::<Twin>(&settings, firm(), None));
-        let pivoted = pivot::<Twin>(&settings, firm(), &[]).expect("the pivot");
+        let pivoted = pivot::<Twin>(&settings, firm()).expect("the pivot");
         assert_eq!(pivoted.belts, 1.0, "without steer ratios, the crawl");
         let pivoted = pivoted.run;
         (
@@ -166,8 +166,8 @@ fn the_smallest_turns_and_the_pivot_follow_the_theory() {
     agrees("pivot", &pivoted, &theory_at(&vehicle, &pivoted));
 }
 
-/// With the M113A3's converter powertrain and the X200-4's published
-/// steer ratios, the `Twin` pivots in neutral at full steer: its belts
+/// With the M113A3's converter powertrain, which declares the X200-4's
+/// published steer ratios, the `Twin` pivots in neutral at full steer: its belts
 /// asked at `±k ω_e r / 2`, `k` the mean of each range's `q_r / N_r`
 /// (computed here from the published figures), `ω_e` the 6V53T's rated
 /// 2800 rpm and `r` the `Twin`'s rolling radius, to 1e-12; run there
@@ -176,7 +176,7 @@ fn the_smallest_turns_and_the_pivot_follow_the_theory() {
 fn with_published_steer_ratios_the_pivot_is_the_neutral_one() {
     use trackgen::vehicles::m113;
     let settings = EventSettings::new(m113::powertrain());
-    let turn = pivot::<Twin>(&settings, firm(), &m113::STEER_RATIOS).expect("the neutral pivot");
+    let turn = pivot::<Twin>(&settings, firm()).expect("the neutral pivot");
     let (asked, pivoted) = (turn.belts, turn.run);
     let k = m113::STEER_RATIOS
         .iter()

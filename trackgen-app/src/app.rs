@@ -84,7 +84,6 @@ impl Entry {
                 powertrain: V::powertrain(),
                 published: Vec::new(),
                 gauge: None,
-                steer_ratios: Vec::new(),
                 turn_runs: None,
                 spatial_events: None,
                 spatial_modes: None,
@@ -96,12 +95,14 @@ impl Entry {
     }
 
     /// [`of`](Self::of) a vehicle declared with a `tracks` block: its
-    /// `spatial` subcommand drives both tracks and the hull in 3-D.
+    /// `spatial` subcommand drives both tracks and the hull in 3-D, and
+    /// `steer` turns two of its planar tracks at its declared gauge.
     pub fn of_spatial<V: SpatialVehicleSystem>() -> Self {
         let mut entry = Entry {
             spatial: Some(crate::spatial::main::<V>),
             ..Entry::of::<V>()
         };
+        entry.offered.gauge = Some(V::layout().gauge);
         entry.offered.turn_runs = Some(crate::turn_runs::run_turns::<V>);
         entry.offered.spatial_modes = Some(crate::spatial_modes::modes_at_rest::<V>);
         entry.offered.spatial_fmu = Some(crate::fmu::pack::<trackgen_fmu::Spatial<V>>);
@@ -116,9 +117,7 @@ impl Entry {
                     ratio,
                 )
             },
-            pivot: |settings, ratios| {
-                trackgen::mobility::turning::pivot::<V>(settings, V::declared_laws(), ratios)
-            },
+            pivot: |settings| trackgen::mobility::turning::pivot::<V>(settings, V::declared_laws()),
             cornering: |settings, circle| {
                 trackgen::mobility::cornering::fastest::<V>(settings, V::declared_laws(), circle)
             },
@@ -140,17 +139,10 @@ impl Entry {
     }
 
     /// The real vehicle's gauge, m (its tracks' centre lines apart), which
-    /// `steer` turns two of its planar tracks at.
+    /// `steer` turns two of its planar tracks at: for a vehicle declared
+    /// without a `tracks` block (one declared with one has its gauge).
     pub fn gauge(mut self, gauge: f64) -> Self {
         self.offered.gauge = Some(gauge);
-        self
-    }
-
-    /// The real vehicle's steer ratios (the outer sprocket's speed over
-    /// the inner's at full steer, one per range), which `steer` turns at
-    /// unless `--ratio` gives others.
-    pub fn steer_ratios(mut self, ratios: &[f64]) -> Self {
-        self.offered.steer_ratios = ratios.to_vec();
         self
     }
 

@@ -20,10 +20,6 @@ pub struct Offered {
     /// The real vehicle's gauge (its tracks' centre lines apart), m, if
     /// published: what `steer` turns two of the planar tracks at.
     pub gauge: Option<f64>,
-    /// Its transmission's steer ratios (outer sprocket's speed over the
-    /// inner's at full steer), one per range, if published: the turns
-    /// `steer` makes besides its radii.
-    pub steer_ratios: Vec<f64>,
     /// Steady turns of its spatial model at belt speeds (right, left,
     /// m/s), for a vehicle declared with both tracks: what `steer
     /// --spatial` runs.
@@ -60,8 +56,9 @@ pub struct SpatialEvents {
     /// of the ratio given or else the braked differential
     /// (`turning::smallest_radius`).
     pub smallest_radius: fn(&EventSettings, Option<f64>) -> Result<SmallestTurn, EventError>,
-    /// The pivot turn (`turning::pivot`), with the published steer ratios.
-    pub pivot: fn(&EventSettings, &[f64]) -> Result<PivotTurn, EventError>,
+    /// The pivot turn (`turning::pivot`: in neutral where the settings'
+    /// powertrain declares steer ratios).
+    pub pivot: fn(&EventSettings) -> Result<PivotTurn, EventError>,
     /// The fastest steady turn on a circle of the radius given (m),
     /// through a steer unit of the ratio given or else the side drives
     /// (`cornering::fastest`).

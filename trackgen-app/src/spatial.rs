@@ -253,7 +253,6 @@ fn drive<V: SpatialVehicleSystem>(
         engine: args.engine,
         speed: args.speed,
         powertrain: entry.engine(),
-        steer_ratios: &entry.steer_ratios,
     };
     let driven = drive_as_asked::<V>(&mut system, y.as_mut_slice(), &asked, target)?;
     let angle = args.turn.to_radians();

@@ -184,7 +184,10 @@ fn estimate<V: Vehicle>(
         turns.push((Asked::Radius(radius), turn));
     }
     let ratios = if args.ratios.is_empty() {
-        &entry.steer_ratios
+        entry
+            .powertrain
+            .as_ref()
+            .map_or(&[][..], |p| p.steer_ratios())
     } else {
         &args.ratios
     };

@@ -13,16 +13,7 @@ use trackgen_app::{App, Entry};
 
 fn main() -> ExitCode {
     App::new()
-        .vehicle(
-            Entry::of_spatial::<M113>()
-                .published(&m113::PUBLISHED)
-                .gauge(m113::GAUGE)
-                .steer_ratios(&m113::STEER_RATIOS),
-        )
-        .vehicle(
-            Entry::of_spatial::<Marder>()
-                .published(&marder::PUBLISHED)
-                .gauge(marder::GAUGE),
-        )
+        .vehicle(Entry::of_spatial::<M113>().published(&m113::PUBLISHED))
+        .vehicle(Entry::of_spatial::<Marder>().published(&marder::PUBLISHED))
         .main()
 }

@@ -200,7 +200,7 @@ fn mobility_finds_the_steepest_side_slope_in_3d() {
 
 /// `mobility --quick --events turning --json` for the M113: the smallest
 /// radius at a crawl through its steer unit's first-range ratio (2.31,
-/// `Entry::steer_ratios`) beside its radius without slip, `B/2 (ρ + 1)/(ρ
+/// declared with its powertrain) beside its radius without slip, `B/2 (ρ + 1)/(ρ
 /// − 1)` at its 2.159 m gauge (to the printed digits), which slip only
 /// opens (measured 3.61 m against 2.73 m); and the X200-4's pivot in
 /// neutral at full steer, its belts at the steer drive's `±k ω_e r / 2`

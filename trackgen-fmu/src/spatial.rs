@@ -105,7 +105,6 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
                  export_spatial_fmu! was given none"
                     .to_string()
             }),
-            steer_ratios: &[],
         };
         drive_as_asked::<V>(&mut system, y.as_mut_slice(), &asked, target)
             .map_err(FmuError::Build)?;
@@ -198,10 +197,10 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
                 .contains(&value)
                 .then_some(())
                 .ok_or_else(|| "one of profile, speed".into()),
-            Setting::Driveline => ["sides", "brakes", "steer-ratio"]
-                .contains(&value)
-                .then_some(())
-                .ok_or_else(|| "one of sides, brakes, steer-ratio".into()),
+            Setting::Driveline => DrivelineKind::named(value).map(|_| ()).ok_or_else(|| {
+                let names: Vec<&str> = DrivelineKind::NAMES.iter().map(|(n, _)| *n).collect();
+                format!("one of {}", names.join(", "))
+            }),
             Setting::Steering => ["profile", "yaw_rate"]
                 .contains(&value)
                 .then_some(())
@@ -342,7 +341,7 @@ fn spatial_settings() -> [SettingRow; 7] {
             "driveline",
             Kind::String,
             "",
-            "how the drive reaches the sprockets: sides (a speed controller on each), brakes (one on a differential, the driver braking the inner sprocket) or steer-ratio (one on a differential with a steer unit holding the sprockets' speed ratio at most steer_ratio); with engine = 1 on a differential, an engine whose inertia is declared has its speed as a state (the 3-D main job's --driveline and --engine)",
+            "how the drive reaches the sprockets: sides (a speed controller on each), brakes (one on a differential, the driver braking the inner sprocket), steer-ratio (one on a differential with a steer unit holding the sprockets' speed ratio at most steer_ratio) or neutral-pivot (the differential's box held still, speed 0, the steer unit pivoting the vehicle at the steer drive's speed that the powertrain's declared steer ratios give); with engine = 1 on a differential, an engine whose inertia is declared has its speed as a state, and a steer unit whose powertrain declares steer ratios is geared to it unless steer_ratio is set (the 3-D main job's --driveline, --steer-ratio and --engine)",
             Start::String("sides".into()),
             Setting::Driveline,
         ),
@@ -350,7 +349,7 @@ fn spatial_settings() -> [SettingRow; 7] {
             "steer_ratio",
             Kind::Float64,
             "1",
-            "driveline = steer-ratio: the steer unit's minimum steer ratio, 1.01 to 100 (0: none, refused there)",
+            "driveline = steer-ratio: the steer unit's minimum steer ratio, 1.01 to 100 (0: the powertrain's first declared steer ratio, refused where it declares none)",
             Start::Float64(0.0),
             Setting::SteerRatio,
         ),

@@ -8,7 +8,7 @@ use trackgen::nalgebra::DVector;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{
     Differential, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideDrives, SpatialEngine,
-    SpatialSimulated, SpatialVehicleSystem, on_course, spatial_row,
+    SpatialSimulated, SpatialVehicleSystem, SteerDrive, on_course, spatial_row,
 };
 use trackgen::terrain::Terrain;
 use trackgen::vehicle::{Vehicle, speed_ramp};
@@ -106,6 +106,10 @@ enum Drives {
     /// minimum steer ratio, the declared engine on its box, its speed a
     /// state.
     SteerUnit(f64),
+    /// The same with the steer unit's full steer geared to the engine at
+    /// this ratio (the sprockets' speed difference over the engine's
+    /// speed).
+    SteerDrive(f64),
 }
 
 fn native_run(
@@ -127,11 +131,16 @@ fn native_run(
             right: drive(),
             left: drive(),
         }),
-        Drives::SteerUnit(ratio) => {
+        Drives::SteerUnit(_) | Drives::SteerDrive(_) => {
+            let full = match drives {
+                Drives::SteerDrive(k) => FullSteer::Engine(k),
+                Drives::SteerUnit(ratio) => FullSteer::Ratio(ratio),
+                _ => unreachable!(),
+            };
             let mut differential = Differential::with_steer_unit(
                 &M113::speed_drive(|_| 0.0),
                 Box::new(speed_ramp(1.0, ramp, speed)),
-                FullSteer::Ratio(ratio),
+                full,
             )
             .unwrap();
             differential.engine = Some(SpatialEngine::new(powertrain()).unwrap());
@@ -272,9 +281,89 @@ fn a_differential_through_the_engine_is_the_native_runs() {
     let e = unset.exit_initialization().unwrap_err();
     assert!(e.to_string().contains("steer ratio"), "{e}");
     let e = unset
-        .set_string(reference("driveline"), "neutral-pivot")
+        .set_string(reference("driveline"), "pivot")
         .unwrap_err();
     assert!(e.to_string().starts_with("driveline"), "{e}");
+}
+
+/// The steer ratios the M113 declares with its powertrain (the X200-4's
+/// 2.31, 1.58, 1.32 and 1.22) reach the FMU: `driveline = steer-ratio`
+/// with `engine = 1` and no `steer_ratio` gears the steer unit to the
+/// engine, as `spatial --driveline steer-ratio --engine` does, at the
+/// steer drive's ratio `k`, the mean over the ranges of
+/// `2 (ρ_r − 1)/(ρ_r + 1) / (N_r N_f)` computed here from the published
+/// figures (to 1e-12); the run is the native one with that steer drive
+/// built by hand, bit for bit.
+#[test]
+fn the_declared_steer_ratios_gear_the_steer_unit_to_the_engine() {
+    use trackgen::vehicles::m113;
+    let powertrain = M113::powertrain().expect("the M113 declares its powertrain");
+    assert_eq!(powertrain.steer_ratios(), m113::STEER_RATIOS);
+    let k = m113::STEER_RATIOS
+        .iter()
+        .zip(m113::RANGES)
+        .map(|(rho, n)| 2.0 * (rho - 1.0) / (rho + 1.0) / (n * m113::FINAL_DRIVE))
+        .sum::<f64>()
+        / 4.0;
+    let drive = SteerDrive::of(&powertrain)
+        .expect("one steer drive")
+        .expect("the M113 declares its steer ratios");
+    assert!(
+        (drive.ratio / k - 1.0).abs() < 1e-12,
+        "{} against {k}",
+        drive.ratio
+    );
+    let (t_end, h) = (2.0, 0.05);
+    let mut instance = Instance::<Model>::with_engine(Some(powertrain)).unwrap();
+    instance
+        .set_string(reference("driveline"), "steer-ratio")
+        .unwrap();
+    instance.set_i32(&[reference("engine")], &[1]).unwrap();
+    let fmu = run_fmu(&mut instance, t_end, h);
+    assert_same(
+        &fmu,
+        &native(t_end, h, (3.0, 90.0), Drives::SteerDrive(drive.ratio)),
+    );
+}
+
+/// `driveline = neutral-pivot`, the box held still (`profile_speed` 0)
+/// and the steer unit turning the sprockets apart at the speed the
+/// declared steer ratios give the steer drive: asked for 90° from 1 s
+/// over 3 s, the M113 pivots on the spot, its centre of mass moving
+/// less than 0.3 m in 7 s (measured 0.15 m) while its heading reaches
+/// 90° within 5° (measured 89.1°: the driver's hold on the heading); with
+/// a speed asked, refused.
+#[test]
+fn the_neutral_pivot_turns_on_the_spot() {
+    let mut instance = Instance::<Model>::with_engine(M113::powertrain()).unwrap();
+    instance.set_string(reference("course"), "flat").unwrap();
+    instance
+        .set_string(reference("driveline"), "neutral-pivot")
+        .unwrap();
+    instance
+        .set_f64(&[reference("profile_speed")], &[0.0])
+        .unwrap();
+    for (name, value) in [("turn", 90.0), ("turn_at", 1.0), ("turn_time", 3.0)] {
+        instance.set_f64(&[reference(name)], &[value]).unwrap();
+    }
+    let rows = run_fmu(&mut instance, 7.0, 0.1);
+    let at = |name: &str| {
+        let refs = columns(&instance);
+        refs.iter().position(|r| *r == reference(name)).unwrap()
+    };
+    let (x, y, heading) = (at("x"), at("y"), at("heading"));
+    let (first, last) = (&rows[0], rows.last().unwrap());
+    let moved = (last[x] - first[x]).hypot(last[y] - first[y]);
+    assert!(moved < 0.3, "the centre of mass moved {moved} m");
+    let turned = last[heading].to_degrees();
+    assert!((turned - 90.0).abs() < 5.0, "turned {turned}°");
+    let mut moving = Instance::<Model>::with_engine(M113::powertrain()).unwrap();
+    moving
+        .set_string(reference("driveline"), "neutral-pivot")
+        .unwrap();
+    moving.enter_initialization().unwrap();
+    let e = moving.exit_initialization().unwrap_err();
+    assert!(e.to_string().contains("a pivot in neutral stands"), "{e}");
 }
 
 /// `steering = yaw_rate`: the heading wanted turns at the input's rate

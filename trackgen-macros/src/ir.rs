@@ -188,6 +188,8 @@ pub struct Powertrain {
     /// The engine's inertia, drag, governor and lock-up clutch, if
     /// declared: its speed a state of the run.
     pub dynamics: Option<EngineDynamics>,
+    /// The steer unit's minimum steer ratios, one per range; empty: none.
+    pub steer_ratios: Vec<Num>,
 }
 
 /// A declared engine whose speed is a state: the runtime's

@@ -158,6 +158,7 @@ fn vehicle_with_a_powertrain() {
                 engine_inertia: 0.8,
                 engine_drag: [(0.0, 0.0), (300.0, -40.0)],
                 governor_time: 0.05,
+                steer_ratios: [2.0, 1.5],
             },
         }
     })));

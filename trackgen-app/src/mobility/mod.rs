@@ -188,9 +188,7 @@ fn run<V: Vehicle>(
         );
         return ExitCode::FAILURE;
     }
-    let spatial = entry
-        .spatial_events
-        .map(|events| (events, entry.steer_ratios.as_slice()));
+    let spatial = entry.spatial_events;
     let work = tasks::<V>(&settings, &footprint, &events, args.quick, spatial);
     let dir = args
         .out

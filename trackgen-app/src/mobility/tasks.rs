@@ -218,7 +218,7 @@ pub(super) fn tasks<'a, V: Vehicle>(
     footprint: &'a Footprint,
     events: &[&'static str],
     quick: bool,
-    spatial: Option<(SpatialEvents, &'a [f64])>,
+    spatial: Option<SpatialEvents>,
 ) -> Vec<Task<'a>> {
     const INCH: f64 = 0.0254;
     let pick = |all: &'static [f64], one: &'static [f64]| if quick { one } else { all };
@@ -329,14 +329,15 @@ pub(super) fn tasks<'a, V: Vehicle>(
 }
 
 /// The tasks of a 3-D event (`side-slope`, `turning`, `cornering`) of a
-/// vehicle with a spatial model, with its transmission's published
-/// minimum steer ratios (the steer unit's is the first).
+/// vehicle with a spatial model; a steer unit's turns at the first of
+/// the settings' powertrain's minimum steer ratios, where it declares
+/// them.
 fn spatial_tasks<'a>(
     event: &'static str,
     settings: &'a EventSettings,
-    (events, ratios): (SpatialEvents, &'a [f64]),
+    events: SpatialEvents,
 ) -> Vec<Task<'a>> {
-    let ratio = ratios.first().copied();
+    let ratio = settings.powertrain.steer_ratios().first().copied();
     let task = |parameter, quantity, unit, run| Task::new(event, parameter, (quantity, unit), run);
     match event {
         SIDE_SLOPE => vec![task(
@@ -365,7 +366,7 @@ fn spatial_tasks<'a>(
                 None,
                 quantity::PIVOT_YAW_RATE,
                 "rad/s",
-                Box::new(move || pivot_turn(events, settings, ratios)),
+                Box::new(move || pivot_turn(events, settings)),
             ),
         ],
     }
@@ -496,15 +497,12 @@ fn smallest_turn(
     })
 }
 
-/// The pivot turn (in neutral at full steer where the steer `ratios` are
-/// published, else at the crawl's belt speeds): its yaw rate and the
-/// power at both sprockets, named by the belts' speed.
-fn pivot_turn(
-    events: SpatialEvents,
-    settings: &EventSettings,
-    ratios: &[f64],
-) -> Result<Found, EventError> {
-    let PivotTurn { belts, run } = (events.pivot)(settings, ratios)?;
+/// The pivot turn (in neutral at full steer where the settings'
+/// powertrain declares steer ratios, else at the crawl's belt speeds):
+/// its yaw rate and the power at both sprockets, named by the belts'
+/// speed.
+fn pivot_turn(events: SpatialEvents, settings: &EventSettings) -> Result<Found, EventError> {
+    let PivotTurn { belts, run } = (events.pivot)(settings)?;
     let parameter = Some(("belts at ±", belts, "m/s"));
     let relation = steady(&run);
     Ok(Found::Curve {

@@ -97,6 +97,7 @@ fn powertrain(p: &Powertrain) -> TokenStream {
         (table(&p.engine), table(&p.capacity), table(&p.torque_ratio));
     let ranges = &p.ranges;
     let lockup = &p.lockup;
+    let steer_ratios = &p.steer_ratios;
     let Powertrain {
         lockup_speed_ratio,
         final_drive,
@@ -178,6 +179,7 @@ fn powertrain(p: &Powertrain) -> TokenStream {
             reverse: #reverse,
             shift: #shift,
             dynamics: #dynamics,
+            steer_ratios: ::std::vec![#(#steer_ratios),*],
         }))
     }
 }

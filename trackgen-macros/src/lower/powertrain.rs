@@ -14,7 +14,7 @@ use crate::ir::{ConstCheck, Powertrain};
 use crate::num::Num;
 
 /// The keys of a `powertrain { … }` section.
-const KEYS: [&str; 20] = [
+const KEYS: [&str; 21] = [
     "reverse",
     "upshift",
     "downshift",
@@ -35,6 +35,7 @@ const KEYS: [&str; 20] = [
     "lockup_capacity",
     "lockup_stiffness",
     "lockup_damping",
+    "steer_ratios",
 ];
 
 /// The side's share of the driveline's output when none is declared: a
@@ -89,6 +90,7 @@ impl Lowering<'_> {
             None => Some(None),
         };
         let dynamics = self.engine_dynamics(&fields);
+        let steer_ratios = self.steer_ratios(&fields, count);
         Some(Powertrain {
             engine: engine?,
             capacity: capacity?,
@@ -103,7 +105,63 @@ impl Lowering<'_> {
             shift: shift?,
             reverse: reverse?,
             dynamics: dynamics?,
+            steer_ratios: steer_ratios?,
         })
+    }
+
+    /// The steer unit's minimum steer ratios `[ρ₁, ρ₂, …]`, one per
+    /// declared range, each above 1 (the outer sprocket's speed over the
+    /// inner's at full steer); none declared: no steer unit.
+    fn steer_ratios(&mut self, fields: &Fields, count: Option<usize>) -> Option<Vec<Num>> {
+        let Some(expr) = fields.map.get("steer_ratios") else {
+            return Some(Vec::new());
+        };
+        let Expr::Array(list) = strip(expr) else {
+            self.errors.spanned(
+                expr,
+                "`steer_ratios` must be a list of minimum steer ratios `[ρ₁, ρ₂, …]`, one per range",
+            );
+            return None;
+        };
+        if let Some(count) = count
+            && list.elems.len() != count
+        {
+            self.errors.spanned(
+                list,
+                format!(
+                    "`steer_ratios` needs one ratio per range: {} given for {count} ranges",
+                    list.elems.len()
+                ),
+            );
+            return None;
+        }
+        let mut out = Vec::new();
+        let mut fine = true;
+        for element in &list.elems {
+            match self.eval(element, "steer_ratios") {
+                Ok(Num::Known(v)) if v <= 1.0 => {
+                    self.errors.spanned(
+                        element,
+                        format!(
+                            "a minimum steer ratio must be above 1 (at 1 the sprockets turn alike), found {v}"
+                        ),
+                    );
+                    fine = false;
+                }
+                Ok(value) => {
+                    if let Num::Expr(_) = value {
+                        self.checks.push(ConstCheck {
+                            span: element.span(),
+                            condition: quote!((#value) > 1.0 && (#value) <= f64::MAX),
+                            message: "a minimum steer ratio must be above 1 and finite".into(),
+                        });
+                    }
+                    out.push(value);
+                }
+                Err(()) => fine = false,
+            }
+        }
+        fine.then_some(out)
     }
 
     /// The shift schedule: `upshift` and `downshift`, one speed (rad/s,

@@ -221,27 +221,26 @@ pub fn smallest_radius<V: SpatialVehicleSystem>(
 /// The pivot turn of `V` under `laws` (the right belt forward: a turn to
 /// the left about the vehicle's centre), its drive capped by the
 /// settings' powertrain, at the settings' tolerance. A transmission whose
-/// minimum steer ratios `ratios` are published for the powertrain's
-/// ranges pivots in neutral at full steer: its belts at `±k ω_e r / 2`
+/// minimum steer ratios the powertrain declares for its ranges
+/// ([`Powertrain::steer_ratios`](crate::vehicle::Powertrain::steer_ratios))
+/// pivots in neutral at full steer: its belts at `±k ω_e r / 2`
 /// ([`SteerDrive`]: the steer drive's ratio, the engine at its rated
 /// speed, `r` the sprockets' rolling radius); any other vehicle at plus
 /// and minus the settings' crawl.
 pub fn pivot<V: SpatialVehicleSystem>(
     settings: &EventSettings,
     laws: SpatialLaws,
-    ratios: &[f64],
 ) -> Result<PivotTurn, EventError> {
     settings.check(EVENT)?;
     let envelope = envelope(settings, EVENT)?;
-    let v =
-        match SteerDrive::of(&settings.powertrain, ratios).map_err(|e| spatial_setup(EVENT, e))? {
-            Some(drive) => {
-                let system =
-                    V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
-                0.5 * drive.full_difference() * system.rolling_radius()
-            }
-            None => settings.crawl,
-        };
+    let v = match SteerDrive::of(&settings.powertrain).map_err(|e| spatial_setup(EVENT, e))? {
+        Some(drive) => {
+            let system =
+                V::spatial(laws, HeightField::level()).map_err(|e| spatial_setup(EVENT, e))?;
+            0.5 * drive.full_difference() * system.rolling_radius()
+        }
+        None => settings.crawl,
+    };
     let run = steady_turn::<V>(
         laws,
         [v, -v],

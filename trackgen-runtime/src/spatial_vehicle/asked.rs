@@ -27,9 +27,8 @@ pub enum DrivelineKind {
     /// The differential in neutral (a target speed of 0: its box held at rest),
     /// its steer unit turning the sprockets apart at the steer drive's
     /// speed with the engine at its rated speed: a pivot about the
-    /// vehicle's centre (the X200-4's; the vehicle's published steer
-    /// ratios and its converter powertrain's ranges give the steer
-    /// drive's ratio).
+    /// vehicle's centre (the X200-4's; its converter powertrain's steer
+    /// ratios and ranges give the steer drive's ratio).
     NeutralPivot,
 }
 
@@ -52,9 +51,10 @@ impl DrivelineKind {
     }
 }
 
-/// What a run asks of the driveline, and what the vehicle publishes for
-/// it.
-pub struct DrivelineAsked<'a> {
+/// What a run asks of the driveline, and the powertrain it has (whose
+/// transmission's minimum steer ratios, [`Powertrain::steer_ratios`],
+/// are the steer unit's where none is asked).
+pub struct DrivelineAsked {
     /// How the drive reaches the sprockets.
     pub driveline: DrivelineKind,
     /// The steer unit's minimum steer ratio, if given.
@@ -66,15 +66,20 @@ pub struct DrivelineAsked<'a> {
     /// The vehicle's powertrain, or why it has none (said where one is
     /// needed).
     pub powertrain: Result<Powertrain, String>,
-    /// Its transmission's published minimum steer ratios, one per range
-    /// (none if not published).
-    pub steer_ratios: &'a [f64],
 }
 
-impl DrivelineAsked<'_> {
+impl DrivelineAsked {
     /// The powertrain, or why there is none.
     fn engine(&self) -> Result<Powertrain, String> {
         self.powertrain.clone()
+    }
+
+    /// Its transmission's minimum steer ratios, one per range: none where
+    /// it has no powertrain or declares none.
+    fn steer_ratios(&self) -> &[f64] {
+        self.powertrain
+            .as_ref()
+            .map_or(&[], |powertrain| powertrain.steer_ratios())
     }
 }
 
@@ -160,8 +165,13 @@ pub fn asked_driveline<V: SpatialVehicleSystem>(
     if args.driveline == DrivelineKind::SteerRatio {
         let ratio = args
             .steer_ratio
-            .or(args.steer_ratios.first().copied())
-            .ok_or_else(|| format!("{} publishes no steer ratio: give --steer-ratio", V::NAME))?;
+            .or(args.steer_ratios().first().copied())
+            .ok_or_else(|| {
+                format!(
+                    "{}'s powertrain declares no steer ratios: give --steer-ratio",
+                    V::NAME
+                )
+            })?;
         let mut differential =
             Differential::with_steer_unit(&side, target(), FullSteer::Ratio(ratio))
                 .ok_or_else(not_speed)?;
@@ -169,7 +179,7 @@ pub fn asked_driveline<V: SpatialVehicleSystem>(
         if let Some(engine) = engine_on_box::<V>(args)? {
             if let (None, Some(drive), DifferentialSteer::Unit(unit)) = (
                 args.steer_ratio,
-                SteerDrive::of(&args.engine()?, args.steer_ratios)
+                SteerDrive::of(&args.engine()?)
                     .map_err(|e| format!("{}'s steer ratios: {e}", V::NAME))?,
                 &mut differential.steer,
             ) {
@@ -258,12 +268,12 @@ fn engine_said(engine: &SpatialEngine) -> String {
 
 /// The sprockets' speed difference at full steer in neutral that `args`
 /// ask for, rad/s, and what to say of it: `k ω_e`, `k` the steer drive's
-/// ratio that the vehicle's published steer ratios and its converter
-/// powertrain's ranges imply ([`SteerDrive`]) and `ω_e` the
+/// ratio that its converter powertrain's steer ratios and ranges imply
+/// ([`SteerDrive`]) and `ω_e` the
 /// engine's rated speed (the governor at full throttle). Refused, saying
 /// why: a speed asked (a pivot stands), `--engine` (it caps the box's
-/// drive, and no range drives the box in neutral), no published steer
-/// ratios or no converter powertrain, ratios that are not one per range.
+/// drive, and no range drives the box in neutral), no steer ratios
+/// declared or no converter powertrain.
 fn neutral_pivot<V: SpatialVehicleSystem>(args: &DrivelineAsked) -> Result<(f64, String), String> {
     if args.speed != 0.0 {
         return Err(format!(
@@ -277,13 +287,14 @@ fn neutral_pivot<V: SpatialVehicleSystem>(args: &DrivelineAsked) -> Result<(f64,
                 .into(),
         );
     }
-    if args.steer_ratios.is_empty() {
+    if args.steer_ratios().is_empty() {
         return Err(format!(
-            "{} publishes no steer ratio: a neutral pivot's steer drive is found from them",
+            "{}'s powertrain declares no steer ratios: a neutral pivot's steer drive is found \
+             from them",
             V::NAME
         ));
     }
-    let drive = SteerDrive::of(&args.engine()?, args.steer_ratios)
+    let drive = SteerDrive::of(&args.engine()?)
         .map_err(|e| format!("{}'s steer ratios: {e}", V::NAME))?
         .ok_or_else(|| {
             format!(

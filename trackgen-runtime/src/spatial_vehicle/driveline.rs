@@ -282,16 +282,14 @@ pub struct SteerDrive {
 }
 
 impl SteerDrive {
-    /// The steer drive that the minimum steer ratios `ratios` published
-    /// for `powertrain`'s ranges imply; `None` where there are no ratios
-    /// or the powertrain has no ranges (a converter's).
-    pub fn of(
-        powertrain: &Powertrain,
-        ratios: &[f64],
-    ) -> Result<Option<SteerDrive>, SteerRatiosError> {
+    /// The steer drive that `powertrain`'s minimum steer ratios
+    /// ([`Powertrain::steer_ratios`]) imply for its ranges; `None` where
+    /// it declares none or has no ranges (a converter's).
+    pub fn of(powertrain: &Powertrain) -> Result<Option<SteerDrive>, SteerRatiosError> {
         let Powertrain::Converter(converter) = powertrain else {
             return Ok(None);
         };
+        let ratios = &converter.steer_ratios;
         if ratios.is_empty() {
             return Ok(None);
         }

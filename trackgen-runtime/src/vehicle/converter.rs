@@ -79,6 +79,12 @@ pub struct Driveline {
     /// engine runs where the converter's steady match puts it
     /// ([`part_load`](Self::part_load)), with no inertia.
     pub dynamics: Option<EngineDynamics>,
+    /// The steer unit's minimum steer ratios, one per forward range,
+    /// range 1 first: the outer sprocket's speed over the inner's at full
+    /// steer (a steer-ratio transmission's, as the M113A3's X200-4
+    /// publishes them). Empty: the transmission has no steer unit, or its
+    /// ratios are not known. Each more than 1.
+    pub steer_ratios: Vec<f64>,
 }
 
 /// Where the engine and converter run at full load for one range at one
@@ -169,6 +175,20 @@ impl Driveline {
         }
         if let Some(shift) = &self.shift {
             shift.check(&self.ranges)?;
+        }
+        if !self.steer_ratios.is_empty() && self.steer_ratios.len() != self.ranges.len() {
+            return Err(PowertrainError::SteerRatios {
+                count: self.steer_ratios.len(),
+                ranges: self.ranges.len(),
+            });
+        }
+        if let Some((range, &ratio)) = self
+            .steer_ratios
+            .iter()
+            .enumerate()
+            .find(|(_, r)| !(r.is_finite() && **r > 1.0))
+        {
+            return Err(PowertrainError::SteerRatio { range, ratio });
         }
         if let Some(dynamics) = &self.dynamics {
             dynamics.check()?;

@@ -273,6 +273,16 @@ impl Powertrain {
         }
     }
 
+    /// Its transmission's minimum steer ratios, one per forward range
+    /// ([`Driveline::steer_ratios`]): empty for a powertrain with no steer
+    /// unit declared (every form but a converter's).
+    pub fn steer_ratios(&self) -> &[f64] {
+        match self {
+            Powertrain::Converter(driveline) => &driveline.steer_ratios,
+            _ => &[],
+        }
+    }
+
     /// The most power it gives the sprocket, W: `P`, or the map's largest
     /// `fraction · T ω` (at one of its points: between two the product of
     /// linear pieces is checked at its vertex too).

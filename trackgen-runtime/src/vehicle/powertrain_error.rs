@@ -81,6 +81,25 @@ pub enum PowertrainError {
         /// Which figure, and why.
         what: &'static str,
     },
+    /// Minimum steer ratios that are not one per forward range.
+    #[error("{count} minimum steer ratios for {ranges} ranges: one per range is needed")]
+    SteerRatios {
+        /// How many ratios.
+        count: usize,
+        /// How many ranges.
+        ranges: usize,
+    },
+    /// A minimum steer ratio not finite and more than 1 (at 1 the sprockets
+    /// turn alike: no steer).
+    #[error(
+        "range {range}'s (0-based) minimum steer ratio must be finite and more than 1, got {ratio}"
+    )]
+    SteerRatio {
+        /// The range (0-based).
+        range: usize,
+        /// Its ratio.
+        ratio: f64,
+    },
     /// A stage's efficiency or the side's share outside (0, 1].
     #[error("the driveline's {what} must be in (0, 1], got {value}")]
     Stage {
