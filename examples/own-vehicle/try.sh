@@ -29,7 +29,7 @@ $mule mobility --quick --json --out out/mobility \
 $mule modes --out out/modes
 
 # How it turns: two of its tracks 1.6 m apart, loaded as it rests.
-$mule steer --gauge 1.6 --out out/steer
+$mule steer --out out/steer
 
 # In 3-D (its tracks block): both tracks and the hull over the bump and
 # through a 90° turn, and its modes at rest with the hull's six motions.
