@@ -424,7 +424,7 @@ fn steer_spatial_runs_the_m113s_turns_near_the_theorys() {
 /// neutral, it pivots: its centre of mass stays within 0.25 m of where
 /// it stood, a tenth of the track's length on the ground (measured
 /// 0.15 m: the turn's centre is the tracks' loads', not the centre of
-/// mass). The Marder, which publishes no
+/// mass). The Marder, whose powertrain declares no
 /// steer ratio, is refused a steer unit without one, and a neutral pivot;
 /// the M113 a neutral pivot with a speed asked or through `--engine`
 /// (exit 1, saying why).
@@ -510,7 +510,7 @@ fn spatial_turns_through_each_driveline() {
     for (args, why) in [
         (
             &["--vehicle", "marder", "--speed", "0"][..],
-            "publishes no steer ratio",
+            "declares no steer ratios",
         ),
         (&["--speed", "3"][..], "--speed 0"),
         (&["--speed", "0", "--engine"][..], "--engine"),
