@@ -63,6 +63,7 @@ mod spatial_dynamics;
 mod spatial_engine;
 mod spatial_modes;
 mod spatial_scene;
+mod spatial_sides;
 mod spatial_slope;
 mod spatial_steering;
 mod spatial_straight;

@@ -1,6 +1,6 @@
 //! The main job in 3-D (`spatial`): the vehicle with both tracks and its
 //! hull floating in space, assembled on its course (the profile laid
-//! across its whole width), settled, driven to a target speed by a speed
+//! across its whole width, or each track on its own), settled, driven to a target speed by a speed
 //! controller on each sprocket (or one on a differential, steered by its
 //! brakes or a steer unit), over the course's bump, then steered through
 //! a turn by a driver holding a heading.
@@ -25,8 +25,9 @@ use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
     DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialOutputs,
-    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_course, spatial_row,
+    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_grounds, spatial_row,
 };
+use trackgen::terrain::course::CourseSpec;
 use trackgen::terrain::field::HeightField;
 use trackgen::vehicle::speed_ramp;
 use trackgen_arrow::ArrowSink;
@@ -54,6 +55,15 @@ pub struct SpatialArgs {
     /// The course, across the vehicle's whole width.
     #[command(flatten)]
     pub course: CourseArgs,
+    /// The ground under the left track alone: a terrain profile file as
+    /// `--course-file`'s, in place of the course there (the two blended
+    /// across the ground between the tracks). The profiles run along x: a
+    /// turn takes the tracks off them (`--turn 0` drives straight).
+    #[arg(long, value_name = "FILE.csv")]
+    pub left_course_file: Option<PathBuf>,
+    /// The ground under the right track alone, as `--left-course-file`.
+    #[arg(long, value_name = "FILE.csv")]
+    pub right_course_file: Option<PathBuf>,
     /// The turn, degrees to the left (negative: to the right), from -360
     /// to 360; 0 drives straight.
     #[arg(long, default_value_t = TURN, value_name = "DEG", value_parser = turn)]
@@ -118,6 +128,18 @@ pub const TURN_AT: f64 = 8.0;
 pub const TURN_TIME: f64 = 4.0;
 /// The default simulated time, s: the turn and 2 s after it.
 pub const DURATION: f64 = 14.0;
+/// The course as the summary says it: `course`, and the ground each
+/// track has of its own (`sides`: the right's, the left's).
+fn course_said(course: &CourseSpec, sides: &[Option<CourseSpec>; 2]) -> String {
+    let mut said = course.describe();
+    for (spec, track) in sides.iter().zip(["right", "left"]) {
+        if let Some(spec) = spec {
+            said.push_str(&format!(", under the {track} track {}", spec.describe()));
+        }
+    }
+    said
+}
+
 fn side_slope(s: &str) -> Result<f64, String> {
     within(
         s,
@@ -239,10 +261,21 @@ fn drive<V: SpatialVehicleSystem>(
 ) -> Result<(), Box<dyn Error>> {
     let course = args.course.spec(args.speed, args.duration);
     let terrain = course.terrain()?;
+    let sides = [&args.right_course_file, &args.left_course_file]
+        .map(|file| file.as_ref().map(|path| CourseSpec::File(path.clone())));
+    let mut grounds = [terrain.clone(), terrain.clone()];
+    for (ground, spec) in grounds.iter_mut().zip(&sides) {
+        if let Some(spec) = spec {
+            *ground = spec.terrain()?;
+        }
+    }
     let layout = V::layout();
     let assembling = Instant::now();
-    let (mut system, mut y, ground) =
-        on_course::<V>(V::declared_laws(), &terrain, args.side_slope)?;
+    let (mut system, mut y, ground) = on_grounds::<V>(
+        V::declared_laws(),
+        (&grounds[0], &grounds[1]),
+        args.side_slope,
+    )?;
     let assembly = assembling.elapsed().as_secs_f64();
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
@@ -276,7 +309,7 @@ fn drive<V: SpatialVehicleSystem>(
         args.settle,
         args.speed,
         args.ramp,
-        course.describe(),
+        course_said(&course, &sides),
         args.turn.abs(),
         if args.turn >= 0.0 { "left" } else { "right" },
         args.turn_at,

@@ -29,7 +29,7 @@ pub(crate) use belt::longest_upper_span;
 pub use error::{AssemblyError, LinkCounts, START_PENETRATION, SlackLimit, Touching};
 pub use path::PitchCircle;
 use path::{Path, Place};
-pub use sides::{AssembledSides, SideError, assemble_sides};
+pub use sides::{AssembledSides, SideError, assemble_on_grounds, assemble_sides};
 pub use vehicle::{Assembled, assemble};
 
 /// The most the upper run may sag: a quarter of a span's length, below

@@ -71,8 +71,41 @@ where
     R: TrackModel<DR>,
     L: TrackModel<DL>,
 {
+    assemble_on_grounds(
+        hull,
+        (right, left),
+        sides,
+        (shoe, profile),
+        (terrain, terrain),
+        x,
+        clearance,
+    )
+}
+
+/// [`assemble_sides`] with each track on its own ground (`grounds`:
+/// under the right track, under the left): the hull lowered until the
+/// first track comes within `clearance` (m) of its ground, the other
+/// resting as its wheels put it. A ground that is invalid, or that a
+/// track would start in, is an error of that track's side.
+pub fn assemble_on_grounds<H, const DH: usize, R, const DR: usize, L, const DL: usize>(
+    hull: &H,
+    (right, left): (&R, &L),
+    sides: &[Side],
+    (shoe, profile): (&ShoeGeometry, &ToothProfile),
+    (right_ground, left_ground): (&Terrain, &Terrain),
+    x: f64,
+    clearance: f64,
+) -> Result<AssembledSides<DH, DR, DL>, SideError>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
     let on = |side: Side| move |error: AssemblyError| SideError { side, error };
-    terrain.check().map_err(|e| on(Side::Right)(e.into()))?;
+    right_ground
+        .check()
+        .map_err(|e| on(Side::Right)(e.into()))?;
+    left_ground.check().map_err(|e| on(Side::Left)(e.into()))?;
     let parts = |side: Side| -> Vec<ChassisPart> {
         H::PARTS
             .iter()
@@ -89,8 +122,8 @@ where
     let mut l =
         Gear::tensioned(left, hull, &left_parts, &mut qh, shoe, profile).map_err(on(Side::Left))?;
     let drop = r
-        .drop(shoe, terrain, clearance)
-        .min(l.drop(shoe, terrain, clearance));
+        .drop(shoe, right_ground, clearance)
+        .min(l.drop(shoe, left_ground, clearance));
     r.lower(&mut qh, drop);
     // Both sides share the hull: lower the left's circles alone.
     l.lower(&mut SVector::<f64, DH>::zeros(), drop);
@@ -103,11 +136,19 @@ where
         (&qr, &qh),
         shoe,
         profile,
-        terrain,
+        right_ground,
     )
     .map_err(on(Side::Right))?;
-    check_start(left, hull, &left_parts, (&ql, &qh), shoe, profile, terrain)
-        .map_err(on(Side::Left))?;
+    check_start(
+        left,
+        hull,
+        &left_parts,
+        (&ql, &qh),
+        shoe,
+        profile,
+        left_ground,
+    )
+    .map_err(on(Side::Left))?;
     Ok(AssembledSides {
         hull: qh,
         right: qr,

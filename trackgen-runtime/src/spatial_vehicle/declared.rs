@@ -12,7 +12,7 @@ use super::{
     SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialScene, SpatialSystem, SteeringError,
     TreeState,
 };
-use crate::assembly::{SideError, assemble_sides};
+use crate::assembly::{SideError, assemble_on_grounds};
 use crate::contact::axial::GuideLaw;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, TrackModel};
@@ -32,7 +32,15 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// tracks 1 mm above the ground at their lowest, at rest, nothing
     /// dissipated or driven yet; each tensioner's spring set where the
     /// assembly put its arm ([`SpatialDynamics::set_tensioners`](super::SpatialDynamics::set_tensioners)).
-    fn assembled(&mut self, terrain: &Terrain) -> Result<DVector<f64>, SideError>;
+    fn assembled(&mut self, terrain: &Terrain) -> Result<DVector<f64>, SideError> {
+        self.assembled_on((terrain, terrain))
+    }
+
+    /// [`assembled`](Self::assembled) with each track on its own ground
+    /// (`grounds`: the profile under the right track, under the left):
+    /// the hull lowered until the first track is 1 mm above its ground,
+    /// the other resting as its wheels put it.
+    fn assembled_on(&mut self, grounds: (&Terrain, &Terrain)) -> Result<DVector<f64>, SideError>;
 
     /// The state `y` of the vehicle at rest heading along `x` set on a
     /// side slope turned `roll` rad about `x` ([`SpatialSystem::rolled`]).
@@ -143,15 +151,14 @@ where
     R: TrackModel<DR> + Sync,
     L: TrackModel<DL> + Sync,
 {
-    fn assembled(&mut self, terrain: &Terrain) -> Result<DVector<f64>, SideError> {
+    fn assembled_on(&mut self, grounds: (&Terrain, &Terrain)) -> Result<DVector<f64>, SideError> {
         let d = &self.dynamics;
-        let sides = assemble_sides(
+        let sides = assemble_on_grounds(
             d.hull.model(),
             (d.right.model(), d.left.model()),
             &d.sides,
-            &d.shoe,
-            &d.profile,
-            terrain,
+            (&d.shoe, &d.profile),
+            grounds,
             0.0,
             CLEARANCE,
         )?;

@@ -1,5 +1,6 @@
 //! A declared spatial vehicle set on its course: the profile laid across
-//! the vehicle's whole width, tilted by a side slope, the vehicle
+//! the vehicle's whole width (or each track on its own), tilted by a side
+//! slope, the vehicle
 //! assembled on it at rest heading along the course. The one start of
 //! every 3-D run: the applications' main job and modes, the spatial FMU
 //! and the mobility events.
@@ -39,10 +40,26 @@ pub fn on_course<V: SpatialVehicleSystem>(
     terrain: &Terrain,
     side_slope: f64,
 ) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
-    let field = HeightField::profile(terrain).tilted(Vector2::new(0.0, side_slope));
+    on_grounds::<V>(laws, (terrain, terrain), side_slope)
+}
+
+/// [`on_course`] with each track on its own profile (`grounds`: under
+/// the right track, under the left; [`HeightField::sides`], blended
+/// across the ground between the tracks, the gauge less the track's
+/// width), each track assembled on its own
+/// ([`SpatialSimulated::assembled_on`]). The same as [`on_course`] where
+/// the two are the same.
+pub fn on_grounds<V: SpatialVehicleSystem>(
+    laws: SpatialLaws,
+    (right, left): (&Terrain, &Terrain),
+    side_slope: f64,
+) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
+    let layout = V::layout();
+    let between = layout.gauge - layout.shoe_width;
+    let field = HeightField::sides(right, left, between).tilted(Vector2::new(0.0, side_slope));
     field.check()?;
     let mut system = V::spatial(laws, field.clone())?;
-    let mut y = system.assembled(terrain)?;
+    let mut y = system.assembled_on((right, left))?;
     if side_slope != 0.0 {
         y = system.rolled(y.as_slice(), side_slope.atan());
     }

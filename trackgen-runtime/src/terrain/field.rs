@@ -236,6 +236,27 @@ impl HeightField {
         }
     }
 
+    /// Each track on its own profile, untilted: `right` under the right
+    /// track (`y < 0`), `left` under the left, blended linearly across
+    /// a band `band` m wide about the vehicle's centre line `y = 0` (the
+    /// gauge less the track's width leaves every point of each track on
+    /// its own profile while it runs along `x`); where the two are the
+    /// same, [`profile`](Self::profile) of it, the same heights.
+    pub fn sides(right: &Terrain, left: &Terrain, band: f64) -> HeightField {
+        if right == left {
+            return HeightField::profile(right);
+        }
+        HeightField {
+            base: FieldShape::Sides {
+                left: left.clone(),
+                right: right.clone(),
+                divide: 0.0,
+                band,
+            },
+            ..HeightField::level()
+        }
+    }
+
     /// Level ground at height 0.
     pub fn level() -> HeightField {
         HeightField {

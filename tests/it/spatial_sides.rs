@@ -1,0 +1,161 @@
+//! Each track on its own ground ([`on_grounds`], [`HeightField::sides`]):
+//! the mirrored light carrier (`Twin`) driven straight at 2 m/s with a
+//! cosine bump 60 mm high and 1 m long under one track alone, the other
+//! on level ground.
+//!
+//! - The bump under the left track and the same bump under the right
+//!   give mirror images (#41's check of a model with no preferred side):
+//!   the heave, pitch and progress the same, the roll, heading and
+//!   sideways place reversed, the sides' sprocket torques exchanged, to
+//!   1e-9 (fixed RK4 steps, so both runs take the same steps; measured
+//!   3.5e-11).
+//! - The bumped side rises: the hull rolls away from the bump, and by
+//!   less than the rigid bound `atan(h / B)` (the whole bumped track
+//!   lifted by the bump's height `h`, `B` the gauge: the bump lifts only
+//!   the wheels on it, and the suspension takes part of that: measured
+//!   0.0129 rad of 0.0333).
+//! - One ground under both tracks is the course laid across the width:
+//!   the same field and, through the assembly, the same state, bit for
+//!   bit.
+
+use trackgen::integrate::{Integrator, OdeSystem};
+use trackgen::nalgebra::DVector;
+use trackgen::spatial::SpatialVehicle;
+use trackgen::spatial_vehicle::{
+    SideDrives, SpatialSimulated, SpatialVehicleSystem, on_course, on_grounds,
+};
+use trackgen::terrain::Terrain;
+use trackgen::terrain::field::{FieldShape, HeightField};
+
+use crate::support::twin::{System, Twin, belt};
+
+/// The bump: 60 mm high, 1 m long, its crest 2.5 m ahead (the `Twin`
+/// assembles with its hull's centroid over x = 0).
+fn bump() -> Terrain {
+    Terrain::Bump {
+        centre: 2.5,
+        width: 1.0,
+        height: 0.06,
+    }
+}
+
+fn level() -> Terrain {
+    Terrain::Flat { height: 0.0 }
+}
+
+/// Fixed steps: both mirrored runs take the same ones.
+const FIXED: Integrator = Integrator::Rk4 { step: 1e-4 };
+/// How long each run lasts, s: some 4.7 m driven, the bump under the
+/// track's rear half by then.
+const DURATION: f64 = 2.6;
+/// The rows' interval, s.
+const EVERY: f64 = 0.05;
+
+/// What a row shows: heave-free height and pitch, progress, roll,
+/// heading, sideways place (m, rad, m, rad, rad, m) and the sprockets'
+/// torques (right, left; N m).
+#[derive(Debug, Clone, Copy)]
+struct Row {
+    height: f64,
+    pitch: f64,
+    forward: f64,
+    roll: f64,
+    heading: f64,
+    across: f64,
+    torque: [f64; 2],
+}
+
+/// The `Twin` on `right` and `left` (the grounds under its right and left
+/// tracks), both belts driven to 2 m/s over 0.5 s: its rows.
+fn run(right: &Terrain, left: &Terrain) -> Vec<Row> {
+    let (mut system, mut y, _) =
+        on_grounds::<Twin>(Twin::declared_laws(), (right, left), 0.0).expect("on its grounds");
+    system
+        .set_drives(SideDrives {
+            right: belt(2.0, 0.5),
+            left: belt(2.0, 0.5),
+        })
+        .expect("the drives");
+    let mut stepper = FIXED.stepper(system.dimension());
+    let (mut t, mut rows) = (0.0, Vec::new());
+    for k in 0..=(DURATION / EVERY).round() as usize {
+        let next = k as f64 * EVERY;
+        while t < next {
+            stepper
+                .step(&mut system, &mut t, &mut y, next)
+                .expect("steps");
+        }
+        rows.push(row(&system, t, &y));
+    }
+    rows
+}
+
+fn row(system: &System, t: f64, y: &DVector<f64>) -> Row {
+    let out = system.outputs(t, y.as_slice()).expect("outputs");
+    let (hull, ..) = system.states(y.as_slice());
+    let root = hull.pose.origin;
+    Row {
+        height: root.z,
+        pitch: out.pitch,
+        forward: root.x,
+        roll: out.roll,
+        heading: out.heading,
+        across: root.y,
+        torque: [out.sides[0].sprocket_torque, out.sides[1].sprocket_torque],
+    }
+}
+
+#[test]
+fn a_bump_under_one_track_mirrors_the_other_and_rolls_the_hull_away() {
+    let (under_left, under_right) = std::thread::scope(|scope| {
+        let left = scope.spawn(|| run(&level(), &bump()));
+        (left.join().expect("the left run"), run(&bump(), &level()))
+    });
+    let mut apart: f64 = 0.0;
+    let mut most_roll: f64 = 0.0;
+    for (l, r) in under_left.iter().zip(&under_right) {
+        for (a, b) in [
+            (l.height, r.height),
+            (l.pitch, r.pitch),
+            (l.forward, r.forward),
+            (l.roll, -r.roll),
+            (l.heading, -r.heading),
+            (l.across, -r.across),
+        ] {
+            apart = apart.max((a - b).abs());
+        }
+        for (a, b) in [(l.torque[0], r.torque[1]), (l.torque[1], r.torque[0])] {
+            apart = apart.max((a - b).abs() / 1e3);
+        }
+        most_roll = most_roll.max(l.roll);
+    }
+    println!("mirror images apart by {apart:.1e}; the largest roll {most_roll:.5} rad");
+    assert!(apart <= 1e-9, "the mirrored runs differ by {apart}");
+    let rigid = (0.06_f64 / Twin::layout().gauge).atan();
+    assert!(
+        most_roll > 0.0 && most_roll < rigid,
+        "the left side up by {most_roll} rad (the rigid bound {rigid})"
+    );
+    // It crossed the bump: 4.7 m driven, the bump 2 to 3 m ahead.
+    let moved = under_left[under_left.len() - 1].forward - under_left[0].forward;
+    assert!(moved > 4.0, "it drove {moved} m");
+}
+
+#[test]
+fn one_ground_under_both_tracks_is_the_course_laid_across() {
+    let field = HeightField::sides(&bump(), &bump(), 1.5);
+    assert_eq!(field.base, FieldShape::Profile(bump()));
+    let (_, a, ga) =
+        on_grounds::<Twin>(Twin::declared_laws(), (&bump(), &bump()), 0.1).expect("on its grounds");
+    let (_, b, gb) = on_course::<Twin>(Twin::declared_laws(), &bump(), 0.1).expect("on its course");
+    assert_eq!(ga, gb);
+    assert_eq!(a, b);
+    // Two grounds: each track's points on its own, blended between.
+    let field = HeightField::sides(&level(), &bump(), 1.5);
+    let crest = HeightField::profile(&bump()).height(2.5, 0.0);
+    for y in [0.75, 0.9, 1.2] {
+        assert_eq!(field.height(2.5, y), crest, "left, y = {y}");
+        assert_eq!(field.height(2.5, -y), 0.0, "right, y = {y}");
+    }
+    assert!((field.height(2.5, 0.0) - 0.5 * crest).abs() < 1e-15);
+}
