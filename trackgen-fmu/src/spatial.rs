@@ -15,8 +15,9 @@ use trackgen::scenario::{Range, Scenario};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
     DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialSimulated,
-    SpatialVehicleSystem, drive_as_asked, on_course, spatial_row,
+    SpatialVehicleSystem, drive_as_asked, on_grounds, spatial_row,
 };
+use trackgen::terrain::course::CourseSpec;
 use trackgen::vehicle::{Powertrain, speed_ramp};
 
 use crate::error::FmuError;
@@ -78,9 +79,22 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
     ) -> Result<(V::Spatial, DVector<f64>, Integrator), FmuError> {
         let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
         let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
+        let mut grounds = [terrain.clone(), terrain];
+        for (ground, file) in grounds
+            .iter_mut()
+            .zip([Setting::RightCourseFile, Setting::LeftCourseFile])
+        {
+            let file = instance.text(file);
+            if !file.is_empty() {
+                *ground = CourseSpec::File(file.into())
+                    .terrain()
+                    .map_err(|e| built(&e))?;
+            }
+        }
         let slope = instance.number(Setting::SideSlope);
         let (mut system, mut y, _) =
-            on_course::<V>(V::declared_laws(), &terrain, slope).map_err(|e| built(&e))?;
+            on_grounds::<V>(V::declared_laws(), (&grounds[0], &grounds[1]), slope)
+                .map_err(|e| built(&e))?;
         let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
             match instance.text(Setting::Drive) {
                 "speed" => {
@@ -326,7 +340,7 @@ fn table() -> Vec<Variable> {
 
 /// The spatial model's own parameters: the side slope, the driveline and
 /// the steering.
-fn spatial_settings() -> [SettingRow; 7] {
+fn spatial_settings() -> [SettingRow; 9] {
     let (turn, turn_at, turn_time) = TURN;
     [
         (
@@ -352,6 +366,22 @@ fn spatial_settings() -> [SettingRow; 7] {
             "driveline = steer-ratio: the steer unit's minimum steer ratio, 1.01 to 100 (0: the powertrain's first declared steer ratio, refused where it declares none)",
             Start::Float64(0.0),
             Setting::SteerRatio,
+        ),
+        (
+            "left_course_file",
+            Kind::String,
+            "",
+            "a profile CSV (as course_file) under the left track alone, the course staying under the right, the two blended across the ground between the tracks; empty: the course (the 3-D main job's --left-course-file)",
+            Start::String(String::new()),
+            Setting::LeftCourseFile,
+        ),
+        (
+            "right_course_file",
+            Kind::String,
+            "",
+            "a profile CSV under the right track alone, as left_course_file",
+            Start::String(String::new()),
+            Setting::RightCourseFile,
         ),
         (
             "steering",

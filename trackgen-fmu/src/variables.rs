@@ -111,10 +111,15 @@ pub enum Setting {
     TurnAt,
     /// `turn_time`, s.
     TurnTime,
-    /// `driveline`: sides, brakes or steer-ratio (3-D).
+    /// `driveline`: sides, brakes, steer-ratio or neutral-pivot (3-D).
     Driveline,
     /// `steer_ratio`: the steer unit's minimum steer ratio (3-D).
     SteerRatio,
+    /// `left_course_file`: a profile CSV under the left track alone (3-D;
+    /// empty: the course).
+    LeftCourseFile,
+    /// `right_course_file`: under the right track alone.
+    RightCourseFile,
 }
 
 /// The inputs.
