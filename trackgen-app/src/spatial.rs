@@ -25,10 +25,11 @@ use trackgen::scenario::Scenario;
 use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
     DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialOutputs,
-    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_grounds, spatial_row,
+    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_grid, on_grounds, spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
 use trackgen::terrain::field::HeightField;
+use trackgen::terrain::grid_file::read_grid;
 use trackgen::vehicle::speed_ramp;
 use trackgen_arrow::ArrowSink;
 
@@ -64,6 +65,16 @@ pub struct SpatialArgs {
     /// The ground under the right track alone, as `--left-course-file`.
     #[arg(long, value_name = "FILE.csv")]
     pub right_course_file: Option<PathBuf>,
+    /// The ground as heights on a grid instead of a course: an ESRI ASCII
+    /// grid file (`.asc`, as GIS tools export a surveyed surface), x along
+    /// the course and y to its left, bilinear between the nodes. An error
+    /// names the line.
+    #[arg(
+        long,
+        value_name = "FILE.asc",
+        conflicts_with_all = ["course_file", "roughness", "obstacle", "left_course_file", "right_course_file"]
+    )]
+    pub field_file: Option<PathBuf>,
     /// The turn, degrees to the left (negative: to the right), from -360
     /// to 360; 0 drives straight.
     #[arg(long, default_value_t = TURN, value_name = "DEG", value_parser = turn)]
@@ -128,6 +139,49 @@ pub const TURN_AT: f64 = 8.0;
 pub const TURN_TIME: f64 = 4.0;
 /// The default simulated time, s: the turn and 2 s after it.
 pub const DURATION: f64 = 14.0;
+/// A spatial vehicle set on its ground: the system, its state, the
+/// ground, and what to say of it.
+type Grounded<V> = (
+    <V as SpatialVehicleSystem>::Spatial,
+    DVector<f64>,
+    HeightField,
+    String,
+);
+
+/// The vehicle set on the ground `args` ask for (a grid file, else the
+/// course with each track's own file where given), and what to say of
+/// it.
+fn on_the_ground<V: SpatialVehicleSystem>(
+    args: &SpatialArgs,
+) -> Result<Grounded<V>, Box<dyn Error>> {
+    if let Some(path) = &args.field_file {
+        let (system, y, ground) =
+            on_grid::<V>(V::declared_laws(), read_grid(path)?, args.side_slope)?;
+        return Ok((
+            system,
+            y,
+            ground,
+            format!("the height field of {}", path.display()),
+        ));
+    }
+    let course = args.course.spec(args.speed, args.duration);
+    let terrain = course.terrain()?;
+    let sides = [&args.right_course_file, &args.left_course_file]
+        .map(|file| file.as_ref().map(|path| CourseSpec::File(path.clone())));
+    let mut grounds = [terrain.clone(), terrain];
+    for (ground, spec) in grounds.iter_mut().zip(&sides) {
+        if let Some(spec) = spec {
+            *ground = spec.terrain()?;
+        }
+    }
+    let (system, y, ground) = on_grounds::<V>(
+        V::declared_laws(),
+        (&grounds[0], &grounds[1]),
+        args.side_slope,
+    )?;
+    Ok((system, y, ground, course_said(&course, &sides)))
+}
+
 /// The course as the summary says it: `course`, and the ground each
 /// track has of its own (`sides`: the right's, the left's).
 fn course_said(course: &CourseSpec, sides: &[Option<CourseSpec>; 2]) -> String {
@@ -259,23 +313,9 @@ fn drive<V: SpatialVehicleSystem>(
     entry: &Offered,
     args: &SpatialArgs,
 ) -> Result<(), Box<dyn Error>> {
-    let course = args.course.spec(args.speed, args.duration);
-    let terrain = course.terrain()?;
-    let sides = [&args.right_course_file, &args.left_course_file]
-        .map(|file| file.as_ref().map(|path| CourseSpec::File(path.clone())));
-    let mut grounds = [terrain.clone(), terrain.clone()];
-    for (ground, spec) in grounds.iter_mut().zip(&sides) {
-        if let Some(spec) = spec {
-            *ground = spec.terrain()?;
-        }
-    }
     let layout = V::layout();
     let assembling = Instant::now();
-    let (mut system, mut y, ground) = on_grounds::<V>(
-        V::declared_laws(),
-        (&grounds[0], &grounds[1]),
-        args.side_slope,
-    )?;
+    let (mut system, mut y, ground, ground_said) = on_the_ground::<V>(args)?;
     let assembly = assembling.elapsed().as_secs_f64();
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
@@ -309,7 +349,7 @@ fn drive<V: SpatialVehicleSystem>(
         args.settle,
         args.speed,
         args.ramp,
-        course_said(&course, &sides),
+        ground_said,
         args.turn.abs(),
         if args.turn >= 0.0 { "left" } else { "right" },
         args.turn_at,

@@ -130,3 +130,58 @@ fn each_track_takes_its_own_ground() {
     );
     assert_rejected("a bad side file", &refused, &["bad.csv:3"]);
 }
+
+/// `--field-file`: heights on a grid (an ESRI ASCII grid) with a ridge
+/// 80 mm high and 1 m long across x = 3.5–4.5 m under the left half alone
+/// rolls the M113 to the right as the ramp under its left track does
+/// (between a fifth of and the rigid bound); a hole (the no-data value)
+/// is refused naming its line.
+#[test]
+fn a_height_field_from_a_grid_file_is_driven_over() {
+    let dir = scratch("grid");
+    let (nx, ny) = (161, 9);
+    let mut text = format!(
+        "ncols {nx}\nnrows {ny}\nxllcenter -20\nyllcenter -2\ncellsize 0.5\nNODATA_value -9999\n"
+    );
+    for j in (0..ny).rev() {
+        let y = -2.0 + 0.5 * j as f64;
+        let row: Vec<String> = (0..nx)
+            .map(|i| {
+                let x = -20.0 + 0.5 * i as f64;
+                let up = y > 0.0 && (3.5..=4.5).contains(&x);
+                if up { "0.08" } else { "0" }.to_string()
+            })
+            .collect();
+        text.push_str(&row.join(" "));
+        text.push('\n');
+    }
+    let grid = dir.join("ridge.asc");
+    std::fs::write(&grid, &text).unwrap();
+    let (out, said) = spatial(&dir, "ridge", &["--field-file", path(&grid)]);
+    assert!(said.contains("the height field of"), "{said}");
+    let roll = column(&out.join("spatial.csv"), "roll");
+    let most = roll.iter().fold(0.0_f64, |m, &r| m.max(r));
+    let rigid = (0.08_f64 / 2.159).atan();
+    assert!(
+        most > 0.2 * rigid && most < rigid,
+        "roll at most {most} rad"
+    );
+    let holed = dir.join("holed.asc");
+    std::fs::write(&holed, text.replacen("0.08", "-9999", 1)).unwrap();
+    let refused = run(
+        &binary(),
+        &[
+            "spatial",
+            "--field-file",
+            path(&holed),
+            "--out",
+            path(&dir.join("holed")),
+        ],
+        &dir,
+    );
+    assert_rejected(
+        "a grid with a hole",
+        &refused,
+        &["holed.asc:", "a hole in the field"],
+    );
+}

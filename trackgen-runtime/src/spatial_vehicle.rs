@@ -58,7 +58,7 @@ pub use driveline::{
 };
 pub use engine::{SpatialEngine, SpatialEngineError};
 pub use envelope::EngineEnvelope;
-pub use on_course::{OnCourseError, on_course, on_grounds};
+pub use on_course::{OnCourseError, on_course, on_grid, on_grounds};
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use rows::{SPATIAL_COLUMNS, spatial_row};
 pub use scene::SpatialScene;

@@ -12,7 +12,8 @@ use super::{SpatialLaws, SpatialSimulated, SpatialVehicleSystem};
 use crate::assembly::SideError;
 use crate::spatial::SpatialError;
 use crate::terrain::Terrain;
-use crate::terrain::field::{FieldError, HeightField};
+use crate::terrain::field::{FieldError, FieldShape, Grid, HeightField};
+use crate::terrain::profile::ProfileError;
 
 /// Why a spatial vehicle cannot be set on its course.
 #[derive(Debug, Error)]
@@ -26,6 +27,9 @@ pub enum OnCourseError {
     /// Its tracks cannot be assembled on it.
     #[error(transparent)]
     Assembly(#[from] SideError),
+    /// A grid's section under a track is no profile.
+    #[error("the ground under a track: {0}")]
+    Section(#[from] ProfileError),
 }
 
 /// The vehicle `V` under `laws` (its declared ones:
@@ -56,10 +60,41 @@ pub fn on_grounds<V: SpatialVehicleSystem>(
 ) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
     let layout = V::layout();
     let between = layout.gauge - layout.shoe_width;
-    let field = HeightField::sides(right, left, between).tilted(Vector2::new(0.0, side_slope));
+    let field = HeightField::sides(right, left, between);
+    set_on::<V>(laws, field, (right, left), side_slope)
+}
+
+/// [`on_course`] on heights on a grid (a [`Grid`] read from a file:
+/// [`read_grid`](crate::terrain::grid_file::read_grid)), each track
+/// assembled on the grid's section under its centre plane
+/// ([`Grid::section`], the field's own heights there).
+pub fn on_grid<V: SpatialVehicleSystem>(
+    laws: SpatialLaws,
+    grid: Grid,
+    side_slope: f64,
+) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
+    let half = 0.5 * V::layout().gauge;
+    let [right, left] = [-half, half].map(|y| grid.section(y).map(Terrain::profile));
+    let (right, left) = (right?, left?);
+    let field = HeightField {
+        base: FieldShape::Grid(grid),
+        ..HeightField::level()
+    };
+    set_on::<V>(laws, field, (&right, &left), side_slope)
+}
+
+/// `V` on `field` with `side_slope` added, each track assembled on its
+/// ground of `grounds` (right, left) and the whole rolled onto the slope.
+fn set_on<V: SpatialVehicleSystem>(
+    laws: SpatialLaws,
+    field: HeightField,
+    grounds: (&Terrain, &Terrain),
+    side_slope: f64,
+) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
+    let field = field.tilted(Vector2::new(0.0, side_slope));
     field.check()?;
     let mut system = V::spatial(laws, field.clone())?;
-    let mut y = system.assembled_on((right, left))?;
+    let mut y = system.assembled_on(grounds)?;
     if side_slope != 0.0 {
         y = system.rolled(y.as_slice(), side_slope.atan());
     }

@@ -6,6 +6,7 @@
 
 use nalgebra::Vector2;
 
+use super::profile::{Profile, ProfileError};
 use super::surface::{Terrain, TerrainError};
 
 /// A height field: a base shape and a plane added to it.
@@ -169,6 +170,21 @@ impl Grid {
             ny,
             heights,
         })
+    }
+
+    /// The ground along the line `y` (m) as a profile along `x`: the
+    /// polyline through the heights on that line at the grid's columns,
+    /// exactly the field's there (bilinear heights are linear along `x`
+    /// within a cell at any `y`), flat beyond the grid's ends as the
+    /// field is: what a track running along `x` at `y` is assembled on.
+    pub fn section(&self, y: f64) -> Result<Profile, ProfileError> {
+        let points = (0..self.nx)
+            .map(|i| {
+                let x = self.x0 + i as f64 * self.dx;
+                (x, self.height_and_gradient(x, y).0)
+            })
+            .collect();
+        Profile::new(points)
     }
 
     /// The height (m) and gradient at `(x, y)`: bilinear in the cell, the

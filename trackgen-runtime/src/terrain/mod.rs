@@ -9,6 +9,7 @@
 
 pub mod course;
 pub mod field;
+pub mod grid_file;
 pub mod profile;
 pub mod roughness;
 pub mod soil;
