@@ -109,30 +109,37 @@ fn row(system: &System, t: f64, y: &DVector<f64>) -> Row {
     }
 }
 
-#[test]
-fn a_bump_under_one_track_mirrors_the_other_and_rolls_the_hull_away() {
-    let (under_left, under_right) = std::thread::scope(|scope| {
-        let left = scope.spawn(|| run(&level(), &bump()));
-        (left.join().expect("the left run"), run(&bump(), &level()))
-    });
+/// How far the rows `a` are from the mirror images of `b`: the heave,
+/// pitch and progress against `b`'s, the roll, heading and sideways place
+/// against theirs reversed (m, rad), the sprockets' torques against the
+/// other side's (in kN m).
+fn mirror_apart(a: &[Row], b: &[Row]) -> f64 {
     let mut apart: f64 = 0.0;
-    let mut most_roll: f64 = 0.0;
-    for (l, r) in under_left.iter().zip(&under_right) {
-        for (a, b) in [
+    for (l, r) in a.iter().zip(b) {
+        for (p, q) in [
             (l.height, r.height),
             (l.pitch, r.pitch),
             (l.forward, r.forward),
             (l.roll, -r.roll),
             (l.heading, -r.heading),
             (l.across, -r.across),
+            (l.torque[0] / 1e3, r.torque[1] / 1e3),
+            (l.torque[1] / 1e3, r.torque[0] / 1e3),
         ] {
-            apart = apart.max((a - b).abs());
+            apart = apart.max((p - q).abs());
         }
-        for (a, b) in [(l.torque[0], r.torque[1]), (l.torque[1], r.torque[0])] {
-            apart = apart.max((a - b).abs() / 1e3);
-        }
-        most_roll = most_roll.max(l.roll);
     }
+    apart
+}
+
+#[test]
+fn a_bump_under_one_track_mirrors_the_other_and_rolls_the_hull_away() {
+    let (under_left, under_right) = std::thread::scope(|scope| {
+        let left = scope.spawn(|| run(&level(), &bump()));
+        (left.join().expect("the left run"), run(&bump(), &level()))
+    });
+    let apart = mirror_apart(&under_left, &under_right);
+    let most_roll = under_left.iter().map(|r| r.roll).fold(0.0, f64::max);
     println!("mirror images apart by {apart:.1e}; the largest roll {most_roll:.5} rad");
     assert!(apart <= 1e-9, "the mirrored runs differ by {apart}");
     let rigid = (0.06_f64 / Twin::layout().gauge).atan();
@@ -204,19 +211,7 @@ fn a_diagonal_ridge_on_a_grid_mirrors_its_mirror() {
         })
     });
     let [a, b] = runs.map(|r| r.join().expect("the run"));
-    let mut apart: f64 = 0.0;
-    for (l, r) in a.iter().zip(&b) {
-        for (p, q) in [
-            (l.height, r.height),
-            (l.pitch, r.pitch),
-            (l.forward, r.forward),
-            (l.roll, -r.roll),
-            (l.heading, -r.heading),
-            (l.across, -r.across),
-        ] {
-            apart = apart.max((p - q).abs());
-        }
-    }
+    let apart = mirror_apart(&a, &b);
     let (least, most) = a.iter().fold((0.0_f64, 0.0_f64), |(lo, hi), r| {
         (lo.min(r.roll), hi.max(r.roll))
     });

@@ -178,12 +178,7 @@ fn with_published_steer_ratios_the_pivot_is_the_neutral_one() {
     let settings = EventSettings::new(m113::powertrain());
     let turn = pivot::<Twin>(&settings, firm()).expect("the neutral pivot");
     let (asked, pivoted) = (turn.belts, turn.run);
-    let k = m113::STEER_RATIOS
-        .iter()
-        .zip(m113::RANGES)
-        .map(|(rho, n)| 2.0 * (rho - 1.0) / (rho + 1.0) / (n * m113::FINAL_DRIVE))
-        .sum::<f64>()
-        / 4.0;
+    let k = crate::support::x200::steer_drive_ratio();
     let pitch = crate::support::twin::TRACK
         .description()
         .pitch()

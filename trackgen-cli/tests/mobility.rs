@@ -7,6 +7,8 @@
 
 #[path = "../../tests/it/support/programs.rs"]
 mod programs;
+#[path = "../../tests/it/support/x200.rs"]
+mod x200;
 
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -235,12 +237,7 @@ fn mobility_turns_the_m113_in_3d() {
     let belts = pivot["parameter"]["value"].as_f64().expect("the belts");
     // The steer drive's ratio from the figures, k = mean(q_r / N_r).
     use trackgen::vehicles::m113;
-    let k = m113::STEER_RATIOS
-        .iter()
-        .zip(m113::RANGES)
-        .map(|(rho, n)| 2.0 * (rho - 1.0) / (rho + 1.0) / (n * m113::FINAL_DRIVE))
-        .sum::<f64>()
-        / 4.0;
+    let k = x200::steer_drive_ratio();
     // Ten teeth on the shoes' 0.154 m pitch: `N p / (2π)`.
     let rolling = 10.0 * 0.154 / (2.0 * std::f64::consts::PI);
     let want = 0.5 * k * m113::ENGINE_RATED_SPEED * rolling;

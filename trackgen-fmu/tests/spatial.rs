@@ -17,6 +17,8 @@ use trackgen_fmu::variables::Role;
 use trackgen_fmu::{Instance, Spatial, description};
 
 mod common;
+#[path = "../../tests/it/support/x200.rs"]
+mod x200;
 
 type Model = Spatial<M113>;
 
@@ -299,12 +301,7 @@ fn the_declared_steer_ratios_gear_the_steer_unit_to_the_engine() {
     use trackgen::vehicles::m113;
     let powertrain = M113::powertrain().expect("the M113 declares its powertrain");
     assert_eq!(powertrain.steer_ratios(), m113::STEER_RATIOS);
-    let k = m113::STEER_RATIOS
-        .iter()
-        .zip(m113::RANGES)
-        .map(|(rho, n)| 2.0 * (rho - 1.0) / (rho + 1.0) / (n * m113::FINAL_DRIVE))
-        .sum::<f64>()
-        / 4.0;
+    let k = x200::steer_drive_ratio();
     let drive = SteerDrive::of(&powertrain)
         .expect("one steer drive")
         .expect("the M113 declares its steer ratios");

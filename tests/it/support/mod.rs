@@ -6,6 +6,7 @@ pub mod pinocchio;
 pub mod programs;
 pub mod twin;
 pub mod vehicle;
+pub mod x200;
 
 use trackgen::nalgebra::{DMatrix, DVector, SMatrix, SVector};
 

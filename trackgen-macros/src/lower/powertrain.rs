@@ -42,6 +42,21 @@ const KEYS: [&str; 21] = [
 /// planar model is one side of a two-track vehicle.
 const DEFAULT_SHARE: f64 = 0.5;
 
+/// What each value of a list of one per range must be.
+struct PerRange {
+    /// What one value is, for the messages: `speed`, `ratio`.
+    one: &'static str,
+    /// The list's form, for the message of a value that is no list.
+    shape: &'static str,
+    /// The rule a value the macro can read keeps.
+    holds: fn(f64) -> bool,
+    /// What breaking it is.
+    broken: &'static str,
+    /// The rule as a condition on a named constant, checked when the
+    /// vehicle is built; `None`: such a value is the runtime's to check.
+    built: Option<fn(&Num) -> proc_macro2::TokenStream>,
+}
+
 /// Which table, for its rules.
 #[derive(Clone, Copy, PartialEq)]
 pub(super) enum Table {
@@ -116,10 +131,31 @@ impl Lowering<'_> {
         let Some(expr) = fields.map.get("steer_ratios") else {
             return Some(Vec::new());
         };
+        let rule = PerRange {
+            one: "ratio",
+            shape: "minimum steer ratios `[ρ₁, ρ₂, …]`",
+            holds: |v| v > 1.0,
+            broken: "a minimum steer ratio must be above 1 (at 1 the sprockets turn alike)",
+            built: Some(|v| quote!((#v) > 1.0 && (#v) <= f64::MAX)),
+        };
+        self.per_range(expr, "steer_ratios", count, &rule)
+    }
+
+    /// A list `[v₁, v₂, …]` under `key` (`expr`), one value per range where
+    /// the ranges' `count` is known, each by `rule` at its token where the
+    /// macro can read it, and when the vehicle is built where it is a named
+    /// constant and the rule says how.
+    fn per_range(
+        &mut self,
+        expr: &Expr,
+        key: &str,
+        count: Option<usize>,
+        rule: &PerRange,
+    ) -> Option<Vec<Num>> {
         let Expr::Array(list) = strip(expr) else {
             self.errors.spanned(
                 expr,
-                "`steer_ratios` must be a list of minimum steer ratios `[ρ₁, ρ₂, …]`, one per range",
+                format!("`{key}` must be a list of {}, one per range", rule.shape),
             );
             return None;
         };
@@ -129,7 +165,8 @@ impl Lowering<'_> {
             self.errors.spanned(
                 list,
                 format!(
-                    "`steer_ratios` needs one ratio per range: {} given for {count} ranges",
+                    "`{key}` needs one {} per range: {} given for {count} ranges",
+                    rule.one,
                     list.elems.len()
                 ),
             );
@@ -138,22 +175,18 @@ impl Lowering<'_> {
         let mut out = Vec::new();
         let mut fine = true;
         for element in &list.elems {
-            match self.eval(element, "steer_ratios") {
-                Ok(Num::Known(v)) if v <= 1.0 => {
-                    self.errors.spanned(
-                        element,
-                        format!(
-                            "a minimum steer ratio must be above 1 (at 1 the sprockets turn alike), found {v}"
-                        ),
-                    );
+            match self.eval(element, key) {
+                Ok(Num::Known(v)) if !(rule.holds)(v) => {
+                    self.errors
+                        .spanned(element, format!("`{key}`: {}, found {v}", rule.broken));
                     fine = false;
                 }
                 Ok(value) => {
-                    if let Num::Expr(_) = value {
+                    if let (Num::Expr(_), Some(condition)) = (&value, rule.built) {
                         self.checks.push(ConstCheck {
                             span: element.span(),
-                            condition: quote!((#value) > 1.0 && (#value) <= f64::MAX),
-                            message: "a minimum steer ratio must be above 1 and finite".into(),
+                            condition: condition(&value),
+                            message: format!("`{key}`: {} and finite", rule.broken),
                         });
                     }
                     out.push(value);
@@ -246,42 +279,14 @@ impl Lowering<'_> {
 
     /// One gearbox input speed per range, rad/s, each ≥ 0.
     fn speeds(&mut self, fields: &Fields, key: &str, count: Option<usize>) -> Option<Vec<Num>> {
-        let expr = fields.map[key];
-        let Expr::Array(list) = strip(expr) else {
-            self.errors.spanned(
-                expr,
-                format!("`{key}` must be a list of speeds `[ω₁, ω₂, …]`, rad/s, one per range"),
-            );
-            return None;
+        let rule = PerRange {
+            one: "speed",
+            shape: "speeds `[ω₁, ω₂, …]`, rad/s",
+            holds: |v| v >= 0.0,
+            broken: "a speed must be 0 or more",
+            built: None,
         };
-        if let Some(count) = count
-            && list.elems.len() != count
-        {
-            self.errors.spanned(
-                list,
-                format!(
-                    "`{key}` needs one speed per range: {} given for {count} ranges",
-                    list.elems.len()
-                ),
-            );
-            return None;
-        }
-        let mut out = Vec::new();
-        let mut fine = true;
-        for element in &list.elems {
-            match self.eval(element, key) {
-                Ok(Num::Known(v)) if v < 0.0 => {
-                    self.errors.spanned(
-                        element,
-                        format!("`{key}`: a speed must be 0 or more, found {v}"),
-                    );
-                    fine = false;
-                }
-                Ok(value) => out.push(value),
-                Err(()) => fine = false,
-            }
-        }
-        fine.then_some(out)
+        self.per_range(fields.map[key], key, count, &rule)
     }
 
     /// A number in (0, 1]: an efficiency, a share, a speed ratio.
