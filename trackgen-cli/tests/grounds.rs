@@ -4,8 +4,7 @@
 //! left side up, roll positive: measured 0.0287 rad, between a fifth of
 //! and the rigid bound `atan(0.08 / 2.159)` = 0.0370 rad, the whole track
 //! lifted) and comes back (past level by at most a tenth of that:
-//! 0.0014 rad), and says which ground each track has; both tracks given the course's own file is the course
-//! laid across the width, `spatial.csv` byte for byte; a side file that
+//! 0.0014 rad), and says which ground each track has; a side file that
 //! is not a profile is refused, naming its line.
 //!
 //! The binary is cargo's `CARGO_BIN_EXE_trackgen`; outputs go to folders
@@ -75,21 +74,6 @@ fn each_track_takes_its_own_ground() {
     std::fs::write(&level, "x,z\n-20,0\n60,0\n").unwrap();
     let ramp = dir.join("ramp.csv");
     std::fs::write(&ramp, "x,z\n-20,0\n3,0\n4,0.08\n5,0.08\n6,0\n60,0\n").unwrap();
-    let (across, _) = spatial(&dir, "across", &["--course-file", path(&level)]);
-    let (both, _) = spatial(
-        &dir,
-        "both",
-        &[
-            "--course-file",
-            path(&level),
-            "--left-course-file",
-            path(&level),
-            "--right-course-file",
-            path(&level),
-        ],
-    );
-    let file = |d: &Path| std::fs::read(d.join("spatial.csv")).unwrap();
-    assert!(file(&across) == file(&both), "one ground under both tracks");
     let (left, said) = spatial(
         &dir,
         "left",

@@ -354,14 +354,18 @@ impl HeightField {
                 divide,
                 band,
             } => {
-                let (hl, sl) = left.height_and_slope(x);
-                let (hr, sr) = right.height_and_slope(x);
+                // Off the band a point stands on one profile: only that
+                // one is looked up (a track's points always are).
                 let offset = y - divide;
                 if offset >= 0.5 * band {
+                    let (hl, sl) = left.height_and_slope(x);
                     (hl, Vector2::new(sl, 0.0))
                 } else if offset <= -0.5 * band {
+                    let (hr, sr) = right.height_and_slope(x);
                     (hr, Vector2::new(sr, 0.0))
                 } else {
+                    let (hl, sl) = left.height_and_slope(x);
+                    let (hr, sr) = right.height_and_slope(x);
                     let w = offset / band + 0.5;
                     let h = w * hl + (1.0 - w) * hr;
                     (h, Vector2::new(w * sl + (1.0 - w) * sr, (hl - hr) / band))
