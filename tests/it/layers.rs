@@ -62,7 +62,7 @@ pub const RUNTIME: Graph = &[
     ("dynamics", &["planar", "simd", "laws", "multibody"]),
     ("closure", &["planar", "trig", "laws", "multibody"]),
     ("reference", &["planar", "multibody", "dynamics"]),
-    ("spatial", &["trig", "laws", "multibody"]),
+    ("spatial", &["trig", "laws", "multibody", "terrain"]),
     // time
     ("integrate", &["simd", "multibody", "closure"]),
     // subsystems

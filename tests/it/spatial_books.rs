@@ -1,7 +1,9 @@
 //! The spatial vehicle's energy books at the tolerances a user runs: the
 //! `Twin` on firm ground (stiction, `support::twin::firm`) driven from
 //! rest into a left turn (belts 1.2 and 0.4 m/s over 0.2 s), for 1 s, on
-//! level ground and across a 30 % side slope (turning uphill), by
+//! level ground, across a 30 % side slope (turning uphill) and on dry
+//! sand (the soil's laws in place of the ground's, the rut pressed after
+//! every step: the carrier sinking as it turns), by
 //! Bogacki-Shampine. The drives' work less the change of the energy in
 //! the bodies, in gravity and in the force elements, less what they
 //! dissipated, over the largest of the three (the project's residual,
@@ -14,17 +16,24 @@
 use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::nalgebra::Vector2;
 use trackgen::simulate::EnergyBalance;
-use trackgen::spatial_vehicle::SideDrives;
+use trackgen::spatial_vehicle::{SideDrives, SpatialLaws};
 use trackgen::terrain::field::HeightField;
+use trackgen::terrain::soil::SoilPreset;
 
 use crate::support::twin::{States, across_slope, at_rest, belt, firm, on};
 
-/// The books of a 1 s left turn on `field` from `start`, by
-/// Bogacki-Shampine at `tolerance` (relative and absolute).
-fn books(field: HeightField, start: &States, tolerance: f64) -> EnergyBalance {
+/// The books of a 1 s left turn on `field` under `laws` from `start`,
+/// by Bogacki-Shampine at `tolerance` (relative and absolute), the
+/// system's [`after_step`](trackgen::spatial_vehicle::SpatialSystem::after_step)
+/// after each step (on soil, the rut pressed).
+fn books(
+    (field, laws): (HeightField, SpatialLaws),
+    start: &States,
+    tolerance: f64,
+) -> EnergyBalance {
     let mut system = on(
         field,
-        firm(),
+        laws,
         SideDrives {
             right: belt(1.2, 0.2),
             left: belt(0.4, 0.2),
@@ -43,6 +52,9 @@ fn books(field: HeightField, start: &States, tolerance: f64) -> EnergyBalance {
         stepper
             .step(&mut system, &mut t, &mut y, end)
             .expect("the run");
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
     }
     let after = system.energy(y.as_slice());
     let held = |e: &trackgen::spatial_vehicle::SpatialEnergy| e.kinetic + e.gravity + e.stored;
@@ -56,12 +68,25 @@ fn books(field: HeightField, start: &States, tolerance: f64) -> EnergyBalance {
 #[test]
 fn a_turn_on_the_level_and_across_a_side_slope_keeps_its_books_at_a_users_tolerances() {
     let default = Integrator::DEFAULT_EXPLICIT_TOLERANCE;
+    let sand = SpatialLaws {
+        soil: Some(SoilPreset::DrySand.soil()),
+        ..firm()
+    };
     let grounds = [
-        ("level", HeightField::level(), at_rest(0.0, (0.0, 0.0))),
+        (
+            "level",
+            (HeightField::level(), firm()),
+            at_rest(0.0, (0.0, 0.0)),
+        ),
         (
             "30 % side slope",
-            HeightField::level().tilted(Vector2::new(0.0, 0.3)),
+            (HeightField::level().tilted(Vector2::new(0.0, 0.3)), firm()),
             across_slope(0.3),
+        ),
+        (
+            "dry sand",
+            (HeightField::level(), sand),
+            at_rest(0.0, (0.0, 0.0)),
         ),
     ];
     for (name, field, start) in grounds {

@@ -31,6 +31,7 @@ use trackgen::spatial::{FloatingTree, SpatialError, SpatialLoad, SpatialVehicle}
 use trackgen::spatial_vehicle::{SpatialDynamics, SpatialLaws, SpatialSystem, TreeState};
 use trackgen::terrain::Terrain;
 use trackgen::terrain::field::HeightField;
+use trackgen::terrain::soil::{Soil, SoilPreset};
 use trackgen::vehicle::{Drive, Vehicle};
 
 use crate::support::twin::{
@@ -529,6 +530,44 @@ fn a_law_out_of_range_is_refused() {
             "{message}"
         );
     }
+}
+
+/// A soil that bears nothing, or whose unloading is softer than its
+/// loading, is refused naming the soil, before anything runs.
+#[test]
+fn a_soil_that_is_no_soil_is_refused() {
+    let build = |laws| built(laws, HeightField::level()).err();
+    let sand = SoilPreset::DrySand.soil();
+    let bearing_nothing = Soil {
+        k_c: 0.0,
+        k_phi: 0.0,
+        ..sand
+    };
+    let soft_unloading = Soil {
+        unloading_stiffness: 0.5 * sand.k_phi,
+        ..sand
+    };
+    for (soil, says) in [
+        (bearing_nothing, "carries no load"),
+        (soft_unloading, "K_e"),
+    ] {
+        let laws = SpatialLaws {
+            soil: Some(soil),
+            ..laws()
+        };
+        let error = build(laws).expect("refused");
+        assert!(matches!(error, SpatialError::Soil(_)), "{error:?}");
+        let message = error.to_string();
+        assert!(
+            message.contains("soil") && message.contains(says),
+            "{message}"
+        );
+    }
+    let laws = SpatialLaws {
+        soil: Some(sand),
+        ..laws()
+    };
+    assert!(build(laws).is_none(), "dry sand is a soil");
 }
 
 /// The mirrored `Twin` dropped 5 mm onto level ground from its assembled

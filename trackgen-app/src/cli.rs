@@ -198,7 +198,7 @@ where
 }
 
 /// `rigid`, or a soil of Wong's table.
-fn soil(s: &str) -> Result<Soil, String> {
+pub(crate) fn soil(s: &str) -> Result<Soil, String> {
     s.parse()
 }
 

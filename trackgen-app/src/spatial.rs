@@ -21,11 +21,12 @@ use indicatif::{ProgressBar, ProgressStyle};
 use trackgen::integrate::{Integrator, Stats};
 use trackgen::nalgebra::DVector;
 use trackgen::ride::{Biquad, Section};
-use trackgen::scenario::Scenario;
+use trackgen::scenario::{Scenario, Soil};
 use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialOutputs,
-    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_grid, on_grounds, spatial_row,
+    DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialLaws,
+    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_grid, on_grounds,
+    spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
 use trackgen::terrain::field::HeightField;
@@ -107,6 +108,11 @@ pub struct SpatialArgs {
     /// is set on it at rest, heading along the course.
     #[arg(long, default_value_t = 0.0, value_name = "S", value_parser = side_slope)]
     pub side_slope: f64,
+    /// The soil: `rigid`, or a soil of Wong's table (Bekker–Wong soft
+    /// soil over the same ground, the tracks leaving their ruts):
+    /// dry-sand, sandy-loam, clay, heavy-clay, lete-sand, snow.
+    #[arg(long, default_value = "rigid", value_name = "SOIL", value_parser = cli::soil)]
+    pub soil: Soil,
     /// How the drive reaches the sprockets.
     #[arg(long, value_enum, default_value_t = DrivelineKind::Sides)]
     pub driveline: DrivelineKind,
@@ -155,8 +161,7 @@ fn on_the_ground<V: SpatialVehicleSystem>(
     args: &SpatialArgs,
 ) -> Result<Grounded<V>, Box<dyn Error>> {
     if let Some(path) = &args.field_file {
-        let (system, y, ground) =
-            on_grid::<V>(V::declared_laws(), read_grid(path)?, args.side_slope)?;
+        let (system, y, ground) = on_grid::<V>(laws::<V>(args), read_grid(path)?, args.side_slope)?;
         return Ok((
             system,
             y,
@@ -174,12 +179,21 @@ fn on_the_ground<V: SpatialVehicleSystem>(
             *ground = spec.terrain()?;
         }
     }
-    let (system, y, ground) = on_grounds::<V>(
-        V::declared_laws(),
-        (&grounds[0], &grounds[1]),
-        args.side_slope,
-    )?;
+    let (system, y, ground) =
+        on_grounds::<V>(laws::<V>(args), (&grounds[0], &grounds[1]), args.side_slope)?;
     Ok((system, y, ground, course_said(&course, &sides)))
+}
+
+/// The vehicle's declared laws, on the soil `args` ask for.
+fn laws<V: SpatialVehicleSystem>(args: &SpatialArgs) -> SpatialLaws {
+    let soil = match args.soil {
+        Soil::Rigid => None,
+        Soil::Soft(preset) => Some(preset.soil()),
+    };
+    SpatialLaws {
+        soil,
+        ..V::declared_laws()
+    }
 }
 
 /// The course as the summary says it: `course`, and the ground each
@@ -345,11 +359,12 @@ fn drive<V: SpatialVehicleSystem>(
     );
     say!("driven through {driven}");
     say!(
-        "settle {:.1} s, then to {:.1} m/s in {:.1} s; {}; turning {:.0}° {} from t = {:.1} s over {:.1} s; {:.1} s in all",
+        "settle {:.1} s, then to {:.1} m/s in {:.1} s; {} on {}; turning {:.0}° {} from t = {:.1} s over {:.1} s; {:.1} s in all",
         args.settle,
         args.speed,
         args.ramp,
         ground_said,
+        args.soil,
         args.turn.abs(),
         if args.turn >= 0.0 { "left" } else { "right" },
         args.turn_at,

@@ -27,7 +27,11 @@
 //! per ground point in the ground's plane (two components, in the
 //! surface's forward and left tangents: friction is isotropic there, and
 //! a shoe sliding sideways in a turn is what resists the turn); a point
-//! off the ground lets its deflection relax. Each side's sprocket
+//! off the ground lets its deflection relax. On soft soil
+//! ([`SpatialLaws::soil`]) the soil's laws replace the ground's, each
+//! point's state its shear displacement in the ground's plane
+//! (`contact::soft_space`), the rut pressed after each accepted step
+//! ([`SpatialSystem::after_step`]). Each side's sprocket
 //! has its own drive ([`SideDrives`]), or one drive reaches both through
 //! a differential steered by brakes or a steer unit ([`Driveline`]).
 //! [`SpatialSystem`] integrates the vehicle in time.
@@ -41,6 +45,7 @@ mod engine;
 mod envelope;
 mod ground;
 mod on_course;
+mod on_soil;
 mod outputs;
 mod rows;
 mod scene;
@@ -69,6 +74,7 @@ pub use tensions::TrackTensions;
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 
 use crate::contact::axial::{GuideLaw, RimContact, SpaceFace, SpaceSprocket, SpaceWheel};
+use crate::contact::soft_space::SoftSpace;
 use crate::contact::sprocket::{Gaps, ToothProfile, pitch_radius, rolling_radius};
 use crate::contact::{ContactLaws, GroundLaws, ShoeGeometry};
 use crate::multibody::{
@@ -79,6 +85,7 @@ use crate::spatial::{
     SpatialLoad, plane_rotation,
 };
 use crate::terrain::field::HeightField;
+use crate::terrain::soil::Soil;
 
 /// The laws of the spatial vehicle's contacts.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -92,6 +99,11 @@ pub struct SpatialLaws {
     pub sprocket: ContactLaws,
     /// The centre guides against the wheels.
     pub guide: GuideLaw,
+    /// Soft soil under the tracks instead of rigid ground: its laws
+    /// replace [`ground`](Self::ground)'s (`contact::soft_space`: the
+    /// planar soft ground's at each point across the width). `None`:
+    /// rigid ground.
+    pub soil: Option<Soil>,
 }
 
 impl SpatialLaws {
@@ -104,7 +116,11 @@ impl SpatialLaws {
         law("ground", self.ground.check())?;
         law("rims", self.wheels.check())?;
         law("teeth", self.sprocket.check())?;
-        law("guides", self.guide.check())
+        law("guides", self.guide.check())?;
+        if let Some(soil) = &self.soil {
+            soil.check().map_err(SpatialError::Soil)?;
+        }
+        Ok(())
     }
 }
 
@@ -222,6 +238,8 @@ pub struct SpatialDynamics<'m, H, const DH: usize, R, const DR: usize, L, const 
     gaps: Gaps,
     laws: SpatialLaws,
     field: HeightField,
+    /// The soft soil and what it remembers, on soil ([`SpatialLaws::soil`]).
+    soil: Option<SoftSpace>,
     /// The tracks' centre planes apart, m.
     gauge: f64,
     /// Every arm's spring, the declared one but for each tensioner's rest
@@ -242,7 +260,8 @@ where
     /// does not fit the trees (an inertia or offset per body, a side per
     /// part) is an error, and so is a track whose links differ in length
     /// (a sprocket's rolling radius needs one pitch), and so is a law
-    /// out of its range ([`SpatialLaws::check`]).
+    /// out of its range ([`SpatialLaws::check`]), and on soft soil a shoe
+    /// with no width.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         hull: &'m H,
@@ -264,6 +283,17 @@ where
             (Side::Right, right.description().pitch()),
             (Side::Left, left.description().pitch()),
         ];
+        let soil = match laws.soil {
+            None => None,
+            Some(soil) => {
+                let [right_pitch, left_pitch] = pitches.map(|(side, pitch)| {
+                    pitch.map_err(|source| SpatialError::Pitch { side, source })
+                });
+                let pitches = [right_pitch?, left_pitch?];
+                let links = [R::BODIES, L::BODIES];
+                Some(SoftSpace::under(soil, &shoe, pitches, links).map_err(SpatialError::Soil)?)
+            }
+        };
         let mut sprockets = [None; 2];
         for (s, (side, pitch)) in pitches.into_iter().enumerate() {
             let Some((part, _)) = H::PARTS
@@ -293,6 +323,7 @@ where
             profile,
             laws,
             field,
+            soil,
             gauge: layout.gauge,
             arms: H::PARTS.iter().filter_map(|p| p.arm).collect(),
         })
@@ -314,10 +345,11 @@ where
     }
 
     /// How many values each track's ground points' stiction deflections
-    /// take (right, left): two per point (each planar ground point of each
-    /// link as two across the width), none under regularised friction.
+    /// (on soil, shear displacements) take (right, left): two per point
+    /// (each planar ground point of each link as two across the width),
+    /// none under regularised friction on rigid ground.
     pub fn ground_states(&self) -> [usize; 2] {
-        if !self.laws.ground.friction.has_state() {
+        if self.soil.is_none() && !self.laws.ground.friction.has_state() {
             return [0; 2];
         }
         let per_link = 2 * 2 * self.shoe.ground_points.len();
@@ -422,6 +454,7 @@ where
                 Side::Left => &mut out.left,
             });
             let books = self.ground(
+                side,
                 links,
                 &mut link_loads,
                 (deflections[s], rates.next().unwrap_or_default()),
@@ -481,10 +514,11 @@ where
             let mut loads = vec![SpatialLoad::default(); links.len()];
             let mut rates = vec![0.0; deflections[s].len()];
             self.ground(
+                side,
                 links,
                 &mut loads,
                 (deflections[s], &mut rates),
-                Some((side, &mut out)),
+                Some(&mut out),
             );
         }
         out

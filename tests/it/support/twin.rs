@@ -115,6 +115,7 @@ pub fn laws() -> SpatialLaws {
             damping: 1e3,
             height: 0.06,
         },
+        soil: None,
     }
 }
 

@@ -15,7 +15,8 @@
 //! faces against wheel rims (road wheels, idler, rollers), the shoes' pins
 //! against the sprocket's teeth; and the terramechanics laws of soft soil
 //! ([`soil`](crate::terrain::soil)). In space, a shoe's point against a
-//! height field ([`space`]); a wheel's rim on a shoe's face and a shoe's
+//! height field ([`space`]), and on soft soil ([`soft_space`], its rut
+//! an area: [`rut_grid`]); a wheel's rim on a shoe's face and a shoe's
 //! pin on the sprocket's teeth across their two planes, with the track's
 //! centre guide ([`axial`]). Forces come from positions and velocities only, as
 //! [`BodyLoad`](crate::multibody::BodyLoad)s on both bodies, so the subsystems stay
@@ -26,8 +27,10 @@ mod detect;
 pub mod ground;
 pub mod outline;
 mod respond;
+pub mod rut_grid;
 pub mod shoe;
 pub mod soft_ground;
+pub mod soft_space;
 pub mod space;
 pub mod sprocket;
 pub(crate) mod tangent;

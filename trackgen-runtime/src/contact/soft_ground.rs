@@ -429,7 +429,7 @@ impl SoftGround {
 /// roundings) and still moving deeper. [`SoftGround::respond`] books
 /// plastic work by it and [`SoftGround::linearise`] takes its slope's side
 /// by it.
-fn yielding(z: f64, deepest: f64, rate: f64) -> bool {
+pub(crate) fn yielding(z: f64, deepest: f64, rate: f64) -> bool {
     let at_yield = (z - deepest).abs() <= 4.0 * f64::EPSILON * deepest.abs();
     z > deepest || (at_yield && rate > 0.0)
 }

@@ -80,7 +80,7 @@ impl SpaceContact {
     /// route gives too (to the sign of a zero component) after a root and
     /// six divisions: not found again per point.
     #[inline]
-    fn surface(&self) -> (f64, Vector3<f64>, Vector3<f64>) {
+    pub(crate) fn surface(&self) -> (f64, Vector3<f64>, Vector3<f64>) {
         let g = self.gradient;
         if g.x == 0.0 && g.y == 0.0 {
             return (1.0, Vector3::x(), Vector3::y());

@@ -175,6 +175,10 @@ pub enum SpatialError {
         /// Why.
         source: crate::laws::ParameterError,
     },
+    /// The soft soil's parameters make no soil, or the shoe has no width
+    /// for it to bear.
+    #[error("the soil: {0}")]
+    Soil(crate::terrain::soil::SoilError),
     /// The planar model's gravity must point down its `y` axis, which
     /// becomes the world's vertical.
     #[error("the planar gravity must be (0, −g), got ({x}, {y}) m/s²")]

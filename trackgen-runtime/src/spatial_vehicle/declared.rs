@@ -287,6 +287,7 @@ pub trait SpatialVehicleSystem: SpatialVehicle + Vehicle {
             wheels: config.wheels,
             sprocket: config.sprocket,
             guide: GuideLaw::with_play(Self::layout().guide_play),
+            soil: config.soil,
         }
     }
 }

@@ -36,15 +36,20 @@ where
     /// The shoes on the ground: each planar ground point as two across
     /// the width, each with half its law; with stiction, each point's
     /// deflection from `deflections` and its rate into `rates` (a point
-    /// off the ground relaxing). What they store and dissipate; each
-    /// point on the ground into `found`, if given, as of its side.
+    /// off the ground relaxing); on soft soil, the soil's laws
+    /// ([`on_soil`](Self::on_soil)). What they store and dissipate; each
+    /// point on the ground into `found`, if given, as of `side`.
     pub(super) fn ground(
         &self,
+        side: Side,
         links: &Bodies,
         loads: &mut [SpatialLoad],
         (deflections, rates): (&[f64], &mut [f64]),
-        mut found: Option<(Side, &mut Vec<GroundForce>)>,
+        mut found: Option<&mut Vec<GroundForce>>,
     ) -> (f64, f64) {
+        if let Some(soil) = &self.soil {
+            return self.on_soil(soil, side, links, loads, (deflections, rates), found);
+        }
         // Half of each law: the normal law's stiffness and damping, and
         // a stiction's spring and damper (its limit, `μ` times the halved
         // normal force, halves with it); regularised friction is a
@@ -92,9 +97,9 @@ where
                         Some(contact) => {
                             let force = half.respond_in_space(&contact, z);
                             links.push(loads, k, force.force, x);
-                            if let Some((side, found)) = found.as_mut() {
+                            if let Some(found) = found.as_mut() {
                                 found.push(GroundForce {
-                                    side: *side,
+                                    side,
                                     link: k,
                                     at: x,
                                     force: force.force,
@@ -131,7 +136,7 @@ where
     /// every link's points, plus the farthest point's reach from its
     /// centroid and the margin. Infinite (nothing passed over) for a
     /// state that is not a number.
-    fn clear_above(&self, links: &Bodies, across: f64) -> f64 {
+    pub(super) fn clear_above(&self, links: &Bodies, across: f64) -> f64 {
         let reach = self
             .shoe
             .ground_points

@@ -367,25 +367,34 @@ where
         }
     }
 
-    /// After an accepted step to `(t, y)`: the engine's gearbox shifted
-    /// and its lock-up clutch engaged or released where their rules say
+    /// After an accepted step to `(t, y)`: on soft soil, what the soil
+    /// remembers brought up to the shoes (`SpatialDynamics::press_soil`);
+    /// the engine's gearbox shifted and its lock-up clutch engaged or
+    /// released where their rules say
     /// ([`SpatialEngine::after_step`](super::SpatialEngine::after_step)).
     /// Whether anything changed: the integrator must then restart. A run
-    /// through an engine whose speed is a state calls it after every
-    /// step, as the planar vehicle's run calls
+    /// on soil or through an engine whose speed is a state calls it after
+    /// every step, as the planar vehicle's run calls
     /// [`Simulated::after_step`](crate::system::Simulated::after_step).
     pub fn after_step(&mut self, t: f64, y: &[f64]) -> bool {
+        let pressed = if self.dynamics.soil().is_some() {
+            let (_, right, left, _) = self.states(y);
+            let shears = self.deflections(y);
+            self.dynamics.press_soil((&right, &left), shears)
+        } else {
+            false
+        };
         let speed = y[self.driveline_at() + ENGINE_SPEED];
         let Driveline::Differential(d) = &mut self.driveline else {
-            return false;
+            return pressed;
         };
         let Some(engine) = d.engine.as_mut() else {
-            return false;
+            return pressed;
         };
         let omega = self
             .dynamics
             .sprocket_speeds(&tree_state::<DH>(&y[..2 * DH + 6]));
-        engine.after_step(t, (0.5 * (omega[0] + omega[1]), speed), &d.drive)
+        engine.after_step(t, (0.5 * (omega[0] + omega[1]), speed), &d.drive) || pressed
     }
 
     /// What the drives do at time `t` and state `y`.

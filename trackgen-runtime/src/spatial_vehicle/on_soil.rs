@@ -1,0 +1,152 @@
+//! The shoes on soft soil in space: each planar ground point of each shoe
+//! as two points across its width, each pressing half the planar point's
+//! patch under the soil's laws ([`SoftSpace`]); its state its shear
+//! displacement in the ground's plane. After each accepted step the
+//! soil's memory is brought up to the points ([`SpatialDynamics::press_soil`]).
+//!
+//! A link above the highest ground under its track is passed over with
+//! one comparison, as on rigid ground: none of its points touches, so
+//! none shears the soil (its states' rates are zero).
+
+use nalgebra::Vector2;
+
+use super::{Bodies, GroundForce, SpatialDynamics, TreeState};
+use crate::contact::soft_space::SoftSpace;
+use crate::contact::space::SpaceContact;
+use crate::multibody::{ChassisModel, TrackModel};
+use crate::spatial::{Side, SpatialLoad};
+
+/// Side `side`'s index among the soil's sides (right 0, left 1).
+fn index(side: Side) -> usize {
+    match side {
+        Side::Right => 0,
+        Side::Left => 1,
+    }
+}
+
+/// The unit direction of a link's `x` axis in the ground's plane (`x̂`
+/// for a link standing on end): the way its patches lie on the rut.
+fn heading(axis: nalgebra::Vector3<f64>) -> Vector2<f64> {
+    let along = axis.xy();
+    let length = along.norm();
+    if length > 1e-9 {
+        along / length
+    } else {
+        Vector2::x()
+    }
+}
+
+impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
+    SpatialDynamics<'_, H, DH, R, DR, L, DL>
+where
+    H: ChassisModel<DH>,
+    R: TrackModel<DR>,
+    L: TrackModel<DL>,
+{
+    /// [`ground`](Self::ground) on soft soil: side `side`'s shoes on
+    /// `soil`, each point's shear displacement from `shears` and its rate
+    /// (the slip in the ground's plane below the undisturbed surface,
+    /// else zero) into `rates`. What they store and dissipate; each
+    /// point the soil bears into `found`, if given.
+    pub(super) fn on_soil(
+        &self,
+        soil: &SoftSpace,
+        side: Side,
+        links: &Bodies,
+        loads: &mut [SpatialLoad],
+        (shears, rates): (&[f64], &mut [f64]),
+        mut found: Option<&mut Vec<GroundForce>>,
+    ) -> (f64, f64) {
+        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let per_link = 2 * self.shoe.ground_points.len();
+        let clear_above = self.clear_above(links, across);
+        let s = index(side);
+        let (mut potential, mut dissipation) = (0.0, 0.0);
+        let mut slot = 0;
+        for k in 0..links.len() {
+            if links.centroid(k).z > clear_above {
+                rates[2 * slot..2 * (slot + per_link)].fill(0.0);
+                slot += per_link;
+                continue;
+            }
+            for p in &self.shoe.ground_points {
+                for lateral in [-across, across] {
+                    let x = links.point_across(k, *p, lateral);
+                    let state = Vector2::new(shears[2 * slot], shears[2 * slot + 1]);
+                    let rate = match SpaceContact::at(&self.field, x, links.velocity_at(k, x)) {
+                        None => Vector2::zeros(),
+                        Some(contact) => {
+                            let (force, rate) = soil.respond(s, slot, &contact, state);
+                            if let Some(force) = force {
+                                links.push(loads, k, force.force, x);
+                                if let Some(found) = found.as_mut() {
+                                    found.push(GroundForce {
+                                        side,
+                                        link: k,
+                                        at: x,
+                                        force: force.force,
+                                    });
+                                }
+                                potential += force.potential;
+                                dissipation += force.dissipation;
+                            }
+                            rate
+                        }
+                    };
+                    rates[2 * slot..2 * slot + 2].copy_from_slice(rate.as_slice());
+                    slot += 1;
+                }
+            }
+        }
+        (potential, dissipation)
+    }
+
+    /// After an accepted step, the tracks at `(right, left)` with their
+    /// points' shear states `shears` (right, left): what the soil remembers
+    /// brought up to every point ([`SoftSpace::press_point`],
+    /// [`SoftSpace::passed_over`]). Whether a force changed (the
+    /// integrator must restart); `false` on rigid ground.
+    pub(super) fn press_soil(
+        &mut self,
+        (right, left): (&TreeState<DR>, &TreeState<DL>),
+        shears: [&[f64]; 2],
+    ) -> bool {
+        let Some(mut soil) = self.soil.take() else {
+            return false;
+        };
+        let tracks = [
+            Bodies::at(&self.right, right.parts()),
+            Bodies::at(&self.left, left.parts()),
+        ];
+        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let mut changed = false;
+        for (s, links) in tracks.iter().enumerate() {
+            let clear_above = self.clear_above(links, across);
+            let mut slot = 0;
+            for k in 0..links.len() {
+                let forward = heading(links.axis(k, 0));
+                let passed = links.centroid(k).z > clear_above;
+                for p in &self.shoe.ground_points {
+                    for lateral in [-across, across] {
+                        let at = links.point_across(k, *p, lateral);
+                        let state = Vector2::new(shears[s][2 * slot], shears[s][2 * slot + 1]);
+                        if passed {
+                            soil.passed_over((s, slot), at, forward, state);
+                        } else {
+                            let z = self.field.height(at.x, at.y) - at.z;
+                            changed |= soil.press_point((s, slot), (at, z), forward, state);
+                        }
+                        slot += 1;
+                    }
+                }
+            }
+        }
+        self.soil = Some(soil);
+        changed
+    }
+
+    /// The soft soil and what it remembers, on soil.
+    pub fn soil(&self) -> Option<&SoftSpace> {
+        self.soil.as_ref()
+    }
+}
