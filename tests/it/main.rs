@@ -53,6 +53,7 @@ mod seat;
 mod shift;
 mod shifted_chain;
 mod soft_ground;
+mod soft_space;
 mod soil_laws;
 mod space_contact;
 mod spatial_assembly;

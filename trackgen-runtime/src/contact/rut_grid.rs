@@ -6,8 +6,9 @@
 //!
 //! Only the cells a shoe has pressed are kept, in square blocks of
 //! 16 × 16 cells found by a hash of the block's index: memory grows with
-//! the area pressed (two tracks' footprints: some 30 kB per metre driven
-//! at the default 2 cm cell), and a lookup is a hash and an index.
+//! the area pressed (the M113's two ruts some 60 kB per metre driven at
+//! the default 2 cm cell: blocks at a footprint's edges are partly
+//! empty), and a lookup is a hash and an index.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
