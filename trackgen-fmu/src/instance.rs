@@ -14,7 +14,7 @@
 use std::sync::Arc;
 
 use trackgen::nalgebra::DVector;
-use trackgen::scenario::{Range, Scenario};
+use trackgen::scenario::{Range, Scenario, Soil};
 use trackgen::simulate::{EnergyBalance, March};
 use trackgen::terrain::course::{self, CourseSpec};
 use trackgen::terrain::soil::SoilPreset;
@@ -453,6 +453,18 @@ impl<P: Plant> Instance<P> {
         Some(self.number(Setting::Tolerance))
             .filter(|t| *t > 0.0)
             .or(self.master_tolerance)
+    }
+
+    /// The soil the `soil` parameter names.
+    pub(crate) fn soil(&self) -> Result<Soil, FmuError> {
+        let name = self.text(Setting::Soil);
+        name.parse().map_err(|_| {
+            self.refuse_text(
+                "soil",
+                &name,
+                &format!("rigid or one of {}", SoilPreset::names()),
+            )
+        })
     }
 
     /// The course the parameters name.

@@ -5,10 +5,9 @@ use std::sync::Arc;
 
 use trackgen::integrate::{Integrator, SimulationError};
 use trackgen::nalgebra::DVector;
-use trackgen::scenario::{Method, Scenario, Soil};
+use trackgen::scenario::{Method, Scenario};
 use trackgen::simulate::{DISSIPATED, ENERGY, MOTOR_WORK, March};
 use trackgen::system::Simulated;
-use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::{Drive, Vehicle, VehicleDynamics};
 
 use crate::error::FmuError;
@@ -136,18 +135,6 @@ impl<V: Vehicle> Instance<V> {
             why: e.range.to_string(),
         })?;
         Ok(scenario)
-    }
-
-    /// The soil the `soil` parameter names.
-    pub(crate) fn soil(&self) -> Result<Soil, FmuError> {
-        let name = self.text(Setting::Soil);
-        name.parse().map_err(|_| {
-            self.refuse_text(
-                "soil",
-                &name,
-                &format!("rigid or one of {}", SoilPreset::names()),
-            )
-        })
     }
 
     /// The vehicle's configuration from the parameters.

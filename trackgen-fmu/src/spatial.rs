@@ -11,10 +11,10 @@ use std::sync::Arc;
 
 use trackgen::integrate::{Integrator, SimulationError};
 use trackgen::nalgebra::DVector;
-use trackgen::scenario::{Range, Scenario};
+use trackgen::scenario::{Range, Scenario, Soil};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
-    DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialSimulated,
+    DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialLaws, SpatialSimulated,
     SpatialVehicleSystem, drive_as_asked, on_grounds, spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
@@ -92,9 +92,15 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
             }
         }
         let slope = instance.number(Setting::SideSlope);
+        let laws = SpatialLaws {
+            soil: match instance.soil()? {
+                Soil::Rigid => None,
+                Soil::Soft(preset) => Some(preset.soil()),
+            },
+            ..V::declared_laws()
+        };
         let (mut system, mut y, _) =
-            on_grounds::<V>(V::declared_laws(), (&grounds[0], &grounds[1]), slope)
-                .map_err(|e| built(&e))?;
+            on_grounds::<V>(laws, (&grounds[0], &grounds[1]), slope).map_err(|e| built(&e))?;
         let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
             match instance.text(Setting::Drive) {
                 "speed" => {
@@ -239,7 +245,7 @@ fn range(role: Role) -> Option<Range> {
 
 /// The spatial FMU's variables: the time; the course's, the speed
 /// profile's, the engine's and the integrator's parameters as the planar
-/// FMU's (but the soil), the side slope and the steering; the inputs
+/// FMU's, the side slope and the steering; the inputs
 /// `target_speed` and `target_yaw_rate`; one output per recorded column
 /// ([`SPATIAL_COLUMNS`]) and the books' residual.
 fn table() -> Vec<Variable> {
@@ -256,7 +262,10 @@ fn table() -> Vec<Variable> {
     use Causality::{Input as In, Output as Out, Parameter as P};
     for (name, kind, unit, description, start, setting) in scenario_settings() {
         let description = match setting {
-            Setting::Soil => continue,
+            Setting::Soil => "rigid, or a soil of Wong's table (dry-sand, sandy-loam, clay, \
+                 heavy-clay, lete-sand, snow): soft soil under both tracks, each leaving its rut \
+                 (the 3-D main job's --soil)"
+                .to_string(),
             Setting::Engine => "1: through the engine (the powertrain export_spatial_fmu!(V, \
                  powertrain = f) was given, else the vehicle's declared one; refused where there \
                  is neither): on a differential with the engine's inertia declared, its speed a \

@@ -8,9 +8,10 @@ use trackgen::nalgebra::DVector;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{
     Differential, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideDrives, SpatialEngine,
-    SpatialSimulated, SpatialVehicleSystem, SteerDrive, on_course, spatial_row,
+    SpatialLaws, SpatialSimulated, SpatialVehicleSystem, SteerDrive, on_course, spatial_row,
 };
 use trackgen::terrain::Terrain;
+use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::{Vehicle, speed_ramp};
 use trackgen::vehicles::m113::M113;
 use trackgen_fmu::variables::Role;
@@ -120,12 +121,29 @@ fn native_run(
     (speed, ramp, turn): (f64, f64, f64),
     drives: Drives,
 ) -> Vec<Vec<f64>> {
+    native_on(
+        M113::declared_laws(),
+        t_end,
+        every,
+        (speed, ramp, turn),
+        drives,
+    )
+}
+
+/// [`native_run`] under `laws`.
+fn native_on(
+    laws: SpatialLaws,
+    t_end: f64,
+    every: f64,
+    (speed, ramp, turn): (f64, f64, f64),
+    drives: Drives,
+) -> Vec<Vec<f64>> {
     let bump = Terrain::Bump {
         centre: 12.0,
         width: 1.0,
         height: 0.1,
     };
-    let (mut system, mut y, _) = on_course::<M113>(M113::declared_laws(), &bump, 0.0).unwrap();
+    let (mut system, mut y, _) = on_course::<M113>(laws, &bump, 0.0).unwrap();
     let drive = || M113::speed_drive(speed_ramp(1.0, ramp, speed));
     let powertrain = || M113::powertrain().expect("the M113 declares its powertrain");
     let driveline = match drives {
@@ -210,6 +228,34 @@ fn outputs_are_the_native_runs() {
         let fmu = run_fmu(&mut Instance::<Model>::new().unwrap(), t_end, h);
         assert_same(&fmu, &native(t_end, h, (3.0, 90.0), Drives::Sides));
     }
+}
+
+/// `soil`: both tracks on soft soil, as `spatial --soil`: every output at
+/// every communication point is the native run's on the same soil (its
+/// rut pressed after each step), bit for bit; the M113 sinks into dry
+/// sand (its centre of mass lower than on rigid ground by more than
+/// 1 cm at 2 s).
+#[test]
+fn on_soil_the_outputs_are_the_native_runs() {
+    let (t_end, h) = (2.0, 0.05);
+    let mut instance = Instance::<Model>::new().unwrap();
+    instance.set_string(reference("soil"), "dry-sand").unwrap();
+    let fmu = run_fmu(&mut instance, t_end, h);
+    let laws = SpatialLaws {
+        soil: Some(SoilPreset::DrySand.soil()),
+        ..M113::declared_laws()
+    };
+    assert_same(
+        &fmu,
+        &native_on(laws, t_end, h, (3.0, 2.0, 90.0), Drives::Sides),
+    );
+    let z = columns(&instance)
+        .iter()
+        .position(|r| *r == reference("z"))
+        .unwrap();
+    let rigid = native(t_end, h, (3.0, 90.0), Drives::Sides);
+    let sunk = rigid.last().unwrap()[z] - fmu.last().unwrap()[z];
+    assert!(sunk > 0.01, "sunk {sunk} m");
 }
 
 /// `engine = 1`: the declared engine's full-load envelope caps each
@@ -438,6 +484,7 @@ fn bad_values_are_refused_by_name() {
         ("steering", "wheel"),
         ("drive", "torque"),
         ("course", "moon"),
+        ("soil", "mud"),
     ] {
         let e = instance.set_string(reference(name), value).expect_err(name);
         assert!(e.to_string().starts_with(name), "{e}");
@@ -447,7 +494,7 @@ fn bad_values_are_refused_by_name() {
         .iter()
         .map(|v| v.name.as_str())
         .collect();
-    for planar in ["drawbar_pull", "drive_torque", "soil"] {
+    for planar in ["drawbar_pull", "drive_torque"] {
         assert!(!names.contains(&planar), "{planar} is no spatial variable");
     }
     instance
