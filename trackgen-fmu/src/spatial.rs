@@ -7,6 +7,7 @@
 //! default tolerance.
 
 use std::marker::PhantomData;
+use std::path::Path;
 use std::sync::Arc;
 
 use trackgen::integrate::{Integrator, SimulationError};
@@ -15,9 +16,10 @@ use trackgen::scenario::{Range, Scenario, Soil};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
     DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialLaws, SpatialSimulated,
-    SpatialVehicleSystem, drive_as_asked, on_grounds, spatial_row,
+    SpatialVehicleSystem, drive_as_asked, on_grid, on_grounds, spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
+use trackgen::terrain::grid_file::read_grid;
 use trackgen::vehicle::{Powertrain, speed_ramp};
 
 use crate::error::FmuError;
@@ -78,29 +80,7 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
         instance: &Instance<Self>,
     ) -> Result<(V::Spatial, DVector<f64>, Integrator), FmuError> {
         let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
-        let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
-        let mut grounds = [terrain.clone(), terrain];
-        for (ground, file) in grounds
-            .iter_mut()
-            .zip([Setting::RightCourseFile, Setting::LeftCourseFile])
-        {
-            let file = instance.text(file);
-            if !file.is_empty() {
-                *ground = CourseSpec::File(file.into())
-                    .terrain()
-                    .map_err(|e| built(&e))?;
-            }
-        }
-        let slope = instance.number(Setting::SideSlope);
-        let laws = SpatialLaws {
-            soil: match instance.soil()? {
-                Soil::Rigid => None,
-                Soil::Soft(preset) => Some(preset.soil()),
-            },
-            ..V::declared_laws()
-        };
-        let (mut system, mut y, _) =
-            on_grounds::<V>(laws, (&grounds[0], &grounds[1]), slope).map_err(|e| built(&e))?;
+        let (mut system, mut y) = grounded::<V>(instance)?;
         let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
             match instance.text(Setting::Drive) {
                 "speed" => {
@@ -243,6 +223,49 @@ fn range(role: Role) -> Option<Range> {
     }
 }
 
+/// The vehicle set on the ground the parameters name (the grid of
+/// `field_file`, else the course with each track's own file where
+/// given) under its declared laws on the `soil`, as the 3-D main job
+/// sets it: the system and its state.
+fn grounded<V: SpatialVehicleSystem>(
+    instance: &Instance<Spatial<V>>,
+) -> Result<(V::Spatial, DVector<f64>), FmuError> {
+    let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
+    let slope = instance.number(Setting::SideSlope);
+    let laws = SpatialLaws {
+        soil: match instance.soil()? {
+            Soil::Rigid => None,
+            Soil::Soft(preset) => Some(preset.soil()),
+        },
+        ..V::declared_laws()
+    };
+    let sides = [Setting::RightCourseFile, Setting::LeftCourseFile].map(|s| instance.text(s));
+    let field_file = instance.text(Setting::FieldFile);
+    if !field_file.is_empty() {
+        if sides.iter().any(|file| !file.is_empty()) {
+            return Err(built(
+                &"field_file is the whole ground: left_course_file and right_course_file \
+                  cannot be given with it",
+            ));
+        }
+        let grid = read_grid(Path::new(field_file)).map_err(|e| built(&e))?;
+        let (system, y, _) = on_grid::<V>(laws, grid, slope).map_err(|e| built(&e))?;
+        return Ok((system, y));
+    }
+    let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
+    let mut grounds = [terrain.clone(), terrain];
+    for (ground, file) in grounds.iter_mut().zip(sides) {
+        if !file.is_empty() {
+            *ground = CourseSpec::File(file.into())
+                .terrain()
+                .map_err(|e| built(&e))?;
+        }
+    }
+    let (system, y, _) =
+        on_grounds::<V>(laws, (&grounds[0], &grounds[1]), slope).map_err(|e| built(&e))?;
+    Ok((system, y))
+}
+
 /// The spatial FMU's variables: the time; the course's, the speed
 /// profile's, the engine's and the integrator's parameters as the planar
 /// FMU's, the side slope and the steering; the inputs
@@ -349,7 +372,7 @@ fn table() -> Vec<Variable> {
 
 /// The spatial model's own parameters: the side slope, the driveline and
 /// the steering.
-fn spatial_settings() -> [SettingRow; 9] {
+fn spatial_settings() -> [SettingRow; 10] {
     let (turn, turn_at, turn_time) = TURN;
     [
         (
@@ -391,6 +414,14 @@ fn spatial_settings() -> [SettingRow; 9] {
             "a profile CSV under the right track alone, as left_course_file",
             Start::String(String::new()),
             Setting::RightCourseFile,
+        ),
+        (
+            "field_file",
+            Kind::String,
+            "",
+            "an ESRI ASCII grid (.asc): the ground as heights on a grid instead of the course (whose parameters are then not read) and the side files (refused with it); empty: the course (the 3-D main job's --field-file)",
+            Start::String(String::new()),
+            Setting::FieldFile,
         ),
         (
             "steering",

@@ -120,6 +120,9 @@ pub enum Setting {
     LeftCourseFile,
     /// `right_course_file`: under the right track alone.
     RightCourseFile,
+    /// `field_file`: an ESRI ASCII grid, the whole ground (3-D; empty:
+    /// the course).
+    FieldFile,
 }
 
 /// The inputs.

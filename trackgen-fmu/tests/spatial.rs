@@ -8,9 +8,11 @@ use trackgen::nalgebra::DVector;
 use trackgen::spatial::SpatialVehicle;
 use trackgen::spatial_vehicle::{
     Differential, Driveline, EngineEnvelope, FullSteer, HeadingHold, SideDrives, SpatialEngine,
-    SpatialLaws, SpatialSimulated, SpatialVehicleSystem, SteerDrive, on_course, spatial_row,
+    SpatialLaws, SpatialSimulated, SpatialVehicleSystem, SteerDrive, on_course, on_grid,
+    spatial_row,
 };
 use trackgen::terrain::Terrain;
+use trackgen::terrain::grid_file::read_grid;
 use trackgen::terrain::soil::SoilPreset;
 use trackgen::vehicle::{Vehicle, speed_ramp};
 use trackgen::vehicles::m113::M113;
@@ -143,7 +145,18 @@ fn native_on(
         width: 1.0,
         height: 0.1,
     };
-    let (mut system, mut y, _) = on_course::<M113>(laws, &bump, 0.0).unwrap();
+    let (system, y, _) = on_course::<M113>(laws, &bump, 0.0).unwrap();
+    native_from((system, y), t_end, every, (speed, ramp, turn), drives)
+}
+
+/// [`native_run`] of the vehicle `placed` on its ground.
+fn native_from(
+    (mut system, mut y): (<M113 as SpatialVehicleSystem>::Spatial, DVector<f64>),
+    t_end: f64,
+    every: f64,
+    (speed, ramp, turn): (f64, f64, f64),
+    drives: Drives,
+) -> Vec<Vec<f64>> {
     let drive = || M113::speed_drive(speed_ramp(1.0, ramp, speed));
     let powertrain = || M113::powertrain().expect("the M113 declares its powertrain");
     let driveline = match drives {
@@ -256,6 +269,75 @@ fn on_soil_the_outputs_are_the_native_runs() {
     let rigid = native(t_end, h, (3.0, 90.0), Drives::Sides);
     let sunk = rigid.last().unwrap()[z] - fmu.last().unwrap()[z];
     assert!(sunk > 0.01, "sunk {sunk} m");
+}
+
+/// `field_file`: the ground as heights on a grid, as `spatial
+/// --field-file` reads it: a ridge 80 mm high under the left half alone;
+/// every output is the native run's on that grid (`on_grid`) bit for
+/// bit, and the hull rolls over it. A side file beside it, and a grid
+/// with a hole, are refused when the run is built, the hole by its line.
+#[test]
+fn a_grid_file_is_the_ground() {
+    let dir = std::env::temp_dir().join(format!("trackgen-fmu-grid-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (nx, ny) = (161, 9);
+    let mut text = format!(
+        "ncols {nx}\nnrows {ny}\nxllcenter -20\nyllcenter -2\ncellsize 0.5\nNODATA_value -9999\n"
+    );
+    for j in (0..ny).rev() {
+        let y = -2.0 + 0.5 * j as f64;
+        let row: Vec<&str> = (0..nx)
+            .map(|i| {
+                let x = -20.0 + 0.5 * i as f64;
+                if y > 0.0 && (3.5..=4.5).contains(&x) {
+                    "0.08"
+                } else {
+                    "0"
+                }
+            })
+            .collect();
+        text.push_str(&row.join(" "));
+        text.push('\n');
+    }
+    let write = |name: &str, text: &str| {
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let ridge = write("ridge.asc", &text);
+    let holed = write("holed.asc", &text.replacen("0.08", "-9999", 1));
+    let on = |file: &str| {
+        let mut instance = Instance::<Model>::new().unwrap();
+        instance.set_string(reference("field_file"), file).unwrap();
+        instance
+    };
+    let (t_end, h) = (4.0, 0.1);
+    let mut instance = on(&ridge);
+    let fmu = run_fmu(&mut instance, t_end, h);
+    let grid = read_grid(&ridge).unwrap();
+    let (system, y, _) = on_grid::<M113>(M113::declared_laws(), grid, 0.0).unwrap();
+    assert_same(
+        &fmu,
+        &native_from((system, y), t_end, h, (3.0, 2.0, 90.0), Drives::Sides),
+    );
+    let roll = columns(&instance)
+        .iter()
+        .position(|r| *r == reference("roll"))
+        .unwrap();
+    let most = fmu.iter().map(|r| r[roll]).fold(0.0, f64::max);
+    assert!(most > 1e-3, "roll at most {most} rad");
+    let mut beside = on(&ridge);
+    beside
+        .set_string(reference("left_course_file"), &ridge)
+        .unwrap();
+    beside.enter_initialization().unwrap();
+    let e = beside.exit_initialization().unwrap_err();
+    assert!(e.to_string().contains("field_file"), "{e}");
+    let mut refused = on(&holed);
+    refused.enter_initialization().unwrap();
+    let e = refused.exit_initialization().unwrap_err();
+    assert!(e.to_string().contains("holed.asc:"), "{e}");
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 /// `engine = 1`: the declared engine's full-load envelope caps each
