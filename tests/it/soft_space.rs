@@ -118,8 +118,9 @@ fn a_lifted_point_leaves_its_memory_in_the_rut_and_starts_its_shear_again() {
     let forward = Vector2::x();
     let state = Vector2::new(0.04, -0.01);
     let slot = (0, 3);
-    assert!(!ground.press_point(slot, (at, 0.04), forward, state));
-    assert!(!ground.press_point(slot, (at, -0.01), forward, state));
+    let half = (at.xy(), forward);
+    assert!(!ground.press_point(slot, (at, 0.04), half, state));
+    assert!(!ground.press_point(slot, (at, -0.01), half, state));
     let p = (soil.k_c / WIDTH + soil.k_phi) * 0.04_f64.powf(soil.n);
     let plastic = 0.04 - p / soil.unloading_stiffness;
     let left = ground.rut.memory(at.xy());

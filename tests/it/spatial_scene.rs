@@ -2,14 +2,19 @@
 //! `animation.html` plays) against its declared geometry: each track's
 //! joints a pitch apart round the loop and in its plane, each wheel at its
 //! side's offset, the hull's outline carried rigidly; and the whole scene
-//! moved as a rigid body with the vehicle.
+//! moved as a rigid body with the vehicle; the floor under it as the
+//! ground is, on soft soil with its rut.
 
+use trackgen::integrate::{Integrator, OdeSystem};
 use trackgen::multibody::RecursiveModel;
 use trackgen::nalgebra::{Rotation3, Vector2, Vector3};
 use trackgen::spatial::SpatialVehicle;
-use trackgen::spatial_vehicle::{SpatialScene, SpatialSystem};
+use trackgen::spatial_vehicle::{SideDrives, SpatialLaws, SpatialScene, SpatialSystem};
+use trackgen::terrain::field::HeightField;
+use trackgen::terrain::soil::SoilPreset;
+use trackgen::vehicle::Drive;
 
-use crate::support::twin::{System, TRACK, Twin, at_rest, spatial};
+use crate::support::twin::{System, TRACK, Twin, at_rest, laws, on, spatial};
 
 /// A side view to draw the hull by, m in its centroid frame.
 fn outline() -> Vec<Vector2<f64>> {
@@ -118,4 +123,62 @@ fn the_scene_moves_with_the_vehicle() {
     for (p, q) in home.axes.iter().zip(&moved.axes) {
         assert!((q - turn * p).norm() < 1e-12, "{q} against {}", turn * p);
     }
+}
+
+/// The side view's floor is the ground under the right track as it is:
+/// on level rigid ground, level with the ground at every sample, from
+/// 6 m behind the centroid to 6 m ahead every 0.1 m; on dry sand, after
+/// the carrier has settled 0.5 s, the rut under it lies below the level
+/// (by its plastic sinkage, as the soil remembers it), and the sand
+/// ahead and behind is untouched.
+#[test]
+fn the_floor_is_the_ground_under_the_right_track_as_it_is() {
+    let scene = drawn(0.0, (0.0, 0.0));
+    assert_eq!(scene.floor.len(), 121);
+    for (i, p) in scene.floor.iter().enumerate() {
+        assert!((p.x - (-6.0 + 0.1 * i as f64)).abs() < 1e-12, "{p}");
+        assert_eq!(p.y, -scene.centre.z, "{p}");
+    }
+    let sand = SpatialLaws {
+        soil: Some(SoilPreset::DrySand.soil()),
+        ..laws()
+    };
+    let still = || Drive::Torque(Box::new(|_| 0.0));
+    let mut system = on(
+        HeightField::level(),
+        sand,
+        SideDrives {
+            right: still(),
+            left: still(),
+        },
+    );
+    let (hull, right, left) = at_rest(0.0, (0.0, 0.0));
+    let mut y = system.state(&hull, &right, &left);
+    let mut stepper = Integrator::bs23(1e-4).stepper(system.dimension());
+    let mut t = 0.0;
+    while t < 0.5 {
+        stepper
+            .step(&mut system, &mut t, &mut y, 0.5)
+            .expect("settles");
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
+    }
+    let scene = system.scene(t, y.as_slice(), &outline());
+    // The deepest sample within `reach` m of `u`: the footprints along a
+    // shoe leave gaps (the guide's "In space"), so a single sample may
+    // fall in one.
+    let depth = |u: f64, reach: f64| {
+        scene
+            .floor
+            .iter()
+            .filter(|p| (p.x - u).abs() <= reach)
+            .map(|p| -scene.centre.z - p.y)
+            .fold(f64::MIN, f64::max)
+    };
+    let under = depth(0.0, 0.5);
+    println!("the rut under the carrier {under:.4} m");
+    assert!(under > 0.01, "the rut under the carrier: {under} m");
+    assert_eq!(depth(6.0, 1.0), 0.0);
+    assert_eq!(depth(-6.0, 1.0), 0.0);
 }

@@ -29,7 +29,6 @@ use trackgen::spatial_vehicle::{
     spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
-use trackgen::terrain::field::HeightField;
 use trackgen::terrain::grid_file::read_grid;
 use trackgen::vehicle::speed_ramp;
 use trackgen_arrow::ArrowSink;
@@ -145,14 +144,9 @@ pub const TURN_AT: f64 = 8.0;
 pub const TURN_TIME: f64 = 4.0;
 /// The default simulated time, s: the turn and 2 s after it.
 pub const DURATION: f64 = 14.0;
-/// A spatial vehicle set on its ground: the system, its state, the
-/// ground, and what to say of it.
-type Grounded<V> = (
-    <V as SpatialVehicleSystem>::Spatial,
-    DVector<f64>,
-    HeightField,
-    String,
-);
+/// A spatial vehicle set on its ground: the system, its state, and what
+/// to say of the ground.
+type Grounded<V> = (<V as SpatialVehicleSystem>::Spatial, DVector<f64>, String);
 
 /// The vehicle set on the ground `args` ask for (a grid file, else the
 /// course with each track's own file where given), and what to say of
@@ -161,13 +155,8 @@ fn on_the_ground<V: SpatialVehicleSystem>(
     args: &SpatialArgs,
 ) -> Result<Grounded<V>, Box<dyn Error>> {
     if let Some(path) = &args.field_file {
-        let (system, y, ground) = on_grid::<V>(laws::<V>(args), read_grid(path)?, args.side_slope)?;
-        return Ok((
-            system,
-            y,
-            ground,
-            format!("the height field of {}", path.display()),
-        ));
+        let (system, y, _) = on_grid::<V>(laws::<V>(args), read_grid(path)?, args.side_slope)?;
+        return Ok((system, y, format!("the height field of {}", path.display())));
     }
     let course = args.course.spec(args.speed, args.duration);
     let terrain = course.terrain()?;
@@ -179,9 +168,9 @@ fn on_the_ground<V: SpatialVehicleSystem>(
             *ground = spec.terrain()?;
         }
     }
-    let (system, y, ground) =
+    let (system, y, _) =
         on_grounds::<V>(laws::<V>(args), (&grounds[0], &grounds[1]), args.side_slope)?;
-    Ok((system, y, ground, course_said(&course, &sides)))
+    Ok((system, y, course_said(&course, &sides)))
 }
 
 /// The vehicle's declared laws, on the soil `args` ask for.
@@ -329,7 +318,7 @@ fn drive<V: SpatialVehicleSystem>(
 ) -> Result<(), Box<dyn Error>> {
     let layout = V::layout();
     let assembling = Instant::now();
-    let (mut system, mut y, ground, ground_said) = on_the_ground::<V>(args)?;
+    let (mut system, mut y, ground_said) = on_the_ground::<V>(args)?;
     let assembly = assembling.elapsed().as_secs_f64();
     let target = || -> Box<dyn Fn(f64) -> f64 + Send> {
         Box::new(speed_ramp(args.settle, args.ramp, args.speed))
@@ -446,7 +435,7 @@ fn drive<V: SpatialVehicleSystem>(
     let books = Books::at(&system, march.state().as_slice()).since(&before);
     report(&summary, (t, wall), &march.stats(), &books, args);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
-    written.extend(pictures(&dir, &thinned, (&frames, &ground), V::NAME)?);
+    written.extend(pictures(&dir, &thinned, &frames, V::NAME)?);
     say!(
         "wrote {}/{{{}}} ({row} rows)",
         dir.display(),
@@ -457,12 +446,12 @@ fn drive<V: SpatialVehicleSystem>(
 }
 
 /// The run's pictures into `dir`: the path from above (`spatial.svg`,
-/// from the `thinned` rows) and the page that plays its `frames` over the
-/// `ground` (`animation.html`); the files written.
+/// from the `thinned` rows) and the page that plays its `frames`, each
+/// over the ground as it was then (`animation.html`); the files written.
 fn pictures(
     dir: &Path,
     thinned: &Thinned,
-    (frames, ground): (&Frames, &HeightField),
+    frames: &Frames,
     name: &str,
 ) -> Result<Vec<&'static str>, Box<dyn Error>> {
     let mut written = Vec::new();
@@ -476,7 +465,7 @@ fn pictures(
         draw(&dir.join("spatial.svg"), &path, name)?;
         written.push("spatial.svg");
     }
-    if frames.write(&dir.join("animation.html"), ground, name)? {
+    if frames.write(&dir.join("animation.html"), name)? {
         written.push("animation.html");
     }
     Ok(written)

@@ -7,7 +7,6 @@ use std::path::Path;
 
 use trackgen::nalgebra::Vector2;
 use trackgen::spatial_vehicle::{SpatialScene, SpatialSimulated, SpatialVehicleSystem};
-use trackgen::terrain::field::HeightField;
 use trackgen_draw::spatial_animation;
 
 /// The most frames a page holds: some 650 numbers each, a page of a few
@@ -47,18 +46,13 @@ impl Frames {
         self.next += self.every * ((t - self.next) / self.every).floor().max(0.0) + self.every;
     }
 
-    /// The page of the frames kept over the ground `field` into `file`,
+    /// The page of the frames kept, each over its floor, into `file`,
     /// headed `title`; nothing where fewer than two were kept.
-    pub(crate) fn write(
-        &self,
-        file: &Path,
-        field: &HeightField,
-        title: &str,
-    ) -> std::io::Result<bool> {
+    pub(crate) fn write(&self, file: &Path, title: &str) -> std::io::Result<bool> {
         if self.kept.len() < 2 {
             return Ok(false);
         }
-        let page = spatial_animation::html(&self.kept, &|x, y| field.height(x, y), title);
+        let page = spatial_animation::html(&self.kept, title);
         std::fs::write(file, page)?;
         Ok(true)
     }

@@ -10,12 +10,6 @@ use trackgen::spatial_vehicle::SpatialScene;
 
 use crate::animation::Mm;
 
-/// How far ahead of and behind the hull's centroid the side view draws the
-/// ground, m.
-const GROUND_REACH: f64 = 6.0;
-/// The ground's samples along the side view, m apart.
-const GROUND_STEP: f64 = 0.1;
-
 /// `points` as a flat JSON list of their coordinates to 0.1 mm.
 fn flat(points: impl IntoIterator<Item = Vector2<f64>>) -> String {
     let mut s = String::from("[");
@@ -36,9 +30,8 @@ fn side(p: &Vector3<f64>, centre: &Vector3<f64>, forward: &Vector2<f64>) -> Vect
 }
 
 /// One frame's JSON: the top view in world `x, y`; the side view from
-/// the centroid along the heading; the ground's heights under the side
-/// view from `ground`.
-fn frame(f: &SpatialScene, ground: &dyn Fn(f64, f64) -> f64) -> String {
+/// the centroid along the heading, over the scene's floor.
+fn frame(f: &SpatialScene) -> String {
     let heading = f.axes[0].xy();
     let forward = if heading.norm() > 1e-9 {
         heading.normalize()
@@ -55,12 +48,7 @@ fn frame(f: &SpatialScene, ground: &dyn Fn(f64, f64) -> f64) -> String {
             format!("[{},{},{},{s}]", Mm(at.x), Mm(at.y), Mm(*r))
         })
         .collect();
-    let n = (2.0 * GROUND_REACH / GROUND_STEP).round() as usize;
-    let floor = flat((0..=n).map(|i| {
-        let u = -GROUND_REACH + i as f64 * GROUND_STEP;
-        let x = f.centre.xy() + forward * u;
-        Vector2::new(u, ground(x.x, x.y) - f.centre.z)
-    }));
+    let floor = flat(f.floor.iter().copied());
     format!(
         "{{\"t\":{:.3},\"tw\":{},\"c\":[{},{}],\"top\":{},\"tr\":[{},{}],\"o\":{},\"sr\":[{},{}],\"w\":[{}],\"g\":{}}}",
         f.t,
@@ -78,15 +66,14 @@ fn frame(f: &SpatialScene, ground: &dyn Fn(f64, f64) -> f64) -> String {
     )
 }
 
-/// The page playing `frames` over the ground of heights `ground(x, y)`
-/// (m), headed `title`.
-pub fn html(frames: &[SpatialScene], ground: &dyn Fn(f64, f64) -> f64, title: &str) -> String {
+/// The page playing `frames`, each over its floor, headed `title`.
+pub fn html(frames: &[SpatialScene], title: &str) -> String {
     let mut data = String::from("[");
     for (i, f) in frames.iter().enumerate() {
         if i > 0 {
             data.push_str(",\n");
         }
-        data.push_str(&frame(f, ground));
+        data.push_str(&frame(f));
     }
     data.push(']');
     TEMPLATE
@@ -101,7 +88,7 @@ const TEMPLATE: &str = r#"<!doctype html>
 <h3>trackgen: __TITLE__</h3>
 <canvas id="top" width="560" height="460"></canvas><canvas id="side" width="560" height="460"></canvas><br>
 <button id="play">pause</button> <input id="s" type="range" min="0" value="0" style="width:800px"> <span id="t"></span>
-<p>Left: from above, the right track dark, the left light (each as wide as its shoes), the path of the hull's centroid dotted. Right: from the right, along the hull's heading, the left track and wheels behind in grey.</p>
+<p>Left: from above, the right track dark, the left light (each as wide as its shoes), the path of the hull's centroid dotted. Right: from the right, along the hull's heading, over the ground under the right track as it was then (on soft soil, its rut), the left track and wheels behind in grey.</p>
 <script>
 const F = __FRAMES__;
 const tc = document.getElementById('top').getContext('2d'), sc = document.getElementById('side').getContext('2d');
@@ -165,26 +152,23 @@ mod tests {
             tracks: [vec![at(0.5, -1.0, -0.5)], vec![at(0.5, 1.0, -0.5)]],
             wheels: vec![(at(0.25, -1.0, -0.75), 0.25, 0)],
             track_width: 0.4,
+            floor: vec![Vector2::new(-6.0, -0.8), Vector2::new(6.0, -0.8)],
         }
     }
 
     /// The page holds one frame per scene with its time, its side view
     /// measured from the hull's centroid along its heading (the wheel
-    /// 0.25 m ahead and 0.75 m down), and the ground sampled every
-    /// [`GROUND_STEP`] over [`GROUND_REACH`] either way, at the height the
-    /// ground gives less the centroid's.
+    /// 0.25 m ahead and 0.75 m down), and its floor.
     #[test]
     fn the_page_holds_each_scene_seen_from_above_and_from_the_side() {
-        let page = html(&[scene(0.0, 0.0), scene(0.04, 0.1)], &|_, _| 0.2, "Test");
+        let page = html(&[scene(0.0, 0.0), scene(0.04, 0.1)], "Test");
         assert_eq!(page.matches("{\"t\":").count(), 2);
         assert!(page.contains("{\"t\":0.040,\"tw\":0.4000,\"c\":[0.1000,0.0000]"));
         assert!(page.contains("\"w\":[[0.2500,-0.7500,0.2500,0]]"), "{page}");
         let ground = page.split("\"g\":[").nth(1).expect("a ground");
         let ground = &ground[..ground.find(']').expect("its end")];
         let values: Vec<f64> = ground.split(',').map(|v| v.parse().unwrap()).collect();
-        let n = (2.0 * GROUND_REACH / GROUND_STEP).round() as usize + 1;
-        assert_eq!(values.len(), 2 * n);
-        assert_eq!((values[0], values[1]), (-GROUND_REACH, -0.8));
+        assert_eq!(values, [-6.0, -0.8, 6.0, -0.8]);
         assert!(page.contains("<title>trackgen: Test</title>"));
     }
 }

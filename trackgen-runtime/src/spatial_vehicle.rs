@@ -66,7 +66,7 @@ pub use envelope::EngineEnvelope;
 pub use on_course::{OnCourseError, on_course, on_grid, on_grounds};
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use rows::{SPATIAL_COLUMNS, spatial_row};
-pub use scene::SpatialScene;
+pub use scene::{FLOOR_REACH, FLOOR_STEP, SpatialScene};
 pub use steering::{HeadingHold, HeadingSchedule, SteeringError};
 pub use system::{SideBooks, SpatialEnergy, SpatialSystem};
 pub use tensions::TrackTensions;

@@ -23,7 +23,9 @@
 //! What each point's memory and its displacement's start are, between
 //! accepted steps ([`SoftSpace::press_point`]): as on the plane, a point
 //! bearing on the soil carries its patch's memory and imprints it on the
-//! rut as it deepens, and leaves it there when it lifts. A point's shear
+//! rut as it deepens, and leaves it there when it lifts, over its
+//! footprint: along the shoe the planar point's (its patch's length,
+//! centred on the point), across its half of the shoe. A point's shear
 //! displacement is its state less the state it had when it last rose
 //! above the undisturbed surface (its `origin`): the displacement since it
 //! sank in, Wong's `j`, without the integrator's state being reset. A
@@ -203,17 +205,20 @@ impl SoftSpace {
 
     /// After an accepted step, the point `slot` of side `side` at `at`
     /// (m), sunk `z` m below the undisturbed surface (negative above it),
-    /// its shoe heading along the unit `forward` in the ground plane, its
-    /// shear state `state`: what the ground remembers brought up to it (as
-    /// the planar [`SoftGround::press`](super::soft_ground::SoftGround::press)
-    /// does for its points). Returns whether the force at this state
-    /// changed (a point that did not bear and now would, on the rut's
-    /// memory where it is): then the integrator must restart.
+    /// its footprint centred at `half` (m, in the ground's plane: level
+    /// with the point along the shoe, in the middle of its half of the
+    /// shoe across), the shoe heading along the unit `forward` in that
+    /// plane, its shear state `state`: what the ground remembers brought
+    /// up to it (as the planar
+    /// [`SoftGround::press`](super::soft_ground::SoftGround::press) does
+    /// for its points). Returns whether the force at this state changed
+    /// (a point that did not bear and now would, on the rut's memory where
+    /// it is): then the integrator must restart.
     pub fn press_point(
         &mut self,
         (side, slot): (usize, usize),
         (at, z): (Vector3<f64>, f64),
-        forward: Vector2<f64>,
+        (half, forward): (Vector2<f64>, Vector2<f64>),
         state: Vector2<f64>,
     ) -> bool {
         let (soil, width) = (&self.soil, self.width);
@@ -228,14 +233,14 @@ impl SoftSpace {
             patch.loaded = true;
             if pressed != patch.memory {
                 patch.memory = pressed;
-                self.rut.imprint(at.xy(), forward, footprint, pressed, soil);
+                self.rut.imprint(half, forward, footprint, pressed, soil);
             }
             return false;
         }
         if patch.loaded {
             patch.loaded = false;
             self.rut
-                .imprint(at.xy(), forward, footprint, patch.memory, soil);
+                .imprint(half, forward, footprint, patch.memory, soil);
         }
         // Above the undisturbed surface the point has left the soil it
         // sheared: its displacement starts again from here.
@@ -249,14 +254,15 @@ impl SoftSpace {
 
     /// After an accepted step, the point `slot` of side `side` on a link
     /// passed over, above every ground under its track: it bears nothing
-    /// and shears nothing (what it bore left in the rut where it is now,
-    /// `at`), its displacement starts again from `state`, and its memory
-    /// is read from the rut when it next meets the ground.
+    /// and shears nothing (what it bore left in the rut under its
+    /// footprint where it is now, `half` and `forward` as
+    /// [`press_point`](Self::press_point) takes them), its displacement
+    /// starts again from `state`, and its memory is read from the rut when
+    /// it next meets the ground.
     pub fn passed_over(
         &mut self,
         (side, slot): (usize, usize),
-        at: Vector3<f64>,
-        forward: Vector2<f64>,
+        (half, forward): (Vector2<f64>, Vector2<f64>),
         state: Vector2<f64>,
     ) {
         let footprint = self.footprint(side);
@@ -264,14 +270,16 @@ impl SoftSpace {
         if patch.loaded {
             patch.loaded = false;
             self.rut
-                .imprint(at.xy(), forward, footprint, patch.memory, &self.soil);
+                .imprint(half, forward, footprint, patch.memory, &self.soil);
         }
         patch.origin = state;
         patch.stale = true;
     }
 
     /// A point's patch on the ground: its length along the track (the
-    /// area over half the width) and half the track's width across, m.
+    /// area over half the width, as the planar rut's) and half the track's
+    /// width across (its half of the shoe, from the middle to the edge),
+    /// m.
     fn footprint(&self, side: usize) -> (f64, f64) {
         let half = 0.5 * self.width;
         (self.patch_area[side] / half, half)

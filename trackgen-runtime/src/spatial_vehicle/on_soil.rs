@@ -118,7 +118,8 @@ where
             Bodies::at(&self.right, right.parts()),
             Bodies::at(&self.left, left.parts()),
         ];
-        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let width = self.shoe.width.unwrap_or(0.0);
+        let across = width / (2.0 * 3.0_f64.sqrt());
         let mut changed = false;
         for (s, links) in tracks.iter().enumerate() {
             let clear_above = self.clear_above(links, across);
@@ -129,12 +130,15 @@ where
                 for p in &self.shoe.ground_points {
                     for lateral in [-across, across] {
                         let at = links.point_across(k, *p, lateral);
+                        // The middle of the point's half of the shoe.
+                        let half = links.point_across(k, *p, lateral.signum() * 0.25 * width);
+                        let footprint = (half.xy(), forward);
                         let state = Vector2::new(shears[s][2 * slot], shears[s][2 * slot + 1]);
                         if passed {
-                            soil.passed_over((s, slot), at, forward, state);
+                            soil.passed_over((s, slot), footprint, state);
                         } else {
                             let z = self.field.height(at.x, at.y) - at.z;
-                            changed |= soil.press_point((s, slot), (at, z), forward, state);
+                            changed |= soil.press_point((s, slot), (at, z), footprint, state);
                         }
                         slot += 1;
                     }
@@ -148,5 +152,16 @@ where
     /// The soft soil and what it remembers, on soil.
     pub fn soil(&self) -> Option<&SoftSpace> {
         self.soil.as_ref()
+    }
+
+    /// The ground's height at `(x, y)` as it is now, m: the height
+    /// field's, less on soft soil the plastic sinkage the soil remembers
+    /// there (the rut's floor).
+    pub fn surface(&self, x: f64, y: f64) -> f64 {
+        let height = self.field.height(x, y);
+        match &self.soil {
+            Some(soil) => height - soil.rut.memory(Vector2::new(x, y)).plastic,
+            None => height,
+        }
     }
 }

@@ -1,6 +1,8 @@
 //! The spatial vehicle drawn at a state ([`SpatialScene`]): where a
 //! picture of it needs its hull, its tracks' joints and its wheels in the
-//! world, from the same bodies the force elements read.
+//! world, from the same bodies the force elements read, and the ground
+//! under its right track as it is at that instant (on soft soil, with
+//! the rut pressed so far).
 
 use nalgebra::{Vector2, Vector3};
 
@@ -31,7 +33,19 @@ pub struct SpatialScene {
     /// Each wheel, roller, sprocket and idler: its centre, its radius and
     /// its side (0 right, 1 left).
     pub wheels: Vec<(Vector3<f64>, f64, usize)>,
+    /// The ground under the right track's centre plane seen from the
+    /// right: along the hull's horizontal heading from the centroid (from
+    /// −[`FLOOR_REACH`] to +[`FLOOR_REACH`] every [`FLOOR_STEP`]) and its
+    /// height from the centroid's, m; on soft soil the rut's floor as the
+    /// soil remembers it now.
+    pub floor: Vec<Vector2<f64>>,
 }
+
+/// How far ahead of and behind the hull's centroid a scene's
+/// [`floor`](SpatialScene::floor) reaches, m.
+pub const FLOOR_REACH: f64 = 6.0;
+/// The floor's samples, m apart.
+pub const FLOOR_STEP: f64 = 0.1;
 
 impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
     SpatialSystem<'_, H, DH, R, DR, L, DL>
@@ -61,6 +75,21 @@ where
             .zip(&d.sides)
             .map(|(part, side)| (frame.centroid(part.body), part.radius, side.index()))
             .collect();
+        let heading = axes[0].xy();
+        let forward = if heading.norm() > 1e-9 {
+            heading.normalize()
+        } else {
+            Vector2::x()
+        };
+        let under_right = centre.xy() - axes[1].xy() * (0.5 * d.gauge);
+        let n = (2.0 * FLOOR_REACH / FLOOR_STEP).round() as usize;
+        let floor = (0..=n)
+            .map(|i| {
+                let u = -FLOOR_REACH + i as f64 * FLOOR_STEP;
+                let at = under_right + forward * u;
+                Vector2::new(u, d.surface(at.x, at.y) - centre.z)
+            })
+            .collect();
         SpatialScene {
             t,
             centre,
@@ -73,6 +102,7 @@ where
             ],
             wheels,
             track_width: width,
+            floor,
         }
     }
 }
