@@ -11,10 +11,10 @@
 //! testing each (its stiction deflections relax as a point off the
 //! ground's do).
 
-use nalgebra::Vector2;
+use nalgebra::{Vector2, Vector3};
 
 use super::{Bodies, GroundForce, SpatialDynamics};
-use crate::contact::space::SpaceContact;
+use crate::contact::space::{SpaceContact, SpaceForce};
 use crate::contact::{GroundFriction, GroundLaws};
 use crate::laws::{NormalLaw, Stiction};
 use crate::multibody::{ChassisModel, TrackModel};
@@ -96,17 +96,14 @@ where
                     match SpaceContact::at(&self.field, x, links.velocity_at(k, x)) {
                         Some(contact) => {
                             let force = half.respond_in_space(&contact, z);
-                            links.push(loads, k, force.force, x);
-                            if let Some(found) = found.as_mut() {
-                                found.push(GroundForce {
-                                    side,
-                                    link: k,
-                                    at: x,
-                                    force: force.force,
-                                });
-                            }
-                            potential += force.potential;
-                            dissipation += force.dissipation;
+                            let books = (&mut potential, &mut dissipation);
+                            land(
+                                links,
+                                (&mut *loads, &mut found),
+                                (side, k, x),
+                                &force,
+                                books,
+                            );
                             if stiction.is_some() {
                                 rates[i..i + 2].copy_from_slice(force.rate.as_slice());
                             }
@@ -161,6 +158,31 @@ where
         );
         top + reach + CLEARANCE_MARGIN
     }
+}
+
+/// A ground point's `force` at `x` on link `k` of `links`, side `side`:
+/// onto the link's load, into `found` if given, and what it stores and
+/// dissipates into the books. The one route of every ground point's
+/// force, on rigid ground and on soil.
+#[inline]
+pub(super) fn land(
+    links: &Bodies,
+    (loads, found): (&mut [SpatialLoad], &mut Option<&mut Vec<GroundForce>>),
+    (side, k, x): (Side, usize, Vector3<f64>),
+    force: &SpaceForce,
+    (potential, dissipation): (&mut f64, &mut f64),
+) {
+    links.push(loads, k, force.force, x);
+    if let Some(found) = found.as_mut() {
+        found.push(GroundForce {
+            side,
+            link: k,
+            at: x,
+            force: force.force,
+        });
+    }
+    *potential += force.potential;
+    *dissipation += force.dissipation;
 }
 
 /// Each of `deflections` relaxing off the ground, its rate into `rates`

@@ -10,23 +10,17 @@
 
 use nalgebra::Vector2;
 
+use super::ground::land;
 use super::{Bodies, GroundForce, SpatialDynamics, TreeState};
 use crate::contact::soft_space::SoftSpace;
 use crate::contact::space::SpaceContact;
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::{Side, SpatialLoad};
 
-/// Side `side`'s index among the soil's sides (right 0, left 1).
-fn index(side: Side) -> usize {
-    match side {
-        Side::Right => 0,
-        Side::Left => 1,
-    }
-}
-
-/// The unit direction of a link's `x` axis in the ground's plane (`x̂`
-/// for a link standing on end): the way its patches lie on the rut.
-fn heading(axis: nalgebra::Vector3<f64>) -> Vector2<f64> {
+/// The unit direction of `axis` in the ground's plane (`x̂` for an axis
+/// standing on end): the way a link's patches lie on the rut, the way a
+/// picture looks along the hull.
+pub(super) fn horizontal(axis: nalgebra::Vector3<f64>) -> Vector2<f64> {
     let along = axis.xy();
     let length = along.norm();
     if length > 1e-9 {
@@ -60,7 +54,7 @@ where
         let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
         let per_link = 2 * self.shoe.ground_points.len();
         let clear_above = self.clear_above(links, across);
-        let s = index(side);
+        let s = side.index();
         let (mut potential, mut dissipation) = (0.0, 0.0);
         let mut slot = 0;
         for k in 0..links.len() {
@@ -78,17 +72,14 @@ where
                         Some(contact) => {
                             let (force, rate) = soil.respond(s, slot, &contact, state);
                             if let Some(force) = force {
-                                links.push(loads, k, force.force, x);
-                                if let Some(found) = found.as_mut() {
-                                    found.push(GroundForce {
-                                        side,
-                                        link: k,
-                                        at: x,
-                                        force: force.force,
-                                    });
-                                }
-                                potential += force.potential;
-                                dissipation += force.dissipation;
+                                let books = (&mut potential, &mut dissipation);
+                                land(
+                                    links,
+                                    (&mut *loads, &mut found),
+                                    (side, k, x),
+                                    &force,
+                                    books,
+                                );
                             }
                             rate
                         }
@@ -125,7 +116,7 @@ where
             let clear_above = self.clear_above(links, across);
             let mut slot = 0;
             for k in 0..links.len() {
-                let forward = heading(links.axis(k, 0));
+                let forward = horizontal(links.axis(k, 0));
                 let passed = links.centroid(k).z > clear_above;
                 for p in &self.shoe.ground_points {
                     for lateral in [-across, across] {

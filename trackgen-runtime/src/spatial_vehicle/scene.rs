@@ -6,6 +6,7 @@
 
 use nalgebra::{Vector2, Vector3};
 
+use super::on_soil::horizontal;
 use super::{Bodies, SpatialSystem};
 use crate::multibody::{ChassisModel, RecursiveModel, TrackModel};
 use crate::spatial::FloatingTree;
@@ -75,12 +76,7 @@ where
             .zip(&d.sides)
             .map(|(part, side)| (frame.centroid(part.body), part.radius, side.index()))
             .collect();
-        let heading = axes[0].xy();
-        let forward = if heading.norm() > 1e-9 {
-            heading.normalize()
-        } else {
-            Vector2::x()
-        };
+        let forward = horizontal(axes[0]);
         let under_right = centre.xy() - axes[1].xy() * (0.5 * d.gauge);
         let n = (2.0 * FLOOR_REACH / FLOOR_STEP).round() as usize;
         let floor = (0..=n)
