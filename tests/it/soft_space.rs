@@ -7,6 +7,7 @@
 //!
 //! Tolerances: 1e-12 relative, the same laws evaluated in another order.
 
+use trackgen::contact::ShoeGeometry;
 use trackgen::contact::soft_space::SoftSpace;
 use trackgen::contact::space::SpaceContact;
 use trackgen::nalgebra::{Vector2, Vector3};
@@ -18,13 +19,31 @@ const POINTS: usize = 4;
 /// Each point's patch, m²: half the planar point's.
 const AREA: f64 = 0.5 * WIDTH * PITCH / POINTS as f64;
 
+/// A shoe of `POINTS` ground points evenly along it.
+fn shoe() -> ShoeGeometry {
+    ShoeGeometry {
+        ground_points: (0..POINTS)
+            .map(|k| {
+                Vector2::new(
+                    (k as f64 + 0.5) / POINTS as f64 * PITCH - 0.5 * PITCH,
+                    -0.03,
+                )
+            })
+            .collect(),
+        inner_face: [Vector2::new(-0.07, 0.03), Vector2::new(0.07, 0.03)],
+        pins: Vec::new(),
+        pin_radius: 0.0,
+        width: Some(WIDTH),
+    }
+}
+
 fn sand() -> Soil {
     SoilPreset::DrySand.soil()
 }
 
 /// Dry sand under tracks of 10 links a side.
 fn ground() -> SoftSpace {
-    SoftSpace::new(sand(), WIDTH, [PITCH; 2], POINTS, [10, 10]).expect("a soil")
+    SoftSpace::new(sand(), WIDTH, [PITCH; 2], &shoe(), [10, 10]).expect("a soil")
 }
 
 /// A point at `(x, y)` sunk `depth` m into level ground at `velocity`.
@@ -143,13 +162,13 @@ fn a_lifted_point_leaves_its_memory_in_the_rut_and_starts_its_shear_again() {
 /// A shoe with no width, or a soil that bears nothing, is refused.
 #[test]
 fn no_width_and_no_soil_are_refused() {
-    assert!(SoftSpace::new(sand(), 0.0, [PITCH; 2], POINTS, [10, 10]).is_err());
-    assert!(SoftSpace::new(sand(), WIDTH, [PITCH, f64::NAN], POINTS, [10, 10]).is_err());
+    assert!(SoftSpace::new(sand(), 0.0, [PITCH; 2], &shoe(), [10, 10]).is_err());
+    assert!(SoftSpace::new(sand(), WIDTH, [PITCH, f64::NAN], &shoe(), [10, 10]).is_err());
     let bearing_nothing = Soil {
         k_c: 0.0,
         k_phi: 0.0,
         ..sand()
     };
-    let error = SoftSpace::new(bearing_nothing, WIDTH, [PITCH; 2], POINTS, [10, 10]).unwrap_err();
+    let error = SoftSpace::new(bearing_nothing, WIDTH, [PITCH; 2], &shoe(), [10, 10]).unwrap_err();
     assert!(error.to_string().contains("carries no load"), "{error}");
 }

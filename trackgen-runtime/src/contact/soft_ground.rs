@@ -203,6 +203,10 @@ pub struct SoftGround {
     pub patch_area: f64,
     /// What the ground remembers between contacts.
     pub rut: Rut,
+    /// Each ground point's share of the shoe along the link: its middle
+    /// and length, m ([`ShoeGeometry::ground_shares`]): where and how
+    /// long a patch it leaves in the rut.
+    shares: Vec<(f64, f64)>,
     /// What the ground under each shoe ground point remembers while the
     /// point bears on it (link by link, the shoe's points in order; empty
     /// until the first [`press`](Self::press)).
@@ -245,6 +249,7 @@ impl SoftGround {
             width,
             patch_area: width * shoe_length / shoe.ground_points.len().max(1) as f64,
             rut: Rut::new(DEFAULT_RUT_CELL),
+            shares: shoe.ground_shares(shoe_length),
             patches: Vec::new(),
         })
     }
@@ -374,8 +379,6 @@ impl SoftGround {
         shear: &mut [f64],
     ) -> bool {
         let points = shoe.ground_points.len();
-        // A patch is written over its own footprint along the track.
-        let patch_length = self.patch_area / self.width;
         if self.patches.len() != links.len() * points {
             self.patches = links
                 .iter()
@@ -392,20 +395,22 @@ impl SoftGround {
                 let slot = i * points + k;
                 let point = link.point(*local);
                 let z = terrain.height(point.x) - point.y;
+                // A patch is written over the point's share of the shoe.
+                let (middle, length) = self.shares[k];
+                let share = link.point(Vector2::new(middle, local.y)).x;
                 let patch = &mut self.patches[slot];
                 if patch.memory.pressure(&self.soil, z, self.width) > 0.0 {
                     let pressed = patch.memory.pressed_to(&self.soil, z, self.width);
                     patch.loaded = true;
                     if pressed != patch.memory {
                         patch.memory = pressed;
-                        self.rut.imprint(point.x, patch_length, pressed, &self.soil);
+                        self.rut.imprint(share, length, pressed, &self.soil);
                     }
                     continue;
                 }
                 if patch.loaded {
                     patch.loaded = false;
-                    self.rut
-                        .imprint(point.x, patch_length, patch.memory, &self.soil);
+                    self.rut.imprint(share, length, patch.memory, &self.soil);
                 }
                 // Lifted out of the soil (above the undisturbed surface),
                 // the shoe has left the soil it sheared.

@@ -24,8 +24,8 @@
 //! accepted steps ([`SoftSpace::press_point`]): as on the plane, a point
 //! bearing on the soil carries its patch's memory and imprints it on the
 //! rut as it deepens, and leaves it there when it lifts, over its
-//! footprint: along the shoe the planar point's (its patch's length,
-//! centred on the point), across its half of the shoe. A point's shear
+//! footprint: along the link its share of the shoe (as the planar
+//! point's), across its half of the shoe. A point's shear
 //! displacement is its state less the state it had when it last rose
 //! above the undisturbed surface (its `origin`): the displacement since it
 //! sank in, Wong's `j`, without the integrator's state being reset. A
@@ -53,6 +53,10 @@ pub struct SoftSpace {
     patch_area: [f64; 2],
     /// What the ground remembers between contacts.
     pub rut: RutGrid,
+    /// Each side's (right, left) share of the shoe per ground point along
+    /// the link, in the shoe's order: its middle and length, m
+    /// ([`ShoeGeometry::ground_shares`]).
+    shares: [Vec<(f64, f64)>; 2],
     /// Each side's points (right, left): link by link, the shoe's points
     /// in order, each as two across the width.
     sides: [Vec<Patch>; 2],
@@ -74,16 +78,18 @@ struct Patch {
 
 impl SoftSpace {
     /// Soft ground of `soil` under tracks `width` m wide whose shoes are
-    /// `pitches` m long (right, left), with `points` ground points each
-    /// and `links` links a side (right, left); rut cells of
-    /// [`DEFAULT_RUT_CELL`]. The soil is checked.
+    /// `pitches` m long (right, left), `shoe` (its ground points), with
+    /// `links` links a side (right, left); rut cells of
+    /// [`DEFAULT_RUT_CELL`]. The soil is checked; the shoe's declared
+    /// width is not read.
     pub fn new(
         soil: Soil,
         width: f64,
         pitches: [f64; 2],
-        points: usize,
+        shoe: &ShoeGeometry,
         links: [usize; 2],
     ) -> Result<SoftSpace, SoilError> {
+        let points = shoe.ground_points.len();
         soil.check()?;
         for (name, value) in [
             ("track width", width),
@@ -107,6 +113,7 @@ impl SoftSpace {
             shear: soil.shear_law(),
             width,
             patch_area: pitches.map(|p| 0.5 * width * p / points.max(1) as f64),
+            shares: pitches.map(|p| shoe.ground_shares(p)),
             rut: RutGrid::new(DEFAULT_RUT_CELL),
             sides: links.map(|n| vec![fresh; 2 * points * n]),
         })
@@ -125,7 +132,7 @@ impl SoftSpace {
             value: f64::NAN,
             allowed: "declared with the shoe (its `width`)",
         })?;
-        SoftSpace::new(soil, width, pitches, shoe.ground_points.len(), links)
+        SoftSpace::new(soil, width, pitches, shoe, links)
     }
 
     /// The soil.
@@ -205,9 +212,10 @@ impl SoftSpace {
 
     /// After an accepted step, the point `slot` of side `side` at `at`
     /// (m), sunk `z` m below the undisturbed surface (negative above it),
-    /// its footprint centred at `half` (m, in the ground's plane: level
-    /// with the point along the shoe, in the middle of its half of the
-    /// shoe across), the shoe heading along the unit `forward` in that
+    /// its footprint centred at `half` (m, in the ground's plane: the
+    /// middle of its share of the shoe along the link
+    /// ([`share_middle`](Self::share_middle)), of its half of the shoe
+    /// across), the shoe heading along the unit `forward` in that
     /// plane, its shear state `state`: what the ground remembers brought
     /// up to it (as the planar
     /// [`SoftGround::press`](super::soft_ground::SoftGround::press) does
@@ -222,7 +230,7 @@ impl SoftSpace {
         state: Vector2<f64>,
     ) -> bool {
         let (soil, width) = (&self.soil, self.width);
-        let footprint = self.footprint(side);
+        let footprint = self.footprint(side, slot);
         let patch = &mut self.sides[side][slot];
         if patch.stale {
             patch.memory = self.rut.memory(at.xy());
@@ -265,7 +273,7 @@ impl SoftSpace {
         (half, forward): (Vector2<f64>, Vector2<f64>),
         state: Vector2<f64>,
     ) {
-        let footprint = self.footprint(side);
+        let footprint = self.footprint(side, slot);
         let patch = &mut self.sides[side][slot];
         if patch.loaded {
             patch.loaded = false;
@@ -276,12 +284,18 @@ impl SoftSpace {
         patch.stale = true;
     }
 
-    /// A point's patch on the ground: its length along the track (the
-    /// area over half the width, as the planar rut's) and half the track's
-    /// width across (its half of the shoe, from the middle to the edge),
-    /// m.
-    fn footprint(&self, side: usize) -> (f64, f64) {
-        let half = 0.5 * self.width;
-        (self.patch_area[side] / half, half)
+    /// The middle along the link's x (m) of the share of the shoe that
+    /// side `side`'s ground point `point` (in the shoe's order) presses
+    /// into the rut: where a caller centres its footprint along the link.
+    pub fn share_middle(&self, side: usize, point: usize) -> f64 {
+        self.shares[side][point].0
+    }
+
+    /// The footprint the point `slot` of side `side` leaves in the rut:
+    /// its share of the shoe along the link and its half of the shoe
+    /// across (from the middle to the edge), m.
+    fn footprint(&self, side: usize, slot: usize) -> (f64, f64) {
+        let shares = &self.shares[side];
+        (shares[(slot / 2) % shares.len()].1, 0.5 * self.width)
     }
 }

@@ -118,11 +118,13 @@ where
             for k in 0..links.len() {
                 let forward = horizontal(links.axis(k, 0));
                 let passed = links.centroid(k).z > clear_above;
-                for p in &self.shoe.ground_points {
+                for (point, p) in self.shoe.ground_points.iter().enumerate() {
+                    // The middle of the point's share of the shoe along.
+                    let share = Vector2::new(soil.share_middle(s, point), p.y);
                     for lateral in [-across, across] {
                         let at = links.point_across(k, *p, lateral);
-                        // The middle of the point's half of the shoe.
-                        let half = links.point_across(k, *p, lateral.signum() * 0.25 * width);
+                        // The middle of its share, on its half across.
+                        let half = links.point_across(k, share, lateral.signum() * 0.25 * width);
                         let footprint = (half.xy(), forward);
                         let state = Vector2::new(shears[s][2 * slot], shears[s][2 * slot + 1]);
                         if passed {
