@@ -19,8 +19,13 @@ const POINTS: usize = 4;
 /// Each point's patch, m²: half the planar point's.
 const AREA: f64 = 0.5 * WIDTH * PITCH / POINTS as f64;
 
-/// A shoe of `POINTS` ground points evenly along it.
+/// A shoe `WIDTH` wide with `POINTS` ground points evenly along it.
 fn shoe() -> ShoeGeometry {
+    shoe_of(Some(WIDTH))
+}
+
+/// [`shoe`] of declared width `width`.
+fn shoe_of(width: Option<f64>) -> ShoeGeometry {
     ShoeGeometry {
         ground_points: (0..POINTS)
             .map(|k| {
@@ -33,7 +38,7 @@ fn shoe() -> ShoeGeometry {
         inner_face: [Vector2::new(-0.07, 0.03), Vector2::new(0.07, 0.03)],
         pins: Vec::new(),
         pin_radius: 0.0,
-        width: Some(WIDTH),
+        width,
     }
 }
 
@@ -43,7 +48,7 @@ fn sand() -> Soil {
 
 /// Dry sand under tracks of 10 links a side.
 fn ground() -> SoftSpace {
-    SoftSpace::new(sand(), WIDTH, [PITCH; 2], &shoe(), [10, 10]).expect("a soil")
+    SoftSpace::new(sand(), &shoe(), [PITCH; 2], [10, 10]).expect("a soil")
 }
 
 /// A point at `(x, y)` sunk `depth` m into level ground at `velocity`.
@@ -159,16 +164,18 @@ fn a_lifted_point_leaves_its_memory_in_the_rut_and_starts_its_shear_again() {
     assert_eq!(ground.rut.memory(beside), Default::default());
 }
 
-/// A shoe with no width, or a soil that bears nothing, is refused.
+/// A shoe with no width (declared 0, or none), a pitch that is not a
+/// number, or a soil that bears nothing, is refused.
 #[test]
 fn no_width_and_no_soil_are_refused() {
-    assert!(SoftSpace::new(sand(), 0.0, [PITCH; 2], &shoe(), [10, 10]).is_err());
-    assert!(SoftSpace::new(sand(), WIDTH, [PITCH, f64::NAN], &shoe(), [10, 10]).is_err());
+    assert!(SoftSpace::new(sand(), &shoe_of(None), [PITCH; 2], [10, 10]).is_err());
+    assert!(SoftSpace::new(sand(), &shoe_of(Some(0.0)), [PITCH; 2], [10, 10]).is_err());
+    assert!(SoftSpace::new(sand(), &shoe(), [PITCH, f64::NAN], [10, 10]).is_err());
     let bearing_nothing = Soil {
         k_c: 0.0,
         k_phi: 0.0,
         ..sand()
     };
-    let error = SoftSpace::new(bearing_nothing, WIDTH, [PITCH; 2], &shoe(), [10, 10]).unwrap_err();
+    let error = SoftSpace::new(bearing_nothing, &shoe(), [PITCH; 2], [10, 10]).unwrap_err();
     assert!(error.to_string().contains("carries no load"), "{error}");
 }

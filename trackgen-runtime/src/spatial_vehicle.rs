@@ -291,7 +291,7 @@ where
                 });
                 let pitches = [right_pitch?, left_pitch?];
                 let links = [R::BODIES, L::BODIES];
-                Some(SoftSpace::under(soil, &shoe, pitches, links).map_err(SpatialError::Soil)?)
+                Some(SoftSpace::new(soil, &shoe, pitches, links).map_err(SpatialError::Soil)?)
             }
         };
         let mut sprockets = [None; 2];

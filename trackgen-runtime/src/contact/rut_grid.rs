@@ -45,12 +45,6 @@ impl RutGrid {
         self.cell
     }
 
-    /// How many cells remember something (pressed, or in a block beside
-    /// one pressed).
-    pub fn cells(&self) -> usize {
-        self.blocks.len() * BLOCK * BLOCK
-    }
-
     /// Cell `(i, j)`'s memory.
     fn at(&self, (i, j): (i64, i64)) -> SoilMemory {
         let (block, k) = split(i, j);
@@ -184,7 +178,6 @@ mod tests {
     fn fresh_ground_remembers_nothing() {
         let rut = RutGrid::new(0.02);
         assert_eq!(rut.memory(Vector2::new(3.1, -7.2)), SoilMemory::default());
-        assert_eq!(rut.cells(), 0);
     }
 
     /// A patch across the axes: every cell centre under it takes its

@@ -77,20 +77,23 @@ struct Patch {
 }
 
 impl SoftSpace {
-    /// Soft ground of `soil` under tracks `width` m wide whose shoes are
-    /// `pitches` m long (right, left), `shoe` (its ground points), with
-    /// `links` links a side (right, left); rut cells of
-    /// [`DEFAULT_RUT_CELL`]. The soil is checked; the shoe's declared
-    /// width is not read.
+    /// Soft ground of `soil` under tracks of `shoe`s (Bekker's width its
+    /// declared `width`, its ground points) whose pitches are `pitches` m
+    /// (right, left), with `links` links a side (right, left); rut cells
+    /// of [`DEFAULT_RUT_CELL`]. The soil is checked, and a shoe with no
+    /// width (or none above 0), or a pitch not above 0, is refused.
     pub fn new(
         soil: Soil,
-        width: f64,
-        pitches: [f64; 2],
         shoe: &ShoeGeometry,
+        pitches: [f64; 2],
         links: [usize; 2],
     ) -> Result<SoftSpace, SoilError> {
-        let points = shoe.ground_points.len();
         soil.check()?;
+        let width = shoe.width.ok_or(SoilError::OutOfRange {
+            name: "track width",
+            value: f64::NAN,
+            allowed: "declared with the shoe (its `width`)",
+        })?;
         for (name, value) in [
             ("track width", width),
             ("right shoe length", pitches[0]),
@@ -104,6 +107,7 @@ impl SoftSpace {
                 });
             }
         }
+        let points = shoe.ground_points.len();
         let fresh = Patch {
             stale: true,
             ..Patch::default()
@@ -117,27 +121,6 @@ impl SoftSpace {
             rut: RutGrid::new(DEFAULT_RUT_CELL),
             sides: links.map(|n| vec![fresh; 2 * points * n]),
         })
-    }
-
-    /// [`new`](Self::new) for tracks of `shoe`s: its width, its ground
-    /// points; a shoe with no width is refused (Bekker's law needs it).
-    pub fn under(
-        soil: Soil,
-        shoe: &ShoeGeometry,
-        pitches: [f64; 2],
-        links: [usize; 2],
-    ) -> Result<SoftSpace, SoilError> {
-        let width = shoe.width.ok_or(SoilError::OutOfRange {
-            name: "track width",
-            value: f64::NAN,
-            allowed: "declared with the shoe (its `width`)",
-        })?;
-        SoftSpace::new(soil, width, pitches, shoe, links)
-    }
-
-    /// The soil.
-    pub fn soil(&self) -> &Soil {
-        &self.soil
     }
 
     /// The memory the point `slot` of side `side` (0 right, 1 left)

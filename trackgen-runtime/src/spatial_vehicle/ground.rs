@@ -66,7 +66,7 @@ where
             normal: share(self.laws.ground.normal, 0.5),
             friction: stiction.map_or(self.laws.ground.friction, GroundFriction::Stiction),
         };
-        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let across = self.across();
         let points = self.shoe.ground_points.len();
         let clear_above = self.clear_above(links, across);
         let (mut potential, mut dissipation) = (0.0, 0.0);
@@ -126,6 +126,13 @@ where
             relax(&law, &deflections[from..i], &mut rates[from..], books);
         }
         (potential, dissipation)
+    }
+
+    /// How far each of a planar ground point's two points lies from the
+    /// shoe's middle across it, m: `w/(2√3)`, the two-point Gauss rule
+    /// over the shoe's width `w` (0 where it declares none).
+    pub(super) fn across(&self) -> f64 {
+        self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt())
     }
 
     /// The height a link's centroid must be above for none of its ground

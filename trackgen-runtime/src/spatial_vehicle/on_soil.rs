@@ -51,7 +51,7 @@ where
         (shears, rates): (&[f64], &mut [f64]),
         mut found: Option<&mut Vec<GroundForce>>,
     ) -> (f64, f64) {
-        let across = self.shoe.width.unwrap_or(0.0) / (2.0 * 3.0_f64.sqrt());
+        let across = self.across();
         let per_link = 2 * self.shoe.ground_points.len();
         let clear_above = self.clear_above(links, across);
         let s = side.index();
@@ -110,7 +110,7 @@ where
             Bodies::at(&self.left, left.parts()),
         ];
         let width = self.shoe.width.unwrap_or(0.0);
-        let across = width / (2.0 * 3.0_f64.sqrt());
+        let across = self.across();
         let mut changed = false;
         for (s, links) in tracks.iter().enumerate() {
             let clear_above = self.clear_above(links, across);
