@@ -24,12 +24,11 @@ use trackgen::ride::{Biquad, Section};
 use trackgen::scenario::{Scenario, Soil};
 use trackgen::simulate::{CsvSink, EnergyBalance, March, Sink, Tee, Thinned};
 use trackgen::spatial_vehicle::{
-    DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialLaws,
-    SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_grid, on_grounds,
+    DrivelineAsked, HeadingHold, SPATIAL_COLUMNS, SideBooks, SpatialEnergy, SpatialGround,
+    SpatialLaws, SpatialOutputs, SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_ground,
     spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
-use trackgen::terrain::grid_file::read_grid;
 use trackgen::vehicle::speed_ramp;
 use trackgen_arrow::ArrowSink;
 
@@ -154,47 +153,20 @@ type Grounded<V> = (<V as SpatialVehicleSystem>::Spatial, DVector<f64>, String);
 fn on_the_ground<V: SpatialVehicleSystem>(
     args: &SpatialArgs,
 ) -> Result<Grounded<V>, Box<dyn Error>> {
-    if let Some(path) = &args.field_file {
-        let (system, y, _) = on_grid::<V>(laws::<V>(args), read_grid(path)?, args.side_slope)?;
-        return Ok((system, y, format!("the height field of {}", path.display())));
-    }
-    let course = args.course.spec(args.speed, args.duration);
-    let terrain = course.terrain()?;
-    let sides = [&args.right_course_file, &args.left_course_file]
-        .map(|file| file.as_ref().map(|path| CourseSpec::File(path.clone())));
-    let mut grounds = [terrain.clone(), terrain];
-    for (ground, spec) in grounds.iter_mut().zip(&sides) {
-        if let Some(spec) = spec {
-            *ground = spec.terrain()?;
-        }
-    }
-    let (system, y, _) =
-        on_grounds::<V>(laws::<V>(args), (&grounds[0], &grounds[1]), args.side_slope)?;
-    Ok((system, y, course_said(&course, &sides)))
-}
-
-/// The vehicle's declared laws, on the soil `args` ask for.
-fn laws<V: SpatialVehicleSystem>(args: &SpatialArgs) -> SpatialLaws {
-    let soil = match args.soil {
-        Soil::Rigid => None,
-        Soil::Soft(preset) => Some(preset.soil()),
+    let ground = match &args.field_file {
+        Some(path) => SpatialGround::GridFile(path.clone()),
+        None => SpatialGround::Course {
+            course: args.course.spec(args.speed, args.duration),
+            sides: [&args.right_course_file, &args.left_course_file]
+                .map(|file| file.as_ref().map(|path| CourseSpec::File(path.clone()))),
+        },
     };
-    SpatialLaws {
-        soil,
+    let laws = SpatialLaws {
+        soil: args.soil.soil(),
         ..V::declared_laws()
-    }
-}
-
-/// The course as the summary says it: `course`, and the ground each
-/// track has of its own (`sides`: the right's, the left's).
-fn course_said(course: &CourseSpec, sides: &[Option<CourseSpec>; 2]) -> String {
-    let mut said = course.describe();
-    for (spec, track) in sides.iter().zip(["right", "left"]) {
-        if let Some(spec) = spec {
-            said.push_str(&format!(", under the {track} track {}", spec.describe()));
-        }
-    }
-    said
+    };
+    let (system, y, _) = on_ground::<V>(laws, &ground, args.side_slope)?;
+    Ok((system, y, ground.describe()))
 }
 
 fn side_slope(s: &str) -> Result<f64, String> {

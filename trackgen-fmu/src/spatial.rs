@@ -7,19 +7,18 @@
 //! default tolerance.
 
 use std::marker::PhantomData;
-use std::path::Path;
+
 use std::sync::Arc;
 
 use trackgen::integrate::{Integrator, SimulationError};
 use trackgen::nalgebra::DVector;
-use trackgen::scenario::{Range, Scenario, Soil};
+use trackgen::scenario::{Range, Scenario};
 use trackgen::simulate::March;
 use trackgen::spatial_vehicle::{
-    DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialLaws, SpatialSimulated,
-    SpatialVehicleSystem, drive_as_asked, on_grid, on_grounds, spatial_row,
+    DrivelineAsked, DrivelineKind, HeadingHold, SPATIAL_COLUMNS, SpatialGround, SpatialLaws,
+    SpatialSimulated, SpatialVehicleSystem, drive_as_asked, on_ground, spatial_row,
 };
 use trackgen::terrain::course::CourseSpec;
-use trackgen::terrain::grid_file::read_grid;
 use trackgen::vehicle::{Powertrain, speed_ramp};
 
 use crate::error::FmuError;
@@ -233,36 +232,26 @@ fn grounded<V: SpatialVehicleSystem>(
     let built = |e: &dyn std::fmt::Display| FmuError::Build(e.to_string());
     let slope = instance.number(Setting::SideSlope);
     let laws = SpatialLaws {
-        soil: match instance.soil()? {
-            Soil::Rigid => None,
-            Soil::Soft(preset) => Some(preset.soil()),
-        },
+        soil: instance.soil()?.soil(),
         ..V::declared_laws()
     };
-    let sides = [Setting::RightCourseFile, Setting::LeftCourseFile].map(|s| instance.text(s));
+    let sides = [Setting::RightCourseFile, Setting::LeftCourseFile]
+        .map(|s| Some(instance.text(s)).filter(|file| !file.is_empty()));
     let field_file = instance.text(Setting::FieldFile);
-    if !field_file.is_empty() {
-        if sides.iter().any(|file| !file.is_empty()) {
-            return Err(built(
-                &"field_file is the whole ground: left_course_file and right_course_file \
-                  cannot be given with it",
-            ));
+    let ground = if field_file.is_empty() {
+        SpatialGround::Course {
+            course: instance.course()?,
+            sides: sides.map(|file| file.map(|file| CourseSpec::File(file.into()))),
         }
-        let grid = read_grid(Path::new(field_file)).map_err(|e| built(&e))?;
-        let (system, y, _) = on_grid::<V>(laws, grid, slope).map_err(|e| built(&e))?;
-        return Ok((system, y));
-    }
-    let terrain = instance.course()?.terrain().map_err(|e| built(&e))?;
-    let mut grounds = [terrain.clone(), terrain];
-    for (ground, file) in grounds.iter_mut().zip(sides) {
-        if !file.is_empty() {
-            *ground = CourseSpec::File(file.into())
-                .terrain()
-                .map_err(|e| built(&e))?;
-        }
-    }
-    let (system, y, _) =
-        on_grounds::<V>(laws, (&grounds[0], &grounds[1]), slope).map_err(|e| built(&e))?;
+    } else if sides.iter().any(Option::is_some) {
+        return Err(built(
+            &"field_file is the whole ground: left_course_file and right_course_file \
+              cannot be given with it",
+        ));
+    } else {
+        SpatialGround::GridFile(field_file.into())
+    };
+    let (system, y, _) = on_ground::<V>(laws, &ground, slope).map_err(|e| built(&e))?;
     Ok((system, y))
 }
 

@@ -228,8 +228,8 @@ impl Scenario {
         powertrain: Option<Powertrain>,
     ) -> VehicleConfig {
         let mut config = V::declared_config(terrain, drive);
-        if let Soil::Soft(soil) = self.soil {
-            config.soil = Some(soil.soil());
+        if let Some(soil) = self.soil.soil() {
+            config.soil = Some(soil);
         }
         config.powertrain = powertrain;
         config
@@ -353,6 +353,18 @@ pub enum Soil {
     Rigid,
     /// Soft soil of Wong's table (Bekker–Wong), leaving a rut.
     Soft(SoilPreset),
+}
+
+impl Soil {
+    /// The soil's laws, for a run's configuration: none on rigid ground
+    /// (the declared contact laws), else the preset's
+    /// ([`SoilPreset::soil`]).
+    pub fn soil(self) -> Option<crate::terrain::soil::Soil> {
+        match self {
+            Soil::Rigid => None,
+            Soil::Soft(preset) => Some(preset.soil()),
+        }
+    }
 }
 
 impl FromStr for Soil {

@@ -63,7 +63,7 @@ pub use driveline::{
 };
 pub use engine::{SpatialEngine, SpatialEngineError};
 pub use envelope::EngineEnvelope;
-pub use on_course::{OnCourseError, on_course, on_grid, on_grounds};
+pub use on_course::{OnCourseError, SpatialGround, on_course, on_grid, on_ground, on_grounds};
 pub use outputs::{SideOutputs, SpatialOutputs};
 pub use rows::{SPATIAL_COLUMNS, spatial_row};
 pub use scene::{FLOOR_REACH, FLOOR_STEP, SpatialScene};

@@ -3,7 +3,10 @@
 //! slope, the vehicle
 //! assembled on it at rest heading along the course. The one start of
 //! every 3-D run: the applications' main job and modes, the spatial FMU
-//! and the mobility events.
+//! and the mobility events. What a user names (a course, each track's
+//! own, or a grid file) is one [`SpatialGround`], set on by [`on_ground`].
+
+use std::path::PathBuf;
 
 use nalgebra::{DVector, Vector2};
 use thiserror::Error;
@@ -12,7 +15,9 @@ use super::{SpatialLaws, SpatialSimulated, SpatialVehicleSystem};
 use crate::assembly::SideError;
 use crate::spatial::SpatialError;
 use crate::terrain::Terrain;
+use crate::terrain::course::{CourseError, CourseSpec};
 use crate::terrain::field::{FieldError, FieldShape, Grid, HeightField};
+use crate::terrain::grid_file::{GridFileError, read_grid};
 use crate::terrain::profile::ProfileError;
 
 /// Why a spatial vehicle cannot be set on its course.
@@ -30,6 +35,70 @@ pub enum OnCourseError {
     /// A grid's section under a track is no profile.
     #[error("the ground under a track: {0}")]
     Section(#[from] ProfileError),
+    /// A course (the whole ground's, or a track's own) cannot be laid.
+    #[error(transparent)]
+    Course(#[from] CourseError),
+    /// The grid file cannot be read.
+    #[error(transparent)]
+    GridFile(#[from] GridFileError),
+}
+
+/// The ground of a 3-D run as its user names it: the main job's
+/// `--course`, `--right-course-file`, `--left-course-file` and
+/// `--field-file`, the spatial FMU's settings of those names.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SpatialGround {
+    /// `course` across the vehicle's whole width, or under a track its
+    /// own profile where `sides` (right, left) gives one.
+    Course {
+        /// The course under both tracks.
+        course: CourseSpec,
+        /// A track's own course (right, left), where given.
+        sides: [Option<CourseSpec>; 2],
+    },
+    /// The heights of an ESRI ASCII grid file: the whole ground.
+    GridFile(PathBuf),
+}
+
+impl SpatialGround {
+    /// What the ground is, for the run's heading: `a bump 0.10 m high at
+    /// x = 12.0 m, under the left track flat ground`.
+    pub fn describe(&self) -> String {
+        match self {
+            SpatialGround::Course { course, sides } => {
+                let mut said = course.describe();
+                for (spec, track) in sides.iter().zip(["right", "left"]) {
+                    if let Some(spec) = spec {
+                        said.push_str(&format!(", under the {track} track {}", spec.describe()));
+                    }
+                }
+                said
+            }
+            SpatialGround::GridFile(path) => format!("the height field of {}", path.display()),
+        }
+    }
+}
+
+/// The vehicle `V` under `laws` on `ground` with a side slope
+/// `side_slope`: [`on_grid`] on a grid file's heights, else
+/// [`on_grounds`] with each track on its own course where given (the
+/// whole course where not). A file that cannot be read or a course that
+/// cannot be laid is refused here, before anything runs.
+pub fn on_ground<V: SpatialVehicleSystem>(
+    laws: SpatialLaws,
+    ground: &SpatialGround,
+    side_slope: f64,
+) -> Result<(V::Spatial, DVector<f64>, HeightField), OnCourseError> {
+    match ground {
+        SpatialGround::GridFile(path) => on_grid::<V>(laws, read_grid(path)?, side_slope),
+        SpatialGround::Course { course, sides } => {
+            let whole = course.terrain()?;
+            let [right, left] = sides
+                .clone()
+                .map(|side| side.map_or_else(|| Ok(whole.clone()), |spec| spec.terrain()));
+            on_grounds::<V>(laws, (&right?, &left?), side_slope)
+        }
+    }
 }
 
 /// The vehicle `V` under `laws` (its declared ones:
