@@ -3,8 +3,9 @@
 //! rest into a left turn (belts 1.2 and 0.4 m/s over 0.2 s), for 1 s, on
 //! level ground, across a 30 % side slope (turning uphill) and on dry
 //! sand (the soil's laws in place of the ground's, the rut pressed after
-//! every step: the carrier sinking as it turns), by
-//! Bogacki-Shampine. The drives' work less the change of the energy in
+//! every step: the carrier sinking as it turns), and on level ground
+//! under a 2 kN drawbar load (pulling back along the heading as it
+//! turns: its work booked as dissipated), by Bogacki-Shampine. The drives' work less the change of the energy in
 //! the bodies, in gravity and in the force elements, less what they
 //! dissipated, over the largest of the three (the project's residual,
 //! `simulate::EnergyBalance::residual`), is within 1e-3 at tolerance
@@ -23,12 +24,13 @@ use trackgen::terrain::soil::SoilPreset;
 use crate::support::twin::{States, across_slope, at_rest, belt, firm, on};
 
 /// The books of a 1 s left turn on `field` under `laws` from `start`,
-/// by Bogacki-Shampine at `tolerance` (relative and absolute), the
+/// under a drawbar load of `pull` (N), by Bogacki-Shampine at
+/// `tolerance` (relative and absolute), the
 /// system's [`after_step`](trackgen::spatial_vehicle::SpatialSystem::after_step)
 /// after each step (on soil, the rut pressed).
 fn books(
     (field, laws): (HeightField, SpatialLaws),
-    start: &States,
+    (start, pull): (&States, f64),
     tolerance: f64,
 ) -> EnergyBalance {
     let mut system = on(
@@ -39,6 +41,7 @@ fn books(
             left: belt(0.4, 0.2),
         },
     );
+    system.set_drawbar_pull(pull).expect("a pull");
     let mut y = system.state(&start.0, &start.1, &start.2);
     let before = system.energy(y.as_slice());
     let mut stepper = Integrator::Bs23 {
@@ -57,6 +60,11 @@ fn books(
         }
     }
     let after = system.energy(y.as_slice());
+    let drawn = after.drawbar - before.drawbar;
+    assert!(
+        (pull == 0.0) == (drawn == 0.0) && drawn >= 0.0,
+        "a pull of {pull} N took {drawn} J"
+    );
     let held = |e: &trackgen::spatial_vehicle::SpatialEnergy| e.kinetic + e.gravity + e.stored;
     EnergyBalance {
         motor_work: after.driven - before.driven,
@@ -77,24 +85,33 @@ fn a_turn_on_the_level_and_across_a_side_slope_keeps_its_books_at_a_users_tolera
             "level",
             (HeightField::level(), firm()),
             at_rest(0.0, (0.0, 0.0)),
+            0.0,
         ),
         (
             "30 % side slope",
             (HeightField::level().tilted(Vector2::new(0.0, 0.3)), firm()),
             across_slope(0.3),
+            0.0,
         ),
         (
             "dry sand",
             (HeightField::level(), sand),
             at_rest(0.0, (0.0, 0.0)),
+            0.0,
+        ),
+        (
+            "level, under a 2 kN drawbar pull",
+            (HeightField::level(), firm()),
+            at_rest(0.0, (0.0, 0.0)),
+            2e3,
         ),
     ];
-    for (name, field, start) in grounds {
+    for (name, field, start, pull) in grounds {
         for (tolerance, bound) in [
             (1e-4, 1e-3),
             (default, EnergyBalance::bound_for_tolerance(default)),
         ] {
-            let books = books(field.clone(), &start, tolerance);
+            let books = books(field.clone(), (&start, pull), tolerance);
             let residual = books.residual();
             println!(
                 "{name}, tolerance {tolerance:e}: work {:.1} J, energy change {:.1} J, \

@@ -106,6 +106,11 @@ pub struct SpatialArgs {
     /// is set on it at rest, heading along the course.
     #[arg(long, default_value_t = 0.0, value_name = "S", value_parser = side_slope)]
     pub side_slope: f64,
+    /// A drawbar load, N, from -1e6 to 1e6: a force pulling the hull back
+    /// along its heading, level, at its centroid, from the start
+    /// (negative: a push); its work is booked as dissipated.
+    #[arg(long, default_value_t = 0.0, value_name = "N", value_parser = drawbar_pull)]
+    pub drawbar_pull: f64,
     /// The soil: `rigid`, or a soil of Wong's table (Bekker–Wong soft
     /// soil over the same ground, the tracks leaving their ruts):
     /// dry-sand, sandy-loam, clay, heavy-clay, lete-sand, snow.
@@ -177,6 +182,14 @@ fn side_slope(s: &str) -> Result<f64, String> {
     )
 }
 
+fn drawbar_pull(s: &str) -> Result<f64, String> {
+    within(
+        s,
+        trackgen::scenario::Range::closed(-1e6, 1e6, "from -1e6 to 1e6 N"),
+        "a drawbar pull",
+    )
+}
+
 fn turn(s: &str) -> Result<f64, String> {
     within(
         s,
@@ -219,6 +232,8 @@ struct Summary {
     engine: Option<EngineSeen>,
     first: Option<SpatialOutputs>,
     last: Option<SpatialOutputs>,
+    /// The work the drawbar load took over the run, J.
+    drawbar: f64,
 }
 
 impl Summary {
@@ -233,6 +248,7 @@ impl Summary {
             engine: None,
             first: None,
             last: None,
+            drawbar: 0.0,
         }
     }
 
@@ -309,6 +325,7 @@ fn drive<V: SpatialVehicleSystem>(
         (args.turn_at, args.turn_time),
         layout.gauge,
     ))?;
+    system.set_drawbar_pull(args.drawbar_pull)?;
     let shoes = (V::RIGHT_TRACK_DOF - 2, V::LEFT_TRACK_DOF - 2);
     say!(
         "{} in 3-D: {} + {} shoes (right, left), gauge {:.3} m; assembled in {:.0} ms",
@@ -319,6 +336,17 @@ fn drive<V: SpatialVehicleSystem>(
         assembly * 1e3
     );
     say!("driven through {driven}");
+    if args.drawbar_pull != 0.0 {
+        say!(
+            "a drawbar load of {:.1} kN {} along its heading from the start",
+            args.drawbar_pull.abs() / 1e3,
+            if args.drawbar_pull > 0.0 {
+                "pulling the hull back"
+            } else {
+                "pushing the hull on"
+            }
+        );
+    }
     say!(
         "settle {:.1} s, then to {:.1} m/s in {:.1} s; {} on {}; turning {:.0}° {} from t = {:.1} s over {:.1} s; {:.1} s in all",
         args.settle,
@@ -404,7 +432,9 @@ fn drive<V: SpatialVehicleSystem>(
     drop(sink);
     arrow.finish()?;
     let t = march.time();
-    let books = Books::at(&system, march.state().as_slice()).since(&before);
+    let after = Books::at(&system, march.state().as_slice());
+    summary.drawbar = after.drawbar_since(&before);
+    let books = after.since(&before);
     report(&summary, (t, wall), &march.stats(), &books, args);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
     written.extend(pictures(&dir, &thinned, &frames, V::NAME)?);
@@ -495,6 +525,11 @@ impl Books {
     }
 
     /// A run's balance from `before` to these, and each side's share.
+    /// What the drawbar load took from `before` to these, J.
+    fn drawbar_since(&self, before: &Books) -> f64 {
+        self.energy.drawbar - before.energy.drawbar
+    }
+
     fn since(&self, before: &Books) -> (EnergyBalance, [SideBooks; 2]) {
         let (after, before_energy) = (&self.energy, &before.energy);
         let balance = EnergyBalance {
@@ -581,6 +616,12 @@ fn report(
         books.dissipated / 1e3,
         books.residual()
     );
+    if args.drawbar_pull != 0.0 {
+        say!(
+            "  the drawbar: {:.1} kJ of the dissipated",
+            summary.drawbar / 1e3
+        );
+    }
     for (name, side) in ["right", "left"].iter().zip(sides) {
         say!(
             "  {name}: into its sprocket {:.1} kJ; lost in the ground {:.1}, the running gear {:.1}, the suspension {:.1}, the brake {:.1} kJ",

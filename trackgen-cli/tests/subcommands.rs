@@ -234,12 +234,21 @@ fn fmu_refuses_what_is_no_fmu_library() {
 
 /// An unknown subcommand, an unknown vehicle, `run`'s options before
 /// another subcommand and `spatial`'s side slope, driveline or steer
-/// ratio out of range are refused by the parser (exit status 2), naming
-/// what is wrong; nothing is run or written.
+/// ratio out of range, or a drawbar pull that is none, are refused by the
+/// parser (exit status 2), naming what is wrong; nothing is run or
+/// written.
 #[test]
 fn a_bad_command_line_is_refused_naming_it() {
     let dir = scratch("bad-subcommand");
-    let cases: [(&[&str], &[&str]); 7] = [
+    let cases: [(&[&str], &[&str]); 9] = [
+        (
+            &["spatial", "--drawbar-pull", "2e7"],
+            &["--drawbar-pull", "1e6"],
+        ),
+        (
+            &["spatial", "--drawbar-pull", "NaN"],
+            &["--drawbar-pull", "NaN"],
+        ),
         (&["mobilty"], &["mobilty"]),
         (
             &["spatial", "--side-slope", "1.5"],
@@ -528,6 +537,52 @@ fn spatial_turns_through_each_driveline() {
         let said = programs::text(&refused.stderr);
         assert!(said.contains(why), "{args:?}: {said}");
     }
+}
+
+/// `spatial --drawbar-pull`: the M113 pulled back by 20 kN says so, and
+/// its books print the drawbar's work apart, more than 0 and less than
+/// all that was dissipated, the books within their bound (no warning).
+#[test]
+fn spatial_pulls_a_drawbar_load() {
+    let dir = scratch("spatial-drawbar");
+    let args = [
+        "spatial",
+        "--drawbar-pull",
+        "20000",
+        "--duration",
+        "3",
+        "--turn",
+        "0",
+        "--out",
+        path(&dir),
+    ];
+    let ran = run(&binary(), &args, &dir);
+    assert_success("spatial --drawbar-pull", &ran);
+    let said = programs::text(&ran.stdout) + &programs::text(&ran.stderr);
+    assert!(
+        said.contains("a drawbar load of 20.0 kN pulling the hull back"),
+        "{said}"
+    );
+    assert!(!said.contains("warning"), "{said}");
+    let kilojoules = |after: &str, before: &str| -> f64 {
+        let from = said
+            .find(after)
+            .unwrap_or_else(|| panic!("{after}: {said}"))
+            + after.len();
+        said[from..]
+            .split(before)
+            .next()
+            .unwrap()
+            .trim()
+            .parse()
+            .unwrap()
+    };
+    let drawbar = kilojoules("the drawbar: ", "kJ");
+    let dissipated = kilojoules("dissipated ", "kJ");
+    assert!(
+        drawbar > 0.0 && drawbar < dissipated,
+        "the drawbar {drawbar} kJ of {dissipated} kJ dissipated"
+    );
 }
 
 /// The columns of a CSV file by name, and its rows.

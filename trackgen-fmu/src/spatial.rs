@@ -127,6 +127,9 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
             ),
         };
         system.set_steering(hold).map_err(|e| built(&e))?;
+        system
+            .set_drawbar_pull(instance.input(Input::DrawbarPull))
+            .map_err(|e| built(&e))?;
         let tolerance = Some(instance.number(Setting::Tolerance))
             .filter(|t| *t > 0.0)
             .or(instance.master_tolerance())
@@ -162,15 +165,18 @@ impl<V: SpatialVehicleSystem + 'static> Plant for Spatial<V> {
 
     fn set_input(
         cells: &Cells,
-        _: Option<&mut V::Spatial>,
+        system: Option<&mut V::Spatial>,
         (input, t, value): (Input, f64, f64),
     ) -> Result<(), String> {
         match input {
             Input::TargetSpeed => Cells::set(&cells.target_speed, value),
             Input::TargetYawRate => cells.turn_at(t, value),
-            Input::DriveTorque | Input::DrawbarPull => {
-                return Err("not an input of the spatial vehicle".into());
+            Input::DrawbarPull => {
+                if let Some(system) = system {
+                    system.set_drawbar_pull(value).map_err(|e| e.to_string())?;
+                }
             }
+            Input::DriveTorque => return Err("not an input of the spatial vehicle".into()),
         }
         Ok(())
     }
@@ -330,6 +336,12 @@ fn table() -> Vec<Variable> {
             "rad/s",
             "steering = yaw_rate: the rate the heading wanted turns at, to the left positive, -1 to 1; the driver holds the hull to that heading",
             Input::TargetYawRate,
+        ),
+        (
+            "drawbar_pull",
+            "N",
+            "a force pulling the hull back along its heading, level, at its centroid (negative pushes); its work is booked as dissipated",
+            Input::DrawbarPull,
         ),
     ];
     for (name, unit, description, input) in inputs {

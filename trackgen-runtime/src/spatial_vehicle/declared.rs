@@ -8,9 +8,9 @@
 use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::{
-    Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideBooks, SideDrives,
-    SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialScene, SpatialSystem, SteeringError,
-    TreeState,
+    DrawbarError, Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideBooks,
+    SideDrives, SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialScene, SpatialSystem,
+    SteeringError, TreeState,
 };
 use crate::assembly::{SideError, assemble_on_grounds};
 use crate::contact::axial::GuideLaw;
@@ -61,6 +61,11 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// Caps the drive by an engine's full-load `envelope` from now on
     /// (`None`: no cap; [`SpatialSystem::with_envelope`]).
     fn set_envelope(&mut self, envelope: Option<EngineEnvelope>);
+
+    /// Pulls the hull back by a drawbar load of `pull` N from now on
+    /// ([`SpatialSystem::with_drawbar_pull`]); a pull that is not a
+    /// number is refused.
+    fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), DrawbarError>;
 
     /// The engine driving the differential, its speed a state, if one
     /// does ([`SpatialSystem::engine`]).
@@ -187,6 +192,10 @@ where
 
     fn set_envelope(&mut self, envelope: Option<EngineEnvelope>) {
         self.envelope = envelope;
+    }
+
+    fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), DrawbarError> {
+        SpatialSystem::set_drawbar_pull(self, pull)
     }
 
     fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64> {

@@ -30,8 +30,8 @@ use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::driveline::{DRIVELINE, ENGINE_SPEED};
 use super::{
-    DriveState, Driveline, DrivelineError, Driver, EngineEnvelope, GroundForce, HeadingHold,
-    LoadScratch, MassCentre, SideDrives, SpatialDynamics, SteeringError, TreeState,
+    DrawbarError, DriveState, Driveline, DrivelineError, Driver, EngineEnvelope, GroundForce,
+    HeadingHold, LoadScratch, MassCentre, SideDrives, SpatialDynamics, SteeringError, TreeState,
 };
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
@@ -45,6 +45,8 @@ const DISSIPATED: usize = DRIVELINE;
 const DRIVEN: usize = DRIVELINE + 1;
 /// Where the sides' books start.
 const SIDES: usize = DRIVELINE + 2;
+/// Where the drawbar's work sits, after the sides' books.
+const DRAWN: usize = SIDES + 2 * SideBooks::VALUES;
 
 /// The spatial vehicle in time.
 pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL: usize> {
@@ -53,6 +55,8 @@ pub struct SpatialSystem<'m, H, const DH: usize, R, const DR: usize, L, const DL
     pub(super) driveline: Driveline,
     pub(super) steering: Option<HeadingHold>,
     pub(super) envelope: Option<EngineEnvelope>,
+    /// The drawbar load on the hull, N ([`set_drawbar_pull`](Self::set_drawbar_pull)).
+    drawbar_pull: f64,
     closure: MultiplierOptions,
     scratch: LoadScratch,
 }
@@ -66,17 +70,21 @@ pub struct SpatialEnergy {
     pub gravity: f64,
     /// What the force elements store.
     pub stored: f64,
-    /// What they have dissipated since the start.
+    /// What they have dissipated since the start, and what the drawbar
+    /// load has taken out.
     pub dissipated: f64,
     /// The work the drive (and a steer unit) has done since the start.
     pub driven: f64,
+    /// Of [`dissipated`](Self::dissipated), the work the drawbar load
+    /// has taken out since the start (`∫ P (ĥ · v) dt`).
+    pub drawbar: f64,
 }
 
 /// Where a side's share of the work went since the start, J: what the
 /// driveline put into its sprocket and what its brake and its force
 /// elements dissipated. A side's books do not balance alone (the hull
-/// carries work from one side to the other); the two sides' losses add up
-/// to [`SpatialEnergy::dissipated`].
+/// carries work from one side to the other); the two sides' losses and
+/// the drawbar's work add up to [`SpatialEnergy::dissipated`].
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SideBooks {
     /// `∫ τ ω dt` at the sprocket (the drive's share, a steer unit's and
@@ -221,6 +229,7 @@ where
             driveline: Driveline::Sides(SideDrives::free()),
             steering: None,
             envelope: None,
+            drawbar_pull: 0.0,
             closure: MultiplierOptions::default(),
             scratch: LoadScratch::default(),
         }
@@ -283,6 +292,21 @@ where
     pub fn with_envelope(mut self, envelope: Option<EngineEnvelope>) -> Self {
         self.envelope = envelope;
         self
+    }
+
+    /// The system with a drawbar load of `pull` N on its hull
+    /// (`drawbar`'s force, pulling back along the heading at the frame's
+    /// centroid); a pull that is not a number is refused.
+    pub fn with_drawbar_pull(mut self, pull: f64) -> Result<Self, DrawbarError> {
+        self.set_drawbar_pull(pull)?;
+        Ok(self)
+    }
+
+    /// [`with_drawbar_pull`](Self::with_drawbar_pull) in place, from now
+    /// on (the pull kept as it was where refused).
+    pub fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), DrawbarError> {
+        self.drawbar_pull = super::drawbar::checked(pull)?;
+        Ok(())
     }
 
     /// The driveline, the steering, the engine's envelope and the
@@ -502,6 +526,7 @@ where
                 + self.driveline.stored(self.driveline_states(y)),
             dissipated,
             driven: y[self.driveline_at() + DRIVEN],
+            drawbar: y[self.driveline_at() + DRAWN],
         }
     }
 }
@@ -514,7 +539,7 @@ where
     L: TrackModel<DL>,
 {
     fn dimension(&self) -> usize {
-        self.driveline_at() + SIDES + 2 * SideBooks::VALUES
+        self.driveline_at() + DRAWN + 1
     }
 
     fn derivative(&mut self, t: f64, y: &[f64], dy: &mut [f64]) -> Result<(), SimulationError> {
@@ -579,11 +604,12 @@ where
             scratch,
         );
         let LoadScratch {
+            bodies: [frame, ..],
             loads,
             joint_forces: [f_right, f_left],
-            ..
         } = scratch;
         d.apply_drive(&hull, &drive, loads);
+        let drawn = d.apply_drawbar(self.drawbar_pull, (&hull, frame), loads);
         let closing = [
             closing(d.right.model(), (&motions[1], &right), &self.closure),
             closing(d.left.model(), (&motions[2], &left), &self.closure),
@@ -598,9 +624,10 @@ where
         put_rates(&d.right, &right, &a_right, &mut dy[h..h + r]);
         put_rates(&d.left, &left, &a_left, &mut dy[h + r..h + r + l]);
         dy[b..b + DRIVELINE].copy_from_slice(&drive.rates);
-        dy[b + DISSIPATED] = loads.dissipation + drive.dissipation;
+        dy[b + DISSIPATED] = loads.dissipation + drive.dissipation + drawn;
         dy[b + DRIVEN] = drive.driven;
-        let sides = dy[b + SIDES..].chunks_exact_mut(SideBooks::VALUES);
+        dy[b + DRAWN] = drawn;
+        let sides = dy[b + SIDES..b + DRAWN].chunks_exact_mut(SideBooks::VALUES);
         for (s, (books, losses)) in sides.zip(&loads.losses).enumerate() {
             books.copy_from_slice(&[
                 drive.side_power(s),
