@@ -122,6 +122,9 @@ pub fn traverse<V: SpatialVehicleSystem>(
         stepper
             .step(&mut system, &mut t, &mut y, watch)
             .map_err(|e| failed(t, e))?;
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
     }
     let start = system.outputs(t, y.as_slice()).map_err(|e| failed(t, e))?;
     let end = watch + MEASURED / crawl;
@@ -136,6 +139,9 @@ pub fn traverse<V: SpatialVehicleSystem>(
         stepper
             .step(&mut system, &mut t, &mut y, end)
             .map_err(|e| failed(t, e))?;
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
         let now = system.outputs(t, y.as_slice()).map_err(|e| failed(t, e))?;
         let moved = now.centre.position - start.centre.position;
         // The left is uphill: downhill is along −y.

@@ -127,6 +127,9 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
         stepper
             .step(&mut system, &mut t, &mut y, FIRST)
             .map_err(|e| failed(t, e))?;
+        if system.after_step(t, y.as_slice()) {
+            stepper.restart();
+        }
     }
     let mut before: Option<SteadyTurnRun> = None;
     loop {
