@@ -436,6 +436,7 @@ fn drive<V: SpatialVehicleSystem>(
     summary.drawbar = after.drawbar_since(&before);
     let books = after.since(&before);
     report(&summary, (t, wall), &march.stats(), &books, args);
+    frames.take_ruts(&system);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
     written.extend(pictures(&dir, &thinned, &frames, V::NAME)?);
     say!(

@@ -481,9 +481,11 @@ fn spatial_turns_through_each_driveline() {
             (heading - 30.0).abs() < 3.0,
             "{driveline}: heading {heading}°"
         );
-        // The page plays a frame every 0.04 s of the 6 s, both ends in.
+        // The page plays a frame every 0.04 s of the 6 s, both ends in,
+        // and on rigid ground draws no ruts.
         let page = std::fs::read_to_string(out.join("animation.html")).unwrap();
         assert_eq!(page.matches("{\"t\":").count(), 151, "{driveline}");
+        assert!(page.contains("const R = [];"), "{driveline}");
         let most = |name: &str| rows.iter().map(|r| r[at(name)].abs()).fold(0.0, f64::max);
         if driveline == "neutral-pivot" {
             let (x0, y0) = (rows[0][at("x")], rows[0][at("y")]);
@@ -539,14 +541,19 @@ fn spatial_turns_through_each_driveline() {
     }
 }
 
-/// `spatial --drawbar-pull`: the M113 pulled back by 20 kN says so, and
-/// its books print the drawbar's work apart, more than 0 and less than
-/// all that was dissipated, the books within their bound (no warning).
+/// `spatial --drawbar-pull` in dry sand: the M113 pulled back by 20 kN
+/// says so, and its books print the drawbar's work apart, more than 0
+/// and less than all that was dissipated, the books within their bound
+/// (no warning). Its page draws the ruts: squares under the two tracks
+/// (within half the gauge and the shoe's half width of the path, the
+/// hull heading along `x`), each first pressed within the run.
 #[test]
 fn spatial_pulls_a_drawbar_load() {
     let dir = scratch("spatial-drawbar");
     let args = [
         "spatial",
+        "--soil",
+        "dry-sand",
         "--drawbar-pull",
         "20000",
         "--duration",
@@ -583,6 +590,23 @@ fn spatial_pulls_a_drawbar_load() {
         drawbar > 0.0 && drawbar < dissipated,
         "the drawbar {drawbar} kJ of {dissipated} kJ dissipated"
     );
+    let page = std::fs::read_to_string(dir.join("animation.html")).unwrap();
+    let ruts = page.split("const R = [").nth(1).expect("the ruts");
+    let ruts: Vec<f64> = ruts[..ruts.find(']').unwrap()]
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    assert!(ruts.len() >= 5 * 100, "{} numbers", ruts.len());
+    // The M113's gauge 2.159 m and shoe 0.381 m: a square's centre
+    // within 1.27 m of the path's line (y ≈ 0), and at least 0.89 m.
+    for square in ruts.chunks(5) {
+        let (y, side, since) = (square[1], square[2], square[4]);
+        assert!(
+            (0.89 - side..=1.27 + side).contains(&y.abs()),
+            "a square at y = {y} m"
+        );
+        assert!((0.0..=3.0).contains(&since), "first pressed at {since} s");
+    }
 }
 
 /// The columns of a CSV file by name, and its rows.

@@ -1,10 +1,12 @@
 //! A self-contained HTML page that plays a run of the spatial vehicle:
-//! a top view (both tracks, the hull, the path so far) beside a side view
+//! a top view (both tracks, the hull, the path so far and, on soft soil,
+//! the ruts pressed by then) beside a side view
 //! along the hull's heading (the tracks, the wheels, the hull's outline and
 //! the ground under it). Canvas, no external files: open it in a browser.
 
 use std::fmt::Write;
 
+use trackgen::contact::rut_grid::RutPatch;
 use trackgen::nalgebra::{Vector2, Vector3};
 use trackgen::spatial_vehicle::SpatialScene;
 
@@ -66,8 +68,31 @@ fn frame(f: &SpatialScene) -> String {
     )
 }
 
-/// The page playing `frames`, each over its floor, headed `title`.
-pub fn html(frames: &[SpatialScene], title: &str) -> String {
+/// The ruts' JSON: each square's centre, side and sinkage (to 0.1 mm)
+/// and when it was first pressed (s, to the millisecond), flat.
+fn ruts(patches: &[RutPatch]) -> String {
+    let mut s = String::from("[");
+    for (i, p) in patches.iter().enumerate() {
+        if i > 0 {
+            s.push(',');
+        }
+        let _ = write!(
+            s,
+            "{},{},{},{},{:.3}",
+            Mm(p.centre.x),
+            Mm(p.centre.y),
+            Mm(p.side),
+            Mm(p.sinkage),
+            p.since
+        );
+    }
+    s + "]"
+}
+
+/// The page playing `frames`, each over its floor, the top view over the
+/// `ruts` pressed by each frame's time (none on rigid ground), headed
+/// `title`.
+pub fn html(frames: &[SpatialScene], ruts_pressed: &[RutPatch], title: &str) -> String {
     let mut data = String::from("[");
     for (i, f) in frames.iter().enumerate() {
         if i > 0 {
@@ -78,6 +103,7 @@ pub fn html(frames: &[SpatialScene], title: &str) -> String {
     data.push(']');
     TEMPLATE
         .replace("__TITLE__", title)
+        .replace("__RUTS__", &ruts(ruts_pressed))
         .replace("__FRAMES__", &data)
 }
 
@@ -88,9 +114,11 @@ const TEMPLATE: &str = r#"<!doctype html>
 <h3>trackgen: __TITLE__</h3>
 <canvas id="top" width="560" height="460"></canvas><canvas id="side" width="560" height="460"></canvas><br>
 <button id="play">pause</button> <input id="s" type="range" min="0" value="0" style="width:800px"> <span id="t"></span>
-<p>Left: from above, the right track dark, the left light (each as wide as its shoes), the path of the hull's centroid dotted. Right: from the right, along the hull's heading, over the ground under the right track as it was then (on soft soil, its rut), the left track and wheels behind in grey.</p>
+<p>Left: from above, the right track dark, the left light (each as wide as its shoes), the path of the hull's centroid dotted, on soft soil the ruts pressed so far in brown (darker deeper). Right: from the right, along the hull's heading, over the ground under the right track as it was then (on soft soil, its rut), the left track and wheels behind in grey.</p>
 <script>
 const F = __FRAMES__;
+const R = __RUTS__;
+let deepest = 0; for (let i = 3; i < R.length; i += 5) deepest = Math.max(deepest, R[i]);
 const tc = document.getElementById('top').getContext('2d'), sc = document.getElementById('side').getContext('2d');
 const slider = document.getElementById('s'); slider.max = F.length - 1;
 let k = 0, playing = true;
@@ -102,6 +130,10 @@ function drawTop(f) {
   const g = tc, w = g.canvas.width, h = g.canvas.height;
   const X = x => (x - f.c[0]) * M + w / 2, Y = y => h / 2 - (y - f.c[1]) * M;
   g.clearRect(0, 0, w, h);
+  for (let i = 0; i < R.length; i += 5) if (R[i + 4] <= f.t) {
+    g.fillStyle = 'rgba(120,85,40,' + (0.15 + 0.75 * R[i + 3] / deepest).toFixed(3) + ')';
+    const s = R[i + 2] * M; g.fillRect(X(R[i]) - s / 2, Y(R[i + 1]) - s / 2, s, s);
+  }
   g.fillStyle = '#999'; for (let i = 0; i <= k; i++) { g.fillRect(X(F[i].c[0]) - 1, Y(F[i].c[1]) - 1, 2, 2); }
   line(g, X, Y, f.top, true); g.fillStyle = '#7d8b6a'; g.fill(); g.strokeStyle = '#3d4633'; g.lineWidth = 2; g.stroke();
   g.lineCap = 'butt'; g.lineJoin = 'round';
@@ -161,7 +193,7 @@ mod tests {
     /// 0.25 m ahead and 0.75 m down), and its floor.
     #[test]
     fn the_page_holds_each_scene_seen_from_above_and_from_the_side() {
-        let page = html(&[scene(0.0, 0.0), scene(0.04, 0.1)], "Test");
+        let page = html(&[scene(0.0, 0.0), scene(0.04, 0.1)], &[], "Test");
         assert_eq!(page.matches("{\"t\":").count(), 2);
         assert!(page.contains("{\"t\":0.040,\"tw\":0.4000,\"c\":[0.1000,0.0000]"));
         assert!(page.contains("\"w\":[[0.2500,-0.7500,0.2500,0]]"), "{page}");
@@ -170,5 +202,23 @@ mod tests {
         let values: Vec<f64> = ground.split(',').map(|v| v.parse().unwrap()).collect();
         assert_eq!(values, [-6.0, -0.8, 6.0, -0.8]);
         assert!(page.contains("<title>trackgen: Test</title>"));
+        assert!(page.contains("const R = [];"));
+    }
+
+    /// The ruts go in once, each square as its centre, side, sinkage and
+    /// first time, for the page to draw those pressed by a frame's time.
+    #[test]
+    fn the_page_holds_the_ruts_with_their_times() {
+        let patch = RutPatch {
+            centre: Vector2::new(1.5, -0.25),
+            side: 0.08,
+            sinkage: 0.061,
+            since: 2.5,
+        };
+        let page = html(&[scene(0.0, 0.0), scene(0.04, 0.1)], &[patch], "Test");
+        assert!(
+            page.contains("const R = [1.5000,-0.2500,0.0800,0.0610,2.500];"),
+            "{page}"
+        );
     }
 }

@@ -14,6 +14,7 @@ use super::{
 };
 use crate::assembly::{SideError, assemble_on_grounds};
 use crate::contact::axial::GuideLaw;
+use crate::contact::rut_grid::RutPatch;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
@@ -66,6 +67,11 @@ pub trait SpatialSimulated: OdeSystem + Send {
     /// ([`SpatialSystem::with_drawbar_pull`]); a pull that is not a
     /// number is refused.
     fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), DrawbarError>;
+
+    /// The ruts pressed so far, for a picture
+    /// ([`SpatialDynamics::rut_patches`](super::SpatialDynamics::rut_patches));
+    /// none on rigid ground.
+    fn rut_patches(&self, cells: usize) -> Vec<RutPatch>;
 
     /// The engine driving the differential, its speed a state, if one
     /// does ([`SpatialSystem::engine`]).
@@ -196,6 +202,10 @@ where
 
     fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), DrawbarError> {
         SpatialSystem::set_drawbar_pull(self, pull)
+    }
+
+    fn rut_patches(&self, cells: usize) -> Vec<RutPatch> {
+        self.dynamics.rut_patches(cells)
     }
 
     fn rolled(&self, y: &[f64], roll: f64) -> DVector<f64> {

@@ -12,6 +12,7 @@ use nalgebra::Vector2;
 
 use super::ground::land;
 use super::{Bodies, GroundForce, SpatialDynamics, TreeState};
+use crate::contact::rut_grid::RutPatch;
 use crate::contact::soft_space::SoftSpace;
 use crate::contact::space::SpaceContact;
 use crate::multibody::{ChassisModel, TrackModel};
@@ -99,12 +100,14 @@ where
     /// integrator must restart); `false` on rigid ground.
     pub(super) fn press_soil(
         &mut self,
+        t: f64,
         (right, left): (&TreeState<DR>, &TreeState<DL>),
         shears: [&[f64]; 2],
     ) -> bool {
         let Some(mut soil) = self.soil.take() else {
             return false;
         };
+        soil.rut.at_time(t);
         let tracks = [
             Bodies::at(&self.right, right.parts()),
             Bodies::at(&self.left, left.parts()),
@@ -145,6 +148,16 @@ where
     /// The soft soil and what it remembers, on soil.
     pub fn soil(&self) -> Option<&SoftSpace> {
         self.soil.as_ref()
+    }
+
+    /// The ruts pressed so far in squares of `cells` × `cells` of the
+    /// rut's cells, each with when it was first pressed
+    /// ([`RutGrid::patches`](crate::contact::rut_grid::RutGrid::patches));
+    /// none on rigid ground.
+    pub fn rut_patches(&self, cells: usize) -> Vec<RutPatch> {
+        self.soil
+            .as_ref()
+            .map_or_else(Vec::new, |soil| soil.rut.patches(cells))
     }
 
     /// The ground's height at `(x, y)` as it is now, m: the height

@@ -404,7 +404,7 @@ where
         let pressed = if self.dynamics.soil().is_some() {
             let (_, right, left, _) = self.states(y);
             let shears = self.deflections(y);
-            self.dynamics.press_soil((&right, &left), shears)
+            self.dynamics.press_soil(t, (&right, &left), shears)
         } else {
             false
         };
