@@ -283,6 +283,26 @@ fn models_agree(apart: &Apart) {
     }
 }
 
+/// The planar side and the spatial vehicle on dry sand, each on its
+/// speed drives, the spatial hull pulled back by a drawbar load of `pull`
+/// (N) and the planar chassis by half of it: their rows.
+fn on_sand(pull: f64) -> (Vec<Row>, Vec<Row>) {
+    let soil = SoilPreset::DrySand.soil();
+    let plane = planar(speed_drive(), |c| {
+        c.soil = Some(soil);
+        c.drawbar_pull = 0.5 * pull;
+    });
+    let sides = Driveline::Sides(SideDrives {
+        right: speed_drive(),
+        left: speed_drive(),
+    });
+    let laws = SpatialLaws {
+        soil: Some(soil),
+        ..Twin::declared_laws()
+    };
+    (plane, spatial_under(laws, sides, None, pull))
+}
+
 /// On soft soil (dry sand, Wong's Table 2.3) the same: the planar side's
 /// soft ground (Bekker's pressure on each point's patch, the shear along
 /// the surface, the rut along `x`) against the spatial vehicle's soil at
@@ -292,17 +312,7 @@ fn models_agree(apart: &Apart) {
 /// lifts the frame out of its settled height.
 #[test]
 fn a_mirrored_vehicle_crosses_a_bump_in_soft_soil_as_the_planar_one() {
-    let soil = SoilPreset::DrySand.soil();
-    let plane = planar(speed_drive(), |c| c.soil = Some(soil));
-    let sides = Driveline::Sides(SideDrives {
-        right: speed_drive(),
-        left: speed_drive(),
-    });
-    let laws = SpatialLaws {
-        soil: Some(soil),
-        ..Twin::declared_laws()
-    };
-    let space = spatial_under(laws, sides, None, 0.0);
+    let (plane, space) = on_sand(0.0);
     let driving = ((SETTLE + RAMP) / EVERY).round() as usize;
     let settled = plane[driving].height;
     let (sunk, lifted) = (
@@ -330,20 +340,7 @@ fn a_mirrored_vehicle_crosses_a_bump_in_soft_soil_as_the_planar_one() {
 #[test]
 fn a_mirrored_vehicle_pulls_a_drawbar_load_in_soft_soil_as_the_planar_one() {
     const PULL: f64 = 7e3;
-    let soil = SoilPreset::DrySand.soil();
-    let plane = planar(speed_drive(), |c| {
-        c.soil = Some(soil);
-        c.drawbar_pull = 0.5 * PULL;
-    });
-    let sides = Driveline::Sides(SideDrives {
-        right: speed_drive(),
-        left: speed_drive(),
-    });
-    let laws = SpatialLaws {
-        soil: Some(soil),
-        ..Twin::declared_laws()
-    };
-    let space = spatial_under(laws, sides, None, PULL);
+    let (plane, space) = on_sand(PULL);
     let (first, last) = (space[0], space[space.len() - 1]);
     let travel = last.forward - first.forward;
     let work = last.drawbar - first.drawbar;
