@@ -45,6 +45,11 @@ pub struct RunArgs {
     /// where they disagree (the `engine_load` column is 1 there).
     #[arg(long)]
     pub engine: bool,
+    /// A drawbar load, N, from -1e6 to 1e6: a horizontal force pulling
+    /// the hull back at its centroid from the start (negative: a push);
+    /// its work is booked as dissipated.
+    #[arg(long, default_value_t = 0.0, value_name = "N", value_parser = drawbar_pull)]
+    pub drawbar_pull: f64,
     /// Simulated time, s: more than 0, at most 1e6.
     #[arg(long, default_value_t = Scenario::DURATION, value_name = "SECONDS", value_parser = duration)]
     pub duration: f64,
@@ -170,6 +175,7 @@ impl RunArgs {
             settle: self.settle,
             ramp: self.ramp,
             engine: self.engine,
+            drawbar_pull: self.drawbar_pull,
             method: self.integrator,
             tolerance: self.tolerance,
             output_every: self.output_every,
@@ -245,6 +251,10 @@ pub(crate) fn output_interval(s: &str) -> Result<f64, String> {
 
 pub(crate) fn non_negative_seconds(s: &str) -> Result<f64, String> {
     within(s, Scenario::TIME_RANGE, "a time")
+}
+
+pub(crate) fn drawbar_pull(s: &str) -> Result<f64, String> {
+    within(s, Scenario::DRAWBAR_RANGE, "a drawbar pull")
 }
 
 pub(crate) fn tolerance(s: &str) -> Result<f64, String> {

@@ -84,8 +84,8 @@ fn about<V: Vehicle>() -> String {
     format!("{} (one side): {}", V::NAME, words.join(", "))
 }
 
-/// Says what the run will do: the soil, the speed profile, the course
-/// and the duration.
+/// Says what the run will do: the soil, the speed profile, the course,
+/// the duration and a drawbar load.
 fn announce(scenario: &Scenario) {
     let ramp = if scenario.ramp > 0.0 {
         format!("in {:.1} s", scenario.ramp)
@@ -100,6 +100,17 @@ fn announce(scenario: &Scenario) {
         scenario.course.describe(),
         scenario.duration
     );
+    if scenario.drawbar_pull != 0.0 {
+        say!(
+            "a drawbar load of {:.1} kN {} from the start",
+            scenario.drawbar_pull.abs() / 1e3,
+            if scenario.drawbar_pull > 0.0 {
+                "pulling the hull back"
+            } else {
+                "pushing the hull on"
+            }
+        );
+    }
 }
 
 /// Assembles the vehicle `V` for the scenario the options name (through

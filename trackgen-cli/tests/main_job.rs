@@ -449,6 +449,44 @@ fn m113_refuses_a_start_inside_the_ground() {
     assert!(!out_dir.exists(), "no files are written");
 }
 
+/// `--drawbar-pull`: the M113 on dry sand pulled back by 20 kN from the
+/// start says so, closes its books within their bound (no warning), and
+/// makes less headway in 3 s than free.
+#[test]
+fn m113_pulls_a_drawbar_load() {
+    let m113 = main_job();
+    let travel = |pull: &str| {
+        let dir = scratch(&format!("m113_drawbar_{pull}"));
+        let out = run(
+            &m113,
+            &[
+                "--soil",
+                "dry-sand",
+                "--drawbar-pull",
+                pull,
+                "--duration",
+                "3",
+                "--out",
+                dir.to_str().unwrap(),
+            ],
+            &dir,
+        );
+        assert_success("m113 --drawbar-pull", &out);
+        let said = text(&out.stdout) + &text(&out.stderr);
+        assert!(!said.contains("warning"), "{said}");
+        let x = Csv::read(&dir.join("m113.csv")).column("x");
+        (x[x.len() - 1] - x[0], said)
+    };
+    let (pulled, said) = travel("20000");
+    assert!(
+        said.contains("a drawbar load of 20.0 kN pulling the hull back"),
+        "{said}"
+    );
+    let (free, said) = travel("0");
+    assert!(!said.contains("drawbar load"), "{said}");
+    assert!(pulled < free - 0.05, "pulled {pulled} m, free {free} m");
+}
+
 /// `--soil dry-sand`: the M113 on soft soil sinks centimetres (on rigid
 /// ground, millimetres) and the run writes its outputs; `--vehicle
 /// marder` on rigid ground writes the Marder's.
@@ -553,6 +591,10 @@ fn m113_rejects_bad_options() {
         ),
         (&["--bump-at", "inf"], &["--bump-at", "-10000 to 10000 m"]),
         (&["--soil", "mud"], &["--soil", "mud", "rigid", "dry-sand"]),
+        (
+            &["--drawbar-pull", "2e6"],
+            &["--drawbar-pull", "-1e6 to 1e6 N"],
+        ),
         (
             &["--vehicle", "tiger"],
             &["--vehicle", "tiger", "m113", "marder"],

@@ -41,6 +41,9 @@ pub struct Scenario {
     /// Whether the drive goes through the vehicle's powertrain as well as
     /// its speed controller (the engine's envelope caps the torque).
     pub engine: bool,
+    /// A drawbar load on the hull from the start, N (negative: a push;
+    /// [`VehicleConfig::drawbar_pull`]).
+    pub drawbar_pull: f64,
     /// The integrator.
     pub method: Method,
     /// Its tolerance, relative and absolute; `None`: the method's default
@@ -89,6 +92,9 @@ impl Scenario {
         Range::open_below(0.0, 1e6, "more than 0 s and at most 1e6 s");
     /// The output interval's range, s.
     pub const OUTPUT_EVERY_RANGE: Range = Range::closed(1e-4, 1.0, "from 1e-4 to 1 s");
+    /// A drawbar load's range, N (negative: a push): a hundred tonnes'
+    /// weight either way, past any vehicle here.
+    pub const DRAWBAR_RANGE: Range = Range::closed(-1e6, 1e6, "from -1e6 to 1e6 N");
     /// A given tolerance's range.
     pub const TOLERANCE_RANGE: Range = Range::closed(1e-12, 0.1, "from 1e-12 to 0.1");
     /// [`Method::Rk4`]'s step's range, s.
@@ -103,6 +109,7 @@ impl Scenario {
         Self::TIME_RANGE.check("ramp", self.ramp)?;
         Self::OUTPUT_EVERY_RANGE.check("output_every", self.output_every)?;
         Self::DURATION_RANGE.check("duration", self.duration)?;
+        Self::DRAWBAR_RANGE.check("drawbar pull", self.drawbar_pull)?;
         if let Some(tolerance) = self.tolerance {
             Self::TOLERANCE_RANGE.check("tolerance", tolerance)?;
         }
@@ -231,6 +238,7 @@ impl Scenario {
         if let Some(soil) = self.soil.soil() {
             config.soil = Some(soil);
         }
+        config.drawbar_pull = self.drawbar_pull;
         config.powertrain = powertrain;
         config
     }
@@ -266,6 +274,7 @@ impl Default for Scenario {
             settle: Self::SETTLE,
             ramp: Self::RAMP,
             engine: false,
+            drawbar_pull: 0.0,
             method: Method::Auto,
             tolerance: None,
             output_every: Self::OUTPUT_EVERY,

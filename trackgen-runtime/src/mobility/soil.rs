@@ -92,11 +92,11 @@ fn hold<V: Vehicle>(
     let scenario = Scenario {
         soil,
         engine: false,
+        drawbar_pull: pull,
         ..settings.trial(terrain.clone(), HOLD, 0.01)
     };
     let drive = V::speed_drive(|t| TRACK_SPEED * t.clamp(0.0, 1.0));
-    let mut config = scenario.config_with::<V>(terrain, drive, None);
-    config.drawbar_pull = pull;
+    let config = scenario.config_with::<V>(terrain, drive, None);
     let mut means = Means::new(HOLD - STEADY);
     run_config::<V>(&scenario, config, &mut means, (EVENT, pull, "N"))?;
     let [speed, track_speed, power, weight] = means.means();
