@@ -9,6 +9,22 @@ use trackgen::simulate::{EnergyBalance, RideSink, RunReport, Summary};
 
 use crate::console::say;
 
+/// Says a drawbar load of `pull` N (`along`: which way, in words), if
+/// there is one: "a drawbar load of 20.0 kN pulling the hull back …".
+pub fn say_drawbar(pull: f64, along: &str) {
+    if pull != 0.0 {
+        let way = if pull > 0.0 {
+            "pulling the hull back"
+        } else {
+            "pushing the hull on"
+        };
+        say!(
+            "a drawbar load of {:.1} kN {way}{along} from the start",
+            pull.abs() / 1e3
+        );
+    }
+}
+
 /// Prints the run's figures; a warning line if the energy books are off by
 /// more than [`EnergyBalance::bound_for_tolerance`] at `tolerance`.
 pub fn print(summary: &Summary, report: &RunReport, wall: f64, tolerance: f64) {

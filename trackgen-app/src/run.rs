@@ -100,17 +100,7 @@ fn announce(scenario: &Scenario) {
         scenario.course.describe(),
         scenario.duration
     );
-    if scenario.drawbar_pull != 0.0 {
-        say!(
-            "a drawbar load of {:.1} kN {} from the start",
-            scenario.drawbar_pull.abs() / 1e3,
-            if scenario.drawbar_pull > 0.0 {
-                "pulling the hull back"
-            } else {
-                "pushing the hull on"
-            }
-        );
-    }
+    crate::report::say_drawbar(scenario.drawbar_pull, "");
 }
 
 /// Assembles the vehicle `V` for the scenario the options name (through

@@ -328,17 +328,7 @@ fn drive<V: SpatialVehicleSystem>(
         assembly * 1e3
     );
     say!("driven through {driven}");
-    if args.drawbar_pull != 0.0 {
-        say!(
-            "a drawbar load of {:.1} kN {} along its heading from the start",
-            args.drawbar_pull.abs() / 1e3,
-            if args.drawbar_pull > 0.0 {
-                "pulling the hull back"
-            } else {
-                "pushing the hull on"
-            }
-        );
-    }
+    crate::report::say_drawbar(args.drawbar_pull, " along its heading");
     say!(
         "settle {:.1} s, then to {:.1} m/s in {:.1} s; {} on {}; turning {:.0}° {} from t = {:.1} s over {:.1} s; {:.1} s in all",
         args.settle,
