@@ -224,8 +224,6 @@ struct Summary {
     engine: Option<EngineSeen>,
     first: Option<SpatialOutputs>,
     last: Option<SpatialOutputs>,
-    /// The work the drawbar load took over the run, J.
-    drawbar: f64,
 }
 
 impl Summary {
@@ -240,7 +238,6 @@ impl Summary {
             engine: None,
             first: None,
             last: None,
-            drawbar: 0.0,
         }
     }
 
@@ -414,9 +411,7 @@ fn drive<V: SpatialVehicleSystem>(
     drop(sink);
     arrow.finish()?;
     let t = march.time();
-    let after = Books::at(&system, march.state().as_slice());
-    summary.drawbar = after.drawbar_since(&before);
-    let books = after.since(&before);
+    let books = Books::at(&system, march.state().as_slice()).since(&before);
     report(&summary, (t, wall), &march.stats(), &books, args);
     frames.take_ruts(&system);
     let mut written = vec!["spatial.csv", "spatial.arrow"];
@@ -507,13 +502,9 @@ impl Books {
         }
     }
 
-    /// A run's balance from `before` to these, and each side's share.
-    /// What the drawbar load took from `before` to these, J.
-    fn drawbar_since(&self, before: &Books) -> f64 {
-        self.energy.drawbar - before.energy.drawbar
-    }
-
-    fn since(&self, before: &Books) -> (EnergyBalance, [SideBooks; 2]) {
+    /// A run's balance from `before` to these, each side's share, and the
+    /// drawbar load's work (J).
+    fn since(&self, before: &Books) -> Since {
         let (after, before_energy) = (&self.energy, &before.energy);
         let balance = EnergyBalance {
             motor_work: after.driven - before_energy.driven,
@@ -523,9 +514,14 @@ impl Books {
         (
             balance,
             [0, 1].map(|s| self.sides[s].since(&before.sides[s])),
+            after.drawbar - before_energy.drawbar,
         )
     }
 }
+
+/// A run's books ([`Books::since`]): the balance, each side's share and
+/// the drawbar's work, J.
+type Since = (EnergyBalance, [SideBooks; 2], f64);
 
 /// Prints the run's time, its steps, the turn and the books, in all and
 /// per side.
@@ -533,7 +529,7 @@ fn report(
     summary: &Summary,
     (t, wall): (f64, f64),
     stats: &Stats,
-    (books, sides): &(EnergyBalance, [SideBooks; 2]),
+    (books, sides, drawbar): &Since,
     args: &SpatialArgs,
 ) {
     say!(
@@ -600,10 +596,7 @@ fn report(
         books.residual()
     );
     if args.drawbar_pull != 0.0 {
-        say!(
-            "  the drawbar: {:.1} kJ of the dissipated",
-            summary.drawbar / 1e3
-        );
+        say!("  the drawbar: {:.1} kJ of the dissipated", drawbar / 1e3);
     }
     for (name, side) in ["right", "left"].iter().zip(sides) {
         say!(

@@ -57,7 +57,6 @@ mod tensions;
 pub use asked::{DrivelineAsked, DrivelineKind, asked_driveline, drive_as_asked};
 use bodies::Bodies;
 pub use declared::{HULL_MOTIONS, SpatialSimulated, SpatialVehicleSystem};
-pub use drawbar::DrawbarError;
 pub use drive::{DriveState, Driver};
 pub use driveline::{
     Differential, DifferentialSteer, Driveline, DrivelineError, FullSteer, SideDrives, SteerDrive,

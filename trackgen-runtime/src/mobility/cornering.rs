@@ -48,7 +48,7 @@
 
 use super::runs::{confirmed, envelope, spatial_failure, spatial_setup};
 use super::search::{Search, Trial, bisect};
-use super::stretch::watch;
+use super::stretch::{run_to, watch};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
@@ -205,14 +205,13 @@ pub fn corner<V: SpatialVehicleSystem>(
     let mut stepper = Integrator::bs23(tolerance).stepper(system.dimension());
     let mut t = 0.0;
     let watched = turning + RUN_IN;
-    while t < watched {
-        stepper
-            .step(&mut system, &mut t, &mut y, watched)
-            .map_err(|e| failed(t, e))?;
-        if system.after_step(t, y.as_slice()) {
-            stepper.restart();
-        }
-    }
+    run_to(
+        &mut system,
+        &mut *stepper,
+        (&mut t, &mut y),
+        watched,
+        &failed,
+    )?;
     let mut before = false;
     let mut trial = Corner {
         speed: 0.0,

@@ -27,6 +27,7 @@
 
 use super::runs::{confirmed, slope_setting, spatial_failure, spatial_setup};
 use super::search::{Search, Trial, bisect};
+use super::stretch::{advance, run_to};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
@@ -118,14 +119,7 @@ pub fn traverse<V: SpatialVehicleSystem>(
     let mut t = 0.0;
     let failed = spatial_failure(EVENT, slope, "rise over run");
     let watch = SETTLE + crawl / acceleration + RUN_IN;
-    while t < watch {
-        stepper
-            .step(&mut system, &mut t, &mut y, watch)
-            .map_err(|e| failed(t, e))?;
-        if system.after_step(t, y.as_slice()) {
-            stepper.restart();
-        }
-    }
+    run_to(&mut system, &mut *stepper, (&mut t, &mut y), watch, &failed)?;
     let start = system.outputs(t, y.as_slice()).map_err(|e| failed(t, e))?;
     let end = watch + MEASURED / crawl;
     let bound = DRIFT * MEASURED;
@@ -136,12 +130,7 @@ pub fn traverse<V: SpatialVehicleSystem>(
         held: false,
     };
     while t < end && trial.downhill <= bound && trial.roll_error <= TIPPED {
-        stepper
-            .step(&mut system, &mut t, &mut y, end)
-            .map_err(|e| failed(t, e))?;
-        if system.after_step(t, y.as_slice()) {
-            stepper.restart();
-        }
+        advance(&mut system, &mut *stepper, (&mut t, &mut y), end, &failed)?;
         let now = system.outputs(t, y.as_slice()).map_err(|e| failed(t, e))?;
         let moved = now.centre.position - start.centre.position;
         // The left is uphill: downhill is along −y.

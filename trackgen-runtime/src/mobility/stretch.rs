@@ -45,6 +45,39 @@ impl Stretch {
     }
 }
 
+/// One step of `system` by `stepper` from `(t, y)` toward `end`, then
+/// the system's [`after_step`](SpatialSimulated::after_step) (the soil
+/// pressed, the gearbox's rule), the stepper restarted where it changed
+/// the right-hand side: every 3-D event's step. A step that fails is
+/// `failed`'s error at the time it failed.
+pub(super) fn advance<S: SpatialSimulated>(
+    system: &mut S,
+    stepper: &mut dyn Stepper,
+    (t, y): (&mut f64, &mut DVector<f64>),
+    end: f64,
+    failed: &impl Fn(f64, SimulationError) -> EventError,
+) -> Result<(), EventError> {
+    stepper.step(system, t, y, end).map_err(|e| failed(*t, e))?;
+    if system.after_step(*t, y.as_slice()) {
+        stepper.restart();
+    }
+    Ok(())
+}
+
+/// [`advance`] until `end`.
+pub(super) fn run_to<S: SpatialSimulated>(
+    system: &mut S,
+    stepper: &mut dyn Stepper,
+    (t, y): (&mut f64, &mut DVector<f64>),
+    end: f64,
+    failed: &impl Fn(f64, SimulationError) -> EventError,
+) -> Result<(), EventError> {
+    while *t < end {
+        advance(system, stepper, (&mut *t, &mut *y), end, failed)?;
+    }
+    Ok(())
+}
+
 /// `system` run by `stepper` from `(t, y)` over `window` s, watched: its
 /// heading before and after, and each step's quantities times the step's
 /// length. A step or an output that fails is `failed`'s error at the
@@ -71,10 +104,7 @@ pub(super) fn watch<S: SpatialSimulated>(
     };
     while *t < end {
         let was = *t;
-        stepper.step(system, t, y, end).map_err(|e| failed(*t, e))?;
-        if system.after_step(*t, y.as_slice()) {
-            stepper.restart();
-        }
+        advance(system, stepper, (t, y), end, failed)?;
         let dt = *t - was;
         let out = system
             .outputs(*t, y.as_slice())

@@ -34,7 +34,7 @@
 //!   estimate `μ_t W L / 4`).
 
 use super::runs::{envelope, spatial_failure, spatial_setup};
-use super::stretch::watch;
+use super::stretch::{run_to, watch};
 use super::{EventError, EventSettings};
 use crate::integrate::{Integrator, OdeSystem};
 use crate::spatial_vehicle::{
@@ -123,14 +123,7 @@ pub fn steady_turn<V: SpatialVehicleSystem>(
     let failed = spatial_failure(EVENT, fastest, "m/s (the faster belt)");
     let mut stepper = Integrator::bs23(tolerance).stepper(system.dimension());
     let mut t = 0.0;
-    while t < FIRST {
-        stepper
-            .step(&mut system, &mut t, &mut y, FIRST)
-            .map_err(|e| failed(t, e))?;
-        if system.after_step(t, y.as_slice()) {
-            stepper.restart();
-        }
-    }
+    run_to(&mut system, &mut *stepper, (&mut t, &mut y), FIRST, &failed)?;
     let mut before: Option<SteadyTurnRun> = None;
     loop {
         let stretch = watch(

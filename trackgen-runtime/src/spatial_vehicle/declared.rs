@@ -8,9 +8,9 @@
 use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::{
-    DrawbarError, Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideBooks,
-    SideDrives, SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialScene, SpatialSystem,
-    SteeringError, TreeState,
+    Driveline, DrivelineError, EngineEnvelope, GroundForce, HeadingHold, SideBooks, SideDrives,
+    SpatialEnergy, SpatialLaws, SpatialOutputs, SpatialScene, SpatialSystem, SteeringError,
+    TreeState,
 };
 use crate::assembly::{SideError, assemble_on_grounds};
 use crate::contact::axial::GuideLaw;
@@ -20,6 +20,7 @@ use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::{PlanePose, PlaneRates, SpatialError, SpatialVehicle};
 use crate::terrain::Terrain;
 use crate::terrain::field::HeightField;
+use crate::vehicle::DrawbarError;
 use crate::vehicle::{Drive, Vehicle};
 
 /// The gap the assembly leaves between the lower track and the ground, m

@@ -8,29 +8,10 @@
 //! `P/2`.
 
 use nalgebra::Vector3;
-use thiserror::Error;
 
 use super::{Bodies, SpatialLoads, TreeState};
 use crate::multibody::{ChassisModel, TrackModel};
 use crate::spatial::plane_rotation;
-
-/// A drawbar pull that is not a number.
-#[derive(Debug, Clone, Copy, PartialEq, Error)]
-#[error("drawbar_pull {pull} N is not a finite number")]
-pub struct DrawbarError {
-    /// The pull, N.
-    pub pull: f64,
-}
-
-/// `pull` (N) if it is a finite number: a drawbar load (negative: a
-/// push).
-pub(super) fn checked(pull: f64) -> Result<f64, DrawbarError> {
-    if pull.is_finite() {
-        Ok(pull)
-    } else {
-        Err(DrawbarError { pull })
-    }
-}
 
 impl<H, const DH: usize, R, const DR: usize, L, const DL: usize>
     super::SpatialDynamics<'_, H, DH, R, DR, L, DL>
@@ -74,18 +55,5 @@ mod tests {
             let (s, c) = f64::sin_cos(yaw);
             assert_eq!(x, Vector3::new(c, s, 0.0));
         }
-    }
-
-    #[test]
-    fn a_pull_that_is_no_number_is_refused() {
-        assert_eq!(checked(3e3), Ok(3e3));
-        assert_eq!(checked(-1.0), Ok(-1.0));
-        for pull in [f64::NAN, f64::INFINITY] {
-            assert!(checked(pull).is_err());
-        }
-        assert_eq!(
-            checked(f64::NEG_INFINITY).unwrap_err().to_string(),
-            "drawbar_pull -inf N is not a finite number"
-        );
     }
 }

@@ -30,13 +30,14 @@ use nalgebra::{DVector, SVector, Vector2, Vector3};
 
 use super::driveline::{DRIVELINE, ENGINE_SPEED};
 use super::{
-    DrawbarError, DriveState, Driveline, DrivelineError, Driver, EngineEnvelope, GroundForce,
-    HeadingHold, LoadScratch, MassCentre, SideDrives, SpatialDynamics, SteeringError, TreeState,
+    DriveState, Driveline, DrivelineError, Driver, EngineEnvelope, GroundForce, HeadingHold,
+    LoadScratch, MassCentre, SideDrives, SpatialDynamics, SteeringError, TreeState,
 };
 use crate::closure::MultiplierOptions;
 use crate::integrate::{OdeSystem, SimulationError};
 use crate::multibody::{ChassisModel, ClosingJoint, RecursiveModel, TrackModel};
 use crate::spatial::{FloatingTree, PlaneMotion, PlanePose, PlaneRates};
+use crate::vehicle::DrawbarError;
 use crate::vehicle::Drive;
 
 /// Where the energy dissipated sits from the driveline's first state.
@@ -305,7 +306,7 @@ where
     /// [`with_drawbar_pull`](Self::with_drawbar_pull) in place, from now
     /// on (the pull kept as it was where refused).
     pub fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), DrawbarError> {
-        self.drawbar_pull = super::drawbar::checked(pull)?;
+        self.drawbar_pull = DrawbarError::check(pull)?;
         Ok(())
     }
 

@@ -6,7 +6,7 @@
 use super::fitted::ContactLawSet;
 use super::powertrain::Cap;
 use super::shift::Engaged;
-use super::{Brake, ConfigError, Drive, Powertrain, TorqueCap};
+use super::{Brake, ConfigError, DrawbarError, Drive, Powertrain, TorqueCap};
 use crate::closure::ClosureMethod;
 use crate::contact::soft_ground::Rut;
 use crate::contact::{ContactLaws, GroundLaws};
@@ -133,11 +133,7 @@ impl VehicleConfig {
         if let Some(soil) = &self.soil {
             soil.check()?;
         }
-        if !self.drawbar_pull.is_finite() {
-            return Err(ConfigError::Drawbar {
-                pull: self.drawbar_pull,
-            });
-        }
+        DrawbarError::check(self.drawbar_pull)?;
         Ok(())
     }
 

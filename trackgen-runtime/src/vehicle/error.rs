@@ -73,11 +73,8 @@ pub enum ConfigError {
     #[error("the hull's outline: {0}")]
     Hull(trackgen_sprocket::OutlineProblem),
     /// The drawbar pull is not a number.
-    #[error("drawbar_pull {pull} N is not a finite number")]
-    Drawbar {
-        /// The pull, N.
-        pull: f64,
-    },
+    #[error(transparent)]
+    Drawbar(#[from] DrawbarError),
     /// The track's links differ in length where one pitch is assumed.
     #[error(transparent)]
     Pitch(#[from] PitchError),
@@ -107,4 +104,24 @@ pub enum BuildError {
     /// The configuration was refused.
     #[error(transparent)]
     Config(#[from] ConfigError),
+}
+
+/// A drawbar pull that is not a number, in the plane or in space.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error("drawbar_pull {pull} N is not a finite number")]
+pub struct DrawbarError {
+    /// The pull, N.
+    pub pull: f64,
+}
+
+impl DrawbarError {
+    /// `pull` (N) if it is a finite number: a drawbar load (negative: a
+    /// push). The one rule of a drawbar load, planar and spatial.
+    pub fn check(pull: f64) -> Result<f64, DrawbarError> {
+        if pull.is_finite() {
+            Ok(pull)
+        } else {
+            Err(DrawbarError { pull })
+        }
+    }
 }

@@ -48,7 +48,7 @@ pub(crate) use engine_drive::{AtSprocket, engine_drive};
 pub use engine_state::{
     COUPLING_BAND, EngineState, IDEAL_DOWNSHIFT, IDEAL_SHIFT_TIME, LOCKUP_RELEASE,
 };
-pub use error::{BuildError, ConfigError};
+pub use error::{BuildError, ConfigError, DrawbarError};
 pub use fitted::{
     BEARING_BAND, ContactFit, ContactLawSet, DeclaredContact, DeclaredPair, GROUND_DAMPING_RATIO,
     GROUND_DEPTH, GROUND_MU, RIM_DAMPING_RATIO, RIM_DEPTH, RIM_FRICTION_RATE, RIM_MU,

@@ -42,10 +42,7 @@ where
     }
 
     fn set_drawbar_pull(&mut self, pull: f64) -> Result<(), super::ConfigError> {
-        if !pull.is_finite() {
-            return Err(super::ConfigError::Drawbar { pull });
-        }
-        self.config.drawbar_pull = pull;
+        self.config.drawbar_pull = crate::vehicle::DrawbarError::check(pull)?;
         Ok(())
     }
 
